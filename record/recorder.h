@@ -1,0 +1,153 @@
+/* recorder.h: libraygl's internal interface between the entry points and
+ * the recorder.
+ *
+ * Each thread records into its own stream (its GL context is current on that
+ * thread only), so the hot path takes no lock: rgl_reserve() checks that the
+ * thread's buffer has room, the caller encodes the command in place, and
+ * rgl_commit() moves the write position. Everything else (starting a frame,
+ * growing the buffer, opening the file, the failed state) happens in the
+ * slow path, reached because `end` is pulled back to `pos` whenever the
+ * next call needs attention.
+ */
+#ifndef RGL_RECORDER_H
+#define RGL_RECORDER_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "format.h"
+#include "wire.h"
+
+#if defined(__GNUC__)
+#define RGL_LIKELY(x) __builtin_expect(!!(x), 1)
+#define RGL_UNLIKELY(x) __builtin_expect(!!(x), 0)
+#define RGL_EXPORT __attribute__((visibility("default")))
+#else
+#define RGL_LIKELY(x) (x)
+#define RGL_UNLIKELY(x) (x)
+#define RGL_EXPORT
+#endif
+
+/* GL's own limits, mirrored where the recorder needs them. */
+#define RGL_MAX_CLIENT_ARRAYS 5 /* vertex, normal, color, texcoord, edge flag */
+
+enum rgl_client_array { RGL_CA_VERTEX, RGL_CA_NORMAL, RGL_CA_COLOR, RGL_CA_TEXCOORD, RGL_CA_EDGEFLAG };
+
+typedef struct rgl_client_array_state {
+    bool enabled;
+    int32_t size;     /* components */
+    uint32_t type;    /* GL type enum */
+    int32_t stride;   /* as given (0 = tightly packed) */
+    const void *pointer;
+} rgl_client_array_state;
+
+/* Buffer: a growable byte buffer that commands are encoded into. */
+typedef struct rgl_buf {
+    uint8_t *data;
+    size_t size, cap;
+} rgl_buf;
+
+typedef struct rgl_stream {
+    /* Hot: the write window of the current buffer. `end` may be pulled back
+     * to `pos` to send the next call through rgl_reserve_slow(). */
+    uint8_t *pos;
+    uint8_t *end;
+
+    uint8_t *base;      /* start of the buffer being written */
+    uint8_t *limit;     /* true end of that buffer */
+    rgl_buf frame;      /* the frame's commands (data == base unless compiling) */
+    rgl_buf list;       /* a display list body while compiling */
+    bool compiling;     /* between glNewList and glEndList */
+    uint32_t list_name, list_mode;
+
+    uint32_t id;           /* stream id, from 1 */
+    uint32_t frame_number; /* next frame's number within the stream */
+    bool frame_open;       /* the current frame has started (snapshot taken) */
+    uint32_t frame_flags;  /* enum rgl_frame_flags */
+    uint32_t state_resource;
+
+    /* Matrices last recorded as @Matrix, to emit only changes. */
+    bool have_matrix[2];
+    float matrix[2][16]; /* [0] modelview, [1] projection */
+
+    rgl_client_array_state arrays[RGL_MAX_CLIENT_ARRAYS];
+    uint32_t active_texture_binding_2d; /* as tracked through raygl calls */
+} rgl_stream;
+
+#if defined(__GNUC__)
+extern __thread rgl_stream *rgl_tls_stream __attribute__((tls_model("initial-exec")));
+#else
+extern _Thread_local rgl_stream *rgl_tls_stream;
+#endif
+
+/* Slow path of rgl_reserve: initialises the recorder and the thread's stream
+ * on first use, starts a frame (state snapshot), grows the buffer. Returns
+ * NULL when not recording (disabled, failed, fork child); *sp then is NULL. */
+uint8_t *rgl_reserve_slow(rgl_stream **sp, size_t n);
+
+/* Room for n bytes in the calling thread's current buffer, or NULL when not
+ * recording. Encode into the returned pointer, then rgl_commit(). */
+static inline uint8_t *rgl_reserve(rgl_stream **sp, size_t n)
+{
+    rgl_stream *s = rgl_tls_stream;
+    if (RGL_LIKELY(s != NULL && (size_t)(s->end - s->pos) >= n)) {
+        *sp = s;
+        return s->pos;
+    }
+    return rgl_reserve_slow(sp, n);
+}
+
+static inline void rgl_commit(rgl_stream *s, uint8_t *p) { s->pos = p; }
+
+static inline uint8_t *rgl_put_opcode(uint8_t *p, uint32_t opcode)
+{
+    if (opcode < 0x80)
+        return rgl_put_u8(p, (uint8_t)opcode);
+    return rgl_put_varint(p, opcode);
+}
+
+/* Before a call that draws: records @Matrix for the modelview and projection
+ * read back from a live GL context when they differ from the last recorded
+ * ones. No-op without a context, while compiling a list, or not recording. */
+void rgl_resolve_matrices(void);
+
+/* Ends the calling thread's frame: writes its resources' references and the
+ * FRAME chunk to the file (synchronously, so it survives a crash right
+ * after), and arranges for the next call to start a new frame. */
+void rgl_frame_end(void);
+
+/* Switches the stream's write window to the display-list buffer (begin) or
+ * back to the frame buffer (end). Returns the list body on end. */
+void rgl_list_compile_begin(rgl_stream *s, uint32_t list, uint32_t mode);
+const rgl_buf *rgl_list_compile_end(rgl_stream *s);
+
+/* Writes a resource chunk unless one with identical kind and bytes was
+ * written before; returns its id (>= 1), or 0 when recording has failed. */
+uint32_t rgl_resource_put(uint32_t kind, const void *data, size_t size);
+
+/* Enters the sticky failed state: recording stops for every thread, GL
+ * forwarding goes on, the error is kept for rayglRecordError() and reported
+ * once. err is an errno value or 0; what names the failing step. */
+void rgl_fail(int err, const char *what);
+
+/* True once freeglut has been initialised (forwarding a GLUT shape before
+ * glutInit would make freeglut exit the program). */
+bool rgl_glut_ready(void);
+
+/* Takes the resolved-state snapshot of a live context (record/snapshot.c):
+ * encodes GL state as ordinary commands into out. Returns false when no live
+ * context is current (nothing is written then). */
+bool rgl_snapshot_take(rgl_stream *s, rgl_buf *out);
+
+/* Buffer helpers. rgl_buf_reserve returns a pointer to n free bytes at the
+ * end, growing the buffer, or NULL on allocation failure (already failed). */
+uint8_t *rgl_buf_reserve(rgl_buf *b, size_t n);
+void rgl_buf_finish(rgl_buf *b);
+
+/* The one allocation wrapper, so a test can fail the Nth allocation. */
+void *rgl_alloc(size_t size);
+void *rgl_realloc(void *p, size_t size);
+void rgl_free(void *p);
+
+#endif
