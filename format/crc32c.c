@@ -1,0 +1,2 @@
+/* placeholder: being written */
+typedef int rgl_placeholder_crc32c;
