@@ -147,8 +147,17 @@ const char *rgl_enum_name(uint32_t value, const char *hint);
 
 /* ---- Checksums and layout helpers (used by both sides) -------------------- */
 
-/* CRC-32C (Castagnoli). Start with crc = 0. */
+/* CRC-32C (Castagnoli). Start with crc = 0; pass the result back in to
+ * continue over more bytes. Uses the SSE4.2 instruction when the CPU has it.
+ * Thread-safe. */
 uint32_t rgl_crc32c(uint32_t crc, const void *data, size_t size);
+
+/* The two implementations behind rgl_crc32c, for tests and benchmarks: the
+ * portable one, and the SSE4.2 one (which falls back to the portable one when
+ * the CPU lacks the instruction; rgl_crc32c_hw_available() tells). */
+uint32_t rgl_crc32c_sw(uint32_t crc, const void *data, size_t size);
+uint32_t rgl_crc32c_hw(uint32_t crc, const void *data, size_t size);
+bool rgl_crc32c_hw_available(void);
 
 /* Writes the 32-byte file header. */
 void rgl_file_header_encode(uint8_t out[RGL_FILE_HEADER_SIZE], uint32_t flags);
@@ -269,12 +278,16 @@ void rgl_trace_builder_destroy(rgl_trace_builder *builder);
 /* Adds a resource chunk; *id receives its id (ids count up from 1). */
 rgl_status rgl_trace_builder_resource(rgl_trace_builder *builder, uint32_t kind,
                                       const void *data, size_t size, uint32_t *id);
+/* Adds an INFO chunk with the given text (key=value lines). */
+rgl_status rgl_trace_builder_info(rgl_trace_builder *builder, const char *text, size_t size);
 /* Adds a frame chunk whose command sequence is the given bytes. */
 rgl_status rgl_trace_builder_frame(rgl_trace_builder *builder, uint32_t stream, uint32_t number,
                                    uint32_t flags, uint32_t state, const uint8_t *commands,
                                    size_t size);
 /* Appends the index and end chunks (when with_index) and returns the bytes,
- * owned by the builder. */
+ * owned by the builder and valid until it is destroyed. Every builder call
+ * fails with RGL_E_STATE after finish, and with the first error (RGL_E_NOMEM,
+ * RGL_E_LIMIT) again after any failure: the builder is then sticky-failed. */
 rgl_status rgl_trace_builder_finish(rgl_trace_builder *builder, bool with_index,
                                     const uint8_t **data, size_t *size);
 
@@ -286,5 +299,15 @@ rgl_status rgl_trace_builder_finish(rgl_trace_builder *builder, bool with_index,
  * output never depends on the locale. Returns the length the full line needs
  * (like snprintf); out is always NUL-terminated when cap > 0. */
 size_t rgl_cmd_format(const rgl_cmd *cmd, char *out, size_t cap);
+
+/* ---- Allocation ----------------------------------------------------------------- */
+
+/* Every allocation made under format/ (reader, builder) goes through this
+ * wrapper: realloc semantics, and realloc(p, 0) frees p and returns NULL. */
+void *rgl_format_realloc(void *ptr, size_t size);
+
+/* Test hook: the n-th allocation from now (1 = the next) and every one after
+ * it fail, until called again; n = 0 turns failures off. Not thread-safe. */
+void rgl_format_fail_alloc(unsigned long n);
 
 #endif

@@ -1,2 +1,177 @@
-/* placeholder: being written */
-typedef int rgl_placeholder_tables;
+/* tables.c: everything derived from the format's tables.
+ *
+ * The status strings, the command rows of commands.def (descriptors, the
+ * opcode lookup, table order), the pname value counts of pnames.def and the
+ * enum names of enums.def; plus the one allocation wrapper of format/. The
+ * opcode and pname lookups are switches generated from their tables: a
+ * duplicate opcode or pname value is a duplicate case label, which does not
+ * compile.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "format.h"
+
+/* ---- Status strings ------------------------------------------------------- */
+
+static const char *const status_strings[RGL_STATUS_COUNT] = {
+    [RGL_OK] = "success",
+    [RGL_END] = "end of sequence",
+    [RGL_E_TRUNCATED] = "input truncated",
+    [RGL_E_MAGIC] = "not a RayGL trace",
+    [RGL_E_VERSION] = "unsupported format version",
+    [RGL_E_BYTE_ORDER] = "byte order or float layout mismatch",
+    [RGL_E_CHECKSUM] = "checksum mismatch",
+    [RGL_E_CHUNK] = "malformed chunk header",
+    [RGL_E_OPCODE] = "unknown opcode",
+    [RGL_E_VARINT] = "malformed varint",
+    [RGL_E_LIMIT] = "count or length over its limit",
+    [RGL_E_RESOURCE] = "missing or malformed resource",
+    [RGL_E_NOMEM] = "out of memory",
+    [RGL_E_IO] = "I/O error",
+    [RGL_E_STATE] = "call not allowed in this state",
+    [RGL_E_ARGUMENT] = "bad argument",
+};
+
+const char *rgl_status_str(rgl_status status)
+{
+    if ((unsigned)status >= RGL_STATUS_COUNT || !status_strings[status])
+        return "unknown status";
+    return status_strings[status];
+}
+
+/* ---- Command rows ----------------------------------------------------------- */
+
+/* Descriptor arrays, one per row; the trailing zero row keeps NOARGS rows
+ * from being empty arrays (nargs comes from RGL_COUNT_, not the length). */
+#define RGL_CMD(op, api, gen, name, handler, ...)                                   \
+    static const rgl_arg_desc args_##name[] = {RGL_MAP(RGL_DESC_, __VA_ARGS__){      \
+        RGL_ARG_SCALAR, 0, 0, NULL}};
+#include "commands.def"
+#undef RGL_CMD
+
+#define RGL_CMD(op, api, gen, name, handler, ...)                                   \
+    _Static_assert((op) > 0 && (op) < RGL_OPCODE_LIMIT, "opcode out of range: " #name); \
+    _Static_assert((0 RGL_MAP(RGL_COUNT_, __VA_ARGS__)) <= RGL_MAX_ARGS,              \
+                   "too many arguments: " #name);                                   \
+    static const rgl_cmd_info info_##name = {                                       \
+        op, RGL_API_##api, 0 RGL_MAP(RGL_COUNT_, __VA_ARGS__), RGL_NAMESTR(api, name), \
+        #handler, args_##name};
+#include "commands.def"
+#undef RGL_CMD
+
+static const rgl_cmd_info *const all_rows[] = {
+#define RGL_CMD(op, api, gen, name, handler, ...) &info_##name,
+#include "commands.def"
+#undef RGL_CMD
+};
+
+/* A switch rather than a hand-filled array: duplicate case labels are a hard
+ * error, so two rows with one opcode cannot build. Dense as the opcodes are,
+ * the compiler emits it as an array indexed by opcode. */
+const rgl_cmd_info *rgl_cmd_info_get(uint32_t opcode)
+{
+    switch (opcode) {
+#define RGL_CMD(op, api, gen, name, handler, ...)                                   \
+    case op:                                                                        \
+        return &info_##name;
+#include "commands.def"
+#undef RGL_CMD
+    default:
+        return NULL;
+    }
+}
+
+const rgl_cmd_info *const *rgl_cmd_info_all(size_t *count)
+{
+    if (count)
+        *count = sizeof all_rows / sizeof all_rows[0];
+    return all_rows;
+}
+
+/* ---- Parameter counts ----------------------------------------------------------- */
+
+uint32_t rgl_pname_count(uint32_t pname)
+{
+    switch (pname) {
+#define RGL_PNAME(name, value, count)                                                \
+    case value:                                                                     \
+        return count;
+#include "pnames.def"
+#undef RGL_PNAME
+    default:
+        return 0;
+    }
+}
+
+/* ---- Enum names ------------------------------------------------------------------- */
+
+enum enum_family { FAM_GEN, FAM_PRIM, FAM_BLEND, FAM_BOOL };
+
+typedef struct enum_row {
+    uint32_t value;
+    uint8_t family;
+    const char *name;
+} enum_row;
+
+static const enum_row enum_rows[] = {
+#define RGL_ENUM(family, name, value) {value, FAM_##family, #name},
+#include "enums.def"
+#undef RGL_ENUM
+};
+
+/* Argument names that pick a family for the shared small values. */
+static const struct {
+    const char *hint;
+    uint8_t family;
+} enum_hints[] = {
+    {"mode", FAM_PRIM}, /* glBegin, glDrawArrays, glDrawElements, ... */
+    {"sfactor", FAM_BLEND},
+    {"dfactor", FAM_BLEND},
+    {"flag", FAM_BOOL},
+};
+
+/* Below this a value is shared by too many names (primitive modes, blend
+ * factors, booleans, counts) to be named without a family. */
+#define ENUM_SMALL 0x100u
+
+const char *rgl_enum_name(uint32_t value, const char *hint)
+{
+    size_t nrows = sizeof enum_rows / sizeof enum_rows[0];
+    if (hint) {
+        for (size_t h = 0; h < sizeof enum_hints / sizeof enum_hints[0]; h++) {
+            if (strcmp(hint, enum_hints[h].hint) != 0)
+                continue;
+            for (size_t i = 0; i < nrows; i++)
+                if (enum_rows[i].value == value && enum_rows[i].family == enum_hints[h].family)
+                    return enum_rows[i].name;
+            break;
+        }
+    }
+    if (value < ENUM_SMALL)
+        return NULL;
+    for (size_t i = 0; i < nrows; i++)
+        if (enum_rows[i].value == value)
+            return enum_rows[i].name;
+    return NULL;
+}
+
+/* ---- Allocation --------------------------------------------------------------------- */
+
+static unsigned long alloc_fail_at; /* 0: never; else countdown to the failing call */
+
+void rgl_format_fail_alloc(unsigned long n) { alloc_fail_at = n; }
+
+void *rgl_format_realloc(void *ptr, size_t size)
+{
+    if (size == 0) {
+        free(ptr);
+        return NULL;
+    }
+    if (alloc_fail_at) {
+        if (alloc_fail_at == 1)
+            return NULL; /* stays at 1: every later allocation fails too */
+        alloc_fail_at--;
+    }
+    return realloc(ptr, size);
+}
