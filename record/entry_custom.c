@@ -1,2 +1,965 @@
-/* placeholder: being written */
-typedef int rgl_placeholder_entry_custom;
+/* entry_custom.c: the hand-written recorder entry points (rows with gen
+ * CUSTOM in format/commands.def).
+ *
+ * These are the calls whose arguments point at client memory of a size the
+ * table cannot express (arrays, pixels, list names), that return names, or
+ * that mark frame boundaries. Client memory is copied into the trace: pixel
+ * data as resources, tightly packed; the used range of each enabled client
+ * array as @ArrayData before each draw. Texture and display-list objects are
+ * tracked per stream so the frame-start snapshot can re-create them.
+ *
+ * As with the generated entry points, each call is recorded and then made
+ * for real; a call GL would reject or fault on (a NULL pointer, a negative
+ * count, an unknown type) is forwarded unrecorded.
+ */
+#include <errno.h>
+#include <pthread.h>
+#include <stdint.h>
+#include <string.h>
+
+#include <GL/gl.h>
+#include <GL/glu.h>
+#include <GL/freeglut.h>
+
+#include "raygl.h"
+#include "recorder.h"
+
+#define RGL_NAMES_PER_RECORD RGL_ARRAY_MAX
+
+/* ---- Helpers --------------------------------------------------------------- */
+
+/* Bytes of one component of a GL data type; 0 for anything else. */
+static size_t type_size(GLenum type)
+{
+    switch (type) {
+    case GL_BYTE: case GL_UNSIGNED_BYTE: return 1;
+    case GL_SHORT: case GL_UNSIGNED_SHORT: return 2;
+    case GL_INT: case GL_UNSIGNED_INT: case GL_FLOAT: return 4;
+    case GL_DOUBLE: return 8;
+    default: return 0;
+    }
+}
+
+/* True when GL has a current context (it fills in the query). */
+static bool live_context(void)
+{
+    GLint mode = 0;
+    glGetIntegerv(GL_MATRIX_MODE, &mode);
+    return mode != 0;
+}
+
+rgl_texture *rgl_texture_get(rgl_stream *s, uint32_t name, bool create)
+{
+    rgl_objects *o = &s->objs;
+    for (size_t i = 0; i < o->ntextures; i++)
+        if (o->textures[i].name == name)
+            return &o->textures[i];
+    if (!create)
+        return NULL;
+    if (o->ntextures == o->cap_textures) {
+        size_t cap = o->cap_textures ? 2 * o->cap_textures : 16;
+        rgl_texture *t = rgl_realloc(o->textures, cap * sizeof *t);
+        if (!t) {
+            rgl_fail(ENOMEM, "allocation failed");
+            return NULL;
+        }
+        o->textures = t;
+        o->cap_textures = cap;
+    }
+    rgl_texture *t = &o->textures[o->ntextures++];
+    memset(t, 0, sizeof *t);
+    t->name = name;
+    return t;
+}
+
+static void texture_forget(rgl_stream *s, uint32_t name)
+{
+    rgl_objects *o = &s->objs;
+    for (size_t i = 0; i < o->ntextures; i++) {
+        if (o->textures[i].name == name) {
+            rgl_buf_finish(&o->textures[i].defs);
+            o->textures[i] = o->textures[--o->ntextures];
+            return;
+        }
+    }
+}
+
+static int target_slot(GLenum target)
+{
+    return target == GL_TEXTURE_1D ? 0 : target == GL_TEXTURE_2D ? 1 : -1;
+}
+
+/* The texture object bound to target in s, created on first use. */
+static rgl_texture *bound_texture(rgl_stream *s, GLenum target)
+{
+    int slot = target_slot(target);
+    if (slot < 0)
+        return NULL;
+    rgl_texture *t = rgl_texture_get(s, s->objs.bound[slot], true);
+    if (t && !t->target)
+        t->target = target;
+    return t;
+}
+
+/* Appends the bytes just committed to the stream, [from, s->pos), to the
+ * texture's definition; `reset` starts the definition afresh (level 0 or a
+ * whole mipmap chain replaces what was there). */
+static void texture_define(rgl_stream *s, GLenum target, const uint8_t *from, bool reset)
+{
+    rgl_texture *t = bound_texture(s, target);
+    if (!t)
+        return;
+    if (reset)
+        t->defs.size = 0;
+    size_t n = (size_t)(s->pos - from);
+    uint8_t *p = rgl_buf_reserve(&t->defs, n);
+    if (p)
+        rgl_buf_commit(&t->defs, (uint8_t *)memcpy(p, from, n) + n);
+}
+
+static void texture_param(GLenum target, GLenum pname, bool is_float, const GLfloat *f,
+                          const GLint *i, uint32_t count)
+{
+    rgl_stream *s = rgl_tls_stream;
+    if (!s || count == 0 || count > 4)
+        return;
+    rgl_texture *t = bound_texture(s, target);
+    if (!t)
+        return;
+    rgl_tex_param *p = NULL;
+    for (uint32_t k = 0; k < t->nparams; k++)
+        if (t->params[k].pname == pname)
+            p = &t->params[k];
+    if (!p) {
+        if (t->nparams == RGL_TEX_PARAMS_MAX)
+            return;
+        p = &t->params[t->nparams++];
+    }
+    p->pname = pname;
+    p->count = (uint8_t)count;
+    p->is_float = is_float;
+    for (uint32_t k = 0; k < count; k++) {
+        if (is_float)
+            p->f[k] = f[k];
+        else
+            p->i[k] = i[k];
+    }
+}
+
+/* ---- Pixels ---------------------------------------------------------------- */
+
+/* Bytes per pixel of format/type (GL 1.5, tables 3.5 and 3.8), 0 if invalid;
+ * *packed tells whether the type packs all components into one element. */
+static size_t pixel_size(GLenum format, GLenum type)
+{
+    size_t comps;
+    switch (format) {
+    case GL_COLOR_INDEX: case GL_STENCIL_INDEX: case GL_DEPTH_COMPONENT: case GL_RED:
+    case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_LUMINANCE:
+        comps = 1;
+        break;
+    case GL_LUMINANCE_ALPHA: comps = 2; break;
+    case GL_RGB: case GL_BGR: comps = 3; break;
+    case GL_RGBA: case GL_BGRA: comps = 4; break;
+    default: return 0;
+    }
+    switch (type) {
+    case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV:
+        return 1;
+    case GL_UNSIGNED_SHORT_5_6_5: case GL_UNSIGNED_SHORT_5_6_5_REV:
+    case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_4_4_4_4_REV:
+    case GL_UNSIGNED_SHORT_5_5_5_1: case GL_UNSIGNED_SHORT_1_5_5_5_REV:
+        return 2;
+    case GL_UNSIGNED_INT_8_8_8_8: case GL_UNSIGNED_INT_8_8_8_8_REV:
+    case GL_UNSIGNED_INT_10_10_10_2: case GL_UNSIGNED_INT_2_10_10_10_REV:
+        return 4;
+    default:
+        return comps * type_size(type == GL_DOUBLE ? 0 : type);
+    }
+}
+
+/* GL's unpack state: read back from a live context, GL's defaults without
+ * one (a batch program's glPixelStorei is recorded but not seen here). */
+typedef struct unpack_state {
+    GLint alignment, row_length, skip_rows, skip_pixels;
+} unpack_state;
+
+static unpack_state unpack_get(void)
+{
+    unpack_state u = {0, 0, 0, 0};
+    glGetIntegerv(GL_UNPACK_ALIGNMENT, &u.alignment);
+    if (u.alignment != 1 && u.alignment != 2 && u.alignment != 4 && u.alignment != 8)
+        return (unpack_state){4, 0, 0, 0};
+    glGetIntegerv(GL_UNPACK_ROW_LENGTH, &u.row_length);
+    glGetIntegerv(GL_UNPACK_SKIP_ROWS, &u.skip_rows);
+    glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &u.skip_pixels);
+    return u;
+}
+
+/* Writes the w x h image at pixels (laid out as the unpack state says) as a
+ * tightly packed RGL_RES_BYTES resource. Returns its id; 0 for NULL pixels;
+ * -1 when GL would reject the call (bad format, type or size) or recording
+ * failed. */
+static int64_t pixels_put(GLenum format, GLenum type, GLsizei w, GLsizei h, const void *pixels)
+{
+    if (w < 0 || h < 0)
+        return -1;
+    if (!pixels)
+        return 0;
+    unpack_state u = unpack_get();
+    size_t row, stride;
+    const uint8_t *src = pixels;
+    if (type == GL_BITMAP) {
+        if (format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX)
+            return -1;
+        size_t l = (size_t)(u.row_length > 0 ? u.row_length : w);
+        row = ((size_t)w + 7) / 8;
+        stride = ((l + 7) / 8 + (size_t)u.alignment - 1) / (size_t)u.alignment * (size_t)u.alignment;
+        /* Skipped pixels of a bitmap are bits: whole bytes only. */
+        src += (size_t)u.skip_rows * stride + (size_t)u.skip_pixels / 8;
+    } else {
+        size_t ps = pixel_size(format, type);
+        if (!ps)
+            return -1;
+        size_t l = (size_t)(u.row_length > 0 ? u.row_length : w);
+        row = (size_t)w * ps;
+        stride = (l * ps + (size_t)u.alignment - 1) / (size_t)u.alignment * (size_t)u.alignment;
+        src += (size_t)u.skip_rows * stride + (size_t)u.skip_pixels * ps;
+    }
+    if (h > 0 && row > (RGL_CHUNK_MAX_PAYLOAD + (size_t)0) / (size_t)h) {
+        rgl_fail(EFBIG, "a texture image is larger than a chunk can hold");
+        return -1;
+    }
+    size_t total = row * (size_t)h;
+    uint32_t id;
+    if (stride == row || h <= 1) {
+        id = rgl_resource_put(RGL_RES_BYTES, src, total);
+    } else {
+        uint8_t *tight = rgl_alloc(total);
+        if (!tight) {
+            rgl_fail(ENOMEM, "allocation failed");
+            return -1;
+        }
+        for (size_t y = 0; y < (size_t)h; y++)
+            memcpy(tight + y * row, src + y * stride, row);
+        id = rgl_resource_put(RGL_RES_BYTES, tight, total);
+        rgl_free(tight);
+    }
+    return id ? (int64_t)id : -1;
+}
+
+static bool is_proxy(GLenum target)
+{
+    return target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D;
+}
+
+/* ---- Client arrays --------------------------------------------------------- */
+
+static const GLenum array_enums[RGL_MAX_CLIENT_ARRAYS] = {
+    GL_VERTEX_ARRAY, GL_NORMAL_ARRAY, GL_COLOR_ARRAY, GL_TEXTURE_COORD_ARRAY, GL_EDGE_FLAG_ARRAY,
+};
+
+static int array_slot(GLenum array)
+{
+    for (int k = 0; k < RGL_MAX_CLIENT_ARRAYS; k++)
+        if (array_enums[k] == array)
+            return k;
+    return -1;
+}
+
+static size_t element_size(const rgl_client_array_state *a)
+{
+    return (size_t)a->size * type_size(a->type);
+}
+
+/* Records @ArrayData for the elements [first, first+count) of every enabled
+ * array, packed. Returns false (nothing more to record) when an enabled
+ * array has no pointer: GL would fault, the draw goes on unrecorded. */
+static bool record_arrays(int64_t first, int64_t count)
+{
+    rgl_stream *s = rgl_tls_stream;
+    if (!s)
+        return false;
+    for (int k = 0; k < RGL_MAX_CLIENT_ARRAYS; k++)
+        if (s->arrays[k].enabled && !s->arrays[k].pointer)
+            return false;
+    if (first < 0 || count < 0 || first > INT32_MAX)
+        return false;
+    for (int k = 0; k < RGL_MAX_CLIENT_ARRAYS; k++) {
+        const rgl_client_array_state *a = &s->arrays[k];
+        if (!a->enabled)
+            continue;
+        size_t es = element_size(a);
+        size_t stride = a->stride ? (size_t)a->stride : es;
+        size_t bytes = (size_t)count * es;
+        uint8_t *p = rgl_reserve(&s, 4 * RGL_VARINT32_MAX + RGL_VARINT64_MAX + 2 + bytes);
+        if (!p)
+            return false;
+        p = rgl_put_opcode(p, RGL_OP_ArrayData);
+        p = rgl_put_e(p, array_enums[k]);
+        p = rgl_put_i(p, (int32_t)first);
+        p = rgl_put_i(p, a->size);
+        p = rgl_put_e(p, a->type);
+        p = rgl_put_varint(p, bytes);
+        const uint8_t *src = (const uint8_t *)a->pointer + (size_t)first * stride;
+        if (stride == es) {
+            memcpy(p, src, bytes);
+            p += bytes;
+        } else {
+            for (int64_t i = 0; i < count; i++, src += stride, p += es)
+                memcpy(p, src, es);
+        }
+        rgl_commit(s, p);
+    }
+    return true;
+}
+
+/* Smallest and largest index of an index array; false for a bad type. */
+static bool index_range(GLsizei count, GLenum type, const void *indices, uint32_t *lo,
+                        uint32_t *hi, size_t *bytes)
+{
+    size_t ts = type == GL_UNSIGNED_BYTE ? 1 : type == GL_UNSIGNED_SHORT ? 2
+              : type == GL_UNSIGNED_INT ? 4 : 0;
+    if (!ts || count < 0 || !indices)
+        return false;
+    uint32_t mn = UINT32_MAX, mx = 0;
+    for (GLsizei i = 0; i < count; i++) {
+        uint32_t v = ts == 1 ? ((const GLubyte *)indices)[i]
+                   : ts == 2 ? ((const GLushort *)indices)[i] : ((const GLuint *)indices)[i];
+        if (v < mn)
+            mn = v;
+        if (v > mx)
+            mx = v;
+    }
+    *lo = mn;
+    *hi = mx;
+    *bytes = (size_t)count * ts;
+    return true;
+}
+
+/* Records a draw by indices: the arrays over the used range, then the
+ * command with the indices as a blob. */
+static bool record_elements(uint32_t op, GLenum mode, GLuint start, GLuint end, GLsizei count,
+                            GLenum type, const void *indices)
+{
+    uint32_t lo, hi;
+    size_t bytes;
+    if (!index_range(count, type, indices, &lo, &hi, &bytes))
+        return false;
+    rgl_resolve_matrices();
+    if (count > 0 && !record_arrays(lo, (int64_t)hi - lo + 1))
+        return false;
+    if (op == RGL_OP_DrawElements)
+        return rgl_record(op, "eieB", mode, count, type, indices, bytes);
+    return rgl_record(op, "eeeieB", mode, start, end, count, type, indices, bytes);
+}
+
+RGL_EXPORT void rayglArrayElement(GLint i)
+{
+    /* Inside glBegin/glEnd: no matrix read-back here (glGet is illegal). */
+    if (i >= 0 && record_arrays(i, 1))
+        rgl_record(RGL_OP_ArrayElement, "i", i);
+    glArrayElement(i);
+}
+
+RGL_EXPORT void rayglDrawArrays(GLenum mode, GLint first, GLsizei count)
+{
+    if (first >= 0 && count >= 0) {
+        rgl_resolve_matrices();
+        if (record_arrays(first, count))
+            rgl_record(RGL_OP_DrawArrays, "eii", mode, first, count);
+    }
+    glDrawArrays(mode, first, count);
+}
+
+RGL_EXPORT void rayglDrawElements(GLenum mode, GLsizei count, GLenum type, const GLvoid *indices)
+{
+    record_elements(RGL_OP_DrawElements, mode, 0, 0, count, type, indices);
+    glDrawElements(mode, count, type, indices);
+}
+
+RGL_EXPORT void rayglDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count,
+                                       GLenum type, const GLvoid *indices)
+{
+    if (end >= start)
+        record_elements(RGL_OP_DrawRangeElements, mode, start, end, count, type, indices);
+    glDrawRangeElements(mode, start, end, count, type, indices);
+}
+
+/* Keeps a pointer call's layout in the stream (GL changes nothing on error)
+ * and records it. */
+static void array_pointer(int slot, uint32_t op, GLint size, GLenum type, GLsizei stride,
+                          const GLvoid *ptr)
+{
+    rgl_stream *s;
+    if (!rgl_reserve(&s, 1))
+        return;
+    rgl_client_array_state *a = &s->arrays[slot];
+    a->size = size;
+    a->type = type;
+    a->stride = stride;
+    a->pointer = ptr;
+    switch (slot) {
+    case RGL_CA_NORMAL: rgl_record(op, "ei", type, stride); break;
+    case RGL_CA_EDGEFLAG: rgl_record(op, "i", stride); break;
+    default: rgl_record(op, "iei", size, type, stride); break;
+    }
+}
+
+RGL_EXPORT void rayglVertexPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+    if (size >= 2 && size <= 4 && stride >= 0 && type_size(type) && type_size(type) != 1)
+        array_pointer(RGL_CA_VERTEX, RGL_OP_VertexPointer, size, type, stride, ptr);
+    glVertexPointer(size, type, stride, ptr);
+}
+
+RGL_EXPORT void rayglNormalPointer(GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+    if (stride >= 0 && type_size(type) && type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT &&
+        type != GL_UNSIGNED_INT)
+        array_pointer(RGL_CA_NORMAL, RGL_OP_NormalPointer, 3, type, stride, ptr);
+    glNormalPointer(type, stride, ptr);
+}
+
+RGL_EXPORT void rayglColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+    if ((size == 3 || size == 4) && stride >= 0 && type_size(type))
+        array_pointer(RGL_CA_COLOR, RGL_OP_ColorPointer, size, type, stride, ptr);
+    glColorPointer(size, type, stride, ptr);
+}
+
+RGL_EXPORT void rayglTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+    if (size >= 1 && size <= 4 && stride >= 0 && type_size(type) && type_size(type) != 1)
+        array_pointer(RGL_CA_TEXCOORD, RGL_OP_TexCoordPointer, size, type, stride, ptr);
+    glTexCoordPointer(size, type, stride, ptr);
+}
+
+RGL_EXPORT void rayglEdgeFlagPointer(GLsizei stride, const GLvoid *ptr)
+{
+    /* GLboolean elements: recorded as one unsigned byte each. */
+    if (stride >= 0)
+        array_pointer(RGL_CA_EDGEFLAG, RGL_OP_EdgeFlagPointer, 1, GL_UNSIGNED_BYTE, stride, ptr);
+    glEdgeFlagPointer(stride, ptr);
+}
+
+static void client_state(GLenum array, bool enable)
+{
+    int slot = array_slot(array);
+    rgl_stream *s;
+    if (slot >= 0 && rgl_reserve(&s, 1)) {
+        s->arrays[slot].enabled = enable;
+        rgl_record(enable ? RGL_OP_EnableClientState : RGL_OP_DisableClientState, "e", array);
+    }
+}
+
+RGL_EXPORT void rayglEnableClientState(GLenum array)
+{
+    client_state(array, true);
+    glEnableClientState(array);
+}
+
+RGL_EXPORT void rayglDisableClientState(GLenum array)
+{
+    client_state(array, false);
+    glDisableClientState(array);
+}
+
+/* glInterleavedArrays (GL 1.5, table 2.5): which arrays a format enables,
+ * their sizes, the colour type, and the offsets in units of bytes. */
+typedef struct interleaved_format {
+    GLenum format;
+    bool et, ec, en;
+    uint8_t st, sc, sv;
+    GLenum tc;
+    uint8_t pc, pn, pv, s;
+} interleaved_format;
+
+#define F4 4
+static const interleaved_format interleaved[] = {
+    {GL_V2F, 0, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2 * F4},
+    {GL_V3F, 0, 0, 0, 0, 0, 3, 0, 0, 0, 0, 3 * F4},
+    {GL_C4UB_V2F, 0, 1, 0, 0, 4, 2, GL_UNSIGNED_BYTE, 0, 0, 4, 4 + 2 * F4},
+    {GL_C4UB_V3F, 0, 1, 0, 0, 4, 3, GL_UNSIGNED_BYTE, 0, 0, 4, 4 + 3 * F4},
+    {GL_C3F_V3F, 0, 1, 0, 0, 3, 3, GL_FLOAT, 0, 0, 3 * F4, 6 * F4},
+    {GL_N3F_V3F, 0, 0, 1, 0, 0, 3, 0, 0, 0, 3 * F4, 6 * F4},
+    {GL_C4F_N3F_V3F, 0, 1, 1, 0, 4, 3, GL_FLOAT, 0, 4 * F4, 7 * F4, 10 * F4},
+    {GL_T2F_V3F, 1, 0, 0, 2, 0, 3, 0, 0, 0, 2 * F4, 5 * F4},
+    {GL_T4F_V4F, 1, 0, 0, 4, 0, 4, 0, 0, 0, 4 * F4, 8 * F4},
+    {GL_T2F_C4UB_V3F, 1, 1, 0, 2, 4, 3, GL_UNSIGNED_BYTE, 2 * F4, 0, 4 + 2 * F4, 4 + 5 * F4},
+    {GL_T2F_C3F_V3F, 1, 1, 0, 2, 3, 3, GL_FLOAT, 2 * F4, 0, 5 * F4, 8 * F4},
+    {GL_T2F_N3F_V3F, 1, 0, 1, 2, 0, 3, 0, 0, 2 * F4, 5 * F4, 8 * F4},
+    {GL_T2F_C4F_N3F_V3F, 1, 1, 1, 2, 4, 3, GL_FLOAT, 2 * F4, 6 * F4, 9 * F4, 12 * F4},
+    {GL_T4F_C4F_N3F_V4F, 1, 1, 1, 4, 4, 4, GL_FLOAT, 4 * F4, 8 * F4, 11 * F4, 15 * F4},
+};
+#undef F4
+
+RGL_EXPORT void rayglInterleavedArrays(GLenum format, GLsizei stride, const GLvoid *pointer)
+{
+    const interleaved_format *f = NULL;
+    for (size_t k = 0; k < sizeof interleaved / sizeof interleaved[0]; k++)
+        if (interleaved[k].format == format)
+            f = &interleaved[k];
+    rgl_stream *s;
+    if (f && stride >= 0 && rgl_reserve(&s, 1)) {
+        GLsizei st = stride ? stride : f->s;
+        const uint8_t *p = pointer;
+        rgl_client_array_state *a = s->arrays;
+        a[RGL_CA_EDGEFLAG].enabled = false;
+        a[RGL_CA_TEXCOORD].enabled = f->et;
+        if (f->et)
+            a[RGL_CA_TEXCOORD] = (rgl_client_array_state){true, f->st, GL_FLOAT, st, p};
+        a[RGL_CA_COLOR].enabled = f->ec;
+        if (f->ec)
+            a[RGL_CA_COLOR] = (rgl_client_array_state){true, f->sc, f->tc, st, p ? p + f->pc : NULL};
+        a[RGL_CA_NORMAL].enabled = f->en;
+        if (f->en)
+            a[RGL_CA_NORMAL] = (rgl_client_array_state){true, 3, GL_FLOAT, st, p ? p + f->pn : NULL};
+        a[RGL_CA_VERTEX] = (rgl_client_array_state){true, f->sv, GL_FLOAT, st, p ? p + f->pv : NULL};
+        rgl_record(RGL_OP_InterleavedArrays, "ei", format, stride);
+    }
+    glInterleavedArrays(format, stride, pointer);
+}
+
+/* ---- Textures -------------------------------------------------------------- */
+
+RGL_EXPORT void rayglGenTextures(GLsizei n, GLuint *textures)
+{
+    if (n <= 0 || !textures) {
+        glGenTextures(n, textures);
+        return;
+    }
+    memset(textures, 0, (size_t)n * sizeof *textures);
+    glGenTextures(n, textures);
+    rgl_stream *s;
+    if (!rgl_reserve(&s, 1))
+        return;
+    /* Names stay 0 when GL has no context: RayGL names them itself, so a
+     * batch program still gets distinct textures. */
+    if (textures[0] == 0) {
+        for (GLsizei k = 0; k < n; k++)
+            textures[k] = ++s->objs.next_texture_name;
+    }
+    for (GLsizei k = 0; k < n; k += RGL_NAMES_PER_RECORD) {
+        int m = n - k < RGL_NAMES_PER_RECORD ? (int)(n - k) : RGL_NAMES_PER_RECORD;
+        rgl_record(RGL_OP_GenTextures, "U", textures + k, m);
+    }
+}
+
+RGL_EXPORT void rayglDeleteTextures(GLsizei n, const GLuint *textures)
+{
+    rgl_stream *s;
+    if (n > 0 && textures && rgl_reserve(&s, 1)) {
+        for (GLsizei k = 0; k < n; k += RGL_NAMES_PER_RECORD) {
+            int m = n - k < RGL_NAMES_PER_RECORD ? (int)(n - k) : RGL_NAMES_PER_RECORD;
+            rgl_record(RGL_OP_DeleteTextures, "U", textures + k, m);
+        }
+        for (GLsizei k = 0; k < n; k++) {
+            if (textures[k] == 0)
+                continue;
+            texture_forget(s, textures[k]);
+            /* Deleting a bound texture binds 0 (GL 1.5, 3.8.12). */
+            for (int b = 0; b < 2; b++)
+                if (s->objs.bound[b] == textures[k])
+                    s->objs.bound[b] = 0;
+        }
+    }
+    glDeleteTextures(n, textures);
+}
+
+RGL_EXPORT void rayglBindTexture(GLenum target, GLuint texture)
+{
+    int slot = target_slot(target);
+    rgl_stream *s;
+    if (slot >= 0 && rgl_reserve(&s, 1)) {
+        s->objs.bound[slot] = texture;
+        rgl_texture *t = rgl_texture_get(s, texture, true);
+        if (t && !t->target)
+            t->target = target;
+        rgl_record(RGL_OP_BindTexture, "ee", target, texture);
+    }
+    glBindTexture(target, texture);
+}
+
+/* Room for one texture record: rgl_record then writes it at s->pos without
+ * the buffer moving, so the record can be copied into the texture's
+ * definition from there. */
+#define RGL_TEX_RECORD_ROOM 128
+
+RGL_EXPORT void rayglTexImage1D(GLenum target, GLint level, GLint internalFormat, GLsizei width,
+                                GLint border, GLenum format, GLenum type, const GLvoid *pixels)
+{
+    rgl_stream *s;
+    if (rgl_reserve(&s, 1)) {
+        int64_t id = is_proxy(target) ? 0 : pixels_put(format, type, width, 1, pixels);
+        if (id >= 0 && rgl_reserve(&s, RGL_TEX_RECORD_ROOM)) {
+            const uint8_t *from = s->pos;
+            if (rgl_record(RGL_OP_TexImage1D, "eiiiieee", target, level, internalFormat, width,
+                           border, format, type, (uint32_t)id) &&
+                !is_proxy(target))
+                texture_define(s, target, from, level == 0);
+        }
+    }
+    glTexImage1D(target, level, internalFormat, width, border, format, type, pixels);
+}
+
+RGL_EXPORT void rayglTexImage2D(GLenum target, GLint level, GLint internalFormat, GLsizei width,
+                                GLsizei height, GLint border, GLenum format, GLenum type,
+                                const GLvoid *pixels)
+{
+    rgl_stream *s;
+    if (rgl_reserve(&s, 1)) {
+        int64_t id = is_proxy(target) ? 0 : pixels_put(format, type, width, height, pixels);
+        if (id >= 0 && rgl_reserve(&s, RGL_TEX_RECORD_ROOM)) {
+            const uint8_t *from = s->pos;
+            if (rgl_record(RGL_OP_TexImage2D, "eiiiiieee", target, level, internalFormat, width,
+                           height, border, format, type, (uint32_t)id) &&
+                !is_proxy(target))
+                texture_define(s, target, from, level == 0);
+        }
+    }
+    glTexImage2D(target, level, internalFormat, width, height, border, format, type, pixels);
+}
+
+RGL_EXPORT void rayglTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                   GLsizei width, GLsizei height, GLenum format, GLenum type,
+                                   const GLvoid *pixels)
+{
+    rgl_stream *s;
+    if (pixels && rgl_reserve(&s, 1)) {
+        int64_t id = pixels_put(format, type, width, height, pixels);
+        if (id > 0 && rgl_reserve(&s, RGL_TEX_RECORD_ROOM)) {
+            const uint8_t *from = s->pos;
+            if (rgl_record(RGL_OP_TexSubImage2D, "eiiiiieee", target, level, xoffset, yoffset,
+                           width, height, format, type, (uint32_t)id))
+                texture_define(s, target, from, false);
+        }
+    }
+    glTexSubImage2D(target, level, xoffset, yoffset, width, height, format, type, pixels);
+}
+
+RGL_EXPORT GLint raygluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width,
+                                      GLsizei height, GLenum format, GLenum type, const void *data)
+{
+    rgl_stream *s;
+    if (data && rgl_reserve(&s, 1)) {
+        int64_t id = pixels_put(format, type, width, height, data);
+        if (id > 0 && rgl_reserve(&s, RGL_TEX_RECORD_ROOM)) {
+            const uint8_t *from = s->pos;
+            if (rgl_record(RGL_OP_Build2DMipmaps, "eiiieee", target, internalFormat, width,
+                           height, format, type, (uint32_t)id))
+                texture_define(s, target, from, true);
+        }
+    }
+    return gluBuild2DMipmaps(target, internalFormat, width, height, format, type, data);
+}
+
+RGL_EXPORT void rayglTexParameterf(GLenum target, GLenum pname, GLfloat param)
+{
+    if (rgl_record(RGL_OP_TexParameterf, "eef", target, pname, (double)param))
+        texture_param(target, pname, true, &param, NULL, 1);
+    glTexParameterf(target, pname, param);
+}
+
+RGL_EXPORT void rayglTexParameteri(GLenum target, GLenum pname, GLint param)
+{
+    if (rgl_record(RGL_OP_TexParameteri, "eei", target, pname, param))
+        texture_param(target, pname, false, NULL, &param, 1);
+    glTexParameteri(target, pname, param);
+}
+
+RGL_EXPORT void rayglTexParameterfv(GLenum target, GLenum pname, const GLfloat *params)
+{
+    uint32_t n = rgl_pname_count(pname);
+    if (params && n <= RGL_ARRAY_MAX &&
+        rgl_record(RGL_OP_TexParameterfv, "eeN", target, pname, params, (int)n))
+        texture_param(target, pname, true, params, NULL, n);
+    glTexParameterfv(target, pname, params);
+}
+
+RGL_EXPORT void rayglTexParameteriv(GLenum target, GLenum pname, const GLint *params)
+{
+    uint32_t n = rgl_pname_count(pname);
+    if (params && n <= RGL_ARRAY_MAX &&
+        rgl_record(RGL_OP_TexParameteriv, "eeI", target, pname, params, (int)n))
+        texture_param(target, pname, false, NULL, params, n);
+    glTexParameteriv(target, pname, params);
+}
+
+/* ---- Display lists --------------------------------------------------------- */
+
+static void list_forget(rgl_stream *s, uint32_t lo, uint64_t hi)
+{
+    rgl_objects *o = &s->objs;
+    for (size_t i = 0; i < o->nlists;) {
+        if (o->lists[i].name >= lo && o->lists[i].name < hi)
+            o->lists[i] = o->lists[--o->nlists];
+        else
+            i++;
+    }
+}
+
+static void list_remember(rgl_stream *s, uint32_t name, uint32_t body)
+{
+    rgl_objects *o = &s->objs;
+    for (size_t i = 0; i < o->nlists; i++) {
+        if (o->lists[i].name == name) {
+            o->lists[i].body = body;
+            return;
+        }
+    }
+    if (o->nlists == o->cap_lists) {
+        size_t cap = o->cap_lists ? 2 * o->cap_lists : 16;
+        rgl_list_rec *l = rgl_realloc(o->lists, cap * sizeof *l);
+        if (!l) {
+            rgl_fail(ENOMEM, "allocation failed");
+            return;
+        }
+        o->lists = l;
+        o->cap_lists = cap;
+    }
+    o->lists[o->nlists++] = (rgl_list_rec){name, body};
+}
+
+RGL_EXPORT GLuint rayglGenLists(GLsizei range)
+{
+    GLuint first = glGenLists(range);
+    rgl_stream *s;
+    if (range > 0 && rgl_reserve(&s, 1)) {
+        /* Without a context GL returns 0: RayGL names the lists itself. */
+        if (first == 0 && !live_context()) {
+            first = s->objs.next_list_name + 1;
+            s->objs.next_list_name += (uint32_t)range;
+        }
+        if (first)
+            rgl_record(RGL_OP_GenLists, "ie", range, first);
+    }
+    return first;
+}
+
+RGL_EXPORT void rayglNewList(GLuint list, GLenum mode)
+{
+    rgl_stream *s;
+    if (list != 0 && (mode == GL_COMPILE || mode == GL_COMPILE_AND_EXECUTE) &&
+        rgl_reserve(&s, 1) && !s->compiling)
+        rgl_list_compile_begin(s, list, mode);
+    glNewList(list, mode);
+}
+
+RGL_EXPORT void rayglEndList(void)
+{
+    rgl_stream *s = rgl_tls_stream;
+    if (s && s->compiling) {
+        uint32_t name = s->list_name, mode = s->list_mode;
+        const rgl_buf *body = rgl_list_compile_end(s);
+        uint32_t id = rgl_resource_put(RGL_RES_COMMANDS, body->data, body->size);
+        /* The list is recorded where it ends, NewList carrying its body. */
+        if (id && rgl_record(RGL_OP_NewList, "eee", name, mode, id) &&
+            rgl_record(RGL_OP_EndList, ""))
+            list_remember(s, name, id);
+    }
+    glEndList();
+}
+
+RGL_EXPORT void rayglCallLists(GLsizei n, GLenum type, const GLvoid *lists)
+{
+    size_t ts;
+    switch (type) {
+    case GL_BYTE: case GL_UNSIGNED_BYTE: ts = 1; break;
+    case GL_SHORT: case GL_UNSIGNED_SHORT: case GL_2_BYTES: ts = 2; break;
+    case GL_3_BYTES: ts = 3; break;
+    case GL_INT: case GL_UNSIGNED_INT: case GL_FLOAT: case GL_4_BYTES: ts = 4; break;
+    default: ts = 0; break;
+    }
+    if (ts && n >= 0 && lists) {
+        rgl_resolve_matrices();
+        rgl_record(RGL_OP_CallLists, "ieB", n, type, lists, (size_t)n * ts);
+    }
+    glCallLists(n, type, lists);
+}
+
+RGL_EXPORT void rayglDeleteLists(GLuint list, GLsizei range)
+{
+    rgl_stream *s;
+    if (range >= 0 && rgl_reserve(&s, 1)) {
+        rgl_record(RGL_OP_DeleteLists, "ei", list, range);
+        list_forget(s, list, (uint64_t)list + (uint64_t)range);
+    }
+    glDeleteLists(list, range);
+}
+
+/* ---- Quadrics -------------------------------------------------------------- */
+
+/* GLU quadric objects are process-wide pointers; the trace names them by
+ * small ids. A quadric made by plain gluNewQuadric gets an id when first
+ * seen. */
+static struct {
+    pthread_mutex_t mu;
+    struct quad_entry { const GLUquadric *q; uint32_t id; } *v;
+    size_t n, cap;
+    uint32_t next;
+} quads = {.mu = PTHREAD_MUTEX_INITIALIZER};
+
+static uint32_t quad_id(const GLUquadric *q, bool forget)
+{
+    uint32_t id = 0;
+    pthread_mutex_lock(&quads.mu);
+    for (size_t i = 0; i < quads.n; i++) {
+        if (quads.v[i].q == q) {
+            id = quads.v[i].id;
+            if (forget)
+                quads.v[i] = quads.v[--quads.n];
+            goto out;
+        }
+    }
+    if (forget)
+        goto out;
+    if (quads.n == quads.cap) {
+        size_t cap = quads.cap ? 2 * quads.cap : 8;
+        struct quad_entry *v = rgl_realloc(quads.v, cap * sizeof *v);
+        if (!v)
+            goto out;
+        quads.v = v;
+        quads.cap = cap;
+    }
+    id = ++quads.next;
+    quads.v[quads.n++] = (struct quad_entry){q, id};
+out:
+    pthread_mutex_unlock(&quads.mu);
+    return id;
+}
+
+RGL_EXPORT GLUquadric *raygluNewQuadric(void)
+{
+    GLUquadric *q = gluNewQuadric();
+    rgl_stream *s;
+    if (q && rgl_reserve(&s, 1))
+        rgl_record(RGL_OP_NewQuadric, "e", quad_id(q, false));
+    return q;
+}
+
+RGL_EXPORT void raygluDeleteQuadric(GLUquadric *quad)
+{
+    rgl_stream *s;
+    if (quad && rgl_reserve(&s, 1))
+        rgl_record(RGL_OP_DeleteQuadric, "e", quad_id(quad, true));
+    gluDeleteQuadric(quad);
+}
+
+/* The quadric state calls share one shape: handle, then one enum. */
+static void quadric_state(uint32_t op, const GLUquadric *quad, GLenum value)
+{
+    rgl_stream *s;
+    if (quad && rgl_reserve(&s, 1))
+        rgl_record(op, "ee", quad_id(quad, false), value);
+}
+
+RGL_EXPORT void raygluQuadricDrawStyle(GLUquadric *quad, GLenum draw)
+{
+    quadric_state(RGL_OP_QuadricDrawStyle, quad, draw);
+    gluQuadricDrawStyle(quad, draw);
+}
+
+RGL_EXPORT void raygluQuadricNormals(GLUquadric *quad, GLenum normal)
+{
+    quadric_state(RGL_OP_QuadricNormals, quad, normal);
+    gluQuadricNormals(quad, normal);
+}
+
+RGL_EXPORT void raygluQuadricOrientation(GLUquadric *quad, GLenum orientation)
+{
+    quadric_state(RGL_OP_QuadricOrientation, quad, orientation);
+    gluQuadricOrientation(quad, orientation);
+}
+
+RGL_EXPORT void raygluQuadricTexture(GLUquadric *quad, GLboolean texture)
+{
+    rgl_stream *s;
+    if (quad && rgl_reserve(&s, 1))
+        rgl_record(RGL_OP_QuadricTexture, "eo", quad_id(quad, false), (int)texture);
+    gluQuadricTexture(quad, texture);
+}
+
+/* The shapes draw: the matrices first, then the shape itself (never the
+ * triangles GLU draws for it, which go to GL directly). */
+RGL_EXPORT void raygluSphere(GLUquadric *quad, GLdouble radius, GLint slices, GLint stacks)
+{
+    if (quad) {
+        rgl_resolve_matrices();
+        rgl_stream *s;
+        if (rgl_reserve(&s, 1))
+            rgl_record(RGL_OP_Sphere, "edii", quad_id(quad, false), radius, slices, stacks);
+    }
+    gluSphere(quad, radius, slices, stacks);
+}
+
+RGL_EXPORT void raygluCylinder(GLUquadric *quad, GLdouble base, GLdouble top, GLdouble height,
+                               GLint slices, GLint stacks)
+{
+    if (quad) {
+        rgl_resolve_matrices();
+        rgl_stream *s;
+        if (rgl_reserve(&s, 1))
+            rgl_record(RGL_OP_Cylinder, "edddii", quad_id(quad, false), base, top, height, slices,
+                       stacks);
+    }
+    gluCylinder(quad, base, top, height, slices, stacks);
+}
+
+RGL_EXPORT void raygluDisk(GLUquadric *quad, GLdouble inner, GLdouble outer, GLint slices,
+                           GLint loops)
+{
+    if (quad) {
+        rgl_resolve_matrices();
+        rgl_stream *s;
+        if (rgl_reserve(&s, 1))
+            rgl_record(RGL_OP_Disk, "eddii", quad_id(quad, false), inner, outer, slices, loops);
+    }
+    gluDisk(quad, inner, outer, slices, loops);
+}
+
+RGL_EXPORT void raygluPartialDisk(GLUquadric *quad, GLdouble inner, GLdouble outer, GLint slices,
+                                  GLint loops, GLdouble start, GLdouble sweep)
+{
+    if (quad) {
+        rgl_resolve_matrices();
+        rgl_stream *s;
+        if (rgl_reserve(&s, 1))
+            rgl_record(RGL_OP_PartialDisk, "eddiidd", quad_id(quad, false), inner, outer, slices,
+                       loops, start, sweep);
+    }
+    gluPartialDisk(quad, inner, outer, slices, loops, start, sweep);
+}
+
+/* ---- Frames ---------------------------------------------------------------- */
+
+RGL_EXPORT void rayglutSwapBuffers(void)
+{
+    rgl_record(RGL_OP_SwapBuffers, "");
+    if (rgl_glut_ready())
+        glutSwapBuffers();
+    rgl_frame_end();
+}
+
+RGL_EXPORT void rayglFrameBegin(const char *file, GLfloat locx, GLfloat locy, GLfloat locz,
+                                GLfloat lookx, GLfloat looky, GLfloat lookz, GLfloat lightx,
+                                GLfloat lighty, GLfloat lightz)
+{
+    rgl_stream *s = rgl_tls_stream;
+    /* A named frame starts afresh: what was recorded before it is a frame
+     * of its own. */
+    if (s && s->frame_open) {
+        size_t n = s->compiling ? s->frame.size : (size_t)(s->pos - s->base);
+        if (n > 0)
+            rgl_frame_end();
+    }
+    rgl_record(RGL_OP_FrameBegin, "Sfffffffff", file ? file : "", (double)locx, (double)locy,
+               (double)locz, (double)lookx, (double)looky, (double)lookz, (double)lightx,
+               (double)lighty, (double)lightz);
+}
+
+RGL_EXPORT void rayglFrameEnd(void)
+{
+    rgl_record(RGL_OP_FrameEnd, "");
+    rgl_frame_end();
+}

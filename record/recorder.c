@@ -1,2 +1,1083 @@
-/* placeholder: being written */
-typedef int rgl_placeholder_recorder;
+/* recorder.c: libraygl's runtime: the trace file, per-thread streams,
+ * frames, resources, the failed state, and the raygl control API.
+ *
+ * The hot path lives in recorder.h (rgl_reserve/rgl_commit). Everything here
+ * runs in the slow path, at frame ends, or from the control API. Locks, in
+ * the order they may nest: g.list_mu (the stream list) > a stream's lock >
+ * g.file_mu (the file, the resource table, the index). A stream's own thread
+ * takes its lock only in the slow path and at frame end; close and exit take
+ * it to write the frames of other threads.
+ *
+ * The file is written with one writev per chunk under g.file_mu, so a frame
+ * is in the kernel when rayglutSwapBuffers returns and survives a SIGKILL
+ * right after; nothing is buffered in user space between chunks.
+ */
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <pthread.h>
+#include <stdarg.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/uio.h>
+#include <unistd.h>
+
+#include <GL/gl.h>
+#include <GL/freeglut.h>
+
+#include "raygl.h"
+#include "recorder.h"
+
+#ifndef RAYGL_VERSION
+#define RAYGL_VERSION "0.0.0"
+#endif
+
+#define RGL_BUF_INITIAL (64u * 1024u)
+#define RGL_DEFAULT_NAME_TRIES 1000
+/* The frame payload prefix: stream, number, flags, state, each a varint. */
+#define RGL_FRAME_PREFIX_MAX (4 * RGL_VARINT32_MAX)
+
+#if defined(__GNUC__)
+__thread rgl_stream *rgl_tls_stream __attribute__((tls_model("initial-exec")));
+#else
+_Thread_local rgl_stream *rgl_tls_stream;
+#endif
+
+/* One entry of the INDEX chunk. */
+typedef struct index_entry {
+    uint8_t type; /* RGL_CHUNK_FRAME or RGL_CHUNK_RESOURCE */
+    uint32_t a;   /* frame: stream; resource: id */
+    uint32_t b;   /* frame: number; resource: kind */
+    uint64_t offset;
+} index_entry;
+
+/* One written resource, for deduplication. */
+typedef struct res_entry {
+    uint64_t hash;
+    uint64_t size;
+    uint64_t data_offset; /* where its bytes are in the file, to compare */
+    uint32_t id;
+    uint32_t kind;
+} res_entry;
+
+static struct recorder {
+    pthread_once_t once;
+    pthread_key_t key;
+    pthread_mutex_t list_mu;
+    pthread_mutex_t file_mu;
+    rgl_stream *streams;
+
+    _Atomic int status;        /* enum raygl_record_status */
+    _Atomic uint32_t gen;      /* bumps at every open: streams reset */
+    _Atomic bool report_pending;
+    bool env_disabled;         /* RAYGL_RECORD=0 */
+    bool forked_child;
+
+    /* Under file_mu. */
+    int fd;
+    uint64_t offset;
+    char path[PATH_MAX];
+    uint32_t next_stream_id;
+    uint32_t next_resource_id;
+    index_entry *index;
+    size_t nindex, cap_index;
+    res_entry *res;    /* open-addressed hash table, cap_res a power of 2 */
+    size_t nres, cap_res;
+
+    char error[320];   /* rayglRecordError(); set once per trace */
+    void (*handler)(const char *message, void *user);
+    void *handler_user;
+    bool handler_set;
+
+    _Atomic unsigned long alloc_count;
+    _Atomic unsigned long alloc_fail_at;
+} g = {
+    .once = PTHREAD_ONCE_INIT,
+    .list_mu = PTHREAD_MUTEX_INITIALIZER,
+    .file_mu = PTHREAD_MUTEX_INITIALIZER,
+    .fd = -1,
+};
+
+static void stream_destroy_key(void *arg);
+static void close_trace(void);
+
+/* ---- Allocation ------------------------------------------------------------ */
+
+static bool alloc_should_fail(void)
+{
+    unsigned long at = atomic_load_explicit(&g.alloc_fail_at, memory_order_relaxed);
+    if (at == 0)
+        return false;
+    return atomic_fetch_add(&g.alloc_count, 1) + 1 == at;
+}
+
+void rgl_test_fail_alloc(unsigned long n)
+{
+    atomic_store(&g.alloc_count, 0);
+    atomic_store(&g.alloc_fail_at, n);
+}
+
+void *rgl_alloc(size_t size)
+{
+    if (alloc_should_fail())
+        return NULL;
+    return malloc(size ? size : 1);
+}
+
+void *rgl_realloc(void *p, size_t size)
+{
+    if (alloc_should_fail())
+        return NULL;
+    return realloc(p, size ? size : 1);
+}
+
+void rgl_free(void *p) { free(p); }
+
+/* ---- Failure --------------------------------------------------------------- */
+
+static void default_handler(const char *message, void *user)
+{
+    (void)user;
+    /* One write so lines from several processes do not interleave. */
+    char line[sizeof g.error + 2];
+    size_t n = strlen(message);
+    memcpy(line, message, n);
+    line[n++] = '\n';
+    ssize_t r = write(STDERR_FILENO, line, n);
+    (void)r;
+}
+
+/* Enters the failed state and formats the message; returns whether this call
+ * was the first. Takes no lock: callers may hold file_mu. */
+static bool fail_set(int err, const char *what)
+{
+    int st = atomic_load(&g.status);
+    for (;;) {
+        if (st != RAYGL_RECORDING && st != RAYGL_IDLE)
+            return false;
+        if (atomic_compare_exchange_weak(&g.status, &st, RAYGL_FAILED))
+            break;
+    }
+    char ebuf[128];
+    const char *es = err ? strerror_r(err, ebuf, sizeof ebuf) : NULL;
+    if (es)
+        snprintf(g.error, sizeof g.error, "raygl: recording stopped: %s: %s", what, es);
+    else
+        snprintf(g.error, sizeof g.error, "raygl: recording stopped: %s", what);
+    atomic_store(&g.report_pending, true);
+    return true;
+}
+
+/* Delivers the failure message once. Called with no recorder lock held, so
+ * the handler may call back into the control API. */
+static void fail_report(void)
+{
+    if (!atomic_exchange(&g.report_pending, false))
+        return;
+    void (*h)(const char *, void *) = g.handler_set ? g.handler : default_handler;
+    if (h)
+        h(g.error, g.handler_user);
+}
+
+void rgl_fail(int err, const char *what)
+{
+    fail_set(err, what);
+    fail_report();
+}
+
+static bool recording(void) { return atomic_load(&g.status) == RAYGL_RECORDING; }
+
+/* ---- Buffers --------------------------------------------------------------- */
+
+uint8_t *rgl_buf_reserve(rgl_buf *b, size_t n)
+{
+    if (b->cap - b->size >= n)
+        return b->data + b->size;
+    size_t need = b->size + n;
+    if (n > RGL_CHUNK_MAX_PAYLOAD || need > RGL_CHUNK_MAX_PAYLOAD - RGL_FRAME_PREFIX_MAX) {
+        fail_set(EFBIG, "a frame or resource is larger than a chunk can hold");
+        return NULL;
+    }
+    size_t cap = b->cap ? b->cap : RGL_BUF_INITIAL;
+    while (cap < need)
+        cap *= 2;
+    uint8_t *data = rgl_realloc(b->data, cap);
+    if (!data) {
+        fail_set(ENOMEM, "allocation failed");
+        return NULL;
+    }
+    b->data = data;
+    b->cap = cap;
+    return data + b->size;
+}
+
+void rgl_buf_finish(rgl_buf *b)
+{
+    rgl_free(b->data);
+    b->data = NULL;
+    b->size = b->cap = 0;
+}
+
+/* ---- The file -------------------------------------------------------------- */
+
+/* Writes all of iov; returns 0 or an errno value. */
+static int write_iov(struct iovec *iov, int n)
+{
+    while (n > 0) {
+        ssize_t w = writev(g.fd, iov, n);
+        if (w < 0) {
+            if (errno == EINTR)
+                continue;
+            return errno;
+        }
+        if (w == 0)
+            return EIO;
+        g.offset += (uint64_t)w;
+        size_t left = (size_t)w;
+        while (n > 0 && left >= iov->iov_len) {
+            left -= iov->iov_len;
+            iov++;
+            n--;
+        }
+        if (n > 0) {
+            iov->iov_base = (uint8_t *)iov->iov_base + left;
+            iov->iov_len -= left;
+        }
+    }
+    return 0;
+}
+
+/* Writes one chunk: header, prefix and data as its payload, CRC-32C trailer,
+ * in one writev. Under file_mu, recording. On failure the partial chunk is
+ * cut off (best effort) and the recorder fails; returns false. */
+static bool write_chunk(uint8_t type, const void *prefix, size_t plen, const void *data,
+                        size_t dlen, uint64_t *chunk_offset)
+{
+    uint8_t header[RGL_CHUNK_HEADER_SIZE], trailer[RGL_CHUNK_TRAILER_SIZE];
+    if (!prefix)
+        prefix = "";
+    if (!data)
+        data = "";
+    uint32_t crc = rgl_crc32c(0, prefix, plen);
+    crc = rgl_crc32c(crc, data, dlen);
+    rgl_chunk_header_encode(header, type, (uint32_t)(plen + dlen));
+    rgl_put_u32(trailer, crc);
+    struct iovec iov[4] = {
+        {header, sizeof header},
+        {(void *)prefix, plen},
+        {(void *)data, dlen},
+        {trailer, sizeof trailer},
+    };
+    uint64_t start = g.offset;
+    int err = write_iov(iov, 4);
+    if (err) {
+        if (ftruncate(g.fd, (off_t)start) == 0)
+            g.offset = start;
+        fail_set(err, g.path);
+        return false;
+    }
+    if (chunk_offset)
+        *chunk_offset = start;
+    return true;
+}
+
+static bool index_add(uint8_t type, uint32_t a, uint32_t b, uint64_t offset)
+{
+    if (g.nindex == g.cap_index) {
+        size_t cap = g.cap_index ? 2 * g.cap_index : 256;
+        index_entry *p = rgl_realloc(g.index, cap * sizeof *p);
+        if (!p) {
+            fail_set(ENOMEM, "allocation failed");
+            return false;
+        }
+        g.index = p;
+        g.cap_index = cap;
+    }
+    g.index[g.nindex++] = (index_entry){type, a, b, offset};
+    return true;
+}
+
+static void reset_tables(void)
+{
+    rgl_free(g.index);
+    rgl_free(g.res);
+    g.index = NULL;
+    g.res = NULL;
+    g.nindex = g.cap_index = g.nres = g.cap_res = 0;
+    g.next_stream_id = 1;
+    g.next_resource_id = 1;
+}
+
+/* Opens path (NULL: the default name) and writes the header and INFO chunk.
+ * Under file_mu. Returns 0 or an errno value; on failure the recorder has
+ * failed. */
+static int open_trace(const char *path)
+{
+    int fd = -1;
+    if (path) {
+        if (strlen(path) >= sizeof g.path) {
+            snprintf(g.path, sizeof g.path, "%.*s...", 64, path);
+            fail_set(ENAMETOOLONG, g.path);
+            return ENAMETOOLONG;
+        }
+        strcpy(g.path, path);
+        fd = open(path, O_RDWR | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    } else {
+        /* <program>.raygl, then <program>.1.raygl, ... like apitrace; O_EXCL
+         * keeps two programs from taking the same name. */
+        const char *prog = program_invocation_short_name;
+        if (!prog || !*prog)
+            prog = "raygl";
+        for (int k = 0; k < RGL_DEFAULT_NAME_TRIES; k++) {
+            if (k == 0)
+                snprintf(g.path, sizeof g.path, "%s.raygl", prog);
+            else
+                snprintf(g.path, sizeof g.path, "%s.%d.raygl", prog, k);
+            fd = open(g.path, O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+            if (fd >= 0 || errno != EEXIST)
+                break;
+        }
+    }
+    if (fd < 0) {
+        int err = errno;
+        fail_set(err, g.path);
+        return err;
+    }
+    g.fd = fd;
+    g.offset = 0;
+    reset_tables();
+
+    uint8_t header[RGL_FILE_HEADER_SIZE];
+    rgl_file_header_encode(header, 0);
+    struct iovec iov = {header, sizeof header};
+    int err = write_iov(&iov, 1);
+    if (err) {
+        fail_set(err, g.path);
+        return err;
+    }
+    char info[512];
+    const char *prog = program_invocation_short_name ? program_invocation_short_name : "";
+    int n = snprintf(info, sizeof info, "program=%s\nrecorder=libraygl %s\n", prog, RAYGL_VERSION);
+    if (n < 0 || (size_t)n >= sizeof info)
+        n = 0;
+    if (!write_chunk(RGL_CHUNK_INFO, NULL, 0, info, (size_t)n, NULL))
+        return errno ? errno : EIO;
+    return 0;
+}
+
+/* The INDEX chunk (docs/format.md): the frame count and each frame chunk's
+ * offset, then the resource count and each resource's id and offset, all
+ * varints. The END chunk: the INDEX chunk's offset as a u64. Under file_mu. */
+static void write_index_and_end(void)
+{
+    size_t nframes = 0;
+    for (size_t i = 0; i < g.nindex; i++)
+        nframes += g.index[i].type == RGL_CHUNK_FRAME;
+    rgl_buf b = {0};
+    uint8_t *p = rgl_buf_reserve(&b, RGL_VARINT64_MAX * (2 + 2 * g.nindex));
+    if (!p)
+        return;
+    p = rgl_put_varint(p, nframes);
+    for (size_t i = 0; i < g.nindex; i++)
+        if (g.index[i].type == RGL_CHUNK_FRAME)
+            p = rgl_put_varint(p, g.index[i].offset);
+    p = rgl_put_varint(p, g.nindex - nframes);
+    for (size_t i = 0; i < g.nindex; i++) {
+        if (g.index[i].type == RGL_CHUNK_RESOURCE) {
+            p = rgl_put_varint(p, g.index[i].a);
+            p = rgl_put_varint(p, g.index[i].offset);
+        }
+    }
+    rgl_buf_commit(&b, p);
+    uint64_t index_offset;
+    if (write_chunk(RGL_CHUNK_INDEX, NULL, 0, b.data, b.size, &index_offset)) {
+        uint8_t end[8];
+        rgl_put_u64(end, index_offset);
+        write_chunk(RGL_CHUNK_END, NULL, 0, end, sizeof end, NULL);
+    }
+    rgl_buf_finish(&b);
+}
+
+/* ---- Resources ------------------------------------------------------------- */
+
+static uint64_t hash_bytes(const uint8_t *p, size_t n, uint64_t seed)
+{
+    const uint64_t m = 0x9E3779B97F4A7C15u;
+    uint64_t h = seed ^ (n * m);
+    while (n >= 8) {
+        uint64_t v;
+        memcpy(&v, p, 8);
+        h = (h ^ (v * m)) * 0xBF58476D1CE4E5B9u;
+        h ^= h >> 31;
+        p += 8;
+        n -= 8;
+    }
+    uint64_t v = 0;
+    if (n)
+        memcpy(&v, p, n);
+    h = (h ^ (v * m)) * 0x94D049BB133111EBu;
+    return h ^ (h >> 29);
+}
+
+/* Whether the file holds these bytes at offset: the dedup table keeps only
+ * hashes, so a hash hit is confirmed against the trace itself. */
+static bool file_equals(uint64_t offset, const uint8_t *data, size_t size)
+{
+    uint8_t tmp[16384];
+    while (size > 0) {
+        size_t n = size < sizeof tmp ? size : sizeof tmp;
+        ssize_t r = pread(g.fd, tmp, n, (off_t)offset);
+        if (r <= 0) {
+            if (r < 0 && errno == EINTR)
+                continue;
+            return false;
+        }
+        if (memcmp(tmp, data, (size_t)r) != 0)
+            return false;
+        data += r;
+        offset += (uint64_t)r;
+        size -= (size_t)r;
+    }
+    return true;
+}
+
+static bool res_grow(void)
+{
+    size_t cap = g.cap_res ? 2 * g.cap_res : 256;
+    res_entry *t = rgl_alloc(cap * sizeof *t);
+    if (!t) {
+        fail_set(ENOMEM, "allocation failed");
+        return false;
+    }
+    memset(t, 0, cap * sizeof *t);
+    for (size_t i = 0; i < g.cap_res; i++) {
+        if (!g.res[i].id)
+            continue;
+        size_t j = g.res[i].hash & (cap - 1);
+        while (t[j].id)
+            j = (j + 1) & (cap - 1);
+        t[j] = g.res[i];
+    }
+    rgl_free(g.res);
+    g.res = t;
+    g.cap_res = cap;
+    return true;
+}
+
+/* rgl_resource_put without delivering a failure message (callers that hold
+ * a stream lock deliver it after releasing it). */
+static uint32_t resource_put(uint32_t kind, const void *data, size_t size)
+{
+    if (size > RGL_CHUNK_MAX_PAYLOAD - 2 * RGL_VARINT32_MAX) {
+        fail_set(EFBIG, "a resource is larger than a chunk can hold");
+        return 0;
+    }
+    if (!data)
+        data = "";
+    uint64_t h = hash_bytes(data, size, kind);
+    uint32_t id = 0;
+    pthread_mutex_lock(&g.file_mu);
+    if (!recording())
+        goto out;
+    if (g.cap_res) {
+        for (size_t j = h & (g.cap_res - 1); g.res[j].id; j = (j + 1) & (g.cap_res - 1)) {
+            res_entry *e = &g.res[j];
+            if (e->hash == h && e->size == size && e->kind == kind &&
+                file_equals(e->data_offset, data, size)) {
+                id = e->id;
+                goto out;
+            }
+        }
+    }
+    if (2 * (g.nres + 1) > g.cap_res && !res_grow())
+        goto out;
+    if (g.next_resource_id > RGL_RESOURCE_ID_MAX) {
+        fail_set(EOVERFLOW, "too many resources");
+        goto out;
+    }
+    uint8_t prefix[2 * RGL_VARINT32_MAX];
+    uint8_t *p = rgl_put_varint(prefix, g.next_resource_id);
+    p = rgl_put_varint(p, kind);
+    size_t plen = (size_t)(p - prefix);
+    uint64_t off;
+    if (!index_add(RGL_CHUNK_RESOURCE, g.next_resource_id, kind, 0))
+        goto out;
+    if (!write_chunk(RGL_CHUNK_RESOURCE, prefix, plen, data, size, &off)) {
+        g.nindex--;
+        goto out;
+    }
+    id = g.next_resource_id++;
+    g.index[g.nindex - 1].offset = off;
+    size_t j = h & (g.cap_res - 1);
+    while (g.res[j].id)
+        j = (j + 1) & (g.cap_res - 1);
+    g.res[j] = (res_entry){h, size, off + RGL_CHUNK_HEADER_SIZE + plen, id, kind};
+    g.nres++;
+out:
+    pthread_mutex_unlock(&g.file_mu);
+    return id;
+}
+
+uint32_t rgl_resource_put(uint32_t kind, const void *data, size_t size)
+{
+    uint32_t id = resource_put(kind, data, size);
+    fail_report();
+    return id;
+}
+
+/* ---- Streams --------------------------------------------------------------- */
+
+static rgl_buf *cur_buf(rgl_stream *s) { return s->compiling ? &s->list : &s->frame; }
+
+/* Stores the window's write position into its buffer. */
+static void stream_sync(rgl_stream *s)
+{
+    if (s->base)
+        cur_buf(s)->size = (size_t)(s->pos - s->base);
+}
+
+/* Points the write window at the current buffer; `open` lets calls through
+ * the hot path, otherwise the next call takes the slow path. */
+static void stream_window(rgl_stream *s, bool open)
+{
+    rgl_buf *b = cur_buf(s);
+    s->base = b->data;
+    s->pos = b->data + b->size;
+    s->limit = b->data + b->cap;
+    s->end = open ? s->limit : s->pos;
+}
+
+static void objects_clear(rgl_objects *o, bool keep_names)
+{
+    for (size_t i = 0; i < o->ntextures; i++)
+        rgl_buf_finish(&o->textures[i].defs);
+    rgl_free(o->textures);
+    rgl_free(o->lists);
+    uint32_t bound[2] = {o->bound[0], o->bound[1]};
+    uint32_t nt = o->next_texture_name, nl = o->next_list_name;
+    memset(o, 0, sizeof *o);
+    if (keep_names) {
+        o->bound[0] = bound[0];
+        o->bound[1] = bound[1];
+        o->next_texture_name = nt;
+        o->next_list_name = nl;
+    }
+}
+
+/* Moves the stream into the current trace generation: a new id, frame
+ * numbers from 0, nothing buffered. Resource ids of the previous trace mean
+ * nothing in the new one, so recorded texture and list bodies are dropped. */
+static void stream_adopt(rgl_stream *s, uint32_t gen)
+{
+    pthread_mutex_lock(&g.file_mu);
+    s->id = g.next_stream_id++;
+    pthread_mutex_unlock(&g.file_mu);
+    s->gen = gen;
+    s->frame_number = 0;
+    s->frame_open = false;
+    s->frame.size = 0;
+    if (s->compiling) {
+        s->compiling = false;
+        s->list.size = 0;
+    }
+    s->have_matrix[0] = s->have_matrix[1] = false;
+    objects_clear(&s->objs, true);
+    stream_window(s, false);
+}
+
+static rgl_stream *stream_create(void)
+{
+    rgl_stream *s = rgl_alloc(sizeof *s);
+    pthread_mutex_t *mu = rgl_alloc(sizeof *mu);
+    if (!s || !mu) {
+        rgl_free(s);
+        rgl_free(mu);
+        rgl_fail(ENOMEM, "allocation failed");
+        return NULL;
+    }
+    memset(s, 0, sizeof *s);
+    pthread_mutex_init(mu, NULL);
+    s->lock = mu;
+    for (int i = 0; i < RGL_MAX_CLIENT_ARRAYS; i++)
+        s->arrays[i].size = 4;
+    s->arrays[RGL_CA_VERTEX].type = s->arrays[RGL_CA_COLOR].type = GL_FLOAT;
+    s->arrays[RGL_CA_NORMAL].type = s->arrays[RGL_CA_TEXCOORD].type = GL_FLOAT;
+    s->arrays[RGL_CA_NORMAL].size = 3;
+    s->arrays[RGL_CA_EDGEFLAG].size = 1;
+    s->arrays[RGL_CA_EDGEFLAG].type = GL_UNSIGNED_BYTE;
+    pthread_mutex_lock(&g.list_mu);
+    s->next = g.streams;
+    g.streams = s;
+    pthread_mutex_unlock(&g.list_mu);
+    pthread_setspecific(g.key, s);
+    rgl_tls_stream = s;
+    return s;
+}
+
+static void stream_free(rgl_stream *s)
+{
+    rgl_buf_finish(&s->frame);
+    rgl_buf_finish(&s->list);
+    rgl_buf_finish(&s->snap);
+    objects_clear(&s->objs, false);
+    pthread_mutex_destroy(s->lock);
+    rgl_free(s->lock);
+    rgl_free(s);
+}
+
+/* Writes the stream's open frame, if it holds commands. Under the stream's
+ * lock, not file_mu. Leaves the frame closed and empty either way. */
+static void frame_write(rgl_stream *s)
+{
+    stream_sync(s);
+    if (s->frame_open && s->frame.size > 0 && s->gen == atomic_load(&g.gen)) {
+        uint8_t prefix[RGL_FRAME_PREFIX_MAX];
+        uint8_t *p = rgl_put_varint(prefix, s->id);
+        p = rgl_put_varint(p, s->frame_number);
+        p = rgl_put_varint(p, s->frame_flags);
+        p = rgl_put_varint(p, s->state_resource);
+        pthread_mutex_lock(&g.file_mu);
+        if (recording() && index_add(RGL_CHUNK_FRAME, s->id, s->frame_number, 0)) {
+            uint64_t off;
+            if (write_chunk(RGL_CHUNK_FRAME, prefix, (size_t)(p - prefix), s->frame.data,
+                            s->frame.size, &off))
+                g.index[g.nindex - 1].offset = off;
+            else
+                g.nindex--;
+        }
+        pthread_mutex_unlock(&g.file_mu);
+        s->frame_number++;
+    }
+    s->frame_open = false;
+    s->frame.size = 0;
+    stream_window(s, false);
+}
+
+/* Starts a frame: the resolved-state snapshot of a live context, or the
+ * STATE_CARRIED flag without one. Under the stream's lock. */
+static void frame_start(rgl_stream *s)
+{
+    s->frame_open = true;
+    s->have_matrix[0] = s->have_matrix[1] = false;
+    s->snap.size = 0;
+    if (rgl_snapshot_take(s, &s->snap)) {
+        s->frame_flags = RGL_FRAME_LIVE_CONTEXT;
+        s->state_resource = resource_put(RGL_RES_COMMANDS, s->snap.data, s->snap.size);
+    } else {
+        s->frame_flags = RGL_FRAME_STATE_CARRIED;
+        s->state_resource = 0;
+    }
+}
+
+static void stream_destroy_key(void *arg)
+{
+    rgl_stream *s = arg;
+    pthread_mutex_lock(&g.list_mu);
+    for (rgl_stream **pp = &g.streams; *pp; pp = &(*pp)->next) {
+        if (*pp == s) {
+            *pp = s->next;
+            break;
+        }
+    }
+    pthread_mutex_unlock(&g.list_mu);
+    pthread_mutex_lock(s->lock);
+    if (s->compiling) {
+        stream_sync(s);
+        s->compiling = false;
+    }
+    frame_write(s);
+    pthread_mutex_unlock(s->lock);
+    rgl_tls_stream = NULL;
+    stream_free(s);
+    fail_report();
+}
+
+/* ---- Initialisation, exit, fork -------------------------------------------- */
+
+static void at_exit(void)
+{
+    if (!g.forked_child)
+        close_trace();
+}
+
+static void fork_prepare(void)
+{
+    pthread_mutex_lock(&g.list_mu);
+    pthread_mutex_lock(&g.file_mu);
+}
+
+static void fork_parent(void)
+{
+    pthread_mutex_unlock(&g.file_mu);
+    pthread_mutex_unlock(&g.list_mu);
+}
+
+/* The child shares the parent's file description: it must never write to
+ * it, nor write the index at its exit. Its own descriptor is closed. */
+static void fork_child(void)
+{
+    g.forked_child = true;
+    atomic_store(&g.status, RAYGL_DISABLED);
+    atomic_store(&g.report_pending, false);
+    if (g.fd >= 0)
+        close(g.fd);
+    g.fd = -1;
+    rgl_stream *s = rgl_tls_stream;
+    if (s)
+        s->end = s->pos;
+    pthread_mutex_unlock(&g.file_mu);
+    pthread_mutex_unlock(&g.list_mu);
+}
+
+static void init_once(void)
+{
+    const char *v = getenv("RAYGL_TEST_FAIL_ALLOC");
+    if (v && *v)
+        rgl_test_fail_alloc(strtoul(v, NULL, 10));
+    v = getenv("RAYGL_RECORD");
+    if (v && strcmp(v, "0") == 0) {
+        g.env_disabled = true;
+        atomic_store(&g.status, RAYGL_DISABLED);
+    }
+    pthread_key_create(&g.key, stream_destroy_key);
+    pthread_atfork(fork_prepare, fork_parent, fork_child);
+    atexit(at_exit);
+}
+
+static void ensure_init(void) { pthread_once(&g.once, init_once); }
+
+/* Opens the trace named by RAYGL_TRACE (or the default name) at the first
+ * recorded call. */
+static void auto_open(void)
+{
+    pthread_mutex_lock(&g.file_mu);
+    if (atomic_load(&g.status) == RAYGL_IDLE && !g.forked_child) {
+        const char *path = getenv("RAYGL_TRACE");
+        if (open_trace(path && *path ? path : NULL) == 0) {
+            atomic_fetch_add(&g.gen, 1);
+            atomic_store(&g.status, RAYGL_RECORDING);
+        }
+    }
+    pthread_mutex_unlock(&g.file_mu);
+    fail_report();
+}
+
+uint8_t *rgl_reserve_slow(rgl_stream **sp, size_t n)
+{
+    rgl_stream *s = rgl_tls_stream;
+    *sp = NULL;
+    if (RGL_UNLIKELY(!s || atomic_load(&g.status) != RAYGL_RECORDING)) {
+        ensure_init();
+        if (atomic_load(&g.status) == RAYGL_IDLE)
+            auto_open();
+        if (atomic_load(&g.status) != RAYGL_RECORDING) {
+            /* Every later call comes back here and leaves at once. */
+            if (s)
+                s->end = s->pos;
+            return NULL;
+        }
+        if (!s && !(s = stream_create()))
+            return NULL;
+    }
+    uint8_t *p = NULL;
+    pthread_mutex_lock(s->lock);
+    uint32_t gen = atomic_load(&g.gen);
+    if (s->gen != gen)
+        stream_adopt(s, gen);
+    stream_sync(s);
+    if (!s->frame_open)
+        frame_start(s);
+    if (recording() && rgl_buf_reserve(cur_buf(s), n)) {
+        stream_window(s, true);
+        p = s->pos;
+        *sp = s;
+    } else {
+        stream_window(s, false);
+    }
+    pthread_mutex_unlock(s->lock);
+    fail_report();
+    return p;
+}
+
+void rgl_frame_end(void)
+{
+    rgl_stream *s = rgl_tls_stream;
+    if (!s)
+        return;
+    pthread_mutex_lock(s->lock);
+    frame_write(s);
+    pthread_mutex_unlock(s->lock);
+    fail_report();
+}
+
+void rgl_list_compile_begin(rgl_stream *s, uint32_t list, uint32_t mode)
+{
+    stream_sync(s);
+    s->compiling = true;
+    s->list_name = list;
+    s->list_mode = mode;
+    s->list.size = 0;
+    stream_window(s, false);
+}
+
+const rgl_buf *rgl_list_compile_end(rgl_stream *s)
+{
+    stream_sync(s);
+    s->compiling = false;
+    stream_window(s, false);
+    return &s->list;
+}
+
+/* Writes every stream's open frame, then the index, and closes the file.
+ * Other threads may still be recording: a frame they are in the middle of
+ * is written as far as its last completed command. */
+static void close_trace(void)
+{
+    ensure_init();
+    pthread_mutex_lock(&g.list_mu);
+    for (rgl_stream *s = g.streams; s; s = s->next) {
+        pthread_mutex_lock(s->lock);
+        frame_write(s);
+        pthread_mutex_unlock(s->lock);
+    }
+    pthread_mutex_lock(&g.file_mu);
+    int st = atomic_load(&g.status);
+    if (st == RAYGL_RECORDING) {
+        write_index_and_end();
+        if (atomic_load(&g.status) == RAYGL_RECORDING)
+            atomic_store(&g.status, RAYGL_DISABLED);
+    }
+    if (g.fd >= 0)
+        close(g.fd);
+    g.fd = -1;
+    reset_tables();
+    pthread_mutex_unlock(&g.file_mu);
+    pthread_mutex_unlock(&g.list_mu);
+    fail_report();
+}
+
+/* ---- Control API ----------------------------------------------------------- */
+
+RGL_EXPORT int rayglRecordOpen(const char *path)
+{
+    ensure_init();
+    if (g.env_disabled) {
+        errno = EPERM;
+        return -1;
+    }
+    if (g.fd >= 0)
+        close_trace();
+    pthread_mutex_lock(&g.file_mu);
+    /* A new trace gets a fresh failure state and message. */
+    atomic_store(&g.status, RAYGL_IDLE);
+    atomic_store(&g.report_pending, false);
+    g.error[0] = '\0';
+    int err = open_trace(path);
+    if (!err) {
+        g.forked_child = false;
+        atomic_fetch_add(&g.gen, 1);
+        atomic_store(&g.status, RAYGL_RECORDING);
+    }
+    pthread_mutex_unlock(&g.file_mu);
+    fail_report();
+    if (err) {
+        errno = err;
+        return -1;
+    }
+    return 0;
+}
+
+RGL_EXPORT void rayglRecordClose(void)
+{
+    ensure_init();
+    /* Closed is final until the next rayglRecordOpen: no auto-open. */
+    int st = RAYGL_IDLE;
+    atomic_compare_exchange_strong(&g.status, &st, RAYGL_DISABLED);
+    if (!g.forked_child)
+        close_trace();
+}
+
+RGL_EXPORT int rayglRecordStatus(void) { return atomic_load(&g.status); }
+
+RGL_EXPORT const char *rayglRecordPath(void) { return g.path[0] ? g.path : NULL; }
+
+RGL_EXPORT const char *rayglRecordError(void)
+{
+    return atomic_load(&g.status) == RAYGL_FAILED && g.error[0] ? g.error : NULL;
+}
+
+RGL_EXPORT void rayglRecordSetErrorHandler(void (*handler)(const char *message, void *user),
+                                           void *user)
+{
+    g.handler = handler;
+    g.handler_user = user;
+    g.handler_set = true;
+}
+
+/* ---- GLUT ------------------------------------------------------------------ */
+
+bool rgl_glut_ready(void)
+{
+    static _Atomic bool ready;
+    if (atomic_load_explicit(&ready, memory_order_relaxed))
+        return true;
+    if (glutGet(GLUT_INIT_STATE)) {
+        atomic_store(&ready, true);
+        return true;
+    }
+    return false;
+}
+
+/* ---- Resolved matrices ----------------------------------------------------- */
+
+/* @Matrix: opcode, mode, 16 floats. */
+#define RGL_MATRIX_RECORD_MAX (2 + RGL_WMAX_e + 16 * RGL_WMAX_f)
+
+void rgl_resolve_matrices(void)
+{
+    rgl_stream *s;
+    uint8_t *p = rgl_reserve(&s, 2 * RGL_MATRIX_RECORD_MAX);
+    if (!p || s->compiling)
+        return;
+    static const GLenum pnames[2] = {GL_MODELVIEW_MATRIX, GL_PROJECTION_MATRIX};
+    static const GLenum modes[2] = {GL_MODELVIEW, GL_PROJECTION};
+    for (int k = 0; k < 2; k++) {
+        /* A NaN sentinel: GL with no current context leaves it untouched. */
+        float m[16];
+        for (int j = 0; j < 16; j++)
+            m[j] = rgl_bits_f32(0x7fc0dead);
+        glGetFloatv(pnames[k], m);
+        if (rgl_f32_bits(m[0]) == 0x7fc0dead)
+            return;
+        if (s->have_matrix[k] && memcmp(m, s->matrix[k], sizeof m) == 0)
+            continue;
+        memcpy(s->matrix[k], m, sizeof m);
+        s->have_matrix[k] = true;
+        p = rgl_put_opcode(p, RGL_OP_Matrix);
+        p = rgl_put_e(p, modes[k]);
+        for (int j = 0; j < 16; j++)
+            p = rgl_put_f(p, m[j]);
+    }
+    rgl_commit(s, p);
+}
+
+/* ---- Hand-written records -------------------------------------------------- */
+
+static size_t emit_size(const char *fmt, va_list ap)
+{
+    size_t n = 2 * RGL_VARINT32_MAX;
+    for (const char *c = fmt; *c; c++) {
+        switch (*c) {
+        case 'e': case 'i': (void)va_arg(ap, uint32_t); n += RGL_VARINT32_MAX; break;
+        case 'f': (void)va_arg(ap, double); n += 4; break;
+        case 'd': (void)va_arg(ap, double); n += 8; break;
+        case 'o': (void)va_arg(ap, int); n += 1; break;
+        case 'A': case 'N': case 'I': case 'U':
+            (void)va_arg(ap, const void *);
+            n += RGL_VARINT32_MAX + (size_t)va_arg(ap, int) * RGL_VARINT32_MAX;
+            break;
+        case 'B': {
+            (void)va_arg(ap, const void *);
+            n += RGL_VARINT64_MAX + va_arg(ap, size_t);
+            break;
+        }
+        case 'S': n += RGL_VARINT32_MAX + strnlen(va_arg(ap, const char *), RGL_STRING_MAX); break;
+        default: break;
+        }
+    }
+    return n;
+}
+
+static uint8_t *emit_put(uint8_t *p, uint32_t op, const char *fmt, va_list ap)
+{
+    p = rgl_put_opcode(p, op);
+    for (const char *c = fmt; *c; c++) {
+        switch (*c) {
+        case 'e': p = rgl_put_varint(p, va_arg(ap, uint32_t)); break;
+        case 'i': p = rgl_put_i(p, va_arg(ap, int32_t)); break;
+        case 'f': p = rgl_put_f(p, (float)va_arg(ap, double)); break;
+        case 'd': p = rgl_put_d(p, va_arg(ap, double)); break;
+        case 'o': p = rgl_put_bo(p, (uint8_t)va_arg(ap, int)); break;
+        case 'A': case 'N': {
+            const float *v = va_arg(ap, const float *);
+            int n = va_arg(ap, int);
+            if (*c == 'N')
+                p = rgl_put_varint(p, (uint32_t)n);
+            for (int k = 0; k < n; k++)
+                p = rgl_put_f(p, v[k]);
+            break;
+        }
+        case 'I': {
+            const GLint *v = va_arg(ap, const GLint *);
+            int n = va_arg(ap, int);
+            p = rgl_put_varint(p, (uint32_t)n);
+            for (int k = 0; k < n; k++)
+                p = rgl_put_i(p, v[k]);
+            break;
+        }
+        case 'U': {
+            const GLuint *v = va_arg(ap, const GLuint *);
+            int n = va_arg(ap, int);
+            p = rgl_put_varint(p, (uint32_t)n);
+            for (int k = 0; k < n; k++)
+                p = rgl_put_ui(p, v[k]);
+            break;
+        }
+        case 'B': {
+            const void *v = va_arg(ap, const void *);
+            size_t n = va_arg(ap, size_t);
+            p = rgl_put_varint(p, n);
+            if (n)
+                memcpy(p, v, n);
+            p += n;
+            break;
+        }
+        case 'S': {
+            const char *v = va_arg(ap, const char *);
+            size_t n = strnlen(v, RGL_STRING_MAX);
+            p = rgl_put_varint(p, n);
+            memcpy(p, v, n);
+            p += n;
+            break;
+        }
+        default: break;
+        }
+    }
+    return p;
+}
+
+bool rgl_emit(rgl_buf *b, uint32_t op, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    size_t n = emit_size(fmt, ap);
+    va_end(ap);
+    uint8_t *p = rgl_buf_reserve(b, n);
+    if (!p)
+        return false;
+    va_start(ap, fmt);
+    p = emit_put(p, op, fmt, ap);
+    va_end(ap);
+    rgl_buf_commit(b, p);
+    return true;
+}
+
+bool rgl_record(uint32_t op, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    size_t n = emit_size(fmt, ap);
+    va_end(ap);
+    rgl_stream *s;
+    uint8_t *p = rgl_reserve(&s, n);
+    if (!p)
+        return false;
+    va_start(ap, fmt);
+    p = emit_put(p, op, fmt, ap);
+    va_end(ap);
+    rgl_commit(s, p);
+    return true;
+}

@@ -48,6 +48,41 @@ typedef struct rgl_buf {
     size_t size, cap;
 } rgl_buf;
 
+/* Texture and display-list objects created through raygl calls, kept per
+ * stream (one context per thread) so the snapshot can re-create them. */
+#define RGL_TEX_PARAMS_MAX 16
+
+typedef struct rgl_tex_param {
+    uint32_t pname;
+    uint8_t count;  /* values held */
+    bool is_float;
+    float f[4];
+    int32_t i[4];
+} rgl_tex_param;
+
+typedef struct rgl_texture {
+    uint32_t name;
+    uint32_t target; /* 0 until first bound */
+    rgl_buf defs;    /* TexImage/TexSubImage/Build2DMipmaps records, encoded */
+    uint32_t nparams;
+    rgl_tex_param params[RGL_TEX_PARAMS_MAX];
+} rgl_texture;
+
+typedef struct rgl_list_rec {
+    uint32_t name;
+    uint32_t body; /* resource id of its command sequence */
+} rgl_list_rec;
+
+typedef struct rgl_objects {
+    rgl_texture *textures;
+    size_t ntextures, cap_textures;
+    rgl_list_rec *lists;
+    size_t nlists, cap_lists;
+    uint32_t bound[2];          /* texture bound to GL_TEXTURE_1D, GL_TEXTURE_2D */
+    uint32_t next_texture_name; /* RayGL's own names when GL has no context */
+    uint32_t next_list_name;
+} rgl_objects;
+
 typedef struct rgl_stream {
     /* Hot: the write window of the current buffer. `end` may be pulled back
      * to `pos` to send the next call through rgl_reserve_slow(). */
@@ -72,7 +107,13 @@ typedef struct rgl_stream {
     float matrix[2][16]; /* [0] modelview, [1] projection */
 
     rgl_client_array_state arrays[RGL_MAX_CLIENT_ARRAYS];
-    uint32_t active_texture_binding_2d; /* as tracked through raygl calls */
+    rgl_objects objs;
+
+    /* Recorder bookkeeping (recorder.c): never touched on the hot path. */
+    uint32_t gen;           /* trace generation the stream belongs to */
+    rgl_buf snap;           /* scratch for the state snapshot */
+    void *lock;             /* pthread_mutex_t: slow path vs close/exit */
+    struct rgl_stream *next; /* all streams, for close and exit */
 } rgl_stream;
 
 #if defined(__GNUC__)
@@ -141,9 +182,36 @@ bool rgl_glut_ready(void);
 bool rgl_snapshot_take(rgl_stream *s, rgl_buf *out);
 
 /* Buffer helpers. rgl_buf_reserve returns a pointer to n free bytes at the
- * end, growing the buffer, or NULL on allocation failure (already failed). */
+ * end, growing the buffer, or NULL on allocation failure or when the buffer
+ * would pass the largest chunk payload (the recorder has failed then). Write
+ * there, then rgl_buf_commit() with the pointer past the last byte. */
 uint8_t *rgl_buf_reserve(rgl_buf *b, size_t n);
+static inline void rgl_buf_commit(rgl_buf *b, uint8_t *p) { b->size = (size_t)(p - b->data); }
 void rgl_buf_finish(rgl_buf *b);
+
+/* Encodes one command from a format string, for the hand-written records
+ * (entry_custom.c, snapshot.c). Each character takes arguments:
+ *   e  uint32_t, a plain varint (wire types e, ui, bf, h)
+ *   i  int32_t, zigzag varint (wire types i, sz)
+ *   f  double, written as float        d  double
+ *   o  int, one byte (bo)
+ *   A  const float *, int n: n floats, no count (an A() argument)
+ *   N  const float *, int n: varint n, then n floats (an N() argument)
+ *   I  const GLint *, int n: varint n, then n zigzag varints
+ *   U  const GLuint *, int n: varint n, then n varints
+ *   B  const void *, size_t n: a BLOB        S  const char *: a STR
+ * rgl_emit appends to a buffer; rgl_record to the calling thread's stream.
+ * Both return false when not recording or on failure (nothing written). */
+bool rgl_emit(rgl_buf *b, uint32_t op, const char *fmt, ...);
+bool rgl_record(uint32_t op, const char *fmt, ...);
+
+/* Returns the texture record for `name` in s, creating it when create is set
+ * (NULL when absent or on allocation failure). */
+rgl_texture *rgl_texture_get(rgl_stream *s, uint32_t name, bool create);
+
+/* Test hook: makes the nth allocation from now on fail (0: none). The
+ * RAYGL_TEST_FAIL_ALLOC environment variable sets it at initialisation. */
+void rgl_test_fail_alloc(unsigned long n);
 
 /* The one allocation wrapper, so a test can fail the Nth allocation. */
 void *rgl_alloc(size_t size);

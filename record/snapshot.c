@@ -1,2 +1,304 @@
-/* placeholder: being written */
-typedef int rgl_placeholder_snapshot;
+/* snapshot.c: the resolved-state snapshot taken at the start of a frame.
+ *
+ * With a live GL context, the state that affects what a frame shows is read
+ * back with glGet* and encoded as ordinary commands that, replayed from GL's
+ * default state, reproduce it. The recorder stores the result as a
+ * deduplicated resource that the frame references, so each frame can be
+ * translated without the frames before it (docs/design.md, "Resolved state").
+ *
+ * Only side-effect-free queries are used, except for texture parameters:
+ * the texture is bound to read them and the binding is restored.
+ */
+#include <string.h>
+
+#include <GL/gl.h>
+
+#include "recorder.h"
+
+#define SENTINEL_I 0x7ead7ead
+
+static const GLenum light_names[8] = {GL_LIGHT0, GL_LIGHT1, GL_LIGHT2, GL_LIGHT3,
+                                      GL_LIGHT4, GL_LIGHT5, GL_LIGHT6, GL_LIGHT7};
+static const GLenum texgen_coords[4] = {GL_S, GL_T, GL_R, GL_Q};
+
+/* Capabilities that change what a frame shows, all off by default. */
+static const GLenum caps_off[] = {
+    GL_LIGHTING, GL_LIGHT0, GL_LIGHT1, GL_LIGHT2, GL_LIGHT3, GL_LIGHT4, GL_LIGHT5, GL_LIGHT6,
+    GL_LIGHT7, GL_COLOR_MATERIAL, GL_CULL_FACE, GL_DEPTH_TEST, GL_BLEND, GL_ALPHA_TEST, GL_FOG,
+    GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_GEN_S,
+    GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q, GL_POLYGON_OFFSET_FILL,
+    GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT, GL_LINE_SMOOTH, GL_POINT_SMOOTH,
+    GL_POLYGON_SMOOTH, GL_AUTO_NORMAL,
+};
+
+/* Texture parameters read back from GL (the rest come from tracking). */
+static const GLenum tex_params_live[] = {GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER,
+                                         GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T};
+
+static GLint get_i(GLenum pname)
+{
+    GLint v[4] = {0, 0, 0, 0};
+    glGetIntegerv(pname, v);
+    return v[0];
+}
+
+static GLfloat get_f(GLenum pname)
+{
+    GLfloat v[16] = {0};
+    glGetFloatv(pname, v);
+    return v[0];
+}
+
+static void snap_lights_eye(rgl_buf *b)
+{
+    /* GL keeps light positions, spot directions and eye planes in eye space
+     * (transformed by the modelview current at the glLight/glTexGen call):
+     * replayed under an identity modelview they stay as read back. */
+    for (int l = 0; l < 8; l++) {
+        GLfloat v[4] = {0, 0, 1, 0};
+        glGetLightfv(light_names[l], GL_POSITION, v);
+        rgl_emit(b, RGL_OP_Lightfv, "eeN", light_names[l], GL_POSITION, v, 4);
+        GLfloat d[4] = {0, 0, -1, 0};
+        glGetLightfv(light_names[l], GL_SPOT_DIRECTION, d);
+        rgl_emit(b, RGL_OP_Lightfv, "eeN", light_names[l], GL_SPOT_DIRECTION, d, 3);
+    }
+    for (int c = 0; c < 4; c++) {
+        GLfloat v[4] = {0};
+        glGetTexGenfv(texgen_coords[c], GL_EYE_PLANE, v);
+        rgl_emit(b, RGL_OP_TexGenfv, "eeN", texgen_coords[c], GL_EYE_PLANE, v, 4);
+    }
+}
+
+static void snap_lights(rgl_buf *b)
+{
+    static const GLenum colors[3] = {GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR};
+    static const GLenum scalars[5] = {GL_SPOT_EXPONENT, GL_SPOT_CUTOFF, GL_CONSTANT_ATTENUATION,
+                                      GL_LINEAR_ATTENUATION, GL_QUADRATIC_ATTENUATION};
+    for (int l = 0; l < 8; l++) {
+        for (int k = 0; k < 3; k++) {
+            GLfloat v[4] = {0};
+            glGetLightfv(light_names[l], colors[k], v);
+            rgl_emit(b, RGL_OP_Lightfv, "eeN", light_names[l], colors[k], v, 4);
+        }
+        for (int k = 0; k < 5; k++) {
+            GLfloat v[4] = {0};
+            glGetLightfv(light_names[l], scalars[k], v);
+            rgl_emit(b, RGL_OP_Lightf, "eef", light_names[l], scalars[k], (double)v[0]);
+        }
+    }
+    GLfloat amb[4] = {0};
+    glGetFloatv(GL_LIGHT_MODEL_AMBIENT, amb);
+    rgl_emit(b, RGL_OP_LightModelfv, "eN", GL_LIGHT_MODEL_AMBIENT, amb, 4);
+    rgl_emit(b, RGL_OP_LightModelf, "ef", GL_LIGHT_MODEL_LOCAL_VIEWER,
+             (double)get_f(GL_LIGHT_MODEL_LOCAL_VIEWER));
+    rgl_emit(b, RGL_OP_LightModelf, "ef", GL_LIGHT_MODEL_TWO_SIDE,
+             (double)get_f(GL_LIGHT_MODEL_TWO_SIDE));
+    GLint cc[4] = {SENTINEL_I};
+    glGetIntegerv(GL_LIGHT_MODEL_COLOR_CONTROL, cc);
+    if (cc[0] != SENTINEL_I && cc[0] != GL_SINGLE_COLOR)
+        rgl_emit(b, RGL_OP_LightModeli, "ei", GL_LIGHT_MODEL_COLOR_CONTROL, cc[0]);
+}
+
+static void snap_current(rgl_buf *b)
+{
+    GLfloat c[4] = {1, 1, 1, 1}, n[4] = {0, 0, 1, 0}, t[4] = {0, 0, 0, 1};
+    glGetFloatv(GL_CURRENT_COLOR, c);
+    glGetFloatv(GL_CURRENT_NORMAL, n);
+    glGetFloatv(GL_CURRENT_TEXTURE_COORDS, t);
+    rgl_emit(b, RGL_OP_Color4f, "ffff", (double)c[0], (double)c[1], (double)c[2], (double)c[3]);
+    rgl_emit(b, RGL_OP_Normal3f, "fff", (double)n[0], (double)n[1], (double)n[2]);
+    rgl_emit(b, RGL_OP_TexCoord4f, "ffff", (double)t[0], (double)t[1], (double)t[2],
+             (double)t[3]);
+}
+
+static void snap_materials(rgl_buf *b)
+{
+    static const GLenum faces[2] = {GL_FRONT, GL_BACK};
+    static const GLenum colors[4] = {GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_EMISSION};
+    for (int f = 0; f < 2; f++) {
+        for (int k = 0; k < 4; k++) {
+            GLfloat v[4] = {0};
+            glGetMaterialfv(faces[f], colors[k], v);
+            rgl_emit(b, RGL_OP_Materialfv, "eeN", faces[f], colors[k], v, 4);
+        }
+        GLfloat sh[4] = {0};
+        glGetMaterialfv(faces[f], GL_SHININESS, sh);
+        rgl_emit(b, RGL_OP_Materialf, "eef", faces[f], GL_SHININESS, (double)sh[0]);
+    }
+    /* Before the enables: enabling GL_COLOR_MATERIAL copies the current
+     * colour into the material at once (GL 1.5, 2.14.3). */
+    rgl_emit(b, RGL_OP_ColorMaterial, "ee", (uint32_t)get_i(GL_COLOR_MATERIAL_FACE),
+             (uint32_t)get_i(GL_COLOR_MATERIAL_PARAMETER));
+}
+
+static void snap_enables(rgl_buf *b)
+{
+    for (size_t k = 0; k < sizeof caps_off / sizeof caps_off[0]; k++)
+        if (glIsEnabled(caps_off[k]))
+            rgl_emit(b, RGL_OP_Enable, "e", caps_off[k]);
+    if (!glIsEnabled(GL_DITHER))
+        rgl_emit(b, RGL_OP_Disable, "e", GL_DITHER);
+}
+
+static void snap_raster(rgl_buf *b)
+{
+    GLfloat fc[4] = {0};
+    glGetFloatv(GL_FOG_COLOR, fc);
+    rgl_emit(b, RGL_OP_Fogi, "ei", GL_FOG_MODE, get_i(GL_FOG_MODE));
+    rgl_emit(b, RGL_OP_Fogf, "ef", GL_FOG_DENSITY, (double)get_f(GL_FOG_DENSITY));
+    rgl_emit(b, RGL_OP_Fogf, "ef", GL_FOG_START, (double)get_f(GL_FOG_START));
+    rgl_emit(b, RGL_OP_Fogf, "ef", GL_FOG_END, (double)get_f(GL_FOG_END));
+    rgl_emit(b, RGL_OP_Fogfv, "eN", GL_FOG_COLOR, fc, 4);
+
+    rgl_emit(b, RGL_OP_BlendFunc, "ee", (uint32_t)get_i(GL_BLEND_SRC), (uint32_t)get_i(GL_BLEND_DST));
+    rgl_emit(b, RGL_OP_AlphaFunc, "ef", (uint32_t)get_i(GL_ALPHA_TEST_FUNC),
+             (double)get_f(GL_ALPHA_TEST_REF));
+    rgl_emit(b, RGL_OP_DepthFunc, "e", (uint32_t)get_i(GL_DEPTH_FUNC));
+    GLboolean dm[4] = {GL_TRUE}, cm[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
+    glGetBooleanv(GL_DEPTH_WRITEMASK, dm);
+    glGetBooleanv(GL_COLOR_WRITEMASK, cm);
+    rgl_emit(b, RGL_OP_DepthMask, "o", (int)dm[0]);
+    rgl_emit(b, RGL_OP_ColorMask, "oooo", (int)cm[0], (int)cm[1], (int)cm[2], (int)cm[3]);
+
+    GLfloat cc[4] = {0};
+    glGetFloatv(GL_COLOR_CLEAR_VALUE, cc);
+    rgl_emit(b, RGL_OP_ClearColor, "ffff", (double)cc[0], (double)cc[1], (double)cc[2],
+             (double)cc[3]);
+    GLdouble cd[2] = {1, 0};
+    glGetDoublev(GL_DEPTH_CLEAR_VALUE, cd);
+    rgl_emit(b, RGL_OP_ClearDepth, "d", cd[0]);
+    rgl_emit(b, RGL_OP_ShadeModel, "e", (uint32_t)get_i(GL_SHADE_MODEL));
+    rgl_emit(b, RGL_OP_FrontFace, "e", (uint32_t)get_i(GL_FRONT_FACE));
+    rgl_emit(b, RGL_OP_CullFace, "e", (uint32_t)get_i(GL_CULL_FACE_MODE));
+    GLint pm[2] = {GL_FILL, GL_FILL};
+    glGetIntegerv(GL_POLYGON_MODE, pm);
+    rgl_emit(b, RGL_OP_PolygonMode, "ee", GL_FRONT, (uint32_t)pm[0]);
+    rgl_emit(b, RGL_OP_PolygonMode, "ee", GL_BACK, (uint32_t)pm[1]);
+    rgl_emit(b, RGL_OP_PolygonOffset, "ff", (double)get_f(GL_POLYGON_OFFSET_FACTOR),
+             (double)get_f(GL_POLYGON_OFFSET_UNITS));
+    rgl_emit(b, RGL_OP_PointSize, "f", (double)get_f(GL_POINT_SIZE));
+    rgl_emit(b, RGL_OP_LineWidth, "f", (double)get_f(GL_LINE_WIDTH));
+    GLint vp[4] = {0};
+    glGetIntegerv(GL_VIEWPORT, vp);
+    rgl_emit(b, RGL_OP_Viewport, "iiii", vp[0], vp[1], vp[2], vp[3]);
+    GLdouble dr[2] = {0, 1};
+    glGetDoublev(GL_DEPTH_RANGE, dr);
+    rgl_emit(b, RGL_OP_DepthRange, "dd", dr[0], dr[1]);
+}
+
+static void snap_texenv(rgl_buf *b)
+{
+    GLint mode = GL_MODULATE;
+    GLfloat color[4] = {0};
+    glGetTexEnviv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, &mode);
+    glGetTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, color);
+    rgl_emit(b, RGL_OP_TexEnvi, "eei", GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, mode);
+    rgl_emit(b, RGL_OP_TexEnvfv, "eeN", GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, color, 4);
+    for (int c = 0; c < 4; c++) {
+        GLint gm = GL_EYE_LINEAR;
+        GLfloat plane[4] = {0};
+        glGetTexGeniv(texgen_coords[c], GL_TEXTURE_GEN_MODE, &gm);
+        glGetTexGenfv(texgen_coords[c], GL_OBJECT_PLANE, plane);
+        rgl_emit(b, RGL_OP_TexGeni, "eei", texgen_coords[c], GL_TEXTURE_GEN_MODE, gm);
+        rgl_emit(b, RGL_OP_TexGenfv, "eeN", texgen_coords[c], GL_OBJECT_PLANE, plane, 4);
+    }
+}
+
+static bool is_live_param(uint32_t pname)
+{
+    for (size_t k = 0; k < sizeof tex_params_live / sizeof tex_params_live[0]; k++)
+        if (tex_params_live[k] == pname)
+            return true;
+    return false;
+}
+
+/* The texture objects RayGL knows of: bind, their images (resource ids),
+ * their parameters; then the bindings GL has now. */
+static void snap_textures(rgl_stream *s, rgl_buf *b)
+{
+    GLint bound1 = get_i(GL_TEXTURE_BINDING_1D), bound2 = get_i(GL_TEXTURE_BINDING_2D);
+    for (size_t t = 0; t < s->objs.ntextures; t++) {
+        const rgl_texture *tex = &s->objs.textures[t];
+        if (tex->target != GL_TEXTURE_1D && tex->target != GL_TEXTURE_2D)
+            continue;
+        rgl_emit(b, RGL_OP_BindTexture, "ee", tex->target, tex->name);
+        if (tex->defs.size) {
+            uint8_t *p = rgl_buf_reserve(b, tex->defs.size);
+            if (p)
+                rgl_buf_commit(b, (uint8_t *)memcpy(p, tex->defs.data, tex->defs.size) +
+                                      tex->defs.size);
+        }
+        for (uint32_t k = 0; k < tex->nparams; k++) {
+            const rgl_tex_param *pr = &tex->params[k];
+            if (is_live_param(pr->pname))
+                continue;
+            if (pr->is_float)
+                rgl_emit(b, RGL_OP_TexParameterfv, "eeN", tex->target, pr->pname, pr->f,
+                         (int)pr->count);
+            else
+                rgl_emit(b, RGL_OP_TexParameteriv, "eeI", tex->target, pr->pname, pr->i,
+                         (int)pr->count);
+        }
+        /* A name deleted behind RayGL's back is not re-created by binding. */
+        if (tex->name != 0 && !glIsTexture(tex->name))
+            continue;
+        glBindTexture(tex->target, tex->name);
+        for (size_t k = 0; k < sizeof tex_params_live / sizeof tex_params_live[0]; k++) {
+            GLint v = SENTINEL_I;
+            glGetTexParameteriv(tex->target, tex_params_live[k], &v);
+            if (v != SENTINEL_I)
+                rgl_emit(b, RGL_OP_TexParameteri, "eei", tex->target, tex_params_live[k], v);
+        }
+    }
+    glBindTexture(GL_TEXTURE_1D, (GLuint)bound1);
+    glBindTexture(GL_TEXTURE_2D, (GLuint)bound2);
+    rgl_emit(b, RGL_OP_BindTexture, "ee", GL_TEXTURE_1D, (uint32_t)bound1);
+    rgl_emit(b, RGL_OP_BindTexture, "ee", GL_TEXTURE_2D, (uint32_t)bound2);
+}
+
+static void snap_lists(rgl_stream *s, rgl_buf *b)
+{
+    for (size_t k = 0; k < s->objs.nlists; k++) {
+        rgl_emit(b, RGL_OP_NewList, "eee", s->objs.lists[k].name, GL_COMPILE,
+                 s->objs.lists[k].body);
+        rgl_emit(b, RGL_OP_EndList, "");
+    }
+}
+
+static void snap_matrices(rgl_buf *b, GLint mode)
+{
+    static const GLenum modes[3] = {GL_TEXTURE, GL_PROJECTION, GL_MODELVIEW};
+    static const GLenum pnames[3] = {GL_TEXTURE_MATRIX, GL_PROJECTION_MATRIX,
+                                     GL_MODELVIEW_MATRIX};
+    for (int k = 0; k < 3; k++) {
+        GLfloat m[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+        glGetFloatv(pnames[k], m);
+        rgl_emit(b, RGL_OP_MatrixMode, "e", modes[k]);
+        rgl_emit(b, RGL_OP_LoadMatrixf, "A", m, 16);
+    }
+    rgl_emit(b, RGL_OP_MatrixMode, "e", (uint32_t)mode);
+}
+
+bool rgl_snapshot_take(rgl_stream *s, rgl_buf *out)
+{
+    /* GL with no current context leaves the sentinel untouched. */
+    GLint mode = SENTINEL_I;
+    glGetIntegerv(GL_MATRIX_MODE, &mode);
+    if (mode == SENTINEL_I)
+        return false;
+    out->size = 0;
+    rgl_emit(out, RGL_OP_MatrixMode, "e", GL_MODELVIEW);
+    rgl_emit(out, RGL_OP_LoadIdentity, "");
+    snap_lights_eye(out);
+    snap_lights(out);
+    snap_current(out);
+    snap_materials(out);
+    snap_enables(out);
+    snap_raster(out);
+    snap_texenv(out);
+    rgl_emit(out, RGL_OP_ListBase, "e", (uint32_t)get_i(GL_LIST_BASE));
+    snap_textures(s, out);
+    snap_lists(s, out);
+    snap_matrices(out, mode);
+    return true;
+}
