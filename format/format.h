@@ -252,7 +252,14 @@ rgl_status rgl_reader_frame(rgl_reader *reader, size_t i, rgl_frame_info *out, r
 rgl_status rgl_reader_resource(rgl_reader *reader, uint32_t id, rgl_resource *out,
                                rgl_error *err);
 
-/* Damaged regions found while opening: count, and the i-th as an error. */
+/* Resources in id order (one per id): count, and the i-th, checksum verified.
+ * For tools that list every resource (dumpers, fuzz targets). */
+size_t rgl_reader_resource_count(const rgl_reader *reader);
+rgl_status rgl_reader_resource_at(rgl_reader *reader, size_t i, rgl_resource *out,
+                                  rgl_error *err);
+
+/* Damaged regions found while opening: count, and the i-th as an error. At
+ * most 1024 are listed; a file with more has the first 1024. */
 size_t rgl_reader_damage_count(const rgl_reader *reader);
 const rgl_error *rgl_reader_damage(const rgl_reader *reader, size_t i);
 

@@ -408,7 +408,8 @@ static rgl_status open_common(rgl_reader *r, rgl_error *err)
         return set_error(err, st, 0, "while finding chunks");
 
     /* Resources by id; of two with one id the first in the file wins. */
-    qsort(r->res, r->nres, sizeof *r->res, cmp_res);
+    if (r->nres > 1) /* qsort's array must not be NULL, even for 0 elements */
+        qsort(r->res, r->nres, sizeof *r->res, cmp_res);
     for (size_t i = 0; i < r->nres; i++)
         if (w == 0 || r->res[i].id != r->res[w - 1].id)
             r->res[w++] = r->res[i];
@@ -612,4 +613,15 @@ rgl_status rgl_reader_resource(rgl_reader *r, uint32_t id, rgl_resource *out, rg
     if (err)
         memset(err, 0, sizeof *err);
     return RGL_OK;
+}
+
+size_t rgl_reader_resource_count(const rgl_reader *r) { return r ? r->nres : 0; }
+
+rgl_status rgl_reader_resource_at(rgl_reader *r, size_t i, rgl_resource *out, rgl_error *err)
+{
+    if (!r || !out)
+        return set_error(err, RGL_E_ARGUMENT, 0, "no reader or no output");
+    if (i >= r->nres)
+        return set_error(err, RGL_E_ARGUMENT, 0, "resource %zu of %zu", i, r->nres);
+    return rgl_reader_resource(r, r->res[i].id, out, err);
 }

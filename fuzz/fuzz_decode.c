@@ -1,0 +1,146 @@
+/* fuzz_decode.c: the libFuzzer target for the reader, decoder and dumper.
+ *
+ * Each input is used three ways: as a whole trace (rgl_reader_open_memory,
+ * every frame and resource, every command decoded and formatted); as a bare
+ * command sequence; and wrapped by rgl_trace_builder into a valid trace, so
+ * the checksums hold and the fuzzer reaches the decoder through the reader
+ * too. Beyond "no crash", it checks what must hold for any input: a decoded
+ * command re-encodes to exactly its input bytes, errors point inside the
+ * input, and rgl_cmd_format agrees with itself at every buffer size.
+ * fuzz/replay.c runs the same function over the corpus in every meson test.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "format.h"
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+#define CHECK(cond)                                                                  \
+    do {                                                                             \
+        if (!(cond)) {                                                               \
+            fprintf(stderr, "fuzz_decode: check failed: %s (%s:%d)\n", #cond, __FILE__, \
+                    __LINE__);                                                       \
+            abort();                                                                 \
+        }                                                                            \
+    } while (0)
+
+static void check_format(const rgl_cmd *cmd)
+{
+    char line[8192], small[24];
+    size_t n = rgl_cmd_format(cmd, line, sizeof line);
+    size_t m = rgl_cmd_format(cmd, small, sizeof small);
+    CHECK(n == m);
+    if (n < sizeof line) {
+        CHECK(strlen(line) == n);
+        CHECK(strlen(small) == (n < sizeof small ? n : sizeof small - 1));
+        CHECK(memcmp(line, small, strlen(small)) == 0);
+    }
+}
+
+/* Decodes every command of [data, data+size) at file offset base. */
+static void decode_sequence(const uint8_t *data, size_t size, uint64_t base)
+{
+    static rgl_cmd cmd; /* large: keep it off the stack */
+    static uint8_t again[1u << 16];
+    rgl_cmd_iter it;
+    rgl_status st;
+    uint64_t count = 0;
+
+    rgl_cmd_iter_init(&it, data, size, base);
+    while ((st = rgl_cmd_next(&it, &cmd)) == RGL_OK) {
+        size_t len = (size_t)(it.pos - data) - (size_t)(cmd.offset - base);
+        size_t n;
+        CHECK(cmd.index == count++);
+        CHECK(cmd.offset >= base && cmd.offset < base + size);
+        check_format(&cmd);
+        /* Canonical encoding: decode then encode gives back the input. */
+        n = rgl_cmd_encode(&cmd, again, sizeof again);
+        if (len <= sizeof again) {
+            CHECK(n == len);
+            CHECK(memcmp(again, data + (cmd.offset - base), len) == 0);
+        }
+        for (uint32_t i = 0; i < cmd.nargs; i++) {
+            (void)rgl_arg_f(&cmd.arg[i], 0);
+            (void)rgl_arg_i(&cmd.arg[i], cmd.arg[i].count);
+        }
+    }
+    if (st != RGL_END) {
+        CHECK(it.error.status == st);
+        CHECK(it.error.offset >= base && it.error.offset <= base + size);
+        CHECK(it.error.cmd_index == count);
+        CHECK(rgl_cmd_next(&it, &cmd) == st); /* the error sticks */
+        CHECK(strlen(it.error.detail) < sizeof it.error.detail);
+    }
+}
+
+static void read_trace(const uint8_t *data, size_t size)
+{
+    rgl_reader *r = NULL;
+    rgl_error err;
+    size_t info_size;
+
+    if (rgl_reader_open_memory(data, size, &r, &err) != RGL_OK) {
+        CHECK(r == NULL);
+        CHECK(err.offset <= size);
+        return;
+    }
+    const char *info = rgl_reader_info(r, &info_size);
+    if (info)
+        CHECK(strlen(info) <= info_size);
+    for (size_t i = 0; i < rgl_reader_damage_count(r); i++)
+        CHECK(rgl_reader_damage(r, i)->offset <= size);
+    for (size_t i = 0; i < rgl_reader_frame_count(r); i++) {
+        rgl_frame_info f;
+        rgl_resource res;
+        if (rgl_reader_frame(r, i, &f, &err) != RGL_OK) {
+            CHECK(err.offset <= size);
+            continue;
+        }
+        CHECK(f.commands_offset + f.commands_size <= size);
+        CHECK(f.commands == data + f.commands_offset);
+        decode_sequence(f.commands, f.commands_size, f.commands_offset);
+        if (f.state)
+            (void)rgl_reader_resource(r, f.state, &res, &err);
+    }
+    for (size_t i = 0; i < rgl_reader_resource_count(r); i++) {
+        rgl_resource res;
+        if (rgl_reader_resource_at(r, i, &res, &err) != RGL_OK) {
+            CHECK(err.offset <= size);
+            continue;
+        }
+        CHECK(res.data_offset + res.size <= size);
+        if (res.kind == RGL_RES_COMMANDS)
+            decode_sequence(res.data, res.size, res.data_offset);
+    }
+    rgl_reader_destroy(r);
+}
+
+/* The input as a frame and a resource of a valid trace, with and without an
+ * index, so the reader and decoder see it past the checksums. */
+static void wrapped(const uint8_t *data, size_t size)
+{
+    for (int with_index = 0; with_index < 2; with_index++) {
+        rgl_trace_builder *b = rgl_trace_builder_create();
+        const uint8_t *trace;
+        size_t trace_size;
+        uint32_t id = 0;
+        if (!b)
+            return;
+        if (rgl_trace_builder_info(b, "program=fuzz\n", 13) == RGL_OK &&
+            rgl_trace_builder_resource(b, RGL_RES_COMMANDS, data, size, &id) == RGL_OK &&
+            rgl_trace_builder_frame(b, 0, 0, 0, id, data, size) == RGL_OK &&
+            rgl_trace_builder_finish(b, with_index, &trace, &trace_size) == RGL_OK)
+            read_trace(trace, trace_size);
+        rgl_trace_builder_destroy(b);
+    }
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    read_trace(data, size);
+    decode_sequence(data, size, 0);
+    wrapped(data, size);
+    return 0;
+}
