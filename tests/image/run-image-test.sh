@@ -1,0 +1,117 @@
+#!/bin/sh
+# run-image-test.sh: one image test, GL frame against POV-Ray frame.
+#
+#   run-image-test.sh --name NAME --program PROG --raygl2pov R2P --povray POVRAY
+#                     --imgcmp IMGCMP --outdir DIR [--size WxH] [-- IMGCMP-OPTIONS...]
+#
+# 1. PROG --trace DIR/NAME/NAME.raygl --png DIR/NAME/gl.png [--size WxH]
+#    draws one frame with OSMesa, records it and writes the GL image;
+# 2. in DIR/NAME: R2P NAME.raygl -o pov   translates the trace;
+# 3. in DIR/NAME: POVRAY pov/frame-00000.ini -D -A   renders it (the .ini
+#    names the size, the gamma and pov/frame-00000.png);
+# 4. IMGCMP [IMGCMP-OPTIONS] --diff DIR/NAME/diff.png gl.png pov/frame-00000.png
+#    prints the figures and decides.
+#
+# Everything stays in DIR/NAME for inspection (diff.png: GL | POV | amplified
+# difference). Exit 0 on PASS, 1 on FAIL or on any step that fails, 2 on bad
+# usage. Meson passes the paths (tests/image/meson.build).
+set -u
+
+usage() {
+    echo "usage: $0 --name NAME --program PROG --raygl2pov R2P --povray POVRAY --imgcmp IMGCMP --outdir DIR [--size WxH] [-- IMGCMP-OPTIONS...]" >&2
+    exit 2
+}
+
+name= prog= r2p= povray= imgcmp= outdir= size=
+while [ $# -gt 0 ]; do
+    case $1 in
+    --) shift; break ;;
+    --name|--program|--raygl2pov|--povray|--imgcmp|--outdir|--size)
+        [ $# -ge 2 ] || usage
+        case $1 in
+        --name) name=$2 ;;
+        --program) prog=$2 ;;
+        --raygl2pov) r2p=$2 ;;
+        --povray) povray=$2 ;;
+        --imgcmp) imgcmp=$2 ;;
+        --outdir) outdir=$2 ;;
+        --size) size=$2 ;;
+        esac
+        shift 2 ;;
+    *) echo "$0: unknown argument $1" >&2; usage ;;
+    esac
+done
+[ -n "$name" ] && [ -n "$prog" ] && [ -n "$r2p" ] && [ -n "$povray" ] &&
+    [ -n "$imgcmp" ] && [ -n "$outdir" ] || usage
+case $name in
+*/*|.*|'') echo "$0: bad test name '$name'" >&2; exit 2 ;;
+esac
+
+dir=$outdir/$name
+rm -rf "$dir"
+mkdir -p "$dir" || exit 1
+fail() {
+    echo "image test $name: FAIL: $*"
+    exit 1
+}
+# Prints the end of a step's log when it failed.
+show_log() {
+    echo "--- last lines of $1:"
+    tail -n 25 "$1"
+    echo "---"
+}
+
+echo "image test $name: $dir"
+
+# 1. The GL frame and its trace.
+if [ -n "$size" ]; then
+    "$prog" --trace "$dir/$name.raygl" --png "$dir/gl.png" --size "$size" >"$dir/program.log" 2>&1
+else
+    "$prog" --trace "$dir/$name.raygl" --png "$dir/gl.png" >"$dir/program.log" 2>&1
+fi
+rc=$?
+if [ $rc -ne 0 ]; then
+    show_log "$dir/program.log"
+    fail "the program exited with $rc"
+fi
+[ -s "$dir/$name.raygl" ] || fail "the program wrote no trace"
+[ -s "$dir/gl.png" ] || fail "the program wrote no GL image"
+
+# 2. Translation, run where POV-Ray will run so that relative paths agree.
+(cd "$dir" && "$r2p" "$name.raygl" -o pov) >"$dir/raygl2pov.log" 2>&1
+rc=$?
+if [ $rc -ne 0 ]; then
+    show_log "$dir/raygl2pov.log"
+    fail "raygl2pov exited with $rc"
+fi
+if [ -s "$dir/raygl2pov.log" ]; then
+    echo "raygl2pov said:"
+    sed -n '1,20p' "$dir/raygl2pov.log"
+fi
+[ -f "$dir/pov/frame-00000.pov" ] && [ -f "$dir/pov/frame-00000.ini" ] ||
+    fail "raygl2pov wrote no pov/frame-00000.pov and .ini (it wrote: $(ls "$dir/pov" 2>/dev/null | tr '\n' ' '))"
+nframes=$(ls "$dir/pov" | grep -c '^frame-[0-9]*\.pov$')
+[ "$nframes" -eq 1 ] || fail "the program drew one frame, raygl2pov wrote $nframes"
+
+# 3. The POV-Ray frame: no display, no antialiasing (3.7 rejects +A0).
+(cd "$dir" && "$povray" pov/frame-00000.ini -D -A) >"$dir/povray.log" 2>&1
+rc=$?
+if [ $rc -ne 0 ]; then
+    show_log "$dir/povray.log"
+    fail "povray exited with $rc"
+fi
+[ -s "$dir/pov/frame-00000.png" ] || {
+    show_log "$dir/povray.log"
+    fail "povray wrote no pov/frame-00000.png (Output_File_Name in the .ini?)"
+}
+grep -i 'warning' "$dir/povray.log" | sort | uniq -c | sed 's/^/povray: /'
+
+# 4. The comparison.
+"$imgcmp" "$@" --diff "$dir/diff.png" "$dir/gl.png" "$dir/pov/frame-00000.png"
+rc=$?
+if [ $rc -ne 0 ]; then
+    echo "image test $name: FAIL (see $dir/diff.png: GL | POV | difference)"
+    exit 1
+fi
+echo "image test $name: PASS"
+exit 0
