@@ -407,12 +407,24 @@ static rgl_status open_common(rgl_reader *r, rgl_error *err)
     if (st != RGL_OK)
         return set_error(err, st, 0, "while finding chunks");
 
-    /* Resources by id; of two with one id the first in the file wins. */
+    /* Resources by id; of several with one id the first in the file wins,
+     * unless its payload is damaged and a later one is whole (a damaged id
+     * byte can make one resource claim another's id). */
     if (r->nres > 1) /* qsort's array must not be NULL, even for 0 elements */
         qsort(r->res, r->nres, sizeof *r->res, cmp_res);
-    for (size_t i = 0; i < r->nres; i++)
-        if (w == 0 || r->res[i].id != r->res[w - 1].id)
-            r->res[w++] = r->res[i];
+    for (size_t i = 0; i < r->nres;) {
+        size_t j = i, pick = i;
+        while (j < r->nres && r->res[j].id == r->res[i].id)
+            j++;
+        if (j - i > 1)
+            for (size_t k = i; k < j; k++)
+                if (payload_ok(r, r->res[k].offset, r->res[k].length)) {
+                    pick = k;
+                    break;
+                }
+        r->res[w++] = r->res[pick];
+        i = j;
+    }
     r->nres = w;
     if (err)
         memset(err, 0, sizeof *err);

@@ -185,4 +185,113 @@ static inline void random_cmd(rng *r, rgl_cmd *cmd, uint32_t opcode)
     }
 }
 
+/* ---- A small sample trace --------------------------------------------------- */
+
+#define SAMPLE_FRAMES 5
+#define SAMPLE_RESOURCES 3
+
+typedef struct sample {
+    rgl_trace_builder *builder;
+    const uint8_t *data;
+    size_t size;
+    uint8_t frame_cmds[SAMPLE_FRAMES][512]; /* each frame's command bytes */
+    size_t frame_len[SAMPLE_FRAMES];
+    uint32_t frame_state[SAMPLE_FRAMES];
+    uint8_t res_bytes[SAMPLE_RESOURCES][256];
+    size_t res_len[SAMPLE_RESOURCES];
+    uint32_t res_id[SAMPLE_RESOURCES];
+} sample;
+
+static const char sample_info[] = "program=sample\nrecorder=raygl test\n";
+
+/* Appends command `opcode` with random arguments (short blobs) to buf. */
+static inline size_t sample_cmd(rng *r, uint32_t opcode, uint8_t *buf, size_t cap)
+{
+    static rgl_cmd cmd;
+    random_cmd(r, &cmd, opcode);
+    for (uint32_t k = 0; k < cmd.nargs; k++) {
+        if (cmd.arg[k].kind == RGL_ARG_STRING || cmd.arg[k].kind == RGL_ARG_BLOB)
+            cmd.arg[k].count = cmd.arg[k].count > 8 ? 8 : cmd.arg[k].count;
+        if (cmd.arg[k].kind == RGL_ARG_COUNTED && cmd.arg[k].count > 4)
+            cmd.arg[k].count = 4;
+    }
+    return rgl_cmd_encode(&cmd, buf, cap);
+}
+
+/* Builds INFO, 3 resources (snapshot, texels, list body) and 5 frames on two
+ * streams, with or without the index. Returns false on a builder error. */
+static inline bool sample_build(sample *s, bool with_index, uint64_t seed)
+{
+    static const uint32_t ops[] = {RGL_OP_Begin, RGL_OP_Color3f, RGL_OP_Normal3f,
+                                   RGL_OP_Vertex3f, RGL_OP_Vertex3f, RGL_OP_Vertex3f,
+                                   RGL_OP_End, RGL_OP_Lightfv, RGL_OP_FrameBegin,
+                                   RGL_OP_DrawElements, RGL_OP_Matrix, RGL_OP_Sphere};
+    rng r = {seed};
+    memset(s, 0, sizeof *s);
+    s->builder = rgl_trace_builder_create();
+    if (!s->builder)
+        return false;
+    if (rgl_trace_builder_info(s->builder, sample_info, sizeof sample_info - 1) != RGL_OK)
+        return false;
+    for (int i = 0; i < SAMPLE_RESOURCES; i++) {
+        uint32_t kind = i == 1 ? RGL_RES_BYTES : RGL_RES_COMMANDS;
+        if (kind == RGL_RES_BYTES) {
+            s->res_len[i] = 48;
+            for (size_t k = 0; k < 48; k++)
+                s->res_bytes[i][k] = (uint8_t)rng_next(&r);
+        } else {
+            for (int k = 0; k < 4; k++)
+                s->res_len[i] += sample_cmd(&r, ops[rng_below(&r, 12)], s->res_bytes[i] + s->res_len[i],
+                                            sizeof s->res_bytes[i] - s->res_len[i]);
+        }
+        if (rgl_trace_builder_resource(s->builder, kind, s->res_bytes[i], s->res_len[i],
+                                       &s->res_id[i]) != RGL_OK)
+            return false;
+    }
+    for (int f = 0; f < SAMPLE_FRAMES; f++) {
+        for (int k = 0; k < 6; k++)
+            s->frame_len[f] += sample_cmd(&r, ops[rng_below(&r, 12)], s->frame_cmds[f] + s->frame_len[f],
+                                          sizeof s->frame_cmds[f] - s->frame_len[f]);
+        s->frame_state[f] = f % 2 ? 0 : s->res_id[0];
+        if (rgl_trace_builder_frame(s->builder, (uint32_t)f % 2, (uint32_t)f / 2,
+                                    f % 2 ? RGL_FRAME_STATE_CARRIED : RGL_FRAME_LIVE_CONTEXT,
+                                    s->frame_state[f], s->frame_cmds[f], s->frame_len[f]) != RGL_OK)
+            return false;
+    }
+    return rgl_trace_builder_finish(s->builder, with_index, &s->data, &s->size) == RGL_OK;
+}
+
+/* Whether frame f of the reader is sample frame f, command bytes and all. */
+static inline bool sample_frame_ok(const sample *s, rgl_reader *rd, size_t i, size_t f)
+{
+    rgl_frame_info fi;
+    rgl_error err;
+    if (rgl_reader_frame(rd, i, &fi, &err) != RGL_OK)
+        return false;
+    return fi.stream == f % 2 && fi.number == f / 2 && fi.state == s->frame_state[f] &&
+           fi.commands_size == s->frame_len[f] &&
+           memcmp(fi.commands, s->frame_cmds[f], s->frame_len[f]) == 0 &&
+           fi.flags == (f % 2 ? RGL_FRAME_STATE_CARRIED : RGL_FRAME_LIVE_CONTEXT);
+}
+
+/* The chunk layout of a sample trace: offsets of each chunk, in file order. */
+typedef struct chunk_span {
+    uint64_t start, end;
+    uint8_t type;
+} chunk_span;
+
+static inline size_t chunk_spans(const uint8_t *d, size_t size, chunk_span *out, size_t cap)
+{
+    size_t n = 0;
+    uint64_t pos = RGL_FILE_HEADER_SIZE;
+    while (pos + RGL_CHUNK_HEADER_SIZE <= size && n < cap) {
+        uint32_t len = rgl_get_u32(d + pos + 8);
+        out[n].start = pos;
+        out[n].end = pos + RGL_CHUNK_HEADER_SIZE + len + RGL_CHUNK_TRAILER_SIZE;
+        out[n].type = d[pos + 4];
+        pos = out[n++].end;
+    }
+    return n;
+}
+
 #endif
