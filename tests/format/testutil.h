@@ -23,13 +23,9 @@ static unsigned long test_checks, test_failures;
 
 #define CHECK(cond) check_((cond), #cond, __FILE__, __LINE__)
 #define CHECKF(cond, ...)                                                             \
-    do {                                                                              \
-        if (!check_((cond), #cond, __FILE__, __LINE__)) {                             \
-            fprintf(stderr, "    ");                                                  \
-            fprintf(stderr, __VA_ARGS__);                                             \
-            fprintf(stderr, "\n");                                                    \
-        }                                                                             \
-    } while (0)
+    (check_((cond), #cond, __FILE__, __LINE__)                                        \
+         ? 1                                                                          \
+         : (fprintf(stderr, "    "), fprintf(stderr, __VA_ARGS__), fprintf(stderr, "\n"), 0))
 
 static inline int check_(int ok, const char *what, const char *file, int line)
 {
