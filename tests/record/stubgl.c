@@ -1,0 +1,276 @@
+/* stubgl.c: the stub GL, GLU and GLUT of the recorder unit tests (see
+ * stubgl.h). The recorder sources are built a second time against this file
+ * instead of the real libraries, so the tests need no GPU and no display. */
+#include <string.h>
+
+#include <GL/gl.h>
+#include <GL/glu.h>
+#include <GL/freeglut.h>
+
+#include "raygl.h"
+#include "stubgl.h"
+
+stub_call stub_log[STUB_LOG_MAX];
+size_t stub_nlog;
+int stub_glut_ready = 1;
+
+void stub_reset(void) { stub_nlog = 0; }
+
+static stub_call *stub_begin(const char *name)
+{
+    static stub_call overflow;
+    stub_call *c = stub_nlog < STUB_LOG_MAX ? &stub_log[stub_nlog] : &overflow;
+    stub_nlog++;
+    memset(c, 0, sizeof *c);
+    c->name = name;
+    return c;
+}
+
+static void arg_v(stub_call *c, double v)
+{
+    c->v[c->nargs] = v;
+    c->p[c->nargs++] = NULL;
+}
+
+static void arg_p(stub_call *c, const void *p)
+{
+    c->v[c->nargs] = 0;
+    c->p[c->nargs++] = p;
+}
+
+/* ---- Generated: the rows with gen AUTO and PRIM -------------------------------- */
+
+/* <GL/gl.h> declares the transpose-matrix calls with array parameters. */
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 11
+#pragma GCC diagnostic ignored "-Warray-parameter"
+#endif
+
+#define STUB_LOG_P(t, n) arg_v(c, (double)(n));
+#define STUB_LOG_A(t, n, cnt) arg_p(c, (const void *)(n));
+#define STUB_LOG_N(t, n, cnt) arg_p(c, (const void *)(n));
+#define STUB_LOG_STR(n) arg_p(c, (const void *)(n));
+#define STUB_LOG_NOARGS
+
+#define STUB_GEN_AUTO(op, api, name, ...)                                      \
+    void RGL_REALFN(api, name)(RGL_MAP_LIST(RGL_PROTO_, __VA_ARGS__))          \
+    {                                                                          \
+        stub_call *c = stub_begin(RGL_NAMESTR(api, name));                     \
+        (void)c;                                                               \
+        RGL_MAP(STUB_LOG_, __VA_ARGS__)                                        \
+    }
+#define STUB_GEN_PRIM STUB_GEN_AUTO
+#define STUB_GEN_CUSTOM(op, api, name, ...)
+#define STUB_GEN_WIRE(op, api, name, ...)
+#define RGL_CMD(op, api, gen, name, handler, ...) STUB_GEN_##gen(op, api, name, __VA_ARGS__)
+#include "commands.def"
+#undef RGL_CMD
+
+/* ---- By hand: the real calls behind the CUSTOM rows ------------------------------ */
+
+#define LOG0(n) (void)stub_begin(n)
+#define LOGV(n, ...)                                                           \
+    do {                                                                       \
+        stub_call *c = stub_begin(n);                                          \
+        double v_[] = {__VA_ARGS__};                                           \
+        for (size_t k_ = 0; k_ < sizeof v_ / sizeof v_[0]; k_++)               \
+            arg_v(c, v_[k_]);                                                  \
+    } while (0)
+
+void glArrayElement(GLint i) { LOGV("glArrayElement", i); }
+void glDrawArrays(GLenum mode, GLint first, GLsizei count)
+{
+    LOGV("glDrawArrays", mode, first, count);
+}
+void glDrawElements(GLenum mode, GLsizei count, GLenum type, const GLvoid *indices)
+{
+    stub_call *c = stub_begin("glDrawElements");
+    arg_v(c, mode);
+    arg_v(c, count);
+    arg_v(c, type);
+    arg_p(c, indices);
+}
+void glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type,
+                         const GLvoid *indices)
+{
+    stub_call *c = stub_begin("glDrawRangeElements");
+    arg_v(c, mode);
+    arg_v(c, start);
+    arg_v(c, end);
+    arg_v(c, count);
+    arg_v(c, type);
+    arg_p(c, indices);
+}
+/* No context: GL leaves the names untouched. */
+void glGenTextures(GLsizei n, GLuint *textures)
+{
+    stub_call *c = stub_begin("glGenTextures");
+    arg_v(c, n);
+    arg_p(c, textures);
+}
+void glDeleteTextures(GLsizei n, const GLuint *textures)
+{
+    stub_call *c = stub_begin("glDeleteTextures");
+    arg_v(c, n);
+    arg_p(c, textures);
+}
+void glBindTexture(GLenum target, GLuint texture) { LOGV("glBindTexture", target, texture); }
+void glTexImage1D(GLenum target, GLint level, GLint internalFormat, GLsizei width, GLint border,
+                  GLenum format, GLenum type, const GLvoid *pixels)
+{
+    LOGV("glTexImage1D", target, level, internalFormat, width, border, format, type);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], pixels);
+}
+void glTexImage2D(GLenum target, GLint level, GLint internalFormat, GLsizei width, GLsizei height,
+                  GLint border, GLenum format, GLenum type, const GLvoid *pixels)
+{
+    LOGV("glTexImage2D", target, level, internalFormat, width, height, border, format, type);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], pixels);
+}
+void glTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLsizei width,
+                     GLsizei height, GLenum format, GLenum type, const GLvoid *pixels)
+{
+    LOGV("glTexSubImage2D", target, level, xoffset, yoffset, width, height, format, type);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], pixels);
+}
+void glTexParameterf(GLenum target, GLenum pname, GLfloat param)
+{
+    LOGV("glTexParameterf", target, pname, param);
+}
+void glTexParameteri(GLenum target, GLenum pname, GLint param)
+{
+    LOGV("glTexParameteri", target, pname, param);
+}
+void glTexParameterfv(GLenum target, GLenum pname, const GLfloat *params)
+{
+    LOGV("glTexParameterfv", target, pname);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], params);
+}
+void glTexParameteriv(GLenum target, GLenum pname, const GLint *params)
+{
+    LOGV("glTexParameteriv", target, pname);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], params);
+}
+GLuint glGenLists(GLsizei range)
+{
+    LOGV("glGenLists", range);
+    return 0;
+}
+void glNewList(GLuint list, GLenum mode) { LOGV("glNewList", list, mode); }
+void glEndList(void) { LOG0("glEndList"); }
+void glCallLists(GLsizei n, GLenum type, const GLvoid *lists)
+{
+    LOGV("glCallLists", n, type);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], lists);
+}
+void glDeleteLists(GLuint list, GLsizei range) { LOGV("glDeleteLists", list, range); }
+void glVertexPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+    LOGV("glVertexPointer", size, type, stride);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], ptr);
+}
+void glNormalPointer(GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+    LOGV("glNormalPointer", type, stride);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], ptr);
+}
+void glColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+    LOGV("glColorPointer", size, type, stride);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], ptr);
+}
+void glTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+    LOGV("glTexCoordPointer", size, type, stride);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], ptr);
+}
+void glEdgeFlagPointer(GLsizei stride, const GLvoid *ptr)
+{
+    LOGV("glEdgeFlagPointer", stride);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], ptr);
+}
+void glInterleavedArrays(GLenum format, GLsizei stride, const GLvoid *pointer)
+{
+    LOGV("glInterleavedArrays", format, stride);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], pointer);
+}
+void glEnableClientState(GLenum array) { LOGV("glEnableClientState", array); }
+void glDisableClientState(GLenum array) { LOGV("glDisableClientState", array); }
+
+static char quadrics[16];
+static unsigned nquadrics;
+GLUquadric *gluNewQuadric(void)
+{
+    LOG0("gluNewQuadric");
+    return (GLUquadric *)&quadrics[nquadrics++ % sizeof quadrics];
+}
+void gluDeleteQuadric(GLUquadric *q)
+{
+    stub_call *c = stub_begin("gluDeleteQuadric");
+    arg_p(c, q);
+}
+#define QUAD_STATE(fn, T)                                                      \
+    void fn(GLUquadric *q, T v)                                                \
+    {                                                                          \
+        stub_call *c = stub_begin(#fn);                                        \
+        arg_p(c, q);                                                           \
+        arg_v(c, v);                                                           \
+    }
+QUAD_STATE(gluQuadricDrawStyle, GLenum)
+QUAD_STATE(gluQuadricNormals, GLenum)
+QUAD_STATE(gluQuadricOrientation, GLenum)
+QUAD_STATE(gluQuadricTexture, GLboolean)
+void gluSphere(GLUquadric *q, GLdouble radius, GLint slices, GLint stacks)
+{
+    (void)q;
+    LOGV("gluSphere", radius, slices, stacks);
+}
+void gluCylinder(GLUquadric *q, GLdouble base, GLdouble top, GLdouble height, GLint slices,
+                 GLint stacks)
+{
+    (void)q;
+    LOGV("gluCylinder", base, top, height, slices, stacks);
+}
+void gluDisk(GLUquadric *q, GLdouble inner, GLdouble outer, GLint slices, GLint loops)
+{
+    (void)q;
+    LOGV("gluDisk", inner, outer, slices, loops);
+}
+void gluPartialDisk(GLUquadric *q, GLdouble inner, GLdouble outer, GLint slices, GLint loops,
+                    GLdouble start, GLdouble sweep)
+{
+    (void)q;
+    LOGV("gluPartialDisk", inner, outer, slices, loops, start, sweep);
+}
+GLint gluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLsizei height,
+                        GLenum format, GLenum type, const void *data)
+{
+    LOGV("gluBuild2DMipmaps", target, internalFormat, width, height, format, type);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], data);
+    return 0;
+}
+void glutSwapBuffers(void) { LOG0("glutSwapBuffers"); }
+
+/* ---- Queries: GL with no current context changes nothing ---------------------- */
+
+int glutGet(GLenum what) { return what == GLUT_INIT_STATE ? stub_glut_ready : 0; }
+void glGetIntegerv(GLenum pname, GLint *v) { (void)pname, (void)v; }
+void glGetFloatv(GLenum pname, GLfloat *v) { (void)pname, (void)v; }
+void glGetDoublev(GLenum pname, GLdouble *v) { (void)pname, (void)v; }
+void glGetBooleanv(GLenum pname, GLboolean *v) { (void)pname, (void)v; }
+void glGetLightfv(GLenum l, GLenum pname, GLfloat *v) { (void)l, (void)pname, (void)v; }
+void glGetMaterialfv(GLenum f, GLenum pname, GLfloat *v) { (void)f, (void)pname, (void)v; }
+void glGetTexGenfv(GLenum c, GLenum pname, GLfloat *v) { (void)c, (void)pname, (void)v; }
+void glGetTexGeniv(GLenum c, GLenum pname, GLint *v) { (void)c, (void)pname, (void)v; }
+void glGetTexEnvfv(GLenum t, GLenum pname, GLfloat *v) { (void)t, (void)pname, (void)v; }
+void glGetTexEnviv(GLenum t, GLenum pname, GLint *v) { (void)t, (void)pname, (void)v; }
+void glGetTexParameteriv(GLenum t, GLenum pname, GLint *v) { (void)t, (void)pname, (void)v; }
+GLboolean glIsEnabled(GLenum cap)
+{
+    (void)cap;
+    return GL_FALSE;
+}
+GLboolean glIsTexture(GLuint t)
+{
+    (void)t;
+    return GL_FALSE;
+}

@@ -1,0 +1,32 @@
+/* stubgl.h: a stand-in for libGL, libGLU and libglut in the unit tests.
+ *
+ * stubgl.c defines every real function the recorder forwards to: those of
+ * the AUTO and PRIM rows are generated from format/commands.def, the rest
+ * are written by hand. Each logs its call (name, scalar arguments as
+ * doubles, pointer arguments as given). Queries (glGet*) behave as GL with
+ * no current context: they leave their output untouched.
+ */
+#ifndef RGL_TEST_STUBGL_H
+#define RGL_TEST_STUBGL_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "format.h"
+
+#define STUB_LOG_MAX 64
+
+typedef struct stub_call {
+    const char *name;
+    unsigned nargs;
+    double v[RGL_MAX_ARGS];      /* scalars */
+    const void *p[RGL_MAX_ARGS]; /* pointers (NULL for scalars) */
+} stub_call;
+
+extern stub_call stub_log[STUB_LOG_MAX];
+extern size_t stub_nlog;     /* calls logged since stub_reset (may pass MAX) */
+extern int stub_glut_ready;  /* what glutGet(GLUT_INIT_STATE) returns */
+
+void stub_reset(void);
+
+#endif

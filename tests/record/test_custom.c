@@ -1,0 +1,290 @@
+/* test_custom.c: the hand-written entry points against the stub GL (no
+ * context, as in batch use), and allocation failure at every allocation.
+ * Part of test_entry; see that file. */
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "check.h"
+#include "raygl.h"
+#include "recorder.h"
+#include "stubgl.h"
+
+void test_custom(const char *dir);
+void test_alloc_failures(const char *dir);
+
+/* The BLOB argument of a decoded command of frame f, command i. */
+static const uint8_t *blob_of(rgl_reader *r, size_t f, size_t i, unsigned arg, size_t *n)
+{
+    rgl_frame_info fi;
+    rgl_cmd_iter it;
+    static rgl_cmd cmd;
+    if (rgl_reader_frame(r, f, &fi, NULL) != RGL_OK)
+        return NULL;
+    rgl_cmd_iter_init(&it, fi.commands, fi.commands_size, fi.commands_offset);
+    for (size_t k = 0; k <= i; k++)
+        if (rgl_cmd_next(&it, &cmd) != RGL_OK)
+            return NULL;
+    *n = cmd.arg[arg].count;
+    return cmd.arg[arg].bytes;
+}
+
+static void expect_lines(const trace_cmds *c, const char *const *want, size_t n, const char *what)
+{
+    bool ok = CHECKM(c->count == n, "%s: %zu commands, want %zu", what, c->count, n);
+    for (size_t i = 0; i < n && i < c->count; i++)
+        ok &= CHECKM(strcmp(c->lines[i], want[i]) == 0, "%s[%zu]: got %s, want %s", what, i,
+                     c->lines[i], want[i]);
+    if (!ok)
+        trace_cmds_print(c, what);
+}
+
+static const float verts[4][4] = {{0, 1, 2, -1}, {3, 4, 5, -1}, {6, 7, 8, -1}, {9, 10, 11, -1}};
+static const GLubyte names[6] = {0, 1, 0, 2, 0, 3};
+static const GLubyte colors[4][4] = {{1, 2, 3, 4}, {5, 6, 7, 8}, {9, 10, 11, 12}, {13, 14, 15, 16}};
+
+static void record_frames(bool first_run)
+{
+    GLuint t[2] = {77, 77};
+    rayglGenTextures(2, t);
+    CHECK(!first_run || (t[0] == 1 && t[1] == 2));
+    rayglBindTexture(GL_TEXTURE_2D, t[1]);
+    const GLfloat bc[4] = {0.5f, 0.25f, 0, 1};
+    rayglTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, bc);
+    /* 3x2 RGB, rows padded to 12 bytes under the default alignment. */
+    GLubyte padded[2 * 12];
+    for (int i = 0; i < 24; i++)
+        padded[i] = (GLubyte)(i % 12 < 9 ? 100 + i : 0xEE);
+    stub_reset();
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 3, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, padded);
+    CHECK(stub_nlog == 1 && stub_log[0].p[8] == padded);
+    rayglTexImage2D(GL_TEXTURE_2D, 1, GL_RGB, 3, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, padded);
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 4, 4, 0, GL_RGB, GL_UNSIGNED_BYTE, NULL);
+
+    GLuint first = rayglGenLists(3);
+    CHECK(!first_run || first == 1);
+    rayglNewList(2, GL_COMPILE);
+    rayglBegin(GL_LINES);
+    rayglVertex2i(1, 2);
+    rayglEnd();
+    rayglEndList();
+    rayglCallLists(3, GL_2_BYTES, names);
+
+    rayglEnableClientState(GL_VERTEX_ARRAY);
+    rayglEnableClientState(GL_COLOR_ARRAY);
+    rayglVertexPointer(3, GL_FLOAT, 16, verts);
+    rayglColorPointer(4, GL_UNSIGNED_BYTE, 0, colors);
+    rayglDrawArrays(GL_TRIANGLES, 1, 2);
+    const GLushort idx[3] = {3, 1, 2};
+    rayglDrawElements(GL_POINTS, 3, GL_UNSIGNED_SHORT, idx);
+    rayglDrawRangeElements(GL_POINTS, 0, 9, 3, GL_UNSIGNED_SHORT, idx);
+    rayglutSwapBuffers();
+
+    /* Frame 1: interleaved arrays, then elements one by one. */
+    struct { float t[2]; GLubyte c[4]; float v[3]; } il[2] = {
+        {{0.5f, 0.25f}, {1, 2, 3, 4}, {1, 2, 3}}, {{0.75f, 1}, {5, 6, 7, 8}, {4, 5, 6}}};
+    rayglInterleavedArrays(GL_T2F_C4UB_V3F, 0, il);
+    rayglDrawArrays(GL_POINTS, 0, 2);
+    rayglDisableClientState(GL_COLOR_ARRAY);
+    rayglDisableClientState(GL_TEXTURE_COORD_ARRAY);
+    rayglBegin(GL_POINTS);
+    rayglArrayElement(1);
+    rayglEnd();
+    rayglDisableClientState(GL_VERTEX_ARRAY);
+    /* An enabled array without a pointer: GL would fault; forwarded only. */
+    rayglEnableClientState(GL_NORMAL_ARRAY);
+    stub_reset();
+    rayglDrawArrays(GL_POINTS, 0, 1);
+    CHECK(stub_nlog == 1);
+    rayglDisableClientState(GL_NORMAL_ARRAY);
+
+    GLUquadric *q = raygluNewQuadric();
+    raygluQuadricDrawStyle(q, GLU_LINE);
+    raygluQuadricTexture(q, GL_TRUE);
+    raygluCylinder(q, 1, 0.5, 2, 8, 3);
+    raygluPartialDisk(q, 0.5, 1, 6, 2, 45.5, 92.5);
+    raygluDeleteQuadric(q);
+    rayglDeleteLists(1, 3);
+    rayglDeleteTextures(2, t);
+    /* Ends frame 1 (it holds commands), starts frame 2. */
+    rayglFrameBegin("a.pov", 1, 2, 3, 4, 5, 6, 7, 8, 9);
+    rayglVertex3f(1, 2, 3);
+    rayglFrameEnd();
+    rayglutSwapBuffers();
+}
+
+void test_custom(const char *dir)
+{
+    char path[128];
+    snprintf(path, sizeof path, "%s/custom.raygl", dir);
+    CHECK(rayglRecordOpen(path) == 0);
+    record_frames(true);
+    rayglRecordClose();
+
+    rgl_reader *r = trace_open(path);
+    if (!r)
+        return;
+    CHECK(rgl_reader_frame_count(r) == 4);
+    rgl_frame_info fi;
+    static const char *const f0[] = {
+        "glGenTextures(textures=[1, 2])",
+        "glBindTexture(target=GL_TEXTURE_2D, texture=2)",
+        "glTexParameterfv(target=GL_TEXTURE_2D, pname=GL_TEXTURE_BORDER_COLOR, params=[0.5, 0.25, 0, 1])",
+        "glTexImage2D(target=GL_TEXTURE_2D, level=0, internalformat=6407, width=3, height=2, border=0, format=GL_RGB, type=GL_UNSIGNED_BYTE, pixels=#1)",
+        "glTexImage2D(target=GL_TEXTURE_2D, level=1, internalformat=6407, width=3, height=2, border=0, format=GL_RGB, type=GL_UNSIGNED_BYTE, pixels=#1)",
+        "glTexImage2D(target=GL_TEXTURE_2D, level=0, internalformat=6407, width=4, height=4, border=0, format=GL_RGB, type=GL_UNSIGNED_BYTE, pixels=#0)",
+        "glGenLists(range=3, first=1)",
+        "glNewList(list=2, mode=GL_COMPILE, body=#2)",
+        "glEndList()",
+        "glCallLists(n=3, type=GL_2_BYTES, lists=<6 bytes>)",
+        "glEnableClientState(array=GL_VERTEX_ARRAY)",
+        "glEnableClientState(array=GL_COLOR_ARRAY)",
+        "glVertexPointer(size=3, type=GL_FLOAT, stride=16)",
+        "glColorPointer(size=4, type=GL_UNSIGNED_BYTE, stride=0)",
+        "@ArrayData(array=GL_VERTEX_ARRAY, first=1, size=3, type=GL_FLOAT, data=<24 bytes>)",
+        "@ArrayData(array=GL_COLOR_ARRAY, first=1, size=4, type=GL_UNSIGNED_BYTE, data=<8 bytes>)",
+        "glDrawArrays(mode=GL_TRIANGLES, first=1, count=2)",
+        "@ArrayData(array=GL_VERTEX_ARRAY, first=1, size=3, type=GL_FLOAT, data=<36 bytes>)",
+        "@ArrayData(array=GL_COLOR_ARRAY, first=1, size=4, type=GL_UNSIGNED_BYTE, data=<12 bytes>)",
+        "glDrawElements(mode=GL_POINTS, count=3, type=GL_UNSIGNED_SHORT, indices=<6 bytes>)",
+        "@ArrayData(array=GL_VERTEX_ARRAY, first=1, size=3, type=GL_FLOAT, data=<36 bytes>)",
+        "@ArrayData(array=GL_COLOR_ARRAY, first=1, size=4, type=GL_UNSIGNED_BYTE, data=<12 bytes>)",
+        "glDrawRangeElements(mode=GL_POINTS, start=0, end=9, count=3, type=GL_UNSIGNED_SHORT, indices=<6 bytes>)",
+        "glutSwapBuffers()",
+    };
+    trace_cmds c = trace_frame(r, 0, &fi);
+    CHECK(c.clean && fi.flags == RGL_FRAME_STATE_CARRIED && fi.state == 0 && fi.number == 0);
+    expect_lines(&c, f0, sizeof f0 / sizeof f0[0], "frame 0");
+    trace_cmds_free(&c);
+
+    /* Packed: the vertex array's stride of 16 is gone; elements 1 and 2. */
+    size_t n;
+    const uint8_t *b = blob_of(r, 0, 14, 4, &n);
+    if (CHECK(b && n == 24)) {
+        float got[6];
+        memcpy(got, b, sizeof got);
+        CHECK(got[0] == 3 && got[2] == 5 && got[3] == 6 && got[5] == 8);
+    }
+    b = blob_of(r, 0, 18, 4, &n);
+    CHECK(b && n == 12 && b[0] == 5 && b[11] == 16);
+    b = blob_of(r, 0, 9, 2, &n);
+    CHECK(b && n == 6 && memcmp(b, names, 6) == 0);
+
+    /* The texels, tight; the same image twice is one resource. */
+    rgl_resource res;
+    if (CHECK(rgl_reader_resource(r, 1, &res, NULL) == RGL_OK)) {
+        CHECK(res.kind == RGL_RES_BYTES && res.size == 18);
+        CHECK(res.size == 18 && res.data[0] == 100 && res.data[8] == 108 && res.data[9] == 112 &&
+              res.data[17] == 120);
+    }
+    trace_cmds body = trace_resource_cmds(r, 2);
+    static const char *const lb[] = {"glBegin(mode=GL_LINES)", "glVertex2i(x=1, y=2)", "glEnd()"};
+    expect_lines(&body, lb, 3, "list body");
+    trace_cmds_free(&body);
+
+    static const char *const f1[] = {
+        "glInterleavedArrays(format=GL_T2F_C4UB_V3F, stride=0)",
+        "@ArrayData(array=GL_VERTEX_ARRAY, first=0, size=3, type=GL_FLOAT, data=<24 bytes>)",
+        "@ArrayData(array=GL_COLOR_ARRAY, first=0, size=4, type=GL_UNSIGNED_BYTE, data=<8 bytes>)",
+        "@ArrayData(array=GL_TEXTURE_COORD_ARRAY, first=0, size=2, type=GL_FLOAT, data=<16 bytes>)",
+        "glDrawArrays(mode=GL_POINTS, first=0, count=2)",
+        "glDisableClientState(array=GL_COLOR_ARRAY)",
+        "glDisableClientState(array=GL_TEXTURE_COORD_ARRAY)",
+        "glBegin(mode=GL_POINTS)",
+        "@ArrayData(array=GL_VERTEX_ARRAY, first=1, size=3, type=GL_FLOAT, data=<12 bytes>)",
+        "glArrayElement(i=1)",
+        "glEnd()",
+        "glDisableClientState(array=GL_VERTEX_ARRAY)",
+        "glEnableClientState(array=GL_NORMAL_ARRAY)",
+        "glDisableClientState(array=GL_NORMAL_ARRAY)",
+        "gluNewQuadric(quad=#1)",
+        "gluQuadricDrawStyle(quad=#1, draw=GLU_LINE)",
+        "gluQuadricTexture(quad=#1, texture=GL_TRUE)",
+        "gluCylinder(quad=#1, base=1, top=0.5, height=2, slices=8, stacks=3)",
+        "gluPartialDisk(quad=#1, inner=0.5, outer=1, slices=6, loops=2, start=45.5, sweep=92.5)",
+        "gluDeleteQuadric(quad=#1)",
+        "glDeleteLists(list=1, range=3)",
+        "glDeleteTextures(textures=[1, 2])",
+    };
+    c = trace_frame(r, 1, &fi);
+    CHECK(c.clean && fi.number == 1);
+    expect_lines(&c, f1, sizeof f1 / sizeof f1[0], "frame 1");
+    trace_cmds_free(&c);
+    b = blob_of(r, 1, 1, 4, &n);
+    if (CHECK(b && n == 24)) {
+        float got[6];
+        memcpy(got, b, sizeof got);
+        CHECK(got[0] == 1 && got[2] == 3 && got[3] == 4 && got[5] == 6);
+    }
+    b = blob_of(r, 1, 3, 4, &n);
+    if (CHECK(b && n == 16)) {
+        float got[4];
+        memcpy(got, b, sizeof got);
+        CHECK(got[0] == 0.5f && got[1] == 0.25f && got[2] == 0.75f && got[3] == 1);
+    }
+
+    static const char *const f2[] = {
+        "rayglFrameBegin(file=\"a.pov\", locx=1, locy=2, locz=3, lookx=4, looky=5, lookz=6, lightx=7, lighty=8, lightz=9)",
+        "glVertex3f(x=1, y=2, z=3)",
+        "rayglFrameEnd()",
+    };
+    c = trace_frame(r, 2, &fi);
+    expect_lines(&c, f2, 3, "frame 2");
+    trace_cmds_free(&c);
+    c = trace_frame(r, 3, &fi);
+    CHECK(c.count == 1 && fi.number == 3);
+    trace_cmds_free(&c);
+    rgl_reader_destroy(r);
+    if (!check_failures)
+        unlink(path);
+}
+
+static int handler_calls;
+static void count_handler(const char *message, void *user)
+{
+    (void)user;
+    CHECK(strncmp(message, "raygl: recording stopped: ", 26) == 0);
+    handler_calls++;
+}
+
+/* Fails the Nth allocation for N = 1.. until a run has no failure: the
+ * program goes on, the recorder fails once, and what was written reads. */
+void test_alloc_failures(const char *dir)
+{
+    char path[128];
+    snprintf(path, sizeof path, "%s/alloc.raygl", dir);
+    rayglRecordSetErrorHandler(count_handler, NULL);
+    bool clean_run = false;
+    for (unsigned long nth = 1; nth < 200 && !clean_run; nth++) {
+        handler_calls = 0;
+        CHECK(rayglRecordOpen(path) == 0);
+        rgl_test_fail_alloc(nth);
+        /* A new thread-free stream each round: drop the old one's buffers. */
+        for (int k = 0; k < 3; k++) {
+            record_frames(false);
+            for (int v = 0; v < 20000; v++)
+                rayglVertex3f((float)v, 1, 2);
+            rayglutSwapBuffers();
+        }
+        int st = rayglRecordStatus();
+        clean_run = st == RAYGL_RECORDING;
+        CHECKM(st == RAYGL_RECORDING || st == RAYGL_FAILED, "round %lu: status %d", nth, st);
+        CHECKM(handler_calls == (st == RAYGL_FAILED), "round %lu: %d messages", nth, handler_calls);
+        CHECK(st != RAYGL_FAILED || rayglRecordError() != NULL);
+        rgl_test_fail_alloc(0);
+        rayglRecordClose();
+        rgl_reader *r = NULL;
+        if (rgl_reader_open_file(path, &r, NULL) == RGL_OK) {
+            for (size_t f = 0; f < rgl_reader_frame_count(r); f++) {
+                rgl_frame_info fi;
+                trace_cmds c = trace_frame(r, f, &fi);
+                CHECKM(c.clean, "round %lu frame %zu", nth, f);
+                trace_cmds_free(&c);
+            }
+            rgl_reader_destroy(r);
+        }
+    }
+    CHECK(clean_run);
+    rayglRecordSetErrorHandler(NULL, NULL);
+    unlink(path);
+}
