@@ -132,7 +132,7 @@ static bool double_to_f32_bits(double d, uint32_t *bits)
  * (only the member that matches the type is read). */
 static void put_scalar(sink *s, uint8_t type, int64_t i, uint64_t u, double f)
 {
-    uint32_t bits;
+    uint32_t bits = 0;
     switch (type) {
     case RGL_T_b:
         if (i < INT8_MIN || i > INT8_MAX) s->bad = true;
