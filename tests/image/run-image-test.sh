@@ -25,6 +25,7 @@ usage() {
 name= prog= r2p= povray= imgcmp= outdir= size=
 while [ $# -gt 0 ]; do
     case $1 in
+    --help) usage ;;
     --) shift; break ;;
     --name|--program|--raygl2pov|--povray|--imgcmp|--outdir|--size)
         [ $# -ge 2 ] || usage
@@ -104,7 +105,7 @@ fi
     show_log "$dir/povray.log"
     fail "povray wrote no pov/frame-00000.png (Output_File_Name in the .ini?)"
 }
-grep -i 'warning' "$dir/povray.log" | sort | uniq -c | sed 's/^/povray: /'
+grep 'Warning:' "$dir/povray.log" | sort | uniq -c | sed 's/^/povray: /'
 
 # 4. The comparison.
 "$imgcmp" "$@" --diff "$dir/diff.png" "$dir/gl.png" "$dir/pov/frame-00000.png"
