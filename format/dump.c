@@ -70,9 +70,39 @@ static void put_number(out *o, const char *s)
     put(o, tmp, n);
 }
 
+/* v with `prec` significant digits, as %g would, except that a number
+ * below 10^max_exp is written out with its integer digits instead of in
+ * exponent form: the significant digits padded with zeros ("100", not
+ * "1e+02"; 933313536.0f as "933313540"), which reads back to the same
+ * value since the digits are those that already did. */
+static const char *shortest_text(char *tmp, size_t cap, double v, int prec, int max_exp)
+{
+    char digits[24];
+    size_t nd = 0;
+    const char *p;
+    long exp10;
+
+    snprintf(tmp, cap, "%.*e", prec - 1, v);
+    for (p = tmp; *p && *p != 'e'; p++)
+        if (*p >= '0' && *p <= '9' && nd < sizeof digits)
+            digits[nd++] = *p;
+    exp10 = *p == 'e' ? strtol(p + 1, NULL, 10) : 0;
+    if (exp10 < prec || exp10 >= max_exp || (size_t)exp10 + 2 >= cap) {
+        snprintf(tmp, cap, "%.*g", prec, v);
+        return tmp;
+    }
+    size_t n = 0;
+    if (v < 0)
+        tmp[n++] = '-';
+    for (long k = 0; k <= exp10; k++)
+        tmp[n++] = (size_t)k < nd ? digits[k] : '0';
+    tmp[n] = '\0';
+    return tmp;
+}
+
 static void put_float(out *o, float v)
 {
-    char tmp[48];
+    char tmp[352]; /* %g bounds: gcc cannot see that prec <= 17 */
     uint32_t bits = rgl_f32_bits(v);
     if (isnan(v)) {
         if ((bits & 0x7fffffffu) == 0x7fc00000u)
@@ -85,17 +115,24 @@ static void put_float(out *o, float v)
         puts_(o, v < 0 ? "-inf" : "inf");
         return;
     }
-    for (int prec = 1; prec <= 9; prec++) {
-        snprintf(tmp, sizeof tmp, "%.*g", prec, (double)v);
+    /* Reading back is monotonic in the precision (p digits are p+1 digits
+     * with a 0 appended), so the fewest digits are found by bisection; 9
+     * always suffice for a float. */
+    int lo = 1, hi = 9;
+    while (lo < hi) {
+        int mid = (lo + hi) / 2;
+        snprintf(tmp, sizeof tmp, "%.*g", mid, (double)v);
         if (strtof(tmp, NULL) == v)
-            break;
+            hi = mid;
+        else
+            lo = mid + 1;
     }
-    put_number(o, tmp);
+    put_number(o, shortest_text(tmp, sizeof tmp, (double)v, lo, 9));
 }
 
 static void put_double(out *o, double v)
 {
-    char tmp[48];
+    char tmp[352]; /* %g bounds: gcc cannot see that prec <= 17 */
     uint64_t bits = rgl_f64_bits(v);
     if (isnan(v)) {
         if ((bits & 0x7fffffffffffffffull) == 0x7ff8000000000000ull)
@@ -108,12 +145,16 @@ static void put_double(out *o, double v)
         puts_(o, v < 0 ? "-inf" : "inf");
         return;
     }
-    for (int prec = 1; prec <= 17; prec++) {
-        snprintf(tmp, sizeof tmp, "%.*g", prec, v);
+    int lo = 1, hi = 17; /* as put_float; 17 digits always suffice */
+    while (lo < hi) {
+        int mid = (lo + hi) / 2;
+        snprintf(tmp, sizeof tmp, "%.*g", mid, v);
         if (strtod(tmp, NULL) == v)
-            break;
+            hi = mid;
+        else
+            lo = mid + 1;
     }
-    put_number(o, tmp);
+    put_number(o, shortest_text(tmp, sizeof tmp, v, lo, 15));
 }
 
 static void put_enum(out *o, uint64_t v, const char *hint)

@@ -104,6 +104,25 @@ static void fixed_lines(void)
     printf("  fixed lines: enums by hint, hex, handles, blobs, booleans, strings escaped\n");
 }
 
+/* Significant digits of a printed number: from the first non-zero digit to
+ * the last, before any exponent. */
+static int significant_digits(const char *s)
+{
+    int n = 0, last = 0;
+    bool lead = true;
+    for (; *s && *s != 'e' && *s != ')'; s++) {
+        if (*s < '0' || *s > '9')
+            continue;
+        if (lead && *s == '0')
+            continue;
+        lead = false;
+        n++;
+        if (*s != '0')
+            last = n;
+    }
+    return last;
+}
+
 static void float_lines(void)
 {
     static rgl_cmd c;
@@ -115,7 +134,8 @@ static void float_lines(void)
         {0x80000000u, "-0"},          {0x7f800000u, "inf"},         {0xff800000u, "-inf"},
         {0x7fc00000u, "nan"},         {0x7fa00001u, "nan(0x7fa00001)"},
         {0x7f7fffffu, "3.4028235e+38"}, {0x4b800000u, "16777216"},  {0x3f000000u, "0.5"},
-        {0xc0c00000u, "-6"},          {0x49742400u, "1e+06"},
+        {0xc0c00000u, "-6"},          {0x49742400u, "1000000"}, {0x42c80000u, "100"}, {0x4e6e6b28u, "1e+09"},
+        {0x4cbebc20u, "100000000"}, {0x3a83126fu, "0.001"}, {0x38d1b717u, "0.0001"}, {0x4e5e84f0u, "933313540"},
     };
     rgl_cmd_init(&c, RGL_OP_PointSize);
     for (size_t i = 0; i < sizeof fl / sizeof fl[0]; i++) {
@@ -147,12 +167,24 @@ static void float_lines(void)
         const char *num = strchr(line, '=') + 1;
         CHECKF(strtof(num, NULL) == f, "%s does not read back as 0x%08lx", line,
                (unsigned long)bits);
-        /* and no shorter: one digit less does not read back */
+        /* and no shorter: one significant digit less does not read back */
+        int digits = significant_digits(num);
+        if (digits > 1) {
+            char shorter[512];
+            snprintf(shorter, sizeof shorter, "%.*g", digits - 1, (double)f);
+            CHECKF(strtof(shorter, NULL) != f, "%s: %s is shorter", line, shorter);
+        }
         rgl_cmd_init(&c, RGL_OP_ClearDepth);
         c.arg[0].v.f = d;
         rgl_cmd_format(&c, line, sizeof line);
         num = strchr(line, '=') + 1;
         CHECKF(strtod(num, NULL) == d, "%s does not read back", line);
+        digits = significant_digits(num);
+        if (digits > 1) {
+            char shorter[512];
+            snprintf(shorter, sizeof shorter, "%.*g", digits - 1, d);
+            CHECKF(strtod(shorter, NULL) != d, "%s: %s is shorter", line, shorter);
+        }
         checked++;
     }
     printf("  floats: shortest text for fixed cases, %lu random floats and doubles read back\n",
