@@ -48,6 +48,24 @@ case $name in
 */*|.*|'') echo "$0: bad test name '$name'" >&2; exit 2 ;;
 esac
 
+# The steps run in the test's directory: make relative paths absolute (a
+# bare name is left to PATH).
+absolute() {
+    case $1 in
+    /*) printf '%s\n' "$1" ;;
+    */*) printf '%s/%s\n' "$PWD" "$1" ;;
+    *) printf '%s\n' "$1" ;;
+    esac
+}
+prog=$(absolute "$prog")
+r2p=$(absolute "$r2p")
+povray=$(absolute "$povray")
+imgcmp=$(absolute "$imgcmp")
+case $outdir in
+/*) ;;
+*) outdir=$PWD/$outdir ;;
+esac
+
 dir=$outdir/$name
 rm -rf "$dir"
 mkdir -p "$dir" || exit 1
