@@ -1,0 +1,27 @@
+/* dropin_prog.c: an ordinary GL/GLUT program with no RayGL in its source.
+ * Built with -include raygl/gl.h, it records; test_process checks the
+ * trace. Runs without a window or context (batch). */
+#include <GL/gl.h>
+#include <GL/glut.h>
+
+static void display(float angle)
+{
+    glClear(GL_COLOR_BUFFER_BIT);
+    glLoadIdentity();
+    glRotatef(angle, 0, 0, 1);
+    glBegin(GL_TRIANGLES);
+    glColor3f(1, 0, 0);
+    glVertex3f(-0.5f, -0.5f, 0);
+    glVertex3f(0.5f, -0.5f, 0);
+    glVertex3f(0, 0.5f, 0);
+    glEnd();
+    glutSolidTorus(0.25, 1, 8, 16);
+    glutSwapBuffers();
+}
+
+int main(void)
+{
+    display(0);
+    display(15);
+    return 0;
+}
