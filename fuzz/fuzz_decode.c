@@ -128,9 +128,12 @@ static void wrapped(const uint8_t *data, size_t size)
         uint32_t id = 0;
         if (!b)
             return;
+        /* The bytes go once into each path: as the frame without an index,
+         * as the resource with one (the other gets no commands). */
         if (rgl_trace_builder_info(b, "program=fuzz\n", 13) == RGL_OK &&
-            rgl_trace_builder_resource(b, RGL_RES_COMMANDS, data, size, &id) == RGL_OK &&
-            rgl_trace_builder_frame(b, 0, 0, 0, id, data, size) == RGL_OK &&
+            rgl_trace_builder_resource(b, RGL_RES_COMMANDS, data, with_index ? size : 0, &id) ==
+                RGL_OK &&
+            rgl_trace_builder_frame(b, 0, 0, 0, id, data, with_index ? 0 : size) == RGL_OK &&
             rgl_trace_builder_finish(b, with_index, &trace, &trace_size) == RGL_OK)
             read_trace(trace, trace_size);
         rgl_trace_builder_destroy(b);
