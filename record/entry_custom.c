@@ -84,6 +84,14 @@ static void texture_forget(rgl_stream *s, uint32_t name)
     }
 }
 
+/* Whether a call made now takes effect now: not while a list is compiled
+ * with GL_COMPILE (GL stores it in the list instead). Client-state calls
+ * and the object-name calls always execute at once. */
+static bool executes(const rgl_stream *s)
+{
+    return !s->compiling || s->list_mode == GL_COMPILE_AND_EXECUTE;
+}
+
 static int target_slot(GLenum target)
 {
     return target == GL_TEXTURE_1D ? 0 : target == GL_TEXTURE_2D ? 1 : -1;
@@ -106,6 +114,8 @@ static rgl_texture *bound_texture(rgl_stream *s, GLenum target)
  * whole mipmap chain replaces what was there). */
 static void texture_define(rgl_stream *s, GLenum target, const uint8_t *from, bool reset)
 {
+    if (!executes(s))
+        return;
     rgl_texture *t = bound_texture(s, target);
     if (!t)
         return;
@@ -121,7 +131,7 @@ static void texture_param(GLenum target, GLenum pname, bool is_float, const GLfl
                           const GLint *i, uint32_t count)
 {
     rgl_stream *s = rgl_tls_stream;
-    if (!s || count == 0 || count > 4)
+    if (!s || !executes(s) || count == 0 || count > 4)
         return;
     rgl_texture *t = bound_texture(s, target);
     if (!t)
@@ -572,10 +582,12 @@ RGL_EXPORT void rayglBindTexture(GLenum target, GLuint texture)
     int slot = target_slot(target);
     rgl_stream *s;
     if (slot >= 0 && rgl_reserve(&s, 1)) {
-        s->objs.bound[slot] = texture;
-        rgl_texture *t = rgl_texture_get(s, texture, true);
-        if (t && !t->target)
-            t->target = target;
+        if (executes(s)) {
+            s->objs.bound[slot] = texture;
+            rgl_texture *t = rgl_texture_get(s, texture, true);
+            if (t && !t->target)
+                t->target = target;
+        }
         rgl_record(RGL_OP_BindTexture, "ee", target, texture);
     }
     glBindTexture(target, texture);

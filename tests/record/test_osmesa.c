@@ -74,6 +74,14 @@ static void test_two_frames(const char *path)
     rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 3, 3, 0, GL_RGB, GL_UNSIGNED_BYTE, padded);
     rayglEnable(GL_TEXTURE_2D);
 
+    /* A light placed under a modelview: GL keeps it in eye space. */
+    rayglMatrixMode(GL_MODELVIEW);
+    rayglPushMatrix();
+    rayglTranslatef(0, 0, -5);
+    const GLfloat l1pos[4] = {0, 1, 0, 1};
+    rayglLightfv(GL_LIGHT1, GL_POSITION, l1pos);
+    rayglPopMatrix();
+
     GLUquadric *q = raygluNewQuadric();
     draw_frame(list, q, 0);
     draw_frame(list, q, 1);
@@ -148,6 +156,7 @@ static void test_two_frames(const char *path)
         if (f == 1) {
             /* Set during frame 0: in eye space, under an identity modelview. */
             CHECK(trace_cmds_find(&s, 0, "glLightfv(light=GL_LIGHT0, pname=GL_POSITION, params=[1, 2, 3, 0])") == 2);
+            CHECK(trace_cmds_find(&s, 0, "glLightfv(light=GL_LIGHT1, pname=GL_POSITION, params=[0, 1, -5, 1])") == 4);
             CHECK(trace_cmds_find(&s, 0, "glEnable(cap=GL_LIGHTING)") >= 0);
             CHECK(trace_cmds_find(&s, 0, "glClearColor(red=0.25, green=0.5, blue=0.75, alpha=1)") >= 0);
             CHECK(trace_cmds_find(&s, 0, "glLoadMatrixf(m=[1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, -5, 1])") >= 0);
