@@ -12,6 +12,7 @@
 
 void test_custom(const char *dir);
 void test_alloc_failures(const char *dir);
+void test_too_large(const char *dir);
 
 /* The BLOB argument of a decoded command of frame f, command i. */
 static const uint8_t *blob_of(rgl_reader *r, size_t f, size_t i, unsigned arg, size_t *n)
@@ -285,6 +286,44 @@ void test_alloc_failures(const char *dir)
         }
     }
     CHECK(clean_run);
+    rayglRecordSetErrorHandler(NULL, NULL);
+    unlink(path);
+}
+
+/* A frame or a texture past the largest chunk stops recording cleanly,
+ * before anything is read or allocated. */
+void test_too_large(const char *dir)
+{
+    char path[128];
+    snprintf(path, sizeof path, "%s/large.raygl", dir);
+    rayglRecordSetErrorHandler(count_handler, NULL);
+    for (int which = 0; which < 2; which++) {
+        handler_calls = 0;
+        CHECK(rayglRecordOpen(path) == 0);
+        rayglVertex3f(1, 2, 3);
+        rayglutSwapBuffers();
+        stub_reset();
+        if (which == 0) {
+            rayglEnableClientState(GL_VERTEX_ARRAY);
+            rayglVertexPointer(3, GL_FLOAT, 0, verts);
+            rayglDrawArrays(GL_POINTS, 0, 100000000); /* 1.2 GB of vertices */
+            rayglDisableClientState(GL_VERTEX_ARRAY);
+        } else {
+            rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 40000, 40000, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                            verts);
+        }
+        CHECK(stub_nlog >= 1); /* still forwarded */
+        CHECK(rayglRecordStatus() == RAYGL_FAILED);
+        CHECK(handler_calls == 1);
+        const char *e = rayglRecordError();
+        CHECK(e && strstr(e, "larger than a chunk can hold: File too large"));
+        rayglRecordClose();
+        rgl_reader *r = trace_open(path);
+        if (r) {
+            CHECK(rgl_reader_frame_count(r) == 1);
+            rgl_reader_destroy(r);
+        }
+    }
     rayglRecordSetErrorHandler(NULL, NULL);
     unlink(path);
 }

@@ -19,6 +19,7 @@
 
 void test_custom(const char *dir);
 void test_alloc_failures(const char *dir);
+void test_too_large(const char *dir);
 
 /* ---- Deterministic values ------------------------------------------------------- */
 
@@ -263,6 +264,7 @@ int main(void)
 
     test_custom(dir);
     test_alloc_failures(dir);
+    test_too_large(dir);
     if (!check_failures)
         rmdir(dir);
     return check_exit();

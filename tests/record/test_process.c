@@ -19,6 +19,8 @@
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sched.h>
+#include <sys/mount.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -183,6 +185,28 @@ static void size_limited_child(const char *trace)
     failing_child(trace);
 }
 
+/* A real full disk: a 1 MiB tmpfs in a mount namespace of the child's own
+ * (exit 77 where that is not allowed). The mount goes with the child, so
+ * the child reads the trace back itself. */
+static void tmpfs_child(const char *mnt)
+{
+    if (unshare(CLONE_NEWNS) != 0 || mount(NULL, "/", NULL, MS_REC | MS_PRIVATE, NULL) != 0 ||
+        mount("tmpfs", mnt, "tmpfs", 0, "size=1m") != 0)
+        exit(77);
+    char path[200];
+    snprintf(path, sizeof path, "%s/full.raygl", mnt);
+    failing_child(path);
+    rgl_reader *r = trace_open(path);
+    if (r) {
+        size_t n = rgl_reader_frame_count(r);
+        CHECKM(n >= 3, "%zu frames before the disk filled", n);
+        CHECK(rgl_reader_damage_count(r) == 0);
+        for (size_t i = 0; i < n; i++)
+            frame_intact(r, i);
+        rgl_reader_destroy(r);
+    }
+}
+
 static void alloc_child(const char *nth)
 {
     setenv("RAYGL_TEST_FAIL_ALLOC", nth, 1);
@@ -210,6 +234,18 @@ static void test_failure(void)
 
     CHECK(run_child(failing_child, "/dev/full", err, sizeof err) == 0);
     expect_one_message(err, "raygl: recording stopped: /dev/full: No space left on device\n");
+
+    path_in_dir(path, sizeof path, "tmpfs");
+    CHECK(mkdir(path, 0777) == 0);
+    int rc = run_child(tmpfs_child, path, err, sizeof err);
+    if (rc == 77) {
+        printf("tmpfs: no mount namespace here, skipped\n");
+    } else {
+        CHECK(rc == 0);
+        snprintf(want, sizeof want, "raygl: recording stopped: %s/full.raygl: No space left on device\n", path);
+        expect_one_message(err, want);
+    }
+    rmdir(path);
 
     path_in_dir(path, sizeof path, "missing/dir/x.raygl");
     CHECK(run_child(failing_child, path, err, sizeof err) == 0);
