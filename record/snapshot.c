@@ -217,6 +217,9 @@ static bool is_live_param(uint32_t pname)
 static void snap_textures(rgl_stream *s, rgl_buf *b)
 {
     GLint bound1 = get_i(GL_TEXTURE_BINDING_1D), bound2 = get_i(GL_TEXTURE_BINDING_2D);
+    /* While GL compiles a list, glBindTexture would go into it: read the
+     * parameters only outside one. */
+    bool may_bind = get_i(GL_LIST_INDEX) == 0;
     for (size_t t = 0; t < s->objs.ntextures; t++) {
         const rgl_texture *tex = &s->objs.textures[t];
         if (tex->target != GL_TEXTURE_1D && tex->target != GL_TEXTURE_2D)
@@ -240,7 +243,7 @@ static void snap_textures(rgl_stream *s, rgl_buf *b)
                          (int)pr->count);
         }
         /* A name deleted behind RayGL's back is not re-created by binding. */
-        if (tex->name != 0 && !glIsTexture(tex->name))
+        if (!may_bind || (tex->name != 0 && !glIsTexture(tex->name)))
             continue;
         glBindTexture(tex->target, tex->name);
         for (size_t k = 0; k < sizeof tex_params_live / sizeof tex_params_live[0]; k++) {
@@ -250,8 +253,10 @@ static void snap_textures(rgl_stream *s, rgl_buf *b)
                 rgl_emit(b, RGL_OP_TexParameteri, "eei", tex->target, tex_params_live[k], v);
         }
     }
-    glBindTexture(GL_TEXTURE_1D, (GLuint)bound1);
-    glBindTexture(GL_TEXTURE_2D, (GLuint)bound2);
+    if (may_bind) {
+        glBindTexture(GL_TEXTURE_1D, (GLuint)bound1);
+        glBindTexture(GL_TEXTURE_2D, (GLuint)bound2);
+    }
     rgl_emit(b, RGL_OP_BindTexture, "ee", GL_TEXTURE_1D, (uint32_t)bound1);
     rgl_emit(b, RGL_OP_BindTexture, "ee", GL_TEXTURE_2D, (uint32_t)bound2);
 }

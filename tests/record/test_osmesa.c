@@ -12,6 +12,7 @@
 #include <GL/osmesa.h>
 
 #include "check.h"
+#include "wire.h"
 #include "raygl.h"
 
 static unsigned char pixels[64 * 64 * 4];
@@ -182,6 +183,19 @@ static void test_two_frames(const char *path)
     }
     CHECK(found);
     rgl_reader_destroy(r);
+
+    /* A closed trace ends with the 28-byte END chunk naming the INDEX. */
+    FILE *f = fopen(path, "rb");
+    uint8_t buf[1 << 16];
+    size_t n = f ? fread(buf, 1, sizeof buf, f) : 0;
+    if (f)
+        fclose(f);
+    if (CHECK(n > 28 && n < sizeof buf)) {
+        const uint8_t *end = buf + n - 28;
+        CHECK(memcmp(end, "\xC3RGC\x05\x00\x00\x00\x08\x00\x00\x00", 12) == 0);
+        uint64_t index = rgl_get_u64(end + 16);
+        CHECK(index < n - 28 && memcmp(buf + index, "\xC3RGC\x04", 5) == 0);
+    }
 }
 
 /* The paper's example: plain GL matrix calls, then a raygl primitive. */
