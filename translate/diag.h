@@ -1,0 +1,92 @@
+/* diag.h: diagnostics collected while translating, printed by the CLI.
+ *
+ * The interpreter does not print: it records each diagnostic in a log, by
+ * kind. A log keeps the first DIAG_KEEP messages of each kind and a count,
+ * so a trace with a million bad calls costs a million increments, not a
+ * million lines. Workers keep one log per frame; the CLI merges the logs in
+ * frame order, so the output does not depend on -j.
+ */
+#ifndef RGL_DIAG_H
+#define RGL_DIAG_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#define DIAG_KEEP 3   /* messages kept per kind and log */
+#define DIAG_TEXT 192 /* longest message kept, with its NUL */
+
+/* Kinds. The GL_* ones are calls GL rejects (and the interpreter skips);
+ * the NOTE_* ones are said once per run: state that is not translated (yet)
+ * or only approximated. */
+#define DIAG_KINDS(X) \
+    X(GL_INVALID_ENUM, "invalid enum") \
+    X(GL_INVALID_VALUE, "invalid value") \
+    X(GL_INVALID_OPERATION, "invalid operation") \
+    X(GL_STACK_OVERFLOW, "stack overflow") \
+    X(GL_STACK_UNDERFLOW, "stack underflow") \
+    X(IGNORED, "ignored call") \
+    X(BAD_NUMBER, "NaN or infinite value") \
+    X(LIMIT, "limit exceeded") \
+    X(NOTE_LIGHTING, "not translated yet: lighting (drawn unlit in the material's diffuse colour)") \
+    X(NOTE_FOG, "not translated yet: fog") \
+    X(NOTE_BLEND, "not translated yet: blending and alpha (drawn opaque)") \
+    X(NOTE_ALPHA_TEST, "not translated yet: alpha test") \
+    X(NOTE_TEXTURE, "not translated yet: textures (drawn untextured)") \
+    X(NOTE_TEXGEN, "not translated yet: texture coordinate generation") \
+    X(NOTE_LISTS, "not translated yet: display lists (calls skipped)") \
+    X(NOTE_ARRAYS, "not translated yet: vertex arrays (draws skipped)") \
+    X(NOTE_QUADRICS, "not translated yet: GLU quadrics (skipped)") \
+    X(NOTE_GLUT, "not translated yet: GLUT solids (skipped)") \
+    X(NOTE_STIPPLE, "not translated: line and polygon stipple (drawn solid)") \
+    X(NOTE_SCISSOR, "not translated: scissor test") \
+    X(NOTE_CLIP_PLANE, "not translated: user clip planes") \
+    X(NOTE_STENCIL, "not translated: stencil test") \
+    X(NOTE_COLOR_MASK, "not translated: colour mask and logic op") \
+    X(NOTE_DEPTH, "approximated: depth test off or not GL_LESS (a ray tracer always shows the nearest surface)") \
+    X(NOTE_PROJECTION, "approximated: geometry drawn with another projection or viewport is remapped into the frame's camera") \
+    X(NOTE_CAMERA, "approximated: projection matrix is not a camera POV-Ray can express (default camera used)") \
+    X(NOTE_PROJECTIVE_MODELVIEW, "approximated: projective modelview applied to the vertices")
+
+typedef enum diag_kind {
+#define DIAG_ENUM_(name, text) DIAG_##name,
+    DIAG_KINDS(DIAG_ENUM_)
+#undef DIAG_ENUM_
+    DIAG_COUNT
+} diag_kind;
+
+#define DIAG_FIRST_NOTE DIAG_NOTE_LIGHTING
+
+typedef struct diag_entry {
+    uint64_t count;
+    uint32_t kept;
+    char text[DIAG_KEEP][DIAG_TEXT];
+} diag_entry;
+
+typedef struct diag_log {
+    diag_entry e[DIAG_COUNT];
+} diag_log;
+
+/* Empties a log. */
+void diag_clear(diag_log *log);
+
+/* The short name of a kind ("invalid enum"), never NULL. */
+const char *diag_kind_name(diag_kind kind);
+
+/* True for the NOTE_* kinds (printed once per run, not per call). */
+bool diag_is_note(diag_kind kind);
+
+/* Counts one diagnostic of `kind`; keeps "prefix: message" when fewer than
+ * DIAG_KEEP are kept. The message is formatted only then. Never formats
+ * floating-point numbers (their text would depend on the locale). */
+#if defined(__GNUC__)
+__attribute__((format(printf, 4, 5)))
+#endif
+void diag_add(diag_log *log, diag_kind kind, const char *prefix, const char *fmt, ...);
+
+/* Adds every count and kept message of src to dst (dst first). */
+void diag_merge(diag_log *dst, const diag_log *src);
+
+/* Total count over the non-note kinds. */
+uint64_t diag_error_total(const diag_log *log);
+
+#endif

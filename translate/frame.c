@@ -1,0 +1,188 @@
+/* frame.c: one worker's translation of frames (frame.h).
+ *
+ * Carried state: each translator keeps, per stream, a state-only
+ * interpreter (a "cursor") that has replayed the stream's frames before
+ * some position. Frames reach a worker in increasing file order, so a
+ * cursor only moves forward and every earlier frame is replayed at most
+ * once per worker; a request for an earlier frame rewinds the cursor to the
+ * start of the file.
+ */
+#include "frame.h"
+
+#include <stdio.h>
+#include <string.h>
+
+#include "interp.h"
+#include "talloc.h"
+
+typedef struct cursor {
+    uint32_t stream;
+    size_t pos; /* frames [0, pos) of the file are replayed */
+    interp *ip;
+} cursor;
+
+struct translator {
+    rgl_reader *reader;
+    pthread_mutex_t *lock;
+    scene scene;
+    interp *ip;
+    povwriter *writer;
+    cursor *cursors;
+    size_t ncursors, cap_cursors;
+    char name[RGL_STRING_MAX + 1];
+};
+
+translator *translator_create(rgl_reader *reader, pthread_mutex_t *reader_lock)
+{
+    translator *t = tr_realloc(NULL, sizeof *t);
+    if (!t)
+        return NULL;
+    memset(t, 0, sizeof *t);
+    t->reader = reader;
+    t->lock = reader_lock;
+    scene_init(&t->scene);
+    t->ip = interp_create(&t->scene, NULL);
+    t->writer = povwriter_create();
+    if (!t->ip || !t->writer) {
+        translator_destroy(t);
+        return NULL;
+    }
+    return t;
+}
+
+void translator_destroy(translator *t)
+{
+    if (!t)
+        return;
+    for (size_t i = 0; i < t->ncursors; i++)
+        interp_destroy(t->cursors[i].ip);
+    tr_free(t->cursors);
+    povwriter_destroy(t->writer);
+    interp_destroy(t->ip);
+    scene_finish(&t->scene);
+    tr_free(t);
+}
+
+const scene *translator_scene(const translator *t) { return &t->scene; }
+
+static rgl_status get_frame(translator *t, size_t i, rgl_frame_info *fi, rgl_error *err)
+{
+    if (t->lock)
+        pthread_mutex_lock(t->lock);
+    rgl_status st = rgl_reader_frame(t->reader, i, fi, err);
+    if (t->lock)
+        pthread_mutex_unlock(t->lock);
+    return st;
+}
+
+static rgl_status get_resource(translator *t, uint32_t id, rgl_resource *res, rgl_error *err)
+{
+    if (t->lock)
+        pthread_mutex_lock(t->lock);
+    rgl_status st = rgl_reader_resource(t->reader, id, res, err);
+    if (t->lock)
+        pthread_mutex_unlock(t->lock);
+    return st;
+}
+
+/* Replays snapshot resource `id` into ip from its current state. */
+static rgl_status run_snapshot(translator *t, interp *ip, uint32_t id, rgl_error *err)
+{
+    rgl_resource res;
+    rgl_status st = get_resource(t, id, &res, err);
+    if (st != RGL_OK)
+        return st;
+    if (res.kind != RGL_RES_COMMANDS) {
+        memset(err, 0, sizeof *err);
+        err->status = RGL_E_RESOURCE;
+        err->offset = res.data_offset;
+        snprintf(err->detail, sizeof err->detail, "state snapshot #%u is not a command sequence",
+                 id);
+        return RGL_E_RESOURCE;
+    }
+    return interp_run(ip, res.data, res.size, res.data_offset, err);
+}
+
+/* The state-only interpreter of `stream`, advanced to just before frame i. */
+static interp *carried_state(translator *t, uint32_t stream, size_t i)
+{
+    cursor *c = NULL;
+    for (size_t k = 0; k < t->ncursors; k++)
+        if (t->cursors[k].stream == stream)
+            c = &t->cursors[k];
+    if (!c) {
+        if (tr_grow((void **)&t->cursors, &t->cap_cursors, t->ncursors + 1, sizeof *c) != 0)
+            return NULL;
+        c = &t->cursors[t->ncursors];
+        memset(c, 0, sizeof *c);
+        c->stream = stream;
+        if (!(c->ip = interp_create(NULL, NULL)))
+            return NULL;
+        t->ncursors++;
+    }
+    if (c->pos > i) { /* asked for an earlier frame: start over */
+        interp_reset(c->ip);
+        c->pos = 0;
+    }
+    for (; c->pos < i; c->pos++) {
+        rgl_frame_info fi;
+        rgl_error err;
+        if (get_frame(t, c->pos, &fi, &err) != RGL_OK || fi.stream != stream)
+            continue; /* a damaged earlier frame is reported when it is translated */
+        interp_begin_frame(c->ip);
+        if (!(fi.flags & RGL_FRAME_STATE_CARRIED))
+            interp_reset(c->ip);
+        if (fi.state)
+            run_snapshot(t, c->ip, fi.state, &err);
+        interp_run(c->ip, fi.commands, fi.commands_size, fi.commands_offset, &err);
+        interp_end_frame(c->ip);
+    }
+    return c->ip;
+}
+
+rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result *out)
+{
+    interp *ip = t->ip;
+    memset(out, 0, sizeof *out);
+    out->status = get_frame(t, i, &out->info, &out->error);
+    if (out->status != RGL_OK)
+        return out->status;
+    const rgl_frame_info *fi = &out->info;
+
+    interp_attach(ip, &t->scene, log);
+    interp_reset(ip);
+    if (fi->flags & RGL_FRAME_STATE_CARRIED) {
+        interp *src = carried_state(t, fi->stream, i);
+        if (!src) {
+            out->status = RGL_E_NOMEM;
+            return out->status;
+        }
+        interp_copy_state(ip, src);
+    }
+    interp_begin_frame(ip);
+    if (fi->state) {
+        char label[32];
+        snprintf(label, sizeof label, "snapshot #%u", fi->state);
+        interp_set_frame(ip, i, label);
+        out->status = run_snapshot(t, ip, fi->state, &out->error);
+        if (out->status != RGL_OK)
+            return out->status;
+    }
+    interp_set_frame(ip, i, NULL);
+    out->status = interp_run(ip, fi->commands, fi->commands_size, fi->commands_offset,
+                             &out->error);
+    interp_end_frame(ip);
+    const char *name = interp_frame_name(ip);
+    if (name) {
+        snprintf(t->name, sizeof t->name, "%s", name);
+        out->frame_name = t->name;
+    }
+    if (out->status == RGL_OK && t->scene.failed)
+        out->status = RGL_E_NOMEM;
+    return out->status;
+}
+
+int translator_write_pov(translator *t, outbuf *ob, const pov_frame_info *info)
+{
+    return povwriter_scene(t->writer, ob, &t->scene, info);
+}

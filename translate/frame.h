@@ -1,0 +1,52 @@
+/* frame.h: translating one frame of a trace: state, commands, scene, SDL.
+ *
+ * Frames are independent. To translate frame i the translator starts from
+ * GL's initial state, or, for a frame flagged RGL_FRAME_STATE_CARRIED, from
+ * the state its stream's earlier frames left (replayed with no scene: only
+ * their state-setting effects count); then it replays the frame's state
+ * snapshot resource when it has one, then its commands, into a scene. The
+ * CLI runs one translator per worker thread; the fuzz target and the tests
+ * use one directly.
+ */
+#ifndef RGL_FRAME_H
+#define RGL_FRAME_H
+
+#include <pthread.h>
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "diag.h"
+#include "format.h"
+#include "outbuf.h"
+#include "povwrite.h"
+#include "scene.h"
+
+typedef struct translator translator;
+
+/* A translator over reader (borrowed; it must outlive the translator).
+ * reader_lock, when not NULL, is held around every reader call (several
+ * translators share one reader). NULL on allocation failure. */
+translator *translator_create(rgl_reader *reader, pthread_mutex_t *reader_lock);
+void translator_destroy(translator *t);
+
+typedef struct frame_result {
+    rgl_frame_info info;
+    rgl_status status; /* RGL_OK, or why the frame could not be translated */
+    rgl_error error;   /* where, when status != RGL_OK */
+    const char *frame_name; /* rayglFrameBegin's name (owned by the translator,
+                               valid until the next call), or NULL */
+} frame_result;
+
+/* Builds the scene of frame i (file order), logging diagnostics into log
+ * (may be NULL). A frame whose chunk or commands are damaged reports the
+ * decoder's error: the scene then holds what came before the damage, and
+ * the caller does not write it. RGL_E_NOMEM when memory ran out. */
+rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result *out);
+
+/* The scene the last translator_build made. */
+const scene *translator_scene(const translator *t);
+
+/* Writes that scene as SDL into ob. Returns 0 or -1 (memory, or the sink). */
+int translator_write_pov(translator *t, outbuf *ob, const pov_frame_info *info);
+
+#endif

@@ -1,0 +1,440 @@
+/* interp.c: the interpreter's core: dispatch, the run loop, diagnostics,
+ * GL's initial state, glEnable/glDisable and the attribute stack.
+ *
+ * The dispatch table is generated from format/commands.def: each row's
+ * opcode maps to interp_<handler>. Checks that apply to every command (the
+ * calls GL forbids between glBegin and glEnd) happen here, before the
+ * handler runs, as Mesa validates in its entry points.
+ */
+#include "interp_internal.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "talloc.h"
+
+typedef void (*interp_handler)(interp *ip, const rgl_cmd *cmd);
+
+static const interp_handler dispatch[] = {
+#define RGL_CMD(op, api, gen, name, handler, ...) [RGL_OP_##name] = interp_##handler,
+#include "commands.def"
+#undef RGL_CMD
+};
+#define DISPATCH_SIZE (sizeof dispatch / sizeof dispatch[0])
+
+/* Commands GL accepts between glBegin and glEnd (GL 1.x section 2.6.3),
+ * plus the recorder's own records and the raygl frame calls, which are
+ * not GL calls. */
+static bool allowed_in_begin(const char *handler)
+{
+    static const char *const ok[] = {
+        "vertex",       "normal",    "color",     "texcoord",       "edgeflag",   "end",
+        "material",     "calllist",  "calllists", "arrayelement",   "resolvedmatrix",
+        "arraydata",    "framebegin", "frameend", "swapbuffers",
+    };
+    for (size_t i = 0; i < sizeof ok / sizeof ok[0]; i++)
+        if (strcmp(handler, ok[i]) == 0)
+            return true;
+    return false;
+}
+
+/* Fills the per-interpreter table of commands allowed inside glBegin (kept
+ * per interpreter: no shared mutable state between worker threads). */
+static void init_begin_ok(uint8_t *begin_ok)
+{
+    size_t n;
+    const rgl_cmd_info *const *all = rgl_cmd_info_all(&n);
+    memset(begin_ok, 0, DISPATCH_SIZE);
+    for (size_t i = 0; i < n; i++)
+        if (all[i]->opcode < DISPATCH_SIZE)
+            begin_ok[all[i]->opcode] = allowed_in_begin(all[i]->handler);
+}
+
+/* ---- Initial state (GL 1.x state tables, section 6.2) ---------------------- */
+
+static const uint8_t cap_defaults[INTERP_CAP_COUNT] = {
+#define CAP(name, def, group) def,
+#include "caps.def"
+#undef CAP
+};
+
+static const uint32_t cap_groups[INTERP_CAP_COUNT] = {
+#define CAP(name, def, group) group,
+#include "caps.def"
+#undef CAP
+};
+
+int interp_cap_index(GLenum cap)
+{
+    switch (cap) {
+#define CAP(name, def, group) \
+    case GL_##name:           \
+        return INTERP_CAP_##name;
+#include "caps.def"
+#undef CAP
+    default:
+        return -1;
+    }
+}
+
+static void set4(float *d, float a, float b, float c, float e)
+{
+    d[0] = a;
+    d[1] = b;
+    d[2] = c;
+    d[3] = e;
+}
+
+void interp_default_state(gl_state *st)
+{
+    memset(st, 0, sizeof *st);
+    gl_attribs *a = &st->a;
+
+    set4(a->current.color, 1, 1, 1, 1);
+    a->current.normal[2] = 1;
+    set4(a->current.texcoord, 0, 0, 0, 1);
+    a->current.edge_flag = true;
+    memcpy(a->caps, cap_defaults, sizeof a->caps);
+
+    a->lighting.shade_model = GL_SMOOTH;
+    for (int f = 0; f < 2; f++) {
+        gl_material *m = &a->lighting.material[f];
+        set4(m->ambient, 0.2f, 0.2f, 0.2f, 1);
+        set4(m->diffuse, 0.8f, 0.8f, 0.8f, 1);
+        set4(m->specular, 0, 0, 0, 1);
+        set4(m->emission, 0, 0, 0, 1);
+        m->shininess = 0;
+    }
+    a->lighting.color_material_face = GL_FRONT_AND_BACK;
+    a->lighting.color_material_mode = GL_AMBIENT_AND_DIFFUSE;
+    for (int i = 0; i < INTERP_MAX_LIGHTS; i++) {
+        gl_light *l = &a->lighting.light[i];
+        set4(l->ambient, 0, 0, 0, 1);
+        if (i == 0) {
+            set4(l->diffuse, 1, 1, 1, 1);
+            set4(l->specular, 1, 1, 1, 1);
+        } else {
+            set4(l->diffuse, 0, 0, 0, 1);
+            set4(l->specular, 0, 0, 0, 1);
+        }
+        set4(l->position, 0, 0, 1, 0);
+        l->spot_direction[2] = -1;
+        l->spot_exponent = 0;
+        l->spot_cutoff = 180;
+        l->attenuation[0] = 1;
+    }
+    set4(a->lighting.model_ambient, 0.2f, 0.2f, 0.2f, 1);
+
+    a->polygon.front_face = GL_CCW;
+    a->polygon.cull_mode = GL_BACK;
+    a->polygon.mode[0] = a->polygon.mode[1] = GL_FILL;
+    a->line.width = 1;
+    a->point.size = 1;
+    /* The window size is unknown here; the recorder's snapshot (or the
+     * program) sets the viewport. */
+    a->viewport.rect[2] = 640;
+    a->viewport.rect[3] = 480;
+    a->viewport.near = 0;
+    a->viewport.far = 1;
+    a->transform.matrix_mode = GL_MODELVIEW;
+    a->color_buffer.blend_src = GL_ONE;
+    a->color_buffer.blend_dst = GL_ZERO;
+    a->color_buffer.alpha_func = GL_ALWAYS;
+    for (int i = 0; i < 4; i++)
+        a->color_buffer.mask[i] = true;
+    a->depth.func = GL_LESS;
+    a->depth.mask = true;
+    a->depth.clear = 1;
+    a->fog.mode = GL_EXP;
+    a->fog.density = 1;
+    a->fog.start = 0;
+    a->fog.end = 1;
+    a->hint.perspective = a->hint.point = a->hint.line = a->hint.polygon = a->hint.fog =
+        GL_DONT_CARE;
+    a->texture.env_mode = GL_MODULATE;
+
+    for (int i = 0; i < INTERP_NMODES; i++)
+        st->depth[i] = 0;
+    st->modelview[0] = mat4_identity();
+    st->projection[0] = mat4_identity();
+    st->texture[0] = mat4_identity();
+}
+
+/* ---- Life cycle ---------------------------------------------------------------- */
+
+interp *interp_create(scene *out, diag_log *log)
+{
+    interp *ip = tr_realloc(NULL, sizeof *ip);
+    if (!ip)
+        return NULL;
+    memset(ip, 0, sizeof *ip);
+    ip->begin_ok = tr_realloc(NULL, DISPATCH_SIZE);
+    if (!ip->begin_ok) {
+        tr_free(ip);
+        return NULL;
+    }
+    init_begin_ok(ip->begin_ok);
+    ip->scene = out;
+    ip->log = log;
+    interp_reset(ip);
+    return ip;
+}
+
+void interp_destroy(interp *ip)
+{
+    if (!ip)
+        return;
+    tr_free(ip->begin_ok);
+    tr_free(ip->edge);
+    tr_free(ip->clipv);
+    tr_free(ip);
+}
+
+void interp_reset(interp *ip)
+{
+    interp_default_state(&ip->st);
+    ip->in_begin = false;
+    ip->camera_fixed = false;
+    ip->frame_begin = false;
+    ip->frame_name[0] = '\0';
+}
+
+void interp_copy_state(interp *dst, const interp *src) { dst->st = src->st; }
+
+void interp_attach(interp *ip, scene *out, diag_log *log)
+{
+    ip->scene = out;
+    ip->log = log;
+}
+
+void interp_set_frame(interp *ip, uint64_t frame_index, const char *label)
+{
+    ip->frame_index = frame_index;
+    snprintf(ip->label, sizeof ip->label, "%s", label ? label : "");
+}
+
+const gl_state *interp_state(const interp *ip) { return &ip->st; }
+
+const mat4 *interp_matrix(const interp *ip, int mode)
+{
+    switch (mode) {
+    case INTERP_PROJ:
+        return &ip->st.projection[ip->st.depth[INTERP_PROJ]];
+    case INTERP_TEX:
+        return &ip->st.texture[ip->st.depth[INTERP_TEX]];
+    default:
+        return &ip->st.modelview[ip->st.depth[INTERP_MV]];
+    }
+}
+
+bool interp_in_begin(const interp *ip) { return ip->in_begin; }
+
+const char *interp_frame_name(const interp *ip) { return ip->frame_begin ? ip->frame_name : NULL; }
+
+/* ---- Running commands -------------------------------------------------------------- */
+
+void interp_exec(interp *ip, const rgl_cmd *cmd)
+{
+    if (cmd->opcode >= DISPATCH_SIZE || !dispatch[cmd->opcode])
+        return; /* the decoder only yields table rows; keep hostile input harmless */
+    ip->cmd = cmd;
+    if (ip->in_begin && !ip->begin_ok[cmd->opcode]) {
+        interp_bad_op(ip, "not allowed between glBegin and glEnd");
+        return;
+    }
+    dispatch[cmd->opcode](ip, cmd);
+}
+
+rgl_status interp_run(interp *ip, const uint8_t *data, size_t size, uint64_t base_offset,
+                      rgl_error *err)
+{
+    rgl_cmd_iter it;
+    rgl_cmd cmd;
+    rgl_status st;
+
+    rgl_cmd_iter_init(&it, data, size, base_offset);
+    while ((st = rgl_cmd_next(&it, &cmd)) == RGL_OK)
+        interp_exec(ip, &cmd);
+    ip->cmd = NULL;
+    if (st == RGL_END)
+        return RGL_OK;
+    if (err)
+        *err = it.error;
+    return st;
+}
+
+/* ---- Diagnostics ---------------------------------------------------------------- */
+
+static void make_prefix(const interp *ip, char *out, size_t cap)
+{
+    const rgl_cmd *c = ip->cmd;
+    int n = snprintf(out, cap, "frame %llu", (unsigned long long)ip->frame_index);
+    if (n < 0 || (size_t)n >= cap)
+        return;
+    if (ip->label[0]) {
+        int k = snprintf(out + n, cap - (size_t)n, ", %s", ip->label);
+        if (k < 0 || (size_t)(n + k) >= cap)
+            return;
+        n += k;
+    }
+    if (c)
+        snprintf(out + n, cap - (size_t)n, ", cmd %llu (%s) @0x%llx",
+                 (unsigned long long)c->index, c->info ? c->info->name : "?",
+                 (unsigned long long)c->offset);
+}
+
+void interp_diag(interp *ip, diag_kind kind, const char *fmt, ...)
+{
+    if (!ip->log)
+        return;
+    diag_entry *e = &ip->log->e[kind];
+    if (e->kept >= DIAG_KEEP) {
+        e->count++; /* nothing more to keep: skip the formatting */
+        return;
+    }
+    char prefix[96], msg[DIAG_TEXT];
+    va_list ap;
+    make_prefix(ip, prefix, sizeof prefix);
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    diag_add(ip->log, kind, prefix, "%s", msg);
+}
+
+void interp_note(interp *ip, diag_kind kind)
+{
+    uint64_t bit = 1ull << (kind - DIAG_FIRST_NOTE);
+    if (!ip->log || (ip->notes_seen & bit))
+        return;
+    ip->notes_seen |= bit;
+    char prefix[96];
+    make_prefix(ip, prefix, sizeof prefix);
+    diag_add(ip->log, kind, prefix, "%s", diag_kind_name(kind));
+}
+
+void interp_bad_enum(interp *ip, const char *what, uint32_t value)
+{
+    interp_diag(ip, DIAG_GL_INVALID_ENUM, "invalid %s 0x%x", what, value);
+}
+
+void interp_bad_value(interp *ip, const char *detail)
+{
+    interp_diag(ip, DIAG_GL_INVALID_VALUE, "invalid value: %s", detail);
+}
+
+void interp_bad_op(interp *ip, const char *why)
+{
+    interp_diag(ip, DIAG_GL_INVALID_OPERATION, "invalid operation: %s", why);
+}
+
+bool interp_reject_in_begin(interp *ip)
+{
+    if (!ip->in_begin)
+        return false;
+    interp_bad_op(ip, "not allowed between glBegin and glEnd");
+    return true;
+}
+
+/* ---- glEnable / glDisable ---------------------------------------------------------- */
+
+static void set_cap(interp *ip, const rgl_cmd *cmd, bool on)
+{
+    GLenum cap = arg_enum(cmd, 0);
+    int i = interp_cap_index(cap);
+    if (i < 0) {
+        interp_bad_enum(ip, "capability", cap);
+        return;
+    }
+    bool was = ip->st.a.caps[i];
+    ip->st.a.caps[i] = on;
+    /* GL 1.x 2.13.3: while COLOR_MATERIAL is on, the material tracks the
+     * current colour, starting at the glEnable. */
+    if (i == INTERP_CAP_COLOR_MATERIAL && on && !was)
+        interp_color_material_update(ip);
+}
+
+void interp_enable(interp *ip, const rgl_cmd *cmd) { set_cap(ip, cmd, true); }
+void interp_disable(interp *ip, const rgl_cmd *cmd) { set_cap(ip, cmd, false); }
+
+/* ---- glPushAttrib / glPopAttrib ----------------------------------------------------- */
+
+void interp_pushattrib(interp *ip, const rgl_cmd *cmd)
+{
+    gl_state *st = &ip->st;
+    if (st->attrib_depth >= INTERP_ATTRIB_DEPTH) {
+        interp_diag(ip, DIAG_GL_STACK_OVERFLOW, "attribute stack overflow (depth %d)",
+                    INTERP_ATTRIB_DEPTH);
+        return;
+    }
+    gl_attrib_entry *e = &st->attrib_stack[st->attrib_depth++];
+    e->mask = (uint32_t)cmd->arg[0].v.u;
+    e->saved = st->a;
+}
+
+void interp_popattrib(interp *ip, const rgl_cmd *cmd)
+{
+    (void)cmd;
+    gl_state *st = &ip->st;
+    if (st->attrib_depth <= 0) {
+        interp_diag(ip, DIAG_GL_STACK_UNDERFLOW, "attribute stack underflow");
+        return;
+    }
+    const gl_attrib_entry *e = &st->attrib_stack[--st->attrib_depth];
+    const gl_attribs *s = &e->saved;
+    gl_attribs *a = &st->a;
+    uint32_t m = e->mask;
+
+    if (m & GL_CURRENT_BIT)
+        a->current = s->current;
+    if (m & GL_LIGHTING_BIT)
+        a->lighting = s->lighting;
+    if (m & GL_POLYGON_BIT)
+        a->polygon = s->polygon;
+    if (m & GL_LINE_BIT)
+        a->line = s->line;
+    if (m & GL_POINT_BIT)
+        a->point = s->point;
+    if (m & GL_VIEWPORT_BIT)
+        a->viewport = s->viewport;
+    if (m & GL_TRANSFORM_BIT)
+        a->transform = s->transform;
+    if (m & GL_COLOR_BUFFER_BIT)
+        a->color_buffer = s->color_buffer;
+    if (m & GL_DEPTH_BUFFER_BIT)
+        a->depth = s->depth;
+    if (m & GL_FOG_BIT)
+        a->fog = s->fog;
+    if (m & GL_HINT_BIT)
+        a->hint = s->hint;
+    if (m & GL_TEXTURE_BIT)
+        a->texture = s->texture;
+    for (int i = 0; i < INTERP_CAP_COUNT; i++)
+        if ((m & GL_ENABLE_BIT) || (m & cap_groups[i]))
+            a->caps[i] = s->caps[i];
+}
+
+/* ---- Calls with no effect on the picture ------------------------------------------------- */
+
+void interp_flush(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
+void interp_finish(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
+
+void interp_hint(interp *ip, const rgl_cmd *cmd)
+{
+    GLenum target = arg_enum(cmd, 0), mode = arg_enum(cmd, 1);
+    GLenum *slot;
+    switch (target) {
+    case GL_PERSPECTIVE_CORRECTION_HINT: slot = &ip->st.a.hint.perspective; break;
+    case GL_POINT_SMOOTH_HINT: slot = &ip->st.a.hint.point; break;
+    case GL_LINE_SMOOTH_HINT: slot = &ip->st.a.hint.line; break;
+    case GL_POLYGON_SMOOTH_HINT: slot = &ip->st.a.hint.polygon; break;
+    case GL_FOG_HINT: slot = &ip->st.a.hint.fog; break;
+    default:
+        return; /* hints GL 1.x does not name (extensions): accepted, no effect */
+    }
+    if (mode != GL_FASTEST && mode != GL_NICEST && mode != GL_DONT_CARE) {
+        interp_bad_enum(ip, "hint mode", mode);
+        return;
+    }
+    *slot = mode;
+}

@@ -1,0 +1,194 @@
+/* interp.h: the OpenGL 1.x state machine that replays a trace into a scene.
+ *
+ * One interpreter holds one GL context's state (gl_state) and, while a frame
+ * is translated, the scene it draws into. Commands arrive decoded
+ * (rgl_cmd); each goes through a dispatch table generated from
+ * format/commands.def to its handler interp_<handler> (interp_*.c), so a
+ * command without a handler does not link. A command GL would reject is
+ * skipped and counted in the diagnostics log with its frame and position,
+ * as GL records an error and goes on.
+ *
+ * Where each feature lives:
+ *   interp.c         dispatch, run loop, diagnostics, enables, attribute stack
+ *   interp_matrix.c  matrix modes, stacks, transforms, @Matrix, viewport
+ *   interp_prim.c    Begin/End, vertex attributes, primitive assembly,
+ *                    culling, polygon mode, lines and points, glRect
+ *   interp_raster.c  clear, shading, face and rasterisation state, the frame
+ *                    calls (rayglFrameBegin), the camera of the frame
+ *   interp_light.c   lights, materials, fog, blending (state kept; issue 4
+ *                    translates it)
+ *   interp_later.c   textures, display lists, arrays, GLU and GLUT shapes
+ *                    (issue 5: noted and skipped for now)
+ *
+ * Not thread-safe; one interpreter per worker thread.
+ */
+#ifndef RGL_INTERP_H
+#define RGL_INTERP_H
+
+#include <GL/gl.h>
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "diag.h"
+#include "format.h"
+#include "mat4.h"
+#include "scene.h"
+
+/* GL's own limits (the minimums of the GL 1.x specification, which Mesa
+ * also uses for the fixed-function stacks). */
+#define INTERP_MODELVIEW_DEPTH 32
+#define INTERP_PROJECTION_DEPTH 2
+#define INTERP_TEXTURE_DEPTH 2
+#define INTERP_ATTRIB_DEPTH 16
+#define INTERP_MAX_LIGHTS 8
+#define INTERP_MAX_VIEWPORT 16384 /* Mesa's GL_MAX_VIEWPORT_DIMS */
+
+enum interp_matrix_mode { INTERP_MV, INTERP_PROJ, INTERP_TEX, INTERP_NMODES };
+
+enum interp_cap {
+#define CAP(name, def, group) INTERP_CAP_##name,
+#include "caps.def"
+#undef CAP
+    INTERP_CAP_COUNT
+};
+
+typedef struct gl_material {
+    float ambient[4], diffuse[4], specular[4], emission[4];
+    float shininess;
+} gl_material;
+
+typedef struct gl_light {
+    float ambient[4], diffuse[4], specular[4];
+    float position[4];       /* eye space, transformed at the glLight call */
+    float spot_direction[3]; /* eye space */
+    float spot_exponent, spot_cutoff;
+    float attenuation[3]; /* constant, linear, quadratic */
+} gl_light;
+
+/* The state glPushAttrib can save, grouped as its mask bits. */
+typedef struct gl_attribs {
+    struct {
+        float color[4], normal[3], texcoord[4];
+        bool edge_flag;
+    } current; /* GL_CURRENT_BIT */
+    uint8_t caps[INTERP_CAP_COUNT]; /* GL_ENABLE_BIT (and each cap's group) */
+    struct {
+        GLenum shade_model;
+        gl_material material[2]; /* front, back */
+        GLenum color_material_face, color_material_mode;
+        gl_light light[INTERP_MAX_LIGHTS];
+        float model_ambient[4];
+        bool local_viewer, two_side;
+    } lighting; /* GL_LIGHTING_BIT */
+    struct {
+        GLenum front_face, cull_mode;
+        GLenum mode[2]; /* front, back: GL_FILL, GL_LINE, GL_POINT */
+        float offset_factor, offset_units;
+    } polygon; /* GL_POLYGON_BIT */
+    struct {
+        float width;
+    } line; /* GL_LINE_BIT */
+    struct {
+        float size;
+    } point; /* GL_POINT_BIT */
+    struct {
+        int32_t rect[4]; /* x, y, width, height */
+        double near, far;
+    } viewport; /* GL_VIEWPORT_BIT */
+    struct {
+        GLenum matrix_mode;
+    } transform; /* GL_TRANSFORM_BIT */
+    struct {
+        float clear[4];
+        GLenum blend_src, blend_dst, alpha_func;
+        float alpha_ref;
+        bool mask[4];
+    } color_buffer; /* GL_COLOR_BUFFER_BIT */
+    struct {
+        GLenum func;
+        bool mask;
+        double clear;
+    } depth; /* GL_DEPTH_BUFFER_BIT */
+    struct {
+        GLenum mode;
+        float density, start, end, color[4];
+    } fog; /* GL_FOG_BIT */
+    struct {
+        GLenum perspective, point, line, polygon, fog;
+    } hint; /* GL_HINT_BIT */
+    struct {
+        GLenum env_mode;
+        float env_color[4];
+        uint32_t binding_1d, binding_2d;
+    } texture; /* GL_TEXTURE_BIT */
+} gl_attribs;
+
+typedef struct gl_attrib_entry {
+    uint32_t mask;
+    gl_attribs saved;
+} gl_attrib_entry;
+
+/* The whole context state that frames carry over. */
+typedef struct gl_state {
+    gl_attribs a;
+    mat4 modelview[INTERP_MODELVIEW_DEPTH];
+    mat4 projection[INTERP_PROJECTION_DEPTH];
+    mat4 texture[INTERP_TEXTURE_DEPTH];
+    int depth[INTERP_NMODES]; /* index of each stack's top */
+    gl_attrib_entry attrib_stack[INTERP_ATTRIB_DEPTH];
+    int attrib_depth;
+    uint32_t list_base; /* glListBase (issue 5) */
+} gl_state;
+
+typedef struct interp interp;
+
+/* A new interpreter in GL's initial state. scene may be NULL: the
+ * interpreter then only tracks state (replaying earlier frames for a
+ * STATE_CARRIED frame). log receives diagnostics (may be NULL). NULL on
+ * allocation failure. */
+interp *interp_create(scene *out, diag_log *log);
+void interp_destroy(interp *ip);
+
+/* Back to GL's initial state; the scene and log stay attached. */
+void interp_reset(interp *ip);
+
+/* Copies the context state (not the scene, log or frame data) from src. */
+void interp_copy_state(interp *dst, const interp *src);
+
+/* Attaches a scene (or NULL) and a log (or NULL). */
+void interp_attach(interp *ip, scene *out, diag_log *log);
+
+/* Names the frame for diagnostics: "frame 12" and, while a snapshot
+ * resource is replayed, "snapshot #3". label may be NULL. */
+void interp_set_frame(interp *ip, uint64_t frame_index, const char *label);
+
+/* Starts a frame: an empty scene (when attached), no camera yet. */
+void interp_begin_frame(interp *ip);
+
+/* Ends a frame: closes an unterminated glBegin (dropping its partial
+ * primitive), and fixes the camera and background if no draw did. */
+void interp_end_frame(interp *ip);
+
+/* Executes one decoded command. */
+void interp_exec(interp *ip, const rgl_cmd *cmd);
+
+/* Executes a command sequence (a frame's commands or a resource). Returns
+ * RGL_OK, or the decoder's error (details in *err) after executing every
+ * command before the damage. */
+rgl_status interp_run(interp *ip, const uint8_t *data, size_t size, uint64_t base_offset,
+                      rgl_error *err);
+
+/* The state, for tests and for the frame driver. */
+const gl_state *interp_state(const interp *ip);
+
+/* The current top of a matrix stack. */
+const mat4 *interp_matrix(const interp *ip, int mode);
+
+/* True while between glBegin and glEnd. */
+bool interp_in_begin(const interp *ip);
+
+/* The rayglFrameBegin file name of the current frame (NUL-terminated,
+ * unsanitised), or NULL when the frame has none. */
+const char *interp_frame_name(const interp *ip);
+
+#endif

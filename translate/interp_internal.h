@@ -1,0 +1,149 @@
+/* interp_internal.h: what the interp_*.c files share; not for other users.
+ *
+ * Holds the interpreter struct, the handler prototypes generated from
+ * format/commands.def, and small helpers for reading arguments and
+ * reporting GL errors.
+ */
+#ifndef RGL_INTERP_INTERNAL_H
+#define RGL_INTERP_INTERNAL_H
+
+#include <math.h>
+
+#include "interp.h"
+
+/* Every handler named in commands.def; a missing definition fails the link. */
+#define RGL_CMD(op, api, gen, name, handler, ...) \
+    void interp_##handler(interp *ip, const rgl_cmd *cmd);
+#include "commands.def"
+#undef RGL_CMD
+
+struct interp {
+    gl_state st;
+    scene *scene; /* NULL: state only */
+    diag_log *log;
+    uint8_t *begin_ok; /* by opcode: allowed between glBegin and glEnd */
+
+    /* Diagnostics context. */
+    uint64_t frame_index;
+    char label[48];
+    const rgl_cmd *cmd; /* the command being executed */
+    uint64_t notes_seen; /* NOTE_* kinds already logged in this frame */
+    bool cleared;        /* the frame cleared the colour buffer */
+
+    /* glBegin .. glEnd */
+    bool in_begin;
+    GLenum prim_mode;
+    bool prim_skip;     /* vertices are dropped (no scene, or a bad transform) */
+    size_t prim_first;  /* first vertex of the primitive in scene->verts */
+    mat4 prim_to_eye;   /* object -> camera eye space for this primitive */
+    bool prim_in_eye;   /* prim_to_eye is applied to the vertices themselves */
+    mat4 prim_clip;     /* object -> clip space of the primitive's own projection */
+    uint8_t *edge;      /* edge flag of each vertex of the primitive */
+    size_t cap_edge;
+    double (*clipv)[3]; /* clip-space x, y, w of each vertex (culling) */
+    size_t cap_clipv;
+
+    /* The frame's camera: fixed by the first draw (or at the frame's end). */
+    bool camera_fixed;
+    mat4 cam_proj;
+    int32_t cam_viewport[4];
+    mat4 cam_from_ndc; /* inverse of (viewport-scaled) camera projection */
+    bool cam_from_ndc_ok;
+
+    /* rayglFrameBegin */
+    bool frame_begin;
+    char frame_name[RGL_STRING_MAX + 1];
+    double fb_loc[3], fb_look[3], fb_light[3];
+};
+
+/* ---- Arguments -------------------------------------------------------------- */
+
+/* A scalar argument as double (any wire type). */
+static inline double arg_num(const rgl_arg *a)
+{
+    switch (a->type) {
+    case RGL_T_f:
+    case RGL_T_d:
+        return a->v.f;
+    case RGL_T_b:
+    case RGL_T_s:
+    case RGL_T_i:
+    case RGL_T_sz:
+    case RGL_T_ip:
+        return (double)a->v.i;
+    default:
+        return (double)a->v.u;
+    }
+}
+
+/* The k-th number of a command whose values are either separate scalars
+ * (glVertex3f) or one array (glVertex3fv). *n receives how many there are. */
+static inline double cmd_value(const rgl_cmd *cmd, uint32_t k)
+{
+    const rgl_arg *a0 = &cmd->arg[0];
+    if (a0->kind == RGL_ARG_ARRAY || a0->kind == RGL_ARG_COUNTED)
+        return k < a0->count ? a0->array[k] : 0.0;
+    return k < cmd->nargs ? arg_num(&cmd->arg[k]) : 0.0;
+}
+
+static inline uint32_t cmd_value_count(const rgl_cmd *cmd)
+{
+    const rgl_arg *a0 = &cmd->arg[0];
+    if (a0->kind == RGL_ARG_ARRAY || a0->kind == RGL_ARG_COUNTED)
+        return a0->count;
+    return cmd->nargs;
+}
+
+/* The wire type of those values. */
+static inline uint8_t cmd_value_type(const rgl_cmd *cmd) { return cmd->arg[0].type; }
+
+static inline uint32_t arg_enum(const rgl_cmd *cmd, uint32_t k)
+{
+    return k < cmd->nargs ? (uint32_t)cmd->arg[k].v.u : 0;
+}
+
+/* ---- Diagnostics -------------------------------------------------------------- */
+
+/* Logs a diagnostic about the current command, prefixed with its frame,
+ * index, name and offset. */
+#if defined(__GNUC__)
+__attribute__((format(printf, 3, 4)))
+#endif
+void interp_diag(interp *ip, diag_kind kind, const char *fmt, ...);
+
+/* Logs a NOTE_* kind once per frame (the CLI then says it once per run). */
+void interp_note(interp *ip, diag_kind kind);
+
+/* GL errors for the current command; the caller then returns (skips it). */
+void interp_bad_enum(interp *ip, const char *what, uint32_t value);
+void interp_bad_value(interp *ip, const char *fmt_detail);
+void interp_bad_op(interp *ip, const char *why);
+
+/* True, after logging GL_INVALID_OPERATION, when between glBegin and glEnd:
+ * for every command GL does not allow there. */
+bool interp_reject_in_begin(interp *ip);
+
+/* ---- Shared between the files --------------------------------------------------- */
+
+/* Index of a cap, or -1 for an enum glEnable does not accept. */
+int interp_cap_index(GLenum cap);
+
+/* Fixes the frame's camera if no draw has yet (interp_raster.c). */
+void interp_fix_camera(interp *ip);
+
+/* The viewport-scaled projection of the current state: clip -> window-ish. */
+mat4 interp_window_matrix(const mat4 *proj, const int32_t vp[4]);
+
+/* Closes an open glBegin without drawing it (interp_prim.c). */
+void interp_abort_begin(interp *ip);
+
+/* Initial values (interp.c). */
+void interp_default_state(gl_state *st);
+
+/* Marks the colour glColor sets into the material with GL_COLOR_MATERIAL
+ * (interp_light.c). */
+void interp_color_material_update(interp *ip);
+
+static inline float clamp01(float x) { return x > 0 ? (x < 1 ? x : 1) : 0; /* NaN -> 0 */ }
+
+#endif

@@ -1,0 +1,286 @@
+/* interp_light.c: lights, light model, materials, colour material, fog.
+ *
+ * The state is kept exactly as GL keeps it (light positions and spot
+ * directions transformed into eye space by the modelview current at the
+ * glLight call, GL 1.x 2.13.2), validated as GL validates it. Issue 4 turns
+ * it into POV-Ray lights and finishes; until then a lit draw shows each
+ * vertex in its material's diffuse colour, and says so once.
+ */
+#include "interp_internal.h"
+
+#include <string.h>
+
+static int face_mask(GLenum face)
+{
+    switch (face) {
+    case GL_FRONT: return 1;
+    case GL_BACK: return 2;
+    case GL_FRONT_AND_BACK: return 3;
+    default: return 0;
+    }
+}
+
+/* Values of an array-form argument (the last one), normalised the way GL
+ * converts integer colours (signed: (2c + 1) / (2^32 - 1)) when asked. */
+static bool get_params(interp *ip, const rgl_cmd *cmd, uint32_t need, bool int_colour,
+                       float *out)
+{
+    const rgl_arg *a = &cmd->arg[cmd->nargs - 1];
+    if (a->kind == RGL_ARG_SCALAR) {
+        if (need != 1)
+            return false;
+        out[0] = (float)arg_num(a);
+        return true;
+    }
+    if (a->count < need) {
+        interp_diag(ip, DIAG_GL_INVALID_VALUE, "invalid value: %u parameters given, %u needed",
+                    a->count, need);
+        return false;
+    }
+    bool is_int = a->type == RGL_T_i;
+    for (uint32_t k = 0; k < need; k++) {
+        double v = a->array[k];
+        out[k] = (float)(is_int && int_colour ? (2 * v + 1) / 4294967295.0 : v);
+    }
+    return true;
+}
+
+void interp_color_material_update(interp *ip)
+{
+    gl_attribs *a = &ip->st.a;
+    int faces = face_mask(a->lighting.color_material_face);
+    const float *c = a->current.color;
+    for (int f = 0; f < 2; f++) {
+        if (!(faces & (1 << f)))
+            continue;
+        gl_material *m = &a->lighting.material[f];
+        switch (a->lighting.color_material_mode) {
+        case GL_EMISSION: memcpy(m->emission, c, 4 * sizeof *c); break;
+        case GL_AMBIENT: memcpy(m->ambient, c, 4 * sizeof *c); break;
+        case GL_DIFFUSE: memcpy(m->diffuse, c, 4 * sizeof *c); break;
+        case GL_SPECULAR: memcpy(m->specular, c, 4 * sizeof *c); break;
+        case GL_AMBIENT_AND_DIFFUSE:
+            memcpy(m->ambient, c, 4 * sizeof *c);
+            memcpy(m->diffuse, c, 4 * sizeof *c);
+            break;
+        default: break;
+        }
+    }
+}
+
+void interp_material(interp *ip, const rgl_cmd *cmd)
+{
+    GLenum face = arg_enum(cmd, 0), pname = arg_enum(cmd, 1);
+    int faces = face_mask(face);
+    bool scalar = cmd->arg[2].kind == RGL_ARG_SCALAR;
+    float v[4];
+    if (!faces) {
+        interp_bad_enum(ip, "face", face);
+        return;
+    }
+    uint32_t need = pname == GL_SHININESS ? 1 : (pname == GL_COLOR_INDEXES ? 3 : 4);
+    switch (pname) {
+    case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_EMISSION:
+    case GL_AMBIENT_AND_DIFFUSE: case GL_SHININESS: case GL_COLOR_INDEXES:
+        break;
+    default:
+        interp_bad_enum(ip, "material parameter", pname);
+        return;
+    }
+    if (scalar && need != 1) {
+        interp_bad_enum(ip, "material parameter for glMaterialf", pname);
+        return;
+    }
+    if (!get_params(ip, cmd, need, pname != GL_SHININESS && pname != GL_COLOR_INDEXES, v))
+        return;
+    if (pname == GL_SHININESS && !(v[0] >= 0 && v[0] <= 128)) {
+        interp_bad_value(ip, "shininess outside [0, 128]");
+        return;
+    }
+    for (int f = 0; f < 2; f++) {
+        if (!(faces & (1 << f)))
+            continue;
+        gl_material *m = &ip->st.a.lighting.material[f];
+        switch (pname) {
+        case GL_AMBIENT: memcpy(m->ambient, v, sizeof v); break;
+        case GL_DIFFUSE: memcpy(m->diffuse, v, sizeof v); break;
+        case GL_SPECULAR: memcpy(m->specular, v, sizeof v); break;
+        case GL_EMISSION: memcpy(m->emission, v, sizeof v); break;
+        case GL_AMBIENT_AND_DIFFUSE:
+            memcpy(m->ambient, v, sizeof v);
+            memcpy(m->diffuse, v, sizeof v);
+            break;
+        case GL_SHININESS: m->shininess = v[0]; break;
+        default: break; /* colour indexes: no effect in RGBA mode */
+        }
+    }
+}
+
+void interp_colormaterial(interp *ip, const rgl_cmd *cmd)
+{
+    GLenum face = arg_enum(cmd, 0), mode = arg_enum(cmd, 1);
+    if (!face_mask(face)) {
+        interp_bad_enum(ip, "face", face);
+        return;
+    }
+    switch (mode) {
+    case GL_EMISSION: case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR:
+    case GL_AMBIENT_AND_DIFFUSE:
+        break;
+    default:
+        interp_bad_enum(ip, "colour material mode", mode);
+        return;
+    }
+    ip->st.a.lighting.color_material_face = face;
+    ip->st.a.lighting.color_material_mode = mode;
+    if (ip->st.a.caps[INTERP_CAP_COLOR_MATERIAL])
+        interp_color_material_update(ip);
+}
+
+void interp_light(interp *ip, const rgl_cmd *cmd)
+{
+    GLenum light = arg_enum(cmd, 0), pname = arg_enum(cmd, 1);
+    bool scalar = cmd->arg[2].kind == RGL_ARG_SCALAR;
+    float v[4];
+    if (light < GL_LIGHT0 || light >= GL_LIGHT0 + INTERP_MAX_LIGHTS) {
+        interp_bad_enum(ip, "light", light);
+        return;
+    }
+    gl_light *l = &ip->st.a.lighting.light[light - GL_LIGHT0];
+    uint32_t need;
+    switch (pname) {
+    case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_POSITION: need = 4; break;
+    case GL_SPOT_DIRECTION: need = 3; break;
+    case GL_SPOT_EXPONENT: case GL_SPOT_CUTOFF: case GL_CONSTANT_ATTENUATION:
+    case GL_LINEAR_ATTENUATION: case GL_QUADRATIC_ATTENUATION: need = 1; break;
+    default:
+        interp_bad_enum(ip, "light parameter", pname);
+        return;
+    }
+    if (scalar && need != 1) {
+        interp_bad_enum(ip, "light parameter for glLightf", pname);
+        return;
+    }
+    bool colour = pname == GL_AMBIENT || pname == GL_DIFFUSE || pname == GL_SPECULAR;
+    if (!get_params(ip, cmd, need, colour, v))
+        return;
+    const mat4 *mv = interp_matrix(ip, INTERP_MV);
+    switch (pname) {
+    case GL_AMBIENT: memcpy(l->ambient, v, sizeof v); break;
+    case GL_DIFFUSE: memcpy(l->diffuse, v, sizeof v); break;
+    case GL_SPECULAR: memcpy(l->specular, v, sizeof v); break;
+    case GL_POSITION: {
+        double in[4] = {v[0], v[1], v[2], v[3]}, o[4];
+        mat4_apply(mv, in, o);
+        for (int k = 0; k < 4; k++)
+            l->position[k] = (float)o[k];
+        break;
+    }
+    case GL_SPOT_DIRECTION: {
+        double in[4] = {v[0], v[1], v[2], 0}, o[4];
+        mat4_apply(mv, in, o); /* the upper 3x3 only (w = 0) */
+        for (int k = 0; k < 3; k++)
+            l->spot_direction[k] = (float)o[k];
+        break;
+    }
+    case GL_SPOT_EXPONENT:
+        if (!(v[0] >= 0 && v[0] <= 128)) {
+            interp_bad_value(ip, "spot exponent outside [0, 128]");
+            return;
+        }
+        l->spot_exponent = v[0];
+        break;
+    case GL_SPOT_CUTOFF:
+        if (!((v[0] >= 0 && v[0] <= 90) || v[0] == 180)) {
+            interp_bad_value(ip, "spot cutoff outside [0, 90] and not 180");
+            return;
+        }
+        l->spot_cutoff = v[0];
+        break;
+    default: /* the attenuations */
+        if (!(v[0] >= 0)) {
+            interp_bad_value(ip, "negative attenuation");
+            return;
+        }
+        l->attenuation[pname - GL_CONSTANT_ATTENUATION] = v[0];
+        break;
+    }
+}
+
+void interp_lightmodel(interp *ip, const rgl_cmd *cmd)
+{
+    GLenum pname = arg_enum(cmd, 0);
+    float v[4];
+    switch (pname) {
+    case GL_LIGHT_MODEL_AMBIENT:
+        if (cmd->arg[1].kind == RGL_ARG_SCALAR) {
+            interp_bad_enum(ip, "light model parameter for glLightModelf", pname);
+            return;
+        }
+        if (get_params(ip, cmd, 4, true, v))
+            memcpy(ip->st.a.lighting.model_ambient, v, sizeof v);
+        break;
+    case GL_LIGHT_MODEL_LOCAL_VIEWER:
+        if (get_params(ip, cmd, 1, false, v))
+            ip->st.a.lighting.local_viewer = v[0] != 0;
+        break;
+    case GL_LIGHT_MODEL_TWO_SIDE:
+        if (get_params(ip, cmd, 1, false, v))
+            ip->st.a.lighting.two_side = v[0] != 0;
+        break;
+    case GL_LIGHT_MODEL_COLOR_CONTROL:
+        if (get_params(ip, cmd, 1, false, v) && v[0] != (float)GL_SINGLE_COLOR &&
+            v[0] != (float)GL_SEPARATE_SPECULAR_COLOR)
+            interp_bad_enum(ip, "colour control", (uint32_t)v[0]);
+        break;
+    default:
+        interp_bad_enum(ip, "light model parameter", pname);
+        break;
+    }
+}
+
+void interp_fog(interp *ip, const rgl_cmd *cmd)
+{
+    GLenum pname = arg_enum(cmd, 0);
+    float v[4];
+    uint32_t need = pname == GL_FOG_COLOR ? 4 : 1;
+    switch (pname) {
+    case GL_FOG_MODE: case GL_FOG_DENSITY: case GL_FOG_START: case GL_FOG_END:
+    case GL_FOG_INDEX: case GL_FOG_COLOR: case GL_FOG_COORD_SRC:
+        break;
+    default:
+        interp_bad_enum(ip, "fog parameter", pname);
+        return;
+    }
+    if (need == 4 && cmd->arg[1].kind == RGL_ARG_SCALAR) {
+        interp_bad_enum(ip, "fog parameter for glFogf", pname);
+        return;
+    }
+    if (!get_params(ip, cmd, need, pname == GL_FOG_COLOR, v))
+        return;
+    switch (pname) {
+    case GL_FOG_MODE: {
+        GLenum m = (GLenum)v[0];
+        if (m != GL_LINEAR && m != GL_EXP && m != GL_EXP2) {
+            interp_bad_enum(ip, "fog mode", m);
+            return;
+        }
+        ip->st.a.fog.mode = m;
+        break;
+    }
+    case GL_FOG_DENSITY:
+        if (!(v[0] >= 0)) {
+            interp_bad_value(ip, "negative fog density");
+            return;
+        }
+        ip->st.a.fog.density = v[0];
+        break;
+    case GL_FOG_START: ip->st.a.fog.start = v[0]; break;
+    case GL_FOG_END: ip->st.a.fog.end = v[0]; break;
+    case GL_FOG_COLOR:
+        for (int k = 0; k < 4; k++)
+            ip->st.a.fog.color[k] = clamp01(v[k]);
+        break;
+    default: break; /* colour index and fog coordinate source: no effect here */
+    }
+}

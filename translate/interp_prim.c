@@ -1,0 +1,687 @@
+/* interp_prim.c: glBegin/glEnd, the current vertex attributes, primitive
+ * assembly, face culling, polygon mode, lines, points and glRect.
+ *
+ * Vertices go straight into the scene's vertex pool as they arrive, with
+ * the current normal, colour and texture coordinates (GL 1.x 2.7). At
+ * glEnd the primitive is assembled as GL does (2.6.1): strips alternate
+ * their winding, quads split (0,1,2)(0,2,3), quad strips take vertices
+ * (2i, 2i+1, 2i+3, 2i+2), polygons are fans; incomplete primitives are
+ * dropped; the provoking vertex (flat shading) is the last vertex of each
+ * triangle, quad or segment and the first of a polygon (table 2.2).
+ * Facing follows the window-space winding (2.14.1 and 3.5.1), computed in
+ * clip space so that primitives crossing the eye plane still face right.
+ * Lines and points leave the pool again: they become eye-space segments and
+ * squares sized to their pixel width.
+ */
+#include "interp_internal.h"
+
+#include <string.h>
+
+#include "talloc.h"
+
+/* ---- Current attributes ------------------------------------------------------ */
+
+/* GL 1.x table 2.9: integer colour and normal components map to [0, 1] or
+ * [-1, 1]: unsigned c / (2^b - 1), signed (2c + 1) / (2^b - 1). */
+static double normalise(uint8_t type, double c)
+{
+    switch (type) {
+    case RGL_T_ub: return c / 255.0;
+    case RGL_T_b: return (2 * c + 1) / 255.0;
+    case RGL_T_us: return c / 65535.0;
+    case RGL_T_s: return (2 * c + 1) / 65535.0;
+    case RGL_T_ui: return c / 4294967295.0;
+    case RGL_T_i: return (2 * c + 1) / 4294967295.0;
+    default: return c;
+    }
+}
+
+void interp_color(interp *ip, const rgl_cmd *cmd)
+{
+    uint32_t n = cmd_value_count(cmd);
+    uint8_t type = cmd_value_type(cmd);
+    float *c = ip->st.a.current.color;
+    for (uint32_t k = 0; k < 4; k++)
+        c[k] = k < n ? (float)normalise(type, cmd_value(cmd, k)) : 1.0f;
+    if (ip->st.a.caps[INTERP_CAP_COLOR_MATERIAL])
+        interp_color_material_update(ip);
+}
+
+void interp_normal(interp *ip, const rgl_cmd *cmd)
+{
+    uint8_t type = cmd_value_type(cmd);
+    for (uint32_t k = 0; k < 3; k++)
+        ip->st.a.current.normal[k] = (float)normalise(type, cmd_value(cmd, k));
+}
+
+void interp_texcoord(interp *ip, const rgl_cmd *cmd)
+{
+    uint32_t n = cmd_value_count(cmd);
+    static const float def[4] = {0, 0, 0, 1};
+    for (uint32_t k = 0; k < 4; k++)
+        ip->st.a.current.texcoord[k] = k < n ? (float)cmd_value(cmd, k) : def[k];
+}
+
+void interp_edgeflag(interp *ip, const rgl_cmd *cmd)
+{
+    ip->st.a.current.edge_flag = rgl_arg_i(&cmd->arg[0], 0) != 0;
+}
+
+/* ---- glBegin ------------------------------------------------------------------- */
+
+/* Notes for state this draw uses but the scene does not translate (yet). */
+static void draw_notes(interp *ip)
+{
+    const gl_attribs *a = &ip->st.a;
+    const uint8_t *c = a->caps;
+    if (c[INTERP_CAP_LIGHTING])
+        interp_note(ip, DIAG_NOTE_LIGHTING);
+    if (c[INTERP_CAP_FOG])
+        interp_note(ip, DIAG_NOTE_FOG);
+    if (c[INTERP_CAP_BLEND])
+        interp_note(ip, DIAG_NOTE_BLEND);
+    if (c[INTERP_CAP_ALPHA_TEST])
+        interp_note(ip, DIAG_NOTE_ALPHA_TEST);
+    if (c[INTERP_CAP_TEXTURE_1D] || c[INTERP_CAP_TEXTURE_2D] || c[INTERP_CAP_TEXTURE_3D] ||
+        c[INTERP_CAP_TEXTURE_CUBE_MAP])
+        interp_note(ip, DIAG_NOTE_TEXTURE);
+    if (c[INTERP_CAP_LINE_STIPPLE] || c[INTERP_CAP_POLYGON_STIPPLE])
+        interp_note(ip, DIAG_NOTE_STIPPLE);
+    if (c[INTERP_CAP_SCISSOR_TEST])
+        interp_note(ip, DIAG_NOTE_SCISSOR);
+    if (c[INTERP_CAP_STENCIL_TEST])
+        interp_note(ip, DIAG_NOTE_STENCIL);
+    for (int i = 0; i < 6; i++)
+        if (c[INTERP_CAP_CLIP_PLANE0 + i])
+            interp_note(ip, DIAG_NOTE_CLIP_PLANE);
+    if (c[INTERP_CAP_COLOR_LOGIC_OP] || !a->color_buffer.mask[0] || !a->color_buffer.mask[1] ||
+        !a->color_buffer.mask[2])
+        interp_note(ip, DIAG_NOTE_COLOR_MASK);
+    if (!c[INTERP_CAP_DEPTH_TEST] || (a->depth.func != GL_LESS && a->depth.func != GL_LEQUAL))
+        interp_note(ip, DIAG_NOTE_DEPTH);
+}
+
+/* Sets prim_to_eye / prim_clip for a draw with the current matrices.
+ * Returns false when the transform cannot place anything. */
+static bool setup_transform(interp *ip)
+{
+    const mat4 *mv = interp_matrix(ip, INTERP_MV);
+    const mat4 *proj = interp_matrix(ip, INTERP_PROJ);
+    mat4 to_eye = *mv;
+
+    ip->prim_clip = mat4_mul(proj, mv);
+    if (!ip->frame_begin) {
+        const int32_t *vp = ip->st.a.viewport.rect;
+        bool same_vp = memcmp(vp, ip->cam_viewport, sizeof ip->cam_viewport) == 0;
+        if (!same_vp || !mat4_equal_f32(proj, &ip->cam_proj)) {
+            /* Drawn with another projection or viewport: map its window
+             * position into the camera's eye space. */
+            interp_note(ip, DIAG_NOTE_PROJECTION);
+            if (!ip->cam_from_ndc_ok)
+                return false;
+            mat4 w = interp_window_matrix(proj, vp);
+            mat4 remap = mat4_mul(&ip->cam_from_ndc, &w);
+            to_eye = mat4_mul(&remap, mv);
+        }
+    }
+    if (!mat4_finite(&to_eye) || !mat4_finite(&ip->prim_clip)) {
+        interp_diag(ip, DIAG_BAD_NUMBER, "matrix with NaN or infinite elements: draw skipped");
+        return false;
+    }
+    ip->prim_to_eye = to_eye;
+    ip->prim_in_eye = false;
+    if (!mat4_affine(&to_eye)) {
+        if (mat4_affine(mv))
+            ; /* the remap is projective, not the program's matrix: no note */
+        else
+            interp_note(ip, DIAG_NOTE_PROJECTIVE_MODELVIEW);
+        ip->prim_in_eye = true;
+    } else {
+        /* POV-Ray cannot invert a singular matrix: flatten such draws. */
+        double det = mat4_det3(&to_eye), scale = 0;
+        for (int i = 0; i < 11; i++)
+            if (i % 4 != 3)
+                scale = fmax(scale, fabs(to_eye.m[i]));
+        if (!(fabs(det) > 1e-12 * scale * scale * scale))
+            ip->prim_in_eye = true;
+    }
+    return true;
+}
+
+static void begin_mode(interp *ip, GLenum mode)
+{
+    ip->in_begin = true;
+    ip->prim_mode = mode;
+    ip->prim_skip = true;
+    if (!ip->scene)
+        return;
+    draw_notes(ip);
+    interp_fix_camera(ip);
+    if (!setup_transform(ip))
+        return;
+    ip->prim_skip = false;
+    ip->prim_first = ip->scene->nverts;
+}
+
+void interp_begin(interp *ip, const rgl_cmd *cmd)
+{
+    GLenum mode = arg_enum(cmd, 0);
+    if (mode > GL_POLYGON) {
+        interp_bad_enum(ip, "primitive mode", mode);
+        return;
+    }
+    begin_mode(ip, mode);
+}
+
+/* ---- Vertices ---------------------------------------------------------------- */
+
+static void add_vertex(interp *ip, double x, double y, double z, double w)
+{
+    scene *s = ip->scene;
+    size_t k = s->nverts - ip->prim_first;
+    scene_vertex *v = scene_reserve_vertices(s, 1);
+    if (!v)
+        return;
+    if (k >= ip->cap_edge && tr_grow((void **)&ip->edge, &ip->cap_edge, k + 1, 1) != 0) {
+        s->failed = true;
+        return;
+    }
+    if (w != 1) {
+        if (w == 0 || !isfinite(w)) {
+            x = y = z = NAN; /* a point at infinity: the primitive is dropped */
+        } else {
+            x /= w;
+            y /= w;
+            z /= w;
+        }
+    }
+    const gl_attribs *a = &ip->st.a;
+    v->pos[0] = (float)x;
+    v->pos[1] = (float)y;
+    v->pos[2] = (float)z;
+    memcpy(v->normal, a->current.normal, sizeof v->normal);
+    /* Lighting is issue 4: until then a lit vertex shows its material's
+     * diffuse colour (which GL_COLOR_MATERIAL keeps equal to glColor). */
+    const float *c = a->caps[INTERP_CAP_LIGHTING] ? a->lighting.material[0].diffuse
+                                                  : a->current.color;
+    for (int i = 0; i < 4; i++)
+        v->color[i] = clamp01(c[i]);
+    float q = a->current.texcoord[3];
+    if (q == 1 || q == 0 || !isfinite(q)) {
+        v->tex[0] = a->current.texcoord[0];
+        v->tex[1] = a->current.texcoord[1];
+    } else {
+        v->tex[0] = a->current.texcoord[0] / q;
+        v->tex[1] = a->current.texcoord[1] / q;
+    }
+    ip->edge[k] = a->current.edge_flag;
+    scene_commit_vertices(s, 1);
+}
+
+void interp_vertex(interp *ip, const rgl_cmd *cmd)
+{
+    if (!ip->in_begin) {
+        interp_diag(ip, DIAG_IGNORED, "vertex outside glBegin/glEnd ignored");
+        return;
+    }
+    if (ip->prim_skip)
+        return;
+    double v[4] = {0, 0, 0, 1};
+    if (cmd->opcode == RGL_OP_Vertex3f) { /* the common case, without the switch */
+        v[0] = cmd->arg[0].v.f;
+        v[1] = cmd->arg[1].v.f;
+        v[2] = cmd->arg[2].v.f;
+    } else {
+        uint32_t n = cmd_value_count(cmd);
+        for (uint32_t k = 0; k < n && k < 4; k++)
+            v[k] = cmd_value(cmd, k);
+    }
+    add_vertex(ip, v[0], v[1], v[2], v[3]);
+}
+
+/* ---- Assembly ------------------------------------------------------------------- */
+
+typedef struct assembly {
+    interp *ip;
+    scene *s;
+    uint32_t base;  /* absolute index of the primitive's first vertex */
+    bool facing;    /* facing must be computed (culling or mixed modes) */
+    bool cull_front, cull_back;
+    bool swap;      /* glFrontFace(GL_CW): reorder so that front is CCW */
+    bool check_bad; /* some vertex is not finite */
+    bool flat;
+    float line_width, point_size;
+    bool line_smooth, point_smooth;
+    scene_mesh *mesh;
+} assembly;
+
+static bool vertex_ok(const scene_vertex *v)
+{
+    return isfinite(v->pos[0]) && isfinite(v->pos[1]) && isfinite(v->pos[2]);
+}
+
+/* Eye-space position of a pool vertex (already there when prim_in_eye). */
+static bool eye_pos(const interp *ip, const scene_vertex *v, double out[3])
+{
+    if (ip->prim_in_eye) {
+        for (int k = 0; k < 3; k++)
+            out[k] = v->pos[k];
+    } else {
+        double in[4] = {v->pos[0], v->pos[1], v->pos[2], 1}, o[4];
+        mat4_apply(&ip->prim_to_eye, in, o);
+        if (!(o[3] > 0))
+            return false;
+        for (int k = 0; k < 3; k++)
+            out[k] = o[k] / o[3];
+    }
+    return isfinite(out[0]) && isfinite(out[1]) && isfinite(out[2]);
+}
+
+/* Width in pixels as GL rasterises it: aliased widths round to an integer,
+ * at least 1 (GL 1.x 3.3, 3.4.2). */
+static float raster_width(float w, bool smooth)
+{
+    if (!(w > 0))
+        return 1;
+    if (smooth)
+        return w;
+    float r = floorf(w + 0.5f);
+    return r < 1 ? 1 : r;
+}
+
+static void add_segment(assembly *as, uint32_t i0, uint32_t i1, uint32_t provoking)
+{
+    interp *ip = as->ip;
+    const scene_vertex *v0 = &as->s->verts[i0], *v1 = &as->s->verts[i1];
+    double p0[3], p1[3], px0, py0, px1, py1, w0[2], w1[2];
+    if (!eye_pos(ip, v0, p0) || !eye_pos(ip, v1, p1))
+        return;
+    const scene_camera *cam = &as->s->camera;
+    if (!scene_camera_pixel_size(cam, p0, &px0, &py0) ||
+        !scene_camera_pixel_size(cam, p1, &px1, &py1) || !scene_camera_project(cam, p0, w0) ||
+        !scene_camera_project(cam, p1, w1))
+        return;
+    double dx = w1[0] - w0[0], dy = w1[1] - w0[1], len = hypot(dx, dy);
+    if (!(len > 1e-9) && !(fabs(p1[2] - p0[2]) > 0))
+        return; /* zero length: GL draws nothing */
+    /* An aliased wide line spans `width` pixels along the minor axis
+     * (GL 1.x 3.4.2), so its perpendicular thickness is width * cos. */
+    bool xmajor = fabs(dx) >= fabs(dy);
+    double f = len > 1e-9 && !as->line_smooth ? fmax(fabs(dx), fabs(dy)) / len : 1;
+    double half = as->line_width * 0.5 * f;
+    scene_line *l = scene_add_line(as->s);
+    if (!l)
+        return;
+    for (int k = 0; k < 3; k++) {
+        l->p[0][k] = (float)p0[k];
+        l->p[1][k] = (float)p1[k];
+    }
+    l->r[0] = (float)(half * (xmajor ? py0 : px0));
+    l->r[1] = (float)(half * (xmajor ? py1 : px1));
+    const scene_vertex *c0 = as->flat ? &as->s->verts[provoking] : v0;
+    const scene_vertex *c1 = as->flat ? &as->s->verts[provoking] : v1;
+    memcpy(l->color[0], c0->color, sizeof l->color[0]);
+    memcpy(l->color[1], c1->color, sizeof l->color[1]);
+}
+
+static void add_point(assembly *as, uint32_t i, uint32_t colour_from)
+{
+    double p[3], px, py;
+    if (!eye_pos(as->ip, &as->s->verts[i], p) ||
+        !scene_camera_pixel_size(&as->s->camera, p, &px, &py))
+        return;
+    scene_point *pt = scene_add_point(as->s);
+    if (!pt)
+        return;
+    for (int k = 0; k < 3; k++)
+        pt->p[k] = (float)p[k];
+    pt->hx = (float)(as->point_size * 0.5 * px);
+    pt->hy = (float)(as->point_size * 0.5 * py);
+    pt->round = as->point_smooth;
+    memcpy(pt->color, as->s->verts[colour_from].color, sizeof pt->color);
+}
+
+/* Clip-space x, y, w of every vertex of the primitive, for facing. */
+static bool compute_clip(interp *ip, uint32_t n)
+{
+    if (n > ip->cap_clipv &&
+        tr_grow((void **)&ip->clipv, &ip->cap_clipv, n, sizeof *ip->clipv) != 0)
+        return false;
+    const mat4 *m = &ip->prim_clip;
+    const scene_vertex *v = ip->scene->verts + ip->prim_first;
+    for (uint32_t i = 0; i < n; i++) {
+        double x = v[i].pos[0], y = v[i].pos[1], z = v[i].pos[2];
+        ip->clipv[i][0] = m->m[0] * x + m->m[4] * y + m->m[8] * z + m->m[12];
+        ip->clipv[i][1] = m->m[1] * x + m->m[5] * y + m->m[9] * z + m->m[13];
+        ip->clipv[i][2] = m->m[3] * x + m->m[7] * y + m->m[11] * z + m->m[15];
+    }
+    return true;
+}
+
+/* Counter-clockwise in window space? For polygons wholly in front of the
+ * eye, the signed area of the projection; otherwise the sign of the
+ * homogeneous determinant of the first three vertices, which gives the
+ * winding of the visible, clipped part. idx are relative to the base. */
+static bool is_ccw(const interp *ip, const uint32_t *idx, int n)
+{
+    double (*c)[3] = ip->clipv;
+    bool all_front = true;
+    for (int k = 0; k < n; k++)
+        if (!(c[idx[k]][2] > 0))
+            all_front = false;
+    if (all_front) {
+        double area = 0;
+        for (int k = 0; k < n; k++) {
+            const double *a = c[idx[k]], *b = c[idx[(k + 1) % n]];
+            area += (a[0] / a[2]) * (b[1] / b[2]) - (b[0] / b[2]) * (a[1] / a[2]);
+        }
+        return area > 0;
+    }
+    const double *a = c[idx[0]], *b = c[idx[1]], *d = c[idx[2]];
+    double det = a[0] * (b[1] * d[2] - b[2] * d[1]) - a[1] * (b[0] * d[2] - b[2] * d[0]) +
+                 a[2] * (b[0] * d[1] - b[1] * d[0]);
+    return det > 0;
+}
+
+static void fill_tri(assembly *as, uint32_t a, uint32_t b, uint32_t c, uint32_t provoking)
+{
+    if (!as->mesh)
+        return;
+    if (as->swap)
+        scene_add_tri(as->s, as->base + a, as->base + c, as->base + b, as->base + provoking);
+    else
+        scene_add_tri(as->s, as->base + a, as->base + b, as->base + c, as->base + provoking);
+}
+
+/* One polygon (triangle, quad or GL_POLYGON) with vertices idx (relative),
+ * its provoking vertex, and whether its edge flags count. */
+static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t provoking,
+                         bool edge_flags)
+{
+    interp *ip = as->ip;
+    const gl_attribs *a = &ip->st.a;
+    if (as->check_bad)
+        for (int k = 0; k < n; k++)
+            if (!vertex_ok(&as->s->verts[as->base + idx[k]]))
+                return;
+    GLenum mode = a->polygon.mode[0];
+    if (as->facing) {
+        bool front = is_ccw(ip, idx, n) != as->swap;
+        if ((front && as->cull_front) || (!front && as->cull_back))
+            return;
+        mode = a->polygon.mode[front ? 0 : 1];
+    }
+    if (mode == GL_FILL) {
+        for (int k = 1; k + 1 < n; k++)
+            fill_tri(as, idx[0], idx[k], idx[k + 1], provoking);
+        return;
+    }
+    for (int k = 0; k < n; k++) {
+        if (edge_flags && !ip->edge[idx[k]])
+            continue; /* GL draws only boundary edges (and their vertices) */
+        if (mode == GL_LINE)
+            add_segment(as, as->base + idx[k], as->base + idx[(k + 1) % n], as->base + provoking);
+        else
+            add_point(as, as->base + idx[k], as->flat ? as->base + provoking : as->base + idx[k]);
+    }
+}
+
+static void assemble_polygons(assembly *as, GLenum mode, uint32_t n)
+{
+    uint32_t t[4];
+    switch (mode) {
+    case GL_TRIANGLES:
+        for (uint32_t i = 0; i + 3 <= n; i += 3) {
+            t[0] = i, t[1] = i + 1, t[2] = i + 2;
+            emit_polygon(as, t, 3, i + 2, true);
+        }
+        break;
+    case GL_TRIANGLE_STRIP:
+        for (uint32_t i = 0; i + 3 <= n; i++) {
+            if (i % 2 == 0)
+                t[0] = i, t[1] = i + 1;
+            else
+                t[0] = i + 1, t[1] = i;
+            t[2] = i + 2;
+            emit_polygon(as, t, 3, i + 2, false);
+        }
+        break;
+    case GL_TRIANGLE_FAN:
+        for (uint32_t i = 0; i + 3 <= n; i++) {
+            t[0] = 0, t[1] = i + 1, t[2] = i + 2;
+            emit_polygon(as, t, 3, i + 2, false);
+        }
+        break;
+    case GL_QUADS:
+        for (uint32_t i = 0; i + 4 <= n; i += 4) {
+            t[0] = i, t[1] = i + 1, t[2] = i + 2, t[3] = i + 3;
+            emit_polygon(as, t, 4, i + 3, true);
+        }
+        break;
+    case GL_QUAD_STRIP:
+        for (uint32_t i = 0; i + 4 <= n; i += 2) {
+            t[0] = i, t[1] = i + 1, t[2] = i + 3, t[3] = i + 2;
+            emit_polygon(as, t, 4, i + 3, false);
+        }
+        break;
+    case GL_POLYGON:
+        if (n >= 3) {
+            uint32_t *all = tr_realloc(NULL, n * sizeof *all);
+            if (!all) {
+                as->s->failed = true;
+                return;
+            }
+            for (uint32_t i = 0; i < n; i++)
+                all[i] = i;
+            emit_polygon(as, all, (int)n, 0, true);
+            tr_free(all);
+        }
+        break;
+    default:
+        break;
+    }
+}
+
+/* Fast path: every face filled, nothing culled, every vertex finite. */
+static void assemble_filled(assembly *as, GLenum mode, uint32_t n)
+{
+    switch (mode) {
+    case GL_TRIANGLES:
+        for (uint32_t i = 0; i + 3 <= n; i += 3)
+            fill_tri(as, i, i + 1, i + 2, i + 2);
+        break;
+    case GL_TRIANGLE_STRIP:
+        for (uint32_t i = 0; i + 3 <= n; i++) {
+            if (i % 2 == 0)
+                fill_tri(as, i, i + 1, i + 2, i + 2);
+            else
+                fill_tri(as, i + 1, i, i + 2, i + 2);
+        }
+        break;
+    case GL_TRIANGLE_FAN:
+        for (uint32_t i = 0; i + 3 <= n; i++)
+            fill_tri(as, 0, i + 1, i + 2, i + 2);
+        break;
+    case GL_QUADS:
+        for (uint32_t i = 0; i + 4 <= n; i += 4) {
+            fill_tri(as, i, i + 1, i + 2, i + 3);
+            fill_tri(as, i, i + 2, i + 3, i + 3);
+        }
+        break;
+    case GL_QUAD_STRIP:
+        for (uint32_t i = 0; i + 4 <= n; i += 2) {
+            fill_tri(as, i, i + 1, i + 3, i + 3);
+            fill_tri(as, i, i + 3, i + 2, i + 3);
+        }
+        break;
+    case GL_POLYGON:
+        for (uint32_t i = 1; i + 1 < n; i++)
+            fill_tri(as, 0, i, i + 1, 0);
+        break;
+    default:
+        break;
+    }
+}
+
+static void assemble_lines(assembly *as, GLenum mode, uint32_t n)
+{
+    uint32_t b = as->base;
+    switch (mode) {
+    case GL_POINTS:
+        for (uint32_t i = 0; i < n; i++)
+            if (!as->check_bad || vertex_ok(&as->s->verts[b + i]))
+                add_point(as, b + i, b + i);
+        break;
+    case GL_LINES:
+        for (uint32_t i = 0; i + 2 <= n; i += 2)
+            add_segment(as, b + i, b + i + 1, b + i + 1);
+        break;
+    case GL_LINE_STRIP:
+    case GL_LINE_LOOP:
+        for (uint32_t i = 0; i + 2 <= n; i++)
+            add_segment(as, b + i, b + i + 1, b + i + 1);
+        if (mode == GL_LINE_LOOP && n >= 2)
+            add_segment(as, b + n - 1, b, b); /* table 2.2: provoking is vertex 1 */
+        break;
+    default:
+        break;
+    }
+}
+
+/* Moves the primitive's vertices into eye space (projective or singular
+ * transforms that a POV-Ray matrix cannot carry). Normals follow with the
+ * inverse transpose of the linear part, as GL transforms them. */
+static void vertices_to_eye(interp *ip, uint32_t n)
+{
+    scene_vertex *v = ip->scene->verts + ip->prim_first;
+    mat4 inv, nt;
+    bool have_nt = mat4_invert(&ip->prim_to_eye, &inv);
+    nt = mat4_transpose(&inv);
+    for (uint32_t i = 0; i < n; i++) {
+        double in[4] = {v[i].pos[0], v[i].pos[1], v[i].pos[2], 1}, o[4];
+        mat4_apply(&ip->prim_to_eye, in, o);
+        if (o[3] > 0 && isfinite(o[3])) {
+            for (int k = 0; k < 3; k++)
+                v[i].pos[k] = (float)(o[k] / o[3]);
+        } else {
+            v[i].pos[0] = v[i].pos[1] = v[i].pos[2] = NAN; /* behind the eye */
+        }
+        if (have_nt) {
+            double nin[4] = {v[i].normal[0], v[i].normal[1], v[i].normal[2], 0}, no[4];
+            mat4_apply(&nt, nin, no);
+            for (int k = 0; k < 3; k++)
+                v[i].normal[k] = (float)no[k];
+        }
+    }
+}
+
+static scene_look current_look(const interp *ip)
+{
+    scene_look look;
+    memset(&look, 0, sizeof look);
+    look.lit = ip->st.a.caps[INTERP_CAP_LIGHTING];
+    look.flat = ip->st.a.lighting.shade_model == GL_FLAT;
+    look.material = -1;
+    look.texture = -1;
+    return look;
+}
+
+static void end_primitive(interp *ip)
+{
+    scene *s = ip->scene;
+    const gl_attribs *a = &ip->st.a;
+    ip->in_begin = false;
+    if (ip->prim_skip || !s)
+        return;
+    if (s->nverts < ip->prim_first)
+        return; /* the pool was cleared under us (cannot happen: Clear is refused in Begin) */
+    uint32_t n = (uint32_t)(s->nverts - ip->prim_first);
+    GLenum mode = ip->prim_mode;
+    assembly as;
+    memset(&as, 0, sizeof as);
+    as.ip = ip;
+    as.s = s;
+    as.base = (uint32_t)ip->prim_first;
+    as.flat = a->lighting.shade_model == GL_FLAT;
+    as.swap = a->polygon.front_face == GL_CW;
+    as.line_smooth = a->caps[INTERP_CAP_LINE_SMOOTH];
+    as.point_smooth = a->caps[INTERP_CAP_POINT_SMOOTH];
+    as.line_width = raster_width(a->line.width, as.line_smooth);
+    as.point_size = raster_width(a->point.size, as.point_smooth);
+    for (uint32_t i = 0; i < n && !as.check_bad; i++)
+        if (!vertex_ok(&s->verts[as.base + i]))
+            as.check_bad = true;
+
+    if (mode <= GL_LINE_STRIP) {
+        if (ip->prim_in_eye)
+            vertices_to_eye(ip, n);
+        as.check_bad = true;
+        assemble_lines(&as, mode, n);
+        s->nverts = ip->prim_first; /* lines and points keep no pool vertices */
+        return;
+    }
+
+    bool cull = a->caps[INTERP_CAP_CULL_FACE];
+    GLenum cm = a->polygon.cull_mode;
+    as.cull_front = cull && (cm == GL_FRONT || cm == GL_FRONT_AND_BACK);
+    as.cull_back = cull && (cm == GL_BACK || cm == GL_FRONT_AND_BACK);
+    as.facing = cull || a->polygon.mode[0] != a->polygon.mode[1];
+    if (as.facing && !compute_clip(ip, n)) {
+        s->failed = true;
+        return;
+    }
+    if (ip->prim_in_eye) {
+        vertices_to_eye(ip, n);
+        as.check_bad = true;
+    }
+    scene_look look = current_look(ip);
+    mat4 id = mat4_identity();
+    as.mesh = scene_mesh_for(s, ip->prim_in_eye ? &id : &ip->prim_to_eye, ip->prim_in_eye, &look);
+    if (!as.facing && !as.check_bad && a->polygon.mode[0] == GL_FILL)
+        assemble_filled(&as, mode, n);
+    else
+        assemble_polygons(&as, mode, n);
+}
+
+void interp_end(interp *ip, const rgl_cmd *cmd)
+{
+    (void)cmd;
+    if (!ip->in_begin) {
+        interp_bad_op(ip, "glEnd without glBegin");
+        return;
+    }
+    end_primitive(ip);
+}
+
+void interp_abort_begin(interp *ip)
+{
+    if (!ip->in_begin)
+        return;
+    ip->in_begin = false;
+    if (ip->scene && !ip->prim_skip && ip->scene->nverts >= ip->prim_first)
+        ip->scene->nverts = ip->prim_first;
+}
+
+/* glRect(x1, y1, x2, y2) is Begin(POLYGON), (x1,y1) (x2,y1) (x2,y2)
+ * (x1,y2), End (GL 1.x 2.9). */
+void interp_rect(interp *ip, const rgl_cmd *cmd)
+{
+    double v[4];
+    if (cmd->nargs == 2) { /* the vector forms: two arrays of two */
+        v[0] = rgl_arg_f(&cmd->arg[0], 0);
+        v[1] = rgl_arg_f(&cmd->arg[0], 1);
+        v[2] = rgl_arg_f(&cmd->arg[1], 0);
+        v[3] = rgl_arg_f(&cmd->arg[1], 1);
+    } else {
+        for (int i = 0; i < 4; i++)
+            v[i] = arg_num(&cmd->arg[i]);
+    }
+    begin_mode(ip, GL_POLYGON);
+    if (!ip->prim_skip) {
+        add_vertex(ip, v[0], v[1], 0, 1);
+        add_vertex(ip, v[2], v[1], 0, 1);
+        add_vertex(ip, v[2], v[3], 0, 1);
+        add_vertex(ip, v[0], v[3], 0, 1);
+    }
+    end_primitive(ip);
+}

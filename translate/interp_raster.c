@@ -1,0 +1,279 @@
+/* interp_raster.c: clear and background, shading and face state, point
+ * and line size, the per-fragment state, the frame calls (glutSwapBuffers,
+ * rayglFrameBegin/End), and the frame's camera.
+ *
+ * The camera is fixed by the frame's first draw: the projection and
+ * viewport current then (or rayglFrameBegin's look-at camera). Draws made
+ * later with another projection or viewport are remapped into it (see
+ * setup_transform in interp_prim.c). A glClear of the colour buffer erases
+ * what was drawn before it, as in GL, and sets the background.
+ */
+#include "interp_internal.h"
+
+#include <string.h>
+
+/* ---- The frame ---------------------------------------------------------------- */
+
+void interp_fix_camera(interp *ip)
+{
+    scene *s = ip->scene;
+    if (ip->camera_fixed || !s)
+        return;
+    ip->camera_fixed = true;
+    s->have_camera = true;
+    const gl_attribs *a = &ip->st.a;
+    const mat4 *proj = interp_matrix(ip, INTERP_PROJ);
+    memcpy(ip->cam_viewport, a->viewport.rect, sizeof ip->cam_viewport);
+    ip->cam_proj = *proj;
+
+    if (ip->frame_begin) {
+        /* The paper's camera; its field of view comes from the GL
+         * projection when that is a perspective one (p5 = cot(fovy/2)). */
+        double fovy = 0;
+        if (proj->m[11] != 0 && proj->m[15] == 0 && proj->m[5] != 0 && isfinite(proj->m[5]))
+            fovy = 2 * atan(fabs(1 / proj->m[5])) * 180 / 3.14159265358979323846;
+        scene_camera_lookat(&s->camera, ip->fb_loc, ip->fb_look, fovy, a->viewport.rect[2],
+                            a->viewport.rect[3]);
+        ip->cam_from_ndc_ok = false;
+        return;
+    }
+    if (!scene_camera_from_gl(&s->camera, proj, ip->cam_viewport))
+        interp_note(ip, DIAG_NOTE_CAMERA);
+    mat4 w = interp_window_matrix(proj, ip->cam_viewport);
+    ip->cam_from_ndc_ok = mat4_invert(&w, &ip->cam_from_ndc);
+}
+
+void interp_begin_frame(interp *ip)
+{
+    if (ip->in_begin)
+        interp_abort_begin(ip);
+    ip->camera_fixed = false;
+    ip->frame_begin = false;
+    ip->frame_name[0] = '\0';
+    ip->notes_seen = 0;
+    ip->cleared = false;
+    if (ip->scene)
+        scene_reset(ip->scene);
+}
+
+void interp_end_frame(interp *ip)
+{
+    scene *s = ip->scene;
+    if (ip->in_begin) {
+        interp_diag(ip, DIAG_IGNORED, "frame ends inside glBegin: the open primitive is dropped");
+        interp_abort_begin(ip);
+    }
+    if (!s)
+        return;
+    interp_fix_camera(ip);
+    if (!ip->cleared)
+        for (int i = 0; i < 4; i++)
+            s->background[i] = clamp01(ip->st.a.color_buffer.clear[i]);
+    if (ip->frame_begin) {
+        /* rayglFrameBegin's white parallel light, aimed at the look-at point. */
+        scene_light *l = scene_add_light(s);
+        if (l) {
+            l->kind = SCENE_LIGHT_PARALLEL;
+            for (int k = 0; k < 3; k++) {
+                l->position[k] = isfinite(ip->fb_light[k]) ? ip->fb_light[k] : 0;
+                l->point_at[k] = s->camera.look_at[k];
+            }
+            l->color[0] = l->color[1] = l->color[2] = 1;
+        }
+    }
+}
+
+void interp_swapbuffers(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
+void interp_frameend(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
+
+void interp_framebegin(interp *ip, const rgl_cmd *cmd)
+{
+    const rgl_arg *name = &cmd->arg[0];
+    size_t n = name->count < RGL_STRING_MAX ? name->count : RGL_STRING_MAX;
+    for (size_t i = 0; i < n; i++)
+        ip->frame_name[i] = name->bytes[i] ? (char)name->bytes[i] : '_';
+    ip->frame_name[n] = '\0';
+    for (int k = 0; k < 3; k++) {
+        ip->fb_loc[k] = arg_num(&cmd->arg[1 + k]);
+        ip->fb_look[k] = arg_num(&cmd->arg[4 + k]);
+        ip->fb_light[k] = arg_num(&cmd->arg[7 + k]);
+    }
+    ip->frame_begin = true;
+    ip->camera_fixed = false; /* the look-at camera replaces any GL one */
+}
+
+/* ---- Clearing ---------------------------------------------------------------- */
+
+void interp_clearcolor(interp *ip, const rgl_cmd *cmd)
+{
+    for (int i = 0; i < 4; i++)
+        ip->st.a.color_buffer.clear[i] = clamp01((float)arg_num(&cmd->arg[i]));
+}
+
+void interp_cleardepth(interp *ip, const rgl_cmd *cmd)
+{
+    double d = arg_num(&cmd->arg[0]);
+    ip->st.a.depth.clear = d > 0 ? (d < 1 ? d : 1) : 0;
+}
+
+void interp_clear(interp *ip, const rgl_cmd *cmd)
+{
+    uint32_t mask = (uint32_t)cmd->arg[0].v.u;
+    const uint32_t known = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT |
+                           GL_ACCUM_BUFFER_BIT;
+    if (mask & ~known) {
+        interp_bad_value(ip, "glClear mask has unknown bits");
+        return;
+    }
+    if (!(mask & GL_COLOR_BUFFER_BIT) || !ip->scene)
+        return;
+    const gl_attribs *a = &ip->st.a;
+    if (a->caps[INTERP_CAP_SCISSOR_TEST]) {
+        interp_note(ip, DIAG_NOTE_SCISSOR); /* a partial clear: keep what is drawn */
+        return;
+    }
+    /* Everything drawn so far is gone; the next draw fixes the camera anew. */
+    scene_clear_geometry(ip->scene);
+    ip->camera_fixed = false;
+    ip->cleared = true;
+    for (int i = 0; i < 4; i++)
+        ip->scene->background[i] = a->color_buffer.clear[i];
+}
+
+/* ---- Shading, faces, sizes ------------------------------------------------------ */
+
+void interp_shademodel(interp *ip, const rgl_cmd *cmd)
+{
+    GLenum m = arg_enum(cmd, 0);
+    if (m != GL_FLAT && m != GL_SMOOTH) {
+        interp_bad_enum(ip, "shade model", m);
+        return;
+    }
+    ip->st.a.lighting.shade_model = m;
+}
+
+void interp_frontface(interp *ip, const rgl_cmd *cmd)
+{
+    GLenum m = arg_enum(cmd, 0);
+    if (m != GL_CW && m != GL_CCW) {
+        interp_bad_enum(ip, "front face", m);
+        return;
+    }
+    ip->st.a.polygon.front_face = m;
+}
+
+static bool is_face(GLenum f) { return f == GL_FRONT || f == GL_BACK || f == GL_FRONT_AND_BACK; }
+
+void interp_cullface(interp *ip, const rgl_cmd *cmd)
+{
+    GLenum m = arg_enum(cmd, 0);
+    if (!is_face(m)) {
+        interp_bad_enum(ip, "cull face", m);
+        return;
+    }
+    ip->st.a.polygon.cull_mode = m;
+}
+
+void interp_polygonmode(interp *ip, const rgl_cmd *cmd)
+{
+    GLenum face = arg_enum(cmd, 0), mode = arg_enum(cmd, 1);
+    if (!is_face(face)) {
+        interp_bad_enum(ip, "face", face);
+        return;
+    }
+    if (mode != GL_POINT && mode != GL_LINE && mode != GL_FILL) {
+        interp_bad_enum(ip, "polygon mode", mode);
+        return;
+    }
+    if (face != GL_BACK)
+        ip->st.a.polygon.mode[0] = mode;
+    if (face != GL_FRONT)
+        ip->st.a.polygon.mode[1] = mode;
+}
+
+void interp_pointsize(interp *ip, const rgl_cmd *cmd)
+{
+    double v = arg_num(&cmd->arg[0]);
+    if (!(v > 0) || !isfinite(v)) {
+        interp_bad_value(ip, "point size not positive");
+        return;
+    }
+    ip->st.a.point.size = (float)fmin(v, 1024); /* Mesa's largest point */
+}
+
+void interp_linewidth(interp *ip, const rgl_cmd *cmd)
+{
+    double v = arg_num(&cmd->arg[0]);
+    if (!(v > 0) || !isfinite(v)) {
+        interp_bad_value(ip, "line width not positive");
+        return;
+    }
+    ip->st.a.line.width = (float)fmin(v, 1024);
+}
+
+void interp_polygonoffset(interp *ip, const rgl_cmd *cmd)
+{
+    ip->st.a.polygon.offset_factor = (float)arg_num(&cmd->arg[0]);
+    ip->st.a.polygon.offset_units = (float)arg_num(&cmd->arg[1]);
+}
+
+/* ---- Per-fragment state (issue 4 translates blending and alpha) ---------------- */
+
+static bool is_compare(GLenum f) { return f >= GL_NEVER && f <= GL_ALWAYS; }
+
+static bool is_blend_factor(GLenum f)
+{
+    switch (f) {
+    case GL_ZERO: case GL_ONE: case GL_SRC_COLOR: case GL_ONE_MINUS_SRC_COLOR:
+    case GL_DST_COLOR: case GL_ONE_MINUS_DST_COLOR: case GL_SRC_ALPHA:
+    case GL_ONE_MINUS_SRC_ALPHA: case GL_DST_ALPHA: case GL_ONE_MINUS_DST_ALPHA:
+    case GL_SRC_ALPHA_SATURATE: case GL_CONSTANT_COLOR: case GL_ONE_MINUS_CONSTANT_COLOR:
+    case GL_CONSTANT_ALPHA: case GL_ONE_MINUS_CONSTANT_ALPHA:
+        return true;
+    default:
+        return false;
+    }
+}
+
+void interp_blendfunc(interp *ip, const rgl_cmd *cmd)
+{
+    GLenum s = arg_enum(cmd, 0), d = arg_enum(cmd, 1);
+    if (!is_blend_factor(s) || !is_blend_factor(d)) {
+        interp_bad_enum(ip, "blend factor", is_blend_factor(s) ? d : s);
+        return;
+    }
+    ip->st.a.color_buffer.blend_src = s;
+    ip->st.a.color_buffer.blend_dst = d;
+}
+
+void interp_alphafunc(interp *ip, const rgl_cmd *cmd)
+{
+    GLenum f = arg_enum(cmd, 0);
+    if (!is_compare(f)) {
+        interp_bad_enum(ip, "alpha function", f);
+        return;
+    }
+    ip->st.a.color_buffer.alpha_func = f;
+    ip->st.a.color_buffer.alpha_ref = clamp01((float)arg_num(&cmd->arg[1]));
+}
+
+void interp_depthfunc(interp *ip, const rgl_cmd *cmd)
+{
+    GLenum f = arg_enum(cmd, 0);
+    if (!is_compare(f)) {
+        interp_bad_enum(ip, "depth function", f);
+        return;
+    }
+    ip->st.a.depth.func = f;
+}
+
+void interp_depthmask(interp *ip, const rgl_cmd *cmd)
+{
+    ip->st.a.depth.mask = cmd->arg[0].v.u != 0;
+}
+
+void interp_colormask(interp *ip, const rgl_cmd *cmd)
+{
+    for (int i = 0; i < 4; i++)
+        ip->st.a.color_buffer.mask[i] = cmd->arg[i].v.u != 0;
+}

@@ -1,0 +1,869 @@
+/* main.c: raygl2pov, the command line.
+ *
+ *   raygl2pov TRACE -o DIR [--frames A-B[,C...]] [-j N] [--dump] [--quiet]
+ *
+ * Workers (one translator each) take the selected frames in file order and
+ * write each scene to a temporary file in DIR; the main thread then takes
+ * the results in frame order: it prints their diagnostics, picks the final
+ * names, writes the .ini and renames both files into place. So the output
+ * and the messages do not depend on -j, and an interrupted or failed run
+ * leaves no half-written scene under a final name.
+ *
+ * Messages: "raygl2pov: TRACE: frame 12, cmd 1234 (glLightfv) @0x1f0: ...".
+ * Exit status: 0 success, 1 bad input (damaged trace, unwritable output),
+ * 2 bad usage.
+ */
+#include <errno.h>
+#include <fcntl.h>
+#include <inttypes.h>
+#include <locale.h>
+#include <pthread.h>
+#include <stdarg.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "diag.h"
+#include "format.h"
+#include "frame.h"
+#include "outbuf.h"
+#include "povwrite.h"
+#include "talloc.h"
+
+#ifndef RAYGL_VERSION
+#define RAYGL_VERSION "unknown"
+#endif
+
+#define PROG "raygl2pov"
+#define EXIT_INPUT 1
+#define EXIT_USAGE 2
+#define MAX_JOBS 256
+#define NAME_MAX_STEM 100
+
+/* ---- Options ---------------------------------------------------------------- */
+
+typedef struct range {
+    uint64_t first, last; /* inclusive; last = UINT64_MAX for "A-" */
+} range;
+
+typedef struct options {
+    const char *trace;
+    const char *outdir;
+    range *ranges;
+    size_t nranges;
+    int jobs;
+    bool dump, quiet;
+} options;
+
+static void usage_error(const char *fmt, ...)
+{
+    va_list ap;
+    fputs(PROG ": ", stderr);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputs("\nTry '" PROG " --help' for more information.\n", stderr);
+    exit(EXIT_USAGE);
+}
+
+static void print_help(void)
+{
+    fputs("Usage: " PROG " TRACE -o DIR [OPTION]...\n"
+          "Translate a RayGL trace into POV-Ray 3.7 scenes that reproduce the OpenGL\n"
+          "frames: DIR/frame-00000.pov and DIR/frame-00000.ini for the first frame, and\n"
+          "so on (a frame started by rayglFrameBegin(\"name.pov\", ...) is written as\n"
+          "DIR/name.pov). Render a frame with:  povray DIR/frame-00000.ini\n"
+          "\n"
+          "  -o, --output DIR     write the scenes into DIR (created when missing)\n"
+          "      --frames LIST    translate only these frames, numbered in file order\n"
+          "                       from 0: a comma-separated list of N, A-B and A-\n"
+          "  -j, --jobs N         translate N frames at once (default: one per core)\n"
+          "      --dump           print every frame and command of the trace on\n"
+          "                       standard output (with -o, translate as well)\n"
+          "  -q, --quiet          print errors only\n"
+          "  -h, --help           print this help and exit\n"
+          "  -V, --version        print the version and exit\n"
+          "\n"
+          "Exit status: 0 on success, 1 when the trace is damaged (every intact frame\n"
+          "is still written) or the output cannot be written, 2 on bad usage.\n",
+          stdout);
+}
+
+static bool parse_u64(const char *s, const char **end, uint64_t *out)
+{
+    uint64_t v = 0;
+    if (*s < '0' || *s > '9')
+        return false;
+    for (; *s >= '0' && *s <= '9'; s++) {
+        if (v > (UINT64_MAX - 9) / 10)
+            return false;
+        v = v * 10 + (uint64_t)(*s - '0');
+    }
+    *end = s;
+    *out = v;
+    return true;
+}
+
+static void parse_frames(options *o, const char *spec)
+{
+    const char *p = spec;
+    while (*p) {
+        range r;
+        const char *e;
+        if (!parse_u64(p, &e, &r.first))
+            usage_error("--frames '%s': expected a frame number at '%s'", spec, p);
+        r.last = r.first;
+        p = e;
+        if (*p == '-') {
+            p++;
+            if (*p == ',' || *p == '\0')
+                r.last = UINT64_MAX;
+            else if (!parse_u64(p, &e, &r.last))
+                usage_error("--frames '%s': expected a frame number at '%s'", spec, p);
+            else
+                p = e;
+            if (r.last < r.first)
+                usage_error("--frames '%s': range %" PRIu64 "-%" PRIu64 " runs backwards", spec,
+                            r.first, r.last);
+        }
+        if (*p == ',')
+            p++;
+        else if (*p)
+            usage_error("--frames '%s': unexpected '%c'", spec, *p);
+        range *n = tr_realloc(o->ranges, (o->nranges + 1) * sizeof *n);
+        if (!n) {
+            fputs(PROG ": out of memory\n", stderr);
+            exit(EXIT_INPUT);
+        }
+        o->ranges = n;
+        o->ranges[o->nranges++] = r;
+    }
+    if (o->nranges == 0)
+        usage_error("--frames: empty list");
+}
+
+static void parse_jobs(options *o, const char *s)
+{
+    const char *e;
+    uint64_t v;
+    if (!parse_u64(s, &e, &v) || *e || v < 1 || v > MAX_JOBS)
+        usage_error("-j '%s': expected a number of jobs from 1 to %d", s, MAX_JOBS);
+    o->jobs = (int)v;
+}
+
+/* The value of an option given as "-o X", "-oX", "--output X" or
+ * "--output=X"; advances *i past it. */
+static const char *option_value(int argc, char **argv, int *i, const char *shortopt,
+                                const char *longopt)
+{
+    const char *a = argv[*i];
+    size_t sl = strlen(shortopt), ll = strlen(longopt);
+    if (shortopt[0] && strncmp(a, shortopt, sl) == 0 && a[sl])
+        return a + sl;
+    if (strncmp(a, longopt, ll) == 0 && a[ll] == '=')
+        return a + ll + 1;
+    if (*i + 1 >= argc)
+        usage_error("option '%s' needs a value", a);
+    return argv[++*i];
+}
+
+static bool is_opt(const char *a, const char *shortopt, const char *longopt)
+{
+    size_t sl = strlen(shortopt), ll = strlen(longopt);
+    if (shortopt[0] && strncmp(a, shortopt, sl) == 0)
+        return true;
+    return strcmp(a, longopt) == 0 || (strncmp(a, longopt, ll) == 0 && a[ll] == '=');
+}
+
+static void parse_args(int argc, char **argv, options *o)
+{
+    memset(o, 0, sizeof *o);
+    bool only_args = false;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (only_args || a[0] != '-' || strcmp(a, "-") == 0) {
+            if (o->trace)
+                usage_error("more than one trace given ('%s' and '%s')", o->trace, a);
+            o->trace = a;
+        } else if (strcmp(a, "--") == 0) {
+            only_args = true;
+        } else if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
+            print_help();
+            exit(0);
+        } else if (strcmp(a, "-V") == 0 || strcmp(a, "--version") == 0) {
+            printf(PROG " " RAYGL_VERSION " (trace format %d.%d)\n", RGL_FORMAT_MAJOR,
+                   RGL_FORMAT_MINOR);
+            exit(0);
+        } else if (strcmp(a, "--dump") == 0) {
+            o->dump = true;
+        } else if (strcmp(a, "-q") == 0 || strcmp(a, "--quiet") == 0) {
+            o->quiet = true;
+        } else if (is_opt(a, "-o", "--output")) {
+            o->outdir = option_value(argc, argv, &i, "-o", "--output");
+        } else if (is_opt(a, "-j", "--jobs")) {
+            parse_jobs(o, option_value(argc, argv, &i, "-j", "--jobs"));
+        } else if (is_opt(a, "", "--frames")) {
+            parse_frames(o, option_value(argc, argv, &i, "", "--frames"));
+        } else {
+            usage_error("unknown option '%s'", a);
+        }
+    }
+    if (!o->trace)
+        usage_error("no trace given");
+    if (!o->outdir && !o->dump)
+        usage_error("no output folder given (-o DIR)");
+    if (o->outdir && !*o->outdir)
+        usage_error("empty output folder name");
+    if (o->outdir && !pov_ini_path_ok(o->outdir))
+        usage_error("output folder '%s': a double quote or control character cannot be "
+                    "written into POV-Ray's .ini", o->outdir);
+    if (o->jobs == 0) {
+        long n = sysconf(_SC_NPROCESSORS_ONLN);
+        o->jobs = n < 1 ? 1 : (n > MAX_JOBS ? MAX_JOBS : (int)n);
+    }
+}
+
+static bool selected(const options *o, uint64_t i)
+{
+    if (o->nranges == 0)
+        return true;
+    for (size_t k = 0; k < o->nranges; k++)
+        if (i >= o->ranges[k].first && i <= o->ranges[k].last)
+            return true;
+    return false;
+}
+
+/* ---- Messages ---------------------------------------------------------------- */
+
+static bool progress_shown;
+
+static void clear_progress(void)
+{
+    if (progress_shown) {
+        fputs("\r\033[K", stderr);
+        progress_shown = false;
+    }
+}
+
+#if defined(__GNUC__)
+__attribute__((format(printf, 2, 3)))
+#endif
+static void say(const options *o, const char *fmt, ...)
+{
+    va_list ap;
+    clear_progress();
+    fprintf(stderr, PROG ": %s: ", o->trace);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+}
+
+/* "@0x1f0: truncated: detail", with the command when the error names one. */
+static void say_decode_error(const options *o, const char *where, const rgl_error *e)
+{
+    const rgl_cmd_info *info = e->opcode ? rgl_cmd_info_get(e->opcode) : NULL;
+    char cmdpart[96] = "";
+    if (info)
+        snprintf(cmdpart, sizeof cmdpart, ", cmd %" PRIu64 " (%s)", e->cmd_index, info->name);
+    say(o, "%s%s @0x%" PRIx64 ": %s%s%s", where, cmdpart, e->offset, rgl_status_str(e->status),
+        e->detail[0] ? ": " : "", e->detail);
+}
+
+/* ---- Names and files -------------------------------------------------------------- */
+
+/* A file stem for rayglFrameBegin's name: its last path component, without
+ * ".pov", reduced to [A-Za-z0-9._-] and never starting with a dot, so it
+ * always names a plain file inside the output folder. Empty when nothing
+ * usable is left. */
+static void sanitize_stem(const char *name, char *out, size_t cap)
+{
+    const char *base = name;
+    for (const char *p = name; *p; p++)
+        if (*p == '/' || *p == '\\')
+            base = p + 1;
+    size_t n = strlen(base);
+    if (n >= 4 && strcmp(base + n - 4, ".pov") == 0)
+        n -= 4;
+    size_t k = 0;
+    for (size_t i = 0; i < n && k + 1 < cap && k < NAME_MAX_STEM; i++) {
+        char c = base[i];
+        bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                  c == '_' || c == '-' || c == '.';
+        out[k++] = ok ? c : '_';
+    }
+    out[k] = '\0';
+    if (out[0] == '.')
+        out[0] = '_';
+}
+
+static char *join_path(const char *dir, const char *file)
+{
+    size_t dl = strlen(dir), fl = strlen(file);
+    bool slash = dl > 0 && dir[dl - 1] == '/';
+    char *p = tr_realloc(NULL, dl + fl + 2);
+    if (!p)
+        return NULL;
+    memcpy(p, dir, dl);
+    if (!slash)
+        p[dl++] = '/';
+    memcpy(p + dl, file, fl + 1);
+    return p;
+}
+
+/* mkdir -p. Returns 0, or -1 with errno. */
+static int make_dirs(const char *path)
+{
+    char *p = tr_realloc(NULL, strlen(path) + 1);
+    if (!p)
+        return -1;
+    strcpy(p, path);
+    for (char *s = p + 1; *s; s++) {
+        if (*s != '/')
+            continue;
+        *s = '\0';
+        if (mkdir(p, 0777) != 0 && errno != EEXIST) {
+            int e = errno;
+            tr_free(p);
+            errno = e;
+            return -1;
+        }
+        *s = '/';
+    }
+    int rc = mkdir(p, 0777);
+    int e = errno;
+    tr_free(p);
+    if (rc != 0 && e != EEXIST) {
+        errno = e;
+        return -1;
+    }
+    struct stat st;
+    if (stat(path, &st) != 0)
+        return -1;
+    if (!S_ISDIR(st.st_mode)) {
+        errno = ENOTDIR;
+        return -1;
+    }
+    return 0;
+}
+
+static int fd_flush(void *user, const char *data, size_t n)
+{
+    int fd = *(int *)user;
+    while (n > 0) {
+        ssize_t w = write(fd, data, n);
+        if (w < 0) {
+            if (errno == EINTR)
+                continue;
+            return -1;
+        }
+        data += w;
+        n -= (size_t)w;
+    }
+    return 0;
+}
+
+/* Temporary file names: hidden, per process and per frame slot. */
+static char *temp_path(const char *dir, size_t slot, const char *ext)
+{
+    char name[96];
+    snprintf(name, sizeof name, ".raygl2pov-%ld-%zu%s.tmp", (long)getpid(), slot, ext);
+    return join_path(dir, name);
+}
+
+/* ---- The work ----------------------------------------------------------------------- */
+
+typedef struct slot {
+    size_t frame;       /* index in the file */
+    atomic_int done;    /* the worker finished with it */
+    rgl_status status;  /* translation */
+    rgl_error error;
+    rgl_frame_info info;
+    diag_log *log;
+    char *frame_name;   /* rayglFrameBegin's, or NULL */
+    int width, height;
+    int write_errno;    /* writing the temporary .pov failed */
+} slot;
+
+typedef struct job {
+    const options *o;
+    rgl_reader *reader;
+    pthread_mutex_t reader_lock;
+    slot *slots;
+    size_t nslots;
+    atomic_size_t next;
+    atomic_int abort;
+    pthread_mutex_t done_lock;
+    pthread_cond_t done_cond;
+} job;
+
+static void finish_slot(job *j, slot *s)
+{
+    pthread_mutex_lock(&j->done_lock);
+    atomic_store(&s->done, 1);
+    pthread_cond_broadcast(&j->done_cond);
+    pthread_mutex_unlock(&j->done_lock);
+}
+
+/* Writes the scene to the slot's temporary file. */
+static void write_temp(job *j, translator *t, size_t k, slot *s, outbuf *ob)
+{
+    char *path = temp_path(j->o->outdir, k, ".pov");
+    if (!path) {
+        s->write_errno = ENOMEM;
+        return;
+    }
+    int fd = open(path, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0) {
+        s->write_errno = errno;
+        tr_free(path);
+        return;
+    }
+    char fname[NAME_MAX_STEM + 32];
+    if (s->frame_name) {
+        char stem[NAME_MAX_STEM + 1];
+        sanitize_stem(s->frame_name, stem, sizeof stem);
+        snprintf(fname, sizeof fname, "%s.pov", stem[0] ? stem : "frame");
+    } else {
+        snprintf(fname, sizeof fname, "frame-%05zu.pov", s->frame);
+    }
+    pov_frame_info info = {fname, j->o->trace, s->frame, s->info.stream, s->info.number,
+                           s->frame_name};
+    ob->len = 0;
+    ob->failed = false;
+    ob->user = &fd;
+    errno = 0;
+    int rc = translator_write_pov(t, ob, &info);
+    if (rc == 0)
+        rc = outbuf_flush(ob);
+    int e = errno ? errno : ENOMEM;
+    if (close(fd) != 0 && rc == 0) {
+        rc = -1;
+        e = errno;
+    }
+    if (rc != 0) {
+        s->write_errno = e;
+        unlink(path);
+    }
+    tr_free(path);
+}
+
+static void *worker(void *arg)
+{
+    job *j = arg;
+    translator *t = translator_create(j->reader, &j->reader_lock);
+    outbuf ob;
+    bool ob_ok = outbuf_init(&ob, 1 << 20, fd_flush, NULL) == 0;
+    for (;;) {
+        size_t k = atomic_fetch_add(&j->next, 1);
+        if (k >= j->nslots)
+            break;
+        slot *s = &j->slots[k];
+        if (atomic_load(&j->abort) || !t || !ob_ok) {
+            s->status = RGL_E_NOMEM;
+            finish_slot(j, s);
+            continue;
+        }
+        s->log = tr_realloc(NULL, sizeof *s->log);
+        if (s->log)
+            diag_clear(s->log);
+        frame_result res;
+        s->status = translator_build(t, s->frame, j->o->quiet ? NULL : s->log, &res);
+        s->error = res.error;
+        s->info = res.info;
+        if (res.frame_name) {
+            s->frame_name = tr_realloc(NULL, strlen(res.frame_name) + 1);
+            if (s->frame_name)
+                strcpy(s->frame_name, res.frame_name);
+        }
+        const scene *sc = translator_scene(t);
+        s->width = sc->camera.width;
+        s->height = sc->camera.height;
+        if (s->status == RGL_OK && j->o->outdir)
+            write_temp(j, t, k, s, &ob);
+        finish_slot(j, s);
+    }
+    outbuf_finish(&ob);
+    translator_destroy(t);
+    return NULL;
+}
+
+/* ---- The main thread's side ------------------------------------------------------------ */
+
+typedef struct names {
+    char **v;
+    size_t n, cap;
+} names;
+
+static bool name_used(const names *u, const char *s)
+{
+    for (size_t i = 0; i < u->n; i++)
+        if (strcmp(u->v[i], s) == 0)
+            return true;
+    return false;
+}
+
+static void name_add(names *u, const char *s)
+{
+    if (tr_grow((void **)&u->v, &u->cap, u->n + 1, sizeof *u->v) != 0)
+        return;
+    char *c = tr_realloc(NULL, strlen(s) + 1);
+    if (!c)
+        return;
+    strcpy(c, s);
+    u->v[u->n++] = c;
+}
+
+typedef struct totals {
+    diag_log log;      /* counts of everything; the messages already printed */
+    uint64_t printed[DIAG_COUNT];
+    int status;        /* exit status so far */
+    size_t written;
+} totals;
+
+static void print_diags(const options *o, totals *tot, const diag_log *log)
+{
+    for (int k = 0; k < DIAG_COUNT; k++) {
+        const diag_entry *e = &log->e[k];
+        tot->log.e[k].count += e->count;
+        for (uint32_t m = 0; m < e->kept; m++) {
+            bool note = diag_is_note((diag_kind)k);
+            if ((note && tot->printed[k] >= 1) || (!note && tot->printed[k] >= DIAG_KEEP))
+                break;
+            say(o, "%s", e->text[m]);
+            tot->printed[k]++;
+        }
+    }
+}
+
+/* Writes the .ini of slot k and renames both files into place. */
+static void publish(const options *o, totals *tot, names *used, size_t k, slot *s)
+{
+    /* Stems are at most NAME_MAX_STEM bytes, suffixes at most 32. */
+    char stem[NAME_MAX_STEM + 64];
+    if (s->frame_name) {
+        sanitize_stem(s->frame_name, stem, NAME_MAX_STEM + 1);
+        if (!stem[0])
+            snprintf(stem, sizeof stem, "frame-%05zu", s->frame);
+    } else {
+        snprintf(stem, sizeof stem, "frame-%05zu", s->frame);
+    }
+    if (name_used(used, stem)) {
+        char base[NAME_MAX_STEM + 1];
+        size_t bl = strnlen(stem, NAME_MAX_STEM);
+        memcpy(base, stem, bl);
+        base[bl] = '\0';
+        snprintf(stem, sizeof stem, "%s-%05zu", base, s->frame);
+        for (int n = 2; name_used(used, stem); n++)
+            snprintf(stem, sizeof stem, "%s-%05zu-%d", base, s->frame, n);
+        if (!o->quiet)
+            say(o, "frame %zu: %s.pov is taken by an earlier frame; writing %s.pov", s->frame,
+                base, stem);
+    }
+    name_add(used, stem);
+
+    char pov[sizeof stem + 8], ini[sizeof stem + 8], png[sizeof stem + 8];
+    snprintf(pov, sizeof pov, "%s.pov", stem);
+    snprintf(ini, sizeof ini, "%s.ini", stem);
+    snprintf(png, sizeof png, "%s.png", stem);
+    char *tmp_pov = temp_path(o->outdir, k, ".pov"), *tmp_ini = temp_path(o->outdir, k, ".ini");
+    char *fin_pov = join_path(o->outdir, pov), *fin_ini = join_path(o->outdir, ini);
+    if (!tmp_pov || !tmp_ini || !fin_pov || !fin_ini) {
+        say(o, "frame %zu: out of memory", s->frame);
+        tot->status = EXIT_INPUT;
+        goto done;
+    }
+
+    scene dims;
+    memset(&dims, 0, sizeof dims);
+    dims.camera.width = s->width;
+    dims.camera.height = s->height;
+    outbuf ob;
+    int fd = open(tmp_ini, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0) {
+        say(o, "%s: cannot create: %s", tmp_ini, strerror(errno));
+        tot->status = EXIT_INPUT;
+        unlink(tmp_pov);
+        goto done;
+    }
+    int rc = outbuf_init(&ob, 4096, fd_flush, &fd);
+    errno = 0;
+    if (rc == 0)
+        rc = pov_write_ini(&ob, &dims, o->outdir, pov, png);
+    if (rc == 0)
+        rc = outbuf_flush(&ob);
+    int e = errno ? errno : EIO;
+    outbuf_finish(&ob);
+    if (close(fd) != 0 && rc == 0) {
+        rc = -1;
+        e = errno;
+    }
+    if (rc != 0 || rename(tmp_pov, fin_pov) != 0 || rename(tmp_ini, fin_ini) != 0) {
+        if (rc == 0)
+            e = errno;
+        say(o, "%s: cannot write: %s", fin_pov, strerror(e));
+        unlink(tmp_pov);
+        unlink(tmp_ini);
+        tot->status = EXIT_INPUT;
+        goto done;
+    }
+    tot->written++;
+done:
+    tr_free(tmp_pov);
+    tr_free(tmp_ini);
+    tr_free(fin_pov);
+    tr_free(fin_ini);
+}
+
+static void progress(const options *o, size_t done, size_t total)
+{
+    if (o->quiet || total < 2 || !isatty(STDERR_FILENO))
+        return;
+    fprintf(stderr, "\r" PROG ": %zu of %zu frames", done, total);
+    progress_shown = true;
+}
+
+static void print_summary(const options *o, const totals *tot)
+{
+    if (o->quiet)
+        return;
+    for (int k = 0; k < DIAG_FIRST_NOTE; k++) {
+        uint64_t n = tot->log.e[k].count;
+        if (n > tot->printed[k])
+            say(o, "%" PRIu64 " calls skipped in all (%s), %" PRIu64 " shown", n,
+                diag_kind_name((diag_kind)k), tot->printed[k]);
+    }
+}
+
+/* ---- --dump ---------------------------------------------------------------------------- */
+
+static bool dump_sequence(const options *o, const uint8_t *data, size_t size, uint64_t off,
+                          const char *indent, const char *where)
+{
+    rgl_cmd_iter it;
+    rgl_cmd cmd;
+    rgl_status st;
+    char line[16384];
+    rgl_cmd_iter_init(&it, data, size, off);
+    while ((st = rgl_cmd_next(&it, &cmd)) == RGL_OK) {
+        rgl_cmd_format(&cmd, line, sizeof line);
+        printf("%s%" PRIu64 " @0x%" PRIx64 " %s\n", indent, cmd.index, cmd.offset, line);
+    }
+    if (st == RGL_END)
+        return true;
+    printf("%s<damaged: %s>\n", indent, rgl_status_str(st));
+    say_decode_error(o, where, &it.error);
+    return false;
+}
+
+static int dump(const options *o, rgl_reader *r)
+{
+    int status = 0;
+    size_t isz;
+    const char *info = rgl_reader_info(r, &isz);
+    if (info) {
+        printf("# info:\n");
+        const char *p = info, *end = info + isz;
+        while (p < end) {
+            const char *nl = memchr(p, '\n', (size_t)(end - p));
+            size_t len = nl ? (size_t)(nl - p) : (size_t)(end - p);
+            printf("#   %.*s\n", (int)len, p);
+            p += len + (nl ? 1 : 0);
+        }
+    }
+    for (size_t i = 0; i < rgl_reader_frame_count(r); i++) {
+        if (!selected(o, i))
+            continue;
+        rgl_frame_info fi;
+        rgl_error err;
+        char where[64];
+        snprintf(where, sizeof where, "frame %zu", i);
+        if (rgl_reader_frame(r, i, &fi, &err) != RGL_OK) {
+            printf("frame %zu: <damaged: %s>\n", i, rgl_status_str(err.status));
+            say_decode_error(o, where, &err);
+            status = EXIT_INPUT;
+            continue;
+        }
+        printf("frame %zu: stream %u, number %u, flags 0x%x%s%s, snapshot ", i, fi.stream,
+               fi.number, fi.flags, fi.flags & RGL_FRAME_LIVE_CONTEXT ? " live-context" : "",
+               fi.flags & RGL_FRAME_STATE_CARRIED ? " state-carried" : "");
+        if (fi.state)
+            printf("#%u", fi.state);
+        else
+            printf("none");
+        printf(", @0x%" PRIx64 ", %zu bytes of commands\n", fi.offset, fi.commands_size);
+        if (fi.state) {
+            rgl_resource res;
+            if (rgl_reader_resource(r, fi.state, &res, &err) != RGL_OK) {
+                printf("  snapshot #%u: <damaged: %s>\n", fi.state, rgl_status_str(err.status));
+                say_decode_error(o, where, &err);
+                status = EXIT_INPUT;
+            } else {
+                printf("  snapshot #%u: @0x%" PRIx64 ", %zu bytes\n", fi.state, res.data_offset,
+                       res.size);
+                char w2[96];
+                snprintf(w2, sizeof w2, "frame %zu, snapshot #%u", i, fi.state);
+                if (res.kind == RGL_RES_COMMANDS &&
+                    !dump_sequence(o, res.data, res.size, res.data_offset, "    ", w2))
+                    status = EXIT_INPUT;
+            }
+        }
+        if (!dump_sequence(o, fi.commands, fi.commands_size, fi.commands_offset, "  ", where))
+            status = EXIT_INPUT;
+    }
+    fflush(stdout);
+    return status;
+}
+
+/* ---- main -------------------------------------------------------------------------------- */
+
+int main(int argc, char **argv)
+{
+    /* The user's locale for messages only: every number in the output is
+     * formatted by numfmt, which never reads it. */
+    setlocale(LC_ALL, "");
+    options o;
+    parse_args(argc, argv, &o);
+
+    rgl_reader *reader = NULL;
+    rgl_error err;
+    memset(&err, 0, sizeof err);
+    rgl_status st = rgl_reader_open_file(o.trace, &reader, &err);
+    if (st != RGL_OK) {
+        if (st == RGL_E_IO)
+            say(&o, "cannot read: %s", strerror(errno));
+        else
+            say_decode_error(&o, "not readable", &err);
+        return EXIT_INPUT;
+    }
+    totals tot;
+    memset(&tot, 0, sizeof tot);
+    for (size_t i = 0; i < rgl_reader_damage_count(reader); i++) {
+        const rgl_error *d = rgl_reader_damage(reader, i);
+        say(&o, "damaged region @0x%" PRIx64 ": %s%s%s", d->offset, rgl_status_str(d->status),
+            d->detail[0] ? ": " : "", d->detail);
+        tot.status = EXIT_INPUT;
+    }
+    if (o.dump && dump(&o, reader) != 0)
+        tot.status = EXIT_INPUT;
+    if (!o.outdir) {
+        rgl_reader_destroy(reader);
+        tr_free(o.ranges);
+        return tot.status;
+    }
+
+    size_t nframes = rgl_reader_frame_count(reader);
+    job j;
+    memset(&j, 0, sizeof j);
+    j.o = &o;
+    j.reader = reader;
+    for (size_t i = 0; i < nframes; i++)
+        if (selected(&o, i))
+            j.nslots++;
+    if (j.nslots == 0) {
+        if (o.nranges)
+            say(&o, "--frames selects none of the %zu frames", nframes);
+        else
+            say(&o, "no frames to translate");
+        rgl_reader_destroy(reader);
+        tr_free(o.ranges);
+        return EXIT_INPUT;
+    }
+    if (make_dirs(o.outdir) != 0) {
+        fprintf(stderr, PROG ": %s: cannot create the output folder: %s\n", o.outdir,
+                strerror(errno));
+        rgl_reader_destroy(reader);
+        tr_free(o.ranges);
+        return EXIT_INPUT;
+    }
+    j.slots = tr_realloc(NULL, j.nslots * sizeof *j.slots);
+    if (!j.slots) {
+        say(&o, "out of memory");
+        rgl_reader_destroy(reader);
+        return EXIT_INPUT;
+    }
+    memset(j.slots, 0, j.nslots * sizeof *j.slots);
+    for (size_t i = 0, k = 0; i < nframes; i++)
+        if (selected(&o, i))
+            j.slots[k++].frame = i;
+    pthread_mutex_init(&j.reader_lock, NULL);
+    pthread_mutex_init(&j.done_lock, NULL);
+    pthread_cond_init(&j.done_cond, NULL);
+
+    int nthreads = o.jobs < (int)j.nslots ? o.jobs : (int)j.nslots;
+    pthread_t threads[MAX_JOBS];
+    int started = 0;
+    for (; started < nthreads; started++)
+        if (pthread_create(&threads[started], NULL, worker, &j) != 0)
+            break;
+    if (started == 0)
+        worker(&j); /* no thread: do it here */
+
+    names used;
+    memset(&used, 0, sizeof used);
+    bool fatal = false;
+    for (size_t k = 0; k < j.nslots; k++) {
+        slot *s = &j.slots[k];
+        pthread_mutex_lock(&j.done_lock);
+        while (!atomic_load(&s->done))
+            pthread_cond_wait(&j.done_cond, &j.done_lock);
+        pthread_mutex_unlock(&j.done_lock);
+
+        if (s->log)
+            print_diags(&o, &tot, s->log);
+        if (fatal) {
+            /* Already stopped: drop what the workers still made. */
+        } else if (s->status != RGL_OK) {
+            char where[64];
+            snprintf(where, sizeof where, "frame %zu", s->frame);
+            if (s->status == RGL_E_NOMEM && atomic_load(&j.abort) == 0)
+                say(&o, "frame %zu: out of memory", s->frame);
+            else if (s->status != RGL_E_NOMEM)
+                say_decode_error(&o, where, &s->error);
+            tot.status = EXIT_INPUT;
+        } else if (s->write_errno) {
+            char *tmp = temp_path(o.outdir, k, ".pov");
+            fprintf(stderr, "%s" PROG ": %s: cannot write: %s\n", progress_shown ? "\r\033[K" : "",
+                    tmp ? tmp : o.outdir, strerror(s->write_errno));
+            progress_shown = false;
+            tr_free(tmp);
+            tot.status = EXIT_INPUT;
+            /* The folder is unusable (full, read-only): stop here. */
+            fatal = true;
+            atomic_store(&j.abort, 1);
+        } else {
+            publish(&o, &tot, &used, k, s);
+        }
+        if (fatal && s->status == RGL_OK && !s->write_errno) {
+            char *tmp = temp_path(o.outdir, k, ".pov");
+            if (tmp)
+                unlink(tmp);
+            tr_free(tmp);
+        }
+        tr_free(s->log);
+        s->log = NULL;
+        tr_free(s->frame_name);
+        s->frame_name = NULL;
+        progress(&o, k + 1, j.nslots);
+    }
+    for (int t = 0; t < started; t++)
+        pthread_join(threads[t], NULL);
+    clear_progress();
+    print_summary(&o, &tot);
+
+    for (size_t i = 0; i < used.n; i++)
+        tr_free(used.v[i]);
+    tr_free(used.v);
+    tr_free(j.slots);
+    tr_free(o.ranges);
+    pthread_cond_destroy(&j.done_cond);
+    pthread_mutex_destroy(&j.done_lock);
+    pthread_mutex_destroy(&j.reader_lock);
+    rgl_reader_destroy(reader);
+    if (fflush(stdout) != 0)
+        tot.status = EXIT_INPUT;
+    return tot.status;
+}

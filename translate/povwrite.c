@@ -1,0 +1,612 @@
+/* povwrite.c: scene model -> POV-Ray 3.7 SDL (povwrite.h).
+ *
+ * The file, in order: a header comment, #version, global_settings with
+ * assumed_gamma 2.2 (POV-Ray then does GL's arithmetic on the raw colour
+ * numbers, see docs/mapping.md "Gamma"), the camera, the background, one
+ * finish for unlit surfaces, then a union of everything drawn (eye space,
+ * clipped to GL's near and far planes), then the lights.
+ *
+ * Meshes become mesh2 with shared vertices: equal positions, normals and
+ * colours are written once (dedup.h). Per-vertex colours go through
+ * texture_list with three indices per face, flat faces take one. Faces are
+ * written (v0, v2, v1): POV-Ray then calls GL's front side the outside of
+ * the face, which keeps `texture` for GL_FRONT and `interior_texture` for
+ * GL_BACK. Degenerate faces, which POV-Ray would reject, are left out, as
+ * GL draws nothing for them.
+ */
+#include "povwrite.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "dedup.h"
+#include "talloc.h"
+
+#ifndef RAYGL_VERSION
+#define RAYGL_VERSION "unknown"
+#endif
+
+struct povwriter {
+    dedup pos, nrm, col;
+    uint32_t *remap; /* per pool vertex of the mesh: pos, nrm, col index */
+    size_t cap_remap;
+    uint32_t *faces; /* per kept face: 3 pos, 3 col, 3 nrm indices */
+    size_t cap_faces;
+};
+
+povwriter *povwriter_create(void)
+{
+    povwriter *w = tr_realloc(NULL, sizeof *w);
+    if (!w)
+        return NULL;
+    memset(w, 0, sizeof *w);
+    dedup_init(&w->pos, 3);
+    dedup_init(&w->nrm, 3);
+    dedup_init(&w->col, 4);
+    return w;
+}
+
+void povwriter_destroy(povwriter *w)
+{
+    if (!w)
+        return;
+    dedup_finish(&w->pos);
+    dedup_finish(&w->nrm);
+    dedup_finish(&w->col);
+    tr_free(w->remap);
+    tr_free(w->faces);
+    tr_free(w);
+}
+
+/* ---- Small writers ----------------------------------------------------------------- */
+
+static void put_vec3f(outbuf *ob, const float v[3])
+{
+    /* "<" x "," y "," z ">" in one reservation */
+    char *p = outbuf_room(ob, 3 * NUMFMT_F32_ROOM + 4);
+    if (!p)
+        return;
+    char *q = p;
+    *q++ = '<';
+    q += numfmt_f32(q, v[0]);
+    *q++ = ',';
+    q += numfmt_f32(q, v[1]);
+    *q++ = ',';
+    q += numfmt_f32(q, v[2]);
+    *q++ = '>';
+    outbuf_commit(ob, (size_t)(q - p));
+}
+
+static void put_vec3d(outbuf *ob, const double v[3])
+{
+    float f[3] = {(float)v[0], (float)v[1], (float)v[2]};
+    put_vec3f(ob, f);
+}
+
+static void put_rgb(outbuf *ob, const float c[4])
+{
+    outbuf_puts(ob, "rgb");
+    put_vec3f(ob, c);
+}
+
+/* A comment line's text: printable ASCII only, so no newline or other
+ * byte from a trace can end the comment and start SDL. */
+static void put_comment_text(outbuf *ob, const char *s)
+{
+    for (; s && *s; s++) {
+        unsigned char c = (unsigned char)*s;
+        outbuf_putc(ob, c >= 0x20 && c < 0x7f ? (char)c : '?');
+    }
+}
+
+static bool finite3f(const float v[3])
+{
+    return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]);
+}
+
+static bool finite3d(const double v[3])
+{
+    return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]);
+}
+
+/* The texture of an unlit surface of colour c: the pixel is c exactly
+ * (emission, with no ambient and no diffuse; docs/mapping.md). */
+static void put_unlit_texture(outbuf *ob, const float c[4])
+{
+    outbuf_puts(ob, "texture{pigment{");
+    put_rgb(ob, c);
+    outbuf_puts(ob, "}finish{RGL_U}}");
+}
+
+/* ---- Camera, background, lights ----------------------------------------------------- */
+
+static void write_camera(outbuf *ob, const scene_camera *c)
+{
+    const double *v[4] = {c->location, c->right, c->up, c->direction};
+    for (int i = 0; i < 4; i++)
+        if (!finite3d(v[i]))
+            return; /* the interpreter always supplies a finite camera */
+    outbuf_puts(ob, c->kind == SCENE_CAMERA_ORTHOGRAPHIC ? "camera{orthographic"
+                                                         : "camera{perspective");
+    outbuf_puts(ob, "\n location ");
+    put_vec3d(ob, c->location);
+    outbuf_puts(ob, "\n right ");
+    put_vec3d(ob, c->right);
+    outbuf_puts(ob, "\n up ");
+    put_vec3d(ob, c->up);
+    outbuf_puts(ob, "\n direction ");
+    put_vec3d(ob, c->direction);
+    outbuf_puts(ob, "\n}\n");
+}
+
+static void write_light(outbuf *ob, const scene_light *l)
+{
+    if (!finite3d(l->position) || !finite3d(l->point_at) || !finite3f(l->color))
+        return;
+    outbuf_puts(ob, "light_source{");
+    put_vec3d(ob, l->position);
+    outbuf_putc(ob, ' ');
+    float c[4] = {l->color[0], l->color[1], l->color[2], 1};
+    put_rgb(ob, c);
+    if (l->kind == SCENE_LIGHT_PARALLEL) {
+        outbuf_puts(ob, " parallel point_at");
+        put_vec3d(ob, l->point_at);
+    }
+    outbuf_puts(ob, "}\n");
+}
+
+/* ---- Meshes ------------------------------------------------------------------------ */
+
+#define UNSET UINT32_MAX
+#define BAD (UINT32_MAX - 1)
+
+static bool same_bits(const float *a, const float *b, size_t n)
+{
+    return memcmp(a, b, n * sizeof *a) == 0;
+}
+
+/* The mesh2 of one run. Returns -1 on memory failure. */
+static int write_mesh(povwriter *w, outbuf *ob, const scene *s, const scene_mesh *m)
+{
+    const scene_tri *tris = s->tris + m->first_tri;
+    bool normals = m->look.lit && !m->look.flat;
+    size_t nt = m->tri_count;
+    if (nt == 0 || !mat4_finite(&m->to_eye))
+        return 0;
+
+    /* Vertices of a run sit in one stretch of the pool. */
+    uint32_t lo = UINT32_MAX, hi = 0;
+    for (size_t i = 0; i < nt; i++)
+        for (int k = 0; k < 3; k++) {
+            uint32_t v = tris[i].v[k];
+            lo = v < lo ? v : lo;
+            hi = v > hi ? v : hi;
+        }
+    for (size_t i = 0; i < nt; i++) {
+        uint32_t v = tris[i].provoking;
+        lo = v < lo ? v : lo;
+        hi = v > hi ? v : hi;
+    }
+    size_t span = (size_t)hi - lo + 1;
+    if (tr_grow((void **)&w->remap, &w->cap_remap, span * 3, sizeof *w->remap) != 0 ||
+        tr_grow((void **)&w->faces, &w->cap_faces, nt * 9, sizeof *w->faces) != 0 ||
+        dedup_reset(&w->pos, span) != 0 || dedup_reset(&w->col, 64) != 0 ||
+        dedup_reset(&w->nrm, normals ? span : 16) != 0)
+        return -1;
+    memset(w->remap, 0xff, span * 3 * sizeof *w->remap); /* UNSET */
+
+    /* Pass 1: index every used vertex, keep the faces GL would draw. */
+    size_t kept = 0;
+    bool per_vertex_colour = false;
+    for (size_t i = 0; i < nt; i++) {
+        const scene_tri *t = &tris[i];
+        uint32_t *f = w->faces + kept * 9;
+        bool ok = true;
+        for (int k = 0; k < 3 && ok; k++) {
+            uint32_t v = t->v[k];
+            uint32_t *r = w->remap + (size_t)(v - lo) * 3;
+            const scene_vertex *sv = &s->verts[v];
+            if (r[0] == UNSET) {
+                if (!finite3f(sv->pos)) {
+                    r[0] = BAD;
+                } else {
+                    uint32_t key[3];
+                    float p[3] = {sv->pos[0] + 0.0f, sv->pos[1] + 0.0f, sv->pos[2] + 0.0f};
+                    memcpy(key, p, sizeof key); /* + 0 turns -0 into 0 */
+                    if ((r[0] = dedup_index(&w->pos, key)) == DEDUP_NONE)
+                        return -1;
+                }
+                uint32_t ckey[4];
+                memcpy(ckey, sv->color, sizeof ckey);
+                if ((r[2] = dedup_index(&w->col, ckey)) == DEDUP_NONE)
+                    return -1;
+                if (normals) {
+                    float n[3] = {sv->normal[0], sv->normal[1], sv->normal[2]};
+                    if (!finite3f(n) || (n[0] == 0 && n[1] == 0 && n[2] == 0)) {
+                        n[0] = n[1] = 0; /* POV-Ray normalises; a zero normal cannot be */
+                        n[2] = 1;
+                    }
+                    uint32_t nkey[3];
+                    n[0] += 0.0f, n[1] += 0.0f, n[2] += 0.0f;
+                    memcpy(nkey, n, sizeof nkey);
+                    if ((r[1] = dedup_index(&w->nrm, nkey)) == DEDUP_NONE)
+                        return -1;
+                }
+            }
+            if (r[0] == BAD)
+                ok = false;
+            f[k] = r[0];
+            f[3 + k] = r[2];
+            f[6 + k] = r[1];
+        }
+        if (!ok || f[0] == f[1] || f[1] == f[2] || f[0] == f[2])
+            continue;
+        /* Zero area (collinear): POV-Ray drops such faces with a warning. */
+        const float *a = s->verts[t->v[0]].pos, *b = s->verts[t->v[1]].pos,
+                    *c = s->verts[t->v[2]].pos;
+        double e1[3] = {(double)b[0] - a[0], (double)b[1] - a[1], (double)b[2] - a[2]};
+        double e2[3] = {(double)c[0] - a[0], (double)c[1] - a[1], (double)c[2] - a[2]};
+        double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2],
+               cz = e1[0] * e2[1] - e1[1] * e2[0];
+        if (cx == 0 && cy == 0 && cz == 0)
+            continue;
+        if (m->look.flat) {
+            /* One colour, the provoking vertex's. */
+            const scene_vertex *pv = &s->verts[t->provoking];
+            uint32_t ckey[4];
+            memcpy(ckey, pv->color, sizeof ckey);
+            uint32_t ci = dedup_index(&w->col, ckey);
+            if (ci == DEDUP_NONE)
+                return -1;
+            f[3] = f[4] = f[5] = ci;
+        } else if (f[3] != f[4] || f[4] != f[5]) {
+            per_vertex_colour = true;
+        }
+        kept++;
+    }
+    if (kept == 0)
+        return 0;
+    bool colour_list = w->col.count > 1;
+    (void)per_vertex_colour;
+
+    /* Pass 2: the text. */
+    outbuf_puts(ob, "mesh2{\nvertex_vectors{");
+    outbuf_u64(ob, w->pos.count);
+    for (size_t i = 0; i < w->pos.count; i++) {
+        outbuf_puts(ob, ",\n");
+        put_vec3f(ob, (const float *)(const void *)dedup_key(&w->pos, i));
+    }
+    outbuf_puts(ob, "}\n");
+    if (normals) {
+        outbuf_puts(ob, "normal_vectors{");
+        outbuf_u64(ob, w->nrm.count);
+        for (size_t i = 0; i < w->nrm.count; i++) {
+            outbuf_puts(ob, ",\n");
+            put_vec3f(ob, (const float *)(const void *)dedup_key(&w->nrm, i));
+        }
+        outbuf_puts(ob, "}\n");
+    }
+    if (colour_list) {
+        outbuf_puts(ob, "texture_list{");
+        outbuf_u64(ob, w->col.count);
+        for (size_t i = 0; i < w->col.count; i++) {
+            outbuf_puts(ob, ",\n");
+            put_unlit_texture(ob, (const float *)(const void *)dedup_key(&w->col, i));
+        }
+        outbuf_puts(ob, "}\n");
+    }
+    /* Faces as (v0, v2, v1): see the file comment. */
+    static const int order[3] = {0, 2, 1};
+    outbuf_puts(ob, "face_indices{");
+    outbuf_u64(ob, kept);
+    for (size_t i = 0; i < kept; i++) {
+        const uint32_t *f = w->faces + i * 9;
+        char *p = outbuf_room(ob, 8 * 12);
+        if (!p)
+            return -1;
+        char *q = p;
+        *q++ = ',';
+        *q++ = '\n';
+        *q++ = '<';
+        for (int k = 0; k < 3; k++) {
+            q += numfmt_u64(q, f[order[k]]);
+            *q++ = k < 2 ? ',' : '>';
+        }
+        if (colour_list) {
+            if (f[3] == f[4] && f[4] == f[5]) {
+                *q++ = ',';
+                q += numfmt_u64(q, f[3]);
+            } else {
+                for (int k = 0; k < 3; k++) {
+                    *q++ = ',';
+                    q += numfmt_u64(q, f[3 + order[k]]);
+                }
+            }
+        }
+        outbuf_commit(ob, (size_t)(q - p));
+    }
+    outbuf_puts(ob, "}\n");
+    if (normals) {
+        outbuf_puts(ob, "normal_indices{");
+        outbuf_u64(ob, kept);
+        for (size_t i = 0; i < kept; i++) {
+            const uint32_t *f = w->faces + i * 9 + 6;
+            char *p = outbuf_room(ob, 4 * 12);
+            if (!p)
+                return -1;
+            char *q = p;
+            *q++ = ',';
+            *q++ = '\n';
+            *q++ = '<';
+            for (int k = 0; k < 3; k++) {
+                q += numfmt_u64(q, f[order[k]]);
+                *q++ = k < 2 ? ',' : '>';
+            }
+            outbuf_commit(ob, (size_t)(q - p));
+        }
+        outbuf_puts(ob, "}\n");
+    }
+    if (!colour_list)
+        put_unlit_texture(ob, (const float *)(const void *)dedup_key(&w->col, 0));
+    if (!m->in_eye) {
+        const double *a = m->to_eye.m;
+        static const int idx[12] = {0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14};
+        mat4 id = mat4_identity();
+        if (!mat4_equal_f32(&m->to_eye, &id)) {
+            outbuf_puts(ob, "matrix<");
+            for (int i = 0; i < 12; i++) {
+                if (i)
+                    outbuf_putc(ob, ',');
+                outbuf_f32(ob, (float)a[idx[i]]);
+            }
+            outbuf_putc(ob, '>');
+        }
+    }
+    outbuf_puts(ob, "\n}\n");
+    return 0;
+}
+
+/* ---- Lines and points ---------------------------------------------------------------- */
+
+/* A unit vector perpendicular to d. */
+static void perpendicular(const double d[3], double out[3])
+{
+    double ax = fabs(d[0]), ay = fabs(d[1]), az = fabs(d[2]);
+    double t[3] = {0, 0, 0};
+    t[ax <= ay && ax <= az ? 0 : (ay <= az ? 1 : 2)] = 1;
+    out[0] = d[1] * t[2] - d[2] * t[1];
+    out[1] = d[2] * t[0] - d[0] * t[2];
+    out[2] = d[0] * t[1] - d[1] * t[0];
+    double l = sqrt(out[0] * out[0] + out[1] * out[1] + out[2] * out[2]);
+    for (int k = 0; k < 3; k++)
+        out[k] /= l;
+}
+
+static void write_line(outbuf *ob, const scene_line *l)
+{
+    const float *p0 = l->p[0], *p1 = l->p[1];
+    if (!finite3f(p0) || !finite3f(p1) || !(l->r[0] > 0) || !(l->r[1] > 0) ||
+        !isfinite(l->r[0]) || !isfinite(l->r[1]) || same_bits(p0, p1, 3))
+        return;
+    bool cyl = l->r[0] == l->r[1];
+    outbuf_puts(ob, cyl ? "cylinder{" : "cone{");
+    put_vec3f(ob, p0);
+    if (!cyl) {
+        outbuf_putc(ob, ',');
+        outbuf_f32(ob, l->r[0]);
+    }
+    outbuf_putc(ob, ',');
+    put_vec3f(ob, p1);
+    outbuf_putc(ob, ',');
+    outbuf_f32(ob, l->r[1]);
+    outbuf_putc(ob, ' ');
+    if (same_bits(l->color[0], l->color[1], 4)) {
+        put_unlit_texture(ob, l->color[0]);
+    } else {
+        /* Colour interpolated along the segment, as GL's smooth lines: a
+         * gradient whose 0..1 runs a little past both ends, so that the
+         * end caps do not wrap around to the other colour. */
+        double d[3], u[3], v[3], o[3];
+        for (int k = 0; k < 3; k++) {
+            d[k] = ((double)p1[k] - p0[k]) * 1.001;
+            o[k] = p0[k] - ((double)p1[k] - p0[k]) * 0.0005;
+        }
+        perpendicular(d, u);
+        v[0] = d[1] * u[2] - d[2] * u[1];
+        v[1] = d[2] * u[0] - d[0] * u[2];
+        v[2] = d[0] * u[1] - d[1] * u[0];
+        double vl = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        for (int k = 0; k < 3; k++)
+            v[k] /= vl;
+        outbuf_puts(ob, "texture{pigment{gradient x color_map{[0 ");
+        put_rgb(ob, l->color[0]);
+        outbuf_puts(ob, "][1 ");
+        put_rgb(ob, l->color[1]);
+        outbuf_puts(ob, "]}matrix<");
+        const double *rows[4] = {d, u, v, o};
+        for (int r = 0; r < 4; r++)
+            for (int k = 0; k < 3; k++) {
+                if (r || k)
+                    outbuf_putc(ob, ',');
+                outbuf_f32(ob, (float)rows[r][k]);
+            }
+        outbuf_puts(ob, ">}finish{RGL_U}}");
+    }
+    outbuf_puts(ob, "}\n");
+}
+
+static void write_point(outbuf *ob, const scene_point *pt, const scene_camera *cam)
+{
+    if (!finite3f(pt->p) || !(pt->hx > 0) || !(pt->hy > 0) || !isfinite(pt->hx) ||
+        !isfinite(pt->hy))
+        return;
+    if (pt->round) {
+        outbuf_puts(ob, "sphere{");
+        put_vec3f(ob, pt->p);
+        outbuf_putc(ob, ',');
+        outbuf_f32(ob, pt->hy);
+    } else {
+        /* GL's aliased point: a square facing the camera, size x size pixels. */
+        double r[3], u[3], rl = 0, ul = 0;
+        for (int k = 0; k < 3; k++) {
+            rl += cam->right[k] * cam->right[k];
+            ul += cam->up[k] * cam->up[k];
+        }
+        rl = sqrt(rl);
+        ul = sqrt(ul);
+        if (!(rl > 0) || !(ul > 0))
+            return;
+        for (int k = 0; k < 3; k++) {
+            r[k] = cam->right[k] / rl * pt->hx;
+            u[k] = cam->up[k] / ul * pt->hy;
+        }
+        static const int sx[5] = {-1, 1, 1, -1, -1}, sy[5] = {-1, -1, 1, 1, -1};
+        outbuf_puts(ob, "polygon{5");
+        for (int i = 0; i < 5; i++) {
+            float c[3];
+            for (int k = 0; k < 3; k++)
+                c[k] = (float)(pt->p[k] + sx[i] * r[k] + sy[i] * u[k]);
+            outbuf_putc(ob, ',');
+            put_vec3f(ob, c);
+        }
+    }
+    outbuf_putc(ob, ' ');
+    put_unlit_texture(ob, pt->color);
+    outbuf_puts(ob, "}\n");
+}
+
+/* ---- The file ------------------------------------------------------------------------- */
+
+static void write_clip(outbuf *ob, const scene_camera *cam)
+{
+    if (!cam->has_clip)
+        return;
+    for (int i = 0; i < 2; i++)
+        if (!finite3d(cam->clip[i]) || !isfinite(cam->clip[i][3]))
+            return;
+    /* Keep a.p + a.w >= 0, i.e. POV-Ray's inside of plane{-a, a.w}. */
+    outbuf_puts(ob, "clipped_by{");
+    for (int i = 0; i < 2; i++) {
+        double n[3] = {-cam->clip[i][0], -cam->clip[i][1], -cam->clip[i][2]};
+        outbuf_puts(ob, "plane{");
+        put_vec3d(ob, n);
+        outbuf_putc(ob, ',');
+        outbuf_f32(ob, (float)cam->clip[i][3]);
+        outbuf_putc(ob, '}');
+    }
+    outbuf_puts(ob, "}\n");
+}
+
+int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_info *info)
+{
+    outbuf_puts(ob, "// ");
+    put_comment_text(ob, info && info->file_name ? info->file_name : "scene.pov");
+    outbuf_puts(ob, ": written by raygl2pov " RAYGL_VERSION);
+    if (info) {
+        outbuf_puts(ob, " from ");
+        put_comment_text(ob, info->source ? info->source : "a trace");
+        outbuf_puts(ob, ", frame ");
+        outbuf_u64(ob, info->frame_index);
+        outbuf_puts(ob, " (stream ");
+        outbuf_u64(ob, info->stream);
+        outbuf_puts(ob, ", frame ");
+        outbuf_u64(ob, info->number);
+        outbuf_puts(ob, " of the stream)");
+        if (info->frame_name) {
+            outbuf_puts(ob, "\n// rayglFrameBegin name: ");
+            put_comment_text(ob, info->frame_name);
+        }
+    }
+    outbuf_puts(ob, "\n// Eye coordinates of the OpenGL frame: x right, y up, the camera looks"
+                    " down -z.\n#version 3.7;\nglobal_settings{assumed_gamma 2.2}\n");
+    write_camera(ob, &s->camera);
+    outbuf_puts(ob, "background{");
+    put_rgb(ob, s->background);
+    outbuf_puts(ob, "}\n#declare RGL_U=finish{ambient 0 diffuse 0 emission 1}\n");
+
+    bool any = false;
+    for (size_t i = 0; i < s->nmeshes && !any; i++)
+        any = s->meshes[i].tri_count > 0;
+    any = any || s->nlines > 0 || s->npoints > 0;
+    if (any) {
+        outbuf_puts(ob, "union{\n");
+        /* A union needs two members to be happy in every POV-Ray version;
+         * an empty sphere (radius 0 is legal, never hit) makes sure. */
+        outbuf_puts(ob, "sphere{0,0}\n");
+        for (size_t i = 0; i < s->nmeshes; i++)
+            if (write_mesh(w, ob, s, &s->meshes[i]) != 0)
+                return -1;
+        for (size_t i = 0; i < s->nlines; i++)
+            write_line(ob, &s->lines[i]);
+        for (size_t i = 0; i < s->npoints; i++)
+            write_point(ob, &s->points[i], &s->camera);
+        write_clip(ob, &s->camera);
+        outbuf_puts(ob, "}\n");
+    }
+    for (size_t i = 0; i < s->nlights; i++)
+        write_light(ob, &s->lights[i]);
+    return ob->failed ? -1 : 0;
+}
+
+/* ---- The .ini --------------------------------------------------------------------------- */
+
+bool pov_ini_path_ok(const char *dir)
+{
+    for (const unsigned char *p = (const unsigned char *)dir; *p; p++)
+        if (*p < 0x20 || *p == 0x7f || *p == '"')
+            return false;
+    return true;
+}
+
+/* An INI value: quoted when it holds anything besides plain path bytes
+ * (a ';' would start a comment, a space would end the value). */
+static void put_ini_value(outbuf *ob, const char *a, const char *b)
+{
+    bool plain = true;
+    for (int part = 0; part < 2; part++)
+        for (const char *p = part ? b : a; p && *p; p++)
+            if (!((*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') || (*p >= '0' && *p <= '9') ||
+                  strchr("._-/+", *p)))
+                plain = false;
+    if (!plain)
+        outbuf_putc(ob, '"');
+    outbuf_puts(ob, a);
+    if (b)
+        outbuf_puts(ob, b);
+    if (!plain)
+        outbuf_putc(ob, '"');
+    outbuf_putc(ob, '\n');
+}
+
+int pov_write_ini(outbuf *ob, const scene *s, const char *dir, const char *pov_file,
+                  const char *png_file)
+{
+    if (!pov_ini_path_ok(dir) || !pov_ini_path_ok(pov_file) || !pov_ini_path_ok(png_file))
+        return -1;
+    size_t dl = strlen(dir);
+    const char *sep = dl > 0 && dir[dl - 1] == '/' ? "" : "/";
+    char out_name[4200];
+    if (dl + strlen(sep) + strlen(png_file) + 1 > sizeof out_name)
+        return -1;
+    memcpy(out_name, dir, dl);
+    strcpy(out_name + dl, sep);
+    strcat(out_name, png_file);
+
+    outbuf_puts(ob, "; Renders ");
+    put_comment_text(ob, pov_file);
+    outbuf_puts(ob, " at the OpenGL viewport's size: povray <this file>, run from the folder\n"
+                    "; raygl2pov ran in (POV-Ray reads INI paths from the current folder).\n");
+    outbuf_puts(ob, "Library_Path=");
+    put_ini_value(ob, dir, NULL);
+    outbuf_puts(ob, "Input_File_Name=");
+    put_ini_value(ob, pov_file, NULL);
+    outbuf_puts(ob, "Output_File_Name=");
+    put_ini_value(ob, out_name, NULL);
+    outbuf_puts(ob, "Width=");
+    outbuf_u64(ob, (uint64_t)s->camera.width);
+    outbuf_puts(ob, "\nHeight=");
+    outbuf_u64(ob, (uint64_t)s->camera.height);
+    outbuf_puts(ob, "\nAntialias=Off\nFile_Gamma=2.2\nOutput_File_Type=N\nDisplay=Off\n"
+                    "Verbose=Off\n");
+    return ob->failed ? -1 : 0;
+}

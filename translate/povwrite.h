@@ -1,0 +1,50 @@
+/* povwrite.h: the POV-Ray 3.7 backend: scene model -> SDL, and the .ini.
+ *
+ * One backend among possible others: it reads only the scene model
+ * (scene.h) and writes text into an outbuf. docs/mapping.md explains every
+ * mapping. The output never depends on the locale, holds no NaN or
+ * infinity, no #fopen/#write/#include, and every string from the trace is
+ * escaped; the same scene gives the same bytes.
+ */
+#ifndef RGL_POVWRITE_H
+#define RGL_POVWRITE_H
+
+#include <stdint.h>
+
+#include "outbuf.h"
+#include "scene.h"
+
+/* Where a frame came from, for the header comment. Strings may be NULL;
+ * they are escaped before they reach the file. */
+typedef struct pov_frame_info {
+    const char *file_name; /* the .pov file's own name */
+    const char *source;    /* the trace's name */
+    uint64_t frame_index;  /* in file order */
+    uint32_t stream, number;
+    const char *frame_name; /* rayglFrameBegin's name, or NULL */
+} pov_frame_info;
+
+typedef struct povwriter povwriter;
+
+/* A writer with its reusable working memory; NULL on allocation failure.
+ * One per thread. */
+povwriter *povwriter_create(void);
+void povwriter_destroy(povwriter *w);
+
+/* Writes the scene as a complete SDL file. Returns 0, or -1 when memory ran
+ * out or the sink failed (ob->failed). */
+int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_info *info);
+
+/* Writes the .ini that renders the scene: `povray DIR/NAME.ini` run from
+ * the directory raygl2pov ran in (POV-Ray resolves INI paths against the
+ * current directory). dir is the output folder as the user gave it;
+ * pov_file and png_file are bare file names inside it. Returns 0, or -1
+ * when a path cannot be written into an INI (a double quote or a control
+ * character in it) or the sink failed. */
+int pov_write_ini(outbuf *ob, const scene *s, const char *dir, const char *pov_file,
+                  const char *png_file);
+
+/* True when pov_write_ini can express this folder name. */
+bool pov_ini_path_ok(const char *dir);
+
+#endif

@@ -1,0 +1,377 @@
+/* scene.c: the scene model's storage and its cameras (scene.h).
+ *
+ * The camera formulas generalise docs/mapping.md section "Camera": a GL
+ * projection maps eye point p to NDC x = r0.p / r3.p, y = r1.p / r3.p (ri
+ * the matrix rows, p homogeneous). When r3 has a spatial part the
+ * projection has a centre C (rows 0, 1, 3 vanish there) and the ray
+ * through NDC (x, y) is C + t B^-1 (x, y, 1), B the spatial 3x3 of rows 0,
+ * 1, 3: a POV-Ray perspective camera with direction B^-1 e3 and right, up
+ * twice B^-1 e1, B^-1 e2. For glFrustum this is direction <p8/p0, p9/p5,
+ * -1>, right <2/p0,0,0>, up <0,2/p5,0>, the reference's formula. When r3 is
+ * (0,0,0,w) the projection is parallel: orthographic.
+ */
+#include "scene.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "talloc.h"
+
+void scene_init(scene *s)
+{
+    memset(s, 0, sizeof *s);
+    int vp[4] = {0, 0, 640, 480};
+    mat4 id = mat4_identity();
+    scene_camera_from_gl(&s->camera, &id, vp);
+}
+
+void scene_finish(scene *s)
+{
+    tr_free(s->verts);
+    tr_free(s->tris);
+    tr_free(s->meshes);
+    tr_free(s->lines);
+    tr_free(s->points);
+    tr_free(s->lights);
+    memset(s, 0, sizeof *s);
+}
+
+void scene_reset(scene *s)
+{
+    scene_clear_geometry(s);
+    s->nlights = 0;
+    s->have_camera = false;
+    s->failed = false;
+    memset(s->background, 0, sizeof s->background);
+    int vp[4] = {0, 0, 640, 480};
+    mat4 id = mat4_identity();
+    scene_camera_from_gl(&s->camera, &id, vp);
+}
+
+void scene_clear_geometry(scene *s)
+{
+    s->nverts = s->ntris = s->nmeshes = s->nlines = s->npoints = 0;
+}
+
+/* Grows a pool for one more item, within SCENE_MAX_ITEMS. */
+static void *add_item(scene *s, void **pool, size_t *n, size_t *cap, size_t elem)
+{
+    if (s->failed)
+        return NULL;
+    if (*n >= SCENE_MAX_ITEMS || tr_grow(pool, cap, *n + 1, elem) != 0) {
+        s->failed = true;
+        return NULL;
+    }
+    void *p = (char *)*pool + *n * elem;
+    (*n)++;
+    memset(p, 0, elem);
+    return p;
+}
+
+scene_vertex *scene_reserve_vertices(scene *s, size_t n)
+{
+    if (s->failed)
+        return NULL;
+    if (n > SCENE_MAX_VERTICES - s->nverts ||
+        tr_grow((void **)&s->verts, &s->cap_verts, s->nverts + n, sizeof *s->verts) != 0) {
+        s->failed = true;
+        return NULL;
+    }
+    return s->verts + s->nverts;
+}
+
+bool scene_look_equal(const scene_look *a, const scene_look *b)
+{
+    return memcmp(a, b, sizeof *a) == 0;
+}
+
+scene_mesh *scene_mesh_for(scene *s, const mat4 *to_eye, bool in_eye, const scene_look *look)
+{
+    if (s->nmeshes) {
+        scene_mesh *m = &s->meshes[s->nmeshes - 1];
+        if (m->in_eye == in_eye && scene_look_equal(&m->look, look) &&
+            mat4_equal_f32(&m->to_eye, to_eye))
+            return m;
+        if (m->tri_count == 0) { /* an empty run: reuse it */
+            m->to_eye = *to_eye;
+            m->in_eye = in_eye;
+            m->look = *look;
+            return m;
+        }
+    }
+    scene_mesh *m = add_item(s, (void **)&s->meshes, &s->nmeshes, &s->cap_meshes, sizeof *m);
+    if (!m)
+        return NULL;
+    m->to_eye = *to_eye;
+    m->in_eye = in_eye;
+    m->look = *look;
+    m->first_tri = s->ntris;
+    m->tri_count = 0;
+    return m;
+}
+
+bool scene_add_tri(scene *s, uint32_t a, uint32_t b, uint32_t c, uint32_t provoking)
+{
+    if (s->failed || s->nmeshes == 0)
+        return false;
+    if (s->ntris >= s->cap_tris) {
+        if (s->ntris >= SCENE_MAX_ITEMS ||
+            tr_grow((void **)&s->tris, &s->cap_tris, s->ntris + 1, sizeof *s->tris) != 0) {
+            s->failed = true;
+            return false;
+        }
+    }
+    scene_tri *t = &s->tris[s->ntris++];
+    t->v[0] = a;
+    t->v[1] = b;
+    t->v[2] = c;
+    t->provoking = provoking;
+    s->meshes[s->nmeshes - 1].tri_count++;
+    return true;
+}
+
+scene_line *scene_add_line(scene *s)
+{
+    return add_item(s, (void **)&s->lines, &s->nlines, &s->cap_lines, sizeof(scene_line));
+}
+
+scene_point *scene_add_point(scene *s)
+{
+    return add_item(s, (void **)&s->points, &s->npoints, &s->cap_points, sizeof(scene_point));
+}
+
+scene_light *scene_add_light(scene *s)
+{
+    return add_item(s, (void **)&s->lights, &s->nlights, &s->cap_lights, sizeof(scene_light));
+}
+
+/* ---- Cameras ---------------------------------------------------------------- */
+
+/* Solves the 3x3 system with rows a[0..2] for x: a x = b (Cramer). */
+static bool solve3(double a[3][3], const double b[3], double x[3])
+{
+    double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+                 a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                 a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+    if (det == 0 || !isfinite(det))
+        return false;
+    for (int k = 0; k < 3; k++) {
+        double m[3][3];
+        memcpy(m, a, sizeof m);
+        for (int r = 0; r < 3; r++)
+            m[r][k] = b[r];
+        x[k] = (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])) /
+               det;
+        if (!isfinite(x[k]))
+            return false;
+    }
+    return true;
+}
+
+static void cross3(const double a[3], const double b[3], double o[3])
+{
+    o[0] = a[1] * b[2] - a[2] * b[1];
+    o[1] = a[2] * b[0] - a[0] * b[2];
+    o[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static double dot3(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void set_size(scene_camera *cam, const int viewport[4])
+{
+    cam->width = viewport[2] > 0 ? viewport[2] : 1;
+    cam->height = viewport[3] > 0 ? viewport[3] : 1;
+}
+
+/* Near and far planes: -w <= z_clip <= w, i.e. (r3 + r2).p >= 0 and
+ * (r3 - r2).p >= 0, normalised on their spatial part. */
+static void set_clip(scene_camera *cam, double r[4][4])
+{
+    cam->has_clip = true;
+    for (int i = 0; i < 2; i++) {
+        double s = i == 0 ? 1 : -1, len = 0;
+        for (int k = 0; k < 4; k++)
+            cam->clip[i][k] = r[3][k] + s * r[2][k];
+        len = sqrt(dot3(cam->clip[i], cam->clip[i]));
+        if (!(len > 0) || !isfinite(len)) {
+            cam->has_clip = false;
+            return;
+        }
+        for (int k = 0; k < 4; k++)
+            cam->clip[i][k] /= len;
+    }
+}
+
+static bool camera_from_rows(scene_camera *cam, double r[4][4])
+{
+    static const double e1[3] = {1, 0, 0}, e2[3] = {0, 1, 0}, e3[3] = {0, 0, 1};
+
+    if (r[3][0] == 0 && r[3][1] == 0 && r[3][2] == 0) {
+        /* Parallel projection: scale the rows so that w = 1. */
+        double w = r[3][3];
+        if (w == 0 || !isfinite(w))
+            return false;
+        for (int i = 0; i < 4; i++)
+            for (int k = 0; k < 4; k++)
+                r[i][k] /= w;
+        double a[3][3] = {{r[0][0], r[0][1], r[0][2]},
+                          {r[1][0], r[1][1], r[1][2]},
+                          {r[2][0], r[2][1], r[2][2]}};
+        double rhs[3] = {-r[0][3], -r[1][3], -1 - r[2][3]}; /* centre of the near plane */
+        double d[3];
+        if (!solve3(a, rhs, cam->location))
+            return false;
+        cross3(a[0], a[1], d);
+        double len = sqrt(dot3(d, d));
+        if (!(len > 0) || !isfinite(len))
+            return false;
+        if (dot3(a[2], d) < 0) /* look toward increasing depth */
+            len = -len;
+        for (int k = 0; k < 3; k++)
+            cam->direction[k] = d[k] / len;
+        double b[3][3] = {{a[0][0], a[0][1], a[0][2]},
+                          {a[1][0], a[1][1], a[1][2]},
+                          {cam->direction[0], cam->direction[1], cam->direction[2]}};
+        double two_e1[3] = {2, 0, 0}, two_e2[3] = {0, 2, 0};
+        if (!solve3(b, two_e1, cam->right) || !solve3(b, two_e2, cam->up))
+            return false;
+        cam->kind = SCENE_CAMERA_ORTHOGRAPHIC;
+        set_clip(cam, r);
+        return true;
+    }
+
+    double b[3][3] = {{r[0][0], r[0][1], r[0][2]},
+                      {r[1][0], r[1][1], r[1][2]},
+                      {r[3][0], r[3][1], r[3][2]}};
+    double rhs[3] = {-r[0][3], -r[1][3], -r[3][3]};
+    if (!solve3(b, rhs, cam->location) || !solve3(b, e3, cam->direction) ||
+        !solve3(b, e1, cam->right) || !solve3(b, e2, cam->up))
+        return false;
+    for (int k = 0; k < 3; k++) {
+        cam->right[k] *= 2;
+        cam->up[k] *= 2;
+    }
+    cam->kind = SCENE_CAMERA_PERSPECTIVE;
+    set_clip(cam, r);
+    return true;
+}
+
+bool scene_camera_from_gl(scene_camera *cam, const mat4 *proj, const int viewport[4])
+{
+    double r[4][4];
+    memset(cam, 0, sizeof *cam);
+    set_size(cam, viewport);
+    if (mat4_finite(proj)) {
+        for (int i = 0; i < 4; i++)
+            for (int k = 0; k < 4; k++)
+                r[i][k] = proj->m[k * 4 + i];
+        if (camera_from_rows(cam, r))
+            return true;
+    }
+    /* The identity projection's camera: orthographic, [-1, 1]^3. */
+    memset(r, 0, sizeof r);
+    for (int i = 0; i < 4; i++)
+        r[i][i] = 1;
+    int w = cam->width, h = cam->height;
+    memset(cam, 0, sizeof *cam);
+    camera_from_rows(cam, r);
+    cam->width = w;
+    cam->height = h;
+    return false;
+}
+
+bool scene_camera_lookat(scene_camera *cam, const double loc[3], const double look[3],
+                         double fovy_deg, int width, int height)
+{
+    static const double sky[3] = {0, 1, 0};
+    double d[3] = {look[0] - loc[0], look[1] - loc[1], look[2] - loc[2]}, rt[3], up[3];
+    bool ok = true;
+
+    memset(cam, 0, sizeof *cam);
+    cam->kind = SCENE_CAMERA_LOOKAT;
+    cam->width = width > 0 ? width : 1;
+    cam->height = height > 0 ? height : 1;
+    for (int k = 0; k < 3; k++) {
+        cam->location[k] = isfinite(loc[k]) ? loc[k] : 0;
+        cam->look_at[k] = isfinite(look[k]) ? look[k] : 0;
+    }
+    double len = sqrt(dot3(d, d));
+    if (!(len > 0) || !isfinite(len)) {
+        d[0] = d[1] = 0;
+        d[2] = -1;
+        len = 1;
+        ok = false;
+    }
+    for (int k = 0; k < 3; k++)
+        d[k] /= len;
+    cross3(d, sky, rt); /* right = forward x sky: +x when looking down -z */
+    double rl = sqrt(dot3(rt, rt));
+    if (!(rl > 1e-9)) {
+        rt[0] = 1;
+        rt[1] = rt[2] = 0;
+        rl = 1;
+        ok = false;
+    }
+    for (int k = 0; k < 3; k++)
+        rt[k] /= rl;
+    cross3(rt, d, up);
+    if (!(fovy_deg > 0 && fovy_deg < 180))
+        fovy_deg = 2 * atan(0.5) * 180 / 3.14159265358979323846; /* POV-Ray's default */
+    double dl = 0.5 / tan(fovy_deg * 3.14159265358979323846 / 360);
+    double aspect = (double)cam->width / (double)cam->height;
+    for (int k = 0; k < 3; k++) {
+        cam->direction[k] = d[k] * dl;
+        cam->right[k] = rt[k] * aspect;
+        cam->up[k] = up[k];
+    }
+    return ok;
+}
+
+/* p - location = t direction + a right + b up. */
+static bool camera_coords(const scene_camera *cam, const double p[3], double x[3])
+{
+    double a[3][3], rel[3];
+    for (int k = 0; k < 3; k++) {
+        a[k][0] = cam->direction[k];
+        a[k][1] = cam->right[k];
+        a[k][2] = cam->up[k];
+        rel[k] = p[k] - cam->location[k];
+    }
+    return solve3(a, rel, x);
+}
+
+bool scene_camera_project(const scene_camera *cam, const double p[3], double out[2])
+{
+    double x[3];
+    if (!camera_coords(cam, p, x))
+        return false;
+    double t = 1;
+    if (cam->kind != SCENE_CAMERA_ORTHOGRAPHIC) {
+        if (!(x[0] > 0))
+            return false;
+        t = x[0];
+    }
+    out[0] = x[1] / t * cam->width;
+    out[1] = x[2] / t * cam->height;
+    return isfinite(out[0]) && isfinite(out[1]);
+}
+
+bool scene_camera_pixel_size(const scene_camera *cam, const double p[3], double *px, double *py)
+{
+    double rl = sqrt(dot3(cam->right, cam->right)), ul = sqrt(dot3(cam->up, cam->up));
+    double t = 1, x[3];
+    if (cam->kind != SCENE_CAMERA_ORTHOGRAPHIC) {
+        /* The image spans t right by t up at that depth. */
+        if (!camera_coords(cam, p, x) || !(x[0] > 0))
+            return false;
+        t = x[0];
+    }
+    *px = t * rl / cam->width;
+    *py = t * ul / cam->height;
+    return isfinite(*px) && isfinite(*py);
+}

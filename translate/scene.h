@@ -1,0 +1,199 @@
+/* scene.h: the neutral scene model between the interpreter and a writer.
+ *
+ * The interpreter (interp*.c) fills a scene from GL commands; a writer
+ * (povwrite.c) turns it into text. Nothing here knows SDL or GL calls: the
+ * model speaks of cameras, meshes, lines, points, lights, in named spaces:
+ *
+ *   eye space     GL eye coordinates of the frame's camera: the camera sits
+ *                 at the origin looking down -z, right-handed, as in GL.
+ *                 Lines, points, lights and the camera live here.
+ *   object space  what glVertex received; each mesh carries the matrix that
+ *                 takes its object space to eye space (the modelview, or the
+ *                 modelview remapped into the camera's projection).
+ *
+ * For a frame started by rayglFrameBegin, "eye space" is the paper's world:
+ * the modelview places objects in it and the camera looks at it with
+ * look_at, as the paper's POV-Ray output did.
+ *
+ * Memory: one growable pool each for vertices, triangles, lines and points;
+ * meshes index into the pools. The first allocation failure makes the scene
+ * sticky-failed (scene.failed): later additions are dropped, and the caller
+ * reports the frame as failed. Not thread-safe; one scene per worker.
+ */
+#ifndef RGL_SCENE_H
+#define RGL_SCENE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "mat4.h"
+
+/* Hard limits: a frame over them is cut (with a diagnostic), never a crash. */
+#define SCENE_MAX_VERTICES (1u << 30)
+#define SCENE_MAX_ITEMS (1u << 30)
+
+/* One vertex as GL assembled it: object-space position (after dividing by
+ * w), the current normal, the colour GL uses for it (clamped to [0, 1]) and
+ * texture coordinates (s/q, t/q). */
+typedef struct scene_vertex {
+    float pos[3];
+    float normal[3];
+    float color[4];
+    float tex[2];
+} scene_vertex;
+
+/* A triangle: absolute vertex indices in the pool, front face first in GL's
+ * counter-clockwise sense (the interpreter reorders for glFrontFace(GL_CW)),
+ * and the provoking vertex whose colour a flat-shaded face takes. */
+typedef struct scene_tri {
+    uint32_t v[3];
+    uint32_t provoking;
+} scene_tri;
+
+/* Everything that makes two runs of triangles look different. Compared
+ * bytewise (scene_look_equal): build it zeroed. */
+typedef struct scene_look {
+    uint8_t lit;       /* GL_LIGHTING was on (issue 4: lit materials) */
+    uint8_t flat;      /* GL_FLAT: one colour per face, the provoking vertex's */
+    uint8_t blend;     /* alpha matters (issue 4) */
+    uint8_t two_sided; /* two-sided lighting (issue 4) */
+    int32_t material;  /* index into scene.materials, -1 for none (issue 4) */
+    int32_t texture;   /* index into scene.textures, -1 for none (issue 5) */
+} scene_look;
+
+/* A run of triangles sharing transform and look: one mesh2 in SDL. */
+typedef struct scene_mesh {
+    mat4 to_eye;   /* object -> eye space; identity when in_eye */
+    bool in_eye;   /* vertices are already in eye space (projective input) */
+    scene_look look;
+    size_t first_tri, tri_count; /* range in scene.tris */
+} scene_mesh;
+
+/* A line segment in eye space; r is the radius at each end that keeps the
+ * on-screen width equal to glLineWidth. */
+typedef struct scene_line {
+    float p[2][3];
+    float r[2];
+    float color[2][4]; /* equal when flat shaded */
+} scene_line;
+
+/* A point in eye space: a square of half-extents hx, hy (eye units) along
+ * the camera's right and up vectors, or a disc-like sphere of radius hx
+ * when round (GL_POINT_SMOOTH). */
+typedef struct scene_point {
+    float p[3];
+    float hx, hy;
+    float color[4];
+    bool round;
+} scene_point;
+
+typedef enum scene_camera_kind {
+    SCENE_CAMERA_PERSPECTIVE, /* from a projection with a centre */
+    SCENE_CAMERA_ORTHOGRAPHIC,
+    SCENE_CAMERA_LOOKAT, /* rayglFrameBegin: location + look_at */
+} scene_camera_kind;
+
+/* The camera in eye space, in POV-Ray's terms but without its syntax: a ray
+ * for image coordinates (u, v) in [-1/2, 1/2]^2 (u right, v up) starts at
+ * location (+ u*right + v*up for orthographic) and runs along
+ * direction + u*right + v*up (perspective) or direction (orthographic).
+ * clip holds GL's near and far planes as half-spaces a.xyz . p + a.w >= 0
+ * that visible points satisfy. */
+typedef struct scene_camera {
+    scene_camera_kind kind;
+    double location[3], right[3], up[3], direction[3];
+    double look_at[3]; /* LOOKAT only */
+    bool has_clip;
+    double clip[2][4];
+    int width, height; /* image size in pixels: the GL viewport */
+} scene_camera;
+
+typedef enum scene_light_kind {
+    SCENE_LIGHT_PARALLEL, /* rayglFrameBegin's white light; GL w = 0 (issue 4) */
+    SCENE_LIGHT_POINT,
+    SCENE_LIGHT_SPOT,
+} scene_light_kind;
+
+/* A light in eye space (issue 4 adds the GL lights' remaining terms). */
+typedef struct scene_light {
+    scene_light_kind kind;
+    double position[3];
+    double point_at[3];
+    float color[3];
+} scene_light;
+
+typedef struct scene {
+    scene_camera camera;
+    bool have_camera;
+    float background[4]; /* the clear colour */
+
+    scene_vertex *verts;
+    size_t nverts, cap_verts;
+    scene_tri *tris;
+    size_t ntris, cap_tris;
+    scene_mesh *meshes;
+    size_t nmeshes, cap_meshes;
+    scene_line *lines;
+    size_t nlines, cap_lines;
+    scene_point *points;
+    size_t npoints, cap_points;
+    scene_light *lights;
+    size_t nlights, cap_lights;
+
+    bool failed; /* an allocation or limit failed; the scene is incomplete */
+} scene;
+
+/* Empty scene with no storage. scene_finish frees it; scene_reset empties it
+ * and keeps the storage for the next frame. */
+void scene_init(scene *s);
+void scene_finish(scene *s);
+void scene_reset(scene *s);
+
+/* Drops all geometry (glClear of the colour buffer erases what was drawn). */
+void scene_clear_geometry(scene *s);
+
+/* Makes room for n more vertices and returns where they go (the caller
+ * fills them and then calls scene_commit_vertices), or NULL on failure. */
+scene_vertex *scene_reserve_vertices(scene *s, size_t n);
+static inline void scene_commit_vertices(scene *s, size_t n) { s->nverts += n; }
+
+/* The mesh that new triangles go to: the last one when its transform and
+ * look are the same (compared at float precision), else a new one. NULL on
+ * failure. */
+scene_mesh *scene_mesh_for(scene *s, const mat4 *to_eye, bool in_eye, const scene_look *look);
+
+/* Appends a triangle to the last mesh. Returns false on failure. */
+bool scene_add_tri(scene *s, uint32_t a, uint32_t b, uint32_t c, uint32_t provoking);
+
+/* Append items; NULL on failure. The caller fills the returned item. */
+scene_line *scene_add_line(scene *s);
+scene_point *scene_add_point(scene *s);
+scene_light *scene_add_light(scene *s);
+
+bool scene_look_equal(const scene_look *a, const scene_look *b);
+
+/* Camera from a GL projection matrix and viewport (x, y, width, height).
+ * Handles any projection with a centre (perspective, off-axis frustum,
+ * rotated or skewed) and any parallel one (orthographic). Returns false,
+ * leaving a default orthographic camera of the identity projection, when
+ * the matrix is singular, not finite, or projective in a way no POV-Ray
+ * camera reproduces. */
+bool scene_camera_from_gl(scene_camera *cam, const mat4 *proj, const int viewport[4]);
+
+/* The camera the paper's rayglFrameBegin asked for: at loc, looking at look,
+ * up +y, with the vertical field of view fovy_deg (degrees) and the image
+ * size of the viewport. Returns false for a degenerate request (loc equal to
+ * look, or looking straight along +-y), leaving a usable camera. */
+bool scene_camera_lookat(scene_camera *cam, const double loc[3], const double look[3],
+                         double fovy_deg, int width, int height);
+
+/* Window position in pixels (x right, y up, origin at the image centre) of
+ * eye point p. Returns false when p is not in front of the camera. */
+bool scene_camera_project(const scene_camera *cam, const double p[3], double out[2]);
+
+/* Eye-space size of one pixel (horizontal and vertical) at eye point p.
+ * Returns false when p is not in front of the camera. */
+bool scene_camera_pixel_size(const scene_camera *cam, const double p[3], double *px, double *py);
+
+#endif
