@@ -289,54 +289,84 @@ static float raster_width(float w, bool smooth)
     return r < 1 ? 1 : r;
 }
 
+/* Unit vectors along the camera's image axes, in eye space. */
+static void image_axes(const scene_camera *cam, double r[3], double u[3])
+{
+    double rl = sqrt(cam->right[0] * cam->right[0] + cam->right[1] * cam->right[1] +
+                     cam->right[2] * cam->right[2]);
+    double ul = sqrt(cam->up[0] * cam->up[0] + cam->up[1] * cam->up[1] + cam->up[2] * cam->up[2]);
+    for (int k = 0; k < 3; k++) {
+        r[k] = rl > 0 ? cam->right[k] / rl : (k == 0);
+        u[k] = ul > 0 ? cam->up[k] / ul : (k == 1);
+    }
+}
+
+/* GL draws an aliased line of width w as w pixels across its minor axis
+ * in every column (or row) it covers, from one end to the other (GL 1.x
+ * 3.4.2): a parallelogram with its short sides along the minor axis. An
+ * antialiased one is a rectangle w wide. Both become a band in the plane
+ * of the segment and an image axis, whose edges sit the right number of
+ * pixels off at each end's own depth, so its image is GL's parallelogram. */
 static void add_segment(assembly *as, uint32_t i0, uint32_t i1, uint32_t provoking)
 {
     interp *ip = as->ip;
     const scene_vertex *v0 = &as->s->verts[i0], *v1 = &as->s->verts[i1];
-    double p0[3], p1[3], px0, py0, px1, py1, w0[2], w1[2];
-    if (!eye_pos(ip, v0, p0) || !eye_pos(ip, v1, p1))
-        return;
     const scene_camera *cam = &as->s->camera;
-    if (!scene_camera_pixel_size(cam, p0, &px0, &py0) ||
-        !scene_camera_pixel_size(cam, p1, &px1, &py1) || !scene_camera_project(cam, p0, w0) ||
-        !scene_camera_project(cam, p1, w1))
+    double p[2][3], px[2], py[2], w0[2], w1[2];
+    if (!eye_pos(ip, v0, p[0]) || !eye_pos(ip, v1, p[1]))
+        return;
+    if (!scene_camera_pixel_size(cam, p[0], &px[0], &py[0]) ||
+        !scene_camera_pixel_size(cam, p[1], &px[1], &py[1]) ||
+        !scene_camera_project(cam, p[0], w0) || !scene_camera_project(cam, p[1], w1))
         return;
     double dx = w1[0] - w0[0], dy = w1[1] - w0[1], len = hypot(dx, dy);
-    if (!(len > 1e-9) && !(fabs(p1[2] - p0[2]) > 0))
-        return; /* zero length: GL draws nothing */
-    /* An aliased wide line spans `width` pixels along the minor axis
-     * (GL 1.x 3.4.2), so its perpendicular thickness is width * cos. */
-    bool xmajor = fabs(dx) >= fabs(dy);
-    double f = len > 1e-9 && !as->line_smooth ? fmax(fabs(dx), fabs(dy)) / len : 1;
-    double half = as->line_width * 0.5 * f;
+    if (!(len > 1e-6))
+        return; /* no extent on screen: GL draws nothing */
+    double ox, oy; /* offset of an edge from the centre line, in pixels */
+    if (as->line_smooth) {
+        ox = -dy / len * as->line_width * 0.5;
+        oy = dx / len * as->line_width * 0.5;
+    } else if (fabs(dx) >= fabs(dy)) {
+        ox = 0;
+        oy = as->line_width * 0.5;
+    } else {
+        ox = as->line_width * 0.5;
+        oy = 0;
+    }
+    double r[3], u[3];
+    image_axes(cam, r, u);
     scene_line *l = scene_add_line(as->s);
     if (!l)
         return;
-    for (int k = 0; k < 3; k++) {
-        l->p[0][k] = (float)p0[k];
-        l->p[1][k] = (float)p1[k];
-    }
-    l->r[0] = (float)(half * (xmajor ? py0 : px0));
-    l->r[1] = (float)(half * (xmajor ? py1 : px1));
+    for (int e = 0; e < 2; e++)
+        for (int k = 0; k < 3; k++) {
+            l->p[e][k] = (float)p[e][k];
+            l->half[e][k] = (float)(ox * px[e] * r[k] + oy * py[e] * u[k]);
+        }
     const scene_vertex *c0 = as->flat ? &as->s->verts[provoking] : v0;
     const scene_vertex *c1 = as->flat ? &as->s->verts[provoking] : v1;
     memcpy(l->color[0], c0->color, sizeof l->color[0]);
     memcpy(l->color[1], c1->color, sizeof l->color[1]);
 }
 
+/* GL's aliased point: a square of size x size pixels centred on the
+ * point (GL 1.x 3.3); a smooth one is round. */
 static void add_point(assembly *as, uint32_t i, uint32_t colour_from)
 {
-    double p[3], px, py;
-    if (!eye_pos(as->ip, &as->s->verts[i], p) ||
-        !scene_camera_pixel_size(&as->s->camera, p, &px, &py))
+    double p[3], px, py, r[3], u[3];
+    const scene_camera *cam = &as->s->camera;
+    if (!eye_pos(as->ip, &as->s->verts[i], p) || !scene_camera_pixel_size(cam, p, &px, &py))
         return;
+    image_axes(cam, r, u);
     scene_point *pt = scene_add_point(as->s);
     if (!pt)
         return;
-    for (int k = 0; k < 3; k++)
+    double h = as->point_size * 0.5;
+    for (int k = 0; k < 3; k++) {
         pt->p[k] = (float)p[k];
-    pt->hx = (float)(as->point_size * 0.5 * px);
-    pt->hy = (float)(as->point_size * 0.5 * py);
+        pt->right[k] = (float)(h * px * r[k]);
+        pt->up[k] = (float)(h * py * u[k]);
+    }
     pt->round = as->point_smooth;
     memcpy(pt->color, as->s->verts[colour_from].color, sizeof pt->color);
 }

@@ -32,6 +32,10 @@ struct povwriter {
     size_t cap_remap;
     uint32_t *faces; /* per kept face: 3 pos, 3 col, 3 nrm indices */
     size_t cap_faces;
+    scene_vertex *bverts; /* lines and points as quads */
+    size_t nbverts, cap_bverts;
+    scene_tri *btris;
+    size_t nbtris, cap_btris;
 };
 
 povwriter *povwriter_create(void)
@@ -55,6 +59,8 @@ void povwriter_destroy(povwriter *w)
     dedup_finish(&w->col);
     tr_free(w->remap);
     tr_free(w->faces);
+    tr_free(w->bverts);
+    tr_free(w->btris);
     tr_free(w);
 }
 
@@ -160,18 +166,14 @@ static void write_light(outbuf *ob, const scene_light *l)
 #define UNSET UINT32_MAX
 #define BAD (UINT32_MAX - 1)
 
-static bool same_bits(const float *a, const float *b, size_t n)
+/* A mesh2 of triangles over a vertex pool; to_eye NULL: the vertices are
+ * in eye space. Returns -1 on memory failure. */
+static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
+                       const scene_tri *tris, size_t nt, const scene_look *look,
+                       const mat4 *to_eye)
 {
-    return memcmp(a, b, n * sizeof *a) == 0;
-}
-
-/* The mesh2 of one run. Returns -1 on memory failure. */
-static int write_mesh(povwriter *w, outbuf *ob, const scene *s, const scene_mesh *m)
-{
-    const scene_tri *tris = s->tris + m->first_tri;
-    bool normals = m->look.lit && !m->look.flat;
-    size_t nt = m->tri_count;
-    if (nt == 0 || !mat4_finite(&m->to_eye))
+    bool normals = look->lit && !look->flat;
+    if (nt == 0 || (to_eye && !mat4_finite(to_eye)))
         return 0;
 
     /* Vertices of a run sit in one stretch of the pool. */
@@ -205,7 +207,7 @@ static int write_mesh(povwriter *w, outbuf *ob, const scene *s, const scene_mesh
         for (int k = 0; k < 3 && ok; k++) {
             uint32_t v = t->v[k];
             uint32_t *r = w->remap + (size_t)(v - lo) * 3;
-            const scene_vertex *sv = &s->verts[v];
+            const scene_vertex *sv = &verts[v];
             if (r[0] == UNSET) {
                 if (!finite3f(sv->pos)) {
                     r[0] = BAD;
@@ -216,10 +218,12 @@ static int write_mesh(povwriter *w, outbuf *ob, const scene *s, const scene_mesh
                     if ((r[0] = dedup_index(&w->pos, key)) == DEDUP_NONE)
                         return -1;
                 }
-                uint32_t ckey[4];
-                memcpy(ckey, sv->color, sizeof ckey);
-                if ((r[2] = dedup_index(&w->col, ckey)) == DEDUP_NONE)
-                    return -1;
+                if (!look->flat) {
+                    uint32_t ckey[4];
+                    memcpy(ckey, sv->color, sizeof ckey);
+                    if ((r[2] = dedup_index(&w->col, ckey)) == DEDUP_NONE)
+                        return -1;
+                }
                 if (normals) {
                     float n[3] = {sv->normal[0], sv->normal[1], sv->normal[2]};
                     if (!finite3f(n) || (n[0] == 0 && n[1] == 0 && n[2] == 0)) {
@@ -242,17 +246,16 @@ static int write_mesh(povwriter *w, outbuf *ob, const scene *s, const scene_mesh
         if (!ok || f[0] == f[1] || f[1] == f[2] || f[0] == f[2])
             continue;
         /* Zero area (collinear): POV-Ray drops such faces with a warning. */
-        const float *a = s->verts[t->v[0]].pos, *b = s->verts[t->v[1]].pos,
-                    *c = s->verts[t->v[2]].pos;
+        const float *a = verts[t->v[0]].pos, *b = verts[t->v[1]].pos, *c = verts[t->v[2]].pos;
         double e1[3] = {(double)b[0] - a[0], (double)b[1] - a[1], (double)b[2] - a[2]};
         double e2[3] = {(double)c[0] - a[0], (double)c[1] - a[1], (double)c[2] - a[2]};
         double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2],
                cz = e1[0] * e2[1] - e1[1] * e2[0];
         if (cx == 0 && cy == 0 && cz == 0)
             continue;
-        if (m->look.flat) {
+        if (look->flat) {
             /* One colour, the provoking vertex's. */
-            const scene_vertex *pv = &s->verts[t->provoking];
+            const scene_vertex *pv = &verts[t->provoking];
             uint32_t ckey[4];
             memcpy(ckey, pv->color, sizeof ckey);
             uint32_t ci = dedup_index(&w->col, ckey);
@@ -348,11 +351,11 @@ static int write_mesh(povwriter *w, outbuf *ob, const scene *s, const scene_mesh
     }
     if (!colour_list)
         put_unlit_texture(ob, (const float *)(const void *)dedup_key(&w->col, 0));
-    if (!m->in_eye) {
-        const double *a = m->to_eye.m;
+    if (to_eye) {
+        const double *a = to_eye->m;
         static const int idx[12] = {0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14};
         mat4 id = mat4_identity();
-        if (!mat4_equal_f32(&m->to_eye, &id)) {
+        if (!mat4_equal_f32(to_eye, &id)) {
             outbuf_puts(ob, "matrix<");
             for (int i = 0; i < 12; i++) {
                 if (i)
@@ -368,111 +371,79 @@ static int write_mesh(povwriter *w, outbuf *ob, const scene *s, const scene_mesh
 
 /* ---- Lines and points ---------------------------------------------------------------- */
 
-/* A unit vector perpendicular to d. */
-static void perpendicular(const double d[3], double out[3])
+/* Appends a flat quad (corners in order, colours per corner) to the band
+ * pool: two triangles in eye space. */
+static int add_quad(povwriter *w, float c[4][3], const float *col[4])
 {
-    double ax = fabs(d[0]), ay = fabs(d[1]), az = fabs(d[2]);
-    double t[3] = {0, 0, 0};
-    t[ax <= ay && ax <= az ? 0 : (ay <= az ? 1 : 2)] = 1;
-    out[0] = d[1] * t[2] - d[2] * t[1];
-    out[1] = d[2] * t[0] - d[0] * t[2];
-    out[2] = d[0] * t[1] - d[1] * t[0];
-    double l = sqrt(out[0] * out[0] + out[1] * out[1] + out[2] * out[2]);
-    for (int k = 0; k < 3; k++)
-        out[k] /= l;
+    if (tr_grow((void **)&w->bverts, &w->cap_bverts, w->nbverts + 4, sizeof *w->bverts) != 0 ||
+        tr_grow((void **)&w->btris, &w->cap_btris, w->nbtris + 2, sizeof *w->btris) != 0)
+        return -1;
+    uint32_t b = (uint32_t)w->nbverts;
+    for (int i = 0; i < 4; i++) {
+        scene_vertex *v = &w->bverts[w->nbverts++];
+        memset(v, 0, sizeof *v);
+        memcpy(v->pos, c[i], sizeof v->pos);
+        memcpy(v->color, col[i], sizeof v->color);
+    }
+    scene_tri t0 = {{b, b + 1, b + 2}, b + 2}, t1 = {{b, b + 2, b + 3}, b + 3};
+    w->btris[w->nbtris++] = t0;
+    w->btris[w->nbtris++] = t1;
+    return 0;
 }
 
-static void write_line(outbuf *ob, const scene_line *l)
+/* Lines and square points: one mesh2 of flat quads in eye space (see
+ * scene.h: each is the band or square GL rasterises). Round points are
+ * spheres. */
+static int write_flat_items(povwriter *w, outbuf *ob, const scene *s)
 {
-    const float *p0 = l->p[0], *p1 = l->p[1];
-    if (!finite3f(p0) || !finite3f(p1) || !(l->r[0] > 0) || !(l->r[1] > 0) ||
-        !isfinite(l->r[0]) || !isfinite(l->r[1]) || same_bits(p0, p1, 3))
-        return;
-    bool cyl = l->r[0] == l->r[1];
-    outbuf_puts(ob, cyl ? "cylinder{" : "cone{");
-    put_vec3f(ob, p0);
-    if (!cyl) {
-        outbuf_putc(ob, ',');
-        outbuf_f32(ob, l->r[0]);
+    w->nbverts = w->nbtris = 0;
+    for (size_t i = 0; i < s->nlines; i++) {
+        const scene_line *l = &s->lines[i];
+        float c[4][3];
+        bool ok = finite3f(l->p[0]) && finite3f(l->p[1]) && finite3f(l->half[0]) &&
+                  finite3f(l->half[1]);
+        if (!ok)
+            continue;
+        for (int k = 0; k < 3; k++) {
+            c[0][k] = l->p[0][k] - l->half[0][k];
+            c[1][k] = l->p[0][k] + l->half[0][k];
+            c[2][k] = l->p[1][k] + l->half[1][k];
+            c[3][k] = l->p[1][k] - l->half[1][k];
+        }
+        const float *col[4] = {l->color[0], l->color[0], l->color[1], l->color[1]};
+        if (add_quad(w, c, col) != 0)
+            return -1;
     }
-    outbuf_putc(ob, ',');
-    put_vec3f(ob, p1);
-    outbuf_putc(ob, ',');
-    outbuf_f32(ob, l->r[1]);
-    outbuf_putc(ob, ' ');
-    if (same_bits(l->color[0], l->color[1], 4)) {
-        put_unlit_texture(ob, l->color[0]);
-    } else {
-        /* Colour interpolated along the segment, as GL's smooth lines: a
-         * gradient whose 0..1 runs a little past both ends, so that the
-         * end caps do not wrap around to the other colour. */
-        double d[3], u[3], v[3], o[3];
-        for (int k = 0; k < 3; k++) {
-            d[k] = ((double)p1[k] - p0[k]) * 1.001;
-            o[k] = p0[k] - ((double)p1[k] - p0[k]) * 0.0005;
-        }
-        perpendicular(d, u);
-        v[0] = d[1] * u[2] - d[2] * u[1];
-        v[1] = d[2] * u[0] - d[0] * u[2];
-        v[2] = d[0] * u[1] - d[1] * u[0];
-        double vl = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-        for (int k = 0; k < 3; k++)
-            v[k] /= vl;
-        outbuf_puts(ob, "texture{pigment{gradient x color_map{[0 ");
-        put_rgb(ob, l->color[0]);
-        outbuf_puts(ob, "][1 ");
-        put_rgb(ob, l->color[1]);
-        outbuf_puts(ob, "]}matrix<");
-        const double *rows[4] = {d, u, v, o};
-        for (int r = 0; r < 4; r++)
-            for (int k = 0; k < 3; k++) {
-                if (r || k)
-                    outbuf_putc(ob, ',');
-                outbuf_f32(ob, (float)rows[r][k]);
-            }
-        outbuf_puts(ob, ">}finish{RGL_U}}");
-    }
-    outbuf_puts(ob, "}\n");
-}
-
-static void write_point(outbuf *ob, const scene_point *pt, const scene_camera *cam)
-{
-    if (!finite3f(pt->p) || !(pt->hx > 0) || !(pt->hy > 0) || !isfinite(pt->hx) ||
-        !isfinite(pt->hy))
-        return;
-    if (pt->round) {
-        outbuf_puts(ob, "sphere{");
-        put_vec3f(ob, pt->p);
-        outbuf_putc(ob, ',');
-        outbuf_f32(ob, pt->hy);
-    } else {
-        /* GL's aliased point: a square facing the camera, size x size pixels. */
-        double r[3], u[3], rl = 0, ul = 0;
-        for (int k = 0; k < 3; k++) {
-            rl += cam->right[k] * cam->right[k];
-            ul += cam->up[k] * cam->up[k];
-        }
-        rl = sqrt(rl);
-        ul = sqrt(ul);
-        if (!(rl > 0) || !(ul > 0))
-            return;
-        for (int k = 0; k < 3; k++) {
-            r[k] = cam->right[k] / rl * pt->hx;
-            u[k] = cam->up[k] / ul * pt->hy;
-        }
-        static const int sx[5] = {-1, 1, 1, -1, -1}, sy[5] = {-1, -1, 1, 1, -1};
-        outbuf_puts(ob, "polygon{5");
-        for (int i = 0; i < 5; i++) {
-            float c[3];
-            for (int k = 0; k < 3; k++)
-                c[k] = (float)(pt->p[k] + sx[i] * r[k] + sy[i] * u[k]);
+    for (size_t i = 0; i < s->npoints; i++) {
+        const scene_point *pt = &s->points[i];
+        if (!finite3f(pt->p) || !finite3f(pt->right) || !finite3f(pt->up))
+            continue;
+        if (pt->round) {
+            float r = sqrtf(pt->up[0] * pt->up[0] + pt->up[1] * pt->up[1] + pt->up[2] * pt->up[2]);
+            if (!(r > 0) || !isfinite(r))
+                continue;
+            outbuf_puts(ob, "sphere{");
+            put_vec3f(ob, pt->p);
             outbuf_putc(ob, ',');
-            put_vec3f(ob, c);
+            outbuf_f32(ob, r);
+            outbuf_putc(ob, ' ');
+            put_unlit_texture(ob, pt->color);
+            outbuf_puts(ob, "}\n");
+            continue;
         }
+        static const int sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+        float c[4][3];
+        for (int v = 0; v < 4; v++)
+            for (int k = 0; k < 3; k++)
+                c[v][k] = pt->p[k] + (float)sx[v] * pt->right[k] + (float)sy[v] * pt->up[k];
+        const float *col[4] = {pt->color, pt->color, pt->color, pt->color};
+        if (add_quad(w, c, col) != 0)
+            return -1;
     }
-    outbuf_putc(ob, ' ');
-    put_unlit_texture(ob, pt->color);
-    outbuf_puts(ob, "}\n");
+    scene_look look;
+    memset(&look, 0, sizeof look);
+    look.material = look.texture = -1;
+    return write_mesh2(w, ob, w->bverts, w->btris, w->nbtris, &look, NULL);
 }
 
 /* ---- The file ------------------------------------------------------------------------- */
@@ -533,13 +504,14 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
         /* A union needs two members to be happy in every POV-Ray version;
          * an empty sphere (radius 0 is legal, never hit) makes sure. */
         outbuf_puts(ob, "sphere{0,0}\n");
-        for (size_t i = 0; i < s->nmeshes; i++)
-            if (write_mesh(w, ob, s, &s->meshes[i]) != 0)
+        for (size_t i = 0; i < s->nmeshes; i++) {
+            const scene_mesh *m = &s->meshes[i];
+            if (write_mesh2(w, ob, s->verts, s->tris + m->first_tri, m->tri_count, &m->look,
+                            m->in_eye ? NULL : &m->to_eye) != 0)
                 return -1;
-        for (size_t i = 0; i < s->nlines; i++)
-            write_line(ob, &s->lines[i]);
-        for (size_t i = 0; i < s->npoints; i++)
-            write_point(ob, &s->points[i], &s->camera);
+        }
+        if (write_flat_items(w, ob, s) != 0)
+            return -1;
         write_clip(ob, &s->camera);
         outbuf_puts(ob, "}\n");
     }

@@ -70,20 +70,22 @@ typedef struct scene_mesh {
     size_t first_tri, tri_count; /* range in scene.tris */
 } scene_mesh;
 
-/* A line segment in eye space; r is the radius at each end that keeps the
- * on-screen width equal to glLineWidth. */
+/* A line segment in eye space, drawn as GL rasterises it: a flat band
+ * facing the camera, from p[0] to p[1], whose edges lie at p[i] +- half[i]
+ * (eye-space vectors parallel to the image plane, sized so that the band
+ * covers the pixels GL's line of that width covers). */
 typedef struct scene_line {
     float p[2][3];
-    float r[2];
+    float half[2][3];
     float color[2][4]; /* equal when flat shaded */
 } scene_line;
 
-/* A point in eye space: a square of half-extents hx, hy (eye units) along
- * the camera's right and up vectors, or a disc-like sphere of radius hx
- * when round (GL_POINT_SMOOTH). */
+/* A point in eye space: GL's square of size x size pixels, corners at
+ * p +- right +- up (eye-space half extents along the image axes), or, when
+ * round (GL_POINT_SMOOTH), a sphere of radius |up|. */
 typedef struct scene_point {
     float p[3];
-    float hx, hy;
+    float right[3], up[3];
     float color[4];
     bool round;
 } scene_point;
