@@ -629,8 +629,11 @@ static void stream_free(rgl_stream *s)
 }
 
 /* Writes the stream's open frame, if it holds commands. Under the stream's
- * lock, not file_mu. Leaves the frame closed and empty either way. */
-static void frame_write(rgl_stream *s)
+ * lock, not file_mu. With `reset` (only on the stream's own thread, whose
+ * hot path moves pos without a lock) it leaves the frame closed and empty;
+ * without it, the owner's next frame end finds the trace closed or
+ * reopened and drops what it holds then. */
+static void frame_write(rgl_stream *s, bool reset)
 {
     stream_sync(s);
     if (s->frame_open && s->frame.size > 0 && s->gen == atomic_load(&g.gen)) {
@@ -651,6 +654,8 @@ static void frame_write(rgl_stream *s)
         pthread_mutex_unlock(&g.file_mu);
         s->frame_number++;
     }
+    if (!reset)
+        return;
     s->frame_open = false;
     s->frame.size = 0;
     stream_window(s, false);
@@ -688,7 +693,7 @@ static void stream_destroy_key(void *arg)
         stream_sync(s);
         s->compiling = false;
     }
-    frame_write(s);
+    frame_write(s, true);
     pthread_mutex_unlock(s->lock);
     rgl_tls_stream = NULL;
     stream_free(s);
@@ -808,7 +813,7 @@ void rgl_frame_end(void)
     if (!s)
         return;
     pthread_mutex_lock(s->lock);
-    frame_write(s);
+    frame_write(s, true);
     pthread_mutex_unlock(s->lock);
     fail_report();
 }
@@ -840,7 +845,7 @@ static void close_trace(void)
     pthread_mutex_lock(&g.list_mu);
     for (rgl_stream *s = g.streams; s; s = s->next) {
         pthread_mutex_lock(s->lock);
-        frame_write(s);
+        frame_write(s, s == rgl_tls_stream);
         pthread_mutex_unlock(s->lock);
     }
     pthread_mutex_lock(&g.file_mu);

@@ -3,6 +3,8 @@
  * numbers in order within each stream. A third thread exits with its frame
  * still open: the thread-exit handler writes it. */
 #include <pthread.h>
+#include <stdatomic.h>
+#include <time.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -51,6 +53,53 @@ static void *run_unfinished(void *arg)
     rayglColor3f(1, 2, 3);
     rayglVertex3f(4, 5, 6);
     return NULL; /* no swap: the frame is written at thread exit */
+}
+
+static atomic_bool stop;
+
+/* Records frames until told to stop, across the trace's close. */
+static void *run_until_stopped(void *arg)
+{
+    (void)arg;
+    for (uint32_t f = 0; !atomic_load(&stop); f++) {
+        rayglBegin(GL_POINTS);
+        for (uint32_t v = 0; v < 5000; v++)
+            rayglVertex3f(7, (float)f, (float)v);
+        rayglEnd();
+        rayglutSwapBuffers();
+    }
+    return NULL;
+}
+
+/* The trace closes while another thread records: what that thread had
+ * recorded of its frame is written, the rest goes nowhere, and nothing
+ * breaks. */
+static void test_close_while_recording(const char *path)
+{
+    CHECK(rayglRecordOpen(path) == 0);
+    pthread_t th;
+    CHECK(pthread_create(&th, NULL, run_until_stopped, NULL) == 0);
+    struct timespec ts = {0, 50 * 1000 * 1000};
+    nanosleep(&ts, NULL);
+    rayglRecordClose();
+    nanosleep(&ts, NULL);
+    atomic_store(&stop, true);
+    pthread_join(th, NULL);
+    rgl_reader *r = trace_open(path);
+    if (!r)
+        return;
+    size_t n = rgl_reader_frame_count(r);
+    CHECKM(n >= 1, "%zu frames", n);
+    for (size_t i = 0; i < n; i++) {
+        rgl_frame_info fi;
+        trace_cmds c = trace_frame(r, i, &fi);
+        CHECK(c.clean && fi.number == i);
+        /* Whole frames, but for the last which may be cut at a command. */
+        if (i + 1 < n)
+            CHECK(trace_cmds_count(&c, RGL_OP_Vertex3f) == 5000);
+        trace_cmds_free(&c);
+    }
+    rgl_reader_destroy(r);
 }
 
 /* Checks every vertex of the frame belongs to stream's worker and frame. */
@@ -140,6 +189,8 @@ int main(void)
     CHECK(next_number[1] == FRAMES && next_number[2] == FRAMES && next_number[3] == 1);
     CHECK(worker_of[1] + worker_of[2] == 3 && worker_of[1] != worker_of[2]);
     rgl_reader_destroy(r);
+    unlink(path);
+    test_close_while_recording(path);
     if (!check_failures) {
         unlink(path);
         rmdir(dir);
