@@ -12,6 +12,12 @@
 
 #include "format.h"
 
+/* The table this file expands. Only tests/format overrides it, to show that a
+ * table with a duplicate opcode does not compile. */
+#ifndef RGL_COMMANDS_DEF
+#define RGL_COMMANDS_DEF "commands.def"
+#endif
+
 /* ---- Status strings ------------------------------------------------------- */
 
 static const char *const status_strings[RGL_STATUS_COUNT] = {
@@ -47,7 +53,7 @@ const char *rgl_status_str(rgl_status status)
 #define RGL_CMD(op, api, gen, name, handler, ...)                                   \
     static const rgl_arg_desc args_##name[] = {RGL_MAP(RGL_DESC_, __VA_ARGS__){      \
         RGL_ARG_SCALAR, 0, 0, NULL}};
-#include "commands.def"
+#include RGL_COMMANDS_DEF
 #undef RGL_CMD
 
 #define RGL_CMD(op, api, gen, name, handler, ...)                                   \
@@ -57,12 +63,12 @@ const char *rgl_status_str(rgl_status status)
     static const rgl_cmd_info info_##name = {                                       \
         op, RGL_API_##api, 0 RGL_MAP(RGL_COUNT_, __VA_ARGS__), RGL_NAMESTR(api, name), \
         #handler, args_##name};
-#include "commands.def"
+#include RGL_COMMANDS_DEF
 #undef RGL_CMD
 
 static const rgl_cmd_info *const all_rows[] = {
 #define RGL_CMD(op, api, gen, name, handler, ...) &info_##name,
-#include "commands.def"
+#include RGL_COMMANDS_DEF
 #undef RGL_CMD
 };
 
@@ -75,7 +81,7 @@ const rgl_cmd_info *rgl_cmd_info_get(uint32_t opcode)
 #define RGL_CMD(op, api, gen, name, handler, ...)                                   \
     case op:                                                                        \
         return &info_##name;
-#include "commands.def"
+#include RGL_COMMANDS_DEF
 #undef RGL_CMD
     default:
         return NULL;
