@@ -30,7 +30,13 @@ static int draw(int w, int h)
     rayglViewport(0, 0, w, h);
     rayglMatrixMode(GL_PROJECTION);
     rayglLoadIdentity();
-    rayglOrtho(45.0 - 25.0 * aspect, 45.0 + 25.0 * aspect, 20.0, 70.0, -100.0, 100.0);
+    /* The box's silhouette edges run at exactly 45 degrees through whole
+     * pixel coordinates, hence through pixel centres, where GL's and
+     * POV-Ray's tie rules differ: shift the view by (0.13, 0.37) pixel. */
+    double px = 50.0 / (double)h;
+    double dx = 0.13 * px, dy = 0.37 * px;
+    rayglOrtho(45.0 - 25.0 * aspect + dx, 45.0 + 25.0 * aspect + dx, 20.0 + dy, 70.0 + dy, -100.0,
+               100.0);
     rayglMatrixMode(GL_MODELVIEW);
 
     rayglClearColor(0.0f, 0.0f, 0.0f, 1.0f);

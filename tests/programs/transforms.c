@@ -28,7 +28,9 @@ static int draw(int w, int h)
     rayglViewport(0, 0, w, h);
     rayglMatrixMode(GL_PROJECTION);
     rayglLoadIdentity();
-    rayglOrtho(-4, 4, -3, 3, -10, 10);
+    /* Shifted by (0.13, 0.37) pixel at 320x240, so that edges between
+     * whole-pixel vertices do not run through pixel centres. */
+    rayglOrtho(-4 + 0.00325, 4 + 0.00325, -3 + 0.00925, 3 + 0.00925, -10, 10);
     rayglMatrixMode(GL_MODELVIEW);
     rayglLoadIdentity();
 
