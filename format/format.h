@@ -203,10 +203,16 @@ void rgl_cmd_iter_init(rgl_cmd_iter *it, const uint8_t *data, size_t size, uint6
 
 /* Decodes the next command into *cmd. Returns RGL_OK, RGL_END at the end, or
  * an error (details in it->error); after an error the iterator stays at the
- * failing command and keeps returning the same error. */
+ * failing command and keeps returning the same error. Never allocates; every
+ * count and length is checked against its limit and the bytes left first;
+ * varints must be canonical (docs/format.md, section 1), so a decoded command
+ * re-encodes (rgl_cmd_encode) to exactly its input bytes. */
 rgl_status rgl_cmd_next(rgl_cmd_iter *it, rgl_cmd *cmd);
 
-/* A scalar or the k-th element of an array argument, as double / int64. */
+/* A scalar (k = 0) or the k-th element of an array argument (or byte of a
+ * blob or string), as double / int64; 0 when k is out of range. rgl_arg_i
+ * truncates floating values toward zero, saturates at the int64 limits and
+ * gives 0 for NaN. */
 double rgl_arg_f(const rgl_arg *arg, uint32_t k);
 int64_t rgl_arg_i(const rgl_arg *arg, uint32_t k);
 
