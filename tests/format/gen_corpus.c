@@ -91,9 +91,9 @@ int main(int argc, char **argv)
         return 2;
     }
     rgl_cmd_info_all(&nrows);
-    rc |= write_trace(&r, argv[1], "trace-index.raygl", true, 64);
-    rc |= write_trace(&r, argv[1], "trace-noindex.raygl", false, 64);
-    rc |= write_trace(&r, argv[1], "trace-small.raygl", true, 256);
+    rc |= write_trace(&r, argv[1], "trace-index.bin", true, 64);
+    rc |= write_trace(&r, argv[1], "trace-noindex.bin", false, 64);
+    rc |= write_trace(&r, argv[1], "trace-small.bin", true, 256);
     /* Bare command sequences, a slice of the table each. */
     for (int k = 0; row < nrows; k++) {
         len = random_sequence(&r, row, 32, &row);
