@@ -1,10 +1,10 @@
 /* fuzz_decode.c: the libFuzzer target for the reader, decoder and dumper.
  *
- * Each input is used three ways: as a whole trace (rgl_reader_open_memory,
+ * Each input is used four ways: as a whole trace (rgl_reader_open_memory,
  * every frame and resource, every command decoded and formatted); as a bare
- * command sequence; and wrapped by rgl_trace_builder into a valid trace, so
- * the checksums hold and the fuzzer reaches the decoder through the reader
- * too. Beyond "no crash", it checks what must hold for any input: a decoded
+ * command sequence; wrapped by rgl_trace_builder into a valid trace, so the
+ * checksums hold and the fuzzer reaches the decoder through the reader too;
+ * and as a list of chunks given valid checksums and an END trailer. Beyond "no crash", it checks what must hold for any input: a decoded
  * command re-encodes to exactly its input bytes, errors point inside the
  * input, and rgl_cmd_format agrees with itself at every buffer size.
  * fuzz/replay.c runs the same function over the corpus in every meson test.
@@ -140,10 +140,59 @@ static void wrapped(const uint8_t *data, size_t size)
     }
 }
 
+/* The input as a list of chunks, [type % 8][length][payload] each, given
+ * correct headers and checksums, then an END chunk aimed at one of them: the
+ * reader's chunk handling and index checks see fuzzed payloads behind valid
+ * CRCs (INDEX payloads above all). */
+static void chunked(const uint8_t *data, size_t size)
+{
+    size_t cap = RGL_FILE_HEADER_SIZE + size * 21 + 64, n = RGL_FILE_HEADER_SIZE, count = 0;
+    uint8_t *buf = malloc(cap), end[8];
+    uint64_t offsets[64] = {0};
+    const uint8_t *p = data, *e = data + size;
+
+    if (!buf || size < 1)
+        goto out;
+    rgl_file_header_encode(buf, 0);
+    p++; /* the first byte picks the chunk END points at */
+    while (e - p >= 2) {
+        uint8_t type = p[0] % 8;
+        uint32_t len = p[1];
+        p += 2;
+        if (len > (size_t)(e - p))
+            len = (uint32_t)(e - p);
+        if (count < 64)
+            offsets[count] = n;
+        count++;
+        rgl_chunk_header_encode(buf + n, type, len);
+        memcpy(buf + n + RGL_CHUNK_HEADER_SIZE, p, len);
+        uint32_t crc = rgl_crc32c(0, p, len);
+        memcpy(buf + n + RGL_CHUNK_HEADER_SIZE + len, (uint8_t[]){(uint8_t)crc,
+               (uint8_t)(crc >> 8), (uint8_t)(crc >> 16), (uint8_t)(crc >> 24)}, 4);
+        n += RGL_CHUNK_HEADER_SIZE + len + RGL_CHUNK_TRAILER_SIZE;
+        p += len;
+    }
+    if (count) {
+        uint64_t at = offsets[data[0] % (count < 64 ? count : 64)];
+        for (int k = 0; k < 8; k++)
+            end[k] = (uint8_t)(at >> (8 * k));
+        rgl_chunk_header_encode(buf + n, RGL_CHUNK_END, 8);
+        memcpy(buf + n + RGL_CHUNK_HEADER_SIZE, end, 8);
+        uint32_t crc = rgl_crc32c(0, end, 8);
+        memcpy(buf + n + RGL_CHUNK_HEADER_SIZE + 8, (uint8_t[]){(uint8_t)crc,
+               (uint8_t)(crc >> 8), (uint8_t)(crc >> 16), (uint8_t)(crc >> 24)}, 4);
+        n += 28;
+    }
+    read_trace(buf, n);
+out:
+    free(buf);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     read_trace(data, size);
     decode_sequence(data, size, 0);
     wrapped(data, size);
+    chunked(data, size);
     return 0;
 }
