@@ -20,12 +20,18 @@
  *   gamma       the gAMA / sRGB tags of both files (values are compared as
  *               stored: no gamma conversion is applied when reading)
  *   mismatch    bounding box of the pixels beyond T
+ *   core        pixels beyond T whose 4 edge neighbours are all beyond T
+ *               too: an area drawn wrong (a wrong colour, a missing or extra
+ *               primitive, 3 pixels thick or more), as opposed to edges
+ *               that differ by a pixel, which leave thin lines of mismatch
+ *               and no core
  *
  * Options:
  *   --tol T              per-channel tolerance in levels (default 2)
  *   --min-match F        fail when the fraction within T is below F (default 0.99)
  *   --max-mean M         fail when the overall mean difference exceeds M levels
  *   --min-silhouette S   fail when the silhouette agreement is below S
+ *   --max-core N         fail when more than N pixels are mismatch core
  *   --background R,G,B   background colour in levels (default: the most
  *                        frequent colour on A's border)
  *   --check-gamma        fail unless B is tagged for display gamma 2.2
@@ -60,6 +66,7 @@ typedef struct options {
     double min_match;
     double max_mean; /* < 0: not checked */
     double min_sil;  /* < 0: not checked */
+    long max_core;   /* < 0: not checked */
     bool have_bg;
     int bg[3];
     bool check_gamma;
@@ -72,7 +79,7 @@ typedef struct options {
 static void usage(FILE *f)
 {
     fputs("usage: imgcmp [--tol T] [--min-match F] [--max-mean M] [--min-silhouette S]\n"
-          "              [--background R,G,B] [--check-gamma] [--diff OUT.png]\n"
+          "              [--max-core N] [--background R,G,B] [--check-gamma] [--diff OUT.png]\n"
           "              [--at X,Y]... A.png B.png\n",
           f);
 }
@@ -274,6 +281,7 @@ static int parse_args(int argc, char **argv, options *o)
     o->min_match = 0.99;
     o->max_mean = -1;
     o->min_sil = -1;
+    o->max_core = -1;
     int npos = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -300,6 +308,10 @@ static int parse_args(int argc, char **argv, options *o)
                 bad = parse_double(v, &o->max_mean);
             } else if (strcmp(a, "--min-silhouette") == 0) {
                 bad = parse_double(v, &o->min_sil);
+            } else if (strcmp(a, "--max-core") == 0) {
+                int n = 0;
+                bad = parse_ints(v, &n, 1, 0, 1 << 30);
+                o->max_core = n;
             } else if (strcmp(a, "--background") == 0) {
                 bad = parse_ints(v, o->bg, 3, 0, 255);
                 o->have_bg = true;
@@ -418,6 +430,35 @@ int main(int argc, char **argv)
             fg_both += fa && fb;
         }
 
+    /* Mismatch core: beyond T, and so are the 4 edge neighbours (the image
+     * border is never core). A pixel-wide line of mismatch, even a diagonal
+     * staircase, has no core; an area wrong and at least 3 pixels thick in
+     * both directions has. */
+    size_t core = 0;
+    int core_x = -1, core_y = -1;
+    for (int y = 1; y + 1 < h; y++)
+        for (int x = 1; x + 1 < w; x++) {
+            static const int nx[5] = {0, -1, 1, 0, 0}, ny[5] = {0, 0, 0, -1, 1};
+            bool all = true;
+            for (int k = 0; k < 5 && all; k++) {
+                size_t i = ((size_t)(y + ny[k]) * w + (size_t)(x + nx[k])) * 3;
+                int m = 0;
+                for (int c = 0; c < 3; c++) {
+                    int d = abs((int)a.rgb[i + c] - (int)b.rgb[i + c]);
+                    if (d > m)
+                        m = d;
+                }
+                all = m > o.tol;
+            }
+            if (all) {
+                if (core == 0) {
+                    core_x = x;
+                    core_y = y;
+                }
+                core++;
+            }
+        }
+
     double frac = (double)within / (double)npix;
     double mean[3], mean_all = 0;
     for (int c = 0; c < 3; c++) {
@@ -447,6 +488,10 @@ int main(int argc, char **argv)
         printf("mismatch: x %d..%d, y %d..%d\n", bx0, bx1, by0, by1);
     else
         printf("mismatch: none\n");
+    if (core)
+        printf("core: %zu pixels (first at (%d,%d))\n", core, core_x, core_y);
+    else
+        printf("core: 0 pixels\n");
     for (int k = 0; k < o.nprobes; k++) {
         int x = o.probe[k][0], y = o.probe[k][1];
         if (x >= w || y >= h) {
@@ -509,6 +554,8 @@ int main(int argc, char **argv)
         FAILED("mean diff %.4f > %.4f", mean_all, o.max_mean);
     if (o.min_sil >= 0 && sil < o.min_sil)
         FAILED("silhouette %.5f < %.5f", sil, o.min_sil);
+    if (o.max_core >= 0 && core > (size_t)o.max_core)
+        FAILED("mismatch core %zu > %ld pixels", core, o.max_core);
     if (o.check_gamma && !display_gamma_22(&b))
         FAILED("B is not tagged for display gamma 2.2");
 #undef FAILED
@@ -521,6 +568,8 @@ int main(int argc, char **argv)
             printf(", mean <= %.4f", o.max_mean);
         if (o.min_sil >= 0)
             printf(", silhouette >= %.5f", o.min_sil);
+        if (o.max_core >= 0)
+            printf(", core <= %ld", o.max_core);
         printf(")\n");
     }
     free(a.rgb);

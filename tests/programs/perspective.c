@@ -64,7 +64,10 @@ static int draw(int w, int h)
     rayglVertex3f(2.0f, 0.0f, -1.2f);
     rayglEnd();
 
-    /* A wall seen at a slant; colours interpolate perspective-correctly. */
+    /* A wall seen at a slant; colours interpolate perspective-correctly.
+     * It stays wholly in view: Mesa splits a GL_QUADS quad along v0-v2, but
+     * along another diagonal once the quad is clipped (docs/testing.md), and
+     * with these non-affine corner colours that would show. */
     rayglBegin(GL_QUADS);
     rayglColor3f(1.0f, 0.0f, 0.0f);
     rayglVertex3f(-4.5f, 0.0f, 1.5f);
