@@ -627,6 +627,8 @@ static void end_primitive(interp *ip)
         return; /* the pool was cleared under us (cannot happen: Clear is refused in Begin) */
     uint32_t n = (uint32_t)(s->nverts - ip->prim_first);
     GLenum mode = ip->prim_mode;
+    if (n == 0)
+        return;
     assembly as;
     memset(&as, 0, sizeof as);
     as.ip = ip;

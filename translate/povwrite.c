@@ -506,7 +506,8 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
         outbuf_puts(ob, "sphere{0,0}\n");
         for (size_t i = 0; i < s->nmeshes; i++) {
             const scene_mesh *m = &s->meshes[i];
-            if (write_mesh2(w, ob, s->verts, s->tris + m->first_tri, m->tri_count, &m->look,
+            if (m->tri_count > 0 &&
+                write_mesh2(w, ob, s->verts, s->tris + m->first_tri, m->tri_count, &m->look,
                             m->in_eye ? NULL : &m->to_eye) != 0)
                 return -1;
         }

@@ -1,0 +1,140 @@
+/* fuzz_translate.c: libFuzzer target for the whole translation.
+ *
+ * Input: a RayGL trace (it starts with the file magic), or else a bare
+ * command sequence, which the target wraps into a trace: byte 0 picks the
+ * frame flags and whether the same bytes also serve as the frame's state
+ * snapshot, the rest are the commands, played as frame 0 and again as a
+ * STATE_CARRIED frame 1. Every frame is decoded, interpreted and written
+ * as SDL to memory, then the SDL is checked: printable text, balanced
+ * braces and angle brackets, no nan or inf, no directive but #version and
+ * #declare. A failed check aborts (a crash for the fuzzer).
+ *
+ * Built as a libFuzzer binary with -Dfuzz=true and CC=clang; the replay
+ * driver (replay.c) runs it over the corpus and every kept crasher in each
+ * meson test.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "diag.h"
+#include "format.h"
+#include "frame.h"
+#include "outbuf.h"
+#include "povwrite.h"
+
+#define MAX_FRAMES 16
+
+static void check(int ok, const char *what, const char *text, size_t len)
+{
+    if (ok)
+        return;
+    fprintf(stderr, "fuzz_translate: %s\n--- SDL (%zu bytes) ---\n%.*s\n", what, len,
+            (int)(len < 4000 ? len : 4000), text);
+    abort();
+}
+
+static int word_at(const char *p, const char *end, const char *w)
+{
+    size_t n = strlen(w);
+    if ((size_t)(end - p) < n)
+        return 0;
+    for (size_t i = 0; i < n; i++) {
+        char c = p[i];
+        if (c >= 'A' && c <= 'Z')
+            c = (char)(c - 'A' + 'a');
+        if (c != w[i])
+            return 0;
+    }
+    return 1;
+}
+
+/* The SDL invariants: see the file comment. Comments are skipped. */
+static void check_sdl(const char *t, size_t len)
+{
+    const char *p = t, *end = t + len;
+    long braces = 0, angles = 0;
+    while (p < end) {
+        unsigned char c = (unsigned char)*p;
+        check(c == '\n' || (c >= 0x20 && c < 0x7f), "non-printable byte", t, len);
+        if (c == '/' && p + 1 < end && p[1] == '/') {
+            while (p < end && *p != '\n')
+                p++;
+            continue;
+        }
+        if (c == '#')
+            check(word_at(p, end, "#version") || word_at(p, end, "#declare"), "directive", t,
+                  len);
+        check(!word_at(p, end, "nan") && !word_at(p, end, "inf"), "nan or inf", t, len);
+        braces += c == '{';
+        braces -= c == '}';
+        angles += c == '<';
+        angles -= c == '>';
+        check(braces >= 0 && angles >= 0, "unbalanced", t, len);
+        p++;
+    }
+    check(braces == 0 && angles == 0, "unbalanced at the end", t, len);
+}
+
+static void translate_all(rgl_reader *r)
+{
+    translator *t = translator_create(r, NULL);
+    outbuf ob;
+    if (!t || outbuf_init(&ob, 1 << 16, NULL, NULL) != 0) {
+        translator_destroy(t);
+        return;
+    }
+    size_t n = rgl_reader_frame_count(r);
+    for (size_t i = 0; i < n && i < MAX_FRAMES; i++) {
+        diag_log log;
+        frame_result res;
+        diag_clear(&log);
+        if (translator_build(t, i, &log, &res) != RGL_OK)
+            continue;
+        pov_frame_info info = {"frame.pov", "fuzz.raygl", i, res.info.stream, res.info.number,
+                               res.frame_name};
+        ob.len = 0;
+        ob.failed = false;
+        if (translator_write_pov(t, &ob, &info) == 0)
+            check_sdl(ob.buf, ob.len);
+        ob.len = 0;
+        if (pov_write_ini(&ob, translator_scene(t), "out dir", "frame.pov", "frame.png") == 0)
+            check(memchr(ob.buf, 0, ob.len) == NULL, "NUL in ini", ob.buf, ob.len);
+    }
+    outbuf_finish(&ob);
+    translator_destroy(t);
+}
+
+int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
+{
+    rgl_reader *r = NULL;
+    rgl_trace_builder *b = NULL;
+    const uint8_t *trace = data;
+    size_t tsize = size;
+
+    if (size < RGL_FILE_MAGIC_SIZE || memcmp(data, RGL_FILE_MAGIC, RGL_FILE_MAGIC_SIZE) != 0) {
+        if (size < 1)
+            return 0;
+        uint32_t flags = data[0] & 3u, id = 0;
+        const uint8_t *cmds = data + 1;
+        size_t n = size - 1;
+        static const uint8_t none[1];
+        b = rgl_trace_builder_create();
+        if (!b)
+            return 0;
+        if ((data[0] & 4u) &&
+            rgl_trace_builder_resource(b, RGL_RES_COMMANDS, n ? cmds : none, n, &id) != RGL_OK)
+            goto done;
+        if (rgl_trace_builder_frame(b, 0, 0, flags, id, n ? cmds : none, n) != RGL_OK ||
+            rgl_trace_builder_frame(b, 0, 1, RGL_FRAME_STATE_CARRIED, 0, n ? cmds : none, n) !=
+                RGL_OK ||
+            rgl_trace_builder_finish(b, (data[0] & 8u) == 0, &trace, &tsize) != RGL_OK)
+            goto done;
+    }
+    if (rgl_reader_open_memory(trace, tsize, &r, NULL) == RGL_OK)
+        translate_all(r);
+done:
+    rgl_reader_destroy(r);
+    rgl_trace_builder_destroy(b);
+    return 0;
+}

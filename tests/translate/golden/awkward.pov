@@ -1,0 +1,52 @@
+// awkward.pov: written by raygl2pov 0.1.0 from golden.raygl, frame 0 (stream 0, frame 0 of the stream)
+// Eye coordinates of the OpenGL frame: x right, y up, the camera looks down -z.
+#version 3.7;
+global_settings{assumed_gamma 2.2}
+camera{perspective
+ location <0,0,0>
+ right <2,0,0>
+ up <0,1.5,0>
+ direction <0,0,-1>
+}
+background{rgb<0,0,0>}
+#declare RGL_U=finish{ambient 0 diffuse 0 emission 1}
+union{
+sphere{0,0}
+mesh2{
+vertex_vectors{6,
+<0,0,0>,
+<1,1,0>,
+<2,2,0>,
+<-1,-1,0>,
+<0,-1,0>,
+<-1,0,0>}
+texture_list{2,
+texture{pigment{rgb<1,1,1>}finish{RGL_U}},
+texture{pigment{rgb<1,0.5,0>}finish{RGL_U}}}
+face_indices{1,
+<3,5,4>,1}
+matrix<1,0,0,0,1,0,0,0,1,0,0,-5>
+}
+mesh2{
+vertex_vectors{9,
+<0,0,-5>,
+<0.90909094,0,-5>,
+<0,1,-5>,
+<1,0,-5>,
+<0,0,-4>,
+<-1.7857143,-1.3095238,-1.9047619>,
+<-1.3095238,-1.3095238,-1.9047619>,
+<-1.3095238,-1.0714285,-1.9047619>,
+<-1.7857143,-1.0714285,-1.9047619>}
+texture_list{2,
+texture{pigment{rgb<1,0.5,0>}finish{RGL_U}},
+texture{pigment{rgb<1,1,1>}finish{RGL_U}}}
+face_indices{4,
+<0,2,1>,0,
+<0,4,3>,0,
+<5,7,6>,1,
+<5,8,7>,1}
+
+}
+clipped_by{plane{<0,0,1>,-1}plane{<0,0,-1>,20}}
+}

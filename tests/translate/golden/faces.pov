@@ -1,0 +1,57 @@
+// faces.pov: written by raygl2pov 0.1.0 from golden.raygl, frame 0 (stream 0, frame 0 of the stream)
+// Eye coordinates of the OpenGL frame: x right, y up, the camera looks down -z.
+#version 3.7;
+global_settings{assumed_gamma 2.2}
+camera{orthographic
+ location <100,50,1>
+ right <200,0,0>
+ up <0,100,0>
+ direction <0,0,-1>
+}
+background{rgb<0,0,0.2>}
+#declare RGL_U=finish{ambient 0 diffuse 0 emission 1}
+union{
+sphere{0,0}
+mesh2{
+vertex_vectors{7,
+<10,10,0>,
+<50,10,0>,
+<30,50,0>,
+<160,60,0>,
+<190,60,0>,
+<190,90,0>,
+<160,90,0>}
+texture_list{2,
+texture{pigment{rgb<0,1,0>}finish{RGL_U}},
+texture{pigment{rgb<0.5,0.25,1>}finish{RGL_U}}}
+face_indices{3,
+<0,2,1>,0,
+<3,5,4>,1,
+<3,6,5>,1}
+
+}
+mesh2{
+vertex_vectors{12,
+<110,9.5,0>,
+<110,10.5,0>,
+<150,10.5,0>,
+<150,9.5,0>,
+<150,49.5,0>,
+<150,50.5,0>,
+<110,50.5,0>,
+<110,49.5,0>,
+<109.5,50,0>,
+<110.5,50,0>,
+<110.5,10,0>,
+<109.5,10,0>}
+face_indices{6,
+<0,2,1>,
+<0,3,2>,
+<4,6,5>,
+<4,7,6>,
+<8,10,9>,
+<8,11,10>}
+texture{pigment{rgb<1,1,1>}finish{RGL_U}}
+}
+clipped_by{plane{<0,0,1>,1}plane{<0,0,-1>,1}}
+}

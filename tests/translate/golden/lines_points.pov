@@ -1,0 +1,56 @@
+// lines_points.pov: written by raygl2pov 0.1.0 from golden.raygl, frame 0 (stream 0, frame 0 of the stream)
+// Eye coordinates of the OpenGL frame: x right, y up, the camera looks down -z.
+#version 3.7;
+global_settings{assumed_gamma 2.2}
+camera{orthographic
+ location <160,120,1>
+ right <320,0,0>
+ up <0,240,0>
+ direction <0,0,-1>
+}
+background{rgb<0,0,0>}
+#declare RGL_U=finish{ambient 0 diffuse 0 emission 1}
+union{
+sphere{0,0}
+sphere{<80.5,200.5,0>,2.5 texture{pigment{rgb<1,1,1>}finish{RGL_U}}}
+mesh2{
+vertex_vectors{18,
+<20,18.5,0>,
+<20,21.5,0>,
+<150,41.5,0>,
+<150,38.5,0>,
+<200,19,0>,
+<200,21,0>,
+<300,31,0>,
+<300,29,0>,
+<299,30,0>,
+<301,30,0>,
+<251,120,0>,
+<249,120,0>,
+<201,20,0>,
+<199,20,0>,
+<38,198,0>,
+<43,198,0>,
+<43,203,0>,
+<38,203,0>}
+texture_list{5,
+texture{pigment{rgb<1,0,0>}finish{RGL_U}},
+texture{pigment{rgb<0,0,1>}finish{RGL_U}},
+texture{pigment{rgb<0,1,1>}finish{RGL_U}},
+texture{pigment{rgb<1,1,0>}finish{RGL_U}},
+texture{pigment{rgb<1,1,1>}finish{RGL_U}}}
+face_indices{10,
+<0,2,1>,0,1,0,
+<0,3,2>,0,1,1,
+<4,6,5>,2,
+<4,7,6>,2,
+<8,10,9>,2,
+<8,11,10>,2,
+<11,12,10>,3,
+<11,13,12>,3,
+<14,16,15>,4,
+<14,17,16>,4}
+
+}
+clipped_by{plane{<0,0,1>,1}plane{<0,0,-1>,1}}
+}

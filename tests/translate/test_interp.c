@@ -1,0 +1,619 @@
+/* test_interp.c: the GL state machine, against hand-computed values.
+ *
+ * Matrices (the paper's modelview, every transform call, GLU's helpers,
+ * @Matrix), stack limits, calls GL rejects, primitive assembly of all ten
+ * glBegin modes with winding and provoking vertex, culling, polygon mode
+ * and edge flags, attribute conversion, attribute stack, mesh runs, and
+ * glClear erasing earlier draws.
+ */
+#include <GL/gl.h>
+#include <string.h>
+
+#include "check.h"
+#include "interp.h"
+#include "talloc.h"
+#include "tracegen.h"
+
+static scene sc;
+static diag_log dlog;
+
+static interp *fresh(void)
+{
+    scene_reset(&sc);
+    diag_clear(&dlog);
+    interp *ip = interp_create(&sc, &dlog);
+    interp_begin_frame(ip);
+    return ip;
+}
+
+static void run(interp *ip, seq *s)
+{
+    rgl_error err;
+    CHECK(interp_run(ip, s->data, s->len, 0, &err) == RGL_OK);
+    seq_free(s);
+}
+
+static uint64_t count(diag_kind k) { return dlog.e[k].count; }
+
+static void check_matrix(const mat4 *m, const double *expect, double eps)
+{
+    for (int i = 0; i < 16; i++)
+        CHECK_NEAR(m->m[i], expect[i], eps);
+}
+
+/* ---- Matrices ------------------------------------------------------------------ */
+
+static void test_paper_modelview(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD0(&s, LoadIdentity);
+    CMD(&s, Translatef, 45, 45, 45);
+    CMD(&s, Rotatef, 45, 1, -1, 0);
+    run(ip, &s);
+    /* The matrix the paper printed, column by column. */
+    const double paper[16] = {0.853553, -0.146447, 0.5,      0, -0.146447, 0.853553, 0.5, 0,
+                              -0.5,     -0.5,      0.707107, 0, 45,        45,       45,  1};
+    check_matrix(interp_matrix(ip, INTERP_MV), paper, 1e-6);
+    interp_destroy(ip);
+}
+
+static void test_transforms(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Scaled, 2, 3, 4);
+    CMD(&s, Rotated, 90, 0, 0, 1);
+    run(ip, &s);
+    const double sr[16] = {0, 3, 0, 0, -2, 0, 0, 0, 0, 0, 4, 0, 0, 0, 0, 1};
+    check_matrix(interp_matrix(ip, INTERP_MV), sr, 1e-12);
+
+    /* Load/Mult and their transposes. */
+    seq_init(&s);
+    CMD(&s, LoadMatrixf, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16);
+    run(ip, &s);
+    const double ld[16] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};
+    check_matrix(interp_matrix(ip, INTERP_MV), ld, 0);
+    seq_init(&s);
+    CMD(&s, LoadTransposeMatrixd, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16);
+    run(ip, &s);
+    const double lt[16] = {1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15, 4, 8, 12, 16};
+    check_matrix(interp_matrix(ip, INTERP_MV), lt, 0);
+    seq_init(&s);
+    CMD0(&s, LoadIdentity);
+    CMD(&s, MultTransposeMatrixf, 1, 0, 0, 7, 0, 1, 0, 8, 0, 0, 1, 9, 0, 0, 0, 1);
+    CMD(&s, MultMatrixd, 2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, 1, 1, 1, 1);
+    run(ip, &s);
+    const double tm[16] = {2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, 8, 9, 10, 1};
+    check_matrix(interp_matrix(ip, INTERP_MV), tm, 1e-12);
+
+    /* glFrustum(-1, 1, -1, 1, 1, 3): the GL 1.x formula by hand. */
+    seq_init(&s);
+    CMD(&s, MatrixMode, GL_PROJECTION);
+    CMD(&s, Frustum, -2, 1, -1, 1, 1, 3);
+    run(ip, &s);
+    const double fr[16] = {2.0 / 3, 0, 0, 0, 0, 1, 0, 0, -1.0 / 3, 0, -2, -1, 0, 0, -3, 0};
+    check_matrix(interp_matrix(ip, INTERP_PROJ), fr, 1e-12);
+    seq_init(&s);
+    CMD0(&s, LoadIdentity);
+    CMD(&s, Ortho, 0, 4, 0, 2, -1, 3);
+    run(ip, &s);
+    const double orth[16] = {0.5, 0, 0, 0, 0, 1, 0, 0, 0, 0, -0.5, 0, -1, -1, -0.5, 1};
+    check_matrix(interp_matrix(ip, INTERP_PROJ), orth, 1e-12);
+    seq_init(&s);
+    CMD0(&s, LoadIdentity);
+    CMD(&s, Ortho2D, 0, 320, 0, 240);
+    run(ip, &s);
+    const double o2[16] = {2.0 / 320, 0, 0, 0, 0, 2.0 / 240, 0, 0, 0, 0, -1, 0, -1, -1, 0, 1};
+    check_matrix(interp_matrix(ip, INTERP_PROJ), o2, 1e-12);
+
+    /* gluPerspective(90, 2, 1, 3) as GLU computes it: cot(45) = 1. */
+    seq_init(&s);
+    CMD0(&s, LoadIdentity);
+    CMD(&s, Perspective, 90, 2, 1, 3);
+    run(ip, &s);
+    const double pe[16] = {0.5, 0, 0, 0, 0, 1, 0, 0, 0, 0, -2, -1, 0, 0, -3, 0};
+    check_matrix(interp_matrix(ip, INTERP_PROJ), pe, 1e-12);
+    /* gluPerspective with a zero depth range: GLU does nothing. */
+    seq_init(&s);
+    CMD(&s, Perspective, 60, 1, 2, 2);
+    run(ip, &s);
+    check_matrix(interp_matrix(ip, INTERP_PROJ), pe, 1e-12);
+
+    /* gluLookAt from (1, 2, 5) at (1, 2, 0), up y: a translation by -eye. */
+    seq_init(&s);
+    CMD(&s, MatrixMode, GL_MODELVIEW);
+    CMD0(&s, LoadIdentity);
+    CMD(&s, LookAt, 1, 2, 5, 1, 2, 0, 0, 1, 0);
+    run(ip, &s);
+    const double la[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -1, -2, -5, 1};
+    check_matrix(interp_matrix(ip, INTERP_MV), la, 1e-7);
+    /* Looking down -x from the origin: side = +z... GLU's rows. */
+    seq_init(&s);
+    CMD0(&s, LoadIdentity);
+    CMD(&s, LookAt, 0, 0, 0, -1, 0, 0, 0, 1, 0);
+    run(ip, &s);
+    const double lx[16] = {0, 0, 1, 0, 0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 0, 1};
+    check_matrix(interp_matrix(ip, INTERP_MV), lx, 1e-7);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_VALUE), 0);
+
+    /* @Matrix replaces the top of its stack, whatever the mode. */
+    seq_init(&s);
+    CMD(&s, MatrixMode, GL_MODELVIEW);
+    CMD(&s, Matrix, GL_PROJECTION, 9, 0, 0, 0, 0, 9, 0, 0, 0, 0, 9, 0, 0, 0, 0, 1);
+    run(ip, &s);
+    CHECK_NEAR(interp_matrix(ip, INTERP_PROJ)->m[0], 9, 0);
+    CHECK_NEAR(interp_matrix(ip, INTERP_MV)->m[0], 0, 1e-7);
+    CHECK(interp_state(ip)->a.transform.matrix_mode == GL_MODELVIEW);
+    interp_destroy(ip);
+}
+
+static void test_stacks(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    for (int i = 0; i < INTERP_MODELVIEW_DEPTH - 1; i++)
+        CMD0(&s, PushMatrix);
+    run(ip, &s);
+    CHECK_EQ_U(interp_state(ip)->depth[INTERP_MV], INTERP_MODELVIEW_DEPTH - 1);
+    CHECK_EQ_U(count(DIAG_GL_STACK_OVERFLOW), 0);
+    seq_init(&s);
+    CMD(&s, Translatef, 1, 2, 3);
+    CMD0(&s, PushMatrix); /* the 33rd entry: GL_STACK_OVERFLOW */
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_GL_STACK_OVERFLOW), 1);
+    CHECK_EQ_U(interp_state(ip)->depth[INTERP_MV], INTERP_MODELVIEW_DEPTH - 1);
+    CHECK_NEAR(interp_matrix(ip, INTERP_MV)->m[12], 1, 0);
+    seq_init(&s);
+    for (int i = 0; i < INTERP_MODELVIEW_DEPTH; i++)
+        CMD0(&s, PopMatrix);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_GL_STACK_UNDERFLOW), 1);
+    CHECK_EQ_U(interp_state(ip)->depth[INTERP_MV], 0);
+    CHECK_NEAR(interp_matrix(ip, INTERP_MV)->m[12], 0, 0);
+
+    /* Projection and texture stacks hold two. */
+    seq_init(&s);
+    CMD(&s, MatrixMode, GL_PROJECTION);
+    CMD0(&s, PushMatrix);
+    CMD0(&s, PushMatrix);
+    CMD(&s, MatrixMode, GL_TEXTURE);
+    CMD0(&s, PushMatrix);
+    CMD0(&s, PushMatrix);
+    CMD0(&s, PopMatrix);
+    CMD0(&s, PopMatrix);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_GL_STACK_OVERFLOW), 3);
+    CHECK_EQ_U(count(DIAG_GL_STACK_UNDERFLOW), 2);
+    CHECK_EQ_U(interp_state(ip)->depth[INTERP_PROJ], 1);
+
+    /* Attribute stack: depth 16, and what it restores. */
+    seq_init(&s);
+    CMD(&s, LineWidth, 3);
+    CMD(&s, Enable, GL_CULL_FACE);
+    CMD(&s, PushAttrib, GL_LINE_BIT | GL_ENABLE_BIT);
+    CMD(&s, LineWidth, 7);
+    CMD(&s, PointSize, 5);
+    CMD(&s, Disable, GL_CULL_FACE);
+    CMD0(&s, PopAttrib);
+    run(ip, &s);
+    CHECK_NEAR(interp_state(ip)->a.line.width, 3, 0);
+    CHECK_NEAR(interp_state(ip)->a.point.size, 5, 0);
+    CHECK(interp_state(ip)->a.caps[INTERP_CAP_CULL_FACE]);
+    seq_init(&s);
+    for (int i = 0; i <= INTERP_ATTRIB_DEPTH; i++)
+        CMD(&s, PushAttrib, GL_ALL_ATTRIB_BITS);
+    for (int i = 0; i <= INTERP_ATTRIB_DEPTH; i++)
+        CMD0(&s, PopAttrib);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_GL_STACK_OVERFLOW), 4);
+    CHECK_EQ_U(count(DIAG_GL_STACK_UNDERFLOW), 3);
+    interp_destroy(ip);
+}
+
+static void test_rejected(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, MatrixMode, 0x1234);          /* invalid enum */
+    CMD(&s, Enable, 0x9999);              /* invalid enum */
+    CMD(&s, Frustum, -1, 1, -1, 1, 0, 5); /* near 0: invalid value */
+    CMD(&s, Ortho, 1, 1, -1, 1, 0, 5);    /* empty range: invalid value */
+    CMD(&s, LineWidth, 0);                /* invalid value */
+    CMD(&s, Viewport, 0, 0, -5, 10);      /* invalid value */
+    CMD0(&s, End);                        /* without Begin: invalid operation */
+    CMD(&s, Begin, 77);                   /* invalid enum */
+    CMD(&s, Begin, GL_TRIANGLES);
+    CMD(&s, Translatef, 5, 5, 5);         /* inside Begin: invalid operation */
+    CMD(&s, Begin, GL_LINES);             /* nested: invalid operation */
+    CMD(&s, Color3f, 0.5, 0.5, 0.5);      /* allowed */
+    CMD(&s, Vertex3f, 0, 0, 0);
+    CMD0(&s, End);
+    CMD(&s, ShadeModel, GL_LINE);         /* invalid enum */
+    CMD(&s, PolygonMode, GL_FRONT, GL_FRONT); /* invalid enum */
+    CMD(&s, Lightfv, GL_LIGHT0 + 9, GL_POSITION, 0, 0, 1, 0); /* invalid enum */
+    CMD(&s, Lightfv, GL_LIGHT0, 0x1299, 0, 0, 1, 0);         /* invalid enum */
+    CMD(&s, Materialf, GL_FRONT, GL_SHININESS, 200);         /* invalid value */
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 7);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_VALUE), 5);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_OPERATION), 3);
+    CHECK_NEAR(interp_matrix(ip, INTERP_MV)->m[12], 0, 0);
+    CHECK(interp_state(ip)->a.transform.matrix_mode == GL_MODELVIEW);
+    CHECK_NEAR(interp_state(ip)->a.line.width, 1, 0);
+    /* The message names frame, command, call and offset. */
+    CHECK(strstr(dlog.e[DIAG_GL_INVALID_ENUM].text[0], "frame 0, cmd 0 (glMatrixMode) @0x") ==
+          dlog.e[DIAG_GL_INVALID_ENUM].text[0]);
+    CHECK(strstr(dlog.e[DIAG_GL_INVALID_ENUM].text[0], "invalid matrix mode 0x1234") != NULL);
+    interp_destroy(ip);
+}
+
+/* ---- Assembly ------------------------------------------------------------------- */
+
+typedef struct tri3 {
+    uint32_t a, b, c, p;
+} tri3;
+
+/* Draws n vertices (x = i, y = i*i % 7, distinct colours) in `mode` and
+ * returns the triangles relative to the first vertex. */
+static size_t draw(interp *ip, GLenum mode, int n, tri3 *out)
+{
+    seq s;
+    seq_init(&s);
+    size_t base = sc.nverts, t0 = sc.ntris;
+    CMD(&s, Begin, mode);
+    for (int i = 0; i < n; i++) {
+        CMD(&s, Color3ub, (double)(i * 20), 0, 0);
+        CMD(&s, Vertex3f, i, (i * i) % 7, -1);
+    }
+    CMD0(&s, End);
+    run(ip, &s);
+    size_t k = 0;
+    for (size_t t = t0; t < sc.ntris; t++, k++) {
+        out[k].a = sc.tris[t].v[0] - (uint32_t)base;
+        out[k].b = sc.tris[t].v[1] - (uint32_t)base;
+        out[k].c = sc.tris[t].v[2] - (uint32_t)base;
+        out[k].p = sc.tris[t].provoking - (uint32_t)base;
+    }
+    return k;
+}
+
+static void expect_tris(interp *ip, GLenum mode, int n, const tri3 *want, size_t nwant)
+{
+    tri3 got[64];
+    size_t k = draw(ip, mode, n, got);
+    CHECK_EQ_U(k, nwant);
+    for (size_t i = 0; i < k && i < nwant; i++) {
+        if (memcmp(&got[i], &want[i], sizeof got[i]) != 0) {
+            fprintf(stderr, "mode 0x%x, n %d, tri %zu: got (%u %u %u p%u), want (%u %u %u p%u)\n",
+                    mode, n, i, got[i].a, got[i].b, got[i].c, got[i].p, want[i].a, want[i].b,
+                    want[i].c, want[i].p);
+            check_failures++;
+        }
+    }
+}
+
+static void test_assembly(void)
+{
+    interp *ip = fresh();
+    static const tri3 tris[] = {{0, 1, 2, 2}, {3, 4, 5, 5}};
+    expect_tris(ip, GL_TRIANGLES, 7, tris, 2); /* the 7th vertex is dropped */
+    static const tri3 strip[] = {{0, 1, 2, 2}, {2, 1, 3, 3}, {2, 3, 4, 4}};
+    expect_tris(ip, GL_TRIANGLE_STRIP, 5, strip, 3);
+    static const tri3 fan[] = {{0, 1, 2, 2}, {0, 2, 3, 3}, {0, 3, 4, 4}};
+    expect_tris(ip, GL_TRIANGLE_FAN, 5, fan, 3);
+    static const tri3 quads[] = {{0, 1, 2, 3}, {0, 2, 3, 3}, {4, 5, 6, 7}, {4, 6, 7, 7}};
+    expect_tris(ip, GL_QUADS, 9, quads, 4);
+    static const tri3 qstrip[] = {{0, 1, 3, 3}, {0, 3, 2, 3}, {2, 3, 5, 5}, {2, 5, 4, 5}};
+    expect_tris(ip, GL_QUAD_STRIP, 7, qstrip, 4);
+    static const tri3 poly[] = {{0, 1, 2, 0}, {0, 2, 3, 0}, {0, 3, 4, 0}};
+    expect_tris(ip, GL_POLYGON, 5, poly, 3);
+    /* Incomplete primitives draw nothing. */
+    expect_tris(ip, GL_TRIANGLES, 2, NULL, 0);
+    expect_tris(ip, GL_TRIANGLE_STRIP, 2, NULL, 0);
+    expect_tris(ip, GL_TRIANGLE_FAN, 2, NULL, 0);
+    expect_tris(ip, GL_QUADS, 3, NULL, 0);
+    expect_tris(ip, GL_QUAD_STRIP, 3, NULL, 0);
+    expect_tris(ip, GL_POLYGON, 2, NULL, 0);
+
+    /* Points and lines leave the vertex pool and become items. */
+    tri3 none[4];
+    size_t v0 = sc.nverts;
+    draw(ip, GL_POINTS, 3, none);
+    CHECK_EQ_U(sc.npoints, 3);
+    draw(ip, GL_LINES, 5, none);
+    CHECK_EQ_U(sc.nlines, 2);
+    draw(ip, GL_LINE_STRIP, 4, none);
+    CHECK_EQ_U(sc.nlines, 5);
+    draw(ip, GL_LINE_LOOP, 4, none);
+    CHECK_EQ_U(sc.nlines, 9);
+    draw(ip, GL_LINE_LOOP, 1, none);
+    CHECK_EQ_U(sc.nlines, 9);
+    CHECK_EQ_U(sc.nverts, v0);
+
+    /* glFrontFace(GL_CW): stored front-first counter-clockwise. */
+    seq s;
+    seq_init(&s);
+    CMD(&s, FrontFace, GL_CW);
+    run(ip, &s);
+    static const tri3 cw[] = {{0, 2, 1, 2}};
+    expect_tris(ip, GL_TRIANGLES, 3, cw, 1);
+    interp_destroy(ip);
+}
+
+static void test_flat_lines(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, ShadeModel, GL_FLAT);
+    CMD(&s, Begin, GL_LINE_LOOP);
+    CMD(&s, Color3f, 1, 0, 0);
+    CMD(&s, Vertex2f, 0, 0);
+    CMD(&s, Color3f, 0, 1, 0);
+    CMD(&s, Vertex2f, 0.5, 0);
+    CMD(&s, Color3f, 0, 0, 1);
+    CMD(&s, Vertex2f, 0.5, 0.5);
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(sc.nlines, 3);
+    if (sc.nlines == 3) {
+        /* Each segment takes its last vertex's colour; the closing one the
+         * first vertex's (GL 1.x table 2.2). */
+        CHECK(sc.lines[0].color[0][1] == 1 && sc.lines[0].color[1][1] == 1);
+        CHECK(sc.lines[1].color[0][2] == 1 && sc.lines[1].color[1][2] == 1);
+        CHECK(sc.lines[2].color[0][0] == 1 && sc.lines[2].color[1][0] == 1);
+    }
+    interp_destroy(ip);
+}
+
+static void test_culling(void)
+{
+    interp *ip = fresh();
+    tri3 t[8];
+    seq s;
+    /* Vertex i is (i, i*i % 7): (0,0) (1,1) (2,4) turns left: CCW. */
+    seq_init(&s);
+    CMD(&s, Enable, GL_CULL_FACE);
+    run(ip, &s);
+    CHECK_EQ_U(draw(ip, GL_TRIANGLES, 3, t), 1); /* CCW front kept */
+    seq_init(&s);
+    CMD(&s, FrontFace, GL_CW);
+    run(ip, &s);
+    CHECK_EQ_U(draw(ip, GL_TRIANGLES, 3, t), 0); /* now a back face */
+    seq_init(&s);
+    CMD(&s, CullFace, GL_FRONT);
+    run(ip, &s);
+    CHECK_EQ_U(draw(ip, GL_TRIANGLES, 3, t), 1);
+    seq_init(&s);
+    CMD(&s, CullFace, GL_FRONT_AND_BACK);
+    run(ip, &s);
+    CHECK_EQ_U(draw(ip, GL_QUADS, 4, t), 0);
+    CHECK_EQ_U(draw(ip, GL_POINTS, 2, t), 0);
+    CHECK_EQ_U(sc.npoints, 2); /* culling spares points and lines */
+    seq_init(&s);
+    CMD(&s, FrontFace, GL_CCW);
+    CMD(&s, CullFace, GL_BACK);
+    run(ip, &s);
+    /* A strip: its second triangle is taken (2, 1, 3), which faces the same
+     * way as the first here: both are kept. */
+    CHECK_EQ_U(draw(ip, GL_TRIANGLE_STRIP, 4, t), 2);
+    /* With (4,2) the third triangle (2,3,4) turns left as well: 3 kept. A
+     * fan (0,0) (1,1) (2,4) (3,2): (0,2,3) turns right and is culled. */
+    CHECK_EQ_U(draw(ip, GL_TRIANGLE_STRIP, 5, t), 3);
+    CHECK_EQ_U(draw(ip, GL_TRIANGLE_FAN, 4, t), 1);
+    interp_destroy(ip);
+}
+
+static void test_polygon_mode(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, PolygonMode, GL_FRONT_AND_BACK, GL_LINE);
+    CMD(&s, Begin, GL_QUADS);
+    CMD(&s, Vertex2f, 0, 0);
+    CMD(&s, Vertex2f, 0.5, 0);
+    CMD(&s, Vertex2f, 0.5, 0.5);
+    CMD(&s, Vertex2f, 0, 0.5);
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 0);
+    CHECK_EQ_U(sc.nlines, 4); /* the outline, not the diagonal */
+    seq_init(&s);
+    CMD(&s, Begin, GL_POLYGON);
+    CMD(&s, Vertex2f, 0, 0);
+    CMD(&s, EdgeFlag, 0);
+    CMD(&s, Vertex2f, 0.5, 0); /* the edge from here is not a boundary */
+    CMD(&s, EdgeFlag, 1);
+    CMD(&s, Vertex2f, 0.5, 0.5);
+    CMD(&s, Vertex2f, 0, 0.5);
+    CMD0(&s, End);
+    CMD(&s, PolygonMode, GL_FRONT, GL_POINT);
+    CMD(&s, Begin, GL_TRIANGLES);
+    CMD(&s, Vertex2f, 0, 0);
+    CMD(&s, Vertex2f, 0.5, 0);
+    CMD(&s, Vertex2f, 0.5, 0.5);
+    CMD(&s, Vertex2f, 0, 0); /* clockwise: a back face, still lines */
+    CMD(&s, Vertex2f, 0.5, 0.5);
+    CMD(&s, Vertex2f, 0.5, 0);
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(sc.nlines, 4 + 3 + 3);
+    CHECK_EQ_U(sc.npoints, 3);
+    interp_destroy(ip);
+}
+
+/* ---- Attributes ------------------------------------------------------------------ */
+
+static void test_attributes(void)
+{
+    interp *ip = fresh();
+    const float *c = interp_state(ip)->a.current.color;
+    seq s;
+    seq_init(&s);
+    CMD(&s, Color3ub, 255, 0, 51);
+    run(ip, &s);
+    CHECK_NEAR(c[0], 1, 0);
+    CHECK_NEAR(c[2], 0.2, 1e-7);
+    CHECK_NEAR(c[3], 1, 0);
+    seq_init(&s);
+    CMD(&s, Color4b, 127, -128, 0, 63);
+    run(ip, &s);
+    CHECK_NEAR(c[0], 1, 1e-7);
+    CHECK_NEAR(c[1], -1, 1e-7);
+    CHECK_NEAR(c[2], 1.0 / 255, 1e-7);
+    CHECK_NEAR(c[3], 127.0 / 255, 1e-7);
+    seq_init(&s);
+    CMD(&s, Color3us, 65535, 0, 32768);
+    CMD(&s, Normal3s, -32768, 32767, 0);
+    CMD(&s, TexCoord1i, 3);
+    run(ip, &s);
+    CHECK_NEAR(c[0], 1, 0);
+    CHECK_NEAR(c[2], 32768.0 / 65535, 1e-7);
+    CHECK_NEAR(interp_state(ip)->a.current.normal[0], -1, 1e-7);
+    CHECK_NEAR(interp_state(ip)->a.current.normal[1], 1, 1e-7);
+    CHECK_NEAR(interp_state(ip)->a.current.texcoord[0], 3, 0);
+    CHECK_NEAR(interp_state(ip)->a.current.texcoord[3], 1, 0);
+    seq_init(&s);
+    CMD(&s, Color4ui, 4294967295.0, 0, 0, 0);
+    run(ip, &s);
+    CHECK_NEAR(c[0], 1, 0);
+
+    /* Vertices carry the current attributes; w divides; colours clamp. */
+    seq_init(&s);
+    CMD(&s, Color4f, 2, -1, 0.5, 1);
+    CMD(&s, Normal3f, 0, 1, 0);
+    CMD(&s, TexCoord4f, 1, 2, 0, 2);
+    CMD(&s, Begin, GL_TRIANGLES);
+    CMD(&s, Vertex4f, 2, 4, 6, 2);
+    CMD(&s, Vertex2i, 1, 0);
+    CMD(&s, Vertex3d, 0, 1, 0);
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(sc.nverts, 3);
+    if (sc.nverts == 3) {
+        const scene_vertex *v = &sc.verts[0];
+        CHECK(v->pos[0] == 1 && v->pos[1] == 2 && v->pos[2] == 3);
+        CHECK(v->color[0] == 1 && v->color[1] == 0 && v->color[2] == 0.5f);
+        CHECK(v->normal[1] == 1);
+        CHECK(v->tex[0] == 0.5f && v->tex[1] == 1);
+    }
+
+    /* Lighting (issue 4) shows the material's diffuse colour; colour
+     * material keeps it equal to glColor. */
+    seq_init(&s);
+    CMD(&s, Enable, GL_LIGHTING);
+    CMD(&s, Materialfv, GL_FRONT, GL_DIFFUSE, 0.25, 0.5, 0.75, 1);
+    CMD(&s, Color3f, 1, 1, 1);
+    CMD(&s, Begin, GL_POINTS);
+    CMD(&s, Vertex3f, 0, 0, -1);
+    CMD0(&s, End);
+    CMD(&s, Enable, GL_COLOR_MATERIAL);
+    CMD(&s, Color3f, 0.1, 0.2, 0.3);
+    CMD(&s, Begin, GL_POINTS);
+    CMD(&s, Vertex3f, 0, 0, -1);
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(sc.npoints, 2);
+    if (sc.npoints == 2) {
+        CHECK(sc.points[0].color[1] == 0.5f);
+        CHECK(sc.points[1].color[1] == 0.2f);
+    }
+    CHECK_EQ_U(count(DIAG_NOTE_LIGHTING), 1);
+    interp_destroy(ip);
+}
+
+/* ---- Runs and clears ------------------------------------------------------------- */
+
+static void quad(seq *s)
+{
+    CMD(s, Begin, GL_QUADS);
+    CMD(s, Vertex2f, 0, 0);
+    CMD(s, Vertex2f, 0.5, 0);
+    CMD(s, Vertex2f, 0.5, 0.5);
+    CMD(s, Vertex2f, 0, 0.5);
+    CMD0(s, End);
+}
+
+static void test_runs(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    quad(&s);
+    CMD(&s, Color3f, 1, 0, 0); /* colours are per vertex: same run */
+    quad(&s);
+    CMD(&s, Translatef, 0.1, 0, 0);
+    quad(&s); /* another transform: another run */
+    CMD(&s, ShadeModel, GL_FLAT);
+    quad(&s); /* another look: another run */
+    run(ip, &s);
+    CHECK_EQ_U(sc.nmeshes, 3);
+    CHECK_EQ_U(sc.ntris, 8);
+
+    /* glClear erases what came before and sets the background. */
+    seq_init(&s);
+    CMD(&s, ClearColor, 0.25, 0.5, 0.75, 1);
+    CMD(&s, Clear, GL_COLOR_BUFFER_BIT);
+    quad(&s);
+    CMD(&s, ClearColor, 0, 0, 0, 1);
+    CMD(&s, Clear, GL_DEPTH_BUFFER_BIT); /* depth only: nothing erased */
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 2);
+    CHECK(sc.background[0] == 0.25f && sc.background[2] == 0.75f);
+    interp_end_frame(ip);
+    CHECK(sc.background[0] == 0.25f); /* the cleared colour stays */
+    interp_destroy(ip);
+}
+
+static void test_alloc_failure(void)
+{
+    /* Every allocation failing in turn: reported, never a crash. */
+    for (unsigned long n = 1; n < 40; n++) {
+        scene s2;
+        scene_init(&s2);
+        tr_fail_alloc(n);
+        interp *ip = interp_create(&s2, NULL);
+        if (ip) {
+            seq s;
+            seq_init(&s);
+            tr_fail_alloc(0);
+            for (int i = 0; i < 40; i++)
+                quad(&s);
+            tr_fail_alloc(n);
+            rgl_error err;
+            interp_begin_frame(ip);
+            interp_run(ip, s.data, s.len, 0, &err);
+            interp_end_frame(ip);
+            tr_fail_alloc(0);
+            seq_free(&s);
+            CHECK(s2.failed || s2.ntris == 80);
+        }
+        tr_fail_alloc(0);
+        interp_destroy(ip);
+        scene_finish(&s2);
+    }
+}
+
+int main(void)
+{
+    scene_init(&sc);
+    test_paper_modelview();
+    test_transforms();
+    test_stacks();
+    test_rejected();
+    test_assembly();
+    test_flat_lines();
+    test_culling();
+    test_polygon_mode();
+    test_attributes();
+    test_runs();
+    test_alloc_failure();
+    scene_finish(&sc);
+    return CHECK_RESULT("test_interp");
+}

@@ -1,0 +1,144 @@
+/* test_numfmt.c: the float formatter reads back exactly, is shortest, and
+ * ignores the locale.
+ *
+ * Every 3001st float bit pattern (1.4 million values, all exponents, both
+ * signs, subnormals) must read back through strtof to the same float and
+ * use no more significant digits than the shortest %.*e that does.
+ */
+#include <locale.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "numfmt.h"
+
+static int sig_digits(const char *s)
+{
+    int n = 0, last = 0, started = 0;
+    for (; *s && *s != 'e'; s++) {
+        if (*s < '0' || *s > '9')
+            continue;
+        if (*s != '0')
+            started = 1;
+        if (started) {
+            n++;
+            if (*s != '0')
+                last = n;
+        }
+    }
+    return last;
+}
+
+static int shortest_ref(float f)
+{
+    char b[64];
+    for (int p = 1; p <= 9; p++) {
+        snprintf(b, sizeof b, "%.*e", p - 1, (double)f);
+        if (strtof(b, NULL) == f)
+            return p;
+    }
+    return 99;
+}
+
+static void fmt(float f, char *out)
+{
+    char buf[NUMFMT_F32_ROOM + 1];
+    size_t n = numfmt_f32(buf, f);
+    memcpy(out, buf, n);
+    out[n] = '\0';
+}
+
+static void test_sweep(void)
+{
+    unsigned long bad = 0, longer = 0, n = 0;
+    for (uint64_t u = 0; u < 0x100000000ull; u += 3001) {
+        uint32_t b = (uint32_t)u;
+        float f;
+        memcpy(&f, &b, 4);
+        if (f != f || f - f != 0)
+            continue;
+        char s[64];
+        fmt(f, s);
+        n++;
+        if (strtof(s, NULL) != f) {
+            if (bad++ < 5)
+                fprintf(stderr, "0x%08x (%.9g) -> %s does not read back\n", b, (double)f, s);
+            continue;
+        }
+        if (f != 0 && sig_digits(s) > shortest_ref(f) && longer++ < 5)
+            fprintf(stderr, "0x%08x (%.9g) -> %s is not the shortest\n", b, (double)f, s);
+    }
+    printf("numfmt: %lu floats, %lu do not read back, %lu not shortest\n", n, bad, longer);
+    CHECK(bad == 0);
+    CHECK(longer == 0);
+    CHECK(n > 1400000);
+}
+
+static void test_cases(void)
+{
+    static const struct {
+        float f;
+        const char *s;
+    } cases[] = {
+        {0.5f, "0.5"},       {0.1f, "0.1"},         {45, "45"},
+        {-0.0f, "0"},        {0, "0"},              {1e-7f, "1e-7"},
+        {1e10f, "1e10"},     {1e6f, "1e6"},         {100000, "100000"},
+        {0.853553f, "0.853553"}, {-0.146447f, "-0.146447"}, {0.00001f, "0.00001"},
+        {3.4028235e38f, "3.4028235e38"}, {1.4e-45f, "1e-45"}, {16777216.0f, "16777216"},
+        {2.0f / 3, "0.6666667"}, {123456.7f, "123456.7"}, {-2.5e-12f, "-2.5e-12"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char s[64];
+        fmt(cases[i].f, s);
+        if (strcmp(s, cases[i].s) != 0) {
+            fprintf(stderr, "%.9g -> %s, expected %s\n", (double)cases[i].f, s, cases[i].s);
+            check_failures++;
+        }
+    }
+    char s[64];
+    fmt(NAN, s);
+    CHECK(strcmp(s, "0") == 0);
+    fmt(-INFINITY, s);
+    CHECK(strcmp(s, "0") == 0);
+    char b[32];
+    b[numfmt_u64(b, 18446744073709551615ull)] = '\0';
+    CHECK(strcmp(b, "18446744073709551615") == 0);
+    b[numfmt_i64(b, INT64_MIN)] = '\0';
+    CHECK(strcmp(b, "-9223372036854775808") == 0);
+    b[numfmt_u64(b, 0)] = '\0';
+    CHECK(strcmp(b, "0") == 0);
+}
+
+/* With a comma-decimal locale active, the text stays the same. The test
+ * script generates de_DE.UTF-8 with localedef and sets LOCPATH; without it
+ * the test reports a skip (77) rather than passing blindly. */
+static int test_locale(void)
+{
+    if (!setlocale(LC_ALL, "de_DE.UTF-8") && !setlocale(LC_ALL, "de_DE.utf8"))
+        return 77;
+    char probe[32];
+    snprintf(probe, sizeof probe, "%.1f", 0.5);
+    CHECK(strcmp(probe, "0,5") == 0); /* the locale really is comma-decimal */
+    char s[64];
+    fmt(0.5f, s);
+    CHECK(strcmp(s, "0.5") == 0);
+    fmt(-1234.5f, s);
+    CHECK(strcmp(s, "-1234.5") == 0);
+    setlocale(LC_ALL, "C");
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc > 1 && strcmp(argv[1], "--locale") == 0) {
+        int rc = test_locale();
+        if (rc == 77) {
+            fprintf(stderr, "test_numfmt: no de_DE locale available\n");
+            return 77;
+        }
+        return CHECK_RESULT("test_numfmt --locale");
+    }
+    test_cases();
+    test_sweep();
+    return CHECK_RESULT("test_numfmt");
+}
