@@ -770,10 +770,9 @@ static void auto_open(void)
     fail_report();
 }
 
-uint8_t *rgl_reserve_slow(rgl_stream **sp, size_t n)
+rgl_stream *rgl_reserve_slow(size_t n)
 {
     rgl_stream *s = rgl_tls_stream;
-    *sp = NULL;
     if (RGL_UNLIKELY(!s || atomic_load(&g.status) != RAYGL_RECORDING)) {
         ensure_init();
         if (atomic_load(&g.status) == RAYGL_IDLE)
@@ -787,7 +786,7 @@ uint8_t *rgl_reserve_slow(rgl_stream **sp, size_t n)
         if (!s && !(s = stream_create()))
             return NULL;
     }
-    uint8_t *p = NULL;
+    rgl_stream *ready = NULL;
     pthread_mutex_lock(s->lock);
     uint32_t gen = atomic_load(&g.gen);
     if (s->gen != gen)
@@ -797,14 +796,13 @@ uint8_t *rgl_reserve_slow(rgl_stream **sp, size_t n)
         frame_start(s);
     if (recording() && rgl_buf_reserve(cur_buf(s), n)) {
         stream_window(s, true);
-        p = s->pos;
-        *sp = s;
+        ready = s;
     } else {
         stream_window(s, false);
     }
     pthread_mutex_unlock(s->lock);
     fail_report();
-    return p;
+    return ready;
 }
 
 void rgl_frame_end(void)

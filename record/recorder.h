@@ -124,19 +124,26 @@ extern _Thread_local rgl_stream *rgl_tls_stream;
 
 /* Slow path of rgl_reserve: initialises the recorder and the thread's stream
  * on first use, starts a frame (state snapshot), grows the buffer. Returns
- * NULL when not recording (disabled, failed, fork child); *sp then is NULL. */
-uint8_t *rgl_reserve_slow(rgl_stream **sp, size_t n);
+ * the stream, with n bytes free at its pos, or NULL when not recording
+ * (disabled, failed, fork child). */
+rgl_stream *rgl_reserve_slow(size_t n);
 
 /* Room for n bytes in the calling thread's current buffer, or NULL when not
- * recording. Encode into the returned pointer, then rgl_commit(). */
+ * recording (*sp is NULL then). Encode into the returned pointer, then
+ * rgl_commit(). The slow path takes no pointer to the caller's locals, so
+ * the inlined fast path keeps everything in registers. */
 static inline uint8_t *rgl_reserve(rgl_stream **sp, size_t n)
 {
     rgl_stream *s = rgl_tls_stream;
-    if (RGL_LIKELY(s != NULL && (size_t)(s->end - s->pos) >= n)) {
-        *sp = s;
-        return s->pos;
+    if (RGL_UNLIKELY(s == NULL || (size_t)(s->end - s->pos) < n)) {
+        s = rgl_reserve_slow(n);
+        if (!s) {
+            *sp = NULL;
+            return NULL;
+        }
     }
-    return rgl_reserve_slow(sp, n);
+    *sp = s;
+    return s->pos;
 }
 
 static inline void rgl_commit(rgl_stream *s, uint8_t *p) { s->pos = p; }
