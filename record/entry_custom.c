@@ -593,6 +593,67 @@ RGL_EXPORT void rayglBindTexture(GLenum target, GLuint texture)
     glBindTexture(target, texture);
 }
 
+/* A texture's definition past this many bytes of records is read back from
+ * GL and replaced by one image per level: a texture updated every frame
+ * would otherwise make every snapshot longer than the last. */
+#define RGL_TEX_DEFS_COMPACT 4096
+
+/* Replaces the definition of the texture bound to target by its images read
+ * back from a live context (GL_RGBA, GL_UNSIGNED_BYTE), once it has grown
+ * past RGL_TEX_DEFS_COMPACT. The pack state is saved and restored. */
+static void texture_compact(GLenum target)
+{
+    rgl_stream *s = rgl_tls_stream;
+    int slot = target_slot(target);
+    if (!s || slot < 0 || !executes(s) || !live_context())
+        return;
+    rgl_texture *t = rgl_texture_get(s, s->objs.bound[slot], false);
+    if (!t || t->defs.size <= RGL_TEX_DEFS_COMPACT)
+        return;
+    static const GLenum pack[4] = {GL_PACK_ALIGNMENT, GL_PACK_ROW_LENGTH, GL_PACK_SKIP_ROWS,
+                                   GL_PACK_SKIP_PIXELS};
+    GLint saved[4] = {4, 0, 0, 0};
+    for (int k = 0; k < 4; k++) {
+        glGetIntegerv(pack[k], &saved[k]);
+        glPixelStorei(pack[k], k == 0 ? 4 : 0);
+    }
+    rgl_buf defs = {0};
+    bool ok = true;
+    for (GLint level = 0; ok && level < 32; level++) {
+        GLint w = 0, h = 0, fmt = 0, border = 0;
+        glGetTexLevelParameteriv(target, level, GL_TEXTURE_WIDTH, &w);
+        glGetTexLevelParameteriv(target, level, GL_TEXTURE_HEIGHT, &h);
+        glGetTexLevelParameteriv(target, level, GL_TEXTURE_INTERNAL_FORMAT, &fmt);
+        glGetTexLevelParameteriv(target, level, GL_TEXTURE_BORDER, &border);
+        if (w <= 0 || h <= 0)
+            break;
+        size_t bytes = (size_t)w * (size_t)h * 4;
+        uint8_t *px = rgl_alloc(bytes);
+        if (!px) {
+            rgl_fail(ENOMEM, "allocation failed");
+            ok = false;
+            break;
+        }
+        glGetTexImage(target, level, GL_RGBA, GL_UNSIGNED_BYTE, px);
+        uint32_t id = rgl_resource_put(RGL_RES_BYTES, px, bytes);
+        rgl_free(px);
+        if (target == GL_TEXTURE_1D)
+            ok = id && rgl_emit(&defs, RGL_OP_TexImage1D, "eiiiieee", target, level, fmt, w,
+                                border, GL_RGBA, GL_UNSIGNED_BYTE, id);
+        else
+            ok = id && rgl_emit(&defs, RGL_OP_TexImage2D, "eiiiiieee", target, level, fmt, w, h,
+                                border, GL_RGBA, GL_UNSIGNED_BYTE, id);
+    }
+    for (int k = 0; k < 4; k++)
+        glPixelStorei(pack[k], saved[k]);
+    if (ok && defs.size) {
+        rgl_buf_finish(&t->defs);
+        t->defs = defs;
+    } else {
+        rgl_buf_finish(&defs);
+    }
+}
+
 /* Room for one texture record: rgl_record then writes it at s->pos without
  * the buffer moving, so the record can be copied into the texture's
  * definition from there. */
@@ -648,6 +709,7 @@ RGL_EXPORT void rayglTexSubImage2D(GLenum target, GLint level, GLint xoffset, GL
         }
     }
     glTexSubImage2D(target, level, xoffset, yoffset, width, height, format, type, pixels);
+    texture_compact(target);
 }
 
 RGL_EXPORT GLint raygluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width,

@@ -274,3 +274,11 @@ GLboolean glIsTexture(GLuint t)
     (void)t;
     return GL_FALSE;
 }
+void glGetTexLevelParameteriv(GLenum t, GLint level, GLenum pname, GLint *v)
+{
+    (void)t, (void)level, (void)pname, (void)v;
+}
+void glGetTexImage(GLenum t, GLint level, GLenum format, GLenum type, GLvoid *pixels)
+{
+    (void)t, (void)level, (void)format, (void)type, (void)pixels;
+}

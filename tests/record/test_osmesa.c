@@ -198,6 +198,75 @@ static void test_two_frames(const char *path)
     }
 }
 
+/* Applies the RGBA TexImage2D/TexSubImage2D records of a 4x4 level 0 in a
+ * command sequence to img. */
+static void apply_texels(rgl_reader *r, const uint8_t *data, size_t size, uint64_t offset,
+                         GLubyte img[4 * 4 * 4])
+{
+    rgl_cmd_iter it;
+    static rgl_cmd cmd;
+    rgl_cmd_iter_init(&it, data, size, offset);
+    while (rgl_cmd_next(&it, &cmd) == RGL_OK) {
+        bool full = cmd.opcode == RGL_OP_TexImage2D;
+        if (!full && cmd.opcode != RGL_OP_TexSubImage2D)
+            continue;
+        rgl_resource px;
+        uint32_t id = (uint32_t)rgl_arg_i(&cmd.arg[8], 0);
+        int x = full ? 0 : (int)rgl_arg_i(&cmd.arg[2], 0);
+        int y = full ? 0 : (int)rgl_arg_i(&cmd.arg[3], 0);
+        int w = (int)rgl_arg_i(&cmd.arg[full ? 3 : 4], 0);
+        int h = (int)rgl_arg_i(&cmd.arg[full ? 4 : 5], 0);
+        if (!CHECK(rgl_arg_i(&cmd.arg[6], 0) == GL_RGBA) ||
+            !CHECK(rgl_reader_resource(r, id, &px, NULL) == RGL_OK) ||
+            !CHECK(px.size == (size_t)(w * h * 4)))
+            continue;
+        for (int row = 0; row < h; row++)
+            memcpy(img + 16 * (y + row) + 4 * x, px.data + 4 * w * row, (size_t)(4 * w));
+    }
+}
+
+/* A texture updated every frame: its definition in the snapshot stays
+ * bounded (read back and compacted), and still holds its latest texels. */
+static void test_texture_updates(const char *path)
+{
+    CHECK(rayglRecordOpen(path) == 0);
+    GLuint tex;
+    rayglGenTextures(1, &tex);
+    rayglBindTexture(GL_TEXTURE_2D, tex);
+    GLubyte img[4 * 4 * 4] = {0};
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    const int frames = 300;
+    for (int f = 0; f < frames; f++) {
+        GLubyte texel[4] = {(GLubyte)f, (GLubyte)(f >> 8), 7, 255};
+        rayglTexSubImage2D(GL_TEXTURE_2D, 0, f % 4, (f / 4) % 4, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE,
+                           texel);
+        rayglutSwapBuffers();
+    }
+    rayglRecordClose();
+    rgl_reader *r = trace_open(path);
+    if (!r)
+        return;
+    CHECK(rgl_reader_frame_count(r) == (size_t)frames);
+    rgl_frame_info fi;
+    if (CHECK(rgl_reader_frame(r, (size_t)frames - 1, &fi, NULL) == RGL_OK)) {
+        trace_cmds s = trace_resource_cmds(r, fi.state);
+        size_t subs = trace_cmds_count(&s, RGL_OP_TexSubImage2D);
+        CHECKM(subs < 200, "%zu sub-images in the last snapshot", subs);
+        /* Replaying the snapshot's definition and then the frame gives the
+         * texels GL holds. */
+        GLubyte want[4 * 4 * 4], got[4 * 4 * 4];
+        glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, want);
+        memset(got, 0, sizeof got);
+        rgl_resource res;
+        if (CHECK(rgl_reader_resource(r, fi.state, &res, NULL) == RGL_OK))
+            apply_texels(r, res.data, res.size, res.data_offset, got);
+        apply_texels(r, fi.commands, fi.commands_size, fi.commands_offset, got);
+        CHECK(memcmp(got, want, sizeof want) == 0);
+        trace_cmds_free(&s);
+    }
+    rgl_reader_destroy(r);
+}
+
 /* The paper's example: plain GL matrix calls, then a raygl primitive. */
 static void test_paper_example(const char *path)
 {
@@ -245,17 +314,20 @@ int main(void)
     char dir[] = "/tmp/raygl-osmesa-XXXXXX";
     if (!CHECK(mkdtemp(dir) != NULL))
         return check_exit();
-    char p1[64], p2[64];
+    char p1[64], p2[64], p3[64];
     snprintf(p1, sizeof p1, "%s/two.raygl", dir);
     snprintf(p2, sizeof p2, "%s/paper.raygl", dir);
+    snprintf(p3, sizeof p3, "%s/texture.raygl", dir);
     test_two_frames(p1);
     test_paper_example(p2);
+    test_texture_updates(p3);
     /* This Mesa faults destroying a context with drawing still queued. */
     glFinish();
     OSMesaDestroyContext(ctx);
     if (!check_failures) {
         unlink(p1);
         unlink(p2);
+        unlink(p3);
         rmdir(dir);
     }
     return check_exit();
