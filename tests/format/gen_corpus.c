@@ -4,7 +4,8 @@
  * the table with random valid arguments, with and without an index, with
  * command and byte resources, plus bare command sequences. Deterministic:
  * the same binary writes the same files. The files are checked in; rerun
- * this only to refresh them (and review the diff).
+ * this only to refresh them (and review the diff). The corpus also holds
+ * recorded-*.bin, traces written by libraygl for the image tests.
  */
 #include "testutil.h"
 
