@@ -40,14 +40,6 @@ static size_t type_size(GLenum type)
     }
 }
 
-/* True when GL has a current context (it fills in the query). */
-static bool live_context(void)
-{
-    GLint mode = 0;
-    glGetIntegerv(GL_MATRIX_MODE, &mode);
-    return mode != 0;
-}
-
 rgl_texture *rgl_texture_get(rgl_stream *s, uint32_t name, bool create)
 {
     rgl_objects *o = &s->objs;
@@ -605,7 +597,7 @@ static void texture_compact(GLenum target)
 {
     rgl_stream *s = rgl_tls_stream;
     int slot = target_slot(target);
-    if (!s || slot < 0 || !executes(s) || !live_context())
+    if (!s || slot < 0 || !executes(s) || !rgl_live_context())
         return;
     rgl_texture *t = rgl_texture_get(s, s->objs.bound[slot], false);
     if (!t || t->defs.size <= RGL_TEX_DEFS_COMPACT)
@@ -801,7 +793,7 @@ RGL_EXPORT GLuint rayglGenLists(GLsizei range)
     rgl_stream *s;
     if (range > 0 && rgl_reserve(&s, 1)) {
         /* Without a context GL returns 0: RayGL names the lists itself. */
-        if (first == 0 && !live_context()) {
+        if (first == 0 && !rgl_live_context()) {
             first = s->objs.next_list_name + 1;
             s->objs.next_list_name += (uint32_t)range;
         }

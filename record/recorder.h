@@ -188,6 +188,10 @@ bool rgl_glut_ready(void);
  * context is current (nothing is written then). */
 bool rgl_snapshot_take(rgl_stream *s, rgl_buf *out);
 
+/* True when a GL context is current on the calling thread (a query that GL
+ * without one leaves unanswered). */
+bool rgl_live_context(void);
+
 /* Buffer helpers. rgl_buf_reserve returns a pointer to n free bytes at the
  * end, growing the buffer, or NULL on allocation failure or when the buffer
  * would pass the largest chunk payload (the recorder has failed then). Write

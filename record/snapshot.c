@@ -284,12 +284,24 @@ static void snap_matrices(rgl_buf *b, GLint mode)
     rgl_emit(b, RGL_OP_MatrixMode, "e", (uint32_t)mode);
 }
 
+/* GL with no current context leaves the sentinel untouched. */
+static bool matrix_mode(GLint *mode)
+{
+    *mode = SENTINEL_I;
+    glGetIntegerv(GL_MATRIX_MODE, mode);
+    return *mode != SENTINEL_I;
+}
+
+bool rgl_live_context(void)
+{
+    GLint mode;
+    return matrix_mode(&mode);
+}
+
 bool rgl_snapshot_take(rgl_stream *s, rgl_buf *out)
 {
-    /* GL with no current context leaves the sentinel untouched. */
-    GLint mode = SENTINEL_I;
-    glGetIntegerv(GL_MATRIX_MODE, &mode);
-    if (mode == SENTINEL_I)
+    GLint mode;
+    if (!matrix_mode(&mode))
         return false;
     out->size = 0;
     rgl_emit(out, RGL_OP_MatrixMode, "e", GL_MODELVIEW);
