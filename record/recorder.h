@@ -160,13 +160,16 @@ static inline uint8_t *rgl_put_opcode(uint8_t *p, uint32_t opcode)
  * ones. No-op without a context, while compiling a list, or not recording. */
 void rgl_resolve_matrices(void);
 
-/* Ends the calling thread's frame: writes its resources' references and the
- * FRAME chunk to the file (synchronously, so it survives a crash right
- * after), and arranges for the next call to start a new frame. */
+/* Ends the calling thread's frame: writes the FRAME chunk with one writev
+ * under the file lock (the frame's resources are already in the file), so it
+ * is in the kernel when this returns and survives a crash right after; then
+ * arranges for the next call to start a new frame. A frame with no commands
+ * writes nothing. */
 void rgl_frame_end(void);
 
 /* Switches the stream's write window to the display-list buffer (begin) or
- * back to the frame buffer (end). Returns the list body on end. */
+ * back to the frame buffer (end). Returns the list body on end, owned by the
+ * stream and valid until the next compile begins. Calling thread only. */
 void rgl_list_compile_begin(rgl_stream *s, uint32_t list, uint32_t mode);
 const rgl_buf *rgl_list_compile_end(rgl_stream *s);
 
