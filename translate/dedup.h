@@ -3,7 +3,9 @@
  * The writer shares equal positions, normals and colours within a mesh2
  * (vertex_vectors, normal_vectors, texture_list): each key gets the index
  * of its first insertion, and the keys stay in that order for writing.
- * Keys are 1..4 32-bit words (float bit patterns, so -0 and 0 differ and
+ * Sharing is exact for up to DEDUP_WINDOW / 2 distinct keys; past that it
+ * works over a sliding window (dedup.c), which keeps lookups in cache.
+ * Keys are 1..DEDUP_MAX_WORDS 32-bit words (float bit patterns, so -0 and 0 differ and
  * NaN never reaches here). Reused across meshes; not thread-safe.
  */
 #ifndef RGL_DEDUP_H
@@ -13,13 +15,16 @@
 #include <stdint.h>
 
 #define DEDUP_NONE UINT32_MAX
+#define DEDUP_WINDOW (1u << 15) /* most slots; half of them hold keys */
+#define DEDUP_MAX_WORDS 10
 
 typedef struct dedup {
     uint32_t words;  /* key size in 32-bit words */
-    uint32_t *slots; /* open addressing: index + 1, 0 = empty */
+    uint64_t *slots; /* open addressing: hash bits << 32 | index + 1; 0 = empty */
     size_t mask;     /* slot count - 1 */
     uint32_t *keys;  /* count * words, in insertion order */
     size_t count, cap_keys;
+    size_t live; /* keys in the table (since it was last emptied) */
 } dedup;
 
 void dedup_init(dedup *d, uint32_t words);

@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "talloc.h"
+#include "wire.h"
 
 typedef void (*interp_handler)(interp *ip, const rgl_cmd *cmd);
 
@@ -246,8 +247,104 @@ void interp_exec(interp *ip, const rgl_cmd *cmd)
     dispatch[cmd->opcode](ip, cmd);
 }
 
+/* The per-vertex commands with a fixed encoding (a one-byte opcode, then
+ * little-endian floats or bytes: docs/format.md) are decoded here directly,
+ * without the general decoder, when they cannot fail: they are most of a
+ * trace. Everything else, and every case that needs a diagnostic, goes
+ * through rgl_cmd_next and interp_exec. The result is the same either way
+ * (tests/translate/test_interp.c checks it). */
+static inline float wire_f32(const uint8_t *p) { return rgl_bits_f32(rgl_get_u32(p)); }
+
+static size_t fast_command(interp *ip, const uint8_t *p, size_t left)
+{
+    gl_attribs *a = &ip->st.a;
+    switch (p[0]) {
+    case RGL_OP_Vertex3f:
+        if (left < 13 || !ip->in_begin || ip->prim_skip)
+            return 0;
+        interp_add_vertex(ip, wire_f32(p + 1), wire_f32(p + 5), wire_f32(p + 9), 1);
+        return 13;
+    case RGL_OP_Vertex2f:
+        if (left < 9 || !ip->in_begin || ip->prim_skip)
+            return 0;
+        interp_add_vertex(ip, wire_f32(p + 1), wire_f32(p + 5), 0, 1);
+        return 9;
+    case RGL_OP_Normal3f:
+        if (left < 13)
+            return 0;
+        for (int k = 0; k < 3; k++)
+            a->current.normal[k] = wire_f32(p + 1 + 4 * k);
+        return 13;
+    case RGL_OP_TexCoord2f:
+        if (left < 9)
+            return 0;
+        a->current.texcoord[0] = wire_f32(p + 1);
+        a->current.texcoord[1] = wire_f32(p + 5);
+        a->current.texcoord[2] = 0;
+        a->current.texcoord[3] = 1;
+        return 9;
+    case RGL_OP_Color3f:
+    case RGL_OP_Color4f: {
+        size_t n = p[0] == RGL_OP_Color3f ? 3 : 4;
+        if (left < 1 + 4 * n)
+            return 0;
+        for (size_t k = 0; k < n; k++)
+            a->current.color[k] = wire_f32(p + 1 + 4 * k);
+        if (n == 3)
+            a->current.color[3] = 1;
+        if (a->caps[INTERP_CAP_COLOR_MATERIAL])
+            interp_color_material_update(ip);
+        return 1 + 4 * n;
+    }
+    case RGL_OP_Color3ub:
+    case RGL_OP_Color4ub: {
+        size_t n = p[0] == RGL_OP_Color3ub ? 3 : 4;
+        if (left < 1 + n)
+            return 0;
+        for (size_t k = 0; k < n; k++)
+            a->current.color[k] = (float)(p[1 + k] / 255.0);
+        if (n == 3)
+            a->current.color[3] = 1;
+        if (a->caps[INTERP_CAP_COLOR_MATERIAL])
+            interp_color_material_update(ip);
+        return 1 + n;
+    }
+    default:
+        return 0;
+    }
+}
+
 rgl_status interp_run(interp *ip, const uint8_t *data, size_t size, uint64_t base_offset,
                       rgl_error *err)
+{
+    rgl_cmd_iter it;
+    rgl_cmd cmd;
+    rgl_status st;
+
+    rgl_cmd_iter_init(&it, data, size, base_offset);
+    for (;;) {
+        if (it.pos < it.end) {
+            size_t n = fast_command(ip, it.pos, (size_t)(it.end - it.pos));
+            if (n) {
+                it.pos += n;
+                it.index++;
+                continue;
+            }
+        }
+        if ((st = rgl_cmd_next(&it, &cmd)) != RGL_OK)
+            break;
+        interp_exec(ip, &cmd);
+    }
+    ip->cmd = NULL;
+    if (st == RGL_END)
+        return RGL_OK;
+    if (err)
+        *err = it.error;
+    return st;
+}
+
+rgl_status interp_run_slow(interp *ip, const uint8_t *data, size_t size, uint64_t base_offset,
+                           rgl_error *err)
 {
     rgl_cmd_iter it;
     rgl_cmd cmd;

@@ -178,6 +178,12 @@ void interp_exec(interp *ip, const rgl_cmd *cmd);
 rgl_status interp_run(interp *ip, const uint8_t *data, size_t size, uint64_t base_offset,
                       rgl_error *err);
 
+/* As interp_run, but every command through the general decoder and
+ * interp_exec (no fast path for per-vertex commands): for tests, which
+ * check that both give the same scene. */
+rgl_status interp_run_slow(interp *ip, const uint8_t *data, size_t size, uint64_t base_offset,
+                           rgl_error *err);
+
 /* The state, for tests and for the frame driver. */
 const gl_state *interp_state(const interp *ip);
 

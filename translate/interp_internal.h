@@ -134,6 +134,10 @@ void interp_fix_camera(interp *ip);
 /* The viewport-scaled projection of the current state: clip -> window-ish. */
 mat4 interp_window_matrix(const mat4 *proj, const int32_t vp[4]);
 
+/* Adds a vertex with the current attributes to the open primitive, which
+ * must be drawing (in_begin, not prim_skip) (interp_prim.c). */
+void interp_add_vertex(interp *ip, double x, double y, double z, double w);
+
 /* Closes an open glBegin without drawing it (interp_prim.c). */
 void interp_abort_begin(interp *ip);
 

@@ -175,7 +175,7 @@ void interp_begin(interp *ip, const rgl_cmd *cmd)
 
 /* ---- Vertices ---------------------------------------------------------------- */
 
-static void add_vertex(interp *ip, double x, double y, double z, double w)
+void interp_add_vertex(interp *ip, double x, double y, double z, double w)
 {
     scene *s = ip->scene;
     size_t k = s->nverts - ip->prim_first;
@@ -236,7 +236,7 @@ void interp_vertex(interp *ip, const rgl_cmd *cmd)
         for (uint32_t k = 0; k < n && k < 4; k++)
             v[k] = cmd_value(cmd, k);
     }
-    add_vertex(ip, v[0], v[1], v[2], v[3]);
+    interp_add_vertex(ip, v[0], v[1], v[2], v[3]);
 }
 
 /* ---- Assembly ------------------------------------------------------------------- */
@@ -710,10 +710,10 @@ void interp_rect(interp *ip, const rgl_cmd *cmd)
     }
     begin_mode(ip, GL_POLYGON);
     if (!ip->prim_skip) {
-        add_vertex(ip, v[0], v[1], 0, 1);
-        add_vertex(ip, v[2], v[1], 0, 1);
-        add_vertex(ip, v[2], v[3], 0, 1);
-        add_vertex(ip, v[0], v[3], 0, 1);
+        interp_add_vertex(ip, v[0], v[1], 0, 1);
+        interp_add_vertex(ip, v[2], v[1], 0, 1);
+        interp_add_vertex(ip, v[2], v[3], 0, 1);
+        interp_add_vertex(ip, v[0], v[3], 0, 1);
     }
     end_primitive(ip);
 }

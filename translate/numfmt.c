@@ -255,8 +255,45 @@ static void fill_digits(char *out, uint64_t v, unsigned n)
     }
 }
 
+/* Up to six digits (mesh indices mostly), without loops. */
+static size_t put_small(char *out, uint32_t v)
+{
+    if (v < 100) {
+        if (v < 10) {
+            out[0] = (char)('0' + v);
+            return 1;
+        }
+        memcpy(out, digit_pairs + 2 * v, 2);
+        return 2;
+    }
+    if (v < 10000) {
+        uint32_t hi = v / 100, lo = v % 100;
+        if (hi < 10) {
+            out[0] = (char)('0' + hi);
+            memcpy(out + 1, digit_pairs + 2 * lo, 2);
+            return 3;
+        }
+        memcpy(out, digit_pairs + 2 * hi, 2);
+        memcpy(out + 2, digit_pairs + 2 * lo, 2);
+        return 4;
+    }
+    uint32_t hi = v / 10000, mid = v / 100 % 100, lo = v % 100;
+    size_t n = 0;
+    if (hi < 10) {
+        out[n++] = (char)('0' + hi);
+    } else {
+        memcpy(out, digit_pairs + 2 * hi, 2);
+        n = 2;
+    }
+    memcpy(out + n, digit_pairs + 2 * mid, 2);
+    memcpy(out + n + 2, digit_pairs + 2 * lo, 2);
+    return n + 4;
+}
+
 size_t numfmt_u64(char *out, uint64_t v)
 {
+    if (v < 1000000)
+        return put_small(out, (uint32_t)v);
     unsigned n = count_digits(v);
     fill_digits(out, v, n);
     return n;
@@ -321,31 +358,48 @@ static size_t put_decimal(char *out, uint64_t d, int k)
     return (size_t)(p - out);
 }
 
-size_t numfmt_f32(char *out, float value)
+/* d (n significant digits, n <= 9, d < 10^9) times 10^(x - n + 1), in fixed
+ * notation when that is no more than three characters longer than
+ * scientific; else 0 (the caller takes put_decimal). The nine digits are
+ * made with independent divisions by constants, no loop. */
+static size_t fast_fixed(char *out, uint32_t d, int n, int x)
 {
-    uint32_t u;
-    memcpy(&u, &value, sizeof u);
-    size_t neg = u >> 31;
-    u &= 0x7fffffffu;
-    if (u == 0 || u >= 0x7f800000u) {
-        out[0] = '0';
-        return 1;
+    int fixed_len = x >= n - 1 ? x + 1 : (x >= 0 ? n + 1 : n + 1 - x);
+    int ax = x < 0 ? -x : x;
+    int sci_len = n + (n > 1) + 1 + (x < 0) + (ax >= 10 ? 2 : 1);
+    if (fixed_len > sci_len + 3 || x > 8)
+        return 0;
+    char nine[32];
+    uint32_t hi = d / 100000000, lo = d % 100000000;
+    nine[0] = (char)('0' + hi);
+    memcpy(nine + 1, digit_pairs + 2 * (lo / 1000000), 2);
+    memcpy(nine + 3, digit_pairs + 2 * (lo / 10000 % 100), 2);
+    memcpy(nine + 5, digit_pairs + 2 * (lo / 100 % 100), 2);
+    memcpy(nine + 7, digit_pairs + 2 * (lo % 100), 2);
+    memset(nine + 9, '0', 16);
+    const char *dig = nine + 9 - n; /* the n significant digits, zeros after */
+    if (x >= n - 1) { /* an integer: at most 9 digits here */
+        memcpy(out, dig, 16);
+    } else if (x >= 0) { /* d.ddd */
+        memcpy(out, dig, 16);
+        out[x + 1] = '.';
+        memcpy(out + x + 2, dig + x + 1, 16);
+    } else { /* 0.000ddd: at most 5 zeros after the point */
+        memcpy(out, "0.00000000", 8);
+        memcpy(out - x + 1, dig, 16);
     }
-    if (neg)
-        out[0] = '-';
+    return (size_t)fixed_len;
+}
 
+/* The general search, for subnormals and the rare floats where the fast
+ * path below cannot decide. */
+static size_t general(char *out, uint32_t u)
+{
     uint32_t ef = u >> 23, mf = u & 0x7fffffu;
     uint64_t m = ef ? (mf | 0x800000u) : mf;
     int e2 = ef ? (int)ef - 150 : -149;
     float fa;
     memcpy(&fa, &u, sizeof fa);
-
-    /* Integers below 2^24: their own digits are the shortest (the interval
-     * is at most one wide). */
-    if (e2 == 0)
-        return neg + put_decimal(out + neg, m, 0);
-    if (e2 < 0 && e2 > -24 && (m & ((1ull << -e2) - 1)) == 0)
-        return neg + put_decimal(out + neg, m >> -e2, 0);
 
     fparts f;
     f.v = (double)fa;
@@ -360,11 +414,10 @@ size_t numfmt_f32(char *out, float value)
     f.e2q = e2 - 2;
     f.inclusive = (m & 1) == 0;
 
-    /* floor(log10 v) from floor(log2 v), corrected once by the table. */
+    /* floor(log10 v) from floor(log2 v), corrected by the table. */
     int bitlen = 64 - __builtin_clzll(m);
     int l2 = e2 + bitlen - 1;
-    int num = l2 * 78913; /* l2 * log10(2) * 2^18, floored below */
-    int E = num / 262144 - (num % 262144 < 0);
+    int E = (l2 * 1233 + 4096 * 64) / 4096 - 64; /* floor(l2 log10 2) or one less */
     if (f.v >= pow10d(E + 1))
         E++;
     else if (f.v < pow10d(E))
@@ -375,5 +428,82 @@ size_t numfmt_f32(char *out, float value)
     int k = 0;
     for (int p = 9; !shortest(&f, p, &d, &k) && p < 17; p++)
         ; /* p > 9 only when E came out one too high */
-    return neg + put_decimal(out + neg, d, k);
+    return put_decimal(out, d, k);
+}
+
+static const uint32_t pow10_u32[10] = {1,      10,      100,      1000,      10000,
+                                       100000, 1000000, 10000000, 100000000, 1000000000};
+
+size_t numfmt_f32(char *out, float value)
+{
+    uint32_t u;
+    memcpy(&u, &value, sizeof u);
+    size_t neg = u >> 31;
+    u &= 0x7fffffffu;
+    if (u == 0 || u >= 0x7f800000u) {
+        out[0] = '0';
+        return 1;
+    }
+    out[0] = '-';
+    out += neg;
+
+    uint32_t ef = u >> 23, mf = u & 0x7fffffu;
+    if (ef == 0)
+        return neg + general(out, u);
+    uint32_t m = mf | 0x800000u;
+    int e2 = (int)ef - 150;
+
+    /* Integers below 2^24: their own digits are the shortest (the interval
+     * is at most one wide). */
+    if (e2 <= 0 && e2 > -24 && (m & ((1u << -e2) - 1)) == 0)
+        return neg + put_decimal(out, m >> -e2, 0);
+
+    /* The fast path: the nine-digit scaling of the interval, in double. */
+    float fa;
+    memcpy(&fa, &u, sizeof fa);
+    double v = (double)fa;
+    int l2 = (int)ef - 127;
+    int E = (l2 * 1233 + 4096 * 64) / 4096 - 64;
+    if (v >= p10[E + 61])
+        E++;
+    double sc = p10[68 - E]; /* 10^(8 - E): nine digits before the point */
+    double ulp_sc, s = v * sc;
+    uint64_t ulp_bits = (uint64_t)(e2 + 1023) << 52;
+    memcpy(&ulp_sc, &ulp_bits, sizeof ulp_sc);
+    ulp_sc *= sc;
+    double slo = s - (mf == 0 && ef > 1 ? 0.25 : 0.5) * ulp_sc, shi = s + 0.5 * ulp_sc;
+    double eps = s * 0x1p-46;
+    int64_t a = (int64_t)slo, b = (int64_t)shi;
+    a += (double)a < slo;
+    /* Within rounding error of an end, or E one off: the exact search. */
+    if ((double)a - slo <= eps || slo - (double)(a - 1) <= eps || shi - (double)b <= eps ||
+        (double)(b + 1) - shi <= eps || a > b || s < 1e8)
+        return neg + general(out, u);
+
+    /* Drop trailing digits while [a, b] still holds a multiple of ten. */
+    uint32_t a32 = (uint32_t)a, b32 = (uint32_t)b;
+    int t = 0;
+    for (;;) {
+        uint32_t a10 = (a32 + 9) / 10, b10 = b32 / 10;
+        if (a10 > b10)
+            break;
+        a32 = a10;
+        b32 = b10;
+        t++;
+    }
+    uint32_t d = (uint32_t)(s * p10[60 - t] + 0.5);
+    d = d < a32 ? a32 : (d > b32 ? b32 : d);
+    /* d has 9 - t digits, or one more when it rounded up to a power of ten;
+     * the last one is not a zero (else the loop would have gone on). */
+    int n = 9 - t, x = E;
+    if (d >= pow10_u32[n]) {
+        n++;
+        x++;
+    }
+    if (n <= 9) {
+        size_t len = fast_fixed(out, d, n, x);
+        if (len)
+            return neg + len;
+    }
+    return neg + put_decimal(out, d, E - 8 + t);
 }

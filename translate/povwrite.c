@@ -26,11 +26,25 @@
 #define RAYGL_VERSION "unknown"
 #endif
 
+/* Formatted floats, by bit pattern: meshes repeat coordinates, normal
+ * components and colour channels far more often than whole vertices, and
+ * copying 16 bytes is much cheaper than formatting. Direct-mapped. */
+#define FCACHE_BITS 12
+
+typedef struct fcache_entry {
+    uint32_t bits;
+    uint32_t len; /* 0: empty */
+    char text[16];
+} fcache_entry;
+
 struct povwriter {
-    dedup pos, nrm, col;
-    uint32_t *remap; /* per pool vertex of the mesh: pos, nrm, col index */
+    fcache_entry fcache[1u << FCACHE_BITS];
+    dedup vtx, col; /* whole vertices (up to 10 words); colours */
+    uint32_t *vcol;  /* colour index of each vertex of vtx */
+    size_t cap_vcol;
+    uint32_t *remap; /* per pool vertex of the mesh: its vertex index */
     size_t cap_remap;
-    uint32_t *faces; /* per kept face: 3 pos, 3 col, 3 nrm indices */
+    uint32_t *faces; /* per kept face: 3 vertex, 3 colour indices */
     size_t cap_faces;
     scene_vertex *bverts; /* lines and points as quads */
     size_t nbverts, cap_bverts;
@@ -44,8 +58,7 @@ povwriter *povwriter_create(void)
     if (!w)
         return NULL;
     memset(w, 0, sizeof *w);
-    dedup_init(&w->pos, 3);
-    dedup_init(&w->nrm, 3);
+    dedup_init(&w->vtx, 3);
     dedup_init(&w->col, 4);
     return w;
 }
@@ -54,9 +67,9 @@ void povwriter_destroy(povwriter *w)
 {
     if (!w)
         return;
-    dedup_finish(&w->pos);
-    dedup_finish(&w->nrm);
+    dedup_finish(&w->vtx);
     dedup_finish(&w->col);
+    tr_free(w->vcol);
     tr_free(w->remap);
     tr_free(w->faces);
     tr_free(w->bverts);
@@ -66,9 +79,42 @@ void povwriter_destroy(povwriter *w)
 
 /* ---- Small writers ----------------------------------------------------------------- */
 
-static void put_vec3f(outbuf *ob, const float v[3])
+/* numfmt_f32 through the cache; q has NUMFMT_F32_ROOM bytes. */
+static inline size_t cached_f32(povwriter *w, char *q, float v)
+{
+    uint32_t bits;
+    memcpy(&bits, &v, sizeof bits);
+    fcache_entry *e = &w->fcache[(bits * 2654435761u) >> (32 - FCACHE_BITS)];
+    if (e->bits == bits && e->len) {
+        memcpy(q, e->text, sizeof e->text);
+        return e->len;
+    }
+    size_t n = numfmt_f32(q, v);
+    e->bits = bits;
+    e->len = (uint32_t)n;
+    memcpy(e->text, q, sizeof e->text);
+    return n;
+}
+
+static void put_vec3f_w(povwriter *w, outbuf *ob, const float v[3])
 {
     /* "<" x "," y "," z ">" in one reservation */
+    char *p = outbuf_room(ob, 3 * NUMFMT_F32_ROOM + 4);
+    if (!p)
+        return;
+    char *q = p;
+    *q++ = '<';
+    q += cached_f32(w, q, v[0]);
+    *q++ = ',';
+    q += cached_f32(w, q, v[1]);
+    *q++ = ',';
+    q += cached_f32(w, q, v[2]);
+    *q++ = '>';
+    outbuf_commit(ob, (size_t)(q - p));
+}
+
+static void put_vec3f(outbuf *ob, const float v[3])
+{
     char *p = outbuf_room(ob, 3 * NUMFMT_F32_ROOM + 4);
     if (!p)
         return;
@@ -116,12 +162,19 @@ static bool finite3d(const double v[3])
 }
 
 /* The texture of an unlit surface of colour c: the pixel is c exactly
- * (emission, with no ambient and no diffuse; docs/mapping.md). */
+ * (the #default finish: emission, no ambient, no diffuse; docs/mapping.md). */
 static void put_unlit_texture(outbuf *ob, const float c[4])
 {
     outbuf_puts(ob, "texture{pigment{");
     put_rgb(ob, c);
-    outbuf_puts(ob, "}finish{RGL_U}}");
+    outbuf_puts(ob, "}}");
+}
+
+static void put_unlit_texture_w(povwriter *w, outbuf *ob, const float c[4])
+{
+    outbuf_puts(ob, "texture{pigment{rgb");
+    put_vec3f_w(w, ob, c);
+    outbuf_puts(ob, "}}");
 }
 
 /* ---- Camera, background, lights ----------------------------------------------------- */
@@ -167,14 +220,21 @@ static void write_light(outbuf *ob, const scene_light *l)
 #define BAD (UINT32_MAX - 1)
 
 /* A mesh2 of triangles over a vertex pool; to_eye NULL: the vertices are
- * in eye space. Returns -1 on memory failure. */
+ * in eye space. Equal vertices (position, and normal and colour where
+ * they are written) are written once: one lookup per pool vertex. With
+ * normals, normal_vectors runs parallel to vertex_vectors and POV-Ray takes
+ * both by face_indices (no normal_indices). Colours are shared separately,
+ * as texture_list entries. Returns -1 on memory failure. */
 static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
                        const scene_tri *tris, size_t nt, const scene_look *look,
                        const mat4 *to_eye)
 {
-    bool normals = look->lit && !look->flat;
+    bool normals = look->lit && !look->flat, vcolour = !look->flat;
+    uint32_t words = 3 + (normals ? 3 : 0) + (vcolour ? 4 : 0);
+    dedup *vd = &w->vtx;
     if (nt == 0 || (to_eye && !mat4_finite(to_eye)))
         return 0;
+    vd->words = words;
 
     /* Vertices of a run sit in one stretch of the pool. */
     uint32_t lo = UINT32_MAX, hi = 0;
@@ -190,58 +250,72 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
         hi = v > hi ? v : hi;
     }
     size_t span = (size_t)hi - lo + 1;
-    if (tr_grow((void **)&w->remap, &w->cap_remap, span * 3, sizeof *w->remap) != 0 ||
-        tr_grow((void **)&w->faces, &w->cap_faces, nt * 9, sizeof *w->faces) != 0 ||
-        dedup_reset(&w->pos, span) != 0 || dedup_reset(&w->col, 64) != 0 ||
-        dedup_reset(&w->nrm, normals ? span : 16) != 0)
+    if (tr_grow((void **)&w->remap, &w->cap_remap, span, sizeof *w->remap) != 0 ||
+        tr_grow((void **)&w->faces, &w->cap_faces, nt * 6, sizeof *w->faces) != 0 ||
+        dedup_reset(vd, span) != 0 || dedup_reset(&w->col, 64) != 0)
         return -1;
-    memset(w->remap, 0xff, span * 3 * sizeof *w->remap); /* UNSET */
+    memset(w->remap, 0xff, span * sizeof *w->remap); /* UNSET */
+
+    /* Colours repeat in runs: remember the last one looked up. */
+    uint32_t last_col[4] = {0}, last_ci = DEDUP_NONE;
+#define COLOUR_INDEX(c, out)                                                        \
+    do {                                                                            \
+        uint32_t ck_[4];                                                            \
+        memcpy(ck_, (c), sizeof ck_);                                               \
+        if (last_ci == DEDUP_NONE || memcmp(ck_, last_col, sizeof ck_) != 0) {      \
+            if ((last_ci = dedup_index(&w->col, ck_)) == DEDUP_NONE)                \
+                return -1;                                                          \
+            memcpy(last_col, ck_, sizeof ck_);                                      \
+        }                                                                           \
+        (out) = last_ci;                                                            \
+    } while (0)
 
     /* Pass 1: index every used vertex, keep the faces GL would draw. */
     size_t kept = 0;
-    bool per_vertex_colour = false;
     for (size_t i = 0; i < nt; i++) {
         const scene_tri *t = &tris[i];
-        uint32_t *f = w->faces + kept * 9;
+        uint32_t *f = w->faces + kept * 6;
         bool ok = true;
         for (int k = 0; k < 3 && ok; k++) {
             uint32_t v = t->v[k];
-            uint32_t *r = w->remap + (size_t)(v - lo) * 3;
-            const scene_vertex *sv = &verts[v];
-            if (r[0] == UNSET) {
+            uint32_t *r = w->remap + (v - lo);
+            if (*r == UNSET) {
+                const scene_vertex *sv = &verts[v];
                 if (!finite3f(sv->pos)) {
-                    r[0] = BAD;
+                    *r = BAD;
                 } else {
-                    uint32_t key[3];
-                    float p[3] = {sv->pos[0] + 0.0f, sv->pos[1] + 0.0f, sv->pos[2] + 0.0f};
-                    memcpy(key, p, sizeof key); /* + 0 turns -0 into 0 */
-                    if ((r[0] = dedup_index(&w->pos, key)) == DEDUP_NONE)
-                        return -1;
-                }
-                if (!look->flat) {
-                    uint32_t ckey[4];
-                    memcpy(ckey, sv->color, sizeof ckey);
-                    if ((r[2] = dedup_index(&w->col, ckey)) == DEDUP_NONE)
-                        return -1;
-                }
-                if (normals) {
-                    float n[3] = {sv->normal[0], sv->normal[1], sv->normal[2]};
-                    if (!finite3f(n) || (n[0] == 0 && n[1] == 0 && n[2] == 0)) {
-                        n[0] = n[1] = 0; /* POV-Ray normalises; a zero normal cannot be */
-                        n[2] = 1;
+                    /* The key: position, normal, colour bits as the vertex
+                     * holds them (contiguous in scene_vertex). */
+                    uint32_t ukey[DEDUP_MAX_WORDS];
+                    memcpy(ukey, sv->pos, 3 * sizeof *ukey);
+                    uint32_t nk = 3;
+                    if (normals) {
+                        const float *n = sv->normal;
+                        if (!finite3f(n) || (n[0] == 0 && n[1] == 0 && n[2] == 0)) {
+                            static const float up[3] = {0, 0, 1}; /* POV-Ray normalises */
+                            memcpy(ukey + 3, up, sizeof up);
+                        } else {
+                            memcpy(ukey + 3, n, 3 * sizeof *ukey);
+                        }
+                        nk = 6;
                     }
-                    uint32_t nkey[3];
-                    n[0] += 0.0f, n[1] += 0.0f, n[2] += 0.0f;
-                    memcpy(nkey, n, sizeof nkey);
-                    if ((r[1] = dedup_index(&w->nrm, nkey)) == DEDUP_NONE)
+                    if (vcolour)
+                        memcpy(ukey + nk, sv->color, 4 * sizeof *ukey);
+                    size_t before = vd->count;
+                    if ((*r = dedup_index(vd, ukey)) == DEDUP_NONE)
                         return -1;
+                    if (vcolour && vd->count != before) { /* a new vertex: its colour */
+                        if (tr_grow((void **)&w->vcol, &w->cap_vcol, vd->count,
+                                    sizeof *w->vcol) != 0)
+                            return -1;
+                        COLOUR_INDEX(sv->color, w->vcol[*r]);
+                    }
                 }
             }
-            if (r[0] == BAD)
+            if (*r == BAD)
                 ok = false;
-            f[k] = r[0];
-            f[3 + k] = r[2];
-            f[6 + k] = r[1];
+            f[k] = *r;
+            f[3 + k] = vcolour && *r != BAD ? w->vcol[*r] : 0;
         }
         if (!ok || f[0] == f[1] || f[1] == f[2] || f[0] == f[2])
             continue;
@@ -255,37 +329,31 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
             continue;
         if (look->flat) {
             /* One colour, the provoking vertex's. */
-            const scene_vertex *pv = &verts[t->provoking];
-            uint32_t ckey[4];
-            memcpy(ckey, pv->color, sizeof ckey);
-            uint32_t ci = dedup_index(&w->col, ckey);
-            if (ci == DEDUP_NONE)
-                return -1;
+            uint32_t ci;
+            COLOUR_INDEX(verts[t->provoking].color, ci);
             f[3] = f[4] = f[5] = ci;
-        } else if (f[3] != f[4] || f[4] != f[5]) {
-            per_vertex_colour = true;
         }
         kept++;
     }
+#undef COLOUR_INDEX
     if (kept == 0)
         return 0;
     bool colour_list = w->col.count > 1;
-    (void)per_vertex_colour;
 
     /* Pass 2: the text. */
     outbuf_puts(ob, "mesh2{\nvertex_vectors{");
-    outbuf_u64(ob, w->pos.count);
-    for (size_t i = 0; i < w->pos.count; i++) {
+    outbuf_u64(ob, vd->count);
+    for (size_t i = 0; i < vd->count; i++) {
         outbuf_puts(ob, ",\n");
-        put_vec3f(ob, (const float *)(const void *)dedup_key(&w->pos, i));
+        put_vec3f_w(w, ob, (const float *)(const void *)dedup_key(vd, i));
     }
     outbuf_puts(ob, "}\n");
     if (normals) {
         outbuf_puts(ob, "normal_vectors{");
-        outbuf_u64(ob, w->nrm.count);
-        for (size_t i = 0; i < w->nrm.count; i++) {
+        outbuf_u64(ob, vd->count);
+        for (size_t i = 0; i < vd->count; i++) {
             outbuf_puts(ob, ",\n");
-            put_vec3f(ob, (const float *)(const void *)dedup_key(&w->nrm, i));
+            put_vec3f_w(w, ob, (const float *)(const void *)(dedup_key(vd, i) + 3));
         }
         outbuf_puts(ob, "}\n");
     }
@@ -294,16 +362,17 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
         outbuf_u64(ob, w->col.count);
         for (size_t i = 0; i < w->col.count; i++) {
             outbuf_puts(ob, ",\n");
-            put_unlit_texture(ob, (const float *)(const void *)dedup_key(&w->col, i));
+            put_unlit_texture_w(w, ob, (const float *)(const void *)dedup_key(&w->col, i));
         }
         outbuf_puts(ob, "}\n");
     }
-    /* Faces as (v0, v2, v1): see the file comment. */
+    /* Faces as (v0, v2, v1): see the file comment. Without normal_indices,
+     * POV-Ray takes the normals by face_indices. */
     static const int order[3] = {0, 2, 1};
     outbuf_puts(ob, "face_indices{");
     outbuf_u64(ob, kept);
     for (size_t i = 0; i < kept; i++) {
-        const uint32_t *f = w->faces + i * 9;
+        const uint32_t *f = w->faces + i * 6;
         char *p = outbuf_room(ob, 8 * 12);
         if (!p)
             return -1;
@@ -329,30 +398,10 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
         outbuf_commit(ob, (size_t)(q - p));
     }
     outbuf_puts(ob, "}\n");
-    if (normals) {
-        outbuf_puts(ob, "normal_indices{");
-        outbuf_u64(ob, kept);
-        for (size_t i = 0; i < kept; i++) {
-            const uint32_t *f = w->faces + i * 9 + 6;
-            char *p = outbuf_room(ob, 4 * 12);
-            if (!p)
-                return -1;
-            char *q = p;
-            *q++ = ',';
-            *q++ = '\n';
-            *q++ = '<';
-            for (int k = 0; k < 3; k++) {
-                q += numfmt_u64(q, f[order[k]]);
-                *q++ = k < 2 ? ',' : '>';
-            }
-            outbuf_commit(ob, (size_t)(q - p));
-        }
-        outbuf_puts(ob, "}\n");
-    }
     if (!colour_list)
         put_unlit_texture(ob, (const float *)(const void *)dedup_key(&w->col, 0));
     if (to_eye) {
-        const double *a = to_eye->m;
+        const double *m = to_eye->m;
         static const int idx[12] = {0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14};
         mat4 id = mat4_identity();
         if (!mat4_equal_f32(to_eye, &id)) {
@@ -360,7 +409,7 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
             for (int i = 0; i < 12; i++) {
                 if (i)
                     outbuf_putc(ob, ',');
-                outbuf_f32(ob, (float)a[idx[i]]);
+                outbuf_f32(ob, (float)m[idx[i]]);
             }
             outbuf_putc(ob, '>');
         }
@@ -493,7 +542,9 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
     write_camera(ob, &s->camera);
     outbuf_puts(ob, "background{");
     put_rgb(ob, s->background);
-    outbuf_puts(ob, "}\n#declare RGL_U=finish{ambient 0 diffuse 0 emission 1}\n");
+    /* Unlit surfaces: the pixel is the pigment (docs/mapping.md). Textures
+     * that need another finish (issue 4) name theirs. */
+    outbuf_puts(ob, "}\n#default{finish{ambient 0 diffuse 0 emission 1}}\n");
 
     bool any = false;
     for (size_t i = 0; i < s->nmeshes && !any; i++)

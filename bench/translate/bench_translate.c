@@ -1,7 +1,7 @@
 /* bench_translate.c: translation throughput, and POV-Ray's cost of the output.
  *
  *   bench_translate [--frames N] [--tris N] [--runs N] [--povray PATH|none] [--keep DIR]
- *                   [--no-printf]
+ *                   [--no-printf] [--layout strips|triangles]
  *
  * Builds a trace in memory with rgl_trace_builder: N frames (default 4) of
  * a lit torus (default 262144 triangles per frame, so 1M over the frames),
@@ -162,6 +162,7 @@ typedef struct layout_result {
 } layout_result;
 
 static bool compare_printf = true;
+static const char *only_layout = NULL;
 
 static void run_layout(const char *name, int strips, int nframes, size_t tris, int runs,
                        const char *keep)
@@ -360,9 +361,11 @@ int main(int argc, char **argv)
             keep = argv[++i];
         else if (strcmp(argv[i], "--no-printf") == 0)
             compare_printf = false;
+        else if (strcmp(argv[i], "--layout") == 0 && i + 1 < argc)
+            only_layout = argv[++i];
         else {
             fprintf(stderr, "usage: bench_translate [--frames N] [--tris N] [--runs N] "
-                            "[--povray PATH|none] [--keep DIR] [--no-printf]\n");
+                            "[--povray PATH|none] [--keep DIR] [--no-printf] [--layout strips|triangles]\n");
             return 2;
         }
     }
@@ -371,8 +374,10 @@ int main(int argc, char **argv)
     if (runs > 32)
         runs = 32;
     printf("bench_translate: one core, medians of %d runs, CPU time\n", runs);
-    run_layout("strips", 1, nframes, tris, runs, keep);
-    run_layout("triangles", 0, nframes, tris, runs, keep);
+    if (!only_layout || strcmp(only_layout, "strips") == 0)
+        run_layout("strips", 1, nframes, tris, runs, keep);
+    if (!only_layout || strcmp(only_layout, "triangles") == 0)
+        run_layout("triangles", 0, nframes, tris, runs, keep);
     if (strcmp(povray, "none") != 0) {
         char dir[] = "/tmp/rgl-bench-XXXXXX";
         const char *d = keep ? keep : mkdtemp(dir);

@@ -12,6 +12,7 @@
 #include "check.h"
 #include "interp.h"
 #include "talloc.h"
+#include "scenes.h"
 #include "tracegen.h"
 
 static scene sc;
@@ -600,6 +601,48 @@ static void test_alloc_failure(void)
     }
 }
 
+/* The run loop's fast path for per-vertex commands gives the very scene
+ * the general decoder gives. */
+static void test_fast_path(void)
+{
+    void (*const builders[])(seq *) = {scene_paper_box, scene_smooth, scene_lines_points,
+                                       scene_faces, scene_awkward};
+    for (size_t b = 0; b < sizeof builders / sizeof builders[0]; b++) {
+        seq s;
+        seq_init(&s);
+        CMD(&s, Enable, GL_COLOR_MATERIAL);
+        CMD(&s, Color4ub, 10, 20, 30, 40);
+        CMD(&s, Color4f, 0.1, 0.2, 0.3, 0.4);
+        CMD(&s, TexCoord2f, 0.5, 0.25);
+        builders[b](&s);
+        scene a, c;
+        scene_init(&a);
+        scene_init(&c);
+        interp *ia = interp_create(&a, NULL), *ic = interp_create(&c, NULL);
+        rgl_error err;
+        interp_begin_frame(ia);
+        interp_begin_frame(ic);
+        interp_run(ia, s.data, s.len, 0, &err);
+        interp_run_slow(ic, s.data, s.len, 0, &err);
+        interp_end_frame(ia);
+        interp_end_frame(ic);
+        CHECK(a.nverts == c.nverts && a.ntris == c.ntris && a.nlines == c.nlines &&
+              a.npoints == c.npoints && a.nmeshes == c.nmeshes);
+        if (a.nverts == c.nverts && a.nverts)
+            CHECK(memcmp(a.verts, c.verts, a.nverts * sizeof *a.verts) == 0);
+        if (a.ntris == c.ntris && a.ntris)
+            CHECK(memcmp(a.tris, c.tris, a.ntris * sizeof *a.tris) == 0);
+        if (a.nlines == c.nlines && a.nlines)
+            CHECK(memcmp(a.lines, c.lines, a.nlines * sizeof *a.lines) == 0);
+        CHECK(memcmp(&interp_state(ia)->a, &interp_state(ic)->a, sizeof(gl_attribs)) == 0);
+        interp_destroy(ia);
+        interp_destroy(ic);
+        scene_finish(&a);
+        scene_finish(&c);
+        seq_free(&s);
+    }
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -614,6 +657,7 @@ int main(void)
     test_attributes();
     test_runs();
     test_alloc_failure();
+    test_fast_path();
     scene_finish(&sc);
     return CHECK_RESULT("test_interp");
 }

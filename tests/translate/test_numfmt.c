@@ -107,6 +107,13 @@ static void test_cases(void)
     CHECK(strcmp(b, "-9223372036854775808") == 0);
     b[numfmt_u64(b, 0)] = '\0';
     CHECK(strcmp(b, "0") == 0);
+    for (uint64_t v = 0; v < 3000000; v += (v < 20000 ? 1 : 7)) {
+        char want[32];
+        snprintf(want, sizeof want, "%llu", (unsigned long long)v);
+        b[numfmt_u64(b, v)] = '\0';
+        if (strcmp(b, want) != 0 && check_failures++ < 5)
+            fprintf(stderr, "numfmt_u64(%s) = %s\n", want, b);
+    }
 }
 
 /* With a comma-decimal locale active, the text stays the same. The test

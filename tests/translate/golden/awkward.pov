@@ -9,7 +9,7 @@ camera{perspective
  direction <0,0,-1>
 }
 background{rgb<0,0,0>}
-#declare RGL_U=finish{ambient 0 diffuse 0 emission 1}
+#default{finish{ambient 0 diffuse 0 emission 1}}
 union{
 sphere{0,0}
 mesh2{
@@ -21,8 +21,8 @@ vertex_vectors{6,
 <0,-1,0>,
 <-1,0,0>}
 texture_list{2,
-texture{pigment{rgb<1,1,1>}finish{RGL_U}},
-texture{pigment{rgb<1,0.5,0>}finish{RGL_U}}}
+texture{pigment{rgb<1,1,1>}},
+texture{pigment{rgb<1,0.5,0>}}}
 face_indices{1,
 <3,5,4>,1}
 matrix<1,0,0,0,1,0,0,0,1,0,0,-5>
@@ -39,8 +39,8 @@ vertex_vectors{9,
 <-1.3095238,-1.0714285,-1.9047619>,
 <-1.7857143,-1.0714285,-1.9047619>}
 texture_list{2,
-texture{pigment{rgb<1,0.5,0>}finish{RGL_U}},
-texture{pigment{rgb<1,1,1>}finish{RGL_U}}}
+texture{pigment{rgb<1,0.5,0>}},
+texture{pigment{rgb<1,1,1>}}}
 face_indices{4,
 <0,2,1>,0,
 <0,4,3>,0,

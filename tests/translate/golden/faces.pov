@@ -9,7 +9,7 @@ camera{orthographic
  direction <0,0,-1>
 }
 background{rgb<0,0,0.2>}
-#declare RGL_U=finish{ambient 0 diffuse 0 emission 1}
+#default{finish{ambient 0 diffuse 0 emission 1}}
 union{
 sphere{0,0}
 mesh2{
@@ -22,8 +22,8 @@ vertex_vectors{7,
 <190,90,0>,
 <160,90,0>}
 texture_list{2,
-texture{pigment{rgb<0,1,0>}finish{RGL_U}},
-texture{pigment{rgb<0.5,0.25,1>}finish{RGL_U}}}
+texture{pigment{rgb<0,1,0>}},
+texture{pigment{rgb<0.5,0.25,1>}}}
 face_indices{3,
 <0,2,1>,0,
 <3,5,4>,1,
@@ -51,7 +51,7 @@ face_indices{6,
 <4,7,6>,
 <8,10,9>,
 <8,11,10>}
-texture{pigment{rgb<1,1,1>}finish{RGL_U}}
+texture{pigment{rgb<1,1,1>}}
 }
 clipped_by{plane{<0,0,1>,1}plane{<0,0,-1>,1}}
 }

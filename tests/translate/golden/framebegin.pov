@@ -10,7 +10,7 @@ camera{perspective
  direction <-0.51213205,-0.68284273,-0.8535534>
 }
 background{rgb<0,0,0>}
-#declare RGL_U=finish{ambient 0 diffuse 0 emission 1}
+#default{finish{ambient 0 diffuse 0 emission 1}}
 union{
 sphere{0,0}
 mesh2{
@@ -22,7 +22,7 @@ vertex_vectors{4,
 face_indices{2,
 <0,2,1>,
 <0,3,2>}
-texture{pigment{rgb<0.2,0.4,0.9>}finish{RGL_U}}
+texture{pigment{rgb<0.2,0.4,0.9>}}
 }
 }
 light_source{<100,100,100> rgb<1,1,1> parallel point_at<0,0,0>}

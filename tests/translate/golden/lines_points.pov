@@ -9,12 +9,12 @@ camera{orthographic
  direction <0,0,-1>
 }
 background{rgb<0,0,0>}
-#declare RGL_U=finish{ambient 0 diffuse 0 emission 1}
+#default{finish{ambient 0 diffuse 0 emission 1}}
 union{
 sphere{0,0}
-sphere{<80.5,200.5,0>,2.5 texture{pigment{rgb<1,1,1>}finish{RGL_U}}}
+sphere{<80.5,200.5,0>,2.5 texture{pigment{rgb<1,1,1>}}}
 mesh2{
-vertex_vectors{18,
+vertex_vectors{20,
 <20,18.5,0>,
 <20,21.5,0>,
 <150,41.5,0>,
@@ -27,6 +27,8 @@ vertex_vectors{18,
 <301,30,0>,
 <251,120,0>,
 <249,120,0>,
+<249,120,0>,
+<251,120,0>,
 <201,20,0>,
 <199,20,0>,
 <38,198,0>,
@@ -34,11 +36,11 @@ vertex_vectors{18,
 <43,203,0>,
 <38,203,0>}
 texture_list{5,
-texture{pigment{rgb<1,0,0>}finish{RGL_U}},
-texture{pigment{rgb<0,0,1>}finish{RGL_U}},
-texture{pigment{rgb<0,1,1>}finish{RGL_U}},
-texture{pigment{rgb<1,1,0>}finish{RGL_U}},
-texture{pigment{rgb<1,1,1>}finish{RGL_U}}}
+texture{pigment{rgb<1,0,0>}},
+texture{pigment{rgb<0,0,1>}},
+texture{pigment{rgb<0,1,1>}},
+texture{pigment{rgb<1,1,0>}},
+texture{pigment{rgb<1,1,1>}}}
 face_indices{10,
 <0,2,1>,0,1,0,
 <0,3,2>,0,1,1,
@@ -46,10 +48,10 @@ face_indices{10,
 <4,7,6>,2,
 <8,10,9>,2,
 <8,11,10>,2,
-<11,12,10>,3,
-<11,13,12>,3,
-<14,16,15>,4,
-<14,17,16>,4}
+<12,14,13>,3,
+<12,15,14>,3,
+<16,18,17>,4,
+<16,19,18>,4}
 
 }
 clipped_by{plane{<0,0,1>,1}plane{<0,0,-1>,1}}

@@ -9,29 +9,34 @@ camera{orthographic
  direction <0,0,-1>
 }
 background{rgb<0,0,0>}
-#declare RGL_U=finish{ambient 0 diffuse 0 emission 1}
+#default{finish{ambient 0 diffuse 0 emission 1}}
 union{
 sphere{0,0}
 mesh2{
-vertex_vectors{7,
+vertex_vectors{12,
 <10,-10,-10>,
 <10,10,-10>,
 <10,10,10>,
 <10,-10,10>,
 <-10,10,-10>,
 <-10,10,10>,
-<-10,-10,10>}
+<10,10,10>,
+<10,10,-10>,
+<-10,-10,10>,
+<10,-10,10>,
+<10,10,10>,
+<-10,10,10>}
 texture_list{3,
-texture{pigment{rgb<0.9,0.2,0.2>}finish{RGL_U}},
-texture{pigment{rgb<0.2,0.8,0.3>}finish{RGL_U}},
-texture{pigment{rgb<0.2,0.4,0.9>}finish{RGL_U}}}
+texture{pigment{rgb<0.9,0.2,0.2>}},
+texture{pigment{rgb<0.2,0.8,0.3>}},
+texture{pigment{rgb<0.2,0.4,0.9>}}}
 face_indices{6,
 <0,2,1>,0,
 <0,3,2>,0,
-<4,2,5>,1,
-<4,1,2>,1,
-<6,2,3>,2,
-<6,5,2>,2}
+<4,6,5>,1,
+<4,7,6>,1,
+<8,10,9>,2,
+<8,11,10>,2}
 matrix<0.853553,-0.146447,0.5,-0.146447,0.853553,0.5,-0.5,-0.5,0.707107,45,45,45>
 }
 clipped_by{plane{<0,0,1>,100}plane{<0,0,-1>,100}}

@@ -9,7 +9,7 @@ camera{perspective
  direction <0,0,-1>
 }
 background{rgb<0.3,0.3,0.3>}
-#declare RGL_U=finish{ambient 0 diffuse 0 emission 1}
+#default{finish{ambient 0 diffuse 0 emission 1}}
 union{
 sphere{0,0}
 mesh2{
@@ -18,9 +18,9 @@ vertex_vectors{3,
 <1,0,0>,
 <0,1.5,0>}
 texture_list{3,
-texture{pigment{rgb<1,0,0>}finish{RGL_U}},
-texture{pigment{rgb<0,1,0>}finish{RGL_U}},
-texture{pigment{rgb<0,0,1>}finish{RGL_U}}}
+texture{pigment{rgb<1,0,0>}},
+texture{pigment{rgb<0,1,0>}},
+texture{pigment{rgb<0,0,1>}}}
 face_indices{1,
 <0,2,1>,0,2,1}
 matrix<1,0,0,0,0.98639387,0.16439898,0,-0.16439898,0.98639387,0,2.9802322e-8,-6.0827622>
@@ -32,8 +32,8 @@ vertex_vectors{4,
 <1,1,0>,
 <0,1,0>}
 texture_list{2,
-texture{pigment{rgb<0,1,1>}finish{RGL_U}},
-texture{pigment{rgb<1,0,1>}finish{RGL_U}}}
+texture{pigment{rgb<0,1,1>}},
+texture{pigment{rgb<1,0,1>}}}
 face_indices{2,
 <0,2,1>,0,
 <0,3,2>,1}
@@ -52,11 +52,11 @@ vertex_vectors{10,
 <3,2,0>,
 <3,-1,0>}
 texture_list{5,
-texture{pigment{rgb<0,0.5,1>}finish{RGL_U}},
-texture{pigment{rgb<0.25,0.5,0.75>}finish{RGL_U}},
-texture{pigment{rgb<0.5,0.5,0.5>}finish{RGL_U}},
-texture{pigment{rgb<0.75,0.5,0.25>}finish{RGL_U}},
-texture{pigment{rgb<1,0.5,0>}finish{RGL_U}}}
+texture{pigment{rgb<0,0.5,1>}},
+texture{pigment{rgb<0.25,0.5,0.75>}},
+texture{pigment{rgb<0.5,0.5,0.5>}},
+texture{pigment{rgb<0.75,0.5,0.25>}},
+texture{pigment{rgb<1,0.5,0>}}}
 face_indices{8,
 <0,2,1>,0,1,0,
 <0,3,2>,0,1,1,
