@@ -7,7 +7,7 @@
  * STATE_CARRIED frame 1. Every frame is decoded, interpreted and written
  * as SDL to memory, then the SDL is checked: printable text, balanced
  * braces and angle brackets, no nan or inf, no directive but #version and
- * #declare. A failed check aborts (a crash for the fuzzer).
+ * #declare and #default. A failed check aborts (a crash for the fuzzer).
  *
  * Built as a libFuzzer binary with -Dfuzz=true and CC=clang; the replay
  * driver (replay.c) runs it over the corpus and every kept crasher in each
@@ -63,7 +63,9 @@ static void check_sdl(const char *t, size_t len)
             continue;
         }
         if (c == '#')
-            check(word_at(p, end, "#version") || word_at(p, end, "#declare"), "directive", t,
+            check(word_at(p, end, "#version") || word_at(p, end, "#declare") ||
+                      word_at(p, end, "#default"),
+                  "directive", t,
                   len);
         check(!word_at(p, end, "nan") && !word_at(p, end, "inf"), "nan or inf", t, len);
         braces += c == '{';
