@@ -350,13 +350,22 @@ static void add_segment(assembly *as, uint32_t i0, uint32_t i1, uint32_t provoki
 }
 
 /* GL's aliased point: a square of size x size pixels centred on the
- * point (GL 1.x 3.3); a smooth one is round. */
+ * point (GL 1.x 3.3); a smooth one is round. GL clips a point by its
+ * centre alone (2.12): inside the view volume it is drawn whole, outside
+ * not at all. */
 static void add_point(assembly *as, uint32_t i, uint32_t colour_from)
 {
-    double p[3], px, py, r[3], u[3];
+    double p[3], px, py, r[3], u[3], w[2];
     const scene_camera *cam = &as->s->camera;
-    if (!eye_pos(as->ip, &as->s->verts[i], p) || !scene_camera_pixel_size(cam, p, &px, &py))
+    if (!eye_pos(as->ip, &as->s->verts[i], p) || !scene_camera_pixel_size(cam, p, &px, &py) ||
+        !scene_camera_project(cam, p, w))
         return;
+    if (fabs(w[0]) > cam->width * 0.5 || fabs(w[1]) > cam->height * 0.5)
+        return;
+    for (int k = 0; k < 2 && cam->has_clip; k++)
+        if (cam->clip[k][0] * p[0] + cam->clip[k][1] * p[1] + cam->clip[k][2] * p[2] +
+                cam->clip[k][3] < 0)
+            return;
     image_axes(cam, r, u);
     scene_point *pt = scene_add_point(as->s);
     if (!pt)

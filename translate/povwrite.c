@@ -398,8 +398,10 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
         outbuf_commit(ob, (size_t)(q - p));
     }
     outbuf_puts(ob, "}\n");
-    if (!colour_list)
+    if (!colour_list) {
         put_unlit_texture(ob, (const float *)(const void *)dedup_key(&w->col, 0));
+        outbuf_putc(ob, '\n');
+    }
     if (to_eye) {
         const double *m = to_eye->m;
         static const int idx[12] = {0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14};
@@ -411,10 +413,10 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
                     outbuf_putc(ob, ',');
                 outbuf_f32(ob, (float)m[idx[i]]);
             }
-            outbuf_putc(ob, '>');
+            outbuf_puts(ob, ">\n");
         }
     }
-    outbuf_puts(ob, "\n}\n");
+    outbuf_puts(ob, "}\n");
     return 0;
 }
 
@@ -440,10 +442,9 @@ static int add_quad(povwriter *w, float c[4][3], const float *col[4])
     return 0;
 }
 
-/* Lines and square points: one mesh2 of flat quads in eye space (see
- * scene.h: each is the band or square GL rasterises). Round points are
- * spheres. */
-static int write_flat_items(povwriter *w, outbuf *ob, const scene *s)
+/* Lines: one mesh2 of flat quads in eye space (see scene.h: each is the
+ * band GL rasterises). */
+static int write_lines(povwriter *w, outbuf *ob, const scene *s)
 {
     w->nbverts = w->nbtris = 0;
     for (size_t i = 0; i < s->nlines; i++) {
@@ -463,16 +464,63 @@ static int write_flat_items(povwriter *w, outbuf *ob, const scene *s)
         if (add_quad(w, c, col) != 0)
             return -1;
     }
+    scene_look look;
+    memset(&look, 0, sizeof look);
+    look.material = look.texture = -1;
+    return write_mesh2(w, ob, w->bverts, w->btris, w->nbtris, &look, NULL);
+}
+
+/* A finite point of the drawn geometry, in eye space. */
+static void scene_anchor(const scene *s, float out[3])
+{
+    for (size_t i = 0; i < s->nmeshes; i++) {
+        const scene_mesh *m = &s->meshes[i];
+        for (size_t t = 0; t < m->tri_count; t++) {
+            const float *p = s->verts[s->tris[m->first_tri + t].v[0]].pos;
+            double in[4] = {p[0], p[1], p[2], 1}, o[4];
+            if (m->in_eye) {
+                o[0] = p[0], o[1] = p[1], o[2] = p[2], o[3] = 1;
+            } else {
+                mat4_apply(&m->to_eye, in, o);
+            }
+            if (finite3d(o) && o[3] == 1) {
+                for (int k = 0; k < 3; k++)
+                    out[k] = (float)o[k];
+                if (finite3f(out))
+                    return;
+            }
+        }
+    }
+    for (size_t i = 0; i < s->nlines; i++)
+        if (finite3f(s->lines[i].p[0])) {
+            memcpy(out, s->lines[i].p[0], 3 * sizeof *out);
+            return;
+        }
+}
+
+/* Points: squares as one mesh2, round ones as discs facing the camera.
+ * They stay outside the near/far clip: the interpreter kept only points
+ * whose centres GL would draw, and GL then draws them whole. */
+static int write_points(povwriter *w, outbuf *ob, const scene *s)
+{
+    const scene_camera *cam = &s->camera;
+    w->nbverts = w->nbtris = 0;
     for (size_t i = 0; i < s->npoints; i++) {
         const scene_point *pt = &s->points[i];
         if (!finite3f(pt->p) || !finite3f(pt->right) || !finite3f(pt->up))
             continue;
         if (pt->round) {
             float r = sqrtf(pt->up[0] * pt->up[0] + pt->up[1] * pt->up[1] + pt->up[2] * pt->up[2]);
-            if (!(r > 0) || !isfinite(r))
+            double n[3];
+            for (int k = 0; k < 3; k++)
+                n[k] = cam->kind == SCENE_CAMERA_ORTHOGRAPHIC ? -cam->direction[k]
+                                                              : cam->location[k] - pt->p[k];
+            if (!(r > 0) || !isfinite(r) || !finite3d(n) || (n[0] == 0 && n[1] == 0 && n[2] == 0))
                 continue;
-            outbuf_puts(ob, "sphere{");
+            outbuf_puts(ob, "disc{");
             put_vec3f(ob, pt->p);
+            outbuf_putc(ob, ',');
+            put_vec3d(ob, n);
             outbuf_putc(ob, ',');
             outbuf_f32(ob, r);
             outbuf_putc(ob, ' ');
@@ -549,12 +597,17 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
     bool any = false;
     for (size_t i = 0; i < s->nmeshes && !any; i++)
         any = s->meshes[i].tri_count > 0;
-    any = any || s->nlines > 0 || s->npoints > 0;
+    any = any || s->nlines > 0;
     if (any) {
         outbuf_puts(ob, "union{\n");
-        /* A union needs two members to be happy in every POV-Ray version;
-         * an empty sphere (radius 0 is legal, never hit) makes sure. */
-        outbuf_puts(ob, "sphere{0,0}\n");
+        /* POV-Ray warns about a union of one object; a sphere of radius 0
+         * (never hit) at a point of the geometry keeps it quiet without
+         * growing the union's bounding box. */
+        float anchor[3] = {0, 0, 0};
+        scene_anchor(s, anchor);
+        outbuf_puts(ob, "sphere{");
+        put_vec3f(ob, anchor);
+        outbuf_puts(ob, ",0}\n");
         for (size_t i = 0; i < s->nmeshes; i++) {
             const scene_mesh *m = &s->meshes[i];
             if (m->tri_count > 0 &&
@@ -562,11 +615,13 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
                             m->in_eye ? NULL : &m->to_eye) != 0)
                 return -1;
         }
-        if (write_flat_items(w, ob, s) != 0)
+        if (write_lines(w, ob, s) != 0)
             return -1;
         write_clip(ob, &s->camera);
         outbuf_puts(ob, "}\n");
     }
+    if (write_points(w, ob, s) != 0)
+        return -1;
     for (size_t i = 0; i < s->nlights; i++)
         write_light(ob, &s->lights[i]);
     return ob->failed ? -1 : 0;

@@ -80,9 +80,10 @@ typedef struct scene_line {
     float color[2][4]; /* equal when flat shaded */
 } scene_line;
 
-/* A point in eye space: GL's square of size x size pixels, corners at
- * p +- right +- up (eye-space half extents along the image axes), or, when
- * round (GL_POINT_SMOOTH), a sphere of radius |up|. */
+/* A point in eye space, inside the view volume (GL clips points by their
+ * centre): GL's square of size x size pixels, corners at p +- right +- up
+ * (eye-space half extents along the image axes), or, when round
+ * (GL_POINT_SMOOTH), a disc of radius |up| facing the camera. */
 typedef struct scene_point {
     float p[3];
     float right[3], up[3];

@@ -18,10 +18,11 @@
  * (the unique positions, normals, colours of a frame) with numfmt_f32 and
  * with snprintf("%.9g") (round-trip safe) and snprintf("%g") (not).
  *
- * With --povray (default: povray on the PATH), one frame of --tris
- * triangles is written to a file and parsed by POV-Ray (64x48, no
- * antialiasing); POV-Ray's own parse time and the peak memory
- * (/usr/bin/time -v) are reported. Figures only: never pass/fail.
+ * With --povray (default: povray on the PATH), one frame of all the frames'
+ * triangles (1M by default) is written to a file and parsed by POV-Ray
+ * (64x48, no antialiasing), once with a colour per vertex and once with one
+ * colour; POV-Ray's own parse time and the peak memory (/usr/bin/time -v)
+ * are reported. Figures only: never pass/fail.
  */
 #include <GL/gl.h>
 #include <math.h>
@@ -80,13 +81,18 @@ static void cmd_f(buf *b, uint32_t op, int n, const double *v)
           (double[]){__VA_ARGS__})
 #define C0(b, name) cmd_f((b), RGL_OP_##name, 0, NULL)
 
+static bool vary_colour = true;
+
 /* A torus vertex: position, normal, colour. */
 static void torus_vertex(buf *b, int i, int j, int rings, int sides, double phase)
 {
     double u = 2 * M_PI * i / rings + phase, v = 2 * M_PI * j / sides;
     double nx = cos(u) * cos(v), ny = sin(u) * cos(v), nz = sin(v);
     C(b, Normal3f, nx, ny, nz);
-    C(b, Color3f, 0.5 + 0.5 * cos(u), 0.5 + 0.5 * sin(v), 0.5 + 0.5 * cos(u + v));
+    if (vary_colour)
+        C(b, Color3f, 0.5 + 0.5 * cos(u), 0.5 + 0.5 * sin(v), 0.5 + 0.5 * cos(u + v));
+    else
+        C(b, Color3f, 0.8, 0.6, 0.2);
     C(b, Vertex3f, (2 + 0.7 * cos(v)) * cos(u), (2 + 0.7 * cos(v)) * sin(u), 0.7 * sin(v));
 }
 
@@ -299,8 +305,9 @@ static void run_layout(const char *name, int strips, int nframes, size_t tris, i
 }
 
 /* One frame of `tris` triangles through POV-Ray: parse time and memory. */
-static void run_povray(const char *povray, size_t tris, const char *dir)
+static void run_povray(const char *povray, size_t tris, const char *dir, bool colours)
 {
+    vary_colour = colours;
     rgl_trace_builder *tb = rgl_trace_builder_create();
     buf b = {0};
     build_frame(&b, tris, 1, 0);
@@ -328,8 +335,9 @@ static void run_povray(const char *povray, size_t tris, const char *dir)
     }
     fwrite(ob.buf, 1, ob.len, f);
     fclose(f);
-    printf("POV-Ray on one frame of %zu triangles (%.1f MB of SDL, mesh2):\n", ntris,
-           ob.len / 1e6);
+    printf("POV-Ray on one frame of %zu triangles, %s (%.1f MB of SDL, mesh2):\n", ntris,
+           colours ? "a colour per vertex" : "one colour", ob.len / 1e6);
+    fflush(stdout);
     snprintf(cmd, sizeof cmd,
              "cd '%s' && /usr/bin/time -v '%s' +Ibig.pov +Obig.png +W64 +H48 -D -A "
              "File_Gamma=2.2 >pov.log 2>&1; grep -E 'Parse Time|Bounding Time|Maximum resident|"
@@ -382,7 +390,8 @@ int main(int argc, char **argv)
         char dir[] = "/tmp/rgl-bench-XXXXXX";
         const char *d = keep ? keep : mkdtemp(dir);
         if (d) {
-            run_povray(povray, tris * (size_t)nframes, d);
+            run_povray(povray, tris * (size_t)nframes, d, true);
+            run_povray(povray, tris * (size_t)nframes, d, false);
             if (!keep) {
                 char cmd[256];
                 snprintf(cmd, sizeof cmd, "rm -rf '%s'", d);

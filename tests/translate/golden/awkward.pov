@@ -11,7 +11,7 @@ camera{perspective
 background{rgb<0,0,0>}
 #default{finish{ambient 0 diffuse 0 emission 1}}
 union{
-sphere{0,0}
+sphere{<0,0,-5>,0}
 mesh2{
 vertex_vectors{6,
 <0,0,0>,
@@ -46,7 +46,6 @@ face_indices{4,
 <0,4,3>,0,
 <5,7,6>,1,
 <5,8,7>,1}
-
 }
 clipped_by{plane{<0,0,1>,-1}plane{<0,0,-1>,20}}
 }

@@ -11,7 +11,7 @@ camera{orthographic
 background{rgb<0,0,0.2>}
 #default{finish{ambient 0 diffuse 0 emission 1}}
 union{
-sphere{0,0}
+sphere{<10,10,0>,0}
 mesh2{
 vertex_vectors{7,
 <10,10,0>,
@@ -28,7 +28,6 @@ face_indices{3,
 <0,2,1>,0,
 <3,5,4>,1,
 <3,6,5>,1}
-
 }
 mesh2{
 vertex_vectors{12,

@@ -12,7 +12,7 @@ camera{perspective
 background{rgb<0,0,0>}
 #default{finish{ambient 0 diffuse 0 emission 1}}
 union{
-sphere{0,0}
+sphere{<-10,-10,10>,0}
 mesh2{
 vertex_vectors{4,
 <-10,-10,10>,

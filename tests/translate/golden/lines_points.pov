@@ -11,10 +11,9 @@ camera{orthographic
 background{rgb<0,0,0>}
 #default{finish{ambient 0 diffuse 0 emission 1}}
 union{
-sphere{0,0}
-sphere{<80.5,200.5,0>,2.5 texture{pigment{rgb<1,1,1>}}}
+sphere{<20,20,0>,0}
 mesh2{
-vertex_vectors{20,
+vertex_vectors{16,
 <20,18.5,0>,
 <20,21.5,0>,
 <150,41.5,0>,
@@ -30,18 +29,13 @@ vertex_vectors{20,
 <249,120,0>,
 <251,120,0>,
 <201,20,0>,
-<199,20,0>,
-<38,198,0>,
-<43,198,0>,
-<43,203,0>,
-<38,203,0>}
-texture_list{5,
+<199,20,0>}
+texture_list{4,
 texture{pigment{rgb<1,0,0>}},
 texture{pigment{rgb<0,0,1>}},
 texture{pigment{rgb<0,1,1>}},
-texture{pigment{rgb<1,1,0>}},
-texture{pigment{rgb<1,1,1>}}}
-face_indices{10,
+texture{pigment{rgb<1,1,0>}}}
+face_indices{8,
 <0,2,1>,0,1,0,
 <0,3,2>,0,1,1,
 <4,6,5>,2,
@@ -49,10 +43,19 @@ face_indices{10,
 <8,10,9>,2,
 <8,11,10>,2,
 <12,14,13>,3,
-<12,15,14>,3,
-<16,18,17>,4,
-<16,19,18>,4}
-
+<12,15,14>,3}
 }
 clipped_by{plane{<0,0,1>,1}plane{<0,0,-1>,1}}
+}
+disc{<80.5,200.5,0>,<0,0,1>,2.5 texture{pigment{rgb<1,1,1>}}}
+mesh2{
+vertex_vectors{4,
+<38,198,0>,
+<43,198,0>,
+<43,203,0>,
+<38,203,0>}
+face_indices{2,
+<0,2,1>,
+<0,3,2>}
+texture{pigment{rgb<1,1,1>}}
 }

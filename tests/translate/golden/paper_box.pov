@@ -11,7 +11,7 @@ camera{orthographic
 background{rgb<0,0,0>}
 #default{finish{ambient 0 diffuse 0 emission 1}}
 union{
-sphere{0,0}
+sphere{<60,40,37.92893>,0}
 mesh2{
 vertex_vectors{12,
 <10,-10,-10>,

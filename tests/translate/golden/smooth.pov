@@ -11,7 +11,7 @@ camera{perspective
 background{rgb<0.3,0.3,0.3>}
 #default{finish{ambient 0 diffuse 0 emission 1}}
 union{
-sphere{0,0}
+sphere{<-1,2.9802322e-8,-6.0827622>,0}
 mesh2{
 vertex_vectors{3,
 <-1,0,0>,
