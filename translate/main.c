@@ -18,6 +18,7 @@
 #include <inttypes.h>
 #include <locale.h>
 #include <pthread.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdatomic.h>
 #include <stdio.h>
@@ -374,6 +375,58 @@ static char *temp_path(const char *dir, size_t slot, const char *ext)
     return join_path(dir, name);
 }
 
+/* ---- Interruption ------------------------------------------------------------------- */
+
+/* On SIGINT, SIGTERM or SIGHUP the temporary files of the frames in flight
+ * are removed before the process ends; finished frames stay. Everything the
+ * handler touches is prepared beforehand (async-signal-safe: unlink, _exit,
+ * atomics). */
+static char sig_prefix[4096]; /* "DIR/.raygl2pov-PID-" */
+static size_t sig_prefix_len;
+static atomic_size_t sig_first, sig_last; /* slots that may have temporary files */
+
+static void remove_temps_on_signal(int sig)
+{
+    static const char *const exts[2] = {".pov.tmp", ".ini.tmp"};
+    size_t first = atomic_load(&sig_first), last = atomic_load(&sig_last);
+    for (size_t k = first; k < last && sig_prefix_len; k++) {
+        char name[sizeof sig_prefix + 48], digits[24];
+        size_t n = 0, v = k;
+        do {
+            digits[n++] = (char)('0' + v % 10);
+            v /= 10;
+        } while (v);
+        for (int e = 0; e < 2; e++) {
+            size_t len = sig_prefix_len;
+            memcpy(name, sig_prefix, len);
+            for (size_t i = 0; i < n; i++)
+                name[len++] = digits[n - 1 - i];
+            for (const char *x = exts[e]; *x; x++)
+                name[len++] = *x;
+            name[len] = '\0';
+            unlink(name);
+        }
+    }
+    _exit(128 + sig);
+}
+
+static void catch_signals(const char *dir)
+{
+    size_t dl = strlen(dir);
+    int n = snprintf(sig_prefix, sizeof sig_prefix, "%s%s.raygl2pov-%ld-", dir,
+                     dl && dir[dl - 1] == '/' ? "" : "/", (long)getpid());
+    if (n <= 0 || (size_t)n >= sizeof sig_prefix)
+        return;
+    sig_prefix_len = (size_t)n;
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = remove_temps_on_signal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+    sigaction(SIGHUP, &sa, NULL);
+}
+
 /* ---- The work ----------------------------------------------------------------------- */
 
 typedef struct slot {
@@ -461,6 +514,9 @@ static void *worker(void *arg)
         size_t k = atomic_fetch_add(&j->next, 1);
         if (k >= j->nslots)
             break;
+        size_t last = atomic_load(&sig_last); /* k may now leave a temporary file */
+        while (last < k + 1 && !atomic_compare_exchange_weak(&sig_last, &last, k + 1))
+            ;
         slot *s = &j->slots[k];
         if (atomic_load(&j->abort) || !t || !ob_ok) {
             s->status = RGL_E_NOMEM;
@@ -789,6 +845,7 @@ int main(int argc, char **argv)
     for (size_t i = 0, k = 0; i < nframes; i++)
         if (selected(&o, i))
             j.slots[k++].frame = i;
+    catch_signals(o.outdir);
     pthread_mutex_init(&j.reader_lock, NULL);
     pthread_mutex_init(&j.done_lock, NULL);
     pthread_cond_init(&j.done_cond, NULL);
@@ -843,6 +900,7 @@ int main(int argc, char **argv)
                 unlink(tmp);
             tr_free(tmp);
         }
+        atomic_store(&sig_first, k + 1); /* slot k is published or cleaned */
         tr_free(s->log);
         s->log = NULL;
         tr_free(s->frame_name);
