@@ -126,6 +126,44 @@ typedef struct scene_light {
     float color[3];
 } scene_light;
 
+/* Places for the next issues. The interpreter already keeps the GL state
+ * they will come from (interp.h); nothing fills these yet. */
+
+/* A GL material, front and back (issue 4: lit runs refer to one). */
+typedef struct scene_material {
+    float ambient[2][4], diffuse[2][4], specular[2][4], emission[2][4];
+    float shininess[2];
+    bool two_sided;
+} scene_material;
+
+/* glFog, in eye space (issue 4). */
+typedef struct scene_fog {
+    bool on;
+    int mode; /* GL_LINEAR, GL_EXP, GL_EXP2 */
+    float density, start, end, color[4];
+} scene_fog;
+
+/* An image the scene maps (issue 5): a trace resource and how to sample it. */
+typedef struct scene_texture {
+    uint32_t resource; /* texel data in the trace */
+    int width, height;
+    bool repeat_s, repeat_t, linear;
+} scene_texture;
+
+/* A GLU/GLUT solid with an exact POV-Ray counterpart (issue 5), in its
+ * object space, placed by to_eye. */
+typedef enum scene_solid_kind {
+    SCENE_SOLID_SPHERE, SCENE_SOLID_BOX, SCENE_SOLID_CONE, SCENE_SOLID_TORUS,
+    SCENE_SOLID_DISC,
+} scene_solid_kind;
+
+typedef struct scene_solid {
+    scene_solid_kind kind;
+    double params[6];
+    mat4 to_eye;
+    scene_look look;
+} scene_solid;
+
 typedef struct scene {
     scene_camera camera;
     bool have_camera;
@@ -143,6 +181,8 @@ typedef struct scene {
     size_t npoints, cap_points;
     scene_light *lights;
     size_t nlights, cap_lights;
+    scene_fog fog; /* issue 4 */
+    /* Issue 4 and 5 add: materials, textures, solids (pools like the above). */
 
     bool failed; /* an allocation or limit failed; the scene is incomplete */
 } scene;
