@@ -2,15 +2,17 @@
  *
  * A float v = m * 2^e2 rounds back from any decimal inside its rounding
  * interval [v - gap_below/2, v + gap_above/2] (ends included when m is
- * even, as round-half-even does). For p = 1..9 significant digits the
- * interval scaled by 10^(p-1-E) (E = floor(log10 v)) holds an integer when
- * p digits suffice; existence is monotonic in p, so a binary search finds
- * the shortest p. The scaling is done in double: every float and both
- * interval ends are exact doubles, and the product is off by at most about
- * 2^-52 relatively, far below the interval's half-width of about 2^-25.
- * Only when a candidate lies within that error of an interval end does an
- * exact big-integer comparison decide. tests/translate/test_numfmt.c checks
- * the round trip and shortness against strtof over millions of floats.
+ * even, as round-half-even does). Scaled by 10^(8-E) (E = floor(log10 v))
+ * the interval holds the nine-digit integers [a, b] that read back to v;
+ * the shortest decimal is the one of them with the most trailing zeros,
+ * and of those the one closest to v. The scaling is done in double: every
+ * float and both interval ends are exact doubles, and the product is off by
+ * at most about 2^-52 relatively, far below the interval's half-width of
+ * about 2^-25. Only when an interval end lies within that error of an
+ * integer (or for subnormals) does the general search decide, with an
+ * exact big-integer comparison. tests/translate/test_numfmt.c checks the
+ * round trip and shortness against strtof over 1.4 million floats of every
+ * exponent; all 4.3 billion were checked once (see docs/mapping.md).
  */
 #include "numfmt.h"
 
