@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "frame.h"
 #include "interp.h"
 #include "talloc.h"
 #include "scenes.h"
@@ -601,6 +602,46 @@ static void test_alloc_failure(void)
     }
 }
 
+/* The whole translation with the n-th allocation failing, for every n that
+ * matters: an error comes back, never a crash or a leak (ASan build). */
+static void test_alloc_translation(void)
+{
+    seq s;
+    seq_init(&s);
+    scene_smooth(&s);
+    scene_lines_points(&s);
+    trace t;
+    trace_init(&t);
+    trace_frame(&t, 0, 0, 0, 0, &s);
+    trace_frame(&t, 0, 1, RGL_FRAME_STATE_CARRIED, 0, &s);
+    trace_finish(&t);
+    rgl_reader *r;
+    CHECK(rgl_reader_open_memory(t.data, t.size, &r, NULL) == RGL_OK);
+    int ok = 0;
+    for (unsigned long n = 1; n < 120; n++) {
+        tr_fail_alloc(n);
+        translator *tr = translator_create(r, NULL);
+        outbuf ob;
+        int oi = outbuf_init(&ob, 256, NULL, NULL);
+        for (size_t i = 0; tr && oi == 0 && i < 2; i++) {
+            frame_result res;
+            if (translator_build(tr, i, NULL, &res) == RGL_OK) {
+                pov_frame_info info = {"f.pov", "t.raygl", i, 0, (uint32_t)i, NULL};
+                ob.len = 0;
+                ok += translator_write_pov(tr, &ob, &info) == 0 && !ob.failed;
+            }
+        }
+        tr_fail_alloc(0);
+        if (oi == 0)
+            outbuf_finish(&ob);
+        translator_destroy(tr);
+    }
+    CHECK(ok > 0); /* late failures leave whole frames */
+    rgl_reader_destroy(r);
+    trace_free(&t);
+    seq_free(&s);
+}
+
 /* The run loop's fast path for per-vertex commands gives the very scene
  * the general decoder gives. */
 static void test_fast_path(void)
@@ -658,6 +699,7 @@ int main(void)
     test_runs();
     test_alloc_failure();
     test_fast_path();
+    test_alloc_translation();
     scene_finish(&sc);
     return CHECK_RESULT("test_interp");
 }
