@@ -1,13 +1,14 @@
 /* bench_translate.c: translation throughput, and POV-Ray's cost of the output.
  *
  *   bench_translate [--frames N] [--tris N] [--runs N] [--povray PATH|none] [--keep DIR]
- *                   [--no-printf] [--layout strips|triangles]
+ *                   [--no-printf] [--layout strips|triangles|strips1]
  *
  * Builds a trace in memory with rgl_trace_builder: N frames (default 4) of
  * a lit torus (default 262144 triangles per frame, so 1M over the frames),
  * every vertex sent as glNormal3f, glColor3f, glVertex3f, in two layouts:
- * GL_TRIANGLE_STRIP rings (each vertex sent twice over the frame) and
- * GL_TRIANGLES (each sent six times). For each layout it measures, on one
+ * GL_TRIANGLE_STRIP rings (each vertex sent twice over the frame),
+ * GL_TRIANGLES (each sent six times), and the strips again with every
+ * glColor3f the same ("strips1"). For each layout it measures, on one
  * core, medians of --runs runs:
  *
  *   decode      rgl_cmd_next over the frames, nothing else
@@ -373,7 +374,7 @@ int main(int argc, char **argv)
             only_layout = argv[++i];
         else {
             fprintf(stderr, "usage: bench_translate [--frames N] [--tris N] [--runs N] "
-                            "[--povray PATH|none] [--keep DIR] [--no-printf] [--layout strips|triangles]\n");
+                            "[--povray PATH|none] [--keep DIR] [--no-printf] [--layout strips|triangles|strips1]\n");
             return 2;
         }
     }
@@ -386,6 +387,12 @@ int main(int argc, char **argv)
         run_layout("strips", 1, nframes, tris, runs, keep);
     if (!only_layout || strcmp(only_layout, "triangles") == 0)
         run_layout("triangles", 0, nframes, tris, runs, keep);
+    if (!only_layout || strcmp(only_layout, "strips1") == 0) {
+        /* The same strips, every vertex still sending glColor, all one colour. */
+        vary_colour = false;
+        run_layout("strips1", 1, nframes, tris, runs, keep);
+        vary_colour = true;
+    }
     if (strcmp(povray, "none") != 0) {
         char dir[] = "/tmp/rgl-bench-XXXXXX";
         const char *d = keep ? keep : mkdtemp(dir);
