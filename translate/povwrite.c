@@ -37,8 +37,20 @@ typedef struct fcache_entry {
     char text[16];
 } fcache_entry;
 
+/* Formatted indices: a face names vertices written shortly before, so
+ * the same few thousand indices come back again and again. Slot = the
+ * index's low bits, so a window of 4096 consecutive indices never clash. */
+#define ICACHE_BITS 12
+
+typedef struct icache_entry {
+    uint32_t value;
+    uint32_t len; /* 0: empty */
+    char text[16];
+} icache_entry;
+
 struct povwriter {
     fcache_entry fcache[1u << FCACHE_BITS];
+    icache_entry icache[1u << ICACHE_BITS];
     dedup vtx, col; /* whole vertices (up to 10 words); colours */
     uint32_t *vcol;  /* colour index of each vertex of vtx */
     size_t cap_vcol;
@@ -91,6 +103,21 @@ static inline size_t cached_f32(povwriter *w, char *q, float v)
     }
     size_t n = numfmt_f32(q, v);
     e->bits = bits;
+    e->len = (uint32_t)n;
+    memcpy(e->text, q, sizeof e->text);
+    return n;
+}
+
+/* numfmt_u64 of a 32-bit index through the cache; q has 16 bytes. */
+static inline size_t cached_u32(povwriter *w, char *q, uint32_t v)
+{
+    icache_entry *e = &w->icache[v & ((1u << ICACHE_BITS) - 1)];
+    if (e->value == v && e->len) {
+        memcpy(q, e->text, sizeof e->text);
+        return e->len;
+    }
+    size_t n = numfmt_u64(q, v);
+    e->value = v;
     e->len = (uint32_t)n;
     memcpy(e->text, q, sizeof e->text);
     return n;
@@ -381,7 +408,7 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
         *q++ = '\n';
         *q++ = '<';
         for (int k = 0; k < 3; k++) {
-            q += numfmt_u64(q, f[order[k]]);
+            q += cached_u32(w, q, f[order[k]]);
             *q++ = k < 2 ? ',' : '>';
         }
         if (colour_list) {
