@@ -29,6 +29,8 @@ struct interp {
     const rgl_cmd *cmd; /* the command being executed */
     uint64_t notes_seen; /* NOTE_* kinds already logged in this frame */
     bool cleared;        /* the frame cleared the colour buffer */
+    uint32_t painter;    /* draws without a depth test since the frame's start
+                            or last clear (interp_prim.c, painter_shift) */
 
     /* glBegin .. glEnd */
     bool in_begin;

@@ -101,6 +101,51 @@ static void draw_notes(interp *ip)
         interp_note(ip, DIAG_NOTE_DEPTH);
 }
 
+/* Without a depth test GL shows the later of two draws where they overlap;
+ * a ray tracer shows the nearer. For draws in one plane (the common case:
+ * 2D drawings) the tie is broken toward draw order by moving each draw
+ * made without a depth test a little closer to the camera than the one
+ * before: by a factor 1 - k 1e-6 about the eye (perspective), which leaves
+ * every image position unchanged, or by k 1e-6 of the near-far distance
+ * along the view direction (orthographic). k counts such draws since the
+ * frame's start or last clear. Surfaces truly apart stay in depth order
+ * (docs/mapping.md, "What a ray tracer does differently"). */
+#define PAINTER_STEP 1e-6
+#define PAINTER_MAX 100000
+
+static void painter_shift(interp *ip, mat4 *to_eye)
+{
+    const gl_attribs *a = &ip->st.a;
+    if (a->caps[INTERP_CAP_DEPTH_TEST] && (a->depth.func == GL_LESS || a->depth.func == GL_LEQUAL))
+        return;
+    if (ip->painter < PAINTER_MAX)
+        ip->painter++;
+    const scene_camera *cam = &ip->scene->camera;
+    double k = ip->painter * PAINTER_STEP;
+    mat4 s = mat4_identity();
+    if (cam->kind == SCENE_CAMERA_ORTHOGRAPHIC) {
+        double range = 1;
+        if (cam->has_clip) /* the planes are unit-normal and face each other */
+            range = fabs(cam->clip[0][3] + cam->clip[1][3]);
+        if (!(range > 0) || !isfinite(range))
+            range = 1;
+        double dl = sqrt(cam->direction[0] * cam->direction[0] +
+                         cam->direction[1] * cam->direction[1] +
+                         cam->direction[2] * cam->direction[2]);
+        if (!(dl > 0))
+            return;
+        for (int i = 0; i < 3; i++)
+            s.m[12 + i] = -cam->direction[i] / dl * k * range;
+    } else {
+        double f = 1 - k;
+        for (int i = 0; i < 3; i++) {
+            s.m[i * 5] = f;
+            s.m[12 + i] = cam->location[i] * (1 - f);
+        }
+    }
+    *to_eye = mat4_mul(&s, to_eye);
+}
+
 /* Sets prim_to_eye / prim_clip for a draw with the current matrices.
  * Returns false when the transform cannot place anything. */
 static bool setup_transform(interp *ip)
@@ -128,6 +173,7 @@ static bool setup_transform(interp *ip)
         interp_diag(ip, DIAG_BAD_NUMBER, "matrix with NaN or infinite elements: draw skipped");
         return false;
     }
+    painter_shift(ip, &to_eye);
     ip->prim_to_eye = to_eye;
     ip->prim_in_eye = false;
     if (!mat4_affine(&to_eye)) {

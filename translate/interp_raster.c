@@ -52,6 +52,7 @@ void interp_begin_frame(interp *ip)
     ip->frame_name[0] = '\0';
     ip->notes_seen = 0;
     ip->cleared = false;
+    ip->painter = 0;
     if (ip->scene)
         scene_reset(ip->scene);
 }
@@ -136,6 +137,7 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
     scene_clear_geometry(ip->scene);
     ip->camera_fixed = false;
     ip->cleared = true;
+    ip->painter = 0;
     for (int i = 0; i < 4; i++)
         ip->scene->background[i] = a->color_buffer.clear[i];
 }

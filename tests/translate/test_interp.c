@@ -270,7 +270,7 @@ static size_t draw(interp *ip, GLenum mode, int n, tri3 *out)
     CMD(&s, Begin, mode);
     for (int i = 0; i < n; i++) {
         CMD(&s, Color3ub, (double)(i * 20), 0, 0);
-        CMD(&s, Vertex3f, i, (i * i) % 7, -1);
+        CMD(&s, Vertex3f, i, (i * i) % 7, 0);
     }
     CMD0(&s, End);
     run(ip, &s);
@@ -513,12 +513,12 @@ static void test_attributes(void)
     CMD(&s, Materialfv, GL_FRONT, GL_DIFFUSE, 0.25, 0.5, 0.75, 1);
     CMD(&s, Color3f, 1, 1, 1);
     CMD(&s, Begin, GL_POINTS);
-    CMD(&s, Vertex3f, 0, 0, -1);
+    CMD(&s, Vertex3f, 0, 0, 0);
     CMD0(&s, End);
     CMD(&s, Enable, GL_COLOR_MATERIAL);
     CMD(&s, Color3f, 0.1, 0.2, 0.3);
     CMD(&s, Begin, GL_POINTS);
-    CMD(&s, Vertex3f, 0, 0, -1);
+    CMD(&s, Vertex3f, 0, 0, 0);
     CMD0(&s, End);
     run(ip, &s);
     CHECK_EQ_U(sc.npoints, 2);
@@ -547,6 +547,7 @@ static void test_runs(void)
     interp *ip = fresh();
     seq s;
     seq_init(&s);
+    CMD(&s, Enable, GL_DEPTH_TEST);
     quad(&s);
     CMD(&s, Color3f, 1, 0, 0); /* colours are per vertex: same run */
     quad(&s);
@@ -570,6 +571,37 @@ static void test_runs(void)
     CHECK(sc.background[0] == 0.25f && sc.background[2] == 0.75f);
     interp_end_frame(ip);
     CHECK(sc.background[0] == 0.25f); /* the cleared colour stays */
+    interp_destroy(ip);
+}
+
+/* Without a depth test, each draw comes a little closer to the camera than
+ * the one before, so that coplanar draws show in draw order; images are
+ * unchanged (same window positions). */
+static void test_painter(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, MatrixMode, GL_PROJECTION);
+    CMD(&s, Frustum, -1, 1, -1, 1, 1, 10);
+    CMD(&s, MatrixMode, GL_MODELVIEW);
+    CMD(&s, Translatef, 0, 0, -5);
+    quad(&s);
+    quad(&s);
+    CMD(&s, Enable, GL_DEPTH_TEST);
+    quad(&s);
+    run(ip, &s);
+    CHECK_EQ_U(sc.nmeshes, 3);
+    if (sc.nmeshes == 3) {
+        double z0 = sc.meshes[0].to_eye.m[14], z1 = sc.meshes[1].to_eye.m[14],
+               z2 = sc.meshes[2].to_eye.m[14];
+        CHECK(z0 > -5 && z1 > z0 && z1 - z0 < 1e-4); /* nearer, by a hair */
+        CHECK(z2 == -5);                               /* depth-tested: as is */
+        /* Scaled about the eye: x/z (the image position) is unchanged. */
+        double x0 = sc.meshes[0].to_eye.m[0] * 0.5 + sc.meshes[0].to_eye.m[12];
+        double x1 = sc.meshes[1].to_eye.m[0] * 0.5 + sc.meshes[1].to_eye.m[12];
+        CHECK_NEAR(x0 / z0, x1 / z1, 1e-12);
+    }
     interp_destroy(ip);
 }
 
@@ -697,6 +729,7 @@ int main(void)
     test_polygon_mode();
     test_attributes();
     test_runs();
+    test_painter();
     test_alloc_failure();
     test_fast_path();
     test_alloc_translation();
