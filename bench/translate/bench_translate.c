@@ -341,7 +341,7 @@ static void run_povray(const char *povray, size_t tris, const char *dir, bool co
     fflush(stdout);
     snprintf(cmd, sizeof cmd,
              "cd '%s' && /usr/bin/time -v '%s' +Ibig.pov +Obig.png +W64 +H48 -D -A "
-             "File_Gamma=2.2 >pov.log 2>&1; grep -E 'Parse Time|Bounding Time|Maximum resident|"
+             "File_Gamma=2.2 >pov.log 2>&1; grep -E 'Parse Time|Bounding Time|Maximum resident|User time|"
              "Elapsed' pov.log | sed 's/^[ \\t]*/  /'",
              dir, povray);
     if (system(cmd) != 0)
