@@ -13,10 +13,11 @@
  *   interp_matrix.c  matrix modes, stacks, transforms, @Matrix, viewport
  *   interp_prim.c    Begin/End, vertex attributes, primitive assembly,
  *                    culling, polygon mode, lines and points, glRect
- *   interp_raster.c  clear, shading, face and rasterisation state, the frame
- *                    calls (rayglFrameBegin), the camera of the frame
- *   interp_light.c   lights, materials, fog, blending (state kept; issue 4
- *                    translates it)
+ *   interp_raster.c  clear, shading, face and rasterisation state, blend,
+ *                    alpha and depth functions, the frame calls
+ *                    (rayglFrameBegin), the camera of the frame
+ *   interp_light.c   lights, materials, colour material, fog (state kept as
+ *                    GL keeps it; issue 4 translates it)
  *   interp_later.c   textures, display lists, arrays, GLU and GLUT shapes
  *                    (issue 5: noted and skipped for now)
  *
