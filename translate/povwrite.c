@@ -123,22 +123,30 @@ static inline size_t cached_u32(povwriter *w, char *q, uint32_t v)
     return n;
 }
 
-static void put_vec3f_w(povwriter *w, outbuf *ob, const float v[3])
+/* pre, then "x,y,z", then post, in one reservation (pre and post are
+ * literals of the given lengths, at most 32 bytes). */
+static inline void put_entry(povwriter *w, outbuf *ob, const char *pre, size_t npre,
+                             const float v[3], const char *post, size_t npost)
 {
-    /* "<" x "," y "," z ">" in one reservation */
-    char *p = outbuf_room(ob, 3 * NUMFMT_F32_ROOM + 4);
+    char *p = outbuf_room(ob, 3 * NUMFMT_F32_ROOM + 72);
     if (!p)
         return;
     char *q = p;
-    *q++ = '<';
+    memcpy(q, pre, npre);
+    q += npre;
     q += cached_f32(w, q, v[0]);
     *q++ = ',';
     q += cached_f32(w, q, v[1]);
     *q++ = ',';
     q += cached_f32(w, q, v[2]);
-    *q++ = '>';
+    memcpy(q, post, npost);
+    q += npost;
     outbuf_commit(ob, (size_t)(q - p));
 }
+
+
+#define PUT_ENTRY(w, ob, pre, v, post) \
+    put_entry((w), (ob), (pre), sizeof(pre) - 1, (v), (post), sizeof(post) - 1)
 
 static void put_vec3f(outbuf *ob, const float v[3])
 {
@@ -197,12 +205,6 @@ static void put_unlit_texture(outbuf *ob, const float c[4])
     outbuf_puts(ob, "}}");
 }
 
-static void put_unlit_texture_w(povwriter *w, outbuf *ob, const float c[4])
-{
-    outbuf_puts(ob, "texture{pigment{rgb");
-    put_vec3f_w(w, ob, c);
-    outbuf_puts(ob, "}}");
-}
 
 /* ---- Camera, background, lights ----------------------------------------------------- */
 
@@ -367,30 +369,25 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
         return 0;
     bool colour_list = w->col.count > 1;
 
-    /* Pass 2: the text. */
+    /* Pass 2: the text. Each entry is written into one reservation. */
     outbuf_puts(ob, "mesh2{\nvertex_vectors{");
     outbuf_u64(ob, vd->count);
-    for (size_t i = 0; i < vd->count; i++) {
-        outbuf_puts(ob, ",\n");
-        put_vec3f_w(w, ob, (const float *)(const void *)dedup_key(vd, i));
-    }
+    for (size_t i = 0; i < vd->count; i++)
+        PUT_ENTRY(w, ob, ",\n<", (const float *)(const void *)dedup_key(vd, i), ">");
     outbuf_puts(ob, "}\n");
     if (normals) {
         outbuf_puts(ob, "normal_vectors{");
         outbuf_u64(ob, vd->count);
-        for (size_t i = 0; i < vd->count; i++) {
-            outbuf_puts(ob, ",\n");
-            put_vec3f_w(w, ob, (const float *)(const void *)(dedup_key(vd, i) + 3));
-        }
+        for (size_t i = 0; i < vd->count; i++)
+            PUT_ENTRY(w, ob, ",\n<", (const float *)(const void *)(dedup_key(vd, i) + 3), ">");
         outbuf_puts(ob, "}\n");
     }
     if (colour_list) {
         outbuf_puts(ob, "texture_list{");
         outbuf_u64(ob, w->col.count);
-        for (size_t i = 0; i < w->col.count; i++) {
-            outbuf_puts(ob, ",\n");
-            put_unlit_texture_w(w, ob, (const float *)(const void *)dedup_key(&w->col, i));
-        }
+        for (size_t i = 0; i < w->col.count; i++)
+            PUT_ENTRY(w, ob, ",\ntexture{pigment{rgb<",
+                      (const float *)(const void *)dedup_key(&w->col, i), ">}}");
         outbuf_puts(ob, "}\n");
     }
     /* Faces as (v0, v2, v1): see the file comment. Without normal_indices,
