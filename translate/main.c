@@ -270,8 +270,10 @@ static void say_decode_error(const options *o, const char *where, const rgl_erro
     char cmdpart[96] = "";
     if (info)
         snprintf(cmdpart, sizeof cmdpart, ", cmd %" PRIu64 " (%s)", e->cmd_index, info->name);
-    say(o, "%s%s @0x%" PRIx64 ": %s%s%s", where, cmdpart, e->offset, rgl_status_str(e->status),
-        e->detail[0] ? ": " : "", e->detail);
+    const char *st = rgl_status_str(e->status);
+    bool detail = e->detail[0] && strcmp(e->detail, st) != 0;
+    say(o, "%s%s%s@0x%" PRIx64 ": %s%s%s", where, cmdpart, *where || *cmdpart ? " " : "",
+        e->offset, st, detail ? ": " : "", detail ? e->detail : "");
 }
 
 /* ---- Names and files -------------------------------------------------------------- */
@@ -792,7 +794,7 @@ int main(int argc, char **argv)
         if (st == RGL_E_IO)
             say(&o, "cannot read: %s", strerror(errno));
         else
-            say_decode_error(&o, "not readable", &err);
+            say_decode_error(&o, "", &err);
         return EXIT_INPUT;
     }
     totals tot;
