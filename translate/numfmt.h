@@ -10,8 +10,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* Longest output of numfmt_f32, without the NUL: "-1.2345678e-38". */
-#define NUMFMT_F32_MAX 16
+/* Longest output of numfmt_f32, without the NUL: a sign and 16 characters
+ * of fixed notation ("-1073639350000000", "-0.00000123456789"), which is
+ * used while at most three characters longer than scientific. */
+#define NUMFMT_F32_MAX 17
 /* Bytes numfmt_f32 may touch at out: it copies in fixed-size blocks for
  * speed; bytes past the returned length are scratch. */
 #define NUMFMT_F32_ROOM 40

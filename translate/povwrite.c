@@ -34,7 +34,7 @@
 typedef struct fcache_entry {
     uint32_t bits;
     uint32_t len; /* 0: empty */
-    char text[16];
+    char text[24]; /* NUMFMT_F32_MAX and more: copied whole */
 } fcache_entry;
 
 /* Formatted indices: a face names vertices written shortly before, so
@@ -92,6 +92,9 @@ void povwriter_destroy(povwriter *w)
 /* ---- Small writers ----------------------------------------------------------------- */
 
 /* numfmt_f32 through the cache; q has NUMFMT_F32_ROOM bytes. */
+_Static_assert(NUMFMT_F32_MAX <= sizeof(((fcache_entry *)0)->text) &&
+                   sizeof(((fcache_entry *)0)->text) <= NUMFMT_F32_ROOM,
+               "the float cache holds every formatted float");
 static inline size_t cached_f32(povwriter *w, char *q, float v)
 {
     uint32_t bits;
