@@ -31,6 +31,7 @@
 #include "format.h"
 #include "frame.h"
 #include "outbuf.h"
+#include "options.h"
 #include "povwrite.h"
 #include "talloc.h"
 
@@ -41,32 +42,13 @@
 #define PROG "raygl2pov"
 #define EXIT_INPUT 1
 #define EXIT_USAGE 2
-#define MAX_JOBS 256
 #define NAME_MAX_STEM 100
 
-/* ---- Options ---------------------------------------------------------------- */
+/* ---- Options (options.def) ----------------------------------------------------------------- */
 
-typedef struct range {
-    uint64_t first, last; /* inclusive; last = UINT64_MAX for "A-" */
-} range;
-
-typedef struct options {
-    const char *trace;
-    const char *outdir;
-    range *ranges;
-    size_t nranges;
-    int jobs;
-    bool dump, quiet;
-} options;
-
-static void usage_error(const char *fmt, ...)
+static void usage_error(const char *msg)
 {
-    va_list ap;
-    fputs(PROG ": ", stderr);
-    va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
-    va_end(ap);
-    fputs("\nTry '" PROG " --help' for more information.\n", stderr);
+    fprintf(stderr, PROG ": %s\nTry '" PROG " --help' for more information.\n", msg);
     exit(EXIT_USAGE);
 }
 
@@ -76,165 +58,38 @@ static void print_help(void)
           "Translate a RayGL trace into POV-Ray 3.7 scenes that reproduce the OpenGL\n"
           "frames: DIR/frame-00000.pov and DIR/frame-00000.ini for the first frame, and\n"
           "so on (a frame started by rayglFrameBegin(\"name.pov\", ...) is written as\n"
-          "DIR/name.pov). Render a frame with:  povray DIR/frame-00000.ini\n"
-          "\n"
-          "  -o, --output DIR     write the scenes into DIR (created when missing)\n"
-          "      --frames LIST    translate only these frames, numbered in file order\n"
-          "                       from 0: a comma-separated list of N, A-B and A-\n"
-          "  -j, --jobs N         translate N frames at once (default: one per core)\n"
-          "      --dump           print every frame and command of the trace on\n"
-          "                       standard output (with -o, translate as well)\n"
-          "  -q, --quiet          print errors only\n"
-          "  -h, --help           print this help and exit\n"
-          "  -V, --version        print the version and exit\n"
-          "\n"
+          "DIR/name.pov). Render a frame with:  povray DIR/frame-00000.ini\n",
+          stdout);
+    opt_print_help(stdout);
+    fputs("\n"
           "Exit status: 0 on success, 1 when the trace is damaged (every intact frame\n"
           "is still written) or the output cannot be written, 2 on bad usage.\n",
           stdout);
 }
 
-static bool parse_u64(const char *s, const char **end, uint64_t *out)
-{
-    uint64_t v = 0;
-    if (*s < '0' || *s > '9')
-        return false;
-    for (; *s >= '0' && *s <= '9'; s++) {
-        if (v > (UINT64_MAX - 9) / 10)
-            return false;
-        v = v * 10 + (uint64_t)(*s - '0');
-    }
-    *end = s;
-    *out = v;
-    return true;
-}
-
-static void parse_frames(options *o, const char *spec)
-{
-    const char *p = spec;
-    while (*p) {
-        range r;
-        const char *e;
-        if (!parse_u64(p, &e, &r.first))
-            usage_error("--frames '%s': expected a frame number at '%s'", spec, p);
-        r.last = r.first;
-        p = e;
-        if (*p == '-') {
-            p++;
-            if (*p == ',' || *p == '\0')
-                r.last = UINT64_MAX;
-            else if (!parse_u64(p, &e, &r.last))
-                usage_error("--frames '%s': expected a frame number at '%s'", spec, p);
-            else
-                p = e;
-            if (r.last < r.first)
-                usage_error("--frames '%s': range %" PRIu64 "-%" PRIu64 " runs backwards", spec,
-                            r.first, r.last);
-        }
-        if (*p == ',')
-            p++;
-        else if (*p)
-            usage_error("--frames '%s': unexpected '%c'", spec, *p);
-        range *n = tr_realloc(o->ranges, (o->nranges + 1) * sizeof *n);
-        if (!n) {
-            fputs(PROG ": out of memory\n", stderr);
-            exit(EXIT_INPUT);
-        }
-        o->ranges = n;
-        o->ranges[o->nranges++] = r;
-    }
-    if (o->nranges == 0)
-        usage_error("--frames: empty list");
-}
-
-static void parse_jobs(options *o, const char *s)
-{
-    const char *e;
-    uint64_t v;
-    if (!parse_u64(s, &e, &v) || *e || v < 1 || v > MAX_JOBS)
-        usage_error("-j '%s': expected a number of jobs from 1 to %d", s, MAX_JOBS);
-    o->jobs = (int)v;
-}
-
-/* The value of an option given as "-o X", "-oX", "--output X" or
- * "--output=X"; advances *i past it. */
-static const char *option_value(int argc, char **argv, int *i, const char *shortopt,
-                                const char *longopt)
-{
-    const char *a = argv[*i];
-    size_t sl = strlen(shortopt), ll = strlen(longopt);
-    if (shortopt[0] && strncmp(a, shortopt, sl) == 0 && a[sl])
-        return a + sl;
-    if (strncmp(a, longopt, ll) == 0 && a[ll] == '=')
-        return a + ll + 1;
-    if (*i + 1 >= argc)
-        usage_error("option '%s' needs a value", a);
-    return argv[++*i];
-}
-
-static bool is_opt(const char *a, const char *shortopt, const char *longopt)
-{
-    size_t sl = strlen(shortopt), ll = strlen(longopt);
-    if (shortopt[0] && strncmp(a, shortopt, sl) == 0)
-        return true;
-    return strcmp(a, longopt) == 0 || (strncmp(a, longopt, ll) == 0 && a[ll] == '=');
-}
-
 static void parse_args(int argc, char **argv, options *o)
 {
-    memset(o, 0, sizeof *o);
-    bool only_args = false;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (only_args || a[0] != '-' || strcmp(a, "-") == 0) {
-            if (o->trace)
-                usage_error("more than one trace given ('%s' and '%s')", o->trace, a);
-            o->trace = a;
-        } else if (strcmp(a, "--") == 0) {
-            only_args = true;
-        } else if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
-            print_help();
-            exit(0);
-        } else if (strcmp(a, "-V") == 0 || strcmp(a, "--version") == 0) {
-            printf(PROG " " RAYGL_VERSION " (trace format %d.%d)\n", RGL_FORMAT_MAJOR,
-                   RGL_FORMAT_MINOR);
-            exit(0);
-        } else if (strcmp(a, "--dump") == 0) {
-            o->dump = true;
-        } else if (strcmp(a, "-q") == 0 || strcmp(a, "--quiet") == 0) {
-            o->quiet = true;
-        } else if (is_opt(a, "-o", "--output")) {
-            o->outdir = option_value(argc, argv, &i, "-o", "--output");
-        } else if (is_opt(a, "-j", "--jobs")) {
-            parse_jobs(o, option_value(argc, argv, &i, "-j", "--jobs"));
-        } else if (is_opt(a, "", "--frames")) {
-            parse_frames(o, option_value(argc, argv, &i, "", "--frames"));
-        } else {
-            usage_error("unknown option '%s'", a);
-        }
+    opt_err err;
+    opt_init(o);
+    if (!opt_parse_args(o, argc, argv, &err))
+        usage_error(err.msg);
+    if (o->help) {
+        print_help();
+        exit(0);
     }
-    if (!o->trace)
-        usage_error("no trace given");
-    if (!o->outdir && !o->dump)
-        usage_error("no output folder given (-o DIR)");
-    if (o->outdir && !*o->outdir)
-        usage_error("empty output folder name");
-    if (o->outdir && !pov_ini_path_ok(o->outdir))
-        usage_error("output folder '%s': a double quote or control character cannot be "
-                    "written into POV-Ray's .ini", o->outdir);
-    if (o->jobs == 0) {
-        long n = sysconf(_SC_NPROCESSORS_ONLN);
-        o->jobs = n < 1 ? 1 : (n > MAX_JOBS ? MAX_JOBS : (int)n);
+    if (o->version) {
+        printf(PROG " " RAYGL_VERSION " (trace format %d.%d)\n", RGL_FORMAT_MAJOR,
+               RGL_FORMAT_MINOR);
+        exit(0);
     }
-}
-
-static bool selected(const options *o, uint64_t i)
-{
-    if (o->nranges == 0)
-        return true;
-    for (size_t k = 0; k < o->nranges; k++)
-        if (i >= o->ranges[k].first && i <= o->ranges[k].last)
-            return true;
-    return false;
+    if (!opt_finish_parse(o, &err))
+        usage_error(err.msg);
+    if (o->outdir && !pov_ini_path_ok(o->outdir)) {
+        snprintf(err.msg, sizeof err.msg,
+                 "output folder '%.200s': a double quote or control character cannot be "
+                 "written into POV-Ray's .ini", o->outdir);
+        usage_error(err.msg);
+    }
 }
 
 /* ---- Messages ---------------------------------------------------------------- */
@@ -733,7 +588,7 @@ static int dump(const options *o, rgl_reader *r)
         }
     }
     for (size_t i = 0; i < rgl_reader_frame_count(r); i++) {
-        if (!selected(o, i))
+        if (!opt_frame_selected(o, i))
             continue;
         rgl_frame_info fi;
         rgl_error err;
@@ -809,7 +664,7 @@ int main(int argc, char **argv)
         tot.status = EXIT_INPUT;
     if (!o.outdir) {
         rgl_reader_destroy(reader);
-        tr_free(o.ranges);
+        opt_free(&o);
         return tot.status;
     }
 
@@ -819,7 +674,7 @@ int main(int argc, char **argv)
     j.o = &o;
     j.reader = reader;
     for (size_t i = 0; i < nframes; i++)
-        if (selected(&o, i))
+        if (opt_frame_selected(&o, i))
             j.nslots++;
     if (j.nslots == 0) {
         if (o.nranges)
@@ -827,14 +682,14 @@ int main(int argc, char **argv)
         else
             say(&o, "no frames to translate");
         rgl_reader_destroy(reader);
-        tr_free(o.ranges);
+        opt_free(&o);
         return EXIT_INPUT;
     }
     if (make_dirs(o.outdir) != 0) {
         fprintf(stderr, PROG ": %s: cannot create the output folder: %s\n", o.outdir,
                 strerror(errno));
         rgl_reader_destroy(reader);
-        tr_free(o.ranges);
+        opt_free(&o);
         return EXIT_INPUT;
     }
     j.slots = tr_realloc(NULL, j.nslots * sizeof *j.slots);
@@ -845,7 +700,7 @@ int main(int argc, char **argv)
     }
     memset(j.slots, 0, j.nslots * sizeof *j.slots);
     for (size_t i = 0, k = 0; i < nframes; i++)
-        if (selected(&o, i))
+        if (opt_frame_selected(&o, i))
             j.slots[k++].frame = i;
     catch_signals(o.outdir);
     pthread_mutex_init(&j.reader_lock, NULL);
@@ -853,7 +708,7 @@ int main(int argc, char **argv)
     pthread_cond_init(&j.done_cond, NULL);
 
     int nthreads = o.jobs < (int)j.nslots ? o.jobs : (int)j.nslots;
-    pthread_t threads[MAX_JOBS];
+    pthread_t threads[OPT_MAX_JOBS];
     int started = 0;
     for (; started < nthreads; started++)
         if (pthread_create(&threads[started], NULL, worker, &j) != 0)
@@ -918,7 +773,7 @@ int main(int argc, char **argv)
         tr_free(used.v[i]);
     tr_free(used.v);
     tr_free(j.slots);
-    tr_free(o.ranges);
+    opt_free(&o);
     pthread_cond_destroy(&j.done_cond);
     pthread_mutex_destroy(&j.done_lock);
     pthread_mutex_destroy(&j.reader_lock);
