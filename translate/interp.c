@@ -189,19 +189,28 @@ void interp_destroy(interp *ip)
     tr_free(ip->begin_ok);
     tr_free(ip->edge);
     tr_free(ip->clipv);
+    interp_textures_free(ip);
     tr_free(ip);
 }
 
 void interp_reset(interp *ip)
 {
     interp_default_state(&ip->st);
+    memset(ip->quadrics, 0, sizeof ip->quadrics);
+    interp_textures_free(ip);
     ip->in_begin = false;
     ip->camera_fixed = false;
     ip->frame_begin = false;
     ip->frame_name[0] = '\0';
 }
 
-void interp_copy_state(interp *dst, const interp *src) { dst->st = src->st; }
+void interp_copy_state(interp *dst, const interp *src)
+{
+    dst->st = src->st;
+    memcpy(dst->quadrics, src->quadrics, sizeof dst->quadrics);
+    if (interp_textures_copy(dst, src) != 0 && dst->scene)
+        dst->scene->failed = true;
+}
 
 void interp_attach(interp *ip, scene *out, diag_log *log)
 {

@@ -17,8 +17,21 @@
 #include "commands.def"
 #undef RGL_CMD
 
+/* A GLU quadric object's state (by the recorder's id). */
+typedef struct interp_quadric {
+    uint32_t id; /* 0: free slot */
+    GLenum draw_style, normals, orientation;
+    bool texture;
+} interp_quadric;
+
+#define INTERP_QUADRICS 64
+
+typedef struct interp_textures interp_textures; /* interp_texture.c */
+
 struct interp {
     gl_state st;
+    interp_quadric quadrics[INTERP_QUADRICS]; /* context state, like st */
+    interp_textures *tex; /* texture objects and unpack state; NULL: none yet */
     scene *scene; /* NULL: state only */
     diag_log *log;
     uint8_t *begin_ok; /* by opcode: allowed between glBegin and glEnd */
@@ -139,6 +152,31 @@ mat4 interp_window_matrix(const mat4 *proj, const int32_t vp[4]);
 /* Adds a vertex with the current attributes to the open primitive, which
  * must be drawing (in_begin, not prim_skip) (interp_prim.c). */
 void interp_add_vertex(interp *ip, double x, double y, double z, double w);
+
+/* glBegin(mode) and glEnd for the primitives the interpreter draws itself
+ * (GLU and GLUT shapes): the same assembly, culling and polygon mode as
+ * the program's own. interp_prim_begin returns false when the draw is
+ * skipped (no scene, or a transform that places nothing); call
+ * interp_prim_end either way (interp_prim.c). */
+bool interp_prim_begin(interp *ip, GLenum mode);
+void interp_prim_end(interp *ip);
+
+/* The look of a draw with the current state (interp_prim.c). */
+scene_look interp_current_look(interp *ip);
+
+/* Texture objects (interp_texture.c): copied with the context state,
+ * emptied by a reset, freed with the interpreter. */
+int interp_textures_copy(interp *dst, const interp *src);
+void interp_textures_free(interp *ip);
+
+/* The texture index (in the scene) that a draw with the current state
+ * samples, or -1 (interp_texture.c). */
+int32_t interp_texture_for_draw(interp *ip);
+
+/* The texture coordinates GL gives a vertex at object position obj (w = 1
+ * after division) with normal nrm: texgen, then the texture matrix, then
+ * division by q (interp_texture.c). */
+void interp_vertex_texcoord(interp *ip, const double obj[4], const float nrm[3], float out[2]);
 
 /* Closes an open glBegin without drawing it (interp_prim.c). */
 void interp_abort_begin(interp *ip);

@@ -82,8 +82,7 @@ static void draw_notes(interp *ip)
         interp_note(ip, DIAG_NOTE_BLEND);
     if (c[INTERP_CAP_ALPHA_TEST])
         interp_note(ip, DIAG_NOTE_ALPHA_TEST);
-    if (c[INTERP_CAP_TEXTURE_1D] || c[INTERP_CAP_TEXTURE_2D] || c[INTERP_CAP_TEXTURE_3D] ||
-        c[INTERP_CAP_TEXTURE_CUBE_MAP])
+    if (c[INTERP_CAP_TEXTURE_3D] || c[INTERP_CAP_TEXTURE_CUBE_MAP])
         interp_note(ip, DIAG_NOTE_TEXTURE);
     if (c[INTERP_CAP_LINE_STIPPLE] || c[INTERP_CAP_POLYGON_STIPPLE])
         interp_note(ip, DIAG_NOTE_STIPPLE);
@@ -253,7 +252,10 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
     for (int i = 0; i < 4; i++)
         v->color[i] = clamp01(c[i]);
     float q = a->current.texcoord[3];
-    if (q == 1 || q == 0 || !isfinite(q)) {
+    if (a->caps[INTERP_CAP_TEXTURE_2D] || a->caps[INTERP_CAP_TEXTURE_1D]) {
+        double obj[4] = {x, y, z, 1};
+        interp_vertex_texcoord(ip, obj, v->normal, v->tex);
+    } else if (q == 1 || q == 0 || !isfinite(q)) {
         v->tex[0] = a->current.texcoord[0];
         v->tex[1] = a->current.texcoord[1];
     } else {
@@ -660,14 +662,14 @@ static void vertices_to_eye(interp *ip, uint32_t n)
     }
 }
 
-static scene_look current_look(const interp *ip)
+scene_look interp_current_look(interp *ip)
 {
     scene_look look;
     memset(&look, 0, sizeof look);
     look.lit = ip->st.a.caps[INTERP_CAP_LIGHTING];
     look.flat = ip->st.a.lighting.shade_model == GL_FLAT;
     look.material = -1;
-    look.texture = -1;
+    look.texture = interp_texture_for_draw(ip);
     return look;
 }
 
@@ -721,7 +723,7 @@ static void end_primitive(interp *ip)
         vertices_to_eye(ip, n);
         as.check_bad = true;
     }
-    scene_look look = current_look(ip);
+    scene_look look = interp_current_look(ip);
     mat4 id = mat4_identity();
     as.mesh = scene_mesh_for(s, ip->prim_in_eye ? &id : &ip->prim_to_eye, ip->prim_in_eye, &look);
     if (!as.facing && !as.check_bad && a->polygon.mode[0] == GL_FILL)
@@ -738,6 +740,18 @@ void interp_end(interp *ip, const rgl_cmd *cmd)
         return;
     }
     end_primitive(ip);
+}
+
+bool interp_prim_begin(interp *ip, GLenum mode)
+{
+    begin_mode(ip, mode);
+    return !ip->prim_skip;
+}
+
+void interp_prim_end(interp *ip)
+{
+    if (ip->in_begin)
+        end_primitive(ip);
 }
 
 void interp_abort_begin(interp *ip)

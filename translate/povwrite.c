@@ -20,6 +20,7 @@
 #include <string.h>
 
 #include "dedup.h"
+#include "povwrite_solid.h"
 #include "talloc.h"
 
 #ifndef RAYGL_VERSION
@@ -624,14 +625,15 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
     bool any = false;
     for (size_t i = 0; i < s->nmeshes && !any; i++)
         any = s->meshes[i].tri_count > 0;
-    any = any || s->nlines > 0;
+    any = any || s->nlines > 0 || s->nsolids > 0;
     if (any) {
         outbuf_puts(ob, "union{\n");
         /* POV-Ray warns about a union of one object; a sphere of radius 0
          * (never hit) at a point of the geometry keeps it quiet without
          * growing the union's bounding box. */
         float anchor[3] = {0, 0, 0};
-        scene_anchor(s, anchor);
+        if (!povwrite_solid_anchor(s, anchor))
+            scene_anchor(s, anchor);
         outbuf_puts(ob, "sphere{");
         put_vec3f(ob, anchor);
         outbuf_puts(ob, ",0}\n");
@@ -642,6 +644,7 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
                             m->in_eye ? NULL : &m->to_eye) != 0)
                 return -1;
         }
+        povwrite_solids(ob, s);
         if (write_lines(w, ob, s) != 0)
             return -1;
         write_clip(ob, &s->camera);

@@ -33,6 +33,10 @@ void scene_finish(scene *s)
     tr_free(s->lines);
     tr_free(s->points);
     tr_free(s->lights);
+    tr_free(s->solids);
+    for (size_t i = 0; i < s->ntextures; i++)
+        tr_free(s->textures[i].rgba);
+    tr_free(s->textures);
     memset(s, 0, sizeof *s);
 }
 
@@ -50,7 +54,10 @@ void scene_reset(scene *s)
 
 void scene_clear_geometry(scene *s)
 {
-    s->nverts = s->ntris = s->nmeshes = s->nlines = s->npoints = 0;
+    s->nverts = s->ntris = s->nmeshes = s->nlines = s->npoints = s->nsolids = 0;
+    for (size_t i = 0; i < s->ntextures; i++)
+        tr_free(s->textures[i].rgba);
+    s->ntextures = 0;
 }
 
 /* Grows a pool for one more item, within SCENE_MAX_ITEMS. */
@@ -143,6 +150,42 @@ scene_point *scene_add_point(scene *s)
 scene_light *scene_add_light(scene *s)
 {
     return add_item(s, (void **)&s->lights, &s->nlights, &s->cap_lights, sizeof(scene_light));
+}
+
+scene_solid *scene_add_solid(scene *s)
+{
+    return add_item(s, (void **)&s->solids, &s->nsolids, &s->cap_solids, sizeof(scene_solid));
+}
+
+static bool texture_same(const scene_texture *a, const scene_texture *b)
+{
+    return a->hash == b->hash && a->width == b->width && a->height == b->height &&
+           a->repeat_s == b->repeat_s && a->repeat_t == b->repeat_t && a->linear == b->linear &&
+           a->env_mode == b->env_mode && a->colour_is_texel == b->colour_is_texel &&
+           memcmp(a->env_color, b->env_color, sizeof a->env_color) == 0 &&
+           memcmp(a->rgba, b->rgba, (size_t)a->width * (size_t)a->height * 4) == 0;
+}
+
+int32_t scene_add_texture(scene *s, const scene_texture *t)
+{
+    for (size_t i = s->ntextures; i-- > 0;)
+        if (texture_same(&s->textures[i], t)) {
+            tr_free(t->rgba);
+            return (int32_t)i;
+        }
+    if (s->ntextures >= INT32_MAX) {
+        tr_free(t->rgba);
+        s->failed = true;
+        return -1;
+    }
+    scene_texture *n = add_item(s, (void **)&s->textures, &s->ntextures, &s->cap_textures,
+                                sizeof *n);
+    if (!n) {
+        tr_free(t->rgba);
+        return -1;
+    }
+    *n = *t;
+    return (int32_t)(s->ntextures - 1);
 }
 
 /* ---- Cameras ---------------------------------------------------------------- */

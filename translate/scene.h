@@ -143,15 +143,31 @@ typedef struct scene_fog {
     float density, start, end, color[4];
 } scene_fog;
 
-/* An image the scene maps (issue 5): a trace resource and how to sample it. */
+/* An image the scene maps (issue 5): level 0 of a GL texture as the GL
+ * texels it holds (RGBA, 8 bits, bottom row first), with how GL samples it.
+ * The pixels belong to the scene (freed by scene_reset). hash names the
+ * image by its content (the writer's file name). */
 typedef struct scene_texture {
-    uint32_t resource; /* texel data in the trace */
+    uint8_t *rgba;
     int width, height;
-    bool repeat_s, repeat_t, linear;
+    uint64_t hash;
+    bool repeat_s, repeat_t; /* GL_REPEAT; else clamped */
+    bool linear;             /* magnification GL_LINEAR */
+    uint32_t env_mode;       /* GL_MODULATE, GL_REPLACE, GL_DECAL, GL_BLEND */
+    float env_color[4];
+    bool colour_is_texel;    /* the texel's colour replaces the fragment's
+                                (REPLACE or DECAL of a colour format) */
 } scene_texture;
 
 /* A GLU/GLUT solid with an exact POV-Ray counterpart (issue 5), in its
- * object space, placed by to_eye. */
+ * object space (GL's axis conventions), placed by to_eye:
+ *   SPHERE  params[0] radius, centred at the origin
+ *   BOX     corners -params[0..2] .. +params[0..2]
+ *   CONE    base radius params[0] at z=0, top radius params[1] at
+ *           z=params[2]; open (no caps) when `open`
+ *   TORUS   ring radius params[0], tube radius params[1], in the xy plane
+ *           around z
+ *   DISC    outer radius params[0], hole radius params[1], in z=0 */
 typedef enum scene_solid_kind {
     SCENE_SOLID_SPHERE, SCENE_SOLID_BOX, SCENE_SOLID_CONE, SCENE_SOLID_TORUS,
     SCENE_SOLID_DISC,
@@ -159,9 +175,11 @@ typedef enum scene_solid_kind {
 
 typedef struct scene_solid {
     scene_solid_kind kind;
-    double params[6];
+    bool open;
+    double params[3];
     mat4 to_eye;
     scene_look look;
+    float color[4]; /* the current colour (issue 4 adds the material) */
 } scene_solid;
 
 typedef struct scene {
@@ -182,7 +200,11 @@ typedef struct scene {
     scene_light *lights;
     size_t nlights, cap_lights;
     scene_fog fog; /* issue 4 */
-    /* Issue 4 and 5 add: materials, textures, solids (pools like the above). */
+    scene_solid *solids;
+    size_t nsolids, cap_solids;
+    scene_texture *textures; /* look.texture indexes this */
+    size_t ntextures, cap_textures;
+    /* Issue 4 adds: materials (a pool like the above). */
 
     bool failed; /* an allocation or limit failed; the scene is incomplete */
 } scene;
@@ -213,6 +235,12 @@ bool scene_add_tri(scene *s, uint32_t a, uint32_t b, uint32_t c, uint32_t provok
 scene_line *scene_add_line(scene *s);
 scene_point *scene_add_point(scene *s);
 scene_light *scene_add_light(scene *s);
+scene_solid *scene_add_solid(scene *s);
+
+/* The index of a texture with these pixels and sampling (the scene takes
+ * rgba, which it frees, or frees at once when it already holds an equal
+ * texture), or -1 on failure (rgba freed). */
+int32_t scene_add_texture(scene *s, const scene_texture *t);
 
 bool scene_look_equal(const scene_look *a, const scene_look *b);
 

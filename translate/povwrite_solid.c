@@ -1,0 +1,127 @@
+/* povwrite_solid.c: GLU/GLUT solids as POV-Ray solids (povwrite_solid.h).
+ *
+ * Each solid is written in GL's object space of the shape (scene.h gives
+ * the axis conventions) and placed with its object -> eye matrix; POV-Ray's
+ * torus lies in its xz plane, so it turns into GL's xy plane first. The
+ * surface takes the unlit texture of its colour (docs/mapping.md). */
+#include "povwrite_solid.h"
+
+#include <math.h>
+
+static void put_xyz(outbuf *ob, double x, double y, double z)
+{
+    outbuf_putc(ob, '<');
+    outbuf_f32(ob, (float)x);
+    outbuf_putc(ob, ',');
+    outbuf_f32(ob, (float)y);
+    outbuf_putc(ob, ',');
+    outbuf_f32(ob, (float)z);
+    outbuf_putc(ob, '>');
+}
+
+static bool finite_pos(double v) { return isfinite(v) && v > 0 && (float)v > 0 && isfinite((float)v); }
+
+static void put_matrix(outbuf *ob, const mat4 *to_eye)
+{
+    static const int idx[12] = {0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14};
+    outbuf_puts(ob, " matrix<");
+    for (int i = 0; i < 12; i++) {
+        if (i)
+            outbuf_putc(ob, ',');
+        outbuf_f32(ob, (float)to_eye->m[idx[i]]);
+    }
+    outbuf_putc(ob, '>');
+}
+
+static void write_solid(outbuf *ob, const scene_solid *so)
+{
+    const double *p = so->params;
+    if (!mat4_finite(&so->to_eye) || !mat4_affine(&so->to_eye))
+        return;
+    for (int k = 0; k < 4; k++)
+        if (!isfinite(so->color[k]))
+            return;
+    switch (so->kind) {
+    case SCENE_SOLID_SPHERE:
+        if (!finite_pos(p[0]))
+            return;
+        outbuf_puts(ob, "sphere{<0,0,0>,");
+        outbuf_f32(ob, (float)p[0]);
+        break;
+    case SCENE_SOLID_BOX:
+        if (!finite_pos(p[0]) || !finite_pos(p[1]) || !finite_pos(p[2]))
+            return;
+        outbuf_puts(ob, "box{");
+        put_xyz(ob, -p[0], -p[1], -p[2]);
+        outbuf_putc(ob, ',');
+        put_xyz(ob, p[0], p[1], p[2]);
+        break;
+    case SCENE_SOLID_CONE: {
+        double b = p[0], t = p[1], h = p[2];
+        if (!finite_pos(h) || !isfinite(b) || !isfinite(t) || b < 0 || t < 0 || (b == 0 && t == 0))
+            return;
+        if ((float)b == (float)t) {
+            outbuf_puts(ob, "cylinder{<0,0,0>,");
+            put_xyz(ob, 0, 0, h);
+            outbuf_putc(ob, ',');
+            outbuf_f32(ob, (float)b);
+        } else {
+            outbuf_puts(ob, "cone{<0,0,0>,");
+            outbuf_f32(ob, (float)b);
+            outbuf_putc(ob, ',');
+            put_xyz(ob, 0, 0, h);
+            outbuf_putc(ob, ',');
+            outbuf_f32(ob, (float)t);
+        }
+        if (so->open)
+            outbuf_puts(ob, " open");
+        break;
+    }
+    case SCENE_SOLID_TORUS:
+        if (!finite_pos(p[0]) || !finite_pos(p[1]) || !(p[0] > p[1]))
+            return;
+        outbuf_puts(ob, "torus{");
+        outbuf_f32(ob, (float)p[0]);
+        outbuf_putc(ob, ',');
+        outbuf_f32(ob, (float)p[1]);
+        outbuf_puts(ob, " rotate<90,0,0>");
+        break;
+    case SCENE_SOLID_DISC:
+        if (!finite_pos(p[0]) || !isfinite(p[1]) || p[1] < 0 || !(p[1] < p[0]))
+            return;
+        outbuf_puts(ob, "disc{<0,0,0>,<0,0,1>,");
+        outbuf_f32(ob, (float)p[0]);
+        if (p[1] > 0) {
+            outbuf_putc(ob, ',');
+            outbuf_f32(ob, (float)p[1]);
+        }
+        break;
+    default:
+        return;
+    }
+    outbuf_puts(ob, "\n texture{pigment{rgb");
+    put_xyz(ob, so->color[0], so->color[1], so->color[2]);
+    outbuf_puts(ob, "}}");
+    put_matrix(ob, &so->to_eye);
+    outbuf_puts(ob, "}\n");
+}
+
+void povwrite_solids(outbuf *ob, const scene *s)
+{
+    for (size_t i = 0; i < s->nsolids; i++)
+        write_solid(ob, &s->solids[i]);
+}
+
+bool povwrite_solid_anchor(const scene *s, float out[3])
+{
+    for (size_t i = 0; i < s->nsolids; i++) {
+        const double *m = s->solids[i].to_eye.m;
+        float c[3] = {(float)m[12], (float)m[13], (float)m[14]};
+        if (isfinite(c[0]) && isfinite(c[1]) && isfinite(c[2])) {
+            for (int k = 0; k < 3; k++)
+                out[k] = c[k];
+            return true;
+        }
+    }
+    return false;
+}

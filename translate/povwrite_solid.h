@@ -1,0 +1,16 @@
+/* povwrite_solid.h: GLU/GLUT solids (scene_solid) as POV-Ray solids. */
+#ifndef RGL_POVWRITE_SOLID_H
+#define RGL_POVWRITE_SOLID_H
+
+#include "outbuf.h"
+#include "scene.h"
+
+/* Writes every solid of the scene, each in its object space with its
+ * matrix (inside the scene's union, so the near/far clip applies). */
+void povwrite_solids(outbuf *ob, const scene *s);
+
+/* The eye-space centre of the first solid, for the union's anchor; false
+ * when there is none. */
+bool povwrite_solid_anchor(const scene *s, float out[3]);
+
+#endif
