@@ -64,6 +64,16 @@
 #define RGL_FORWARD_GUARD_GLU
 #define RGL_FORWARD_GUARD_GLUT if (rgl_glut_ready())
 
+/* Whether GL is between glBegin and glEnd, for rgl_resolve_matrices (op
+ * is a constant: this folds away for every other row). A glBegin compiled
+ * into a list with GL_COMPILE does not execute. */
+static inline void track_begin(rgl_stream *s, uint32_t op)
+{
+    if ((op == RGL_OP_Begin || op == RGL_OP_End) &&
+        (!s->compiling || s->list_mode == GL_COMPILE_AND_EXECUTE))
+        s->in_begin = op == RGL_OP_Begin;
+}
+
 #define RGL_RECORD_BODY(op, ...)                                                      \
     rgl_stream *s_;                                                                   \
     uint8_t *p = rgl_reserve(&s_, 2 RGL_MAP(RGL_SIZE_, __VA_ARGS__));                 \
@@ -71,6 +81,7 @@
         p = rgl_put_opcode(p, op);                                                    \
         RGL_MAP(RGL_ENC_, __VA_ARGS__)                                                \
         rgl_commit(s_, p);                                                            \
+        track_begin(s_, op);                                                          \
     }
 
 #define RGL_GEN_AUTO(op, api, name, ...)                                              \

@@ -84,6 +84,11 @@ static bool executes(const rgl_stream *s)
     return !s->compiling || s->list_mode == GL_COMPILE_AND_EXECUTE;
 }
 
+/* Records a call GL executes at once even while a list is compiled
+ * (client state, list names): into the frame, never into the list body. */
+#define RECORD_NOW(s, op, ...) \
+    ((s)->compiling ? rgl_emit(&(s)->frame, (op), __VA_ARGS__) : rgl_record((op), __VA_ARGS__))
+
 static int target_slot(GLenum target)
 {
     return target == GL_TEXTURE_1D ? 0 : target == GL_TEXTURE_2D ? 1 : -1;
@@ -402,9 +407,9 @@ static void array_pointer(int slot, uint32_t op, GLint size, GLenum type, GLsize
     a->stride = stride;
     a->pointer = ptr;
     switch (slot) {
-    case RGL_CA_NORMAL: rgl_record(op, "ei", type, stride); break;
-    case RGL_CA_EDGEFLAG: rgl_record(op, "i", stride); break;
-    default: rgl_record(op, "iei", size, type, stride); break;
+    case RGL_CA_NORMAL: RECORD_NOW(s, op, "ei", type, stride); break;
+    case RGL_CA_EDGEFLAG: RECORD_NOW(s, op, "i", stride); break;
+    default: RECORD_NOW(s, op, "iei", size, type, stride); break;
     }
 }
 
@@ -451,7 +456,7 @@ static void client_state(GLenum array, bool enable)
     rgl_stream *s;
     if (slot >= 0 && rgl_reserve(&s, 1)) {
         s->arrays[slot].enabled = enable;
-        rgl_record(enable ? RGL_OP_EnableClientState : RGL_OP_DisableClientState, "e", array);
+        RECORD_NOW(s, enable ? RGL_OP_EnableClientState : RGL_OP_DisableClientState, "e", array);
     }
 }
 
@@ -518,7 +523,7 @@ RGL_EXPORT void rayglInterleavedArrays(GLenum format, GLsizei stride, const GLvo
         if (f->en)
             a[RGL_CA_NORMAL] = (rgl_client_array_state){true, 3, GL_FLOAT, st, p ? p + f->pn : NULL};
         a[RGL_CA_VERTEX] = (rgl_client_array_state){true, f->sv, GL_FLOAT, st, p ? p + f->pv : NULL};
-        rgl_record(RGL_OP_InterleavedArrays, "ei", format, stride);
+        RECORD_NOW(s, RGL_OP_InterleavedArrays, "ei", format, stride);
     }
     glInterleavedArrays(format, stride, pointer);
 }
@@ -798,7 +803,7 @@ RGL_EXPORT GLuint rayglGenLists(GLsizei range)
             s->objs.next_list_name += (uint32_t)range;
         }
         if (first)
-            rgl_record(RGL_OP_GenLists, "ie", range, first);
+            RECORD_NOW(s, RGL_OP_GenLists, "ie", range, first);
     }
     return first;
 }
@@ -848,7 +853,7 @@ RGL_EXPORT void rayglDeleteLists(GLuint list, GLsizei range)
 {
     rgl_stream *s;
     if (range >= 0 && rgl_reserve(&s, 1)) {
-        rgl_record(RGL_OP_DeleteLists, "ei", list, range);
+        RECORD_NOW(s, RGL_OP_DeleteLists, "ei", list, range);
         list_forget(s, list, (uint64_t)list + (uint64_t)range);
     }
     glDeleteLists(list, range);

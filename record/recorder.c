@@ -943,7 +943,9 @@ void rgl_resolve_matrices(void)
 {
     rgl_stream *s;
     uint8_t *p = rgl_reserve(&s, 2 * RGL_MATRIX_RECORD_MAX);
-    if (!p || s->compiling)
+    /* glGet between glBegin and glEnd is a GL error (a glCallList there);
+     * the primitive's matrices were read at its glBegin. */
+    if (!p || s->compiling || s->in_begin)
         return;
     static const GLenum pnames[2] = {GL_MODELVIEW_MATRIX, GL_PROJECTION_MATRIX};
     static const GLenum modes[2] = {GL_MODELVIEW, GL_PROJECTION};

@@ -94,6 +94,7 @@ typedef struct rgl_stream {
     rgl_buf frame;      /* the frame's commands (data == base unless compiling) */
     rgl_buf list;       /* a display list body while compiling */
     bool compiling;     /* between glNewList and glEndList */
+    bool in_begin;      /* between glBegin and glEnd as GL executes them */
     uint32_t list_name, list_mode;
 
     uint32_t id;           /* stream id, from 1 */

@@ -32,6 +32,8 @@ struct translator {
     char name[RGL_STRING_MAX + 1];
 };
 
+static rgl_status fetch_resource(void *ctx, uint32_t id, rgl_resource *out, rgl_error *err);
+
 translator *translator_create(rgl_reader *reader, pthread_mutex_t *reader_lock)
 {
     translator *t = tr_realloc(NULL, sizeof *t);
@@ -47,6 +49,7 @@ translator *translator_create(rgl_reader *reader, pthread_mutex_t *reader_lock)
         translator_destroy(t);
         return NULL;
     }
+    interp_set_resources(t->ip, fetch_resource, t);
     return t;
 }
 
@@ -85,6 +88,12 @@ static rgl_status get_resource(translator *t, uint32_t id, rgl_resource *res, rg
     return st;
 }
 
+/* interp_resource_fn over the translator's reader: display-list bodies. */
+static rgl_status fetch_resource(void *ctx, uint32_t id, rgl_resource *out, rgl_error *err)
+{
+    return get_resource(ctx, id, out, err);
+}
+
 /* Replays snapshot resource `id` into ip from its current state. */
 static rgl_status run_snapshot(translator *t, interp *ip, uint32_t id, rgl_error *err)
 {
@@ -118,6 +127,7 @@ static interp *carried_state(translator *t, uint32_t stream, size_t i)
         c->stream = stream;
         if (!(c->ip = interp_create(NULL, NULL)))
             return NULL;
+        interp_set_resources(c->ip, fetch_resource, t);
         t->ncursors++;
     }
     if (c->pos > i) { /* asked for an earlier frame: start over */

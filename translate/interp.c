@@ -186,6 +186,7 @@ void interp_destroy(interp *ip)
 {
     if (!ip)
         return;
+    interp_lists_free(ip);
     tr_free(ip->begin_ok);
     tr_free(ip->edge);
     tr_free(ip->clipv);
@@ -202,6 +203,8 @@ void interp_reset(interp *ip)
     ip->camera_fixed = false;
     ip->frame_begin = false;
     ip->frame_name[0] = '\0';
+    interp_lists_reset(ip);
+    interp_arrays_forget(ip);
 }
 
 void interp_copy_state(interp *dst, const interp *src)
@@ -210,6 +213,14 @@ void interp_copy_state(interp *dst, const interp *src)
     memcpy(dst->quadrics, src->quadrics, sizeof dst->quadrics);
     if (interp_textures_copy(dst, src) != 0 && dst->scene)
         dst->scene->failed = true;
+    if (!interp_lists_copy(dst, src) && dst->scene)
+        dst->scene->failed = true;
+}
+
+void interp_set_resources(interp *ip, interp_resource_fn fn, void *ctx)
+{
+    ip->res_fn = fn;
+    ip->res_ctx = ctx;
 }
 
 void interp_attach(interp *ip, scene *out, diag_log *log)
@@ -345,6 +356,7 @@ rgl_status interp_run(interp *ip, const uint8_t *data, size_t size, uint64_t bas
         interp_exec(ip, &cmd);
     }
     ip->cmd = NULL;
+    interp_arrays_forget(ip);
     if (st == RGL_END)
         return RGL_OK;
     if (err)
@@ -363,6 +375,7 @@ rgl_status interp_run_slow(interp *ip, const uint8_t *data, size_t size, uint64_
     while ((st = rgl_cmd_next(&it, &cmd)) == RGL_OK)
         interp_exec(ip, &cmd);
     ip->cmd = NULL;
+    interp_arrays_forget(ip);
     if (st == RGL_END)
         return RGL_OK;
     if (err)

@@ -18,8 +18,9 @@
  *                    (rayglFrameBegin), the camera of the frame
  *   interp_light.c   lights, materials, colour material, fog (state kept as
  *                    GL keeps it; issue 4 translates it)
- *   interp_later.c   textures, display lists, arrays, GLU and GLUT shapes
- *                    (issue 5: noted and skipped for now)
+ *   interp_list.c    display lists: the list table, calls, nesting, and
+ *                    the prototypes that repeated calls share
+ *   interp_array.c   vertex arrays and their draws, buffer objects
  *
  * Not thread-safe; one interpreter per worker thread.
  */
@@ -43,6 +44,7 @@
 #define INTERP_ATTRIB_DEPTH 16
 #define INTERP_MAX_LIGHTS 8
 #define INTERP_MAX_VIEWPORT 16384 /* Mesa's GL_MAX_VIEWPORT_DIMS */
+#define INTERP_MAX_LIST_NESTING 64 /* GL_MAX_LIST_NESTING (GL 1.x table 6.28) */
 
 enum interp_matrix_mode { INTERP_MV, INTERP_PROJ, INTERP_TEX, INTERP_NMODES };
 
@@ -153,8 +155,16 @@ void interp_destroy(interp *ip);
 /* Back to GL's initial state; the scene and log stay attached. */
 void interp_reset(interp *ip);
 
-/* Copies the context state (not the scene, log or frame data) from src. */
+/* Copies the context state (not the scene, log or frame data) from src,
+ * display lists included. */
 void interp_copy_state(interp *dst, const interp *src);
+
+/* Where display-list bodies come from: fetches resource `id` (normally
+ * from the trace's reader; the data must stay valid while the interpreter
+ * lives). Without one, glCallList draws nothing and says so. */
+typedef rgl_status (*interp_resource_fn)(void *ctx, uint32_t id, rgl_resource *out,
+                                         rgl_error *err);
+void interp_set_resources(interp *ip, interp_resource_fn fn, void *ctx);
 
 /* Attaches a scene (or NULL) and a log (or NULL). */
 void interp_attach(interp *ip, scene *out, diag_log *log);

@@ -65,6 +65,26 @@ struct interp {
     mat4 cam_from_ndc; /* inverse of (viewport-scaled) camera projection */
     bool cam_from_ndc_ok;
 
+    /* Display lists (interp_list.c). The table is context state that
+     * interp_copy_state carries; the groups are the frame's list calls
+     * whose output may be shared. */
+    struct interp_lists *lists;
+    interp_resource_fn res_fn;
+    void *res_ctx;
+    int list_depth;
+    uint32_t list_calls; /* this frame's, against a hostile trace's recursion */
+    struct interp_groups *groups;
+
+    /* The client arrays of the next draw: the @ArrayData records before
+     * it (interp_array.c). */
+    struct interp_array_data {
+        bool set;
+        int32_t first, size;
+        uint32_t type;
+        const uint8_t *data;
+        size_t bytes;
+    } arrays[5];
+
     /* rayglFrameBegin */
     bool frame_begin;
     char frame_name[RGL_STRING_MAX + 1];
@@ -177,9 +197,30 @@ int32_t interp_texture_for_draw(interp *ip);
  * after division) with normal nrm: texgen, then the texture matrix, then
  * division by q (interp_texture.c). */
 void interp_vertex_texcoord(interp *ip, const double obj[4], const float nrm[3], float out[2]);
+/* The object -> eye transform a draw with modelview mv, projection proj and
+ * viewport vp gets (remapped into the frame's camera as a draw does, but
+ * without the painter's shift). False when no such transform exists. */
+bool interp_object_to_eye(const interp *ip, const mat4 *mv, const mat4 *proj,
+                         const int32_t vp[4], mat4 *out);
+
+/* Moves to_eye toward the camera by the painter's shift of draw number
+ * `painter` made without a depth test (interp_prim.c, painter_shift). */
+void interp_painter_apply(const interp *ip, uint32_t painter, mat4 *to_eye);
+#define INTERP_PAINTER_MAX 100000 /* painter counts no further */
 
 /* Closes an open glBegin without drawing it (interp_prim.c). */
 void interp_abort_begin(interp *ip);
+
+/* The display-list table's life cycle, called from interp.c and
+ * interp_begin_frame (interp_list.c). copy returns false on allocation
+ * failure (dst then has no lists). */
+void interp_lists_reset(interp *ip);
+bool interp_lists_copy(interp *dst, const interp *src);
+void interp_lists_free(interp *ip);
+void interp_lists_begin_frame(interp *ip);
+
+/* Forgets the @ArrayData of the current sequence (interp_array.c). */
+void interp_arrays_forget(interp *ip);
 
 /* Initial values (interp.c). */
 void interp_default_state(gl_state *st);

@@ -110,17 +110,12 @@ static void draw_notes(interp *ip)
  * frame's start or last clear. Surfaces truly apart stay in depth order
  * (docs/mapping.md, "What a ray tracer does differently"). */
 #define PAINTER_STEP 1e-6
-#define PAINTER_MAX 100000
+#define PAINTER_MAX INTERP_PAINTER_MAX
 
-static void painter_shift(interp *ip, mat4 *to_eye)
+void interp_painter_apply(const interp *ip, uint32_t painter, mat4 *to_eye)
 {
-    const gl_attribs *a = &ip->st.a;
-    if (a->caps[INTERP_CAP_DEPTH_TEST] && (a->depth.func == GL_LESS || a->depth.func == GL_LEQUAL))
-        return;
-    if (ip->painter < PAINTER_MAX)
-        ip->painter++;
     const scene_camera *cam = &ip->scene->camera;
-    double k = ip->painter * PAINTER_STEP;
+    double k = painter * PAINTER_STEP;
     mat4 s = mat4_identity();
     if (cam->kind == SCENE_CAMERA_ORTHOGRAPHIC) {
         double range = 1;
@@ -143,6 +138,32 @@ static void painter_shift(interp *ip, mat4 *to_eye)
         }
     }
     *to_eye = mat4_mul(&s, to_eye);
+}
+
+static void painter_shift(interp *ip, mat4 *to_eye)
+{
+    const gl_attribs *a = &ip->st.a;
+    if (a->caps[INTERP_CAP_DEPTH_TEST] && (a->depth.func == GL_LESS || a->depth.func == GL_LEQUAL))
+        return;
+    if (ip->painter < PAINTER_MAX)
+        ip->painter++;
+    interp_painter_apply(ip, ip->painter, to_eye);
+}
+
+bool interp_object_to_eye(const interp *ip, const mat4 *mv, const mat4 *proj,
+                         const int32_t vp[4], mat4 *out)
+{
+    *out = *mv;
+    if (!ip->frame_begin &&
+        (memcmp(vp, ip->cam_viewport, sizeof ip->cam_viewport) != 0 ||
+         !mat4_equal_f32(proj, &ip->cam_proj))) {
+        if (!ip->cam_from_ndc_ok)
+            return false;
+        mat4 w = interp_window_matrix(proj, vp);
+        mat4 remap = mat4_mul(&ip->cam_from_ndc, &w);
+        *out = mat4_mul(&remap, mv);
+    }
+    return mat4_finite(out);
 }
 
 /* Sets prim_to_eye / prim_clip for a draw with the current matrices.

@@ -55,6 +55,7 @@ void interp_begin_frame(interp *ip)
     ip->painter = 0;
     if (ip->scene)
         scene_reset(ip->scene);
+    interp_lists_begin_frame(ip);
 }
 
 void interp_end_frame(interp *ip)

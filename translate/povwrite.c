@@ -249,6 +249,23 @@ static void write_light(outbuf *ob, const scene_light *l)
 
 /* ---- Meshes ------------------------------------------------------------------------ */
 
+/* `matrix<...>` of an affine transform, unless it is the identity. */
+static void put_matrix(outbuf *ob, const mat4 *to_eye)
+{
+    const double *m = to_eye->m;
+    static const int idx[12] = {0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14};
+    mat4 id = mat4_identity();
+    if (mat4_equal_f32(to_eye, &id))
+        return;
+    outbuf_puts(ob, "matrix<");
+    for (int i = 0; i < 12; i++) {
+        if (i)
+            outbuf_putc(ob, ',');
+        outbuf_f32(ob, (float)m[idx[i]]);
+    }
+    outbuf_puts(ob, ">\n");
+}
+
 #define UNSET UINT32_MAX
 #define BAD (UINT32_MAX - 1)
 
@@ -430,20 +447,8 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
         put_unlit_texture(ob, (const float *)(const void *)dedup_key(&w->col, 0));
         outbuf_putc(ob, '\n');
     }
-    if (to_eye) {
-        const double *m = to_eye->m;
-        static const int idx[12] = {0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14};
-        mat4 id = mat4_identity();
-        if (!mat4_equal_f32(to_eye, &id)) {
-            outbuf_puts(ob, "matrix<");
-            for (int i = 0; i < 12; i++) {
-                if (i)
-                    outbuf_putc(ob, ',');
-                outbuf_f32(ob, (float)m[idx[i]]);
-            }
-            outbuf_puts(ob, ">\n");
-        }
-    }
+    if (to_eye)
+        put_matrix(ob, to_eye);
     outbuf_puts(ob, "}\n");
     return 0;
 }
@@ -503,6 +508,8 @@ static void scene_anchor(const scene *s, float out[3])
 {
     for (size_t i = 0; i < s->nmeshes; i++) {
         const scene_mesh *m = &s->meshes[i];
+        if (m->proto)
+            continue;
         for (size_t t = 0; t < m->tri_count; t++) {
             const float *p = s->verts[s->tris[m->first_tri + t].v[0]].pos;
             double in[4] = {p[0], p[1], p[2], 1}, o[4];
@@ -573,6 +580,45 @@ static int write_points(povwriter *w, outbuf *ob, const scene *s)
 
 /* ---- The file ------------------------------------------------------------------------- */
 
+/* The prototypes of repeated display-list calls, one #declare each (in
+ * their own space: each mesh carries its transform into it), placed by
+ * `object{RGL_Lk matrix<...>}` in the union. The sphere of radius 0 keeps
+ * a union of one mesh, or of none when every face was degenerate, valid. */
+static int write_protos(povwriter *w, outbuf *ob, const scene *s)
+{
+    for (size_t p = 0; p < s->nprotos; p++) {
+        const scene_proto *pr = &s->protos[p];
+        float anchor[3] = {0, 0, 0};
+        for (size_t k = 0; k < pr->nmeshes && pr->first_mesh + k < s->nmeshes; k++) {
+            const scene_mesh *m = &s->meshes[pr->first_mesh + k];
+            if (m->tri_count == 0)
+                continue;
+            const float *v = s->verts[s->tris[m->first_tri].v[0]].pos;
+            double in[4] = {v[0], v[1], v[2], 1}, o[4];
+            mat4_apply(&m->to_eye, in, o);
+            float a[3] = {(float)o[0], (float)o[1], (float)o[2]};
+            if (finite3f(a)) {
+                memcpy(anchor, a, sizeof anchor);
+                break;
+            }
+        }
+        outbuf_puts(ob, "#declare RGL_L");
+        outbuf_u64(ob, p);
+        outbuf_puts(ob, "=union{\nsphere{");
+        put_vec3f(ob, anchor);
+        outbuf_puts(ob, ",0}\n");
+        for (size_t k = 0; k < pr->nmeshes && pr->first_mesh + k < s->nmeshes; k++) {
+            const scene_mesh *m = &s->meshes[pr->first_mesh + k];
+            if (m->tri_count > 0 &&
+                write_mesh2(w, ob, s->verts, s->tris + m->first_tri, m->tri_count, &m->look,
+                            &m->to_eye) != 0)
+                return -1;
+        }
+        outbuf_puts(ob, "}\n");
+    }
+    return 0;
+}
+
 static void write_clip(outbuf *ob, const scene_camera *cam)
 {
     if (!cam->has_clip)
@@ -622,6 +668,8 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
      * that need another finish (issue 4) name theirs. */
     outbuf_puts(ob, "}\n#default{finish{ambient 0 diffuse 0 emission 1}}\n");
 
+    if (write_protos(w, ob, s) != 0)
+        return -1;
     bool any = false;
     for (size_t i = 0; i < s->nmeshes && !any; i++)
         any = s->meshes[i].tri_count > 0;
@@ -639,12 +687,22 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
         outbuf_puts(ob, ",0}\n");
         for (size_t i = 0; i < s->nmeshes; i++) {
             const scene_mesh *m = &s->meshes[i];
-            if (m->tri_count > 0 &&
+            if (m->tri_count > 0 && !m->proto &&
                 write_mesh2(w, ob, s->verts, s->tris + m->first_tri, m->tri_count, &m->look,
                             m->in_eye ? NULL : &m->to_eye) != 0)
                 return -1;
         }
         povwrite_solids(ob, s);
+        for (size_t i = 0; i < s->ninstances; i++) {
+            const scene_instance *in = &s->instances[i];
+            if (!mat4_finite(&in->to_eye) || in->proto >= s->nprotos)
+                continue;
+            outbuf_puts(ob, "object{RGL_L");
+            outbuf_u64(ob, in->proto);
+            outbuf_putc(ob, ' ');
+            put_matrix(ob, &in->to_eye);
+            outbuf_puts(ob, "}\n");
+        }
         if (write_lines(w, ob, s) != 0)
             return -1;
         write_clip(ob, &s->camera);

@@ -37,6 +37,8 @@ void scene_finish(scene *s)
     for (size_t i = 0; i < s->ntextures; i++)
         tr_free(s->textures[i].rgba);
     tr_free(s->textures);
+    tr_free(s->protos);
+    tr_free(s->instances);
     memset(s, 0, sizeof *s);
 }
 
@@ -58,6 +60,8 @@ void scene_clear_geometry(scene *s)
     for (size_t i = 0; i < s->ntextures; i++)
         tr_free(s->textures[i].rgba);
     s->ntextures = 0;
+    s->nprotos = s->ninstances = s->mesh_floor = 0;
+    s->generation++;
 }
 
 /* Grows a pool for one more item, within SCENE_MAX_ITEMS. */
@@ -94,7 +98,7 @@ bool scene_look_equal(const scene_look *a, const scene_look *b)
 
 scene_mesh *scene_mesh_for(scene *s, const mat4 *to_eye, bool in_eye, const scene_look *look)
 {
-    if (s->nmeshes) {
+    if (s->nmeshes > s->mesh_floor) {
         scene_mesh *m = &s->meshes[s->nmeshes - 1];
         if (m->in_eye == in_eye && scene_look_equal(&m->look, look) &&
             mat4_equal_f32(&m->to_eye, to_eye))
@@ -140,6 +144,17 @@ bool scene_add_tri(scene *s, uint32_t a, uint32_t b, uint32_t c, uint32_t provok
 scene_line *scene_add_line(scene *s)
 {
     return add_item(s, (void **)&s->lines, &s->nlines, &s->cap_lines, sizeof(scene_line));
+}
+
+scene_proto *scene_add_proto(scene *s)
+{
+    return add_item(s, (void **)&s->protos, &s->nprotos, &s->cap_protos, sizeof(scene_proto));
+}
+
+scene_instance *scene_add_instance(scene *s)
+{
+    return add_item(s, (void **)&s->instances, &s->ninstances, &s->cap_instances,
+                    sizeof(scene_instance));
 }
 
 scene_point *scene_add_point(scene *s)

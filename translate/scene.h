@@ -68,7 +68,21 @@ typedef struct scene_mesh {
     bool in_eye;   /* vertices are already in eye space (projective input) */
     scene_look look;
     size_t first_tri, tri_count; /* range in scene.tris */
+    uint32_t proto; /* 0: drawn as itself; k: part of protos[k - 1] */
 } scene_mesh;
+
+/* Display lists whose calls drew the same meshes (issue 5,
+ * interp_list.c): the meshes of a prototype are written once, each
+ * with its to_eye taken relative to the prototype's space, and each call
+ * is an instance placing the prototype with its own matrix. */
+typedef struct scene_proto {
+    size_t first_mesh, nmeshes; /* range in scene.meshes */
+} scene_proto;
+
+typedef struct scene_instance {
+    uint32_t proto; /* index into scene.protos */
+    mat4 to_eye;    /* prototype space -> eye space */
+} scene_instance;
 
 /* A line segment in eye space, drawn as GL rasterises it: a flat band
  * facing the camera, from p[0] to p[1], whose edges lie at p[i] +- half[i]
@@ -199,6 +213,12 @@ typedef struct scene {
     size_t npoints, cap_points;
     scene_light *lights;
     size_t nlights, cap_lights;
+    scene_proto *protos;
+    size_t nprotos, cap_protos;
+    scene_instance *instances;
+    size_t ninstances, cap_instances;
+    size_t mesh_floor;   /* scene_mesh_for extends no mesh below this index */
+    uint32_t generation; /* counts scene_clear_geometry calls */
     scene_fog fog; /* issue 4 */
     scene_solid *solids;
     size_t nsolids, cap_solids;
@@ -224,8 +244,8 @@ scene_vertex *scene_reserve_vertices(scene *s, size_t n);
 static inline void scene_commit_vertices(scene *s, size_t n) { s->nverts += n; }
 
 /* The mesh that new triangles go to: the last one when its transform and
- * look are the same (compared at float precision), else a new one. NULL on
- * failure. */
+ * look are the same (compared at float precision) and it is at or above
+ * mesh_floor, else a new one. NULL on failure. */
 scene_mesh *scene_mesh_for(scene *s, const mat4 *to_eye, bool in_eye, const scene_look *look);
 
 /* Appends a triangle to the last mesh. Returns false on failure. */
@@ -233,6 +253,8 @@ bool scene_add_tri(scene *s, uint32_t a, uint32_t b, uint32_t c, uint32_t provok
 
 /* Append items; NULL on failure. The caller fills the returned item. */
 scene_line *scene_add_line(scene *s);
+scene_proto *scene_add_proto(scene *s);
+scene_instance *scene_add_instance(scene *s);
 scene_point *scene_add_point(scene *s);
 scene_light *scene_add_light(scene *s);
 scene_solid *scene_add_solid(scene *s);

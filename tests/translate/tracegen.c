@@ -26,6 +26,13 @@ static int is_signed(uint8_t t)
 
 void seq_cmd(seq *s, uint32_t opcode, const char *str, const double *v, size_t n)
 {
+    seq_cmd_bytes(s, opcode, str, str ? strlen(str) : 0, v, n);
+}
+
+void seq_cmd_bytes(seq *s, uint32_t opcode, const void *bytes, size_t nbytes, const double *v,
+                   size_t n)
+{
+    const char *str = bytes;
     static rgl_cmd cmd;
     double store[RGL_MAX_ARGS][RGL_ARRAY_MAX];
     size_t used = 0;
@@ -61,11 +68,11 @@ void seq_cmd(seq *s, uint32_t opcode, const char *str, const double *v, size_t n
         case RGL_ARG_STRING:
         case RGL_ARG_BLOB:
             a->bytes = (const uint8_t *)(str ? str : "");
-            a->count = (uint32_t)strlen(str ? str : "");
+            a->count = (uint32_t)(str ? nbytes : 0);
             break;
         }
     }
-    size_t need = 256 + 16 * RGL_ARRAY_MAX * RGL_MAX_ARGS + (str ? strlen(str) : 0);
+    size_t need = 256 + 16 * RGL_ARRAY_MAX * RGL_MAX_ARGS + nbytes;
     if (s->len + need > s->cap) {
         s->cap = (s->len + need) * 2;
         s->data = realloc(s->data, s->cap);

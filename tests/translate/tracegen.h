@@ -24,6 +24,9 @@ void seq_free(seq *s);
 
 /* Appends one command; str is the STR() argument of the rows that have one. */
 void seq_cmd(seq *s, uint32_t opcode, const char *str, const double *v, size_t n);
+/* The same with a BLOB (or STR) of nbytes bytes, which may hold zeros. */
+void seq_cmd_bytes(seq *s, uint32_t opcode, const void *bytes, size_t nbytes, const double *v,
+                   size_t n);
 
 #define CMD(s, name, ...)                                                       \
     seq_cmd((s), RGL_OP_##name, NULL, (const double[]){__VA_ARGS__},            \

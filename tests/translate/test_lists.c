@@ -1,0 +1,402 @@
+/* test_lists.c: display lists and vertex arrays in the interpreter.
+ *
+ * Lists: bodies fetched through the resource callback, calls, state kept
+ * after a call, glCallLists with every name type and glListBase, nesting
+ * cut at 64, glDeleteLists, GL_COMPILE_AND_EXECUTE, carried by
+ * interp_copy_state; and the shared output: repeated calls that draw the
+ * same become one prototype and instances, calls in another inherited
+ * colour get a prototype of their own, a list that loads an absolute
+ * matrix stays inline. Arrays: @ArrayData with glDrawArrays,
+ * glDrawElements (ubyte, ushort, uint), glDrawRangeElements,
+ * glArrayElement, type conversion, and draws the trace cannot supply.
+ */
+#include <GL/gl.h>
+#include <string.h>
+
+#include "check.h"
+#include "interp.h"
+#include "tracegen.h"
+
+static scene sc;
+static diag_log dlog;
+
+/* Resources of the test: id k is bodies[k - 1]. */
+static seq bodies[8];
+static size_t nbodies;
+
+static rgl_status fetch(void *ctx, uint32_t id, rgl_resource *out, rgl_error *err)
+{
+    (void)ctx;
+    if (id == 0 || id > nbodies) {
+        err->status = RGL_E_RESOURCE;
+        return RGL_E_RESOURCE;
+    }
+    memset(out, 0, sizeof *out);
+    out->id = id;
+    out->kind = RGL_RES_COMMANDS;
+    out->data = bodies[id - 1].data;
+    out->size = bodies[id - 1].len;
+    return RGL_OK;
+}
+
+static uint32_t add_body(seq *s)
+{
+    bodies[nbodies] = *s;
+    return (uint32_t)++nbodies;
+}
+
+static void free_bodies(void)
+{
+    for (size_t i = 0; i < nbodies; i++)
+        seq_free(&bodies[i]);
+    nbodies = 0;
+}
+
+static interp *fresh(void)
+{
+    scene_reset(&sc);
+    diag_clear(&dlog);
+    interp *ip = interp_create(&sc, &dlog);
+    interp_set_resources(ip, fetch, NULL);
+    interp_begin_frame(ip);
+    return ip;
+}
+
+static void run(interp *ip, seq *s)
+{
+    rgl_error err;
+    CHECK(interp_run(ip, s->data, s->len, 0, &err) == RGL_OK);
+    seq_free(s);
+}
+
+static uint64_t count(diag_kind k) { return dlog.e[k].count; }
+
+/* A body: one triangle in the current colour, then a move of +10 in x. */
+static uint32_t tri_body(void)
+{
+    seq b;
+    seq_init(&b);
+    CMD(&b, Begin, GL_TRIANGLES);
+    CMD(&b, Vertex2f, 0, 0);
+    CMD(&b, Vertex2f, 1, 0);
+    CMD(&b, Vertex2f, 0, 1);
+    CMD0(&b, End);
+    CMD(&b, Translatef, 10, 0, 0);
+    return add_body(&b);
+}
+
+static void test_calls_and_sharing(void)
+{
+    interp *ip = fresh();
+    uint32_t body = tri_body();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Enable, GL_DEPTH_TEST);
+    CMD(&s, NewList, 1, GL_COMPILE, body);
+    CMD0(&s, EndList);
+    CMD(&s, Color3f, 1, 0, 0);
+    for (int i = 0; i < 5; i++)
+        CMD(&s, CallList, 1);
+    CMD(&s, Color3f, 0, 1, 0); /* another inherited colour: another prototype */
+    CMD(&s, CallList, 1);
+    CMD(&s, CallList, 1);
+    CMD(&s, CallList, 99); /* undefined: nothing */
+    run(ip, &s);
+    /* The modelview moved on by 10 per call (state kept after a call). */
+    CHECK_NEAR(interp_matrix(ip, INTERP_MV)->m[12], 70, 1e-9);
+    CHECK_EQ_U(sc.nprotos, 2);
+    CHECK_EQ_U(sc.ninstances, 7);
+    CHECK_EQ_U(sc.ntris, 2); /* one triangle per prototype */
+    CHECK_EQ_U(sc.nmeshes, 2);
+    for (size_t i = 0; i < sc.nmeshes; i++)
+        CHECK(sc.meshes[i].proto == i + 1);
+    for (size_t i = 0; i < sc.ninstances; i++) {
+        CHECK_EQ_U(sc.instances[i].proto, i < 5 ? 0 : 1);
+        CHECK_NEAR(sc.instances[i].to_eye.m[12], 10.0 * (double)i, 1e-9);
+    }
+    CHECK_NEAR(sc.verts[sc.tris[0].v[0]].color[0], 1, 0);
+    CHECK_NEAR(sc.verts[sc.tris[1].v[0]].color[1], 1, 0);
+    CHECK_EQ_U(count(DIAG_IGNORED), 0);
+    interp_destroy(ip);
+    free_bodies();
+}
+
+static void test_single_call_inline(void)
+{
+    interp *ip = fresh();
+    uint32_t body = tri_body();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Enable, GL_DEPTH_TEST);
+    CMD(&s, NewList, 3, GL_COMPILE_AND_EXECUTE, body); /* drawn once, here */
+    CMD0(&s, EndList);
+    run(ip, &s);
+    CHECK_EQ_U(sc.nprotos, 0);
+    CHECK_EQ_U(sc.ninstances, 0);
+    CHECK_EQ_U(sc.ntris, 1);
+    CHECK_NEAR(interp_matrix(ip, INTERP_MV)->m[12], 10, 1e-9);
+    interp_destroy(ip);
+    free_bodies();
+}
+
+static void test_absolute_matrix_inline(void)
+{
+    interp *ip = fresh();
+    seq b;
+    seq_init(&b);
+    CMD0(&b, LoadIdentity);
+    CMD(&b, Begin, GL_TRIANGLES);
+    CMD(&b, Vertex2f, 0, 0);
+    CMD(&b, Vertex2f, 1, 0);
+    CMD(&b, Vertex2f, 0, 1);
+    CMD0(&b, End);
+    uint32_t body = add_body(&b);
+    seq s;
+    seq_init(&s);
+    CMD(&s, Enable, GL_DEPTH_TEST);
+    CMD(&s, NewList, 1, GL_COMPILE, body);
+    CMD(&s, Translatef, 5, 0, 0);
+    CMD(&s, CallList, 1);
+    CMD(&s, Translatef, 7, 0, 0);
+    CMD(&s, CallList, 1);
+    run(ip, &s);
+    /* Both calls draw at the origin: the same image, not the same output
+     * relative to their modelviews; each stays inline. */
+    CHECK_EQ_U(sc.nprotos, 0);
+    CHECK_EQ_U(sc.ntris, 2);
+    interp_destroy(ip);
+    free_bodies();
+}
+
+static void test_calllists_types(void)
+{
+    interp *ip = fresh();
+    /* List 100 + k moves x by k + 1. */
+    for (int k = 0; k < 4; k++) {
+        seq b;
+        seq_init(&b);
+        CMD(&b, Translatef, k + 1, 0, 0);
+        seq s;
+        seq_init(&s);
+        CMD(&s, NewList, 100 + k, GL_COMPILE, add_body(&b));
+        run(ip, &s);
+    }
+    struct {
+        GLenum type;
+        uint8_t bytes[8];
+        size_t n, len;
+        double expect; /* x moved by */
+    } cases[] = {
+        {GL_UNSIGNED_BYTE, {0, 3}, 2, 2, 1 + 4},
+        {GL_BYTE, {2, 1}, 2, 2, 3 + 2},
+        {GL_UNSIGNED_SHORT, {3, 0, 1, 0}, 2, 4, 4 + 2},
+        {GL_SHORT, {2, 0}, 1, 2, 3},
+        {GL_2_BYTES, {0, 1, 0, 2}, 2, 4, 2 + 3},
+        {GL_3_BYTES, {0, 0, 3}, 1, 3, 4},
+        {GL_4_BYTES, {0, 0, 0, 1}, 1, 4, 2},
+        {GL_INT, {2, 0, 0, 0, 3, 0, 0, 0}, 2, 8, 3 + 4},
+        {GL_UNSIGNED_INT, {1, 0, 0, 0}, 1, 4, 2},
+        {GL_FLOAT, {0, 0, 0x40, 0x40}, 1, 4, 4}, /* 3.0f */
+    };
+    double x = 0;
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        seq s;
+        seq_init(&s);
+        CMD(&s, ListBase, 100);
+        seq_cmd_bytes(&s, RGL_OP_CallLists, cases[c].bytes, cases[c].len,
+                      (const double[]){(double)cases[c].n, cases[c].type}, 2);
+        run(ip, &s);
+        x += cases[c].expect;
+        CHECK_NEAR(interp_matrix(ip, INTERP_MV)->m[12], x, 1e-9);
+    }
+    /* A negative GL_BYTE offset from a higher base. */
+    seq s;
+    seq_init(&s);
+    CMD(&s, ListBase, 103);
+    seq_cmd_bytes(&s, RGL_OP_CallLists, (const uint8_t[]){0xfd}, 1,
+                  (const double[]){1, GL_BYTE}, 2); /* 103 - 3 = 100 */
+    /* A count that does not match the names: rejected. */
+    seq_cmd_bytes(&s, RGL_OP_CallLists, (const uint8_t[]){0, 0}, 2,
+                  (const double[]){3, GL_UNSIGNED_BYTE}, 2);
+    run(ip, &s);
+    CHECK_NEAR(interp_matrix(ip, INTERP_MV)->m[12], x + 1, 1e-9);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_VALUE), 1);
+    interp_destroy(ip);
+    free_bodies();
+}
+
+static void test_nesting_and_delete(void)
+{
+    interp *ip = fresh();
+    /* List 7 moves by 1 and calls itself: 64 levels run. */
+    seq b;
+    seq_init(&b);
+    CMD(&b, Translatef, 1, 0, 0);
+    CMD(&b, CallList, 7);
+    uint32_t self = add_body(&b);
+    seq s;
+    seq_init(&s);
+    CMD(&s, NewList, 7, GL_COMPILE, self);
+    CMD(&s, CallList, 7);
+    run(ip, &s);
+    CHECK_NEAR(interp_matrix(ip, INTERP_MV)->m[12], INTERP_MAX_LIST_NESTING, 1e-9);
+    CHECK_EQ_U(count(DIAG_LIMIT), 1);
+
+    /* Deleted, then a call does nothing; the name is defined again. */
+    seq_init(&s);
+    CMD0(&s, LoadIdentity);
+    CMD(&s, DeleteLists, 5, 3);
+    CMD(&s, CallList, 7);
+    run(ip, &s);
+    CHECK_NEAR(interp_matrix(ip, INTERP_MV)->m[12], 0, 0);
+    seq_init(&b);
+    CMD(&b, Translatef, 0, 2, 0);
+    uint32_t up = add_body(&b);
+    seq_init(&s);
+    CMD(&s, NewList, 7, GL_COMPILE, up);
+    CMD(&s, CallList, 7);
+    CMD(&s, NewList, 0, GL_COMPILE, up); /* list 0: invalid */
+    CMD(&s, NewList, 8, 0x1234, up);     /* bad mode */
+    CMD(&s, NewList, 9, GL_COMPILE, 77); /* no such resource */
+    CMD(&s, CallList, 9);
+    run(ip, &s);
+    CHECK_NEAR(interp_matrix(ip, INTERP_MV)->m[13], 2, 0);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_VALUE), 1);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 1);
+    CHECK_EQ_U(count(DIAG_IGNORED), 1);
+
+    /* The table is context state: a copy carries it. */
+    interp *other = interp_create(NULL, NULL);
+    interp_set_resources(other, fetch, NULL);
+    interp_copy_state(other, ip);
+    seq_init(&s);
+    CMD(&s, CallList, 7);
+    rgl_error err;
+    CHECK(interp_run(other, s.data, s.len, 0, &err) == RGL_OK);
+    seq_free(&s);
+    CHECK_NEAR(interp_matrix(other, INTERP_MV)->m[13], 4, 0);
+    interp_destroy(other);
+    interp_destroy(ip);
+    free_bodies();
+}
+
+/* A list that calls itself twice would run 2^64 bodies: cut, not hung. */
+static void test_call_budget(void)
+{
+    interp *ip = fresh();
+    seq b;
+    seq_init(&b);
+    CMD(&b, CallList, 4);
+    CMD(&b, CallList, 4);
+    uint32_t twice = add_body(&b);
+    seq s;
+    seq_init(&s);
+    CMD(&s, NewList, 4, GL_COMPILE, twice);
+    CMD(&s, CallList, 4);
+    CMD(&s, CallList, 4);
+    run(ip, &s);
+    CHECK(count(DIAG_LIMIT) >= 1);
+    interp_destroy(ip);
+    free_bodies();
+}
+
+/* ---- Arrays ------------------------------------------------------------------------------ */
+
+static void array_data(seq *s, GLenum array, int first, int size, GLenum type, const void *data,
+                       size_t bytes)
+{
+    seq_cmd_bytes(s, RGL_OP_ArrayData, data, bytes,
+                  (const double[]){array, first, size, type}, 4);
+}
+
+static void test_arrays(void)
+{
+    interp *ip = fresh();
+    static const float pos[5][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {2, 2}};
+    static const uint8_t col[5][4] = {{255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 255},
+                                      {255, 255, 255, 255}, {0, 0, 0, 255}};
+    static const int16_t nrm[5][3] = {{0, 0, 32767}, {0, 0, 32767}, {0, 0, 32767},
+                                      {0, 0, 32767}, {0, 0, 32767}};
+    seq s;
+    seq_init(&s);
+    array_data(&s, GL_VERTEX_ARRAY, 0, 2, GL_FLOAT, pos, sizeof pos);
+    array_data(&s, GL_COLOR_ARRAY, 0, 4, GL_UNSIGNED_BYTE, col, sizeof col);
+    array_data(&s, GL_NORMAL_ARRAY, 0, 3, GL_SHORT, nrm, sizeof nrm);
+    CMD(&s, DrawArrays, GL_QUADS, 0, 4);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 2);
+    CHECK_EQ_U(sc.nverts, 4);
+    CHECK_NEAR(sc.verts[1].color[1], 1, 0);
+    CHECK_NEAR(sc.verts[2].pos[0], 1, 0);
+    CHECK_NEAR(sc.verts[0].normal[2], 1, 1e-9);
+    /* The current colour keeps the last element's. */
+    CHECK_NEAR(interp_state(ip)->a.current.color[0], 1, 0);
+
+    /* Indexed: ubyte, ushort and uint indices, from element 1 on. */
+    static const uint8_t i8[3] = {1, 2, 3};
+    static const uint16_t i16[3] = {1, 3, 2};
+    static const uint32_t i32[3] = {2, 3, 1};
+    static const float pos3[3][3] = {{1, 0, -1}, {1, 1, -1}, {0, 1, -1}};
+    const void *idx[3] = {i8, i16, i32};
+    const GLenum types[3] = {GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT, GL_UNSIGNED_INT};
+    const size_t sizes[3] = {1, 2, 4};
+    for (int k = 0; k < 3; k++) {
+        seq_init(&s);
+        array_data(&s, GL_VERTEX_ARRAY, 1, 3, GL_FLOAT, pos3, sizeof pos3);
+        if (k == 2)
+            seq_cmd_bytes(&s, RGL_OP_DrawRangeElements, idx[k], 3 * sizes[k],
+                          (const double[]){GL_TRIANGLES, 1, 3, 3, types[k]}, 5);
+        else
+            seq_cmd_bytes(&s, RGL_OP_DrawElements, idx[k], 3 * sizes[k],
+                          (const double[]){GL_TRIANGLES, 3, types[k]}, 3);
+        run(ip, &s);
+    }
+    CHECK_EQ_U(sc.ntris, 5);
+    const scene_vertex *v = &sc.verts[sc.tris[2].v[0]];
+    CHECK_NEAR(v->pos[0], 1, 0);
+    CHECK_NEAR(v->pos[2], -1, 0);
+
+    /* An index beyond the recorded elements: the draw is skipped. */
+    seq_init(&s);
+    array_data(&s, GL_VERTEX_ARRAY, 1, 3, GL_FLOAT, pos3, sizeof pos3);
+    seq_cmd_bytes(&s, RGL_OP_DrawElements, (const uint8_t[]){1, 2, 4}, 3,
+                  (const double[]){GL_TRIANGLES, 3, GL_UNSIGNED_BYTE}, 3);
+    /* The records last one draw: this one has no array, so draws nothing. */
+    CMD(&s, DrawArrays, GL_TRIANGLES, 0, 3);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 5);
+    CHECK_EQ_U(count(DIAG_IGNORED), 1);
+
+    /* glArrayElement inside glBegin/glEnd, doubles and ints. */
+    static const double dpos[2][3] = {{0, 0, -2}, {3, 0, -2}};
+    static const int32_t ipos[1][2] = {{0, 3}};
+    seq_init(&s);
+    CMD(&s, Begin, GL_TRIANGLES);
+    array_data(&s, GL_VERTEX_ARRAY, 0, 3, GL_DOUBLE, dpos, sizeof dpos);
+    CMD(&s, ArrayElement, 0);
+    array_data(&s, GL_VERTEX_ARRAY, 1, 3, GL_DOUBLE, dpos[1], sizeof dpos[1]);
+    CMD(&s, ArrayElement, 1);
+    array_data(&s, GL_VERTEX_ARRAY, 7, 2, GL_INT, ipos, sizeof ipos);
+    CMD(&s, ArrayElement, 7);
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 6);
+    v = &sc.verts[sc.tris[5].v[2]];
+    CHECK_NEAR(v->pos[1], 3, 0);
+    CHECK_NEAR(v->pos[2], 0, 0);
+    interp_destroy(ip);
+}
+
+int main(void)
+{
+    scene_init(&sc);
+    test_calls_and_sharing();
+    test_single_call_inline();
+    test_absolute_matrix_inline();
+    test_calllists_types();
+    test_nesting_and_delete();
+    test_call_budget();
+    test_arrays();
+    scene_finish(&sc);
+    return CHECK_RESULT("test_lists");
+}
