@@ -27,9 +27,9 @@
     X(IGNORED, "ignored call") \
     X(BAD_NUMBER, "NaN or infinite value") \
     X(LIMIT, "limit exceeded") \
-    X(NOTE_LIGHTING, "not translated yet: lighting (drawn unlit in the material's diffuse colour)") \
-    X(NOTE_FOG, "not translated yet: fog") \
-    X(NOTE_BLEND, "not translated yet: blending and alpha (drawn opaque)") \
+    X(NOTE_LIGHTING, "approximated: the lights changed between lit draws of a frame (the first lit draw's lights light the whole frame)") \
+    X(NOTE_FOG, "approximated: the fog changed between fogged draws of a frame (the first fogged draw's fog is used)") \
+    X(NOTE_BLEND, "approximated: a blend function other than GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA is drawn as that one") \
     X(NOTE_ALPHA_TEST, "not translated yet: alpha test") \
     X(NOTE_TEXTURE, "not translated yet: textures (drawn untextured)") \
     X(NOTE_TEXGEN, "not translated yet: texture coordinate generation") \
@@ -45,7 +45,8 @@
     X(NOTE_DEPTH, "approximated: depth test off or not GL_LESS (draws in one plane show in draw order, others nearest first)") \
     X(NOTE_PROJECTION, "approximated: geometry drawn with another projection or viewport is remapped into the frame's camera") \
     X(NOTE_CAMERA, "approximated: projection matrix is not a camera POV-Ray can express (default camera used)") \
-    X(NOTE_PROJECTIVE_MODELVIEW, "approximated: projective modelview applied to the vertices")
+    X(NOTE_PROJECTIVE_MODELVIEW, "approximated: projective modelview applied to the vertices") \
+    X(NOTE_NORMALS, "approximated: lit normals that are not unit length in eye space (GL_NORMALIZE off) are used normalised")
 
 typedef enum diag_kind {
 #define DIAG_ENUM_(name, text) DIAG_##name,

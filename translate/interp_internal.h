@@ -52,6 +52,7 @@ struct interp {
     size_t prim_first;  /* first vertex of the primitive in scene->verts */
     mat4 prim_to_eye;   /* object -> camera eye space for this primitive */
     bool prim_in_eye;   /* prim_to_eye is applied to the vertices themselves */
+    uint8_t prim_blend; /* SCENE_BLEND_* of the primitive */
     mat4 prim_clip;     /* object -> clip space of the primitive's own projection */
     uint8_t *edge;      /* edge flag of each vertex of the primitive */
     size_t cap_edge;
@@ -84,6 +85,11 @@ struct interp {
         const uint8_t *data;
         size_t bytes;
     } arrays[5];
+
+    /* The GL lights and fog the frame's scene holds (those of its first lit
+     * or fogged draw), to notice when a later draw uses others. */
+    uint8_t seen_light_on[INTERP_MAX_LIGHTS];
+    gl_light seen_light[INTERP_MAX_LIGHTS];
 
     /* rayglFrameBegin */
     bool frame_begin;
@@ -228,6 +234,20 @@ void interp_default_state(gl_state *st);
 /* Marks the colour glColor sets into the material with GL_COLOR_MATERIAL
  * (interp_light.c). */
 void interp_color_material_update(interp *ip);
+
+/* The scene material index of the current lighting state, fixing the
+ * frame's lights at its first lit draw (interp_light.c); -1 on failure. */
+int32_t interp_lit_material(interp *ip);
+
+/* Fixes the frame's fog at its first fogged draw (interp_light.c). */
+void interp_fix_fog(interp *ip);
+
+/* GL's lit colour (GL 1.x 2.13.1) of a vertex at eye position p with eye
+ * normal n, for the front (back = false) or back material, from the
+ * current state; colour is the vertex colour for GL_COLOR_MATERIAL.
+ * For lines and points, which the scene draws unlit (interp_light.c). */
+void interp_lit_color(const interp *ip, const double p[3], const double n[3], bool back,
+                      const float colour[4], float out[4]);
 
 static inline float clamp01(float x) { return x > 0 ? (x < 1 ? x : 1) : 0; /* NaN -> 0 */ }
 

@@ -284,3 +284,202 @@ void interp_fog(interp *ip, const rgl_cmd *cmd)
     default: break; /* colour index and fog coordinate source: no effect here */
     }
 }
+
+/* ---- Into the scene ------------------------------------------------------------ */
+
+static uint8_t cm_bits(GLenum mode)
+{
+    switch (mode) {
+    case GL_AMBIENT: return SCENE_CM_AMBIENT;
+    case GL_DIFFUSE: return SCENE_CM_DIFFUSE;
+    case GL_SPECULAR: return SCENE_CM_SPECULAR;
+    case GL_EMISSION: return SCENE_CM_EMISSION;
+    case GL_AMBIENT_AND_DIFFUSE: return SCENE_CM_AMBIENT | SCENE_CM_DIFFUSE;
+    default: return 0;
+    }
+}
+
+static bool light_on(const gl_attribs *a, int i)
+{
+    return a->caps[INTERP_CAP_LIGHT0 + i] != 0;
+}
+
+/* The frame's lights are those of its first lit draw: POV-Ray lights the
+ * whole scene with one set. A later lit draw under other lights is noted. */
+static void fix_lights(interp *ip)
+{
+    scene *s = ip->scene;
+    const gl_attribs *a = &ip->st.a;
+    if (s->lights_fixed) {
+        for (int i = 0; i < INTERP_MAX_LIGHTS; i++) {
+            bool on = light_on(a, i);
+            if (on != (ip->seen_light_on[i] != 0) ||
+                (on && memcmp(&a->lighting.light[i], &ip->seen_light[i], sizeof(gl_light)) != 0)) {
+                interp_note(ip, DIAG_NOTE_LIGHTING);
+                return;
+            }
+        }
+        return;
+    }
+    s->lights_fixed = true;
+    for (int i = 0; i < INTERP_MAX_LIGHTS; i++) {
+        const gl_light *g = &a->lighting.light[i];
+        ip->seen_light_on[i] = light_on(a, i);
+        ip->seen_light[i] = *g;
+        if (!light_on(a, i))
+            continue;
+        scene_light *l = scene_add_light(s);
+        if (!l)
+            return;
+        float w = g->position[3];
+        if (w == 0) {
+            l->kind = SCENE_LIGHT_PARALLEL;
+            for (int k = 0; k < 3; k++)
+                l->direction[k] = g->position[k];
+        } else {
+            l->kind = g->spot_cutoff == 180 ? SCENE_LIGHT_POINT : SCENE_LIGHT_SPOT;
+            for (int k = 0; k < 3; k++) {
+                l->position[k] = (double)g->position[k] / w;
+                l->direction[k] = g->spot_direction[k];
+            }
+        }
+        memcpy(l->color, g->diffuse, sizeof l->color);
+        memcpy(l->ambient, g->ambient, sizeof l->ambient);
+        memcpy(l->specular, g->specular, sizeof l->specular);
+        l->spot_exponent = g->spot_exponent;
+        l->spot_cutoff = g->spot_cutoff;
+        memcpy(l->attenuation, g->attenuation, sizeof l->attenuation);
+    }
+}
+
+int32_t interp_lit_material(interp *ip)
+{
+    const gl_attribs *a = &ip->st.a;
+    fix_lights(ip);
+    scene_material m;
+    memset(&m, 0, sizeof m);
+    bool two = a->lighting.two_side;
+    for (int f = 0; f < 2; f++) {
+        /* One-sided lighting lights back faces with the front material. */
+        const gl_material *g = &a->lighting.material[two ? f : 0];
+        memcpy(m.ambient[f], g->ambient, sizeof m.ambient[f]);
+        memcpy(m.diffuse[f], g->diffuse, sizeof m.diffuse[f]);
+        memcpy(m.specular[f], g->specular, sizeof m.specular[f]);
+        memcpy(m.emission[f], g->emission, sizeof m.emission[f]);
+        m.shininess[f] = g->shininess;
+    }
+    if (a->caps[INTERP_CAP_COLOR_MATERIAL]) {
+        int faces = face_mask(a->lighting.color_material_face);
+        uint8_t bits = cm_bits(a->lighting.color_material_mode);
+        for (int f = 0; f < 2; f++) {
+            if (!(faces & (1 << (two ? f : 0))))
+                continue;
+            /* Those terms come from each vertex: leave them out of the
+             * material so that one material serves every colour. */
+            m.color_material[f] = bits;
+            if (bits & SCENE_CM_AMBIENT)
+                memset(m.ambient[f], 0, sizeof m.ambient[f]);
+            if (bits & SCENE_CM_DIFFUSE)
+                memset(m.diffuse[f], 0, sizeof m.diffuse[f]);
+            if (bits & SCENE_CM_SPECULAR)
+                memset(m.specular[f], 0, sizeof m.specular[f]);
+            if (bits & SCENE_CM_EMISSION)
+                memset(m.emission[f], 0, sizeof m.emission[f]);
+        }
+    }
+    memcpy(m.model_ambient, a->lighting.model_ambient, sizeof m.model_ambient);
+    m.two_sided = two;
+    m.local_viewer = a->lighting.local_viewer;
+    return scene_material_index(ip->scene, &m);
+}
+
+void interp_fix_fog(interp *ip)
+{
+    scene *s = ip->scene;
+    const gl_attribs *a = &ip->st.a;
+    scene_fog f;
+    memset(&f, 0, sizeof f);
+    f.on = true;
+    f.mode = (int)a->fog.mode;
+    f.density = a->fog.density;
+    f.start = a->fog.start;
+    f.end = a->fog.end;
+    memcpy(f.color, a->fog.color, sizeof f.color);
+    if (!s->fog.on)
+        s->fog = f;
+    else if (memcmp(&s->fog, &f, sizeof f) != 0)
+        interp_note(ip, DIAG_NOTE_FOG);
+}
+
+void interp_lit_color(const interp *ip, const double p[3], const double n[3], bool back,
+                      const float colour[4], float out[4])
+{
+    const gl_attribs *a = &ip->st.a;
+    int f = back && a->lighting.two_side ? 1 : 0;
+    gl_material m = a->lighting.material[f];
+    if (a->caps[INTERP_CAP_COLOR_MATERIAL] &&
+        (face_mask(a->lighting.color_material_face) & (1 << f))) {
+        uint8_t bits = cm_bits(a->lighting.color_material_mode);
+        if (bits & SCENE_CM_AMBIENT) memcpy(m.ambient, colour, sizeof m.ambient);
+        if (bits & SCENE_CM_DIFFUSE) memcpy(m.diffuse, colour, sizeof m.diffuse);
+        if (bits & SCENE_CM_SPECULAR) memcpy(m.specular, colour, sizeof m.specular);
+        if (bits & SCENE_CM_EMISSION) memcpy(m.emission, colour, sizeof m.emission);
+    }
+    double nn[3] = {n[0], n[1], n[2]};
+    if (f == 1)
+        for (int k = 0; k < 3; k++)
+            nn[k] = -nn[k];
+    double c[3];
+    for (int k = 0; k < 3; k++)
+        c[k] = m.emission[k] + m.ambient[k] * a->lighting.model_ambient[k];
+    for (int i = 0; i < INTERP_MAX_LIGHTS; i++) {
+        if (!light_on(a, i))
+            continue;
+        const gl_light *l = &a->lighting.light[i];
+        double vp[3], att = 1, spot = 1, d = 0;
+        if (l->position[3] != 0) {
+            for (int k = 0; k < 3; k++)
+                vp[k] = l->position[k] / l->position[3] - p[k];
+            d = sqrt(vp[0] * vp[0] + vp[1] * vp[1] + vp[2] * vp[2]);
+            double q = l->attenuation[0] + l->attenuation[1] * d + l->attenuation[2] * d * d;
+            att = q > 0 ? 1 / q : 0;
+        } else {
+            for (int k = 0; k < 3; k++)
+                vp[k] = l->position[k];
+            d = sqrt(vp[0] * vp[0] + vp[1] * vp[1] + vp[2] * vp[2]);
+        }
+        if (!(d > 0))
+            continue;
+        for (int k = 0; k < 3; k++)
+            vp[k] /= d;
+        if (l->spot_cutoff != 180 && l->position[3] != 0) {
+            const float *sd = l->spot_direction;
+            double sl = sqrt((double)sd[0] * sd[0] + (double)sd[1] * sd[1] + (double)sd[2] * sd[2]);
+            double cs = sl > 0 ? -(vp[0] * sd[0] + vp[1] * sd[1] + vp[2] * sd[2]) / sl : 0;
+            spot = cs >= cos(l->spot_cutoff * M_PI / 180) ? pow(fmax(cs, 0), l->spot_exponent) : 0;
+        }
+        double nl = nn[0] * vp[0] + nn[1] * vp[1] + nn[2] * vp[2];
+        double sp = 0;
+        if (nl > 0) {
+            double h[3];
+            double e[3] = {0, 0, 1};
+            if (a->lighting.local_viewer) {
+                double pl = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+                for (int k = 0; k < 3; k++)
+                    e[k] = pl > 0 ? -p[k] / pl : 0;
+            }
+            for (int k = 0; k < 3; k++)
+                h[k] = vp[k] + e[k];
+            double hl = sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+            double nh = hl > 0 ? (nn[0] * h[0] + nn[1] * h[1] + nn[2] * h[2]) / hl : 0;
+            sp = nh > 0 ? pow(nh, m.shininess) : (m.shininess == 0 ? 1 : 0);
+        }
+        for (int k = 0; k < 3; k++)
+            c[k] += att * spot *
+                    (m.ambient[k] * l->ambient[k] + fmax(nl, 0) * m.diffuse[k] * l->diffuse[k] +
+                     sp * m.specular[k] * l->specular[k]);
+    }
+    for (int k = 0; k < 3; k++)
+        out[k] = clamp01((float)c[k]);
+    out[3] = clamp01(m.diffuse[3]);
+}

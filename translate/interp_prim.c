@@ -74,12 +74,8 @@ static void draw_notes(interp *ip)
 {
     const gl_attribs *a = &ip->st.a;
     const uint8_t *c = a->caps;
-    if (c[INTERP_CAP_LIGHTING])
-        interp_note(ip, DIAG_NOTE_LIGHTING);
     if (c[INTERP_CAP_FOG])
-        interp_note(ip, DIAG_NOTE_FOG);
-    if (c[INTERP_CAP_BLEND])
-        interp_note(ip, DIAG_NOTE_BLEND);
+        interp_fix_fog(ip);
     if (c[INTERP_CAP_ALPHA_TEST])
         interp_note(ip, DIAG_NOTE_ALPHA_TEST);
     if (c[INTERP_CAP_TEXTURE_3D] || c[INTERP_CAP_TEXTURE_CUBE_MAP])
@@ -214,6 +210,26 @@ static bool setup_transform(interp *ip)
     return true;
 }
 
+/* How much of a draw's colour covers what is behind it: GL_BLEND with
+ * GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA covers alpha (POV-Ray's transmit
+ * 1 - alpha is exactly that blend); other functions are drawn as that one,
+ * with a note, except the two that mean opaque and invisible. */
+static uint8_t blend_mode(interp *ip)
+{
+    const gl_attribs *a = &ip->st.a;
+    if (!a->caps[INTERP_CAP_BLEND])
+        return SCENE_BLEND_OPAQUE;
+    GLenum src = a->color_buffer.blend_src, dst = a->color_buffer.blend_dst;
+    if (src == GL_SRC_ALPHA && dst == GL_ONE_MINUS_SRC_ALPHA)
+        return SCENE_BLEND_ALPHA;
+    if (src == GL_ONE && dst == GL_ZERO)
+        return SCENE_BLEND_OPAQUE;
+    if (src == GL_ZERO && dst == GL_ONE)
+        return SCENE_BLEND_INVISIBLE;
+    interp_note(ip, DIAG_NOTE_BLEND);
+    return SCENE_BLEND_ALPHA;
+}
+
 static void begin_mode(interp *ip, GLenum mode)
 {
     ip->in_begin = true;
@@ -227,6 +243,7 @@ static void begin_mode(interp *ip, GLenum mode)
         return;
     ip->prim_skip = false;
     ip->prim_first = ip->scene->nverts;
+    ip->prim_blend = blend_mode(ip);
 }
 
 void interp_begin(interp *ip, const rgl_cmd *cmd)
@@ -240,6 +257,37 @@ void interp_begin(interp *ip, const rgl_cmd *cmd)
 }
 
 /* ---- Vertices ---------------------------------------------------------------- */
+
+/* Lines and points under lighting: GL's lit colour at the vertex, computed
+ * here (the scene draws them unlit), with the current normal in GL's own
+ * eye space (2.11.3: the inverse transpose of the modelview, normalised
+ * under GL_NORMALIZE, rescaled under GL_RESCALE_NORMAL). */
+static void lit_line_colour(interp *ip, double x, double y, double z, float out[4])
+{
+    const gl_attribs *a = &ip->st.a;
+    const mat4 *mv = interp_matrix(ip, INTERP_MV);
+    double in[4] = {x, y, z, 1}, o[4], p[3], n[3] = {0, 0, 0};
+    mat4_apply(mv, in, o);
+    for (int k = 0; k < 3; k++)
+        p[k] = o[3] != 0 ? o[k] / o[3] : o[k];
+    mat4 inv;
+    if (mat4_invert(mv, &inv)) {
+        const float *cn = a->current.normal;
+        for (int k = 0; k < 3; k++) /* n^T M^-1: row k of the inverse's transpose */
+            n[k] = cn[0] * inv.m[k * 4 + 0] + cn[1] * inv.m[k * 4 + 1] + cn[2] * inv.m[k * 4 + 2];
+        double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        if (a->caps[INTERP_CAP_NORMALIZE] && len > 0) {
+            for (int k = 0; k < 3; k++)
+                n[k] /= len;
+        } else if (a->caps[INTERP_CAP_RESCALE_NORMAL]) {
+            double r = sqrt(inv.m[2] * inv.m[2] + inv.m[6] * inv.m[6] + inv.m[10] * inv.m[10]);
+            if (r > 0)
+                for (int k = 0; k < 3; k++)
+                    n[k] /= r;
+        }
+    }
+    interp_lit_color(ip, p, n, false, a->current.color, out);
+}
 
 void interp_add_vertex(interp *ip, double x, double y, double z, double w)
 {
@@ -266,12 +314,27 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
     v->pos[1] = (float)y;
     v->pos[2] = (float)z;
     memcpy(v->normal, a->current.normal, sizeof v->normal);
-    /* Lighting is issue 4: until then a lit vertex shows its material's
-     * diffuse colour (which GL_COLOR_MATERIAL keeps equal to glColor). */
-    const float *c = a->caps[INTERP_CAP_LIGHTING] ? a->lighting.material[0].diffuse
-                                                  : a->current.color;
-    for (int i = 0; i < 4; i++)
-        v->color[i] = clamp01(c[i]);
+    if (!a->caps[INTERP_CAP_LIGHTING]) {
+        for (int i = 0; i < 4; i++)
+            v->color[i] = clamp01(a->current.color[i]);
+    } else if (ip->prim_mode <= GL_LINE_STRIP) {
+        lit_line_colour(ip, x, y, z, v->color);
+    } else {
+        /* The writer lights it: the colour carries what GL_COLOR_MATERIAL
+         * takes from glColor, and GL's lit alpha, the diffuse one. */
+        const gl_material *fm = &a->lighting.material[0];
+        bool cm = a->caps[INTERP_CAP_COLOR_MATERIAL] != 0;
+        const float *c = cm ? a->current.color : fm->diffuse;
+        for (int i = 0; i < 3; i++)
+            v->color[i] = clamp01(c[i]);
+        /* interp_color_material_update keeps the material's diffuse
+         * equal to glColor when colour material covers it. */
+        v->color[3] = clamp01(fm->diffuse[3]);
+    }
+    if (ip->prim_blend == SCENE_BLEND_OPAQUE)
+        v->color[3] = 1;
+    else if (ip->prim_blend == SCENE_BLEND_INVISIBLE)
+        v->color[3] = 0;
     float q = a->current.texcoord[3];
     if (a->caps[INTERP_CAP_TEXTURE_2D] || a->caps[INTERP_CAP_TEXTURE_1D]) {
         double obj[4] = {x, y, z, 1};
@@ -689,9 +752,44 @@ scene_look interp_current_look(interp *ip)
     memset(&look, 0, sizeof look);
     look.lit = ip->st.a.caps[INTERP_CAP_LIGHTING];
     look.flat = ip->st.a.lighting.shade_model == GL_FLAT;
-    look.material = -1;
+    look.blend = ip->prim_blend;
+    look.fog = ip->st.a.caps[INTERP_CAP_FOG];
+    look.material = look.lit ? interp_lit_material(ip) : -1;
+    if (look.lit && look.material < 0)
+        look.lit = 0;
     look.texture = interp_texture_for_draw(ip);
     return look;
+}
+
+/* GL lights the normal as transformed (2.11.3); POV-Ray always normalises
+ * it. Says so when a lit primitive's normals are not unit length in eye
+ * space (GL_NORMALIZE off, GL_RESCALE_NORMAL not making them so). */
+static void check_normals(interp *ip, uint32_t n)
+{
+    const gl_attribs *a = &ip->st.a;
+    if (a->caps[INTERP_CAP_NORMALIZE] || ip->prim_in_eye)
+        return;
+    mat4 inv;
+    if (!mat4_invert(interp_matrix(ip, INTERP_MV), &inv))
+        return;
+    double r = 1;
+    if (a->caps[INTERP_CAP_RESCALE_NORMAL]) {
+        r = sqrt(inv.m[2] * inv.m[2] + inv.m[6] * inv.m[6] + inv.m[10] * inv.m[10]);
+        if (!(r > 0))
+            return;
+    }
+    const scene_vertex *v = ip->scene->verts + ip->prim_first;
+    for (uint32_t i = 0; i < n; i++) {
+        const float *cn = v[i].normal;
+        double e[3];
+        for (int k = 0; k < 3; k++)
+            e[k] = (cn[0] * inv.m[k * 4 + 0] + cn[1] * inv.m[k * 4 + 1] + cn[2] * inv.m[k * 4 + 2]) / r;
+        double len2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+        if (fabs(len2 - 1) > 2e-3) {
+            interp_note(ip, DIAG_NOTE_NORMALS);
+            return;
+        }
+    }
 }
 
 static void end_primitive(interp *ip)
@@ -745,6 +843,8 @@ static void end_primitive(interp *ip)
         as.check_bad = true;
     }
     scene_look look = interp_current_look(ip);
+    if (look.lit)
+        check_normals(ip, n);
     mat4 id = mat4_identity();
     as.mesh = scene_mesh_for(s, ip->prim_in_eye ? &id : &ip->prim_to_eye, ip->prim_in_eye, &look);
     if (!as.facing && !as.check_bad && a->polygon.mode[0] == GL_FILL)

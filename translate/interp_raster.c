@@ -76,6 +76,10 @@ void interp_end_frame(interp *ip)
         scene_light *l = scene_add_light(s);
         if (l) {
             l->kind = SCENE_LIGHT_PARALLEL;
+            l->aimed = true;
+            l->spot_cutoff = 180;
+            l->attenuation[0] = 1;
+            l->specular[0] = l->specular[1] = l->specular[2] = 1;
             for (int k = 0; k < 3; k++) {
                 l->position[k] = isfinite(ip->fb_light[k]) ? ip->fb_light[k] : 0;
                 l->point_at[k] = s->camera.look_at[k];

@@ -20,6 +20,7 @@
 #include <string.h>
 
 #include "dedup.h"
+#include "povwrite_light.h"
 #include "povwrite_solid.h"
 #include "talloc.h"
 
@@ -63,6 +64,8 @@ struct povwriter {
     size_t nbverts, cap_bverts;
     scene_tri *btris;
     size_t nbtris, cap_btris;
+    povlight light; /* lighting, blending and fog of the scene being written */
+    bool mesh_no_shadow; /* write_mesh2 adds no_shadow (points outside the union) */
 };
 
 povwriter *povwriter_create(void)
@@ -205,7 +208,18 @@ static bool finite3d(const double v[3])
 static void put_unlit_texture(outbuf *ob, const float c[4])
 {
     outbuf_puts(ob, "texture{pigment{");
-    put_rgb(ob, c);
+    if (c[3] < 1) { /* GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA: transmit 1 - alpha */
+        float t[4] = {c[0], c[1], c[2], 1 - c[3]};
+        outbuf_puts(ob, "rgbt<");
+        for (int k = 0; k < 4; k++) {
+            if (k)
+                outbuf_putc(ob, ',');
+            outbuf_f32(ob, t[k]);
+        }
+        outbuf_putc(ob, '>');
+    } else {
+        put_rgb(ob, c);
+    }
     outbuf_puts(ob, "}}");
 }
 
@@ -229,22 +243,6 @@ static void write_camera(outbuf *ob, const scene_camera *c)
     outbuf_puts(ob, "\n direction ");
     put_vec3d(ob, c->direction);
     outbuf_puts(ob, "\n}\n");
-}
-
-static void write_light(outbuf *ob, const scene_light *l)
-{
-    if (!finite3d(l->position) || !finite3d(l->point_at) || !finite3f(l->color))
-        return;
-    outbuf_puts(ob, "light_source{");
-    put_vec3d(ob, l->position);
-    outbuf_putc(ob, ' ');
-    float c[4] = {l->color[0], l->color[1], l->color[2], 1};
-    put_rgb(ob, c);
-    if (l->kind == SCENE_LIGHT_PARALLEL) {
-        outbuf_puts(ob, " parallel point_at");
-        put_vec3d(ob, l->point_at);
-    }
-    outbuf_puts(ob, "}\n");
 }
 
 /* ---- Meshes ------------------------------------------------------------------------ */
@@ -391,6 +389,19 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
     bool colour_list = w->col.count > 1;
 
     /* Pass 2: the text. Each entry is written into one reservation. */
+    bool special = povlight_special(look);
+    if (look->fog) {
+        /* Each texture under the mesh's fog layer: a layered texture can
+         * only enter texture_list by name. */
+        povlight_fog_declare(&w->light, ob, "rgl_fog", to_eye);
+        for (size_t i = 0; i < w->col.count; i++) {
+            outbuf_puts(ob, "#declare rgl_t");
+            outbuf_u64(ob, i);
+            outbuf_putc(ob, '=');
+            povlight_texture(&w->light, ob, look, (const float *)(const void *)dedup_key(&w->col, i), 0);
+            outbuf_puts(ob, "texture{rgl_fog}\n");
+        }
+    }
     outbuf_puts(ob, "mesh2{\nvertex_vectors{");
     outbuf_u64(ob, vd->count);
     for (size_t i = 0; i < vd->count; i++)
@@ -406,9 +417,19 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
     if (colour_list) {
         outbuf_puts(ob, "texture_list{");
         outbuf_u64(ob, w->col.count);
-        for (size_t i = 0; i < w->col.count; i++)
-            PUT_ENTRY(w, ob, ",\ntexture{pigment{rgb<",
-                      (const float *)(const void *)dedup_key(&w->col, i), ">}}");
+        for (size_t i = 0; i < w->col.count; i++) {
+            const float *c = (const float *)(const void *)dedup_key(&w->col, i);
+            if (look->fog) {
+                outbuf_puts(ob, ",\ntexture{rgl_t");
+                outbuf_u64(ob, i);
+                outbuf_putc(ob, '}');
+            } else if (special) {
+                outbuf_puts(ob, ",\n");
+                povlight_texture(&w->light, ob, look, c, 0);
+            } else {
+                PUT_ENTRY(w, ob, ",\ntexture{pigment{rgb<", c, ">}}");
+            }
+        }
         outbuf_puts(ob, "}\n");
     }
     /* Faces as (v0, v2, v1): see the file comment. Without normal_indices,
@@ -443,12 +464,30 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
         outbuf_commit(ob, (size_t)(q - p));
     }
     outbuf_puts(ob, "}\n");
+    const float *c0 = (const float *)(const void *)dedup_key(&w->col, 0);
     if (!colour_list) {
-        put_unlit_texture(ob, (const float *)(const void *)dedup_key(&w->col, 0));
+        if (look->fog)
+            outbuf_puts(ob, "texture{rgl_t0}");
+        else if (special)
+            povlight_texture(&w->light, ob, look, c0, 0);
+        else
+            put_unlit_texture(ob, c0);
         outbuf_putc(ob, '\n');
+    }
+    if (look->lit && look->material >= 0 && (size_t)look->material < w->light.s->nmaterials &&
+        w->light.s->materials[look->material].two_sided) {
+        /* GL_BACK's material on the faces' inner side (see the file
+         * comment); one texture for the whole mesh, in the first colour. */
+        outbuf_puts(ob, "interior_texture{");
+        povlight_texture(&w->light, ob, look, c0, 1);
+        if (look->fog)
+            outbuf_puts(ob, "texture{rgl_fog}");
+        outbuf_puts(ob, "}\n");
     }
     if (to_eye)
         put_matrix(ob, to_eye);
+    if (w->mesh_no_shadow)
+        outbuf_puts(ob, "no_shadow\n");
     outbuf_puts(ob, "}\n");
     return 0;
 }
@@ -475,6 +514,19 @@ static int add_quad(povwriter *w, float c[4][3], const float *col[4])
     return 0;
 }
 
+/* The band pool as one unlit mesh2 in eye space, transparent where a
+ * colour's alpha says so (blending). */
+static int write_bands(povwriter *w, outbuf *ob)
+{
+    scene_look look;
+    memset(&look, 0, sizeof look);
+    look.material = look.texture = -1;
+    for (size_t i = 0; i < w->nbverts; i++)
+        if (w->bverts[i].color[3] < 1)
+            look.blend = SCENE_BLEND_ALPHA;
+    return write_mesh2(w, ob, w->bverts, w->btris, w->nbtris, &look, NULL);
+}
+
 /* Lines: one mesh2 of flat quads in eye space (see scene.h: each is the
  * band GL rasterises). */
 static int write_lines(povwriter *w, outbuf *ob, const scene *s)
@@ -497,10 +549,7 @@ static int write_lines(povwriter *w, outbuf *ob, const scene *s)
         if (add_quad(w, c, col) != 0)
             return -1;
     }
-    scene_look look;
-    memset(&look, 0, sizeof look);
-    look.material = look.texture = -1;
-    return write_mesh2(w, ob, w->bverts, w->btris, w->nbtris, &look, NULL);
+    return write_bands(w, ob);
 }
 
 /* A finite point of the drawn geometry, in eye space. */
@@ -560,7 +609,7 @@ static int write_points(povwriter *w, outbuf *ob, const scene *s)
             outbuf_f32(ob, r);
             outbuf_putc(ob, ' ');
             put_unlit_texture(ob, pt->color);
-            outbuf_puts(ob, "}\n");
+            outbuf_puts(ob, w->light.opt.no_shadows ? " no_shadow}\n" : "}\n");
             continue;
         }
         static const int sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
@@ -572,10 +621,7 @@ static int write_points(povwriter *w, outbuf *ob, const scene *s)
         if (add_quad(w, c, col) != 0)
             return -1;
     }
-    scene_look look;
-    memset(&look, 0, sizeof look);
-    look.material = look.texture = -1;
-    return write_mesh2(w, ob, w->bverts, w->btris, w->nbtris, &look, NULL);
+    return write_bands(w, ob);
 }
 
 /* ---- The file ------------------------------------------------------------------------- */
@@ -668,6 +714,8 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
      * that need another finish (issue 4) name theirs. */
     outbuf_puts(ob, "}\n#default{finish{ambient 0 diffuse 0 emission 1}}\n");
 
+    povlight_begin(&w->light, s, info ? info->options : NULL);
+    bool no_shadows = w->light.opt.no_shadows;
     if (write_protos(w, ob, s) != 0)
         return -1;
     bool any = false;
@@ -706,12 +754,16 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
         if (write_lines(w, ob, s) != 0)
             return -1;
         write_clip(ob, &s->camera);
+        if (no_shadows)
+            outbuf_puts(ob, "no_shadow\n");
         outbuf_puts(ob, "}\n");
     }
-    if (write_points(w, ob, s) != 0)
+    w->mesh_no_shadow = no_shadows;
+    int prc = write_points(w, ob, s);
+    w->mesh_no_shadow = false;
+    if (prc != 0)
         return -1;
-    for (size_t i = 0; i < s->nlights; i++)
-        write_light(ob, &s->lights[i]);
+    povlight_lights(&w->light, ob);
     return ob->failed ? -1 : 0;
 }
 

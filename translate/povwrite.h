@@ -14,6 +14,14 @@
 #include "outbuf.h"
 #include "scene.h"
 
+/* What the user chose beyond the GL look (raygl2pov options); all zero is
+ * the default: shadows on, no reflection, point lights. */
+typedef struct pov_options {
+    bool no_shadows;  /* --no-shadows: nothing casts shadows (the GL look) */
+    float reflection; /* --reflection F: mirror reflection of lit surfaces */
+    int area_lights;  /* --area-lights N: N x N area lights (soft shadows), 0 off */
+} pov_options;
+
 /* Where a frame came from, for the header comment. Strings may be NULL;
  * they are escaped before they reach the file. */
 typedef struct pov_frame_info {
@@ -22,6 +30,7 @@ typedef struct pov_frame_info {
     uint64_t frame_index;  /* in file order */
     uint32_t stream, number;
     const char *frame_name; /* rayglFrameBegin's name, or NULL */
+    const pov_options *options; /* NULL: the defaults */
 } pov_frame_info;
 
 typedef struct povwriter povwriter;

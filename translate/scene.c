@@ -39,6 +39,7 @@ void scene_finish(scene *s)
     tr_free(s->textures);
     tr_free(s->protos);
     tr_free(s->instances);
+    tr_free(s->materials);
     memset(s, 0, sizeof *s);
 }
 
@@ -46,6 +47,9 @@ void scene_reset(scene *s)
 {
     scene_clear_geometry(s);
     s->nlights = 0;
+    s->nmaterials = 0;
+    s->lights_fixed = false;
+    memset(&s->fog, 0, sizeof s->fog);
     s->have_camera = false;
     s->failed = false;
     memset(s->background, 0, sizeof s->background);
@@ -201,6 +205,22 @@ int32_t scene_add_texture(scene *s, const scene_texture *t)
     }
     *n = *t;
     return (int32_t)(s->ntextures - 1);
+}
+
+int32_t scene_material_index(scene *s, const scene_material *m)
+{
+    /* Newest first: a frame switches among a few materials. */
+    for (size_t i = s->nmaterials; i-- > 0;)
+        if (memcmp(&s->materials[i], m, sizeof *m) == 0)
+            return (int32_t)i;
+    if (s->nmaterials >= INT32_MAX)
+        return -1;
+    scene_material *n = add_item(s, (void **)&s->materials, &s->nmaterials, &s->cap_materials,
+                                 sizeof *n);
+    if (!n)
+        return -1;
+    memcpy(n, m, sizeof *n);
+    return (int32_t)(s->nmaterials - 1);
 }
 
 /* ---- Cameras ---------------------------------------------------------------- */

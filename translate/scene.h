@@ -56,9 +56,9 @@ typedef struct scene_tri {
 typedef struct scene_look {
     uint8_t lit;       /* GL_LIGHTING was on (issue 4: lit materials) */
     uint8_t flat;      /* GL_FLAT: one colour per face, the provoking vertex's */
-    uint8_t blend;     /* alpha matters (issue 4) */
-    uint8_t two_sided; /* two-sided lighting (issue 4) */
-    int32_t material;  /* index into scene.materials, -1 for none (issue 4) */
+    uint8_t blend;     /* SCENE_BLEND_*: how the colour behind shows through */
+    uint8_t fog;       /* GL_FOG was on */
+    int32_t material;  /* index into scene.materials when lit, else -1 */
     int32_t texture;   /* index into scene.textures, -1 for none (issue 5) */
 } scene_look;
 
@@ -127,30 +127,58 @@ typedef struct scene_camera {
 } scene_camera;
 
 typedef enum scene_light_kind {
-    SCENE_LIGHT_PARALLEL, /* rayglFrameBegin's white light; GL w = 0 (issue 4) */
-    SCENE_LIGHT_POINT,
-    SCENE_LIGHT_SPOT,
+    SCENE_LIGHT_PARALLEL, /* GL w = 0, or rayglFrameBegin's white light */
+    SCENE_LIGHT_POINT,    /* GL w != 0, cutoff 180 */
+    SCENE_LIGHT_SPOT,     /* GL w != 0, cutoff <= 90 */
 } scene_light_kind;
 
-/* A light in eye space (issue 4 adds the GL lights' remaining terms). */
+/* A light in eye space with all of GL's terms (GL 1.x 2.13.1). For a GL
+ * parallel light, direction points toward the light and the writer places
+ * it outside the scene; rayglFrameBegin's light has a position and a
+ * point_at instead (aimed). */
 typedef struct scene_light {
     scene_light_kind kind;
-    double position[3];
-    double point_at[3];
-    float color[3];
+    bool aimed;          /* position and point_at given (rayglFrameBegin) */
+    double position[3];  /* POINT, SPOT, aimed PARALLEL */
+    double point_at[3];  /* aimed PARALLEL */
+    double direction[3]; /* PARALLEL: toward the light; SPOT: GL's spot direction */
+    float color[3];      /* GL_DIFFUSE */
+    float ambient[3], specular[3];
+    float spot_exponent, spot_cutoff;   /* degrees */
+    float attenuation[3];               /* constant, linear, quadratic */
 } scene_light;
 
-/* Places for the next issues. The interpreter already keeps the GL state
- * they will come from (interp.h); nothing fills these yet. */
+/* A GL material, front [0] and back [1], as the lit runs that refer to it
+ * saw it (GL 1.x 2.13.1). color_material names the terms (SCENE_CM_* bits,
+ * per face) that come from each vertex's colour instead (GL_COLOR_MATERIAL);
+ * model_ambient is GL_LIGHT_MODEL_AMBIENT then. With two_sided false both
+ * sides of a face use the front material. */
+enum {
+    SCENE_CM_AMBIENT = 1,
+    SCENE_CM_DIFFUSE = 2,
+    SCENE_CM_SPECULAR = 4,
+    SCENE_CM_EMISSION = 8,
+};
 
-/* A GL material, front and back (issue 4: lit runs refer to one). */
 typedef struct scene_material {
     float ambient[2][4], diffuse[2][4], specular[2][4], emission[2][4];
     float shininess[2];
+    float model_ambient[4];
+    uint8_t color_material[2];
     bool two_sided;
+    bool local_viewer;
 } scene_material;
 
-/* glFog, in eye space (issue 4). */
+/* How the colour behind a face shows through it (glBlendFunc with
+ * GL_BLEND on). ALPHA is GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA: the face
+ * lets 1 - alpha of what is behind through. */
+enum {
+    SCENE_BLEND_OPAQUE = 0,
+    SCENE_BLEND_ALPHA = 1,     /* transmit 1 - alpha */
+    SCENE_BLEND_INVISIBLE = 2, /* GL_ZERO, GL_ONE: nothing drawn */
+};
+
+/* glFog, in eye space: GL's fog factor of the eye-plane distance |z|. */
 typedef struct scene_fog {
     bool on;
     int mode; /* GL_LINEAR, GL_EXP, GL_EXP2 */
@@ -219,12 +247,14 @@ typedef struct scene {
     size_t ninstances, cap_instances;
     size_t mesh_floor;   /* scene_mesh_for extends no mesh below this index */
     uint32_t generation; /* counts scene_clear_geometry calls */
-    scene_fog fog; /* issue 4 */
+    scene_fog fog;     /* glFog of the first fogged draw */
     scene_solid *solids;
     size_t nsolids, cap_solids;
     scene_texture *textures; /* look.texture indexes this */
     size_t ntextures, cap_textures;
-    /* Issue 4 adds: materials (a pool like the above). */
+    scene_material *materials; /* lit runs refer to these by index */
+    size_t nmaterials, cap_materials;
+    bool lights_fixed; /* lights hold the GL lights of the first lit draw */
 
     bool failed; /* an allocation or limit failed; the scene is incomplete */
 } scene;
@@ -263,6 +293,10 @@ scene_solid *scene_add_solid(scene *s);
  * rgba, which it frees, or frees at once when it already holds an equal
  * texture), or -1 on failure (rgba freed). */
 int32_t scene_add_texture(scene *s, const scene_texture *t);
+
+/* Index of a material equal (bytewise) to m in the pool, adding it when
+ * new; -1 on failure. Build m zeroed. */
+int32_t scene_material_index(scene *s, const scene_material *m);
 
 bool scene_look_equal(const scene_look *a, const scene_look *b);
 

@@ -658,7 +658,7 @@ static void test_alloc_translation(void)
         for (size_t i = 0; tr && oi == 0 && i < 2; i++) {
             frame_result res;
             if (translator_build(tr, i, NULL, &res) == RGL_OK) {
-                pov_frame_info info = {"f.pov", "t.raygl", i, 0, (uint32_t)i, NULL};
+                pov_frame_info info = {"f.pov", "t.raygl", i, 0, (uint32_t)i, NULL, NULL};
                 ob.len = 0;
                 ok += translator_write_pov(tr, &ob, &info) == 0 && !ob.failed;
             }

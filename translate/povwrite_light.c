@@ -1,0 +1,460 @@
+/* povwrite_light.c: GL lighting, blending and fog in POV-Ray terms
+ * (povwrite_light.h; docs/mapping.md "Lighting").
+ *
+ * GL lights each vertex with (GL 1.x 2.13.1)
+ *   e + a Ga + sum_i att_i spot_i (a la_i + (N.L) d ld_i + (N.H)^s k ls_i).
+ * POV-Ray lights each pixel with pigment P and finish
+ *   P A ambient_light + P E + sum_j fade_j spot_j C_j (D P (N.L) + S (N.H)^(1/r)),
+ * its specular belonging to the surface and its light having one colour.
+ * So P = d (at least 1e-3 per channel), A = a (Ga + sum la_i) / P with
+ * ambient_light 1, E = e / P, D = 1, S = mean(k), r = 1 / s; and each GL
+ * light becomes up to two POV-Ray lights at its place: one of colour ls
+ * (diffuse and highlights) and a shadowless one of colour ld - ls (POV-Ray
+ * gives shadowless lights no highlights), so a light without specular
+ * makes none. Attenuation maps onto fade_distance/fade_power (exact when
+ * one of GL's linear and quadratic terms is zero), spots onto spotlight
+ * with radius = falloff = cutoff and tightness = exponent (exact).
+ */
+#include "povwrite_light.h"
+
+#include <GL/gl.h>
+#include <math.h>
+#include <string.h>
+
+#define MIN_PIGMENT 1e-3f
+
+/* A number for SDL: finite, within float range. */
+static float fin(double v)
+{
+    if (!isfinite(v))
+        return 0;
+    if (v > 1e30)
+        return 1e30f;
+    if (v < -1e30)
+        return -1e30f;
+    return (float)v;
+}
+
+static void put_num(outbuf *ob, double v) { outbuf_f32(ob, fin(v)); }
+
+static void put_vec(outbuf *ob, const double v[3])
+{
+    outbuf_putc(ob, '<');
+    put_num(ob, v[0]);
+    outbuf_putc(ob, ',');
+    put_num(ob, v[1]);
+    outbuf_putc(ob, ',');
+    put_num(ob, v[2]);
+    outbuf_putc(ob, '>');
+}
+
+static void put_rgb3(outbuf *ob, const double c[3])
+{
+    outbuf_puts(ob, "rgb");
+    put_vec(ob, c);
+}
+
+static bool nonzero3(const double c[3])
+{
+    return c[0] != 0 || c[1] != 0 || c[2] != 0;
+}
+
+static double len3(const double v[3]) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+/* ---- The scene's extent ------------------------------------------------------------ */
+
+static void grow_box(double lo[3], double hi[3], const double p[3])
+{
+    for (int k = 0; k < 3; k++) {
+        lo[k] = p[k] < lo[k] ? p[k] : lo[k];
+        hi[k] = p[k] > hi[k] ? p[k] : hi[k];
+    }
+}
+
+static void scene_box(const scene *s, double lo[3], double hi[3])
+{
+    for (int k = 0; k < 3; k++) {
+        lo[k] = INFINITY;
+        hi[k] = -INFINITY;
+    }
+    for (size_t i = 0; i < s->nmeshes; i++) {
+        const scene_mesh *m = &s->meshes[i];
+        for (size_t t = 0; t < m->tri_count; t++)
+            for (int c = 0; c < 3; c++) {
+                const float *p = s->verts[s->tris[m->first_tri + t].v[c]].pos;
+                double in[4] = {p[0], p[1], p[2], 1}, o[4];
+                if (m->in_eye)
+                    o[0] = p[0], o[1] = p[1], o[2] = p[2], o[3] = 1;
+                else
+                    mat4_apply(&m->to_eye, in, o);
+                if (isfinite(o[0]) && isfinite(o[1]) && isfinite(o[2]))
+                    grow_box(lo, hi, o);
+            }
+    }
+    for (size_t i = 0; i < s->nlines; i++)
+        for (int e = 0; e < 2; e++) {
+            double p[3] = {s->lines[i].p[e][0], s->lines[i].p[e][1], s->lines[i].p[e][2]};
+            if (isfinite(p[0]) && isfinite(p[1]) && isfinite(p[2]))
+                grow_box(lo, hi, p);
+        }
+    for (size_t i = 0; i < s->npoints; i++) {
+        double p[3] = {s->points[i].p[0], s->points[i].p[1], s->points[i].p[2]};
+        if (isfinite(p[0]) && isfinite(p[1]) && isfinite(p[2]))
+            grow_box(lo, hi, p);
+    }
+}
+
+/* ---- Attenuation and spots ------------------------------------------------------------ */
+
+/* GL's attenuation 1 / (kc + kl d + kq d^2) as POV-Ray's fade, which is
+ * 2 / (1 + (d / D)^P), times a scale of the light's colour:
+ *   kl = kq = 0: no fade, scale 1 / kc (exact);
+ *   kl = 0: P = 2, D = sqrt(kc / kq), scale 1 / (2 kc) (exact);
+ *   kq = 0: P = 1, D = kc / kl, scale 1 / (2 kc) (exact);
+ *   kc = 0 with one term: a tiny D, 2 (D / d)^P (relative error D / d);
+ *   otherwise P = 2 and D, scale fit GL's value and slope at d0, the
+ *   light's distance to the scene's centre. */
+typedef struct fade {
+    bool on;
+    double distance, power, scale;
+} fade;
+
+static fade fit_fade(const float att[3], double d0)
+{
+    fade f = {false, 0, 0, 1};
+    double kc = att[0], kl = att[1], kq = att[2];
+    if (!(d0 > 1e-6))
+        d0 = 1e-6;
+    if (kl == 0 && kq == 0) {
+        f.scale = kc > 0 ? 1 / kc : 1e30;
+        return f;
+    }
+    f.on = true;
+    if (kc > 0 && kl == 0) {
+        f.power = 2, f.distance = sqrt(kc / kq), f.scale = 1 / (2 * kc);
+    } else if (kc > 0 && kq == 0) {
+        f.power = 1, f.distance = kc / kl, f.scale = 1 / (2 * kc);
+    } else if (kc == 0 && kq == 0) {
+        f.power = 1, f.distance = 1e-5 * d0, f.scale = 1 / (2 * kl * f.distance);
+    } else if (kc == 0 && kl == 0) {
+        f.power = 2, f.distance = 1e-3 * d0;
+        f.scale = 1 / (2 * kq * f.distance * f.distance);
+    } else {
+        double a = kc + kl * d0 + kq * d0 * d0;
+        double g = (kl + 2 * kq * d0) / a;
+        double d2 = 2 * d0 / g - d0 * d0;
+        if (!(d2 > 0))
+            d2 = 1e-12 * d0 * d0;
+        f.power = 2, f.distance = sqrt(d2);
+        f.scale = (1 + d0 * d0 / d2) / (2 * a);
+    }
+    return f;
+}
+
+/* GL's attenuation and spot factor of light l at eye point p. */
+static double gl_att_spot(const scene_light *l, const double p[3])
+{
+    if (l->kind == SCENE_LIGHT_PARALLEL)
+        return 1;
+    double v[3] = {p[0] - l->position[0], p[1] - l->position[1], p[2] - l->position[2]};
+    double d = len3(v);
+    double q = l->attenuation[0] + l->attenuation[1] * d + l->attenuation[2] * d * d;
+    double f = q > 0 ? 1 / q : 0;
+    if (l->kind == SCENE_LIGHT_SPOT) {
+        double dl = len3(l->direction);
+        double c = d > 0 && dl > 0 ? (v[0] * l->direction[0] + v[1] * l->direction[1] +
+                                      v[2] * l->direction[2]) / (d * dl)
+                                   : 0;
+        f *= c >= cos(l->spot_cutoff * M_PI / 180) ? pow(fmax(c, 0), l->spot_exponent) : 0;
+    }
+    return f;
+}
+
+/* ---- Per frame --------------------------------------------------------------------- */
+
+void povlight_begin(povlight *pl, const scene *s, const pov_options *options)
+{
+    memset(pl, 0, sizeof *pl);
+    pl->s = s;
+    if (options)
+        pl->opt = *options;
+    double lo[3], hi[3];
+    scene_box(s, lo, hi);
+    if (lo[0] <= hi[0]) {
+        double d[3];
+        for (int k = 0; k < 3; k++) {
+            pl->centre[k] = (lo[k] + hi[k]) / 2;
+            d[k] = hi[k] - lo[k];
+        }
+        pl->radius = len3(d) / 2;
+    }
+    if (!(pl->radius > 1e-6) || !isfinite(pl->radius))
+        pl->radius = 1e-6;
+    /* GL attenuates and spots each light's ambient term too; POV-Ray's
+     * ambient has no place, so it is taken at the scene's centre. */
+    for (size_t i = 0; i < s->nlights; i++) {
+        const scene_light *l = &s->lights[i];
+        if (l->aimed)
+            continue;
+        double f = gl_att_spot(l, pl->centre);
+        for (int k = 0; k < 3; k++)
+            pl->light_ambient[k] += fin(l->ambient[k] * f);
+    }
+}
+
+/* ---- Surfaces ------------------------------------------------------------------------ */
+
+bool povlight_special(const scene_look *look)
+{
+    return look->lit || look->fog || look->blend != SCENE_BLEND_OPAQUE;
+}
+
+void povlight_texture(const povlight *pl, outbuf *ob, const scene_look *look, const float c[4],
+                      int side)
+{
+    const scene *s = pl->s;
+    double t = 1 - (double)c[3];
+    t = t > 0 ? (t < 1 ? t : 1) : 0;
+    outbuf_puts(ob, "texture{pigment{");
+    if (!look->lit || look->material < 0 || (size_t)look->material >= s->nmaterials) {
+        /* Unlit: the #default finish makes the pixel the pigment. */
+        double rgb[3] = {c[0], c[1], c[2]};
+        outbuf_puts(ob, t > 0 ? "rgbt<" : "rgb<");
+        for (int k = 0; k < 3; k++) {
+            put_num(ob, rgb[k]);
+            if (k < 2)
+                outbuf_putc(ob, ',');
+        }
+        if (t > 0) {
+            outbuf_putc(ob, ',');
+            put_num(ob, t);
+        }
+        outbuf_puts(ob, ">}}");
+        return;
+    }
+    const scene_material *m = &s->materials[look->material];
+    int f = m->two_sided ? side : 0;
+    uint8_t cm = m->color_material[f];
+    const float *ka = cm & SCENE_CM_AMBIENT ? c : m->ambient[f];
+    const float *kd = cm & SCENE_CM_DIFFUSE ? c : m->diffuse[f];
+    const float *ks = cm & SCENE_CM_SPECULAR ? c : m->specular[f];
+    const float *ke = cm & SCENE_CM_EMISSION ? c : m->emission[f];
+    double p[3], amb[3], em[3];
+    for (int k = 0; k < 3; k++) {
+        p[k] = kd[k] > MIN_PIGMENT ? kd[k] : MIN_PIGMENT;
+        amb[k] = ka[k] * ((double)m->model_ambient[k] + pl->light_ambient[k]) / p[k];
+        em[k] = ke[k] / p[k];
+    }
+    outbuf_puts(ob, t > 0 ? "rgbt<" : "rgb<");
+    for (int k = 0; k < 3; k++) {
+        put_num(ob, p[k]);
+        if (k < 2)
+            outbuf_putc(ob, ',');
+    }
+    if (t > 0) {
+        outbuf_putc(ob, ',');
+        put_num(ob, t);
+    }
+    outbuf_puts(ob, ">}finish{diffuse 1 ambient ");
+    put_rgb3(ob, amb);
+    if (nonzero3(em)) {
+        outbuf_puts(ob, " emission ");
+        put_rgb3(ob, em);
+    }
+    /* POV-Ray's highlights are not dimmed by transmit; GL blends them
+     * with the rest of the colour, by alpha. */
+    double spec = ((double)ks[0] + ks[1] + ks[2]) / 3 * (1 - t);
+    if (spec > 0) {
+        double sh = m->shininess[f];
+        outbuf_puts(ob, " specular ");
+        put_num(ob, spec);
+        outbuf_puts(ob, " roughness ");
+        put_num(ob, 1 / (sh > 1e-3 ? sh : 1e-3));
+    }
+    if (pl->opt.reflection > 0) {
+        outbuf_puts(ob, " reflection ");
+        put_num(ob, pl->opt.reflection);
+    }
+    outbuf_puts(ob, "}}");
+}
+
+/* ---- Fog -------------------------------------------------------------------------------- */
+
+/* GL fogs a fragment by f of its eye-plane distance c = |z_eye| (GL 1.x
+ * 3.10; Mesa uses |z_eye|): LINEAR (end - c) / (end - start), EXP
+ * e^(-density c), EXP2 e^(-(density c)^2), clamped to [0, 1], and shows
+ * f C + (1 - f) fog colour. The layer is the fog colour with transmit f,
+ * over the surface's own texture: POV-Ray shows (1 - f) fog + f C, and
+ * leaves the background alone as GL does. The pattern is evaluated in the
+ * mesh's object space, so z_eye is row 2 of its matrix. */
+void povlight_fog_declare(const povlight *pl, outbuf *ob, const char *name, const mat4 *to_eye)
+{
+    const scene_fog *fg = &pl->s->fog;
+    double r[4] = {0, 0, 1, 0};
+    if (to_eye)
+        for (int k = 0; k < 4; k++)
+            r[k] = to_eye->m[k * 4 + 2];
+    outbuf_puts(ob, "#declare ");
+    outbuf_puts(ob, name);
+    outbuf_puts(ob, "=texture{pigment{function{min(1,max(0,");
+    switch (fg->mode) {
+    case GL_LINEAR: {
+        double span = (double)fg->end - fg->start;
+        if (span == 0)
+            span = 1e-30;
+        put_num(ob, fg->end / span);
+        outbuf_puts(ob, "-abs(");
+        break;
+    }
+    case GL_EXP2:
+        outbuf_puts(ob, "exp(-pow(abs(");
+        break;
+    default:
+        outbuf_puts(ob, "exp(-abs(");
+        break;
+    }
+    static const char *axis[3] = {"*x+", "*y+", "*z+"};
+    for (int k = 0; k < 3; k++) {
+        put_num(ob, r[k]);
+        outbuf_puts(ob, axis[k]);
+    }
+    put_num(ob, r[3]);
+    switch (fg->mode) {
+    case GL_LINEAR: {
+        double span = (double)fg->end - fg->start;
+        if (span == 0)
+            span = 1e-30;
+        outbuf_puts(ob, ")/");
+        put_num(ob, span);
+        break;
+    }
+    case GL_EXP2:
+        outbuf_puts(ob, ")*");
+        put_num(ob, fg->density);
+        outbuf_puts(ob, ",2))");
+        break;
+    default:
+        outbuf_puts(ob, ")*");
+        put_num(ob, fg->density);
+        outbuf_puts(ob, ")");
+        break;
+    }
+    double fc[3] = {fg->color[0], fg->color[1], fg->color[2]};
+    outbuf_puts(ob, "))}color_map{[0 rgbt<");
+    for (int k = 0; k < 3; k++) {
+        put_num(ob, fc[k]);
+        outbuf_putc(ob, ',');
+    }
+    outbuf_puts(ob, "0>][1 rgbt<");
+    for (int k = 0; k < 3; k++) {
+        put_num(ob, fc[k]);
+        outbuf_putc(ob, ',');
+    }
+    outbuf_puts(ob, "1>]}}finish{ambient 0 diffuse 0 emission 1}}\n");
+}
+
+/* ---- Lights ------------------------------------------------------------------------------ */
+
+/* One POV-Ray light_source of colour col at the GL light's place. */
+static void put_light(const povlight *pl, outbuf *ob, const scene_light *l, const double col[3],
+                      bool shadowless)
+{
+    double loc[3], at[3];
+    double dist;
+    if (l->kind == SCENE_LIGHT_PARALLEL) {
+        /* Outside the scene, toward the light: POV-Ray's parallel light
+         * casts no shadows from behind its location. */
+        double dl = len3(l->direction);
+        dist = 2 * pl->radius + 1;
+        for (int k = 0; k < 3; k++) {
+            loc[k] = pl->centre[k] + l->direction[k] / dl * dist;
+            at[k] = pl->centre[k];
+        }
+    } else {
+        for (int k = 0; k < 3; k++) {
+            loc[k] = l->position[k];
+            at[k] = l->position[k] + l->direction[k];
+        }
+        double v[3] = {pl->centre[0] - loc[0], pl->centre[1] - loc[1], pl->centre[2] - loc[2]};
+        dist = len3(v);
+    }
+    fade fd = {false, 0, 0, 1};
+    if (l->kind != SCENE_LIGHT_PARALLEL)
+        fd = fit_fade(l->attenuation, dist);
+    double c[3] = {col[0] * fd.scale, col[1] * fd.scale, col[2] * fd.scale};
+    outbuf_puts(ob, "light_source{");
+    put_vec(ob, loc);
+    outbuf_putc(ob, ' ');
+    put_rgb3(ob, c);
+    if (l->kind == SCENE_LIGHT_PARALLEL) {
+        outbuf_puts(ob, " parallel point_at");
+        put_vec(ob, at);
+    } else if (l->kind == SCENE_LIGHT_SPOT) {
+        outbuf_puts(ob, " spotlight radius ");
+        put_num(ob, l->spot_cutoff);
+        outbuf_puts(ob, " falloff ");
+        put_num(ob, l->spot_cutoff);
+        outbuf_puts(ob, " tightness ");
+        put_num(ob, l->spot_exponent);
+        outbuf_puts(ob, " point_at");
+        put_vec(ob, at);
+    }
+    if (fd.on) {
+        outbuf_puts(ob, " fade_distance ");
+        put_num(ob, fd.distance);
+        outbuf_puts(ob, " fade_power ");
+        put_num(ob, fd.power);
+    }
+    if (shadowless) {
+        outbuf_puts(ob, " shadowless");
+    } else if (pl->opt.area_lights > 1 && !pl->opt.no_shadows) {
+        /* A disc facing the scene, a tenth of the distance across. */
+        double a = 0.1 * (dist > 0 ? dist : pl->radius);
+        double ax[3] = {a, 0, 0}, ay[3] = {0, a, 0};
+        outbuf_puts(ob, " area_light");
+        put_vec(ob, ax);
+        outbuf_putc(ob, ',');
+        put_vec(ob, ay);
+        outbuf_putc(ob, ',');
+        outbuf_u64(ob, (uint64_t)pl->opt.area_lights);
+        outbuf_putc(ob, ',');
+        outbuf_u64(ob, (uint64_t)pl->opt.area_lights);
+        outbuf_puts(ob, " adaptive 1 circular orient");
+    }
+    outbuf_puts(ob, "}\n");
+}
+
+void povlight_lights(const povlight *pl, outbuf *ob)
+{
+    const scene *s = pl->s;
+    for (size_t i = 0; i < s->nlights; i++) {
+        const scene_light *l = &s->lights[i];
+        if (l->aimed) {
+            /* rayglFrameBegin's white light, as the paper wrote it. */
+            double c[3] = {l->color[0], l->color[1], l->color[2]};
+            outbuf_puts(ob, "light_source{");
+            put_vec(ob, l->position);
+            outbuf_putc(ob, ' ');
+            put_rgb3(ob, c);
+            outbuf_puts(ob, " parallel point_at");
+            put_vec(ob, l->point_at);
+            outbuf_puts(ob, "}\n");
+            continue;
+        }
+        if (l->kind == SCENE_LIGHT_PARALLEL && !(len3(l->direction) > 0))
+            continue; /* GL: a direction of zero lights nothing but ambient */
+        double spec[3], rest[3];
+        for (int k = 0; k < 3; k++) {
+            spec[k] = l->specular[k];
+            rest[k] = (double)l->color[k] - l->specular[k];
+        }
+        if (nonzero3(spec))
+            put_light(pl, ob, l, spec, false);
+        if (nonzero3(rest)) {
+            if (!pl->opt.no_shadows)
+                outbuf_puts(ob, "// diffuse beyond the light's specular colour: no shadow, no "
+                                "highlight (docs/mapping.md)\n");
+            put_light(pl, ob, l, rest, true);
+        }
+    }
+}

@@ -1,0 +1,44 @@
+/* povwrite_light.h: the POV-Ray writer's lighting part (povwrite_light.c):
+ * GL lights as light_source, GL materials as finishes, blending as
+ * transmit, fog as a texture layer. Private to the writer (povwrite.c).
+ */
+#ifndef RGL_POVWRITE_LIGHT_H
+#define RGL_POVWRITE_LIGHT_H
+
+#include <stdbool.h>
+
+#include "outbuf.h"
+#include "povwrite.h"
+#include "scene.h"
+
+/* What the lighting part needs about the whole scene, computed once per
+ * frame by povlight_begin. */
+typedef struct povlight {
+    const scene *s;
+    pov_options opt;
+    double centre[3]; /* of the drawn geometry's bounding box, eye space */
+    double radius;    /* half its diagonal (at least a small positive value) */
+    float light_ambient[3]; /* sum of the GL lights' ambient, attenuated at the centre */
+} povlight;
+
+/* Fills pl for scene s (options may be NULL: the defaults). */
+void povlight_begin(povlight *pl, const scene *s, const pov_options *options);
+
+/* True when a run needs more than the plain unlit texture{pigment{rgb}}. */
+bool povlight_special(const scene_look *look);
+
+/* One texture{...} for a face side (0 front, 1 back) of a run with look,
+ * vertex colour c (GL_COLOR_MATERIAL's colour and the coverage alpha,
+ * scene_vertex.color). */
+void povlight_texture(const povlight *pl, outbuf *ob, const scene_look *look, const float c[4],
+                      int side);
+
+/* The fog layer of a mesh whose object space goes to eye space by to_eye
+ * (NULL: already eye space), declared as `name`:
+ * `#declare name=texture{...}` and a newline. */
+void povlight_fog_declare(const povlight *pl, outbuf *ob, const char *name, const mat4 *to_eye);
+
+/* The light_source statements of the scene's GL lights. */
+void povlight_lights(const povlight *pl, outbuf *ob);
+
+#endif
