@@ -341,7 +341,7 @@ static void write_temp(job *j, translator *t, size_t k, slot *s, outbuf *ob)
         snprintf(fname, sizeof fname, "frame-%05zu.pov", s->frame);
     }
     pov_frame_info info = {fname, j->o->trace, s->frame, s->info.stream, s->info.number,
-                           s->frame_name};
+                           s->frame_name, &j->o->pov};
     ob->len = 0;
     ob->failed = false;
     ob->user = &fd;

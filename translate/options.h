@@ -14,6 +14,8 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "povwrite.h"
+
 #define OPT_MAX_JOBS 256
 
 typedef enum opt_arg { OPT_FLAG, OPT_VALUE } opt_arg;
@@ -31,6 +33,7 @@ typedef struct options {
     size_t nranges;
     int jobs; /* 0 until opt_finish_parse: one per core */
     bool dump, quiet, help, version;
+    pov_options pov; /* shadows, reflection, area lights (options_light.c) */
 
     /* Private: strings the options own, and the settings-file nesting. */
     struct opt_string *owned;

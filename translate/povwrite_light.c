@@ -257,10 +257,12 @@ void povlight_texture(const povlight *pl, outbuf *ob, const scene_look *look, co
     }
     outbuf_puts(ob, ">}finish{diffuse 1 ambient ");
     put_rgb3(ob, amb);
-    if (nonzero3(em)) {
-        outbuf_puts(ob, " emission ");
+    /* Always named: the #default finish (unlit surfaces) has emission 1. */
+    outbuf_puts(ob, " emission ");
+    if (nonzero3(em))
         put_rgb3(ob, em);
-    }
+    else
+        outbuf_putc(ob, '0');
     /* POV-Ray's highlights are not dimmed by transmit; GL blends them
      * with the rest of the colour, by alpha. */
     double spec = ((double)ks[0] + ks[1] + ks[2]) / 3 * (1 - t);

@@ -2,11 +2,13 @@
 # run-image-test.sh: one image test, GL frame against POV-Ray frame.
 #
 #   run-image-test.sh --name NAME --program PROG --raygl2pov R2P --povray POVRAY
-#                     --imgcmp IMGCMP --outdir DIR [--size WxH] [-- IMGCMP-OPTIONS...]
+#                     --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]...
+#                     [-- IMGCMP-OPTIONS...]
 #
 # 1. PROG --trace DIR/NAME/NAME.raygl --png DIR/NAME/gl.png [--size WxH]
 #    draws one frame with OSMesa, records it and writes the GL image;
-# 2. in DIR/NAME: R2P NAME.raygl -o pov   translates the trace;
+# 2. in DIR/NAME: R2P NAME.raygl -o pov [OPT...]   translates the trace
+#    (each --r2p-opt adds one raygl2pov option, e.g. --no-shadows);
 # 3. in DIR/NAME: POVRAY pov/frame-00000.ini -D -A   renders it (the .ini
 #    names the size, the gamma and pov/frame-00000.png);
 # 4. IMGCMP [IMGCMP-OPTIONS] --diff DIR/NAME/diff.png gl.png pov/frame-00000.png
@@ -18,16 +20,16 @@
 set -u
 
 usage() {
-    echo "usage: $0 --name NAME --program PROG --raygl2pov R2P --povray POVRAY --imgcmp IMGCMP --outdir DIR [--size WxH] [-- IMGCMP-OPTIONS...]" >&2
+    echo "usage: $0 --name NAME --program PROG --raygl2pov R2P --povray POVRAY --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]... [-- IMGCMP-OPTIONS...]" >&2
     exit 2
 }
 
-name= prog= r2p= povray= imgcmp= outdir= size=
+name= prog= r2p= povray= imgcmp= outdir= size= r2p_opts=
 while [ $# -gt 0 ]; do
     case $1 in
     --help) usage ;;
     --) shift; break ;;
-    --name|--program|--raygl2pov|--povray|--imgcmp|--outdir|--size)
+    --name|--program|--raygl2pov|--povray|--imgcmp|--outdir|--size|--r2p-opt)
         [ $# -ge 2 ] || usage
         case $1 in
         --name) name=$2 ;;
@@ -37,6 +39,11 @@ while [ $# -gt 0 ]; do
         --imgcmp) imgcmp=$2 ;;
         --outdir) outdir=$2 ;;
         --size) size=$2 ;;
+        --r2p-opt)
+            case $2 in
+            *[!A-Za-z0-9.=-]*) echo "$0: --r2p-opt '$2': letters, digits, '.', '=' and '-' only" >&2; exit 2 ;;
+            esac
+            r2p_opts="$r2p_opts $2" ;;
         esac
         shift 2 ;;
     *) echo "$0: unknown argument $1" >&2; usage ;;
@@ -97,7 +104,8 @@ fi
 [ -s "$dir/gl.png" ] || fail "the program wrote no GL image"
 
 # 2. Translation, run where POV-Ray will run so that relative paths agree.
-(cd "$dir" && "$r2p" "$name.raygl" -o pov) >"$dir/raygl2pov.log" 2>&1
+# shellcheck disable=SC2086 # r2p_opts: words checked above, split on purpose
+(cd "$dir" && "$r2p" "$name.raygl" -o pov $r2p_opts) >"$dir/raygl2pov.log" 2>&1
 rc=$?
 if [ $rc -ne 0 ]; then
     show_log "$dir/raygl2pov.log"

@@ -506,10 +506,14 @@ static void test_attributes(void)
         CHECK(v->tex[0] == 0.5f && v->tex[1] == 1);
     }
 
-    /* Lighting (issue 4) shows the material's diffuse colour; colour
-     * material keeps it equal to glColor. */
+    /* Lit points take GL's lit colour (GL 1.x 2.13.1): LIGHT0 shines
+     * along -z onto the default normal (0, 0, 1): e + a Ga + d (N.L), with
+     * Ga = 0.2, a = 0.2, no specular. Colour material feeds glColor into
+     * the ambient and diffuse terms. */
     seq_init(&s);
     CMD(&s, Enable, GL_LIGHTING);
+    CMD(&s, Enable, GL_LIGHT0);
+    CMD(&s, Normal3f, 0, 0, 1);
     CMD(&s, Materialfv, GL_FRONT, GL_DIFFUSE, 0.25, 0.5, 0.75, 1);
     CMD(&s, Color3f, 1, 1, 1);
     CMD(&s, Begin, GL_POINTS);
@@ -520,12 +524,36 @@ static void test_attributes(void)
     CMD(&s, Begin, GL_POINTS);
     CMD(&s, Vertex3f, 0, 0, 0);
     CMD0(&s, End);
+    CMD(&s, Begin, GL_TRIANGLES);
+    CMD(&s, Vertex3f, 0, 0, 0);
+    CMD(&s, Vertex3f, 1, 0, 0);
+    CMD(&s, Vertex3f, 0, 1, 0);
+    CMD0(&s, End);
+    CMD(&s, Disable, GL_LIGHT0);
+    CMD(&s, Begin, GL_TRIANGLES);
+    CMD(&s, Vertex3f, 0, 0, 0);
+    CMD(&s, Vertex3f, 1, 0, 0);
+    CMD(&s, Vertex3f, 0, 1, 0);
+    CMD0(&s, End);
     run(ip, &s);
     CHECK_EQ_U(sc.npoints, 2);
     if (sc.npoints == 2) {
-        CHECK(sc.points[0].color[1] == 0.5f);
-        CHECK(sc.points[1].color[1] == 0.2f);
+        CHECK(fabsf(sc.points[0].color[1] - 0.54f) < 1e-6f);
+        CHECK(fabsf(sc.points[1].color[1] - 0.24f) < 1e-6f);
     }
+    /* The lit triangles: one material (colour material's terms are left
+     * out of it), the lights of the first lit draw, and a note when a
+     * later draw has others. */
+    CHECK_EQ_U(sc.nmaterials, 1);
+    if (sc.nmaterials == 1) {
+        CHECK(sc.materials[0].color_material[0] == (SCENE_CM_AMBIENT | SCENE_CM_DIFFUSE));
+        CHECK(sc.materials[0].diffuse[0][1] == 0);
+        CHECK(sc.materials[0].specular[0][3] == 1);
+    }
+    CHECK_EQ_U(sc.nlights, 1);
+    if (sc.nlights == 1)
+        CHECK(sc.lights[0].kind == SCENE_LIGHT_PARALLEL && sc.lights[0].direction[2] == 1 &&
+              sc.lights[0].specular[0] == 1);
     CHECK_EQ_U(count(DIAG_NOTE_LIGHTING), 1);
     interp_destroy(ip);
 }
