@@ -249,6 +249,12 @@ void interp_fix_fog(interp *ip);
 void interp_lit_color(const interp *ip, const double p[3], const double n[3], bool back,
                       const float colour[4], float out[4]);
 
+/* The colour a surface vertex carries into the scene (scene_vertex.color):
+ * glColor unlit; lit, what GL_COLOR_MATERIAL takes from glColor (or the
+ * front diffuse colour) with GL's lit alpha; alpha 1 unless blending
+ * (interp_prim.c). */
+void interp_surface_colour(const interp *ip, float out[4]);
+
 static inline float clamp01(float x) { return x > 0 ? (x < 1 ? x : 1) : 0; /* NaN -> 0 */ }
 
 #endif

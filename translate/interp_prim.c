@@ -258,6 +258,31 @@ void interp_begin(interp *ip, const rgl_cmd *cmd)
 
 /* ---- Vertices ---------------------------------------------------------------- */
 
+void interp_surface_colour(const interp *ip, float out[4])
+{
+    const gl_attribs *a = &ip->st.a;
+    const float *c = a->current.color;
+    if (a->caps[INTERP_CAP_LIGHTING]) {
+        /* The writer lights it: the colour carries what GL_COLOR_MATERIAL
+         * takes from glColor, and GL's lit alpha, the diffuse one
+         * (interp_color_material_update keeps the material's diffuse equal
+         * to glColor when colour material covers it). */
+        const gl_material *fm = &a->lighting.material[0];
+        if (!a->caps[INTERP_CAP_COLOR_MATERIAL])
+            c = fm->diffuse;
+        for (int i = 0; i < 3; i++)
+            out[i] = clamp01(c[i]);
+        out[3] = clamp01(fm->diffuse[3]);
+    } else {
+        for (int i = 0; i < 4; i++)
+            out[i] = clamp01(c[i]);
+    }
+    if (ip->prim_blend == SCENE_BLEND_OPAQUE)
+        out[3] = 1;
+    else if (ip->prim_blend == SCENE_BLEND_INVISIBLE)
+        out[3] = 0;
+}
+
 /* Lines and points under lighting: GL's lit colour at the vertex, computed
  * here (the scene draws them unlit), with the current normal in GL's own
  * eye space (2.11.3: the inverse transpose of the modelview, normalised
@@ -320,16 +345,7 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
     } else if (ip->prim_mode <= GL_LINE_STRIP) {
         lit_line_colour(ip, x, y, z, v->color);
     } else {
-        /* The writer lights it: the colour carries what GL_COLOR_MATERIAL
-         * takes from glColor, and GL's lit alpha, the diffuse one. */
-        const gl_material *fm = &a->lighting.material[0];
-        bool cm = a->caps[INTERP_CAP_COLOR_MATERIAL] != 0;
-        const float *c = cm ? a->current.color : fm->diffuse;
-        for (int i = 0; i < 3; i++)
-            v->color[i] = clamp01(c[i]);
-        /* interp_color_material_update keeps the material's diffuse
-         * equal to glColor when colour material covers it. */
-        v->color[3] = clamp01(fm->diffuse[3]);
+        interp_surface_colour(ip, v->color);
     }
     if (ip->prim_blend == SCENE_BLEND_OPAQUE)
         v->color[3] = 1;

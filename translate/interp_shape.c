@@ -221,17 +221,6 @@ static void grid_line(interp *ip, const shape_style *st, surf_fn f, const void *
     interp_prim_end(ip);
 }
 
-/* The current colour as a solid shows it (issue 4: lit solids show the
- * material's diffuse colour until lighting is translated). */
-static void solid_colour(const interp *ip, float out[4])
-{
-    const gl_attribs *a = &ip->st.a;
-    const float *c = a->caps[INTERP_CAP_LIGHTING] ? a->lighting.material[0].diffuse
-                                                  : a->current.color;
-    for (int k = 0; k < 4; k++)
-        out[k] = clamp01(c[k]);
-}
-
 /* Whether the exact solid shows what GL shows for a filled shape. closed:
  * the surface encloses a volume seen only from outside; faceted: GL's
  * normals are per face. */
@@ -272,7 +261,7 @@ static bool emit_solid(interp *ip, scene_solid_kind kind, bool open, double p0, 
         so->params[2] = p2;
         so->to_eye = ip->prim_to_eye;
         so->look = interp_current_look(ip);
-        solid_colour(ip, so->color);
+        interp_surface_colour(ip, so->color);
     }
     interp_abort_begin(ip);
     return true;

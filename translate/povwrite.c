@@ -740,7 +740,7 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
                             m->in_eye ? NULL : &m->to_eye) != 0)
                 return -1;
         }
-        povwrite_solids(ob, s);
+        povwrite_solids(ob, s, &w->light);
         for (size_t i = 0; i < s->ninstances; i++) {
             const scene_instance *in = &s->instances[i];
             if (!mat4_finite(&in->to_eye) || in->proto >= s->nprotos)

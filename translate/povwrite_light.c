@@ -97,6 +97,12 @@ static void scene_box(const scene *s, double lo[3], double hi[3])
             if (isfinite(p[0]) && isfinite(p[1]) && isfinite(p[2]))
                 grow_box(lo, hi, p);
         }
+    for (size_t i = 0; i < s->nsolids; i++) { /* their centres (GLU/GLUT solids) */
+        const double *m = s->solids[i].to_eye.m;
+        double p[3] = {m[12], m[13], m[14]};
+        if (isfinite(p[0]) && isfinite(p[1]) && isfinite(p[2]))
+            grow_box(lo, hi, p);
+    }
     for (size_t i = 0; i < s->npoints; i++) {
         double p[3] = {s->points[i].p[0], s->points[i].p[1], s->points[i].p[2]};
         if (isfinite(p[0]) && isfinite(p[1]) && isfinite(p[2]))

@@ -33,7 +33,7 @@ static void put_matrix(outbuf *ob, const mat4 *to_eye)
     outbuf_putc(ob, '>');
 }
 
-static void write_solid(outbuf *ob, const scene_solid *so)
+static void write_solid(outbuf *ob, const scene_solid *so, const povlight *pl)
 {
     const double *p = so->params;
     if (!mat4_finite(&so->to_eye) || !mat4_affine(&so->to_eye))
@@ -99,17 +99,22 @@ static void write_solid(outbuf *ob, const scene_solid *so)
     default:
         return;
     }
-    outbuf_puts(ob, "\n texture{pigment{rgb");
-    put_xyz(ob, so->color[0], so->color[1], so->color[2]);
-    outbuf_puts(ob, "}}");
+    if (povlight_special(&so->look)) { /* lit, transparent or fogged */
+        outbuf_puts(ob, "\n ");
+        povlight_texture(pl, ob, &so->look, so->color, 0);
+    } else {
+        outbuf_puts(ob, "\n texture{pigment{rgb");
+        put_xyz(ob, so->color[0], so->color[1], so->color[2]);
+        outbuf_puts(ob, "}}");
+    }
     put_matrix(ob, &so->to_eye);
     outbuf_puts(ob, "}\n");
 }
 
-void povwrite_solids(outbuf *ob, const scene *s)
+void povwrite_solids(outbuf *ob, const scene *s, const povlight *pl)
 {
     for (size_t i = 0; i < s->nsolids; i++)
-        write_solid(ob, &s->solids[i]);
+        write_solid(ob, &s->solids[i], pl);
 }
 
 bool povwrite_solid_anchor(const scene *s, float out[3])

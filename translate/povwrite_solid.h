@@ -3,11 +3,12 @@
 #define RGL_POVWRITE_SOLID_H
 
 #include "outbuf.h"
+#include "povwrite_light.h"
 #include "scene.h"
 
 /* Writes every solid of the scene, each in its object space with its
  * matrix (inside the scene's union, so the near/far clip applies). */
-void povwrite_solids(outbuf *ob, const scene *s);
+void povwrite_solids(outbuf *ob, const scene *s, const povlight *pl);
 
 /* The eye-space centre of the first solid, for the union's anchor; false
  * when there is none. */
