@@ -138,6 +138,29 @@ RAYGL_API void rayglEdgeFlagPointer(GLsizei stride, const GLvoid *ptr);
 RAYGL_API void rayglInterleavedArrays(GLenum format, GLsizei stride, const GLvoid *pointer);
 RAYGL_API void rayglEnableClientState(GLenum array);
 RAYGL_API void rayglDisableClientState(GLenum array);
+RAYGL_API void rayglMultiDrawArrays(GLenum mode, const GLint *first, const GLsizei *count,
+                                    GLsizei drawcount);
+RAYGL_API void rayglMultiDrawElements(GLenum mode, const GLsizei *count, GLenum type,
+                                      const void *const *indices, GLsizei drawcount);
+
+/* Buffer objects (GL 1.5) and their ARB_vertex_buffer_object names. */
+RAYGL_API void rayglGenBuffers(GLsizei n, GLuint *buffers);
+RAYGL_API void rayglDeleteBuffers(GLsizei n, const GLuint *buffers);
+RAYGL_API void rayglBindBuffer(GLenum target, GLuint buffer);
+RAYGL_API void rayglBufferData(GLenum target, GLsizeiptr size, const void *data, GLenum usage);
+RAYGL_API void rayglBufferSubData(GLenum target, GLintptr offset, GLsizeiptr size,
+                                  const void *data);
+RAYGL_API void *rayglMapBuffer(GLenum target, GLenum access);
+RAYGL_API GLboolean rayglUnmapBuffer(GLenum target);
+RAYGL_API void rayglGenBuffersARB(GLsizei n, GLuint *buffers);
+RAYGL_API void rayglDeleteBuffersARB(GLsizei n, const GLuint *buffers);
+RAYGL_API void rayglBindBufferARB(GLenum target, GLuint buffer);
+RAYGL_API void rayglBufferDataARB(GLenum target, GLsizeiptrARB size, const void *data,
+                                  GLenum usage);
+RAYGL_API void rayglBufferSubDataARB(GLenum target, GLintptrARB offset, GLsizeiptrARB size,
+                                     const void *data);
+RAYGL_API void *rayglMapBufferARB(GLenum target, GLenum access);
+RAYGL_API GLboolean rayglUnmapBufferARB(GLenum target);
 
 RAYGL_API GLUquadric *raygluNewQuadric(void);
 RAYGL_API void raygluDeleteQuadric(GLUquadric *quad);

@@ -17,7 +17,9 @@
 #include <stdint.h>
 #include <string.h>
 
+#define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
+#include <GL/glext.h>
 #include <GL/glu.h>
 #include <GL/freeglut.h>
 
@@ -279,19 +281,55 @@ static size_t element_size(const rgl_client_array_state *a)
     return (size_t)a->size * type_size(a->type);
 }
 
+/* Where array a's element `first` starts and how far its data runs: in
+ * client memory, or in the recorder's copy of its buffer (which is then
+ * acquired: release it after the copy). False when the elements
+ * [first, first+count) are not all inside the buffer (GL would refuse or
+ * read past it: the draw goes unrecorded). */
+static bool array_source(const rgl_client_array_state *a, int64_t first, int64_t count,
+                         const uint8_t **src)
+{
+    size_t es = element_size(a);
+    size_t stride = a->stride ? (size_t)a->stride : es;
+    if (!a->buffer) {
+        *src = (const uint8_t *)a->pointer + (size_t)first * stride;
+        return true;
+    }
+    size_t size;
+    const uint8_t *data = rgl_buffer_acquire(a->buffer, &size);
+    uint64_t offset = (uintptr_t)a->pointer;
+    uint64_t end = offset + (uint64_t)(first + count - 1) * stride + es;
+    if (!data || count <= 0 || end > size) {
+        rgl_buffer_release();
+        return false;
+    }
+    *src = data + offset + (size_t)first * stride;
+    return true;
+}
+
 /* Records @ArrayData for the elements [first, first+count) of every enabled
- * array, packed. Returns false (nothing more to record) when an enabled
- * array has no pointer: GL would fault, the draw goes on unrecorded. */
+ * array, packed. Returns false (nothing recorded) when an enabled array
+ * has no pointer, or buffer data that does not hold the elements: GL would
+ * fault or refuse, the draw goes on unrecorded. */
 static bool record_arrays(int64_t first, int64_t count)
 {
     rgl_stream *s = rgl_tls_stream;
     if (!s)
         return false;
     for (int k = 0; k < RGL_MAX_CLIENT_ARRAYS; k++)
-        if (s->arrays[k].enabled && !s->arrays[k].pointer)
+        if (s->arrays[k].enabled && !s->arrays[k].pointer && !s->arrays[k].buffer)
             return false;
     if (first < 0 || count < 0 || first > INT32_MAX)
         return false;
+    /* Check every buffer first: a draw is recorded whole or not at all. */
+    for (int k = 0; k < RGL_MAX_CLIENT_ARRAYS; k++) {
+        const uint8_t *src;
+        if (s->arrays[k].enabled && s->arrays[k].buffer && count > 0) {
+            if (!array_source(&s->arrays[k], first, count, &src))
+                return false;
+            rgl_buffer_release();
+        }
+    }
     for (int k = 0; k < RGL_MAX_CLIENT_ARRAYS; k++) {
         const rgl_client_array_state *a = &s->arrays[k];
         if (!a->enabled)
@@ -302,31 +340,41 @@ static bool record_arrays(int64_t first, int64_t count)
         uint8_t *p = rgl_reserve(&s, 4 * RGL_VARINT32_MAX + RGL_VARINT64_MAX + 2 + bytes);
         if (!p)
             return false;
+        const uint8_t *src = NULL;
+        if (count > 0 && !array_source(a, first, count, &src))
+            return false; /* a buffer changed under us: the draw goes unrecorded */
         p = rgl_put_opcode(p, RGL_OP_ArrayData);
         p = rgl_put_e(p, array_enums[k]);
         p = rgl_put_i(p, (int32_t)first);
         p = rgl_put_i(p, a->size);
         p = rgl_put_e(p, a->type);
         p = rgl_put_varint(p, bytes);
-        const uint8_t *src = (const uint8_t *)a->pointer + (size_t)first * stride;
-        if (stride == es) {
+        if (count > 0 && stride == es) {
             memcpy(p, src, bytes);
             p += bytes;
-        } else {
+        } else if (count > 0) {
             for (int64_t i = 0; i < count; i++, src += stride, p += es)
                 memcpy(p, src, es);
         }
+        if (count > 0 && a->buffer)
+            rgl_buffer_release();
         rgl_commit(s, p);
     }
     return true;
+}
+
+/* Bytes of one index of type; 0 for a type GL refuses. */
+static size_t index_size(GLenum type)
+{
+    return type == GL_UNSIGNED_BYTE ? 1 : type == GL_UNSIGNED_SHORT ? 2
+         : type == GL_UNSIGNED_INT ? 4 : 0;
 }
 
 /* Smallest and largest index of an index array; false for a bad type. */
 static bool index_range(GLsizei count, GLenum type, const void *indices, uint32_t *lo,
                         uint32_t *hi, size_t *bytes)
 {
-    size_t ts = type == GL_UNSIGNED_BYTE ? 1 : type == GL_UNSIGNED_SHORT ? 2
-              : type == GL_UNSIGNED_INT ? 4 : 0;
+    size_t ts = index_size(type);
     if (!ts || count < 0 || !indices)
         return false;
     uint32_t mn = UINT32_MAX, mx = 0;
@@ -344,6 +392,26 @@ static bool index_range(GLsizei count, GLenum type, const void *indices, uint32_
     return true;
 }
 
+/* The indices of a draw: client memory, or (with a buffer bound to
+ * GL_ELEMENT_ARRAY_BUFFER) the recorder's copy of the buffer from offset
+ * `indices` on, acquired (*locked set: release after use). NULL when the
+ * buffer does not hold `bytes` bytes there. */
+static const void *index_source(rgl_stream *s, const void *indices, size_t bytes, bool *locked)
+{
+    *locked = false;
+    if (!s->element_buffer)
+        return indices;
+    size_t size;
+    const uint8_t *data = rgl_buffer_acquire(s->element_buffer, &size);
+    uint64_t offset = (uintptr_t)indices;
+    if (!data || offset + bytes > size) {
+        rgl_buffer_release();
+        return NULL;
+    }
+    *locked = true;
+    return data + offset;
+}
+
 /* Records a draw by indices: the arrays over the used range, then the
  * command with the indices as a blob. */
 static bool record_elements(uint32_t op, GLenum mode, GLuint start, GLuint end, GLsizei count,
@@ -351,14 +419,28 @@ static bool record_elements(uint32_t op, GLenum mode, GLuint start, GLuint end, 
 {
     uint32_t lo, hi;
     size_t bytes;
-    if (!index_range(count, type, indices, &lo, &hi, &bytes))
+    bool locked;
+    rgl_stream *s = rgl_tls_stream;
+    if (!s || !index_size(type) || count < 0)
+        return false;
+    const void *idx = index_source(s, indices, (size_t)count * index_size(type), &locked);
+    bool ok = idx && index_range(count, type, idx, &lo, &hi, &bytes);
+    if (locked)
+        rgl_buffer_release();
+    if (!ok)
         return false;
     rgl_resolve_matrices();
     if (count > 0 && !record_arrays(lo, (int64_t)hi - lo + 1))
         return false;
+    if (!(idx = index_source(s, indices, bytes, &locked)))
+        return false;
     if (op == RGL_OP_DrawElements)
-        return rgl_record(op, "eieB", mode, count, type, indices, bytes);
-    return rgl_record(op, "eeeieB", mode, start, end, count, type, indices, bytes);
+        ok = rgl_record(op, "eieB", mode, count, type, idx, bytes);
+    else
+        ok = rgl_record(op, "eeeieB", mode, start, end, count, type, idx, bytes);
+    if (locked)
+        rgl_buffer_release();
+    return ok;
 }
 
 RGL_EXPORT void rayglArrayElement(GLint i)
@@ -393,6 +475,92 @@ RGL_EXPORT void rayglDrawRangeElements(GLenum mode, GLuint start, GLuint end, GL
     glDrawRangeElements(mode, start, end, count, type, indices);
 }
 
+/* glMultiDrawArrays: one @ArrayData range covering every draw, then the
+ * firsts and counts as two blobs of little-endian int32. */
+RGL_EXPORT void rayglMultiDrawArrays(GLenum mode, const GLint *first, const GLsizei *count,
+                                     GLsizei drawcount)
+{
+    bool ok = drawcount >= 0 && (drawcount == 0 || (first && count));
+    int64_t lo = INT64_MAX, hi = 0;
+    for (GLsizei i = 0; ok && i < drawcount; i++) {
+        if (first[i] < 0 || count[i] < 0)
+            ok = false;
+        else if (count[i] > 0) {
+            lo = first[i] < lo ? first[i] : lo;
+            hi = (int64_t)first[i] + count[i] > hi ? (int64_t)first[i] + count[i] : hi;
+        }
+    }
+    if (ok) {
+        rgl_resolve_matrices();
+        if (lo == INT64_MAX)
+            lo = hi = 0;
+        if (record_arrays(lo, hi - lo))
+            rgl_record(RGL_OP_MultiDrawArrays, "eBBi", mode, (const void *)first,
+                       (size_t)drawcount * 4, (const void *)count, (size_t)drawcount * 4,
+                       drawcount);
+    }
+    glMultiDrawArrays(mode, first, count, drawcount);
+}
+
+/* glMultiDrawElements: the index arrays of all the draws, one after the
+ * other, in one blob; one @ArrayData range covering every index. */
+static void record_multi_elements(GLenum mode, const GLsizei *count, GLenum type,
+                                  const void *const *indices, GLsizei drawcount)
+{
+    size_t ts = index_size(type);
+    rgl_stream *s = rgl_tls_stream;
+    if (!s || !ts || drawcount < 0 || (drawcount > 0 && (!count || !indices)))
+        return;
+    size_t total = 0;
+    for (GLsizei i = 0; i < drawcount; i++) {
+        if (count[i] < 0)
+            return;
+        total += (size_t)count[i] * ts;
+    }
+    uint8_t *all = rgl_alloc(total ? total : 1);
+    if (!all) {
+        rgl_fail(ENOMEM, "allocation failed");
+        return;
+    }
+    uint32_t lo = UINT32_MAX, hi = 0;
+    size_t at = 0;
+    bool ok = true;
+    for (GLsizei i = 0; ok && i < drawcount; i++) {
+        size_t bytes = (size_t)count[i] * ts;
+        bool locked;
+        const void *idx = index_source(s, indices[i], bytes, &locked);
+        uint32_t l, h;
+        size_t b;
+        ok = idx && index_range(count[i], type, idx, &l, &h, &b);
+        if (ok && bytes) {
+            memcpy(all + at, idx, bytes);
+            at += bytes;
+            lo = l < lo ? l : lo;
+            hi = h > hi ? h : hi;
+        }
+        if (locked)
+            rgl_buffer_release();
+    }
+    if (ok) {
+        rgl_resolve_matrices();
+        if (lo == UINT32_MAX)
+            lo = hi = 0;
+        else
+            hi++;
+        if (record_arrays(lo, (int64_t)hi - lo))
+            rgl_record(RGL_OP_MultiDrawElements, "eBeBi", mode, (const void *)count,
+                       (size_t)drawcount * 4, type, (const void *)all, total, drawcount);
+    }
+    rgl_free(all);
+}
+
+RGL_EXPORT void rayglMultiDrawElements(GLenum mode, const GLsizei *count, GLenum type,
+                                       const void *const *indices, GLsizei drawcount)
+{
+    record_multi_elements(mode, count, type, indices, drawcount);
+    glMultiDrawElements(mode, count, type, indices, drawcount);
+}
+
 /* Keeps a pointer call's layout in the stream (GL changes nothing on error)
  * and records it. */
 static void array_pointer(int slot, uint32_t op, GLint size, GLenum type, GLsizei stride,
@@ -406,6 +574,7 @@ static void array_pointer(int slot, uint32_t op, GLint size, GLenum type, GLsize
     a->type = type;
     a->stride = stride;
     a->pointer = ptr;
+    a->buffer = s->array_buffer;
     switch (slot) {
     case RGL_CA_NORMAL: RECORD_NOW(s, op, "ei", type, stride); break;
     case RGL_CA_EDGEFLAG: RECORD_NOW(s, op, "i", stride); break;
@@ -514,15 +683,20 @@ RGL_EXPORT void rayglInterleavedArrays(GLenum format, GLsizei stride, const GLvo
         rgl_client_array_state *a = s->arrays;
         a[RGL_CA_EDGEFLAG].enabled = false;
         a[RGL_CA_TEXCOORD].enabled = f->et;
+        /* With an array buffer bound, pointer is an offset in it. */
+        uint32_t buf = s->array_buffer;
+        const uint8_t *q = p || buf ? p : NULL;
+#define AT(off) (q || buf ? (const void *)((uintptr_t)q + (off)) : NULL)
         if (f->et)
-            a[RGL_CA_TEXCOORD] = (rgl_client_array_state){true, f->st, GL_FLOAT, st, p};
+            a[RGL_CA_TEXCOORD] = (rgl_client_array_state){true, f->st, GL_FLOAT, st, AT(0), buf};
         a[RGL_CA_COLOR].enabled = f->ec;
         if (f->ec)
-            a[RGL_CA_COLOR] = (rgl_client_array_state){true, f->sc, f->tc, st, p ? p + f->pc : NULL};
+            a[RGL_CA_COLOR] = (rgl_client_array_state){true, f->sc, f->tc, st, AT(f->pc), buf};
         a[RGL_CA_NORMAL].enabled = f->en;
         if (f->en)
-            a[RGL_CA_NORMAL] = (rgl_client_array_state){true, 3, GL_FLOAT, st, p ? p + f->pn : NULL};
-        a[RGL_CA_VERTEX] = (rgl_client_array_state){true, f->sv, GL_FLOAT, st, p ? p + f->pv : NULL};
+            a[RGL_CA_NORMAL] = (rgl_client_array_state){true, 3, GL_FLOAT, st, AT(f->pn), buf};
+        a[RGL_CA_VERTEX] = (rgl_client_array_state){true, f->sv, GL_FLOAT, st, AT(f->pv), buf};
+#undef AT
         RECORD_NOW(s, RGL_OP_InterleavedArrays, "ei", format, stride);
     }
     glInterleavedArrays(format, stride, pointer);

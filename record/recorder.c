@@ -980,6 +980,7 @@ static size_t emit_size(const char *fmt, va_list ap)
         case 'f': (void)va_arg(ap, double); n += 4; break;
         case 'd': (void)va_arg(ap, double); n += 8; break;
         case 'o': (void)va_arg(ap, int); n += 1; break;
+        case 'q': (void)va_arg(ap, int64_t); n += RGL_VARINT64_MAX; break;
         case 'A': case 'N': case 'I': case 'U':
             (void)va_arg(ap, const void *);
             n += RGL_VARINT32_MAX + (size_t)va_arg(ap, int) * RGL_VARINT32_MAX;
@@ -1006,6 +1007,7 @@ static uint8_t *emit_put(uint8_t *p, uint32_t op, const char *fmt, va_list ap)
         case 'f': p = rgl_put_f(p, (float)va_arg(ap, double)); break;
         case 'd': p = rgl_put_d(p, va_arg(ap, double)); break;
         case 'o': p = rgl_put_bo(p, (uint8_t)va_arg(ap, int)); break;
+        case 'q': p = rgl_put_ip(p, va_arg(ap, int64_t)); break;
         case 'A': case 'N': {
             const float *v = va_arg(ap, const float *);
             int n = va_arg(ap, int);

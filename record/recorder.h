@@ -40,6 +40,8 @@ typedef struct rgl_client_array_state {
     uint32_t type;    /* GL type enum */
     int32_t stride;   /* as given (0 = tightly packed) */
     const void *pointer;
+    uint32_t buffer;  /* GL_ARRAY_BUFFER bound at the pointer call: pointer
+                         is then an offset into that buffer */
 } rgl_client_array_state;
 
 /* Buffer: a growable byte buffer that commands are encoded into. */
@@ -108,6 +110,7 @@ typedef struct rgl_stream {
     float matrix[2][16]; /* [0] modelview, [1] projection */
 
     rgl_client_array_state arrays[RGL_MAX_CLIENT_ARRAYS];
+    uint32_t array_buffer, element_buffer; /* buffer bindings (GL 1.5) */
     rgl_objects objs;
 
     /* Recorder bookkeeping (recorder.c): never touched on the hot path. */
@@ -209,7 +212,7 @@ void rgl_buf_finish(rgl_buf *b);
  *   e  uint32_t, a plain varint (wire types e, ui, bf, h)
  *   i  int32_t, zigzag varint (wire types i, sz)
  *   f  double, written as float        d  double
- *   o  int, one byte (bo)
+ *   o  int, one byte (bo)          q  int64_t, zigzag varint64 (ip)
  *   A  const float *, int n: n floats, no count (an A() argument)
  *   N  const float *, int n: varint n, then n floats (an N() argument)
  *   I  const GLint *, int n: varint n, then n zigzag varints
@@ -219,6 +222,12 @@ void rgl_buf_finish(rgl_buf *b);
  * Both return false when not recording or on failure (nothing written). */
 bool rgl_emit(rgl_buf *b, uint32_t op, const char *fmt, ...);
 bool rgl_record(uint32_t op, const char *fmt, ...);
+
+/* Buffer objects (entry_buffer.c): the recorder's copy of buffer `name`
+ * (NULL when there is none; *size its bytes). Takes the buffer table's
+ * lock: call rgl_buffer_release() when done with the data. */
+const uint8_t *rgl_buffer_acquire(uint32_t name, size_t *size);
+void rgl_buffer_release(void);
 
 /* Returns the texture record for `name` in s, creating it when create is set
  * (NULL when absent or on allocation failure). */

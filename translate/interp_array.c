@@ -309,3 +309,80 @@ void interp_edgeflagpointer(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cm
 void interp_interleavedarrays(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
 void interp_enableclientstate(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
 void interp_disableclientstate(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
+
+/* ---- Multi-draws (GL 1.4): a glDrawArrays / glDrawElements per entry ------------------- */
+
+static bool multi_counts(interp *ip, const rgl_arg *blob, int64_t drawcount)
+{
+    if (drawcount < 0) {
+        interp_bad_value(ip, "negative draw count");
+        return false;
+    }
+    if ((uint64_t)blob->count != (uint64_t)drawcount * 4) {
+        interp_bad_value(ip, "multi-draw arrays do not match the draw count");
+        return false;
+    }
+    return true;
+}
+
+void interp_multidrawarrays(interp *ip, const rgl_cmd *cmd)
+{
+    GLenum mode = arg_enum(cmd, 0);
+    const rgl_arg *first = &cmd->arg[1], *count = &cmd->arg[2];
+    int64_t n = cmd->arg[3].v.i;
+    if (check_mode(ip, mode) && multi_counts(ip, first, n) && multi_counts(ip, count, n)) {
+        for (int64_t i = 0; i < n; i++) {
+            int32_t f = (int32_t)le32(first->bytes + 4 * i), c = (int32_t)le32(count->bytes + 4 * i);
+            if (f < 0 || c < 0) {
+                interp_bad_value(ip, "glMultiDrawArrays with a negative first or count");
+                break;
+            }
+            draw(ip, mode, f, c, NULL, 0);
+        }
+    }
+    interp_arrays_forget(ip);
+}
+
+/* The indices of all the draws follow each other in one blob. */
+void interp_multidrawelements(interp *ip, const rgl_cmd *cmd)
+{
+    GLenum mode = arg_enum(cmd, 0), type = arg_enum(cmd, 2);
+    const rgl_arg *count = &cmd->arg[1], *indices = &cmd->arg[3];
+    int64_t n = cmd->arg[4].v.i;
+    size_t ts = index_bytes(type);
+    if (!ts)
+        interp_bad_enum(ip, "index type", type);
+    else if (check_mode(ip, mode) && multi_counts(ip, count, n)) {
+        uint64_t total = 0;
+        for (int64_t i = 0; i < n; i++)
+            total += le32(count->bytes + 4 * i) & 0x7fffffffu;
+        bool neg = false;
+        for (int64_t i = 0; i < n; i++)
+            neg |= (int32_t)le32(count->bytes + 4 * i) < 0;
+        if (neg || total * ts != indices->count) {
+            interp_bad_value(ip, "glMultiDrawElements indices do not match the counts");
+        } else {
+            const uint8_t *p = indices->bytes;
+            for (int64_t i = 0; i < n; i++) {
+                uint32_t c = le32(count->bytes + 4 * i);
+                draw(ip, mode, 0, c, p, ts);
+                p += (size_t)c * ts;
+            }
+        }
+    }
+    interp_arrays_forget(ip);
+}
+
+/* ---- Buffer objects ----------------------------------------------------------------------- */
+
+/* The recorder copies every buffer's contents into the trace (glBufferData,
+ * glBufferSubData, glUnmapBuffer) and also resolves each draw's elements
+ * from them (the file comment): the draws need nothing from these calls,
+ * which are kept for dumps and tools. */
+void interp_genbuffers(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
+void interp_deletebuffers(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
+void interp_bindbuffer(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
+void interp_bufferdata(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
+void interp_buffersubdata(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
+void interp_mapbuffer(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
+void interp_unmapbuffer(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }

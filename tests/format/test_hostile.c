@@ -83,7 +83,7 @@ static void hostile_commands(void)
     expect_error(n + 100, RGL_E_TRUNCATED, len_at, 2, RGL_OP_FrameBegin, "string past end");
 
     /* Opcodes: 0, past the table, at and past the limit, malformed varints. */
-    static const uint64_t bad_ops[] = {0, 0xfd, 0x3fff, RGL_OPCODE_LIMIT, UINT32_MAX};
+    static const uint64_t bad_ops[] = {0, 0x1ff, 0x3fff, RGL_OPCODE_LIMIT, UINT32_MAX};
     for (size_t i = 0; i < sizeof bad_ops / sizeof bad_ops[0]; i++) {
         n = lead + put_var(buf + lead, bad_ops[i]);
         memset(buf + n, 0, 8);

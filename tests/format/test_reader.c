@@ -209,7 +209,7 @@ static void test_file_header(void)
     uint64_t off;
     rgl_file_header_encode(h, 0);
     CHECK(memcmp(h, "\x89RGL\r\n\x1a\n", 8) == 0 && rgl_get_u16(h + 8) == 1 &&
-          rgl_get_u16(h + 10) == 0 && rgl_get_u32(h + 12) == 0 &&
+          rgl_get_u16(h + 10) == RGL_FORMAT_MINOR && rgl_get_u32(h + 12) == 0 &&
           rgl_get_u32(h + 16) == 0x0A0B0C0Du && rgl_get_u32(h + 20) == 0xC0C00000u &&
           rgl_get_u32(h + 24) == 32);
     CHECK(open_status(h, 32, NULL) == RGL_OK); /* a header alone: an empty trace */

@@ -3,7 +3,9 @@
  * instead of the real libraries, so the tests need no GPU and no display. */
 #include <string.h>
 
+#define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
+#include <GL/glext.h>
 #include <GL/glu.h>
 #include <GL/freeglut.h>
 
@@ -282,3 +284,58 @@ void glGetTexImage(GLenum t, GLint level, GLenum format, GLenum type, GLvoid *pi
 {
     (void)t, (void)level, (void)format, (void)type, (void)pixels;
 }
+
+/* ---- Multi-draws and buffer objects ------------------------------------------------- */
+
+void glMultiDrawArrays(GLenum mode, const GLint *first, const GLsizei *count, GLsizei drawcount)
+{
+    LOGV("glMultiDrawArrays", mode, drawcount);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], first);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], count);
+}
+void glMultiDrawElements(GLenum mode, const GLsizei *count, GLenum type,
+                         const void *const *indices, GLsizei drawcount)
+{
+    LOGV("glMultiDrawElements", mode, type, drawcount);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], count);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], indices);
+}
+
+/* A mapping: unlike GL without a context, the stub maps its own scratch
+ * memory, so that a test can write through it. */
+unsigned char stub_mapped[4096];
+
+#define STUB_BUFFERS(sfx)                                                                 \
+    void glGenBuffers##sfx(GLsizei n, GLuint *b)                                          \
+    {                                                                                     \
+        LOGV("glGenBuffers" #sfx, n);                                                     \
+        arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], b);                             \
+    }                                                                                     \
+    void glDeleteBuffers##sfx(GLsizei n, const GLuint *b)                                 \
+    {                                                                                     \
+        LOGV("glDeleteBuffers" #sfx, n);                                                  \
+        arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], b);                             \
+    }                                                                                     \
+    void glBindBuffer##sfx(GLenum t, GLuint b) { LOGV("glBindBuffer" #sfx, t, b); }       \
+    void glBufferData##sfx(GLenum t, GLsizeiptr n, const void *d, GLenum u)               \
+    {                                                                                     \
+        LOGV("glBufferData" #sfx, t, (double)n, u);                                       \
+        arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], d);                             \
+    }                                                                                     \
+    void glBufferSubData##sfx(GLenum t, GLintptr o, GLsizeiptr n, const void *d)          \
+    {                                                                                     \
+        LOGV("glBufferSubData" #sfx, t, (double)o, (double)n);                            \
+        arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], d);                             \
+    }                                                                                     \
+    void *glMapBuffer##sfx(GLenum t, GLenum a)                                            \
+    {                                                                                     \
+        LOGV("glMapBuffer" #sfx, t, a);                                                   \
+        return stub_mapped;                                                               \
+    }                                                                                     \
+    GLboolean glUnmapBuffer##sfx(GLenum t)                                                \
+    {                                                                                     \
+        LOGV("glUnmapBuffer" #sfx, t);                                                    \
+        return GL_TRUE;                                                                   \
+    }
+STUB_BUFFERS()
+STUB_BUFFERS(ARB)

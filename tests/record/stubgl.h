@@ -29,4 +29,7 @@ extern int stub_glut_ready;  /* what glutGet(GLUT_INIT_STATE) returns */
 
 void stub_reset(void);
 
+/* What the stub's glMapBuffer returns. */
+extern unsigned char stub_mapped[4096];
+
 #endif

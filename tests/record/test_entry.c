@@ -18,6 +18,7 @@
 #include "stubgl.h"
 
 void test_custom(const char *dir);
+void test_buffers(const char *dir);
 void test_alloc_failures(const char *dir);
 void test_too_large(const char *dir);
 
@@ -263,6 +264,7 @@ int main(void)
     unlink(path);
 
     test_custom(dir);
+    test_buffers(dir);
     test_alloc_failures(dir);
     test_too_large(dir);
     if (!check_failures)
