@@ -67,6 +67,7 @@ void translator_destroy(translator *t)
 }
 
 const scene *translator_scene(const translator *t) { return &t->scene; }
+scene *translator_scene_edit(translator *t) { return &t->scene; }
 
 static rgl_status get_frame(translator *t, size_t i, rgl_frame_info *fi, rgl_error *err)
 {

@@ -46,6 +46,9 @@ rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result
 /* The scene the last translator_build made. */
 const scene *translator_scene(const translator *t);
 
+/* The same, for changes before it is written (raygl2pov's overrides). */
+scene *translator_scene_edit(translator *t);
+
 /* Writes that scene as SDL into ob. Returns 0 or -1 (memory, or the sink). */
 int translator_write_pov(translator *t, outbuf *ob, const pov_frame_info *info);
 

@@ -217,6 +217,12 @@ void interp_lookat(interp *ip, const rgl_cmd *cmd)
         v[i] = arg_num(&cmd->arg[i]);
     mat4 m = mat4_lookat(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]);
     mult(ip, &m);
+    /* What follows is drawn in the world gluLookAt looked at: kept for the
+     * camera and light overrides (look.c). */
+    if (ip->scene && !ip->scene->have_view && ip->st.a.transform.matrix_mode == GL_MODELVIEW) {
+        ip->scene->have_view = true;
+        ip->scene->view = *current(ip);
+    }
 }
 
 void interp_viewport(interp *ip, const rgl_cmd *cmd)

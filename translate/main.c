@@ -30,6 +30,8 @@
 #include "diag.h"
 #include "format.h"
 #include "frame.h"
+#include "look.h"
+#include "naming.h"
 #include "outbuf.h"
 #include "options.h"
 #include "povwrite.h"
@@ -42,7 +44,6 @@
 #define PROG "raygl2pov"
 #define EXIT_INPUT 1
 #define EXIT_USAGE 2
-#define NAME_MAX_STEM 100
 
 /* ---- Options (options.def) ----------------------------------------------------------------- */
 
@@ -132,31 +133,6 @@ static void say_decode_error(const options *o, const char *where, const rgl_erro
 }
 
 /* ---- Names and files -------------------------------------------------------------- */
-
-/* A file stem for rayglFrameBegin's name: its last path component, without
- * ".pov", reduced to [A-Za-z0-9._-] and never starting with a dot, so it
- * always names a plain file inside the output folder. Empty when nothing
- * usable is left. */
-static void sanitize_stem(const char *name, char *out, size_t cap)
-{
-    const char *base = name;
-    for (const char *p = name; *p; p++)
-        if (*p == '/' || *p == '\\')
-            base = p + 1;
-    size_t n = strlen(base);
-    if (n >= 4 && strcmp(base + n - 4, ".pov") == 0)
-        n -= 4;
-    size_t k = 0;
-    for (size_t i = 0; i < n && k + 1 < cap && k < NAME_MAX_STEM; i++) {
-        char c = base[i];
-        bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-                  c == '_' || c == '-' || c == '.';
-        out[k++] = ok ? c : '_';
-    }
-    out[k] = '\0';
-    if (out[0] == '.')
-        out[0] = '_';
-}
 
 static char *join_path(const char *dir, const char *file)
 {
@@ -296,6 +272,7 @@ typedef struct slot {
     char *frame_name;   /* rayglFrameBegin's, or NULL */
     int width, height;
     int write_errno;    /* writing the temporary .pov failed */
+    const char *look_note; /* look_apply's, static */
 } slot;
 
 typedef struct job {
@@ -308,6 +285,7 @@ typedef struct job {
     atomic_int abort;
     pthread_mutex_t done_lock;
     pthread_cond_t done_cond;
+    char **includes; /* --include files' names in the output folder */
 } job;
 
 static void finish_slot(job *j, slot *s)
@@ -333,13 +311,9 @@ static void write_temp(job *j, translator *t, size_t k, slot *s, outbuf *ob)
         return;
     }
     char fname[NAME_MAX_STEM + 32];
-    if (s->frame_name) {
-        char stem[NAME_MAX_STEM + 1];
-        sanitize_stem(s->frame_name, stem, sizeof stem);
-        snprintf(fname, sizeof fname, "%s.pov", stem[0] ? stem : "frame");
-    } else {
-        snprintf(fname, sizeof fname, "frame-%05zu.pov", s->frame);
-    }
+    name_vars nv = {s->frame, s->info.stream, s->info.number, s->frame_name, j->o->trace};
+    name_stem(j->o->name_pattern, &nv, fname, NAME_MAX_STEM + 1);
+    strcat(fname, ".pov");
     pov_frame_info info = {fname, j->o->trace, s->frame, s->info.stream, s->info.number,
                            s->frame_name, &j->o->pov};
     ob->len = 0;
@@ -347,6 +321,9 @@ static void write_temp(job *j, translator *t, size_t k, slot *s, outbuf *ob)
     ob->user = &fd;
     errno = 0;
     int rc = translator_write_pov(t, ob, &info);
+    if (rc == 0)
+        rc = look_write_scene(ob, &j->o->look, translator_scene(t),
+                              (const char *const *)j->includes, j->o->look.nincludes);
     if (rc == 0)
         rc = outbuf_flush(ob);
     int e = errno ? errno : ENOMEM;
@@ -392,7 +369,9 @@ static void *worker(void *arg)
             if (s->frame_name)
                 strcpy(s->frame_name, res.frame_name);
         }
-        const scene *sc = translator_scene(t);
+        scene *sc = translator_scene_edit(t);
+        if (s->status == RGL_OK)
+            s->look_note = look_apply(&j->o->look, sc);
         s->width = sc->camera.width;
         s->height = sc->camera.height;
         if (s->status == RGL_OK && j->o->outdir)
@@ -457,13 +436,8 @@ static void publish(const options *o, totals *tot, names *used, size_t k, slot *
 {
     /* Stems are at most NAME_MAX_STEM bytes, suffixes at most 32. */
     char stem[NAME_MAX_STEM + 64];
-    if (s->frame_name) {
-        sanitize_stem(s->frame_name, stem, NAME_MAX_STEM + 1);
-        if (!stem[0])
-            snprintf(stem, sizeof stem, "frame-%05zu", s->frame);
-    } else {
-        snprintf(stem, sizeof stem, "frame-%05zu", s->frame);
-    }
+    name_vars nv = {s->frame, s->info.stream, s->info.number, s->frame_name, o->trace};
+    name_stem(o->name_pattern, &nv, stem, NAME_MAX_STEM + 1);
     if (name_used(used, stem)) {
         char base[NAME_MAX_STEM + 1];
         size_t bl = strnlen(stem, NAME_MAX_STEM);
@@ -506,6 +480,8 @@ static void publish(const options *o, totals *tot, names *used, size_t k, slot *
     errno = 0;
     if (rc == 0)
         rc = pov_write_ini(&ob, &dims, o->outdir, pov, png);
+    if (rc == 0)
+        rc = look_write_ini(&ob, &o->look);
     if (rc == 0)
         rc = outbuf_flush(&ob);
     int e = errno ? errno : EIO;
@@ -673,6 +649,22 @@ int main(int argc, char **argv)
     memset(&j, 0, sizeof j);
     j.o = &o;
     j.reader = reader;
+    for (size_t r = 0; r < o.nranges; r++) {
+        uint64_t bad = o.ranges[r].first >= nframes ? o.ranges[r].first
+                       : o.ranges[r].last != UINT64_MAX && o.ranges[r].last >= nframes
+                           ? o.ranges[r].last
+                           : UINT64_MAX;
+        if (bad != UINT64_MAX) {
+            if (nframes)
+                say(&o, "--frames: frame %" PRIu64 " is outside the trace (frames 0-%zu)", bad,
+                    nframes - 1);
+            else
+                say(&o, "--frames: frame %" PRIu64 " is outside the trace (no frames)", bad);
+            rgl_reader_destroy(reader);
+            opt_free(&o);
+            return EXIT_INPUT;
+        }
+    }
     for (size_t i = 0; i < nframes; i++)
         if (opt_frame_selected(&o, i))
             j.nslots++;
@@ -688,6 +680,13 @@ int main(int argc, char **argv)
     if (make_dirs(o.outdir) != 0) {
         fprintf(stderr, PROG ": %s: cannot create the output folder: %s\n", o.outdir,
                 strerror(errno));
+        rgl_reader_destroy(reader);
+        opt_free(&o);
+        return EXIT_INPUT;
+    }
+    char msg[600];
+    if (look_copy_includes(&o.look, o.outdir, &j.includes, msg, sizeof msg) != 0) {
+        fprintf(stderr, PROG ": %s\n", msg);
         rgl_reader_destroy(reader);
         opt_free(&o);
         return EXIT_INPUT;
@@ -719,6 +718,8 @@ int main(int argc, char **argv)
     names used;
     memset(&used, 0, sizeof used);
     bool fatal = false;
+    const char *notes[4];
+    int nnotes = 0;
     for (size_t k = 0; k < j.nslots; k++) {
         slot *s = &j.slots[k];
         pthread_mutex_lock(&j.done_lock);
@@ -728,6 +729,15 @@ int main(int argc, char **argv)
 
         if (s->log)
             print_diags(&o, &tot, s->log);
+        if (s->look_note && !o.quiet) {
+            bool seen = false;
+            for (int n = 0; n < nnotes; n++)
+                seen = seen || notes[n] == s->look_note;
+            if (!seen && nnotes < 4) {
+                notes[nnotes++] = s->look_note;
+                say(&o, "frame %zu: %s", s->frame, s->look_note);
+            }
+        }
         if (fatal) {
             /* Already stopped: drop what the workers still made. */
         } else if (s->status != RGL_OK) {
@@ -773,6 +783,7 @@ int main(int argc, char **argv)
         tr_free(used.v[i]);
     tr_free(used.v);
     tr_free(j.slots);
+    look_free_names(j.includes, o.look.nincludes);
     opt_free(&o);
     pthread_cond_destroy(&j.done_cond);
     pthread_mutex_destroy(&j.done_lock);

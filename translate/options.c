@@ -38,6 +38,7 @@ void opt_free(options *o)
         o->owned = n;
     }
     tr_free(o->ranges);
+    look_free(&o->look);
     memset(o, 0, sizeof *o);
 }
 

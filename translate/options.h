@@ -15,6 +15,7 @@
 #include <stdio.h>
 
 #include "povwrite.h"
+#include "look.h"
 
 #define OPT_MAX_JOBS 256
 
@@ -34,6 +35,8 @@ typedef struct options {
     int jobs; /* 0 until opt_finish_parse: one per core */
     bool dump, quiet, help, version;
     pov_options pov; /* shadows, reflection, area lights (options_light.c) */
+    const char *name_pattern; /* NULL: frame-NNNNN, or rayglFrameBegin's name */
+    look_settings look;       /* look.h */
 
     /* Private: strings the options own, and the settings-file nesting. */
     struct opt_string *owned;

@@ -51,6 +51,7 @@ void scene_reset(scene *s)
     s->lights_fixed = false;
     memset(&s->fog, 0, sizeof s->fog);
     s->have_camera = false;
+    s->have_view = false;
     s->failed = false;
     memset(s->background, 0, sizeof s->background);
     int vp[4] = {0, 0, 640, 480};

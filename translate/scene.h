@@ -255,6 +255,11 @@ typedef struct scene {
     scene_material *materials; /* lit runs refer to these by index */
     size_t nmaterials, cap_materials;
     bool lights_fixed; /* lights hold the GL lights of the first lit draw */
+    /* World -> eye: the modelview just after the frame's first gluLookAt
+     * (raygl2pov's --camera-* and --light overrides are given in world
+     * coordinates when there is one; look.c). */
+    bool have_view;
+    mat4 view;
 
     bool failed; /* an allocation or limit failed; the scene is incomplete */
 } scene;
