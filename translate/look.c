@@ -544,6 +544,22 @@ int look_write_scene(outbuf *ob, const look_settings *l, const scene *s,
         for (size_t i = 0; i < l->nlights; i++)
             write_light(ob, &l->lights[i], world, &view);
     }
+    if (ninclude) {
+        /* World -> eye for the user's SDL: the scene is in eye coordinates. */
+        mat4 view, inv;
+        bool world = override_view(l, s, &view, &inv);
+        outbuf_puts(ob, "// --include: RayGL_World takes world coordinates (after the frame's\n"
+                        "// gluLookAt) to the scene's eye coordinates; identity without one.\n"
+                        "#declare RayGL_World = transform{matrix<");
+        for (int c = 0; c < 4; c++)
+            for (int r = 0; r < 3; r++) {
+                double m = world ? view.m[c * 4 + r] : (c == r ? 1 : 0);
+                outbuf_f32(ob, isfinite(m) ? (float)m : 0.0f);
+                if (c * 3 + r < 11)
+                    outbuf_putc(ob, ',');
+            }
+        outbuf_puts(ob, ">}\n");
+    }
     for (size_t i = 0; i < ninclude; i++) {
         /* Names are [A-Za-z0-9._-] (look_copy_includes): nothing to escape. */
         outbuf_puts(ob, "#include \"");
@@ -574,8 +590,30 @@ void look_free_names(char **names, size_t n)
     tr_free(names);
 }
 
+/* Whether files a and b hold the same bytes. */
+static bool same_file(const char *a, const char *b)
+{
+    FILE *fa = fopen(a, "rb"), *fb = fa ? fopen(b, "rb") : NULL;
+    bool same = fa && fb;
+    char ba[16384], bb[16384];
+    while (same) {
+        size_t na = fread(ba, 1, sizeof ba, fa), nb = fread(bb, 1, sizeof bb, fb);
+        same = na == nb && memcmp(ba, bb, na) == 0 && !ferror(fa) && !ferror(fb);
+        if (na == 0)
+            break;
+    }
+    if (fa)
+        fclose(fa);
+    if (fb)
+        fclose(fb);
+    return same;
+}
+
+/* An unchanged copy keeps its time: rendered frames stay up to date. */
 static int copy_file(const char *from, const char *to, char *msg, size_t cap)
 {
+    if (same_file(from, to))
+        return 0;
     char tmp[4200];
     snprintf(tmp, sizeof tmp, "%s.%ld.tmp", to, (long)getpid());
     int in = open(from, O_RDONLY | O_CLOEXEC);

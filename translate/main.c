@@ -35,6 +35,7 @@
 #include "outbuf.h"
 #include "options.h"
 #include "povwrite.h"
+#include "render.h"
 #include "talloc.h"
 
 #ifndef RAYGL_VERSION
@@ -61,7 +62,7 @@ static void print_help(void)
           "so on (a frame started by rayglFrameBegin(\"name.pov\", ...) is written as\n"
           "DIR/name.pov). Render a frame with:  povray DIR/frame-00000.ini\n",
           stdout);
-    opt_print_help(stdout);
+    opt_print_help(stdout, false);
     fputs("\n"
           "Exit status: 0 on success, 1 when the trace is damaged (every intact frame\n"
           "is still written) or the output cannot be written, 2 on bad usage.\n",
@@ -85,6 +86,12 @@ static void parse_args(int argc, char **argv, options *o)
     }
     if (!opt_finish_parse(o, &err))
         usage_error(err.msg);
+    if (render_wanted(&o->render) && !o->outdir)
+        usage_error("rendering needs an output folder (-o DIR)");
+    if (o->render.video && !o->render.render && !o->render.sshloginfile)
+        o->render.render = true; /* a video needs the PNGs */
+    if (render_wanted(&o->render) && render_check_tools(&o->render, PROG) != 0)
+        exit(EXIT_INPUT);
     if (o->outdir && !pov_ini_path_ok(o->outdir)) {
         snprintf(err.msg, sizeof err.msg,
                  "output folder '%.200s': a double quote or control character cannot be "
@@ -273,6 +280,7 @@ typedef struct slot {
     int width, height;
     int write_errno;    /* writing the temporary .pov failed */
     const char *look_note; /* look_apply's, static */
+    char *published;       /* "DIR/NAME" once written */
 } slot;
 
 typedef struct job {
@@ -431,6 +439,35 @@ static void print_diags(const options *o, totals *tot, const diag_log *log)
     }
 }
 
+/* Whether files a and b hold the same bytes. */
+static bool same_file(const char *a, const char *b)
+{
+    FILE *fa = fopen(a, "rb"), *fb = fa ? fopen(b, "rb") : NULL;
+    bool same = fa && fb;
+    char ba[65536], bb[65536];
+    while (same) {
+        size_t na = fread(ba, 1, sizeof ba, fa), nb = fread(bb, 1, sizeof bb, fb);
+        same = na == nb && memcmp(ba, bb, na) == 0 && !ferror(fa) && !ferror(fb);
+        if (na == 0)
+            break;
+    }
+    if (fa)
+        fclose(fa);
+    if (fb)
+        fclose(fb);
+    return same;
+}
+
+/* Renames tmp to fin, unless fin already holds the same bytes: then fin
+ * keeps its time, so a PNG rendered from it still counts as up to date
+ * (re-running with --render renders only what changed). */
+static int place(const char *tmp, const char *fin)
+{
+    if (same_file(tmp, fin))
+        return unlink(tmp);
+    return rename(tmp, fin);
+}
+
 /* Writes the .ini of slot k and renames both files into place. */
 static void publish(const options *o, totals *tot, names *used, size_t k, slot *s)
 {
@@ -490,7 +527,7 @@ static void publish(const options *o, totals *tot, names *used, size_t k, slot *
         rc = -1;
         e = errno;
     }
-    if (rc != 0 || rename(tmp_pov, fin_pov) != 0 || rename(tmp_ini, fin_ini) != 0) {
+    if (rc != 0 || place(tmp_pov, fin_pov) != 0 || place(tmp_ini, fin_ini) != 0) {
         if (rc == 0)
             e = errno;
         say(o, "%s: cannot write: %s", fin_pov, strerror(e));
@@ -500,6 +537,7 @@ static void publish(const options *o, totals *tot, names *used, size_t k, slot *
         goto done;
     }
     tot->written++;
+    s->published = join_path(o->outdir, stem);
 done:
     tr_free(tmp_pov);
     tr_free(tmp_ini);
@@ -778,6 +816,27 @@ int main(int argc, char **argv)
         pthread_join(threads[t], NULL);
     clear_progress();
     print_summary(&o, &tot);
+
+    if (render_wanted(&o.render) && !fatal) {
+        /* The frames written, in frame order; a failed translation still
+         * leaves the others to render (and the exit status says so). */
+        char **stems = tr_realloc(NULL, (j.nslots ? j.nslots : 1) * sizeof *stems);
+        size_t n = 0;
+        for (size_t k = 0; stems && k < j.nslots; k++)
+            if (j.slots[k].published)
+                stems[n++] = j.slots[k].published;
+        if (!stems) {
+            say(&o, "out of memory");
+            tot.status = EXIT_INPUT;
+        } else {
+            render_job rj = {&o.render, PROG, o.outdir, stems, n, o.jobs, o.quiet};
+            if (render_run(&rj) != 0)
+                tot.status = EXIT_INPUT;
+        }
+        tr_free(stems);
+    }
+    for (size_t k = 0; k < j.nslots; k++)
+        tr_free(j.slots[k].published);
 
     for (size_t i = 0; i < used.n; i++)
         tr_free(used.v[i]);

@@ -28,6 +28,13 @@ typedef struct opt_string {
 void opt_init(options *o)
 {
     memset(o, 0, sizeof *o);
+    o->render.task = -1;
+}
+
+bool opt_applies(const opt_def *d, bool render_tool)
+{
+    return render_tool ? (d->scope & (OPT_RENDER | OPT_RENDER_ONLY)) != 0
+                       : (d->scope & OPT_RENDER_ONLY) == 0;
 }
 
 void opt_free(options *o)
@@ -268,7 +275,7 @@ bool opt_parse_args(options *o, int argc, char **argv, opt_err *err)
             const char *eq = strchr(a + 2, '=');
             size_t len = eq ? (size_t)(eq - (a + 2)) : strlen(a + 2);
             d = find_long(a + 2, len);
-            if (!d)
+            if (!d || !opt_applies(d, o->render_tool))
                 return opt_fail(err, "unknown option '%.*s'", (int)(len + 2), a);
             if (eq) {
                 if (d->arg == OPT_FLAG)
@@ -278,7 +285,7 @@ bool opt_parse_args(options *o, int argc, char **argv, opt_err *err)
             snprintf(shown, sizeof shown, "--%s", d->name);
         } else {
             d = find_short(a[1]);
-            if (!d || (a[2] && d->arg == OPT_FLAG))
+            if (!d || !opt_applies(d, o->render_tool) || (a[2] && d->arg == OPT_FLAG))
                 return opt_fail(err, "unknown option '%s'", a);
             if (a[2])
                 value = a + 2;
@@ -342,9 +349,9 @@ static bool settings_line(options *o, char *line, const opt_ctx *where, opt_err 
         value++;
     }
     const opt_def *d = find_long(name, len);
-    if (!d)
+    if (!d || (d->scope & OPT_RENDER_ONLY))
         return opt_fail(err, "unknown option '%.*s'", (int)len, name);
-    if (d->scope == OPT_CLI_ONLY)
+    if (d->scope & OPT_CLI_ONLY)
         return opt_fail(err, "'%s' is a command-line option", d->name);
     bool has_value = *s != '\0';
     if (d->arg == OPT_VALUE && !has_value)
@@ -395,9 +402,12 @@ bool opt_parse_file(options *o, const char *path, opt_err *err)
 
 bool opt_finish_parse(options *o, opt_err *err)
 {
-    if (!o->trace)
+    if (o->render_tool) {
+        if (!o->trace)
+            return opt_fail(err, "no folder given");
+    } else if (!o->trace) {
         return opt_fail(err, "no trace given");
-    if (!o->outdir && !o->dump)
+    } else if (!o->outdir && !o->dump)
         return opt_fail(err, "no output folder given (-o DIR)");
     if (o->jobs == 0) {
         long n = sysconf(_SC_NPROCESSORS_ONLN);
@@ -410,7 +420,7 @@ bool opt_finish_parse(options *o, opt_err *err)
 
 #define HELP_COLUMN 23
 
-void opt_print_help(FILE *f)
+void opt_print_help(FILE *f, bool render_tool)
 {
     const char *groups[] = {
 #define OPT(id, name, sh, arg, meta, scope, help)
@@ -425,9 +435,19 @@ void opt_print_help(FILE *f)
 #include "options.def"
     size_t g = 0;
     for (size_t i = 0; i < opt_table_count; i++) {
-        while (g < ng && starts[g] == i)
-            fprintf(f, "\n%s\n", groups[g++]);
+        while (g < ng && starts[g] == i) {
+            /* A heading only when its group has a row for this program. */
+            size_t end = g + 1 < ng ? starts[g + 1] : opt_table_count;
+            bool any = false;
+            for (size_t k = i; k < end; k++)
+                any = any || opt_applies(&opt_table[k], render_tool);
+            if (any)
+                fprintf(f, "\n%s\n", groups[g]);
+            g++;
+        }
         const opt_def *d = &opt_table[i];
+        if (!opt_applies(d, render_tool))
+            continue;
         char head[96];
         int n;
         if (d->short_name)

@@ -16,11 +16,17 @@
 
 #include "povwrite.h"
 #include "look.h"
+#include "render.h"
 
 #define OPT_MAX_JOBS 256
 
 typedef enum opt_arg { OPT_FLAG, OPT_VALUE } opt_arg;
-typedef enum opt_scope { OPT_ANYWHERE, OPT_CLI_ONLY } opt_scope;
+enum {
+    OPT_ANYWHERE = 0,
+    OPT_CLI_ONLY = 1,    /* not in a settings file */
+    OPT_RENDER = 2,      /* raygl-render takes it too */
+    OPT_RENDER_ONLY = 4, /* only raygl-render takes it */
+};
 
 /* Frames first..last (inclusive; last = UINT64_MAX for "A-"), every step-th. */
 typedef struct frame_range {
@@ -37,6 +43,9 @@ typedef struct options {
     pov_options pov; /* shadows, reflection, area lights (options_light.c) */
     const char *name_pattern; /* NULL: frame-NNNNN, or rayglFrameBegin's name */
     look_settings look;       /* look.h */
+    render_settings render;   /* render.h */
+    bool render_tool;         /* parsing for raygl-render (set before parsing):
+                                 trace is then its folder */
 
     /* Private: strings the options own, and the settings-file nesting. */
     struct opt_string *owned;
@@ -63,7 +72,7 @@ typedef struct opt_def {
     char short_name;   /* 0 for none */
     opt_arg arg;
     const char *metavar;
-    opt_scope scope;
+    unsigned scope;
     const char *help;
     opt_setter set;
 } opt_def;
@@ -95,8 +104,12 @@ bool opt_finish_parse(options *o, opt_err *err);
 /* Whether frame i (file order) is selected by --frames. */
 bool opt_frame_selected(const options *o, uint64_t i);
 
-/* The option list for --help, from the table. */
-void opt_print_help(FILE *f);
+/* The option list for --help, from the table (raygl-render's when
+ * render_tool). */
+void opt_print_help(FILE *f, bool render_tool);
+
+/* Whether the row is an option of raygl2pov (or, render_tool, raygl-render). */
+bool opt_applies(const opt_def *d, bool render_tool);
 
 /* Helpers for setters. opt_fail writes the message and returns false. A copy the options own (NULL when memory ran out,
  * with err set), a path resolved against a settings file's folder, a

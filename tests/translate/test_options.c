@@ -100,7 +100,8 @@ int main(int argc, char **argv)
     /* Every option in the man page and in --help. */
     FILE *h = tmpfile();
     CHECK(h != NULL);
-    opt_print_help(h);
+    opt_print_help(h, false);
+    opt_print_help(h, true);
     long hn = ftell(h);
     rewind(h);
     char *help = calloc(1, (size_t)hn + 1);

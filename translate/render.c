@@ -1,0 +1,996 @@
+/* render.c: POV-Ray over the frames, here, on Slurm or over SSH (render.h). */
+#include "render.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <signal.h>
+#include <spawn.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <dirent.h>
+#include <unistd.h>
+
+#include "options.h"
+#include "talloc.h"
+
+extern char **environ;
+
+#define RENDER_MAX_JOBS 256
+#define RENDER_PATH_MAX 4096
+
+/* ---- Small helpers ------------------------------------------------------------------- */
+
+#if defined(__GNUC__)
+__attribute__((format(printf, 2, 3)))
+#endif
+static char *xprintf(char *unused, const char *fmt, ...)
+{
+    (void)unused;
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(NULL, 0, fmt, ap);
+    va_end(ap);
+    if (n < 0)
+        return NULL;
+    char *s = tr_realloc(NULL, (size_t)n + 1);
+    if (!s)
+        return NULL;
+    va_start(ap, fmt);
+    vsnprintf(s, (size_t)n + 1, fmt, ap);
+    va_end(ap);
+    return s;
+}
+#define aprintf(...) xprintf(NULL, __VA_ARGS__)
+
+static bool progress_shown;
+
+#if defined(__GNUC__)
+__attribute__((format(printf, 2, 3)))
+#endif
+static void say(const char *prog, const char *fmt, ...)
+{
+    if (progress_shown) {
+        fputs("\r\033[K", stderr);
+        progress_shown = false;
+    }
+    va_list ap;
+    fprintf(stderr, "%s: ", prog);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+}
+
+/* name found in PATH (or name itself when it holds a '/'), or NULL. */
+static char *find_program(const char *name)
+{
+    if (strchr(name, '/'))
+        return access(name, X_OK) == 0 ? aprintf("%s", name) : NULL;
+    const char *path = getenv("PATH");
+    if (!path)
+        path = "/usr/bin:/bin";
+    while (*path) {
+        size_t n = strcspn(path, ":");
+        char *cand = aprintf("%.*s/%s", (int)n, n ? path : ".", name);
+        if (cand && access(cand, X_OK) == 0) {
+            struct stat st;
+            if (stat(cand, &st) == 0 && S_ISREG(st.st_mode))
+                return cand;
+        }
+        tr_free(cand);
+        path += n + (path[n] == ':');
+    }
+    return NULL;
+}
+
+/* 'text' for sh, with ' as '\''. */
+static char *sh_quote(const char *s)
+{
+    size_t n = 2;
+    for (const char *p = s; *p; p++)
+        n += *p == '\'' ? 4 : 1;
+    char *q = tr_realloc(NULL, n + 1), *o = q;
+    if (!q)
+        return NULL;
+    *o++ = '\'';
+    for (const char *p = s; *p; p++) {
+        if (*p == '\'') {
+            memcpy(o, "'\\''", 4);
+            o += 4;
+        } else {
+            *o++ = *p;
+        }
+    }
+    *o++ = '\'';
+    *o = '\0';
+    return q;
+}
+
+/* The folder part of stem "DIR/NAME" and its NAME. */
+static char *partial_png(const char *stem)
+{
+    const char *slash = strrchr(stem, '/');
+    if (!slash)
+        return aprintf(".%s.partial.png", stem);
+    return aprintf("%.*s/.%s.partial.png", (int)(slash - stem), stem, slash + 1);
+}
+
+static char *partial_log(const char *stem)
+{
+    const char *slash = strrchr(stem, '/');
+    if (!slash)
+        return aprintf(".%s.partial.log", stem);
+    return aprintf("%.*s/.%s.partial.log", (int)(slash - stem), stem, slash + 1);
+}
+
+static bool newer(const struct stat *a, const struct stat *b)
+{
+    return a->st_mtim.tv_sec > b->st_mtim.tv_sec ||
+           (a->st_mtim.tv_sec == b->st_mtim.tv_sec && a->st_mtim.tv_nsec > b->st_mtim.tv_nsec);
+}
+
+/* The newest time of the copied --include files of a folder (look.c names
+ * them include-*): a changed include makes every frame out of date. */
+static struct stat include_time;
+
+static void scan_includes(const char *dir)
+{
+    memset(&include_time, 0, sizeof include_time);
+    DIR *d = opendir(dir);
+    if (!d)
+        return;
+    struct dirent *e;
+    while ((e = readdir(d))) {
+        if (strncmp(e->d_name, "include-", 8) != 0)
+            continue;
+        char *p = aprintf("%s/%s", dir, e->d_name);
+        struct stat st;
+        if (p && stat(p, &st) == 0 && newer(&st, &include_time))
+            include_time = st;
+        tr_free(p);
+    }
+    closedir(d);
+}
+
+/* STEM.png exists and is newer than STEM.pov, STEM.ini and the includes. */
+static bool up_to_date(const char *stem)
+{
+    char *png = aprintf("%s.png", stem), *pov = aprintf("%s.pov", stem),
+         *ini = aprintf("%s.ini", stem);
+    struct stat sp, sv, si;
+    bool ok = png && pov && ini && stat(png, &sp) == 0 && sp.st_size > 0 && stat(pov, &sv) == 0 &&
+              stat(ini, &si) == 0 && newer(&sp, &sv) && newer(&sp, &si) &&
+              !newer(&include_time, &sp);
+    tr_free(png);
+    tr_free(pov);
+    tr_free(ini);
+    return ok;
+}
+
+static int cores(void)
+{
+    long n = sysconf(_SC_NPROCESSORS_ONLN);
+    return n < 1 ? 1 : n > RENDER_MAX_JOBS ? RENDER_MAX_JOBS : (int)n;
+}
+
+/* The sibling raygl-render of this executable: the command remote tasks run. */
+static char *render_command(void)
+{
+    char self[PATH_MAX];
+    ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+    if (n <= 0)
+        return NULL;
+    self[n] = '\0';
+    char *slash = strrchr(self, '/');
+    if (!slash)
+        return NULL;
+    *slash = '\0';
+    char *p = aprintf("%s/raygl-render", self);
+    if (p && access(p, X_OK) != 0) {
+        tr_free(p);
+        return NULL;
+    }
+    return p;
+}
+
+bool render_wanted(const render_settings *r)
+{
+    return r->render || r->slurm || r->submit || r->sshloginfile || r->video;
+}
+
+int render_check_tools(const render_settings *r, const char *prog)
+{
+    const char *pov = r->povray ? r->povray : "povray";
+    char *p;
+    if (r->render || r->video || r->task >= 0) {
+        if (!(p = find_program(pov))) {
+            say(prog, "%s: POV-Ray not found%s (install POV-Ray 3.7, e.g. apt-get install povray, "
+                      "or give --povray PATH)", pov, strchr(pov, '/') ? "" : " in PATH");
+            return 1;
+        }
+        tr_free(p);
+    }
+    if (r->video) {
+        if (!(p = find_program("ffmpeg"))) {
+            say(prog, "--video needs ffmpeg, which is not installed (apt-get install ffmpeg)");
+            return 1;
+        }
+        tr_free(p);
+    }
+    if (r->submit) {
+        if (!(p = find_program("sbatch"))) {
+            say(prog, "--submit needs sbatch (Slurm), which is not in PATH");
+            return 1;
+        }
+        tr_free(p);
+    }
+    if (r->sshloginfile) {
+        if (!(p = find_program("parallel"))) {
+            say(prog, "--sshloginfile needs GNU parallel, which is not installed "
+                      "(apt-get install parallel)");
+            return 1;
+        }
+        tr_free(p);
+        if (access(r->sshloginfile, R_OK) != 0) {
+            say(prog, "%s: cannot read the SSH login file: %s", r->sshloginfile, strerror(errno));
+            return 1;
+        }
+    }
+    if (r->slurm || r->submit || r->sshloginfile) {
+        if (!(p = render_command())) {
+            say(prog, "raygl-render is not installed next to this program: the tasks need it");
+            return 1;
+        }
+        tr_free(p);
+    }
+    return 0;
+}
+
+/* ---- The list --------------------------------------------------------------------------- */
+
+static char *list_path(const char *dir)
+{
+    size_t n = strlen(dir);
+    return aprintf("%s%srender.list", dir, n && dir[n - 1] == '/' ? "" : "/");
+}
+
+static int write_list(const render_job *j)
+{
+    char *path = list_path(j->dir), *tmp = path ? aprintf("%s.tmp", path) : NULL;
+    int rc = -1;
+    FILE *f = tmp ? fopen(tmp, "w") : NULL;
+    if (f) {
+        for (size_t i = 0; i < j->nstems; i++)
+            fprintf(f, "%s\n", j->stems[i]);
+        rc = ferror(f) ? -1 : 0;
+        if (fclose(f) != 0)
+            rc = -1;
+        if (rc == 0)
+            rc = rename(tmp, path);
+        if (rc != 0)
+            unlink(tmp);
+    }
+    if (rc != 0)
+        say(j->prog, "%s: cannot write: %s", path ? path : j->dir, strerror(errno));
+    tr_free(path);
+    tr_free(tmp);
+    return rc;
+}
+
+/* Entry n of DIR/render.list, or NULL with a message. */
+static char *list_entry(const char *prog, const char *dir, long n)
+{
+    char *path = list_path(dir);
+    FILE *f = path ? fopen(path, "r") : NULL;
+    if (!f) {
+        say(prog, "%s: cannot read: %s", path ? path : dir, strerror(errno));
+        tr_free(path);
+        return NULL;
+    }
+    char *line = NULL, *out = NULL;
+    size_t cap = 0;
+    ssize_t len;
+    long i = 0;
+    while ((len = getline(&line, &cap, f)) >= 0) {
+        if (len > 0 && line[len - 1] == '\n')
+            line[--len] = '\0';
+        if (i++ == n) {
+            out = aprintf("%s", line);
+            break;
+        }
+    }
+    if (!out)
+        say(prog, "%s: no entry %ld (the list has %ld)", path, n, i);
+    free(line);
+    fclose(f);
+    tr_free(path);
+    return out;
+}
+
+/* ---- One frame ---------------------------------------------------------------------------- */
+
+typedef struct running {
+    pid_t pid;
+    size_t index;
+    char *tmp_png, *tmp_log;
+} running;
+
+/* Starts povray for stem; 0 or -1 (message printed). */
+static int start_frame(const char *prog, const char *povray, const char *stem, int threads,
+                       running *r)
+{
+    r->tmp_png = partial_png(stem);
+    r->tmp_log = partial_log(stem);
+    char *ini = aprintf("%s.ini", stem), *oarg = r->tmp_png ? aprintf("+O%s", r->tmp_png) : NULL,
+         *wt = aprintf("+WT%d", threads);
+    int rc = -1;
+    if (ini && oarg && wt && r->tmp_log) {
+        posix_spawn_file_actions_t fa;
+        posix_spawn_file_actions_init(&fa);
+        posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
+        posix_spawn_file_actions_addopen(&fa, 1, r->tmp_log, O_WRONLY | O_CREAT | O_TRUNC, 0666);
+        posix_spawn_file_actions_adddup2(&fa, 1, 2);
+        char *argv[] = {(char *)povray, ini, wt, oarg, "-D", NULL};
+        int e = posix_spawnp(&r->pid, povray, &fa, NULL, argv, environ);
+        posix_spawn_file_actions_destroy(&fa);
+        if (e == 0)
+            rc = 0;
+        else
+            say(prog, "%s: cannot run %s: %s", ini, povray, strerror(e));
+    }
+    tr_free(ini);
+    tr_free(oarg);
+    tr_free(wt);
+    return rc;
+}
+
+/* POV-Ray's own error: the first line of the log that says "Error" with
+ * its continuation lines (they start with a blank), else the log's last
+ * non-empty line. */
+static void log_error(const char *log, char *out, size_t cap)
+{
+    snprintf(out, cap, "no message from POV-Ray");
+    FILE *f = fopen(log, "r");
+    if (!f)
+        return;
+    char line[1024];
+    int state = 0; /* 0 looking, 1 in the error, 2 done */
+    while (state < 2 && fgets(line, sizeof line, f)) {
+        line[strcspn(line, "\r\n")] = '\0';
+        if (state == 1) {
+            if (line[0] == ' ' && line[1] != ' ') {
+                size_t n = strlen(out);
+                snprintf(out + n, cap - n, "%s", line);
+                continue;
+            }
+            state = 2;
+        } else if (line[0] && (strstr(line, "Error") || strstr(line, "error"))) {
+            snprintf(out, cap, "%s", line);
+            state = 1;
+        } else if (line[0]) {
+            snprintf(out, cap, "%s", line);
+        }
+    }
+    fclose(f);
+}
+
+/* After povray ended with status st: the PNG into place, or the failure
+ * reported with the log kept as STEM.log. Returns true on success. */
+static bool finish_frame(const char *prog, const char *stem, int st, running *r)
+{
+    char *png = aprintf("%s.png", stem), *log = aprintf("%s.log", stem);
+    struct stat sb;
+    bool ok = WIFEXITED(st) && WEXITSTATUS(st) == 0 && r->tmp_png && stat(r->tmp_png, &sb) == 0 &&
+              sb.st_size > 0;
+    if (ok && png && rename(r->tmp_png, png) != 0) {
+        say(prog, "%s: cannot write: %s", png, strerror(errno));
+        ok = false;
+    } else if (ok && log) {
+        unlink(log); /* an earlier failure's */
+    } else if (!ok) {
+        char msg[1024], why[64];
+        log_error(r->tmp_log, msg, sizeof msg);
+        if (WIFEXITED(st))
+            snprintf(why, sizeof why, "exit status %d", WEXITSTATUS(st));
+        else if (WIFSIGNALED(st))
+            snprintf(why, sizeof why, "signal %d", WTERMSIG(st));
+        else
+            snprintf(why, sizeof why, "no image");
+        if (WIFEXITED(st) && WEXITSTATUS(st) == 0)
+            snprintf(why, sizeof why, "no image written");
+        bool kept = log && rename(r->tmp_log, log) == 0;
+        say(prog, "%s.ini: povray failed (%s): %s%s%s%s", stem, why, msg, kept ? " (log: " : "",
+            kept ? log : "", kept ? ")" : "");
+    }
+    if (r->tmp_png)
+        unlink(r->tmp_png);
+    if (r->tmp_log)
+        unlink(r->tmp_log);
+    tr_free(png);
+    tr_free(log);
+    tr_free(r->tmp_png);
+    tr_free(r->tmp_log);
+    r->tmp_png = r->tmp_log = NULL;
+    return ok;
+}
+
+/* ---- Interruption --------------------------------------------------------------------------- */
+
+/* On SIGINT/SIGTERM/SIGHUP: stop the povray processes, remove their partial
+ * files, exit. Finished PNGs stay. */
+static running *sig_run;
+static int sig_nrun;
+
+static void on_signal(int sig)
+{
+    for (int i = 0; i < sig_nrun; i++)
+        if (sig_run[i].pid > 0)
+            kill(sig_run[i].pid, SIGTERM);
+    for (int i = 0; i < sig_nrun; i++) {
+        if (sig_run[i].pid > 0)
+            waitpid(sig_run[i].pid, NULL, 0);
+        if (sig_run[i].tmp_png)
+            unlink(sig_run[i].tmp_png);
+        if (sig_run[i].tmp_log)
+            unlink(sig_run[i].tmp_log);
+    }
+    _exit(128 + sig);
+}
+
+static void catch_signals(running *run, int n)
+{
+    sig_run = run;
+    sig_nrun = n;
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+    sigaction(SIGHUP, &sa, NULL);
+}
+
+/* ---- Local rendering -------------------------------------------------------------------------- */
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+static void hms(double s, char *out, size_t cap)
+{
+    long t = (long)(s + 0.5);
+    snprintf(out, cap, "%ld:%02ld:%02ld", t / 3600, t / 60 % 60, t % 60);
+}
+
+static void progress(const render_job *j, size_t done, size_t total, size_t rendered, double t0)
+{
+    if (j->quiet || !isatty(STDERR_FILENO))
+        return;
+    enum { BAR = 24 };
+    char bar[BAR + 1], left[32] = "--:--:--", rate[32] = "-";
+    size_t fill = total ? done * BAR / total : BAR;
+    for (size_t i = 0; i < BAR; i++)
+        bar[i] = i < fill ? '#' : '.';
+    bar[BAR] = '\0';
+    double dt = now() - t0;
+    if (rendered > 0 && dt > 0) {
+        double fpm = rendered * 60.0 / dt;
+        snprintf(rate, sizeof rate, "%.1f", fpm);
+        hms((double)(total - done) * 60.0 / fpm, left, sizeof left);
+    }
+    fprintf(stderr, "\r\033[K%s: [%s] %zu/%zu frames, %s frames/min, %s left", j->prog, bar, done,
+            total, rate, left);
+    progress_shown = true;
+}
+
+static int render_local(const render_job *j, size_t *nfailed)
+{
+    const char *povray = j->r->povray ? j->r->povray : "povray";
+    int jobs = j->jobs > 0 ? j->jobs : cores();
+    if (jobs > RENDER_MAX_JOBS)
+        jobs = RENDER_MAX_JOBS;
+    /* POV-Ray threads itself: the cores are shared among the processes. */
+    int threads = cores() / jobs > 0 ? cores() / jobs : 1;
+    running *run = tr_realloc(NULL, (size_t)jobs * sizeof *run);
+    if (!run) {
+        say(j->prog, "out of memory");
+        return 1;
+    }
+    memset(run, 0, (size_t)jobs * sizeof *run);
+    catch_signals(run, jobs);
+    scan_includes(j->dir);
+
+    size_t skipped = 0, rendered = 0, failed = 0, done = 0, next = 0;
+    bool stop = false;
+    double t0 = now();
+    int active = 0;
+    while (next < j->nstems || active > 0) {
+        while (!stop && active < jobs && next < j->nstems) {
+            size_t i = next++;
+            if (up_to_date(j->stems[i])) {
+                skipped++;
+                done++;
+                continue;
+            }
+            int slot = 0;
+            while (run[slot].pid > 0)
+                slot++;
+            run[slot].index = i;
+            if (start_frame(j->prog, povray, j->stems[i], threads, &run[slot]) != 0) {
+                tr_free(run[slot].tmp_png);
+                tr_free(run[slot].tmp_log);
+                run[slot].tmp_png = run[slot].tmp_log = NULL;
+                run[slot].pid = 0;
+                failed++;
+                done++;
+                stop = true; /* povray cannot be started: the next would fail alike */
+                continue;
+            }
+            active++;
+        }
+        if (stop && active == 0)
+            break;
+        if (active == 0)
+            continue;
+        progress(j, done, j->nstems, rendered, t0);
+        int st;
+        pid_t pid = waitpid(-1, &st, 0);
+        if (pid < 0) {
+            if (errno == EINTR)
+                continue;
+            break;
+        }
+        for (int s = 0; s < jobs; s++) {
+            if (run[s].pid != pid)
+                continue;
+            if (finish_frame(j->prog, j->stems[run[s].index], st, &run[s]))
+                rendered++;
+            else
+                failed++;
+            run[s].pid = 0;
+            active--;
+            done++;
+        }
+    }
+    progress(j, done, j->nstems, rendered, t0);
+    if (progress_shown) {
+        fputs("\r\033[K", stderr);
+        progress_shown = false;
+    }
+    signal(SIGINT, SIG_DFL);
+    signal(SIGTERM, SIG_DFL);
+    signal(SIGHUP, SIG_DFL);
+    sig_nrun = 0;
+    tr_free(run);
+    size_t notrun = j->nstems - done;
+    double dt = now() - t0;
+    if (!j->quiet || failed) {
+        char t[32];
+        hms(dt, t, sizeof t);
+        fprintf(stderr,
+                "%s: %zu frames rendered in %s (%.1f frames/min, %d at once), %zu already "
+                "rendered, %zu failed%s\n",
+                j->prog, rendered, t, dt > 0 ? rendered * 60.0 / dt : 0.0, jobs, skipped,
+                failed + notrun, notrun ? " or not started" : "");
+    }
+    *nfailed = failed + notrun;
+    return failed + notrun ? 1 : 0;
+}
+
+/* ---- Video ------------------------------------------------------------------------------------ */
+
+static int run_wait(char *const argv[], const char *prog)
+{
+    pid_t pid;
+    int e = posix_spawnp(&pid, argv[0], NULL, NULL, argv, environ);
+    if (e != 0) {
+        say(prog, "cannot run %s: %s", argv[0], strerror(e));
+        return -1;
+    }
+    int st;
+    while (waitpid(pid, &st, 0) < 0)
+        if (errno != EINTR)
+            return -1;
+    return WIFEXITED(st) ? WEXITSTATUS(st) : 128 + (WIFSIGNALED(st) ? WTERMSIG(st) : 0);
+}
+
+/* The PNGs in list order, as numbered links in a hidden folder, for
+ * ffmpeg's image2 reader; the video is written under a partial name and
+ * renamed into place. */
+static int make_video(const render_job *j)
+{
+    size_t dl = strlen(j->dir);
+    const char *sep = dl && j->dir[dl - 1] == '/' ? "" : "/";
+    char *seq = aprintf("%s%s.video-%ld", j->dir, sep, (long)getpid());
+    if (!seq || mkdir(seq, 0777) != 0) {
+        say(j->prog, "%s: cannot create: %s", seq ? seq : j->dir, strerror(errno));
+        tr_free(seq);
+        return 1;
+    }
+    int rc = 0;
+    size_t n = 0;
+    for (size_t i = 0; i < j->nstems && rc == 0; i++) {
+        char *png = aprintf("%s.png", j->stems[i]);
+        char *abs = png ? realpath(png, NULL) : NULL;
+        char *link = aprintf("%s/%06zu.png", seq, n);
+        if (abs && link && symlink(abs, link) == 0)
+            n++;
+        tr_free(png);
+        free(abs);
+        tr_free(link);
+    }
+    const char *out = j->r->video;
+    const char *slash = strrchr(out, '/');
+    char *tmp = slash ? aprintf("%.*s/.%s.partial%s", (int)(slash - out), out, slash + 1,
+                                strrchr(slash, '.') ? strrchr(slash, '.') : "")
+                      : aprintf(".%s.partial%s", out, strrchr(out, '.') ? strrchr(out, '.') : "");
+    char *pattern = aprintf("%s/%%06d.png", seq);
+    char fps[16];
+    snprintf(fps, sizeof fps, "%d", j->r->fps > 0 ? j->r->fps : 25);
+    if (n == 0) {
+        say(j->prog, "--video: no rendered frames to assemble");
+        rc = 1;
+    } else if (tmp && pattern) {
+        char *argv[] = {"ffmpeg", "-nostdin", "-y", "-loglevel", "error", "-framerate", fps,
+                        "-i", pattern, "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt",
+                        "yuv420p", tmp, NULL};
+        int st = run_wait(argv, j->prog);
+        if (st != 0) {
+            say(j->prog, "%s: ffmpeg failed (exit status %d); the PNGs are kept", out, st);
+            unlink(tmp);
+            rc = 1;
+        } else if (rename(tmp, out) != 0) {
+            say(j->prog, "%s: cannot write: %s", out, strerror(errno));
+            unlink(tmp);
+            rc = 1;
+        } else if (!j->quiet) {
+            fprintf(stderr, "%s: %s: %zu frames at %s frames/s\n", j->prog, out, n, fps);
+        }
+    }
+    for (size_t i = 0; i < n; i++) {
+        char *link = aprintf("%s/%06zu.png", seq, i);
+        if (link)
+            unlink(link);
+        tr_free(link);
+    }
+    rmdir(seq);
+    tr_free(seq);
+    tr_free(tmp);
+    tr_free(pattern);
+    return rc;
+}
+
+/* ---- Slurm and GNU parallel -------------------------------------------------------------------- */
+
+static char *cwd_now(void)
+{
+    char *c = getcwd(NULL, 0);
+    char *r = c ? aprintf("%s", c) : NULL;
+    free(c);
+    return r;
+}
+
+/* Slurm's default MaxArraySize is 1001: larger lists go in several arrays,
+ * each task adding RAYGL_OFFSET to its index. */
+#define SLURM_ARRAY_CHUNK 1000
+
+static int write_slurm(const render_job *j, char **script_out)
+{
+    size_t dl = strlen(j->dir);
+    const char *sep = dl && j->dir[dl - 1] == '/' ? "" : "/";
+    char *path = aprintf("%s%srender.slurm", j->dir, sep);
+    char *tmp = path ? aprintf("%s.tmp", path) : NULL;
+    char *cwd = cwd_now(), *cmd = render_command();
+    char *qcwd = cwd ? sh_quote(cwd) : NULL, *qcmd = cmd ? sh_quote(cmd) : NULL,
+         *qdir = sh_quote(j->dir);
+    char *absdir = cwd && j->dir[0] != '/' ? aprintf("%s/%s", cwd, j->dir) : aprintf("%s", j->dir);
+    char *qlog = absdir ? aprintf("%s%sslurm-%%A_%%a.log", absdir, sep) : NULL;
+    char *qpov = j->r->povray ? sh_quote(j->r->povray) : NULL;
+    int rc = -1;
+    FILE *f = (path && tmp && qcwd && qcmd && qdir && qlog) ? fopen(tmp, "w") : NULL;
+    if (f) {
+        size_t last = j->nstems < SLURM_ARRAY_CHUNK ? j->nstems - 1 : SLURM_ARRAY_CHUNK - 1;
+        fprintf(f,
+                "#!/bin/sh\n"
+                "# Written by raygl2pov: renders the frames of render.list, one per task of a\n"
+                "# Slurm job array. The output folder must be on storage every node shares,\n"
+                "# at the same path, and raygl-render and povray installed on every node.\n"
+                "#   sbatch %s\n"
+                "# renders frames 0-%zu; for more than %d frames submit once per chunk:\n"
+                "#   sbatch --array=0-999 --export=ALL,RAYGL_OFFSET=1000 %s\n"
+                "# A task whose PNG is newer than its scene does nothing, so a job can be\n"
+                "# submitted again after a failure.\n"
+                "#SBATCH --job-name=raygl\n"
+                "#SBATCH --array=0-%zu\n"
+                "#SBATCH --ntasks=1\n"
+                "#SBATCH --cpus-per-task=1\n"
+                "#SBATCH --output=%s\n"
+                "cd %s || exit 1\n"
+                "exec %s %s --task \"$((${RAYGL_OFFSET:-0} + SLURM_ARRAY_TASK_ID))\"%s%s\n",
+                path, last, SLURM_ARRAY_CHUNK, path, last, qlog, qcwd, qcmd, qdir,
+                qpov ? " --povray " : "", qpov ? qpov : "");
+        rc = ferror(f) ? -1 : 0;
+        if (fclose(f) != 0)
+            rc = -1;
+        if (rc == 0)
+            rc = chmod(tmp, 0755);
+        if (rc == 0)
+            rc = rename(tmp, path);
+        if (rc != 0)
+            unlink(tmp);
+    }
+    if (rc != 0)
+        say(j->prog, "%s: cannot write: %s", path ? path : j->dir,
+            cmd ? strerror(errno) : "raygl-render not found next to this program");
+    if (rc == 0)
+        *script_out = path;
+    else
+        tr_free(path);
+    tr_free(tmp);
+    tr_free(cwd);
+    tr_free(cmd);
+    tr_free(qcwd);
+    tr_free(qcmd);
+    tr_free(qdir);
+    tr_free(absdir);
+    tr_free(qlog);
+    tr_free(qpov);
+    return rc;
+}
+
+static int submit_slurm(const render_job *j, const char *script)
+{
+    int rc = 0;
+    for (size_t first = 0; first < j->nstems && rc == 0; first += SLURM_ARRAY_CHUNK) {
+        size_t n = j->nstems - first < SLURM_ARRAY_CHUNK ? j->nstems - first : SLURM_ARRAY_CHUNK;
+        char array[64], exp[64];
+        snprintf(array, sizeof array, "--array=0-%zu", n - 1);
+        snprintf(exp, sizeof exp, "--export=ALL,RAYGL_OFFSET=%zu", first);
+        char *argv[] = {"sbatch", array, exp, (char *)script, NULL};
+        int st = run_wait(argv, j->prog);
+        if (st != 0) {
+            say(j->prog, "%s: sbatch failed (exit status %d)", script, st);
+            rc = 1;
+        }
+    }
+    return rc;
+}
+
+/* GNU parallel: one job per frame, `raygl-render DIR --task N` on the hosts
+ * of the login file (":" is this machine), in the folder raygl2pov ran in. */
+static int render_parallel(const render_job *j)
+{
+    char *cwd = cwd_now(), *cmd = render_command();
+    char *qcmd = cmd ? sh_quote(cmd) : NULL, *qdir = sh_quote(j->dir);
+    char *qpov = j->r->povray ? sh_quote(j->r->povray) : NULL;
+    char *line = (qcmd && qdir) ? aprintf("%s %s%s%s --task {}", qcmd, qdir,
+                                          qpov ? " --povray " : "", qpov ? qpov : "")
+                                : NULL;
+    char *last = aprintf("%zu", j->nstems - 1);
+    int rc = 1;
+    if (cwd && line && last) {
+        char *argv[] = {"parallel", "--will-cite", "--halt", "never", "--sshloginfile",
+                        (char *)j->r->sshloginfile, "--workdir", cwd, line, ":::", NULL, NULL};
+        /* The indices as arguments: {0..N-1} expanded here. */
+        size_t n = j->nstems;
+        char **full = tr_realloc(NULL, (11 + n + 1) * sizeof *full);
+        char *nums = tr_realloc(NULL, n * 24 + 1);
+        if (full && nums) {
+            memcpy(full, argv, 10 * sizeof *full);
+            char *p = nums;
+            for (size_t i = 0; i < n; i++) {
+                full[10 + i] = p;
+                p += sprintf(p, "%zu", i) + 1;
+            }
+            full[10 + n] = NULL;
+            int st = run_wait(full, j->prog);
+            if (st != 0)
+                say(j->prog, "GNU parallel: %d frame(s) failed (see the messages above)", st);
+            rc = st == 0 ? 0 : 1;
+        }
+        tr_free(full);
+        tr_free(nums);
+    }
+    tr_free(cwd);
+    tr_free(cmd);
+    tr_free(qcmd);
+    tr_free(qdir);
+    tr_free(qpov);
+    tr_free(line);
+    tr_free(last);
+    return rc;
+}
+
+/* ---- Entry points ------------------------------------------------------------------------------ */
+
+int render_task(const render_settings *r, const char *prog, const char *dir, long n)
+{
+    if (render_check_tools(r, prog) != 0)
+        return 1;
+    char *stem = list_entry(prog, dir, n);
+    if (!stem)
+        return 1;
+    int rc = 0;
+    scan_includes(dir);
+    if (!up_to_date(stem)) {
+        running run;
+        memset(&run, 0, sizeof run);
+        catch_signals(&run, 1);
+        const char *povray = r->povray ? r->povray : "povray";
+        if (start_frame(prog, povray, stem, 1, &run) != 0) {
+            rc = 1;
+        } else {
+            int st;
+            while (waitpid(run.pid, &st, 0) < 0 && errno == EINTR)
+                ;
+            run.pid = 0;
+            rc = finish_frame(prog, stem, st, &run) ? 0 : 1;
+        }
+        tr_free(run.tmp_png);
+        tr_free(run.tmp_log);
+    }
+    tr_free(stem);
+    return rc;
+}
+
+int render_run(const render_job *j)
+{
+    if (j->nstems == 0)
+        return 0;
+    if (write_list(j) != 0)
+        return 1;
+    int rc = 0;
+    if (j->r->slurm || j->r->submit) {
+        char *script = NULL;
+        if (write_slurm(j, &script) != 0)
+            return 1;
+        if (!j->quiet)
+            fprintf(stderr, "%s: %s: a Slurm job array of %zu frames%s\n", j->prog, script,
+                    j->nstems, j->r->submit ? "" : " (submit it with sbatch)");
+        if (j->r->submit)
+            rc = submit_slurm(j, script);
+        tr_free(script);
+        return rc; /* the cluster renders; --video needs the PNGs first */
+    }
+    size_t failed = 0;
+    if (j->r->sshloginfile)
+        rc = render_parallel(j);
+    else if (j->r->render || j->r->video)
+        rc = render_local(j, &failed);
+    if (j->r->video) {
+        if (rc != 0)
+            say(j->prog, "--video: not made, %s", "some frames were not rendered");
+        else
+            rc = make_video(j);
+    }
+    return rc;
+}
+
+static int cmp_str(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+int render_scan_dir(const char *prog, const char *dir, char ***stems, size_t *n)
+{
+    *stems = NULL;
+    *n = 0;
+    DIR *d = opendir(dir);
+    if (!d) {
+        say(prog, "%s: cannot read the folder: %s", dir, strerror(errno));
+        return -1;
+    }
+    size_t cap = 0, dl = strlen(dir);
+    const char *sep = dl && dir[dl - 1] == '/' ? "" : "/";
+    struct dirent *e;
+    int rc = 0;
+    while ((e = readdir(d))) {
+        size_t l = strlen(e->d_name);
+        if (e->d_name[0] == '.' || l < 5 || strcmp(e->d_name + l - 4, ".ini") != 0)
+            continue;
+        if (tr_grow((void **)stems, &cap, *n + 1, sizeof **stems) != 0 ||
+            !((*stems)[*n] = aprintf("%s%s%.*s", dir, sep, (int)(l - 4), e->d_name))) {
+            say(prog, "out of memory");
+            rc = -1;
+            break;
+        }
+        (*n)++;
+    }
+    closedir(d);
+    if (rc == 0 && *n == 0) {
+        say(prog, "%s: no .ini files: translate a trace into it with raygl2pov first", dir);
+        rc = -1;
+    }
+    if (rc != 0) {
+        render_free_stems(*stems, *n);
+        *stems = NULL;
+        *n = 0;
+        return -1;
+    }
+    qsort(*stems, *n, sizeof **stems, cmp_str);
+    return 0;
+}
+
+void render_free_stems(char **stems, size_t n)
+{
+    for (size_t i = 0; stems && i < n; i++)
+        tr_free(stems[i]);
+    tr_free(stems);
+}
+
+/* ---- Options (options.def) --------------------------------------------------------------------- */
+
+bool opt_set_render(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
+{
+    return opt_bool(v, &o->render.render, ctx, err);
+}
+
+bool opt_set_slurm(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
+{
+    return opt_bool(v, &o->render.slurm, ctx, err);
+}
+
+bool opt_set_submit(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
+{
+    return opt_bool(v, &o->render.submit, ctx, err);
+}
+
+bool opt_set_povray(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
+{
+    if (!*v)
+        return opt_fail(err, "%s: empty program name", ctx->option);
+    o->render.povray = strchr(v, '/') ? opt_path(o, v, ctx, err) : opt_strdup(o, v, err);
+    return o->render.povray != NULL;
+}
+
+bool opt_set_video(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
+{
+    if (!*v || v[strlen(v) - 1] == '/')
+        return opt_fail(err, "%s '%s': expected a file name", ctx->option, v);
+    return (o->render.video = opt_path(o, v, ctx, err)) != NULL;
+}
+
+bool opt_set_sshloginfile(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
+{
+    if (!*v)
+        return opt_fail(err, "%s: empty file name", ctx->option);
+    return (o->render.sshloginfile = opt_path(o, v, ctx, err)) != NULL;
+}
+
+static bool parse_long(const char *v, long lo, long hi, long *out)
+{
+    char *e;
+    if (*v < '0' || *v > '9')
+        return false;
+    errno = 0;
+    long n = strtol(v, &e, 10);
+    if (*e || errno || n < lo || n > hi)
+        return false;
+    *out = n;
+    return true;
+}
+
+bool opt_set_fps(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
+{
+    long n;
+    if (!parse_long(v, 1, 1000, &n))
+        return opt_fail(err, "%s '%s': expected frames per second from 1 to 1000", ctx->option, v);
+    o->render.fps = (int)n;
+    return true;
+}
+
+bool opt_set_task(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
+{
+    if (!parse_long(v, 0, 1L << 40, &o->render.task))
+        return opt_fail(err, "%s '%s': expected an entry number from 0", ctx->option, v);
+    return true;
+}

@@ -1,0 +1,75 @@
+/* render_main.c: raygl-render, rendering a folder raygl2pov wrote.
+ *
+ *   raygl-render DIR [-j N] [--video FILE] [--slurm|--submit] [--sshloginfile F]
+ *   raygl-render DIR --task N      (one entry of DIR/render.list: a cluster task)
+ *
+ * The options are the rendering rows of raygl2pov's table (options.def);
+ * run it from the folder raygl2pov ran in, as povray itself must be.
+ */
+#include <locale.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "format.h"
+#include "options.h"
+#include "render.h"
+
+#ifndef RAYGL_VERSION
+#define RAYGL_VERSION "unknown"
+#endif
+
+#define PROG "raygl-render"
+
+int main(int argc, char **argv)
+{
+    setlocale(LC_ALL, "");
+    options o;
+    opt_err err;
+    opt_init(&o);
+    o.render_tool = true;
+    if (!opt_parse_args(&o, argc, argv, &err) ||
+        (!o.help && !o.version && !opt_finish_parse(&o, &err))) {
+        fprintf(stderr, PROG ": %s\nTry '" PROG " --help' for more information.\n", err.msg);
+        opt_free(&o);
+        return 2;
+    }
+    if (o.help) {
+        fputs("Usage: " PROG " DIR [OPTION]...\n"
+              "Render the scenes raygl2pov wrote into DIR (every DIR/NAME.ini) with POV-Ray,\n"
+              "here, on a Slurm cluster or over SSH. Run it from the folder raygl2pov ran in.\n",
+              stdout);
+        opt_print_help(stdout, true);
+        fputs("\nExit status: 0 when every frame was rendered (or submitted), 1 when a frame\n"
+              "failed or a tool is missing, 2 on bad usage.\n",
+              stdout);
+        opt_free(&o);
+        return 0;
+    }
+    if (o.version) {
+        printf(PROG " " RAYGL_VERSION "\n");
+        opt_free(&o);
+        return 0;
+    }
+    const char *dir = o.trace;
+    int rc;
+    if (o.render.task >= 0) {
+        rc = render_task(&o.render, PROG, dir, o.render.task);
+    } else {
+        /* With no action given, render here. */
+        if (!render_wanted(&o.render))
+            o.render.render = true;
+        char **stems;
+        size_t n;
+        rc = render_check_tools(&o.render, PROG);
+        if (rc == 0 && render_scan_dir(PROG, dir, &stems, &n) != 0)
+            rc = 1;
+        else if (rc == 0) {
+            render_job j = {&o.render, PROG, dir, stems, n, o.jobs, o.quiet};
+            rc = render_run(&j);
+            render_free_stems(stems, n);
+        }
+    }
+    opt_free(&o);
+    return rc;
+}
