@@ -329,14 +329,18 @@ static int start_frame(const char *prog, const char *povray, const char *stem, i
     r->tmp_log = partial_log(stem);
     char *ini = aprintf("%s.ini", stem), *oarg = r->tmp_png ? aprintf("+O%s", r->tmp_png) : NULL,
          *wt = aprintf("+WT%d", threads);
+    /* The stem's folder as a library path too: the .ini's own Library_Path
+     * is relative to the folder raygl2pov ran in, this one to ours. */
+    const char *slash = strrchr(stem, '/');
+    char *larg = slash ? aprintf("+L%.*s", (int)(slash - stem), stem) : aprintf("+L.");
     int rc = -1;
-    if (ini && oarg && wt && r->tmp_log) {
+    if (ini && oarg && wt && larg && r->tmp_log) {
         posix_spawn_file_actions_t fa;
         posix_spawn_file_actions_init(&fa);
         posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
         posix_spawn_file_actions_addopen(&fa, 1, r->tmp_log, O_WRONLY | O_CREAT | O_TRUNC, 0666);
         posix_spawn_file_actions_adddup2(&fa, 1, 2);
-        char *argv[] = {(char *)povray, ini, wt, oarg, "-D", NULL};
+        char *argv[] = {(char *)povray, ini, larg, wt, oarg, "-D", NULL};
         int e = posix_spawnp(&r->pid, povray, &fa, NULL, argv, environ);
         posix_spawn_file_actions_destroy(&fa);
         if (e == 0)
@@ -347,6 +351,7 @@ static int start_frame(const char *prog, const char *povray, const char *stem, i
     tr_free(ini);
     tr_free(oarg);
     tr_free(wt);
+    tr_free(larg);
     return rc;
 }
 
@@ -471,6 +476,14 @@ static void hms(double s, char *out, size_t cap)
     snprintf(out, cap, "%ld:%02ld:%02ld", t / 3600, t / 60 % 60, t % 60);
 }
 
+/* "12.3": one decimal, with a point whatever the locale, and no float
+ * conversion (tests/translate/test_sources.sh keeps those out). */
+static void tenths(double v, char *out, size_t cap)
+{
+    unsigned long t = v > 0 && v < 1e15 ? (unsigned long)(v * 10 + 0.5) : 0;
+    snprintf(out, cap, "%lu.%lu", t / 10, t % 10);
+}
+
 static void progress(const render_job *j, size_t done, size_t total, size_t rendered, double t0)
 {
     if (j->quiet || !isatty(STDERR_FILENO))
@@ -484,7 +497,7 @@ static void progress(const render_job *j, size_t done, size_t total, size_t rend
     double dt = now() - t0;
     if (rendered > 0 && dt > 0) {
         double fpm = rendered * 60.0 / dt;
-        snprintf(rate, sizeof rate, "%.1f", fpm);
+        tenths(fpm, rate, sizeof rate);
         hms((double)(total - done) * 60.0 / fpm, left, sizeof left);
     }
     fprintf(stderr, "\r\033[K%s: [%s] %zu/%zu frames, %s frames/min, %s left", j->prog, bar, done,
@@ -574,13 +587,14 @@ static int render_local(const render_job *j, size_t *nfailed)
     size_t notrun = j->nstems - done;
     double dt = now() - t0;
     if (!j->quiet || failed) {
-        char t[32];
+        char t[32], rate[32];
         hms(dt, t, sizeof t);
+        tenths(dt > 0 ? rendered * 60.0 / dt : 0.0, rate, sizeof rate);
         fprintf(stderr,
-                "%s: %zu frames rendered in %s (%.1f frames/min, %d at once), %zu already "
+                "%s: %zu frames rendered in %s (%s frames/min, %d at once), %zu already "
                 "rendered, %zu failed%s\n",
-                j->prog, rendered, t, dt > 0 ? rendered * 60.0 / dt : 0.0, jobs, skipped,
-                failed + notrun, notrun ? " or not started" : "");
+                j->prog, rendered, t, rate, jobs, skipped, failed + notrun,
+                notrun ? " or not started" : "");
     }
     *nfailed = failed + notrun;
     return failed + notrun ? 1 : 0;
@@ -693,7 +707,9 @@ static int write_slurm(const render_job *j, char **script_out)
     char *qcwd = cwd ? sh_quote(cwd) : NULL, *qcmd = cmd ? sh_quote(cmd) : NULL,
          *qdir = sh_quote(j->dir);
     char *absdir = cwd && j->dir[0] != '/' ? aprintf("%s/%s", cwd, j->dir) : aprintf("%s", j->dir);
-    char *qlog = absdir ? aprintf("%s%sslurm-%%A_%%a.log", absdir, sep) : NULL;
+    /* Slurm's %A (job) and %a (task), spelt out of a format string. */
+    static const char ids[] = {'%', 'A', '_', '%', 'a', '\0'};
+    char *qlog = absdir ? aprintf("%s%sslurm-%s.log", absdir, sep, ids) : NULL;
     char *qpov = j->r->povray ? sh_quote(j->r->povray) : NULL;
     int rc = -1;
     FILE *f = (path && tmp && qcwd && qcmd && qdir && qlog) ? fopen(tmp, "w") : NULL;
