@@ -343,6 +343,8 @@ static void fix_lights(interp *ip)
                 l->direction[k] = g->spot_direction[k];
             }
         }
+        if (l->kind == SCENE_LIGHT_SPOT && memcmp(g->diffuse, g->specular, 3 * sizeof(float)) != 0)
+            interp_note(ip, DIAG_NOTE_SPOT_SPECULAR);
         memcpy(l->color, g->diffuse, sizeof l->color);
         memcpy(l->ambient, g->ambient, sizeof l->ambient);
         memcpy(l->specular, g->specular, sizeof l->specular);

@@ -66,6 +66,9 @@ struct povwriter {
     size_t nbtris, cap_btris;
     povlight light; /* lighting, blending and fog of the scene being written */
     bool mesh_no_shadow; /* write_mesh2 adds no_shadow (points outside the union) */
+    bool in_proto;       /* writing a display list's prototype: no eye space known */
+    uint8_t *front;      /* per pool vertex of the mesh: on a front-facing face */
+    size_t cap_front;
 };
 
 povwriter *povwriter_create(void)
@@ -90,6 +93,7 @@ void povwriter_destroy(povwriter *w)
     tr_free(w->faces);
     tr_free(w->bverts);
     tr_free(w->btris);
+    tr_free(w->front);
     tr_free(w);
 }
 
@@ -318,6 +322,22 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
         (out) = last_ci;                                                            \
     } while (0)
 
+    /* Lit normals on front faces, turned toward the camera where POV-Ray
+     * would mirror them (povlight_front_normal). */
+    bool turn = normals && !w->in_proto;
+    if (turn) {
+        if (tr_grow((void **)&w->front, &w->cap_front, span, 1) != 0)
+            return -1;
+        memset(w->front, 0, span);
+        for (size_t i = 0; i < nt; i++) {
+            const scene_tri *t = &tris[i];
+            if (povlight_front_facing(&w->light, to_eye, verts[t->v[0]].pos, verts[t->v[1]].pos,
+                                      verts[t->v[2]].pos))
+                for (int k = 0; k < 3; k++)
+                    w->front[t->v[k] - lo] = 1;
+        }
+    }
+
     /* Pass 1: index every used vertex, keep the faces GL would draw. */
     size_t kept = 0;
     for (size_t i = 0; i < nt; i++) {
@@ -342,6 +362,10 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
                         if (!finite3f(n) || (n[0] == 0 && n[1] == 0 && n[2] == 0)) {
                             static const float up[3] = {0, 0, 1}; /* POV-Ray normalises */
                             memcpy(ukey + 3, up, sizeof up);
+                        } else if (turn && w->front[v - lo]) {
+                            float tn[3];
+                            povlight_front_normal(&w->light, to_eye, sv->pos, n, tn);
+                            memcpy(ukey + 3, tn, 3 * sizeof *ukey);
                         } else {
                             memcpy(ukey + 3, n, 3 * sizeof *ukey);
                         }
@@ -478,11 +502,15 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
         w->light.s->materials[look->material].two_sided) {
         /* GL_BACK's material on the faces' inner side (see the file
          * comment); one texture for the whole mesh, in the first colour. */
-        outbuf_puts(ob, "interior_texture{");
-        povlight_texture(&w->light, ob, look, c0, 1);
-        if (look->fog)
-            outbuf_puts(ob, "texture{rgl_fog}");
-        outbuf_puts(ob, "}\n");
+        if (look->fog) { /* a layered texture enters by name only */
+            outbuf_puts(ob, "#declare rgl_back=");
+            povlight_texture(&w->light, ob, look, c0, 1);
+            outbuf_puts(ob, "texture{rgl_fog}\ninterior_texture{rgl_back}\n");
+        } else {
+            outbuf_puts(ob, "interior_texture{");
+            povlight_texture_body(&w->light, ob, look, c0, 1);
+            outbuf_puts(ob, "}\n");
+        }
     }
     if (to_eye)
         put_matrix(ob, to_eye);
@@ -630,7 +658,7 @@ static int write_points(povwriter *w, outbuf *ob, const scene *s)
  * their own space: each mesh carries its transform into it), placed by
  * `object{RGL_Lk matrix<...>}` in the union. The sphere of radius 0 keeps
  * a union of one mesh, or of none when every face was degenerate, valid. */
-static int write_protos(povwriter *w, outbuf *ob, const scene *s)
+static int write_protos_body(povwriter *w, outbuf *ob, const scene *s)
 {
     for (size_t p = 0; p < s->nprotos; p++) {
         const scene_proto *pr = &s->protos[p];
@@ -663,6 +691,14 @@ static int write_protos(povwriter *w, outbuf *ob, const scene *s)
         outbuf_puts(ob, "}\n");
     }
     return 0;
+}
+
+static int write_protos(povwriter *w, outbuf *ob, const scene *s)
+{
+    w->in_proto = true;
+    int rc = write_protos_body(w, ob, s);
+    w->in_proto = false;
+    return rc;
 }
 
 static void write_clip(outbuf *ob, const scene_camera *cam)

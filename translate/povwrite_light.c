@@ -11,7 +11,9 @@
  * light becomes up to two POV-Ray lights at its place: one of colour ls
  * (diffuse and highlights) and a shadowless one of colour ld - ls (POV-Ray
  * gives shadowless lights no highlights), so a light without specular
- * makes none. Attenuation maps onto fade_distance/fade_power (exact when
+ * makes none. Shadowless lights ignore a spotlight's cone, so a spot whose
+ * specular colour differs from its diffuse is one light of its diffuse
+ * colour (approximate). Attenuation maps onto fade_distance/fade_power (exact when
  * one of GL's linear and quadratic terms is zero), spots onto spotlight
  * with radius = falloff = cutoff and tightness = exponent (exact).
  */
@@ -118,14 +120,22 @@ static void scene_box(const scene *s, double lo[3], double hi[3])
  *   kl = 0: P = 2, D = sqrt(kc / kq), scale 1 / (2 kc) (exact);
  *   kq = 0: P = 1, D = kc / kl, scale 1 / (2 kc) (exact);
  *   kc = 0 with one term: a tiny D, 2 (D / d)^P (relative error D / d);
- *   otherwise P = 2 and D, scale fit GL's value and slope at d0, the
- *   light's distance to the scene's centre. */
+ *   otherwise a fit: for each P from 1 to 3, D and the scale match GL's
+ *   value and slope at d0 (the light's distance to the scene's centre),
+ *   and the P with the smallest largest relative error over the scene's
+ *   distances d0 - r .. d0 + r wins. */
 typedef struct fade {
     bool on;
     double distance, power, scale;
 } fade;
 
-static fade fit_fade(const float att[3], double d0)
+static double gl_att(const float att[3], double d)
+{
+    double q = att[0] + att[1] * d + att[2] * d * d;
+    return q > 0 ? 1 / q : 0;
+}
+
+static fade fit_fade(const float att[3], double d0, double r)
 {
     fade f = {false, 0, 0, 1};
     double kc = att[0], kl = att[1], kq = att[2];
@@ -146,13 +156,31 @@ static fade fit_fade(const float att[3], double d0)
         f.power = 2, f.distance = 1e-3 * d0;
         f.scale = 1 / (2 * kq * f.distance * f.distance);
     } else {
-        double a = kc + kl * d0 + kq * d0 * d0;
-        double g = (kl + 2 * kq * d0) / a;
-        double d2 = 2 * d0 / g - d0 * d0;
-        if (!(d2 > 0))
-            d2 = 1e-12 * d0 * d0;
-        f.power = 2, f.distance = sqrt(d2);
-        f.scale = (1 + d0 * d0 / d2) / (2 * a);
+        double a0 = gl_att(att, d0);
+        double gamma = d0 * (kl + 2 * kq * d0) * a0; /* -d a'(d) / a(d) at d0, in (0, 2) */
+        double lo = d0 - r > 0.05 * d0 ? d0 - r : 0.05 * d0, hi = d0 + r;
+        double best = INFINITY;
+        for (int i = 0; i <= 200; i++) {
+            double p = 1 + i * 0.01;
+            if (!(p > gamma * 1.0001))
+                continue;
+            double u = gamma / (p - gamma); /* (d0 / D)^P */
+            double dist = d0 / pow(u, 1 / p), sc = a0 * (1 + u) / 2;
+            double worst = 0;
+            for (int k = 0; k <= 16; k++) {
+                double d = lo + (hi - lo) * k / 16;
+                double want = gl_att(att, d), got = 2 * sc / (1 + pow(d / dist, p));
+                double e = fabs(got - want) / want;
+                worst = e > worst ? e : worst;
+            }
+            if (worst < best && isfinite(dist) && dist > 0) {
+                best = worst;
+                f.power = p, f.distance = dist, f.scale = sc;
+            }
+        }
+        if (!(best < INFINITY)) { /* cannot happen for kc, kl, kq > 0; stay safe */
+            f.power = 2, f.distance = d0, f.scale = a0;
+        }
     }
     return f;
 }
@@ -218,10 +246,18 @@ bool povlight_special(const scene_look *look)
 void povlight_texture(const povlight *pl, outbuf *ob, const scene_look *look, const float c[4],
                       int side)
 {
+    outbuf_puts(ob, "texture{");
+    povlight_texture_body(pl, ob, look, c, side);
+    outbuf_putc(ob, '}');
+}
+
+void povlight_texture_body(const povlight *pl, outbuf *ob, const scene_look *look,
+                           const float c[4], int side)
+{
     const scene *s = pl->s;
     double t = 1 - (double)c[3];
     t = t > 0 ? (t < 1 ? t : 1) : 0;
-    outbuf_puts(ob, "texture{pigment{");
+    outbuf_puts(ob, "pigment{");
     if (!look->lit || look->material < 0 || (size_t)look->material >= s->nmaterials) {
         /* Unlit: the #default finish makes the pixel the pigment. */
         double rgb[3] = {c[0], c[1], c[2]};
@@ -235,7 +271,7 @@ void povlight_texture(const povlight *pl, outbuf *ob, const scene_look *look, co
             outbuf_putc(ob, ',');
             put_num(ob, t);
         }
-        outbuf_puts(ob, ">}}");
+        outbuf_puts(ob, ">}");
         return;
     }
     const scene_material *m = &s->materials[look->material];
@@ -283,7 +319,102 @@ void povlight_texture(const povlight *pl, outbuf *ob, const scene_look *look, co
         outbuf_puts(ob, " reflection ");
         put_num(ob, pl->opt.reflection);
     }
-    outbuf_puts(ob, "}}");
+    outbuf_putc(ob, '}');
+}
+
+/* ---- Normals ----------------------------------------------------------------------------- */
+
+static void to_eye_point(const mat4 *m, const float p[3], double out[3])
+{
+    double in[4] = {p[0], p[1], p[2], 1}, o[4];
+    if (!m) {
+        for (int k = 0; k < 3; k++)
+            out[k] = p[k];
+        return;
+    }
+    mat4_apply(m, in, o);
+    for (int k = 0; k < 3; k++)
+        out[k] = o[k];
+}
+
+/* Unit vector from eye point p toward the camera. */
+static bool toward_camera(const scene_camera *cam, const double p[3], double v[3])
+{
+    for (int k = 0; k < 3; k++)
+        v[k] = cam->kind == SCENE_CAMERA_ORTHOGRAPHIC ? -cam->direction[k]
+                                                      : cam->location[k] - p[k];
+    double l = len3(v);
+    if (!(l > 0) || !isfinite(l))
+        return false;
+    for (int k = 0; k < 3; k++)
+        v[k] /= l;
+    return true;
+}
+
+bool povlight_front_facing(const povlight *pl, const mat4 *to_eye, const float a[3],
+                           const float b[3], const float c[3])
+{
+    double pa[3], pb[3], pc[3], v[3];
+    to_eye_point(to_eye, a, pa);
+    to_eye_point(to_eye, b, pb);
+    to_eye_point(to_eye, c, pc);
+    double e1[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
+    double e2[3] = {pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]};
+    double g[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                   e1[0] * e2[1] - e1[1] * e2[0]};
+    if (!toward_camera(&pl->s->camera, pa, v))
+        return false;
+    return g[0] * v[0] + g[1] * v[1] + g[2] * v[2] > 0;
+}
+
+/* GL lights a front face with its vertex normals as given, even where they
+ * face away from the viewer (near silhouettes, inside a torus); POV-Ray
+ * turns every shading normal toward the viewer, which there lights the
+ * surface from the wrong side. Tilting such a normal until it is just
+ * past perpendicular to the view changes N.L by (N.V)(V.L), small where
+ * N.V is, instead of mirroring it. */
+#define FRONT_MARGIN 0.02
+
+void povlight_front_normal(const povlight *pl, const mat4 *to_eye, const float pos[3],
+                           const float n[3], float out[3])
+{
+    memcpy(out, n, 3 * sizeof *out);
+    double p[3], v[3], ne[3];
+    to_eye_point(to_eye, pos, p);
+    if (!toward_camera(&pl->s->camera, p, v))
+        return;
+    mat4 inv;
+    if (to_eye) { /* eye normal = M^-T n */
+        if (!mat4_invert(to_eye, &inv))
+            return;
+        for (int k = 0; k < 3; k++)
+            ne[k] = n[0] * inv.m[k * 4 + 0] + n[1] * inv.m[k * 4 + 1] + n[2] * inv.m[k * 4 + 2];
+    } else {
+        for (int k = 0; k < 3; k++)
+            ne[k] = n[k];
+    }
+    double l = len3(ne);
+    if (!(l > 0) || !isfinite(l))
+        return;
+    for (int k = 0; k < 3; k++)
+        ne[k] /= l;
+    double d = ne[0] * v[0] + ne[1] * v[1] + ne[2] * v[2];
+    if (d >= FRONT_MARGIN)
+        return;
+    for (int k = 0; k < 3; k++)
+        ne[k] += (FRONT_MARGIN - d) * v[k];
+    /* Back to object space: n = M^T ne (POV-Ray normalises). */
+    double o[3];
+    if (to_eye) {
+        const double *m = to_eye->m;
+        for (int k = 0; k < 3; k++)
+            o[k] = m[k * 4 + 0] * ne[0] + m[k * 4 + 1] * ne[1] + m[k * 4 + 2] * ne[2];
+    } else {
+        memcpy(o, ne, sizeof o);
+    }
+    float f[3] = {fin(o[0]), fin(o[1]), fin(o[2])};
+    if (f[0] != 0 || f[1] != 0 || f[2] != 0)
+        memcpy(out, f, sizeof f);
 }
 
 /* ---- Fog -------------------------------------------------------------------------------- */
@@ -388,7 +519,7 @@ static void put_light(const povlight *pl, outbuf *ob, const scene_light *l, cons
     }
     fade fd = {false, 0, 0, 1};
     if (l->kind != SCENE_LIGHT_PARALLEL)
-        fd = fit_fade(l->attenuation, dist);
+        fd = fit_fade(l->attenuation, dist, pl->radius);
     double c[3] = {col[0] * fd.scale, col[1] * fd.scale, col[2] * fd.scale};
     outbuf_puts(ob, "light_source{");
     put_vec(ob, loc);
@@ -455,6 +586,15 @@ void povlight_lights(const povlight *pl, outbuf *ob)
         for (int k = 0; k < 3; k++) {
             spec[k] = l->specular[k];
             rest[k] = (double)l->color[k] - l->specular[k];
+        }
+        if (l->kind == SCENE_LIGHT_SPOT && nonzero3(rest)) {
+            /* POV-Ray's shadowless lights ignore the spot cone: a spot is
+             * one light of its diffuse colour, its highlights those of a
+             * specular colour equal to it (approximate; noted). */
+            for (int k = 0; k < 3; k++) {
+                spec[k] = l->color[k];
+                rest[k] = 0;
+            }
         }
         if (nonzero3(spec))
             put_light(pl, ob, l, spec, false);

@@ -33,10 +33,25 @@ bool povlight_special(const scene_look *look);
 void povlight_texture(const povlight *pl, outbuf *ob, const scene_look *look, const float c[4],
                       int side);
 
+/* The same without the texture{ } around it (for interior_texture{ }). */
+void povlight_texture_body(const povlight *pl, outbuf *ob, const scene_look *look,
+                           const float c[4], int side);
+
 /* The fog layer of a mesh whose object space goes to eye space by to_eye
  * (NULL: already eye space), declared as `name`:
  * `#declare name=texture{...}` and a newline. */
 void povlight_fog_declare(const povlight *pl, outbuf *ob, const char *name, const mat4 *to_eye);
+
+/* Whether a triangle (a, b, c in object space, counter-clockwise front
+ * first) shows its front to the camera, through to_eye (NULL: eye space). */
+bool povlight_front_facing(const povlight *pl, const mat4 *to_eye, const float a[3],
+                           const float b[3], const float c[3]);
+
+/* The normal n (object space) of a vertex at pos on a front-facing lit
+ * face, turned just far enough toward the camera that POV-Ray does not
+ * flip it (see the .c); out = n when it faces the camera already. */
+void povlight_front_normal(const povlight *pl, const mat4 *to_eye, const float pos[3],
+                           const float n[3], float out[3]);
 
 /* The light_source statements of the scene's GL lights. */
 void povlight_lights(const povlight *pl, outbuf *ob);

@@ -41,6 +41,13 @@
  *                        beyond T as 64+8*d (bright), per channel
  *   --at X,Y             print both pixels at X,Y (0-based, top row 0);
  *                        may be repeated
+ *   --shadow X0,Y0,X1,Y1,X2,Y2,X3,Y3,F
+ *                        a shadow that B shows and A does not: the mean
+ *                        brightness (r+g+b)/3 of B in the box X0..X1,
+ *                        Y0..Y1 (inclusive) is at most F times that of B
+ *                        in the box X2..X3, Y2..Y3, while A's ratio is at
+ *                        least 0.95 (the boxes alike in A); prints the four
+ *                        means and both ratios
  */
 #include <errno.h>
 #include <math.h>
@@ -73,14 +80,32 @@ typedef struct options {
     const char *diff_path;
     int nprobes;
     int probe[MAX_PROBES][2];
+    bool have_shadow;
+    int shadow_box[8];
+    double shadow_max;
     const char *a_path, *b_path;
 } options;
+
+/* Mean of (r + g + b) / 3 over the box x0..x1, y0..y1 (clipped to the
+ * image); -1 when the box misses it. */
+static double box_mean(const image *img, const int *box)
+{
+    double sum = 0;
+    size_t n = 0;
+    for (int y = box[1]; y <= box[3] && y < img->h; y++)
+        for (int x = box[0]; x <= box[2] && x < img->w; x++) {
+            const uint8_t *p = img->rgb + ((size_t)y * img->w + x) * 3;
+            sum += (p[0] + p[1] + p[2]) / 3.0;
+            n++;
+        }
+    return n ? sum / (double)n : -1;
+}
 
 static void usage(FILE *f)
 {
     fputs("usage: imgcmp [--tol T] [--min-match F] [--max-mean M] [--min-silhouette S]\n"
           "              [--max-core N] [--background R,G,B] [--check-gamma] [--diff OUT.png]\n"
-          "              [--at X,Y]... A.png B.png\n",
+          "              [--at X,Y]... [--shadow X0,Y0,X1,Y1,X2,Y2,X3,Y3,F] A.png B.png\n",
           f);
 }
 
@@ -315,6 +340,22 @@ static int parse_args(int argc, char **argv, options *o)
             } else if (strcmp(a, "--background") == 0) {
                 bad = parse_ints(v, o->bg, 3, 0, 255);
                 o->have_bg = true;
+            } else if (strcmp(a, "--shadow") == 0) {
+                /* eight integers, then the ratio after the last comma */
+                const char *comma = strrchr(v, ',');
+                char ints[128];
+                size_t n = comma ? (size_t)(comma - v) : 0;
+                bad = !comma || n >= sizeof ints;
+                if (!bad) {
+                    memcpy(ints, v, n);
+                    ints[n] = '\0';
+                    bad = parse_ints(ints, o->shadow_box, 8, 0, 1 << 20) ||
+                          parse_double(comma + 1, &o->shadow_max);
+                }
+                bad = bad || o->shadow_box[0] > o->shadow_box[2] ||
+                      o->shadow_box[1] > o->shadow_box[3] || o->shadow_box[4] > o->shadow_box[6] ||
+                      o->shadow_box[5] > o->shadow_box[7];
+                o->have_shadow = true;
             } else if (strcmp(a, "--diff") == 0) {
                 o->diff_path = v;
             } else if (strcmp(a, "--at") == 0) {
@@ -504,6 +545,20 @@ int main(int argc, char **argv)
                pb[1], pb[2]);
     }
 
+    double shadow_ratio[2] = {0, 0};
+    if (o.have_shadow) {
+        const image *im[2] = {&a, &b};
+        for (int k = 0; k < 2; k++) {
+            double in = box_mean(im[k], o.shadow_box), out = box_mean(im[k], o.shadow_box + 4);
+            shadow_ratio[k] = in >= 0 && out > 0 ? in / out : -1;
+            printf("shadow: %s box (%d,%d)-(%d,%d) mean %.2f, box (%d,%d)-(%d,%d) mean %.2f, "
+                   "ratio %.4f\n",
+                   k ? "B" : "A", o.shadow_box[0], o.shadow_box[1], o.shadow_box[2],
+                   o.shadow_box[3], in, o.shadow_box[4], o.shadow_box[5], o.shadow_box[6],
+                   o.shadow_box[7], out, shadow_ratio[k]);
+        }
+    }
+
     int rc = 0;
     if (o.diff_path) {
         const int gap = 4;
@@ -558,6 +613,10 @@ int main(int argc, char **argv)
         FAILED("mismatch core %zu > %ld pixels", core, o.max_core);
     if (o.check_gamma && !display_gamma_22(&b))
         FAILED("B is not tagged for display gamma 2.2");
+    if (o.have_shadow && !(shadow_ratio[1] >= 0 && shadow_ratio[1] <= o.shadow_max))
+        FAILED("no shadow in B: ratio %.4f > %.4f", shadow_ratio[1], o.shadow_max);
+    if (o.have_shadow && !(shadow_ratio[0] >= 0.95))
+        FAILED("A is darker in the shadow box too: ratio %.4f < 0.95", shadow_ratio[0]);
 #undef FAILED
     if (fails) {
         printf("FAIL: %s\n", why);
@@ -570,6 +629,8 @@ int main(int argc, char **argv)
             printf(", silhouette >= %.5f", o.min_sil);
         if (o.max_core >= 0)
             printf(", core <= %ld", o.max_core);
+        if (o.have_shadow)
+            printf(", shadow ratio <= %.4f", o.shadow_max);
         printf(")\n");
     }
     free(a.rgb);

@@ -25,7 +25,7 @@
  * test, smooth shading, lighting on, no light enabled yet. The view is
  * shifted by a fraction of a pixel so that no edge runs through pixel
  * centres. */
-static void lit_begin(int w, int h)
+static inline void lit_begin(int w, int h)
 {
     glViewport(0, 0, w, h);
     glMatrixMode(GL_PROJECTION);
@@ -45,7 +45,7 @@ static void lit_begin(int w, int h)
  * GL_COLOR_MATERIAL): a smooth function of the normal. */
 static int lit_vertex_colours;
 
-static void lit_vertex(float nx, float ny, float nz, float x, float y, float z)
+static inline void lit_vertex(float nx, float ny, float nz, float x, float y, float z)
 {
     if (lit_vertex_colours)
         glColor4f(0.5f + 0.45f * nx, 0.5f + 0.45f * ny, 0.6f - 0.35f * nz, 1.0f);
@@ -55,7 +55,7 @@ static void lit_vertex(float nx, float ny, float nz, float x, float y, float z)
 
 /* Sphere of radius r at (cx, cy, cz), outward normals, counter-clockwise
  * seen from outside. */
-static void lit_sphere(float cx, float cy, float cz, float r)
+static inline void lit_sphere(float cx, float cy, float cz, float r)
 {
     glBegin(GL_TRIANGLES);
     for (int i = 0; i < LIT_STACKS; i++) {
@@ -83,7 +83,7 @@ static void lit_sphere(float cx, float cy, float cz, float r)
 
 /* Torus around the axis (ax, ay, az) through (cx, cy, cz): ring radius R,
  * tube radius r, outward normals. The axis is the ring's normal. */
-static void lit_torus(float cx, float cy, float cz, float R, float r, float ax, float ay, float az)
+static inline void lit_torus(float cx, float cy, float cz, float R, float r, float ax, float ay, float az)
 {
     /* An orthonormal frame (u, v, a) from the axis. */
     double a[3] = {ax, ay, az}, l = sqrt(ax * ax + ay * ay + az * az);
@@ -125,7 +125,7 @@ static void lit_torus(float cx, float cy, float cz, float R, float r, float ax, 
 
 /* A material: ambient and diffuse d, specular s (grey), shininess, on
  * GL_FRONT_AND_BACK. */
-static void lit_material(float r, float g, float b, float s, float shininess)
+static inline void lit_material(float r, float g, float b, float s, float shininess)
 {
     GLfloat amb[4] = {r, g, b, 1}, dif[4] = {r, g, b, 1}, spe[4] = {s, s, s, 1};
     glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, amb);
@@ -136,7 +136,7 @@ static void lit_material(float r, float g, float b, float s, float shininess)
 
 /* The standard pair: a sphere on the left, a torus on the right tilted
  * toward the viewer. */
-static void lit_pair(void)
+static inline void lit_pair(void)
 {
     lit_sphere(-0.95f, 0.05f, -5.0f, 0.85f);
     lit_torus(1.0f, -0.05f, -5.2f, 0.62f, 0.26f, 0.3f, 0.8f, 0.55f);
