@@ -61,7 +61,7 @@ static inline uint64_t hash_words(const uint32_t *k, uint32_t words)
         0x9e3779b97f4a7c15ull, 0xc2b2ae3d27d4eb4full, 0x165667b19e3779f9ull,
         0xd6e8feb86659fd93ull, 0xff51afd7ed558ccdull, 0xc4ceb9fe1a85ec53ull,
         0x94d049bb133111ebull, 0xbf58476d1ce4e5b9ull, 0x27d4eb2f165667c5ull,
-        0x85ebca6b2f1a9d33ull,
+        0x85ebca6b2f1a9d33ull, 0xa0761d6478bd642full, 0xe7037ed1a0b428dbull,
     };
     uint64_t h = words;
     for (uint32_t i = 0; i < words; i++)

@@ -16,7 +16,7 @@
 
 #define DEDUP_NONE UINT32_MAX
 #define DEDUP_WINDOW (1u << 15) /* most slots; half of them hold keys */
-#define DEDUP_MAX_WORDS 10
+#define DEDUP_MAX_WORDS 12
 
 typedef struct dedup {
     uint32_t words;  /* key size in 32-bit words */

@@ -31,8 +31,8 @@
     X(NOTE_FOG, "approximated: the fog changed between fogged draws of a frame (the first fogged draw's fog is used)") \
     X(NOTE_BLEND, "approximated: a blend function other than GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA is drawn as that one") \
     X(NOTE_ALPHA_TEST, "not translated yet: alpha test") \
-    X(NOTE_TEXTURE, "not translated yet: textures (drawn untextured)") \
-    X(NOTE_TEXGEN, "not translated yet: texture coordinate generation") \
+    X(NOTE_TEXTURE, "approximated: texture environment GL_BLEND, GL_ADD or GL_COMBINE drawn as GL_MODULATE; 3D and cube-map textures not translated") \
+    X(NOTE_TEX_SAMPLING, "approximated: textures are sampled with their magnification filter from level 0 (no mipmaps, no minification filter, mirrored repeat as repeat)") \
     X(NOTE_LISTS, "not translated yet: display lists (calls skipped)") \
     X(NOTE_ARRAYS, "not translated yet: vertex arrays (draws skipped)") \
     X(NOTE_QUADRICS, "not translated yet: GLU quadrics (skipped)") \

@@ -9,6 +9,9 @@
  */
 #include "frame.h"
 
+#include "pngout.h"
+#include "povwrite_texture.h"
+
 #include <stdio.h>
 #include <string.h>
 
@@ -196,4 +199,13 @@ rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result
 int translator_write_pov(translator *t, outbuf *ob, const pov_frame_info *info)
 {
     return povwriter_scene(t->writer, ob, &t->scene, info);
+}
+
+int translator_write_images(translator *t, const char *dir)
+{
+    const povtex_image *im;
+    for (size_t i = 0; (im = povwriter_image(t->writer, i)) != NULL; i++)
+        if (pngout_place(dir, im->name, im->rgba, im->width, im->height, im->alpha) != 0)
+            return -1;
+    return 0;
 }

@@ -154,6 +154,11 @@ void interp_default_state(gl_state *st)
     a->hint.perspective = a->hint.point = a->hint.line = a->hint.polygon = a->hint.fog =
         GL_DONT_CARE;
     a->texture.env_mode = GL_MODULATE;
+    for (int i = 0; i < 4; i++) {
+        a->texture.gen_mode[i] = GL_EYE_LINEAR;
+        for (int k = 0; k < 4; k++)
+            a->texture.obj_plane[i][k] = a->texture.eye_plane[i][k] = i == k && i < 2;
+    }
 
     for (int i = 0; i < INTERP_NMODES; i++)
         st->depth[i] = 0;

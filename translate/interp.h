@@ -45,6 +45,7 @@
 #define INTERP_MAX_LIGHTS 8
 #define INTERP_MAX_VIEWPORT 16384 /* Mesa's GL_MAX_VIEWPORT_DIMS */
 #define INTERP_MAX_LIST_NESTING 64 /* GL_MAX_LIST_NESTING (GL 1.x table 6.28) */
+#define INTERP_MAX_TEXTURE_SIZE 16384 /* Mesa's GL_MAX_TEXTURE_SIZE */
 
 enum interp_matrix_mode { INTERP_MV, INTERP_PROJ, INTERP_TEX, INTERP_NMODES };
 
@@ -123,6 +124,10 @@ typedef struct gl_attribs {
         GLenum env_mode;
         float env_color[4];
         uint32_t binding_1d, binding_2d;
+        GLenum gen_mode[4];       /* s, t, r, q: GL_EYE_LINEAR, ... */
+        double obj_plane[4][4];   /* GL_OBJECT_PLANE */
+        double eye_plane[4][4];   /* GL_EYE_PLANE, times the inverse modelview
+                                     current at the glTexGen call */
     } texture; /* GL_TEXTURE_BIT */
 } gl_attribs;
 

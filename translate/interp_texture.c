@@ -1,44 +1,1005 @@
 /* interp_texture.c: texture objects, texture environment, texture
- * coordinate generation (issue 5). */
-#include "interp_internal.h"
+ * coordinate generation (issue 5).
+ *
+ * A texture object keeps its level-0 image converted to 8-bit RGBA as GL's
+ * texture environment sees it (GL 1.5 table 3.15: the components the base
+ * internal format lacks are given the values the environment functions
+ * treat as neutral), bottom row first, and which of the other levels are
+ * defined, so that a mipmapping minification filter on an incomplete
+ * texture turns texturing off, as in GL (3.8.10). Images are shared,
+ * reference counted, between the interpreters that copy a context's state
+ * (frame.c's carried state) and copied before a change.
+ *
+ * Pixels arrive tightly packed: the recorder applies GL_UNPACK_* when it
+ * records the call (record/entry_custom.c, pixels_put), so glPixelStorei
+ * is kept as state but never applied again here.
+ */
+#include <string.h>
 
-void interp_gentextures(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
-void interp_deletetextures(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
-void interp_teximage1d(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
-void interp_teximage2d(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
-void interp_texsubimage2d(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
-void interp_texparameter(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
-void interp_texgen(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
-void interp_pixelstore(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
-void interp_build2dmipmaps(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
+#include "interp_internal.h"
+#include "talloc.h"
+
+/* Pixels above this per image are refused (an error value, not an attempt
+ * to allocate what a hostile trace asks for). 16384 x 16384 RGBA is 1 GiB. */
+#define TEX_MAX_TEXELS (1u << 26)
+
+typedef struct tex_image {
+    unsigned refs;
+    int width, height;
+    uint64_t hash; /* of width, height and texels */
+    uint8_t rgba[]; /* bottom row first */
+} tex_image;
+
+typedef struct tex_obj {
+    uint32_t name;
+    GLenum target;        /* 0 until first bound */
+    GLenum base_format;   /* of level 0 */
+    tex_image *img;       /* level 0, or NULL */
+    uint32_t levels;      /* bit k: level k defined with the size GL expects */
+    GLenum wrap_s, wrap_t, min_filter, mag_filter;
+} tex_obj;
+
+struct interp_textures {
+    tex_obj *objs; /* named objects, unordered */
+    size_t n, cap;
+    tex_obj zero[2];         /* object 0 of GL_TEXTURE_1D, GL_TEXTURE_2D */
+    int32_t unpack[8];       /* glPixelStorei values, by pname - GL_UNPACK_SWAP_BYTES */
+    /* The last draw's scene texture, to skip rebuilding it per primitive. */
+    const tex_image *cached_img;
+    scene_texture cached;
+    int32_t cached_index;
+    const scene *cached_scene;
+    size_t cached_ntex;
+    /* Sphere map: the modelview whose inverse transpose is in nrm_mat. */
+    mat4 nrm_of, nrm_mat;
+    bool nrm_ok;
+};
+
+/* ---- Objects --------------------------------------------------------------------- */
+
+static void obj_defaults(tex_obj *o, uint32_t name)
+{
+    memset(o, 0, sizeof *o);
+    o->name = name;
+    o->wrap_s = o->wrap_t = GL_REPEAT;
+    o->min_filter = GL_NEAREST_MIPMAP_LINEAR;
+    o->mag_filter = GL_LINEAR;
+}
+
+static void image_release(tex_image *img)
+{
+    if (img && --img->refs == 0)
+        tr_free(img);
+}
+
+static interp_textures *textures(interp *ip)
+{
+    if (ip->tex)
+        return ip->tex;
+    interp_textures *t = tr_realloc(NULL, sizeof *t);
+    if (!t)
+        return NULL;
+    memset(t, 0, sizeof *t);
+    obj_defaults(&t->zero[0], 0);
+    obj_defaults(&t->zero[1], 0);
+    t->zero[0].target = GL_TEXTURE_1D;
+    t->zero[1].target = GL_TEXTURE_2D;
+    t->unpack[GL_UNPACK_ALIGNMENT - GL_UNPACK_SWAP_BYTES] = 4;
+    t->cached_index = -1;
+    ip->tex = t;
+    return t;
+}
+
+static tex_obj *find_obj(interp_textures *t, uint32_t name)
+{
+    for (size_t i = 0; i < t->n; i++)
+        if (t->objs[i].name == name)
+            return &t->objs[i];
+    return NULL;
+}
+
+/* The object `name` (created when create is set); object 0 is per target. */
+static tex_obj *get_obj(interp *ip, GLenum target, uint32_t name, bool create)
+{
+    interp_textures *t = textures(ip);
+    if (!t)
+        return NULL;
+    if (name == 0)
+        return &t->zero[target == GL_TEXTURE_1D ? 0 : 1];
+    tex_obj *o = find_obj(t, name);
+    if (o || !create)
+        return o;
+    if (tr_grow((void **)&t->objs, &t->cap, t->n + 1, sizeof *t->objs) != 0)
+        return NULL;
+    o = &t->objs[t->n++];
+    obj_defaults(o, name);
+    return o;
+}
+
+/* The object bound to target (GL_TEXTURE_1D or GL_TEXTURE_2D), else NULL. */
+static tex_obj *bound_obj(interp *ip, GLenum target, bool create)
+{
+    if (target == GL_TEXTURE_1D)
+        return get_obj(ip, target, ip->st.a.texture.binding_1d, create);
+    if (target == GL_TEXTURE_2D)
+        return get_obj(ip, target, ip->st.a.texture.binding_2d, create);
+    return NULL;
+}
+
+void interp_gentextures(interp *ip, const rgl_cmd *cmd)
+{
+    (void)ip;
+    (void)cmd; /* names are the program's; objects appear when bound */
+}
+
+void interp_deletetextures(interp *ip, const rgl_cmd *cmd)
+{
+    if (interp_reject_in_begin(ip))
+        return;
+    const rgl_arg *a = &cmd->arg[0];
+    interp_textures *t = ip->tex;
+    if (!t)
+        return;
+    for (uint32_t k = 0; k < a->count; k++) {
+        uint32_t name = (uint32_t)a->array[k];
+        if (name == 0)
+            continue;
+        tex_obj *o = find_obj(t, name);
+        if (!o)
+            continue;
+        image_release(o->img);
+        *o = t->objs[--t->n];
+        /* GL binds 0 in place of a deleted bound texture. */
+        if (ip->st.a.texture.binding_1d == name)
+            ip->st.a.texture.binding_1d = 0;
+        if (ip->st.a.texture.binding_2d == name)
+            ip->st.a.texture.binding_2d = 0;
+    }
+}
 
 void interp_bindtexture(interp *ip, const rgl_cmd *cmd)
 {
+    if (interp_reject_in_begin(ip))
+        return;
     GLenum target = arg_enum(cmd, 0);
     uint32_t name = (uint32_t)cmd->arg[1].v.u;
+    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) {
+        if (target != GL_TEXTURE_3D && target != GL_TEXTURE_CUBE_MAP)
+            interp_bad_enum(ip, "texture target", target);
+        return;
+    }
+    tex_obj *o = get_obj(ip, target, name, true);
+    if (!o) {
+        if (ip->scene)
+            ip->scene->failed = true;
+        return;
+    }
+    if (o->target && o->target != target) {
+        interp_bad_op(ip, "texture object bound to another target");
+        return;
+    }
+    o->target = target;
     if (target == GL_TEXTURE_1D)
         ip->st.a.texture.binding_1d = name;
-    else if (target == GL_TEXTURE_2D)
+    else
         ip->st.a.texture.binding_2d = name;
+}
+
+/* ---- Pixels ---------------------------------------------------------------------- */
+
+/* Components of an external format, and where each goes (0 R, 1 G, 2 B,
+ * 3 A, 4 luminance to R, G and B); 0 for a format not handled. */
+static int format_layout(GLenum format, int dst[4])
+{
+    switch (format) {
+    case GL_RED: dst[0] = 0; return 1;
+    case GL_GREEN: dst[0] = 1; return 1;
+    case GL_BLUE: dst[0] = 2; return 1;
+    case GL_ALPHA: dst[0] = 3; return 1;
+    case GL_LUMINANCE: dst[0] = 4; return 1;
+    case GL_LUMINANCE_ALPHA: dst[0] = 4; dst[1] = 3; return 2;
+    case GL_RGB: dst[0] = 0; dst[1] = 1; dst[2] = 2; return 3;
+    case GL_BGR: dst[0] = 2; dst[1] = 1; dst[2] = 0; return 3;
+    case GL_RGBA: dst[0] = 0; dst[1] = 1; dst[2] = 2; dst[3] = 3; return 4;
+    case GL_BGRA: dst[0] = 2; dst[1] = 1; dst[2] = 0; dst[3] = 3; return 4;
+    default: return 0;
+    }
+}
+
+static size_t type_bytes(GLenum type)
+{
+    switch (type) {
+    case GL_UNSIGNED_BYTE: case GL_BYTE: return 1;
+    case GL_UNSIGNED_SHORT: case GL_SHORT: return 2;
+    case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT: return 4;
+    default: return 0;
+    }
+}
+
+/* Component k of type at p as GL converts it to [0, 1] (GL 1.5 table 2.9;
+ * signed values below 0 clamp to 0 in a fixed-point texture). */
+static float component(const uint8_t *p, GLenum type)
+{
+    switch (type) {
+    case GL_UNSIGNED_BYTE: return p[0] / 255.0f;
+    case GL_BYTE: return (2.0f * (int8_t)p[0] + 1) / 255.0f;
+    case GL_UNSIGNED_SHORT: return (uint16_t)(p[0] | p[1] << 8) / 65535.0f;
+    case GL_SHORT: return (2.0f * (int16_t)(p[0] | p[1] << 8) + 1) / 65535.0f;
+    case GL_UNSIGNED_INT: {
+        uint32_t u = (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
+        return (float)(u / 4294967295.0);
+    }
+    case GL_INT: {
+        int32_t i = (int32_t)((uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 |
+                              (uint32_t)p[3] << 24);
+        return (float)((2.0 * i + 1) / 4294967295.0);
+    }
+    default: { /* GL_FLOAT */
+        uint32_t u = (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
+        float f;
+        memcpy(&f, &u, sizeof f);
+        return f;
+    }
+    }
+}
+
+/* The base internal format (GL 1.5 table 3.15) of an internal format, or 0. */
+static GLenum base_format(int32_t internal)
+{
+    switch (internal) {
+    case 1: case GL_LUMINANCE: case GL_LUMINANCE4: case GL_LUMINANCE8: case GL_LUMINANCE12:
+    case GL_LUMINANCE16:
+        return GL_LUMINANCE;
+    case 2: case GL_LUMINANCE_ALPHA: case GL_LUMINANCE4_ALPHA4: case GL_LUMINANCE6_ALPHA2:
+    case GL_LUMINANCE8_ALPHA8: case GL_LUMINANCE12_ALPHA4: case GL_LUMINANCE12_ALPHA12:
+    case GL_LUMINANCE16_ALPHA16:
+        return GL_LUMINANCE_ALPHA;
+    case 3: case GL_RGB: case GL_R3_G3_B2: case GL_RGB4: case GL_RGB5: case GL_RGB8: case GL_RGB10:
+    case GL_RGB12: case GL_RGB16:
+        return GL_RGB;
+    case 4: case GL_RGBA: case GL_RGBA2: case GL_RGBA4: case GL_RGB5_A1: case GL_RGBA8:
+    case GL_RGB10_A2: case GL_RGBA12: case GL_RGBA16:
+        return GL_RGBA;
+    case GL_ALPHA: case GL_ALPHA4: case GL_ALPHA8: case GL_ALPHA12: case GL_ALPHA16:
+        return GL_ALPHA;
+    case GL_INTENSITY: case GL_INTENSITY4: case GL_INTENSITY8: case GL_INTENSITY12:
+    case GL_INTENSITY16:
+        return GL_INTENSITY;
+    default:
+        return 0;
+    }
+}
+
+static uint8_t to_u8(float f)
+{
+    f = clamp01(f);
+    return (uint8_t)(f * 255.0f + 0.5f);
+}
+
+/* Converts w x h pixels of format/type at src (tightly packed, bottom row
+ * first) into RGBA texels of base format `base` at dst. */
+static void convert_pixels(uint8_t *dst, const uint8_t *src, size_t n, GLenum format, GLenum type,
+                           GLenum base)
+{
+    int layout[4] = {0, 0, 0, 0};
+    int nc = format_layout(format, layout);
+    size_t tb = type_bytes(type);
+    for (size_t i = 0; i < n; i++, src += (size_t)nc * tb, dst += 4) {
+        float c[4] = {0, 0, 0, 1};
+        for (int k = 0; k < nc; k++) {
+            float v = component(src + (size_t)k * tb, type);
+            if (layout[k] == 4)
+                c[0] = c[1] = c[2] = v;
+            else
+                c[layout[k]] = v;
+        }
+        /* Table 3.15: which components the texel keeps. The others take
+         * the neutral value of MODULATE (1), so that MODULATE and the
+         * writer's image need no case of their own. */
+        switch (base) {
+        case GL_LUMINANCE: c[1] = c[2] = c[0]; c[3] = 1; break;
+        case GL_LUMINANCE_ALPHA: c[1] = c[2] = c[0]; break;
+        case GL_INTENSITY: c[1] = c[2] = c[3] = c[0]; break;
+        case GL_ALPHA: c[0] = c[1] = c[2] = 1; break;
+        case GL_RGB: c[3] = 1; break;
+        default: break;
+        }
+        for (int k = 0; k < 4; k++)
+            dst[k] = to_u8(c[k]);
+    }
+}
+
+static uint64_t image_hash(const tex_image *img)
+{
+    uint64_t h = 0xcbf29ce484222325ull; /* FNV-1a, 64 bits */
+    uint32_t dims[2] = {(uint32_t)img->width, (uint32_t)img->height};
+    const uint8_t *d = (const uint8_t *)dims;
+    for (size_t i = 0; i < sizeof dims; i++)
+        h = (h ^ d[i]) * 0x100000001b3ull;
+    size_t n = (size_t)img->width * (size_t)img->height * 4;
+    for (size_t i = 0; i < n; i++)
+        h = (h ^ img->rgba[i]) * 0x100000001b3ull;
+    return h;
+}
+
+/* The texel bytes of pixel resource `id` holding exactly `need` bytes, or
+ * NULL after a diagnostic. */
+static const uint8_t *fetch_pixels(interp *ip, uint32_t id, size_t need)
+{
+    if (!ip->res_fn) {
+        interp_diag(ip, DIAG_IGNORED, "texture image: no resources to read pixels #%u from", id);
+        return NULL;
+    }
+    rgl_resource res;
+    rgl_error err;
+    memset(&err, 0, sizeof err);
+    if (ip->res_fn(ip->res_ctx, id, &res, &err) != RGL_OK) {
+        interp_diag(ip, DIAG_IGNORED, "texture image: pixels #%u unreadable (%s)", id,
+                    rgl_status_str(err.status));
+        return NULL;
+    }
+    if (res.kind != RGL_RES_BYTES || res.size != need) {
+        interp_diag(ip, DIAG_IGNORED,
+                    "texture image: pixels #%u hold %zu bytes, the image needs %zu", id,
+                    res.size, need);
+        return NULL;
+    }
+    return res.data;
+}
+
+/* Checks format, type and size as GL does; sets *bytes (tightly packed
+ * size). False after the GL error. */
+static bool check_image(interp *ip, GLenum format, GLenum type, int64_t w, int64_t h,
+                        size_t *bytes)
+{
+    int layout[4];
+    int nc = format_layout(format, layout);
+    if (!nc) {
+        interp_bad_enum(ip, "pixel format", format);
+        return false;
+    }
+    size_t tb = type_bytes(type);
+    if (!tb) {
+        interp_diag(ip, DIAG_IGNORED, "texture image: pixel type 0x%x not translated", type);
+        return false;
+    }
+    if (w < 0 || h < 0 || w > INTERP_MAX_TEXTURE_SIZE || h > INTERP_MAX_TEXTURE_SIZE ||
+        (uint64_t)w * (uint64_t)h > TEX_MAX_TEXELS) {
+        interp_diag(ip, DIAG_GL_INVALID_VALUE,
+                    "invalid value: texture of %lld x %lld texels (at most %d per side, %u in all)",
+                    (long long)w, (long long)h, INTERP_MAX_TEXTURE_SIZE, TEX_MAX_TEXELS);
+        return false;
+    }
+    *bytes = (size_t)w * (size_t)h * (size_t)nc * tb;
+    return true;
+}
+
+/* The level-k size GL expects below a level-0 size. */
+static int64_t level_size(int64_t s0, int k)
+{
+    int64_t s = s0 >> k;
+    return s > 0 ? s : 1;
+}
+
+/* Sets level `level` of o from w x h pixels (resource id, 0: none). */
+static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t internal, int64_t w,
+                          int64_t h, int32_t border, GLenum format, GLenum type, uint32_t id)
+{
+    if (interp_reject_in_begin(ip))
+        return;
+    if (target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D)
+        return;
+    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) {
+        interp_bad_enum(ip, "texture target", target);
+        return;
+    }
+    GLenum base = base_format(internal);
+    if (!base) {
+        interp_bad_value(ip, "texture internal format");
+        return;
+    }
+    if (level < 0 || level > 31 || (border != 0 && border != 1)) {
+        interp_bad_value(ip, "texture level or border");
+        return;
+    }
+    size_t bytes;
+    if (!check_image(ip, format, type, w, h, &bytes))
+        return;
+    tex_obj *o = bound_obj(ip, target, true);
+    if (!o) {
+        if (ip->scene)
+            ip->scene->failed = true;
+        return;
+    }
+    if (level > 0) {
+        /* Only whether the chain is complete matters (POV-Ray has no mipmaps). */
+        bool fits = o->img && w - 2 * border == level_size(o->img->width, level) &&
+                    h - (target == GL_TEXTURE_2D ? 2 * border : 0) ==
+                        level_size(o->img->height, level);
+        if (fits)
+            o->levels |= 1u << level;
+        else
+            o->levels &= ~(1u << level);
+        return;
+    }
+    image_release(o->img);
+    o->img = NULL;
+    o->levels = 0;
+    o->base_format = base;
+    int64_t iw = w - 2 * border, ih = target == GL_TEXTURE_2D ? h - 2 * border : 1;
+    if (iw <= 0 || ih <= 0 || !id)
+        return; /* an image with no texels, or undefined contents: no texturing */
+    const uint8_t *px = fetch_pixels(ip, id, bytes);
+    if (!px)
+        return;
+    tex_image *img = tr_realloc(NULL, sizeof *img + (size_t)w * (size_t)h * 4);
+    if (!img) {
+        if (ip->scene)
+            ip->scene->failed = true;
+        return;
+    }
+    img->refs = 1;
+    img->width = (int)iw;
+    img->height = (int)ih;
+    int layout[4];
+    size_t ps = (size_t)format_layout(format, layout) * type_bytes(type);
+    /* A border is dropped: POV-Ray has no border texels. */
+    for (int64_t y = 0; y < ih; y++)
+        convert_pixels(img->rgba + (size_t)y * (size_t)iw * 4,
+                       px + ((size_t)(y + (target == GL_TEXTURE_2D ? border : 0)) * (size_t)w +
+                             (size_t)border) * ps,
+                       (size_t)iw, format, type, base);
+    img->hash = image_hash(img);
+    o->img = img;
+    o->levels = 1;
+}
+
+void interp_teximage1d(interp *ip, const rgl_cmd *cmd)
+{
+    tex_image_set(ip, arg_enum(cmd, 0), (int32_t)cmd->arg[1].v.i, (int32_t)cmd->arg[2].v.i,
+                  cmd->arg[3].v.i, 1, (int32_t)cmd->arg[4].v.i, arg_enum(cmd, 5),
+                  arg_enum(cmd, 6), (uint32_t)cmd->arg[7].v.u);
+}
+
+void interp_teximage2d(interp *ip, const rgl_cmd *cmd)
+{
+    tex_image_set(ip, arg_enum(cmd, 0), (int32_t)cmd->arg[1].v.i, (int32_t)cmd->arg[2].v.i,
+                  cmd->arg[3].v.i, cmd->arg[4].v.i, (int32_t)cmd->arg[5].v.i, arg_enum(cmd, 6),
+                  arg_enum(cmd, 7), (uint32_t)cmd->arg[8].v.u);
+}
+
+/* A private copy of o's image before a change. */
+static tex_image *image_own(interp *ip, tex_obj *o)
+{
+    if (o->img->refs == 1)
+        return o->img;
+    size_t n = sizeof *o->img + (size_t)o->img->width * (size_t)o->img->height * 4;
+    tex_image *c = tr_realloc(NULL, n);
+    if (!c) {
+        if (ip->scene)
+            ip->scene->failed = true;
+        return NULL;
+    }
+    memcpy(c, o->img, n);
+    c->refs = 1;
+    o->img->refs--;
+    o->img = c;
+    return c;
+}
+
+void interp_texsubimage2d(interp *ip, const rgl_cmd *cmd)
+{
+    if (interp_reject_in_begin(ip))
+        return;
+    GLenum target = arg_enum(cmd, 0);
+    int64_t level = cmd->arg[1].v.i, x0 = cmd->arg[2].v.i, y0 = cmd->arg[3].v.i;
+    int64_t w = cmd->arg[4].v.i, h = cmd->arg[5].v.i;
+    GLenum format = arg_enum(cmd, 6), type = arg_enum(cmd, 7);
+    uint32_t id = (uint32_t)cmd->arg[8].v.u;
+    if (target != GL_TEXTURE_2D) {
+        interp_bad_enum(ip, "texture target", target);
+        return;
+    }
+    size_t bytes;
+    if (!check_image(ip, format, type, w, h, &bytes))
+        return;
+    tex_obj *o = bound_obj(ip, target, false);
+    if (level != 0)
+        return; /* other levels are not translated */
+    if (!o || !o->img) {
+        interp_bad_op(ip, "glTexSubImage2D on a texture with no level 0");
+        return;
+    }
+    if (x0 < 0 || y0 < 0 || x0 + w > o->img->width || y0 + h > o->img->height) {
+        interp_bad_value(ip, "glTexSubImage2D region outside the texture");
+        return;
+    }
+    if (w == 0 || h == 0 || !id)
+        return;
+    const uint8_t *px = fetch_pixels(ip, id, bytes);
+    tex_image *img = px ? image_own(ip, o) : NULL;
+    if (!img)
+        return;
+    int layout[4];
+    size_t ps = (size_t)format_layout(format, layout) * type_bytes(type);
+    for (int64_t y = 0; y < h; y++)
+        convert_pixels(img->rgba + ((size_t)(y0 + y) * (size_t)img->width + (size_t)x0) * 4,
+                       px + (size_t)y * (size_t)w * ps, (size_t)w, format, type, o->base_format);
+    img->hash = image_hash(img);
+}
+
+/* gluBuild2DMipmaps: level 0 is the image scaled to powers of two no
+ * larger than GL's limit (GLU 1.3 3.1, a box filter as gluScaleImage's),
+ * and the chain is complete. */
+void interp_build2dmipmaps(interp *ip, const rgl_cmd *cmd)
+{
+    GLenum target = arg_enum(cmd, 0);
+    int32_t internal = (int32_t)cmd->arg[1].v.i;
+    int64_t w = cmd->arg[2].v.i, h = cmd->arg[3].v.i;
+    GLenum format = arg_enum(cmd, 4), type = arg_enum(cmd, 5);
+    uint32_t id = (uint32_t)cmd->arg[6].v.u;
+    if (target != GL_TEXTURE_2D) {
+        interp_bad_enum(ip, "gluBuild2DMipmaps target", target);
+        return;
+    }
+    if (w < 1 || h < 1) {
+        interp_bad_value(ip, "gluBuild2DMipmaps size");
+        return;
+    }
+    tex_image_set(ip, target, 0, internal, w, h, 0, format, type, id);
+    tex_obj *o = bound_obj(ip, target, false);
+    if (!o || !o->img || o->img->width != w || o->img->height != h)
+        return;
+    /* GLU picks, per side, the power of two nearest in log scale, rounding
+     * up from halfway ((s - 1) rounded up to a power when s is not one
+     * already, then halved when s lies below 3/4 of it). */
+    int64_t sz[2] = {w, h}, p[2];
+    for (int k = 0; k < 2; k++) {
+        int64_t q = 1;
+        while (q < sz[k])
+            q <<= 1;
+        if (q != sz[k] && q / 2 >= 1 && sz[k] * 4 < q * 3)
+            q /= 2;
+        p[k] = q < INTERP_MAX_TEXTURE_SIZE ? q : INTERP_MAX_TEXTURE_SIZE;
+    }
+    if (p[0] != w || p[1] != h) {
+        tex_image *src = o->img;
+        tex_image *img = tr_realloc(NULL, sizeof *img + (size_t)p[0] * (size_t)p[1] * 4);
+        if (!img) {
+            if (ip->scene)
+                ip->scene->failed = true;
+            return;
+        }
+        img->refs = 1;
+        img->width = (int)p[0];
+        img->height = (int)p[1];
+        /* Box filter: each destination texel averages the source area it covers. */
+        double sx = (double)w / (double)p[0], sy = (double)h / (double)p[1];
+        for (int64_t y = 0; y < p[1]; y++)
+            for (int64_t x = 0; x < p[0]; x++) {
+                double acc[4] = {0, 0, 0, 0}, wsum = 0;
+                double x0 = x * sx, x1 = x0 + sx, y0 = y * sy, y1 = y0 + sy;
+                for (int64_t yy = (int64_t)y0; yy < y1 && yy < h; yy++)
+                    for (int64_t xx = (int64_t)x0; xx < x1 && xx < w; xx++) {
+                        double wx = fmin(x1, (double)xx + 1) - fmax(x0, (double)xx);
+                        double wy = fmin(y1, (double)yy + 1) - fmax(y0, (double)yy);
+                        double wt = wx * wy;
+                        const uint8_t *s = src->rgba + ((size_t)yy * (size_t)w + (size_t)xx) * 4;
+                        for (int c = 0; c < 4; c++)
+                            acc[c] += wt * s[c];
+                        wsum += wt;
+                    }
+                uint8_t *d = img->rgba + ((size_t)y * (size_t)p[0] + (size_t)x) * 4;
+                for (int c = 0; c < 4; c++)
+                    d[c] = (uint8_t)(wsum > 0 ? acc[c] / wsum + 0.5 : 0);
+            }
+        img->hash = image_hash(img);
+        image_release(src);
+        o->img = img;
+    }
+    o->levels = UINT32_MAX;
+}
+
+void interp_pixelstore(interp *ip, const rgl_cmd *cmd)
+{
+    GLenum pname = arg_enum(cmd, 0);
+    int64_t v = cmd->arg[1].v.i;
+    if (interp_reject_in_begin(ip))
+        return;
+    switch (pname) {
+    case GL_UNPACK_ALIGNMENT: case GL_PACK_ALIGNMENT:
+        if (v != 1 && v != 2 && v != 4 && v != 8) {
+            interp_bad_value(ip, "pixel store alignment");
+            return;
+        }
+        break;
+    case GL_UNPACK_SWAP_BYTES: case GL_UNPACK_LSB_FIRST: case GL_UNPACK_ROW_LENGTH:
+    case GL_UNPACK_SKIP_ROWS: case GL_UNPACK_SKIP_PIXELS: case GL_PACK_SWAP_BYTES:
+    case GL_PACK_LSB_FIRST: case GL_PACK_ROW_LENGTH: case GL_PACK_SKIP_ROWS:
+    case GL_PACK_SKIP_PIXELS: case GL_UNPACK_SKIP_IMAGES: case GL_UNPACK_IMAGE_HEIGHT:
+    case GL_PACK_SKIP_IMAGES: case GL_PACK_IMAGE_HEIGHT:
+        if (v < 0) {
+            interp_bad_value(ip, "negative pixel store value");
+            return;
+        }
+        break;
+    default:
+        interp_bad_enum(ip, "pixel store pname", pname);
+        return;
+    }
+    /* Kept for completeness: the trace's pixels are already unpacked. */
+    interp_textures *t = textures(ip);
+    if (t && pname >= GL_UNPACK_SWAP_BYTES && pname <= GL_UNPACK_ALIGNMENT)
+        t->unpack[pname - GL_UNPACK_SWAP_BYTES] = (int32_t)v;
+}
+
+/* ---- Parameters and environment ------------------------------------------------------- */
+
+void interp_texparameter(interp *ip, const rgl_cmd *cmd)
+{
+    if (interp_reject_in_begin(ip))
+        return;
+    GLenum target = arg_enum(cmd, 0), pname = arg_enum(cmd, 1);
+    const rgl_arg *pa = &cmd->arg[2];
+    double v = pa->kind == RGL_ARG_SCALAR ? arg_num(pa) : (pa->count ? pa->array[0] : 0);
+    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) {
+        if (target != GL_TEXTURE_3D && target != GL_TEXTURE_CUBE_MAP)
+            interp_bad_enum(ip, "texture target", target);
+        return;
+    }
+    GLenum e = (GLenum)v;
+    switch (pname) {
+    case GL_TEXTURE_WRAP_S: case GL_TEXTURE_WRAP_T:
+        if (e != GL_REPEAT && e != GL_CLAMP && e != GL_CLAMP_TO_EDGE &&
+            e != GL_CLAMP_TO_BORDER && e != GL_MIRRORED_REPEAT) {
+            interp_bad_enum(ip, "texture wrap mode", e);
+            return;
+        }
+        break;
+    case GL_TEXTURE_MAG_FILTER:
+        if (e != GL_NEAREST && e != GL_LINEAR) {
+            interp_bad_enum(ip, "texture magnification filter", e);
+            return;
+        }
+        break;
+    case GL_TEXTURE_MIN_FILTER:
+        if (e != GL_NEAREST && e != GL_LINEAR && e != GL_NEAREST_MIPMAP_NEAREST &&
+            e != GL_LINEAR_MIPMAP_NEAREST && e != GL_NEAREST_MIPMAP_LINEAR &&
+            e != GL_LINEAR_MIPMAP_LINEAR) {
+            interp_bad_enum(ip, "texture minification filter", e);
+            return;
+        }
+        break;
+    default:
+        return; /* border colour, priority, LOD: nothing POV-Ray shows */
+    }
+    tex_obj *o = bound_obj(ip, target, true);
+    if (!o) {
+        if (ip->scene)
+            ip->scene->failed = true;
+        return;
+    }
+    if (pname == GL_TEXTURE_WRAP_S)
+        o->wrap_s = e;
+    else if (pname == GL_TEXTURE_WRAP_T)
+        o->wrap_t = e;
+    else if (pname == GL_TEXTURE_MAG_FILTER)
+        o->mag_filter = e;
+    else
+        o->min_filter = e;
 }
 
 void interp_texenv(interp *ip, const rgl_cmd *cmd)
 {
-    GLenum pname = arg_enum(cmd, 1);
-    if (pname == GL_TEXTURE_ENV_MODE && cmd->arg[2].kind == RGL_ARG_SCALAR)
-        ip->st.a.texture.env_mode = (GLenum)arg_num(&cmd->arg[2]);
+    if (interp_reject_in_begin(ip))
+        return;
+    GLenum target = arg_enum(cmd, 0), pname = arg_enum(cmd, 1);
+    const rgl_arg *pa = &cmd->arg[2];
+    if (target != GL_TEXTURE_ENV) {
+        interp_bad_enum(ip, "texture environment target", target);
+        return;
+    }
+    if (pname == GL_TEXTURE_ENV_MODE) {
+        double v = pa->kind == RGL_ARG_SCALAR ? arg_num(pa) : (pa->count ? pa->array[0] : 0);
+        GLenum m = (GLenum)v;
+        if (m != GL_MODULATE && m != GL_REPLACE && m != GL_DECAL && m != GL_BLEND &&
+            m != GL_ADD && m != GL_COMBINE) {
+            interp_bad_enum(ip, "texture environment mode", m);
+            return;
+        }
+        ip->st.a.texture.env_mode = m;
+    } else if (pname == GL_TEXTURE_ENV_COLOR) {
+        if (pa->kind == RGL_ARG_SCALAR || pa->count < 4)
+            return;
+        bool is_int = pa->type == RGL_T_i;
+        for (int k = 0; k < 4; k++) {
+            double c = pa->array[k];
+            /* Integer colours map the full range to [-1, 1] (GL 2.14). */
+            ip->st.a.texture.env_color[k] =
+                clamp01((float)(is_int ? (2 * c + 1) / 4294967295.0 : c));
+        }
+    }
 }
 
+void interp_texgen(interp *ip, const rgl_cmd *cmd)
+{
+    if (interp_reject_in_begin(ip))
+        return;
+    GLenum coord = arg_enum(cmd, 0), pname = arg_enum(cmd, 1);
+    const rgl_arg *pa = &cmd->arg[2];
+    if (coord < GL_S || coord > GL_Q) {
+        interp_bad_enum(ip, "texture coordinate", coord);
+        return;
+    }
+    int c = (int)(coord - GL_S);
+    if (pname == GL_TEXTURE_GEN_MODE) {
+        double v = pa->kind == RGL_ARG_SCALAR ? arg_num(pa) : (pa->count ? pa->array[0] : 0);
+        GLenum m = (GLenum)v;
+        bool ok = m == GL_OBJECT_LINEAR || m == GL_EYE_LINEAR ||
+                  (m == GL_SPHERE_MAP && c < 2) ||
+                  ((m == GL_NORMAL_MAP || m == GL_REFLECTION_MAP) && c < 3);
+        if (!ok) {
+            interp_bad_enum(ip, "texture generation mode", m);
+            return;
+        }
+        ip->st.a.texture.gen_mode[c] = m;
+        return;
+    }
+    if (pname != GL_OBJECT_PLANE && pname != GL_EYE_PLANE) {
+        interp_bad_enum(ip, "glTexGen pname", pname);
+        return;
+    }
+    if (pa->kind == RGL_ARG_SCALAR || pa->count < 4) {
+        interp_bad_enum(ip, "glTexGen pname of a scalar call", pname);
+        return;
+    }
+    double p[4] = {pa->array[0], pa->array[1], pa->array[2], pa->array[3]};
+    if (pname == GL_OBJECT_PLANE) {
+        memcpy(ip->st.a.texture.obj_plane[c], p, sizeof p);
+        return;
+    }
+    /* GL 2.10.4: (p1 p2 p3 p4) M^-1, M the modelview now. */
+    mat4 inv;
+    if (!mat4_invert(interp_matrix(ip, INTERP_MV), &inv)) {
+        memset(ip->st.a.texture.eye_plane[c], 0, sizeof p);
+        return;
+    }
+    for (int j = 0; j < 4; j++) {
+        double s = 0;
+        for (int k = 0; k < 4; k++)
+            s += p[k] * inv.m[j * 4 + k]; /* column j of the inverse (column-major) */
+        ip->st.a.texture.eye_plane[c][j] = s;
+    }
+}
 
-int interp_textures_copy(interp *dst, const interp *src) { (void)dst; (void)src; return 0; }
-void interp_textures_free(interp *ip) { (void)ip; }
-int32_t interp_texture_for_draw(interp *ip) { (void)ip; return -1; }
+/* ---- Copies --------------------------------------------------------------------------- */
+
+int interp_textures_copy(interp *dst, const interp *src)
+{
+    interp_textures_free(dst);
+    const interp_textures *s = src->tex;
+    if (!s)
+        return 0;
+    interp_textures *t = tr_realloc(NULL, sizeof *t);
+    if (!t)
+        return -1;
+    *t = *s;
+    t->objs = NULL;
+    t->cap = 0;
+    t->cached_img = NULL;
+    t->cached_index = -1;
+    t->cached_scene = NULL;
+    t->nrm_ok = false;
+    if (s->n && tr_grow((void **)&t->objs, &t->cap, s->n, sizeof *t->objs) != 0) {
+        tr_free(t);
+        return -1;
+    }
+    memcpy(t->objs, s->objs, s->n * sizeof *t->objs);
+    for (size_t i = 0; i < t->n; i++)
+        if (t->objs[i].img)
+            t->objs[i].img->refs++;
+    for (int k = 0; k < 2; k++)
+        if (t->zero[k].img)
+            t->zero[k].img->refs++;
+    dst->tex = t;
+    return 0;
+}
+
+void interp_textures_free(interp *ip)
+{
+    interp_textures *t = ip->tex;
+    if (!t)
+        return;
+    for (size_t i = 0; i < t->n; i++)
+        image_release(t->objs[i].img);
+    for (int k = 0; k < 2; k++)
+        image_release(t->zero[k].img);
+    tr_free(t->objs);
+    tr_free(t);
+    ip->tex = NULL;
+}
+
+/* ---- Drawing -------------------------------------------------------------------------- */
+
+static bool mipmap_filter(GLenum f) { return f != GL_NEAREST && f != GL_LINEAR; }
+
+/* GL 3.8.10: complete when level 0 exists and, for a mipmapping
+ * minification filter, every level down to 1x1 has the expected size. */
+static bool complete(const tex_obj *o)
+{
+    if (!o->img)
+        return false;
+    if (!mipmap_filter(o->min_filter))
+        return true;
+    int top = 0;
+    while ((o->img->width >> top) > 1 || (o->img->height >> top) > 1)
+        top++;
+    for (int k = 0; k <= top && k < 32; k++)
+        if (!(o->levels & (1u << k)))
+            return false;
+    return true;
+}
+
+/* The texture unit's enabled target: GL_TEXTURE_2D wins over 1D. */
+static tex_obj *draw_obj(interp *ip)
+{
+    const uint8_t *c = ip->st.a.caps;
+    if (c[INTERP_CAP_TEXTURE_2D])
+        return bound_obj(ip, GL_TEXTURE_2D, false);
+    if (c[INTERP_CAP_TEXTURE_1D])
+        return bound_obj(ip, GL_TEXTURE_1D, false);
+    return NULL;
+}
+
+static bool clamps(GLenum wrap) { return wrap != GL_REPEAT && wrap != GL_MIRRORED_REPEAT; }
+
+int32_t interp_texture_for_draw(interp *ip)
+{
+    if (!ip->scene)
+        return -1;
+    const uint8_t *c = ip->st.a.caps;
+    if (!c[INTERP_CAP_TEXTURE_2D] && !c[INTERP_CAP_TEXTURE_1D])
+        return -1;
+    tex_obj *o = draw_obj(ip);
+    if (!o || !complete(o))
+        return -1;
+    const gl_attribs *a = &ip->st.a;
+    GLenum env = a->texture.env_mode;
+    if (env != GL_MODULATE && env != GL_REPLACE && env != GL_DECAL) {
+        interp_note(ip, DIAG_NOTE_TEXTURE);
+        env = GL_MODULATE;
+    }
+    if (o->wrap_s == GL_MIRRORED_REPEAT || o->wrap_t == GL_MIRRORED_REPEAT ||
+        mipmap_filter(o->min_filter) || o->min_filter != o->mag_filter)
+        interp_note(ip, DIAG_NOTE_TEX_SAMPLING);
+    scene_texture st;
+    memset(&st, 0, sizeof st);
+    st.width = o->img->width;
+    st.height = o->img->height;
+    st.hash = o->img->hash;
+    st.repeat_s = !clamps(o->wrap_s);
+    st.repeat_t = o->target == GL_TEXTURE_1D || !clamps(o->wrap_t);
+    st.linear = o->mag_filter == GL_LINEAR;
+    st.env_mode = env;
+    memcpy(st.env_color, a->texture.env_color, sizeof st.env_color);
+    /* Table 3.22: REPLACE takes the texel's colour unless the texture has
+     * only alpha; DECAL of RGB (and, undefined in GL, of the luminance
+     * formats, which Mesa treats as RGB) takes it outright. */
+    GLenum b = o->base_format;
+    st.colour_is_texel = (env == GL_REPLACE && b != GL_ALPHA) ||
+                         (env == GL_DECAL && b != GL_RGBA && b != GL_ALPHA);
+
+    interp_textures *t = ip->tex;
+    if (t->cached_img == o->img && t->cached_scene == ip->scene &&
+        t->cached_index >= 0 && (size_t)t->cached_index < ip->scene->ntextures &&
+        t->cached_ntex <= ip->scene->ntextures) {
+        const scene_texture *have = &ip->scene->textures[t->cached_index];
+        st.rgba = have->rgba;
+        if (memcmp(&st, have, sizeof st) == 0 && memcmp(&st, &t->cached, sizeof st) == 0)
+            return t->cached_index;
+    }
+    size_t n = (size_t)st.width * (size_t)st.height * 4;
+    st.rgba = tr_realloc(NULL, n);
+    if (!st.rgba) {
+        ip->scene->failed = true;
+        return -1;
+    }
+    memcpy(st.rgba, o->img->rgba, n);
+    int32_t idx = scene_add_texture(ip->scene, &st);
+    if (idx >= 0) {
+        t->cached_img = o->img;
+        t->cached_scene = ip->scene;
+        t->cached_index = idx;
+        t->cached_ntex = ip->scene->ntextures;
+        t->cached = ip->scene->textures[idx];
+    }
+    return idx;
+}
+
+/* Eye-space normal matrix (inverse transpose of the modelview), cached. */
+static bool normal_matrix(interp_textures *t, const mat4 *mv)
+{
+    if (t->nrm_ok && memcmp(&t->nrm_of, mv, sizeof *mv) == 0)
+        return true;
+    mat4 inv;
+    if (!mat4_invert(mv, &inv))
+        return false;
+    t->nrm_mat = mat4_transpose(&inv);
+    t->nrm_of = *mv;
+    t->nrm_ok = true;
+    return true;
+}
 
 void interp_vertex_texcoord(interp *ip, const double obj[4], const float nrm[3], float out[2])
 {
-    (void)obj;
-    (void)nrm;
-    const float *tc = ip->st.a.current.texcoord;
-    out[0] = tc[0];
-    out[1] = tc[1];
+    const gl_attribs *a = &ip->st.a;
+    double tc[4] = {a->current.texcoord[0], a->current.texcoord[1], a->current.texcoord[2],
+                    a->current.texcoord[3]};
+    const uint8_t *caps = a->caps;
+    bool gen[4] = {caps[INTERP_CAP_TEXTURE_GEN_S], caps[INTERP_CAP_TEXTURE_GEN_T],
+                   caps[INTERP_CAP_TEXTURE_GEN_R], caps[INTERP_CAP_TEXTURE_GEN_Q]};
+    if (gen[0] || gen[1] || gen[2] || gen[3]) {
+        const mat4 *mv = interp_matrix(ip, INTERP_MV);
+        double eye[4];
+        mat4_apply(mv, obj, eye);
+        double refl[3] = {0, 0, 0};
+        bool have_refl = false;
+        for (int c = 0; c < 4; c++) {
+            if (!gen[c])
+                continue;
+            GLenum m = a->texture.gen_mode[c];
+            if (m == GL_OBJECT_LINEAR || m == GL_EYE_LINEAR) {
+                const double *p = m == GL_OBJECT_LINEAR ? a->texture.obj_plane[c]
+                                                        : a->texture.eye_plane[c];
+                const double *v = m == GL_OBJECT_LINEAR ? obj : eye;
+                tc[c] = p[0] * v[0] + p[1] * v[1] + p[2] * v[2] + p[3] * v[3];
+                continue;
+            }
+            if (!have_refl) {
+                /* GL 2.10.4: u the unit vector to the vertex, n' the eye
+                 * normal (normalised only under GL_NORMALIZE, as GL). */
+                have_refl = true;
+                double u[3] = {eye[0], eye[1], eye[2]};
+                if (eye[3] != 0 && eye[3] != 1)
+                    for (int k = 0; k < 3; k++)
+                        u[k] /= eye[3];
+                double len = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+                if (len > 0)
+                    for (int k = 0; k < 3; k++)
+                        u[k] /= len;
+                double n[3] = {0, 0, 0};
+                if (ip->tex && normal_matrix(ip->tex, mv)) {
+                    const double *nm = ip->tex->nrm_mat.m;
+                    for (int k = 0; k < 3; k++)
+                        n[k] = nm[k] * nrm[0] + nm[4 + k] * nrm[1] + nm[8 + k] * nrm[2];
+                }
+                if (caps[INTERP_CAP_NORMALIZE]) {
+                    double nl = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+                    if (nl > 0)
+                        for (int k = 0; k < 3; k++)
+                            n[k] /= nl;
+                }
+                double d = n[0] * u[0] + n[1] * u[1] + n[2] * u[2];
+                for (int k = 0; k < 3; k++)
+                    refl[k] = u[k] - 2 * n[k] * d;
+                if (m == GL_NORMAL_MAP)
+                    memcpy(refl, n, sizeof refl);
+            }
+            if (m == GL_SPHERE_MAP) {
+                double mm = 2 * sqrt(refl[0] * refl[0] + refl[1] * refl[1] +
+                                     (refl[2] + 1) * (refl[2] + 1));
+                tc[c] = mm > 0 ? refl[c] / mm + 0.5 : 0.5;
+            } else {
+                tc[c] = refl[c];
+            }
+        }
+    }
+    const mat4 *tm = interp_matrix(ip, INTERP_TEX);
+    double r[4];
+    mat4_apply(tm, tc, r);
+    double q = r[3];
+    if (q == 0 || !isfinite(q))
+        q = 1;
+    out[0] = (float)(r[0] / q);
+    out[1] = (float)(r[1] / q);
 }

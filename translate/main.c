@@ -334,6 +334,9 @@ static void write_temp(job *j, translator *t, size_t k, slot *s, outbuf *ob)
                               (const char *const *)j->includes, j->o->look.nincludes);
     if (rc == 0)
         rc = outbuf_flush(ob);
+    errno = 0;
+    if (rc == 0)
+        rc = translator_write_images(t, j->o->outdir);
     int e = errno ? errno : ENOMEM;
     if (close(fd) != 0 && rc == 0) {
         rc = -1;

@@ -16,12 +16,14 @@
  */
 #include "povwrite.h"
 
+#include <GL/gl.h>
 #include <math.h>
 #include <string.h>
 
 #include "dedup.h"
 #include "povwrite_light.h"
 #include "povwrite_solid.h"
+#include "povwrite_texture.h"
 #include "talloc.h"
 
 #ifndef RAYGL_VERSION
@@ -69,6 +71,7 @@ struct povwriter {
     bool in_proto;       /* writing a display list's prototype: no eye space known */
     uint8_t *front;      /* per pool vertex of the mesh: on a front-facing face */
     size_t cap_front;
+    povtex tex;          /* the frame's texture images */
 };
 
 povwriter *povwriter_create(void)
@@ -94,7 +97,13 @@ void povwriter_destroy(povwriter *w)
     tr_free(w->bverts);
     tr_free(w->btris);
     tr_free(w->front);
+    povtex_finish(&w->tex);
     tr_free(w);
+}
+
+const povtex_image *povwriter_image(const povwriter *w, size_t i)
+{
+    return i < w->tex.n ? &w->tex.imgs[i] : NULL;
 }
 
 /* ---- Small writers ----------------------------------------------------------------- */
@@ -268,6 +277,38 @@ static void put_matrix(outbuf *ob, const mat4 *to_eye)
     outbuf_puts(ob, ">\n");
 }
 
+/* One texture{...} of a run with look and vertex colour c, textured by
+ * tx through `pigment` (povwrite_texture.h) when tx is not NULL: GL's
+ * texture environment (GL 1.5 table 3.22). */
+static void put_surface(povwriter *w, outbuf *ob, const scene_look *look,
+                        const scene_texture *tx, const char *pigment, const float c[4], int side)
+{
+    if (!tx) {
+        povlight_texture(&w->light, ob, look, c, side);
+        return;
+    }
+    if (tx->colour_is_texel) { /* REPLACE, DECAL of RGB: the texel, unlit */
+        outbuf_puts(ob, "texture{pigment{");
+        outbuf_puts(ob, pigment);
+        outbuf_puts(ob, "}}");
+        return;
+    }
+    if (tx->env_mode == GL_DECAL) {
+        /* DECAL of RGBA: the texel over the fragment's colour by its alpha;
+         * the image's alpha is POV-Ray's transmit, so the layer below
+         * shows through by 1 - alpha. */
+        outbuf_puts(ob, "texture{");
+        povlight_texture_body(&w->light, ob, look, c, side);
+        outbuf_puts(ob, "}texture{pigment{");
+        outbuf_puts(ob, pigment);
+        outbuf_puts(ob, "}}");
+        return;
+    }
+    outbuf_puts(ob, "texture{"); /* MODULATE: texel times the fragment's colour */
+    povlight_texture_mapped(&w->light, ob, look, c, side, pigment);
+    outbuf_putc(ob, '}');
+}
+
 #define UNSET UINT32_MAX
 #define BAD (UINT32_MAX - 1)
 
@@ -281,8 +322,14 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
                        const scene_tri *tris, size_t nt, const scene_look *look,
                        const mat4 *to_eye)
 {
-    bool normals = look->lit && !look->flat, vcolour = !look->flat;
-    uint32_t words = 3 + (normals ? 3 : 0) + (vcolour ? 4 : 0);
+    const scene *sc = w->light.s;
+    const scene_texture *tx = look->texture >= 0 && sc && (size_t)look->texture < sc->ntextures
+                                  ? &sc->textures[look->texture]
+                                  : NULL;
+    bool normals = look->lit && !look->flat;
+    /* A texel colour that replaces the fragment's needs no vertex colour. */
+    bool vcolour = !look->flat && !(tx && tx->colour_is_texel);
+    uint32_t words = 3 + (normals ? 3 : 0) + (vcolour ? 4 : 0) + (tx ? 2 : 0);
     dedup *vd = &w->vtx;
     if (nt == 0 || (to_eye && !mat4_finite(to_eye)))
         return 0;
@@ -307,6 +354,28 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
         dedup_reset(vd, span) != 0 || dedup_reset(&w->col, 64) != 0)
         return -1;
     memset(w->remap, 0xff, span * sizeof *w->remap); /* UNSET */
+
+    /* Textured: the image and how the coordinates map into it. */
+    int img = -1;
+    float uv_scale[2] = {1, 1}, uv_off[2] = {0, 0};
+    if (tx) {
+        float uvlo[2] = {INFINITY, INFINITY}, uvhi[2] = {-INFINITY, -INFINITY};
+        for (size_t i = 0; i < nt; i++)
+            for (int k = 0; k < 3; k++) {
+                const float *uv = verts[tris[i].v[k]].tex;
+                for (int a = 0; a < 2; a++)
+                    if (isfinite(uv[a])) {
+                        uvlo[a] = uv[a] < uvlo[a] ? uv[a] : uvlo[a];
+                        uvhi[a] = uv[a] > uvhi[a] ? uv[a] : uvhi[a];
+                    }
+            }
+        img = povtex_map(&w->tex, sc, look->texture, uvlo, uvhi, uv_scale, uv_off);
+        if (img < 0)
+            return -1;
+    }
+    char pigment[POVTEX_PIGMENT_MAX] = "";
+    if (tx && povtex_pigment(&w->tex, (size_t)img, tx, pigment) == 0)
+        return -1;
 
     /* Colours repeat in runs: remember the last one looked up. */
     uint32_t last_col[4] = {0}, last_ci = DEDUP_NONE;
@@ -373,6 +442,15 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
                     }
                     if (vcolour)
                         memcpy(ukey + nk, sv->color, 4 * sizeof *ukey);
+                    if (tx) {
+                        float uv[2];
+                        for (int a = 0; a < 2; a++) {
+                            uv[a] = sv->tex[a] * uv_scale[a] + uv_off[a];
+                            if (!isfinite(uv[a]))
+                                uv[a] = 0;
+                        }
+                        memcpy(ukey + nk + (vcolour ? 4 : 0), uv, sizeof uv);
+                    }
                     size_t before = vd->count;
                     if ((*r = dedup_index(vd, ukey)) == DEDUP_NONE)
                         return -1;
@@ -399,7 +477,7 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
                cz = e1[0] * e2[1] - e1[1] * e2[0];
         if (cx == 0 && cy == 0 && cz == 0)
             continue;
-        if (look->flat) {
+        if (look->flat && !(tx && tx->colour_is_texel)) {
             /* One colour, the provoking vertex's. */
             uint32_t ci;
             COLOUR_INDEX(verts[t->provoking].color, ci);
@@ -407,23 +485,30 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
         }
         kept++;
     }
+    if (tx && tx->colour_is_texel) {
+        static const float white[4] = {1, 1, 1, 1};
+        uint32_t ci;
+        COLOUR_INDEX(white, ci);
+        (void)ci;
+    }
 #undef COLOUR_INDEX
     if (kept == 0)
         return 0;
     bool colour_list = w->col.count > 1;
 
     /* Pass 2: the text. Each entry is written into one reservation. */
-    bool special = povlight_special(look);
-    if (look->fog) {
-        /* Each texture under the mesh's fog layer: a layered texture can
-         * only enter texture_list by name. */
-        povlight_fog_declare(&w->light, ob, "rgl_fog", to_eye);
+    bool special = povlight_special(look) || tx;
+    /* Layered textures (fog, DECAL of RGBA) enter texture_list by name only. */
+    bool named = look->fog || (tx && tx->env_mode == GL_DECAL && !tx->colour_is_texel);
+    if (named) {
+        if (look->fog)
+            povlight_fog_declare(&w->light, ob, "rgl_fog", to_eye);
         for (size_t i = 0; i < w->col.count; i++) {
             outbuf_puts(ob, "#declare rgl_t");
             outbuf_u64(ob, i);
             outbuf_putc(ob, '=');
-            povlight_texture(&w->light, ob, look, (const float *)(const void *)dedup_key(&w->col, i), 0);
-            outbuf_puts(ob, "texture{rgl_fog}\n");
+            put_surface(w, ob, look, tx, pigment, (const float *)(const void *)dedup_key(&w->col, i), 0);
+            outbuf_puts(ob, look->fog ? "texture{rgl_fog}\n" : "\n");
         }
     }
     outbuf_puts(ob, "mesh2{\nvertex_vectors{");
@@ -438,18 +523,32 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
             PUT_ENTRY(w, ob, ",\n<", (const float *)(const void *)(dedup_key(vd, i) + 3), ">");
         outbuf_puts(ob, "}\n");
     }
+    if (tx) { /* parallel to vertex_vectors: taken by face_indices */
+        outbuf_puts(ob, "uv_vectors{");
+        outbuf_u64(ob, vd->count);
+        uint32_t off = 3 + (normals ? 3 : 0) + (vcolour ? 4 : 0);
+        for (size_t i = 0; i < vd->count; i++) {
+            const float *uv = (const float *)(const void *)(dedup_key(vd, i) + off);
+            outbuf_puts(ob, ",\n<");
+            outbuf_f32(ob, uv[0]);
+            outbuf_putc(ob, ',');
+            outbuf_f32(ob, uv[1]);
+            outbuf_putc(ob, '>');
+        }
+        outbuf_puts(ob, "}\n");
+    }
     if (colour_list) {
         outbuf_puts(ob, "texture_list{");
         outbuf_u64(ob, w->col.count);
         for (size_t i = 0; i < w->col.count; i++) {
             const float *c = (const float *)(const void *)dedup_key(&w->col, i);
-            if (look->fog) {
+            if (named) {
                 outbuf_puts(ob, ",\ntexture{rgl_t");
                 outbuf_u64(ob, i);
                 outbuf_putc(ob, '}');
             } else if (special) {
                 outbuf_puts(ob, ",\n");
-                povlight_texture(&w->light, ob, look, c, 0);
+                put_surface(w, ob, look, tx, pigment, c, 0);
             } else {
                 PUT_ENTRY(w, ob, ",\ntexture{pigment{rgb<", c, ">}}");
             }
@@ -490,10 +589,10 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
     outbuf_puts(ob, "}\n");
     const float *c0 = (const float *)(const void *)dedup_key(&w->col, 0);
     if (!colour_list) {
-        if (look->fog)
+        if (named)
             outbuf_puts(ob, "texture{rgl_t0}");
         else if (special)
-            povlight_texture(&w->light, ob, look, c0, 0);
+            put_surface(w, ob, look, tx, pigment, c0, 0);
         else
             put_unlit_texture(ob, c0);
         outbuf_putc(ob, '\n');
@@ -751,6 +850,7 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
     outbuf_puts(ob, "}\n#default{finish{ambient 0 diffuse 0 emission 1}}\n");
 
     povlight_begin(&w->light, s, info ? info->options : NULL);
+    povtex_reset(&w->tex);
     bool no_shadows = w->light.opt.no_shadows;
     if (write_protos(w, ob, s) != 0)
         return -1;

@@ -44,6 +44,12 @@ void povwriter_destroy(povwriter *w);
  * out or the sink failed (ob->failed). */
 int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_info *info);
 
+/* The texture images the last povwriter_scene referred to (file names
+ * bare, to be written into the scene's folder; pngout.h), or NULL past
+ * the last. */
+typedef struct povtex_image povtex_image;
+const povtex_image *povwriter_image(const povwriter *w, size_t i);
+
 /* Writes the .ini that renders the scene: `povray DIR/NAME.ini` run from
  * the directory raygl2pov ran in (POV-Ray resolves INI paths against the
  * current directory). dir is the output folder as the user gave it;

@@ -251,13 +251,25 @@ void povlight_texture(const povlight *pl, outbuf *ob, const scene_look *look, co
     outbuf_putc(ob, '}');
 }
 
-void povlight_texture_body(const povlight *pl, outbuf *ob, const scene_look *look,
-                           const float c[4], int side)
+/* pigment NULL: the material's diffuse colour; else that pigment text (a
+ * texture image MODULATE multiplies the lit colour by), with the finish's
+ * terms unscaled and diffuse the mean of the material's (POV-Ray's diffuse
+ * is one number). */
+static void texture_body(const povlight *pl, outbuf *ob, const scene_look *look, const float c[4],
+                         int side, const char *pigment)
 {
     const scene *s = pl->s;
     double t = 1 - (double)c[3];
     t = t > 0 ? (t < 1 ? t : 1) : 0;
     outbuf_puts(ob, "pigment{");
+    if (pigment && (!look->lit || look->material < 0 || (size_t)look->material >= s->nmaterials)) {
+        outbuf_puts(ob, pigment);
+        outbuf_puts(ob, "}finish{emission ");
+        double e[3] = {c[0], c[1], c[2]};
+        put_rgb3(ob, e);
+        outbuf_putc(ob, '}');
+        return;
+    }
     if (!look->lit || look->material < 0 || (size_t)look->material >= s->nmaterials) {
         /* Unlit: the #default finish makes the pixel the pigment. */
         double rgb[3] = {c[0], c[1], c[2]};
@@ -283,21 +295,28 @@ void povlight_texture_body(const povlight *pl, outbuf *ob, const scene_look *loo
     const float *ke = cm & SCENE_CM_EMISSION ? c : m->emission[f];
     double p[3], amb[3], em[3];
     for (int k = 0; k < 3; k++) {
-        p[k] = kd[k] > MIN_PIGMENT ? kd[k] : MIN_PIGMENT;
+        p[k] = pigment ? 1 : kd[k] > MIN_PIGMENT ? kd[k] : MIN_PIGMENT;
         amb[k] = ka[k] * ((double)m->model_ambient[k] + pl->light_ambient[k]) / p[k];
         em[k] = ke[k] / p[k];
     }
-    outbuf_puts(ob, t > 0 ? "rgbt<" : "rgb<");
-    for (int k = 0; k < 3; k++) {
-        put_num(ob, p[k]);
-        if (k < 2)
+    if (pigment) {
+        outbuf_puts(ob, pigment);
+        outbuf_puts(ob, "}finish{diffuse ");
+        put_num(ob, ((double)kd[0] + kd[1] + kd[2]) / 3);
+        outbuf_puts(ob, " ambient ");
+    } else {
+        outbuf_puts(ob, t > 0 ? "rgbt<" : "rgb<");
+        for (int k = 0; k < 3; k++) {
+            put_num(ob, p[k]);
+            if (k < 2)
+                outbuf_putc(ob, ',');
+        }
+        if (t > 0) {
             outbuf_putc(ob, ',');
+            put_num(ob, t);
+        }
+        outbuf_puts(ob, ">}finish{diffuse 1 ambient ");
     }
-    if (t > 0) {
-        outbuf_putc(ob, ',');
-        put_num(ob, t);
-    }
-    outbuf_puts(ob, ">}finish{diffuse 1 ambient ");
     put_rgb3(ob, amb);
     /* Always named: the #default finish (unlit surfaces) has emission 1. */
     outbuf_puts(ob, " emission ");
@@ -320,6 +339,18 @@ void povlight_texture_body(const povlight *pl, outbuf *ob, const scene_look *loo
         put_num(ob, pl->opt.reflection);
     }
     outbuf_putc(ob, '}');
+}
+
+void povlight_texture_body(const povlight *pl, outbuf *ob, const scene_look *look,
+                           const float c[4], int side)
+{
+    texture_body(pl, ob, look, c, side, NULL);
+}
+
+void povlight_texture_mapped(const povlight *pl, outbuf *ob, const scene_look *look,
+                             const float c[4], int side, const char *pigment)
+{
+    texture_body(pl, ob, look, c, side, pigment);
 }
 
 /* ---- Normals ----------------------------------------------------------------------------- */

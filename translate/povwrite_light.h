@@ -37,6 +37,13 @@ void povlight_texture(const povlight *pl, outbuf *ob, const scene_look *look, co
 void povlight_texture_body(const povlight *pl, outbuf *ob, const scene_look *look,
                            const float c[4], int side);
 
+/* The body of a texture whose pigment is `pigment` (the text inside
+ * pigment{ }: a texture image) multiplied by GL's lit or unlit colour of
+ * look and c, as GL_MODULATE does (finish terms unscaled; lit, diffuse is
+ * the mean of the material's, exact for grey materials). */
+void povlight_texture_mapped(const povlight *pl, outbuf *ob, const scene_look *look,
+                             const float c[4], int side, const char *pigment);
+
 /* The fog layer of a mesh whose object space goes to eye space by to_eye
  * (NULL: already eye space), declared as `name`:
  * `#declare name=texture{...}` and a newline. */

@@ -1,0 +1,8 @@
+/* tex_clamp_edge_linear.c: the checkerboard with GL_CLAMP_TO_EDGE, GL_LINEAR, GL_MODULATE, internal format GL_RGB
+ * (tex_scene.h). */
+#include "harness.h"
+#include "tex_scene.h"
+
+static int draw(int w, int h) { return tex_case(w, h, GL_CLAMP_TO_EDGE, GL_LINEAR, GL_MODULATE, GL_RGB); }
+
+RGL_TEST_MAIN(draw)

@@ -1,0 +1,108 @@
+/* pngout.c: texture images as PNG files (pngout.h). */
+#include "pngout.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <png.h>
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "talloc.h"
+
+static atomic_uint tmp_serial;
+
+static int write_png(FILE *f, const uint8_t *rgba, int w, int h, bool alpha)
+{
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
+    if (!png)
+        return -1;
+    png_infop info = png_create_info_struct(png);
+    uint8_t *row = NULL;
+    if (!info || setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, info ? &info : NULL);
+        tr_free(row);
+        return -1;
+    }
+    size_t ch = alpha ? 4 : 3;
+    row = tr_realloc(NULL, (size_t)w * ch);
+    if (!row)
+        png_error(png, "out of memory");
+    png_init_io(png, f);
+    png_set_IHDR(png, info, (png_uint_32)w, (png_uint_32)h, 8,
+                 alpha ? PNG_COLOR_TYPE_RGBA : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_gAMA(png, info, 1.0 / 2.2);
+    png_write_info(png, info);
+    for (int y = h - 1; y >= 0; y--) { /* GL's bottom row is the file's last */
+        const uint8_t *s = rgba + (size_t)y * (size_t)w * 4;
+        for (int x = 0; x < w; x++)
+            memcpy(row + (size_t)x * ch, s + (size_t)x * 4, ch);
+        png_write_row(png, row);
+    }
+    png_write_end(png, NULL);
+    png_destroy_write_struct(&png, &info);
+    tr_free(row);
+    return 0;
+}
+
+int pngout_place(const char *dir, const char *name, const uint8_t *rgba, int w, int h,
+                 bool alpha)
+{
+    if (!name[0] || strchr(name, '/') || name[0] == '.' || w <= 0 || h <= 0) {
+        errno = EINVAL;
+        return -1;
+    }
+    size_t dl = strlen(dir), nl = strlen(name);
+    char *fin = tr_realloc(NULL, dl + nl + 2), *tmp = tr_realloc(NULL, dl + 80);
+    if (!fin || !tmp) {
+        tr_free(fin);
+        tr_free(tmp);
+        errno = ENOMEM;
+        return -1;
+    }
+    snprintf(fin, dl + nl + 2, "%s/%s", dir, name);
+    int rc = 0;
+    struct stat st;
+    if (stat(fin, &st) == 0 && S_ISREG(st.st_mode))
+        goto done; /* already there: the same content */
+    snprintf(tmp, dl + 80, "%s/.raygl2pov-%ld-tex%u.png.tmp", dir, (long)getpid(),
+             atomic_fetch_add(&tmp_serial, 1));
+    int fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0) {
+        rc = -1;
+        goto done;
+    }
+    FILE *f = fdopen(fd, "wb");
+    if (!f) {
+        int e = errno;
+        close(fd);
+        unlink(tmp);
+        errno = e;
+        rc = -1;
+        goto done;
+    }
+    errno = 0;
+    rc = write_png(f, rgba, w, h, alpha);
+    int e = errno ? errno : EIO;
+    if (fclose(f) != 0 && rc == 0) {
+        rc = -1;
+        e = errno;
+    }
+    if (rc == 0 && rename(tmp, fin) != 0) {
+        rc = -1;
+        e = errno;
+    }
+    if (rc != 0) {
+        unlink(tmp);
+        errno = e;
+    }
+done:
+    tr_free(fin);
+    tr_free(tmp);
+    return rc;
+}

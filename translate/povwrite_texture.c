@@ -1,0 +1,150 @@
+/* povwrite_texture.c: texture images of the POV-Ray writer (issue 5,
+ * docs/mapping.md "Textures").
+ *
+ * POV-Ray's image_map repeats the image or (`once`) shows nothing outside
+ * it; GL's clamp modes repeat the edge texels. A clamped axis is therefore
+ * written as a wider image: the texture's tiles that the mesh's
+ * coordinates reach, each filled with edge texels, plus one texel of edge
+ * on either side so that bilinear filtering at the border does not wrap.
+ * Coordinates are then remapped into it. Files are named by a hash of
+ * their content, so the same image is one file however many frames and
+ * meshes use it.
+ */
+#include "povwrite_texture.h"
+
+#include <GL/gl.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "talloc.h"
+
+/* A clamped axis spans at most this many tiles; coordinates further out
+ * are clamped to it (the texture's edge shows there anyway). */
+#define CLAMP_TILES_MAX 16
+/* ... and the padded image at most this many texels per side. */
+#define PADDED_MAX 16384
+
+void povtex_reset(povtex *pt)
+{
+    for (size_t i = 0; i < pt->n; i++)
+        tr_free(pt->imgs[i].rgba);
+    pt->n = 0;
+}
+
+void povtex_finish(povtex *pt)
+{
+    povtex_reset(pt);
+    tr_free(pt->imgs);
+    pt->imgs = NULL;
+    pt->cap = 0;
+}
+
+static uint64_t content_hash(const uint8_t *rgba, int w, int h, bool alpha)
+{
+    uint64_t x = 0xcbf29ce484222325ull; /* FNV-1a */
+    uint32_t head[3] = {(uint32_t)w, (uint32_t)h, alpha};
+    const uint8_t *b = (const uint8_t *)head;
+    for (size_t i = 0; i < sizeof head; i++)
+        x = (x ^ b[i]) * 0x100000001b3ull;
+    size_t n = (size_t)w * (size_t)h * 4;
+    for (size_t i = 0; i < n; i++)
+        x = (x ^ rgba[i]) * 0x100000001b3ull;
+    return x;
+}
+
+/* The tile range [lo, hi) of coordinates [a, b], at least [0, 1). */
+static void tiles(float a, float b, int32_t *lo, int32_t *hi)
+{
+    double l = isfinite(a) ? floor(a) : 0, h = isfinite(b) ? ceil(b) : 1;
+    l = l < 0 ? l : 0;
+    h = h > 1 ? h : 1;
+    if (l < -CLAMP_TILES_MAX / 2)
+        l = -CLAMP_TILES_MAX / 2;
+    if (h > CLAMP_TILES_MAX / 2 + 1)
+        h = CLAMP_TILES_MAX / 2 + 1;
+    *lo = (int32_t)l;
+    *hi = (int32_t)h;
+}
+
+int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const float uvhi[2],
+               float scale[2], float offset[2])
+{
+    const scene_texture *tx = &s->textures[t];
+    bool clamp[2] = {!tx->repeat_s, !tx->repeat_t};
+    int size[2] = {tx->width, tx->height};
+    int32_t lo[2] = {0, 0}, hi[2] = {1, 1};
+    int pad[2] = {0, 0}, out[2];
+    for (int k = 0; k < 2; k++) {
+        if (clamp[k]) {
+            tiles(uvlo[k], uvhi[k], &lo[k], &hi[k]);
+            while ((int64_t)(hi[k] - lo[k]) * size[k] + 2 > PADDED_MAX && hi[k] - lo[k] > 1) {
+                if (hi[k] > 1)
+                    hi[k]--;
+                else
+                    lo[k]++;
+            }
+            pad[k] = 1;
+        }
+        out[k] = (hi[k] - lo[k]) * size[k] + 2 * pad[k];
+        /* texel x of the file is texel x - pad + lo * size of the texture */
+        scale[k] = (float)((double)size[k] / out[k]);
+        offset[k] = (float)(((double)pad[k] - (double)lo[k] * size[k]) / out[k]);
+    }
+    for (size_t i = 0; i < pt->n; i++) {
+        const povtex_image *im = &pt->imgs[i];
+        if (im->texture == t && im->lo[0] == lo[0] && im->lo[1] == lo[1] &&
+            im->hi[0] == hi[0] && im->hi[1] == hi[1])
+            return (int)i;
+    }
+    if (tr_grow((void **)&pt->imgs, &pt->cap, pt->n + 1, sizeof *pt->imgs) != 0)
+        return -1;
+    size_t n = (size_t)out[0] * (size_t)out[1] * 4;
+    uint8_t *px = tr_realloc(NULL, n);
+    if (!px)
+        return -1;
+    /* Outside the texture the edge texel, as GL_CLAMP_TO_EDGE, and GL_CLAMP
+     * with nearest filtering, show (GL_CLAMP with GL_LINEAR would blend in
+     * the border colour: docs/mapping.md). */
+    bool alpha = false;
+    for (int y = 0; y < out[1]; y++) {
+        int64_t sy = (int64_t)y - pad[1] + (int64_t)lo[1] * size[1];
+        if (clamp[1])
+            sy = sy < 0 ? 0 : sy >= size[1] ? size[1] - 1 : sy;
+        else
+            sy = ((sy % size[1]) + size[1]) % size[1];
+        for (int x = 0; x < out[0]; x++) {
+            int64_t sx = (int64_t)x - pad[0] + (int64_t)lo[0] * size[0];
+            if (clamp[0])
+                sx = sx < 0 ? 0 : sx >= size[0] ? size[0] - 1 : sx;
+            else
+                sx = ((sx % size[0]) + size[0]) % size[0];
+            const uint8_t *src = tx->rgba + ((size_t)sy * (size_t)size[0] + (size_t)sx) * 4;
+            uint8_t *d = px + ((size_t)y * (size_t)out[0] + (size_t)x) * 4;
+            memcpy(d, src, 4);
+            alpha = alpha || d[3] != 255;
+        }
+    }
+    povtex_image *im = &pt->imgs[pt->n++];
+    memset(im, 0, sizeof *im);
+    im->rgba = px;
+    im->width = out[0];
+    im->height = out[1];
+    im->alpha = alpha && tx->env_mode == GL_DECAL;
+    im->texture = t;
+    memcpy(im->lo, lo, sizeof lo);
+    memcpy(im->hi, hi, sizeof hi);
+    snprintf(im->name, sizeof im->name, "rgl-tex-%016llx.png",
+             (unsigned long long)content_hash(px, out[0], out[1], im->alpha));
+    return (int)(pt->n - 1);
+}
+
+size_t povtex_pigment(const povtex *pt, size_t i, const scene_texture *t,
+                      char buf[POVTEX_PIGMENT_MAX])
+{
+    /* gamma 2.2 = assumed_gamma: the file's values are used as they are
+     * (docs/mapping.md "Gamma"); interpolate 2 is bilinear. */
+    int n = snprintf(buf, POVTEX_PIGMENT_MAX, "uv_mapping image_map{png \"%s\" gamma 2.2%s}",
+                     pt->imgs[i].name, t->linear ? " interpolate 2" : "");
+    return n > 0 && n < POVTEX_PIGMENT_MAX ? (size_t)n : 0;
+}

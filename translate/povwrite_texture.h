@@ -1,0 +1,51 @@
+/* povwrite_texture.h: the POV-Ray writer's texture images (issue 5):
+ * which image file a textured mesh maps, how its uv coordinates map into
+ * it, and the pigment that samples it. Private to the writer (povwrite.c).
+ */
+#ifndef RGL_POVWRITE_TEXTURE_H
+#define RGL_POVWRITE_TEXTURE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "outbuf.h"
+#include "scene.h"
+
+/* An image file the scene refers to: RGBA texels, bottom row first, named
+ * by its content (POVTEX_NAME_MAX with the NUL). */
+#define POVTEX_NAME_MAX 32
+typedef struct povtex_image {
+    char name[POVTEX_NAME_MAX];
+    uint8_t *rgba;
+    int width, height;
+    bool alpha; /* some texel is not opaque: the file keeps the alpha channel */
+    /* what it was made from, to reuse it within the frame */
+    int32_t texture;
+    int32_t lo[2], hi[2]; /* tile range of each clamped axis; 0, 1 otherwise */
+} povtex_image;
+
+typedef struct povtex {
+    povtex_image *imgs;
+    size_t n, cap;
+} povtex;
+
+void povtex_reset(povtex *pt);
+void povtex_finish(povtex *pt);
+
+/* How uv coordinates of a mesh map into the image of texture t: for a
+ * clamped axis the file holds the texture with its edge texels repeated
+ * over the tiles the coordinates [uvlo, uvhi] reach (POV-Ray's image_map
+ * only repeats), and u' = u * scale + offset. Returns the image's index
+ * in pt, or -1 when memory ran out. */
+int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const float uvhi[2],
+               float scale[2], float offset[2]);
+
+/* The text inside pigment{ } that samples image i of pt as GL samples
+ * texture t: `uv_mapping image_map{png "NAME" gamma 2.2 interpolate 2}`.
+ * Returns the number of bytes (< POVTEX_PIGMENT_MAX) written to buf. */
+#define POVTEX_PIGMENT_MAX 128
+size_t povtex_pigment(const povtex *pt, size_t i, const scene_texture *t,
+                      char buf[POVTEX_PIGMENT_MAX]);
+
+#endif
