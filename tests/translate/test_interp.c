@@ -558,6 +558,90 @@ static void test_attributes(void)
     interp_destroy(ip);
 }
 
+/* ---- Approximation notes ----------------------------------------------------------- */
+
+static void lit_triangle(seq *s)
+{
+    CMD(s, Begin, GL_TRIANGLES);
+    CMD(s, Vertex3f, 0, 0, -2);
+    CMD(s, Vertex3f, 1, 0, -2);
+    CMD(s, Vertex3f, 0, 1, -2);
+    CMD0(s, End);
+}
+
+/* Blend functions other than SRC_ALPHA, ONE_MINUS_SRC_ALPHA are drawn as
+ * that one with a note; ONE, ZERO (opaque) and ZERO, ONE (invisible) are
+ * exact and say nothing. */
+static void test_blend_notes(void)
+{
+    static const GLenum exact[][2] = {{GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA}, {GL_ONE, GL_ZERO}, {GL_ZERO, GL_ONE}};
+    static const GLenum approx[][2] = {{GL_ONE, GL_ONE}, {GL_SRC_ALPHA, GL_ONE}, {GL_ONE, GL_ONE_MINUS_SRC_ALPHA},
+                                       {GL_DST_COLOR, GL_ZERO}};
+    for (size_t i = 0; i < sizeof exact / sizeof *exact + sizeof approx / sizeof *approx; i++) {
+        bool is_exact = i < sizeof exact / sizeof *exact;
+        const GLenum *f = is_exact ? exact[i] : approx[i - sizeof exact / sizeof *exact];
+        interp *ip = fresh();
+        seq s;
+        seq_init(&s);
+        CMD(&s, Enable, GL_BLEND);
+        CMD(&s, BlendFunc, f[0], f[1]);
+        CMD(&s, Color4f, 1, 0, 0, 0.5);
+        lit_triangle(&s);
+        run(ip, &s);
+        CHECK_EQ_U(count(DIAG_NOTE_BLEND), is_exact ? 0 : 1);
+        interp_destroy(ip);
+    }
+    /* Blending off: the function does not matter. */
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, BlendFunc, GL_ONE, GL_ONE);
+    lit_triangle(&s);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_NOTE_BLEND), 0);
+    interp_destroy(ip);
+}
+
+/* Lit normals that GL uses at another length than 1 (POV-Ray always
+ * normalises) get a note; GL_NORMALIZE, and GL_RESCALE_NORMAL under a
+ * uniform scale, make them unit length and say nothing. */
+static void test_normal_notes(void)
+{
+    struct {
+        bool normalize, rescale;
+        double scale[3], len;
+        uint64_t notes;
+    } cases[] = {
+        {false, false, {1, 1, 1}, 1, 0},       /* unit as given */
+        {false, false, {1, 1, 1}, 2.5, 1},     /* long as given */
+        {true, false, {1, 1, 1}, 2.5, 0},      /* GL_NORMALIZE */
+        {false, false, {2, 2, 2}, 1, 1},       /* shrunk by the scale */
+        {false, true, {2, 2, 2}, 1, 0},        /* GL_RESCALE_NORMAL undoes it */
+        {false, true, {2, 1, 1}, 1, 1},        /* not for a non-uniform scale */
+        {true, false, {2, 0.5, 1}, 1, 0},      /* GL_NORMALIZE does */
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
+        interp *ip = fresh();
+        seq s;
+        seq_init(&s);
+        CMD(&s, Enable, GL_LIGHTING);
+        CMD(&s, Enable, GL_LIGHT0);
+        if (cases[i].normalize)
+            CMD(&s, Enable, GL_NORMALIZE);
+        if (cases[i].rescale)
+            CMD(&s, Enable, GL_RESCALE_NORMAL);
+        CMD(&s, Scalef, cases[i].scale[0], cases[i].scale[1], cases[i].scale[2]);
+        /* (0.6, 0, 0.8) has length 1 */
+        CMD(&s, Normal3f, 0.6 * cases[i].len, 0, 0.8 * cases[i].len);
+        lit_triangle(&s);
+        run(ip, &s);
+        if (count(DIAG_NOTE_NORMALS) != cases[i].notes)
+            fprintf(stderr, "normal case %zu\n", i);
+        CHECK_EQ_U(count(DIAG_NOTE_NORMALS), cases[i].notes);
+        interp_destroy(ip);
+    }
+}
+
 /* ---- Runs and clears ------------------------------------------------------------- */
 
 static void quad(seq *s)
@@ -756,6 +840,8 @@ int main(void)
     test_culling();
     test_polygon_mode();
     test_attributes();
+    test_blend_notes();
+    test_normal_notes();
     test_runs();
     test_painter();
     test_alloc_failure();
