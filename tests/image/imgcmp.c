@@ -39,6 +39,8 @@
  *   --diff OUT.png       write A | B | amplified difference side by side:
  *                        a difference within T shows as d*16 (dark), one
  *                        beyond T as 64+8*d (bright), per channel
+ *   --pair OUT.png       write A | B side by side (the docs' pictures,
+ *                        tools/make-doc-images.sh)
  *   --at X,Y             print both pixels at X,Y (0-based, top row 0);
  *                        may be repeated
  *   --shadow X0,Y0,X1,Y1,X2,Y2,X3,Y3,F
@@ -78,6 +80,7 @@ typedef struct options {
     int bg[3];
     bool check_gamma;
     const char *diff_path;
+    const char *pair_path;
     int nprobes;
     int probe[MAX_PROBES][2];
     bool have_shadow;
@@ -105,7 +108,7 @@ static void usage(FILE *f)
 {
     fputs("usage: imgcmp [--tol T] [--min-match F] [--max-mean M] [--min-silhouette S]\n"
           "              [--max-core N] [--background R,G,B] [--check-gamma] [--diff OUT.png]\n"
-          "              [--at X,Y]... [--shadow X0,Y0,X1,Y1,X2,Y2,X3,Y3,F] A.png B.png\n",
+          "              [--pair OUT.png] [--at X,Y]... [--shadow X0,Y0,X1,Y1,X2,Y2,X3,Y3,F] A.png B.png\n",
           f);
 }
 
@@ -358,6 +361,8 @@ static int parse_args(int argc, char **argv, options *o)
                 o->have_shadow = true;
             } else if (strcmp(a, "--diff") == 0) {
                 o->diff_path = v;
+            } else if (strcmp(a, "--pair") == 0) {
+                o->pair_path = v;
             } else if (strcmp(a, "--at") == 0) {
                 if (o->nprobes == MAX_PROBES) {
                     fprintf(stderr, "imgcmp: at most %d --at\n", MAX_PROBES);
@@ -587,6 +592,30 @@ int main(int argc, char **argv)
                 rc = 2;
             } else {
                 printf("diff image: %s\n", o.diff_path);
+            }
+            free(d);
+        }
+    }
+
+    if (o.pair_path && rc == 0) {
+        const int gap = 4;
+        int pw = 2 * w + gap;
+        uint8_t *d = malloc((size_t)pw * h * 3);
+        if (!d) {
+            fprintf(stderr, "imgcmp: out of memory\n");
+            rc = 2;
+        } else {
+            memset(d, 255, (size_t)pw * h * 3);
+            for (int y = 0; y < h; y++) {
+                uint8_t *row = d + (size_t)y * pw * 3;
+                memcpy(row, a.rgb + (size_t)y * w * 3, (size_t)w * 3);
+                memcpy(row + (size_t)(w + gap) * 3, b.rgb + (size_t)y * w * 3, (size_t)w * 3);
+            }
+            if (write_png(o.pair_path, d, pw, h) != 0) {
+                fprintf(stderr, "imgcmp: %s: cannot write\n", o.pair_path);
+                rc = 2;
+            } else {
+                printf("pair image: %s\n", o.pair_path);
             }
             free(d);
         }
