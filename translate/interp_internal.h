@@ -53,6 +53,7 @@ struct interp {
     mat4 prim_to_eye;   /* object -> camera eye space for this primitive */
     bool prim_in_eye;   /* prim_to_eye is applied to the vertices themselves */
     uint8_t prim_blend; /* SCENE_BLEND_* of the primitive */
+    bool prim_blend_mapped; /* its vertex colours carry another blend function as transmit */
     mat4 prim_clip;     /* object -> clip space of the primitive's own projection */
     uint8_t *edge;      /* edge flag of each vertex of the primitive */
     size_t cap_edge;

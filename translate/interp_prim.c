@@ -210,13 +210,39 @@ static bool setup_transform(interp *ip)
     return true;
 }
 
+/* GL_BLEND's weight (GL 1.x 4.1.7) for the factors that depend on the
+ * source alpha only. The colour factors, and the destination alpha (the
+ * framebuffer's alpha is not known here), return false. */
+static bool alpha_weight(GLenum f, double as, double *w)
+{
+    switch (f) {
+    case GL_ZERO:
+        *w = 0;
+        return true;
+    case GL_ONE:
+        *w = 1;
+        return true;
+    case GL_SRC_ALPHA:
+        *w = as;
+        return true;
+    case GL_ONE_MINUS_SRC_ALPHA:
+        *w = 1 - as;
+        return true;
+    default:
+        return false;
+    }
+}
+
 /* How much of a draw's colour covers what is behind it: GL_BLEND with
  * GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA covers alpha (POV-Ray's transmit
- * 1 - alpha is exactly that blend); other functions are drawn as that one,
- * with a note, except the two that mean opaque and invisible. */
-static uint8_t blend_mode(interp *ip)
+ * 1 - alpha is exactly that blend). Other functions of the source alpha
+ * are mapped onto transmit per vertex (map_blend) where the vertex colour
+ * is GL's final colour (unlit, or lit lines and points, untextured); the
+ * rest is drawn as GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, with a note. */
+static uint8_t blend_mode(interp *ip, GLenum mode)
 {
     const gl_attribs *a = &ip->st.a;
+    ip->prim_blend_mapped = false;
     if (!a->caps[INTERP_CAP_BLEND])
         return SCENE_BLEND_OPAQUE;
     GLenum src = a->color_buffer.blend_src, dst = a->color_buffer.blend_dst;
@@ -226,8 +252,39 @@ static uint8_t blend_mode(interp *ip)
         return SCENE_BLEND_OPAQUE;
     if (src == GL_ZERO && dst == GL_ONE)
         return SCENE_BLEND_INVISIBLE;
-    interp_note(ip, DIAG_NOTE_BLEND);
+    double w;
+    bool final_colour = !(a->caps[INTERP_CAP_LIGHTING] && mode > GL_LINE_STRIP) &&
+                        !a->caps[INTERP_CAP_TEXTURE_1D] && !a->caps[INTERP_CAP_TEXTURE_2D];
+    if (final_colour && alpha_weight(src, 0, &w) && alpha_weight(dst, 0, &w))
+        ip->prim_blend_mapped = true;
+    else
+        interp_note(ip, DIAG_NOTE_BLEND);
     return SCENE_BLEND_ALPHA;
+}
+
+/* GL shows ws c + wd behind; POV-Ray shows (1 - t) k + t behind for a
+ * pigment k with transmit t. So t = wd and k = ws c / (1 - wd), exact,
+ * except where wd = 1 (additive blending), which transmit cannot reach:
+ * there t = 127/128, which keeps all but 1/128 of what is behind (under
+ * 2/255), with a note. k may exceed 1: POV-Ray clamps only the pixel, as
+ * GL clamps the blended sum. */
+#define BLEND_MIN_COVER (1.0 / 128)
+
+static void map_blend(interp *ip, float c[4])
+{
+    const gl_attribs *a = &ip->st.a;
+    double ws = 0, wd = 0, as = c[3];
+    alpha_weight(a->color_buffer.blend_src, as, &ws);
+    alpha_weight(a->color_buffer.blend_dst, as, &wd);
+    double cover = 1 - wd;
+    if (cover < BLEND_MIN_COVER) {
+        cover = BLEND_MIN_COVER;
+        if (ws > 0)
+            interp_note(ip, DIAG_NOTE_BLEND_ADD);
+    }
+    for (int i = 0; i < 3; i++)
+        c[i] = (float)(c[i] * ws / cover);
+    c[3] = (float)cover;
 }
 
 static void begin_mode(interp *ip, GLenum mode)
@@ -243,7 +300,7 @@ static void begin_mode(interp *ip, GLenum mode)
         return;
     ip->prim_skip = false;
     ip->prim_first = ip->scene->nverts;
-    ip->prim_blend = blend_mode(ip);
+    ip->prim_blend = blend_mode(ip, mode);
 }
 
 void interp_begin(interp *ip, const rgl_cmd *cmd)
@@ -347,6 +404,8 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
     } else {
         interp_surface_colour(ip, v->color);
     }
+    if (ip->prim_blend_mapped)
+        map_blend(ip, v->color);
     if (ip->prim_blend == SCENE_BLEND_OPAQUE)
         v->color[3] = 1;
     else if (ip->prim_blend == SCENE_BLEND_INVISIBLE)

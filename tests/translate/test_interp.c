@@ -569,26 +569,57 @@ static void lit_triangle(seq *s)
     CMD0(s, End);
 }
 
-/* Blend functions other than SRC_ALPHA, ONE_MINUS_SRC_ALPHA are drawn as
- * that one with a note; ONE, ZERO (opaque) and ZERO, ONE (invisible) are
- * exact and say nothing. */
-static void test_blend_notes(void)
+/* Blend functions (GL 1.x 4.1.7) as transmit: GL shows ws c + wd behind,
+ * POV-Ray (1 - t) k + t behind. SRC_ALPHA, ONE_MINUS_SRC_ALPHA, ONE, ZERO
+ * (opaque) and ZERO, ONE (invisible) need nothing; other functions of the
+ * source alpha take t = wd, k = ws c / (1 - wd) in the vertex colour,
+ * exact but for additive blending (wd = 1: t = 127/128, noted); colour
+ * factors and lit surfaces are drawn as SRC_ALPHA, ONE_MINUS_SRC_ALPHA,
+ * noted. The triangle's colour is (1, 0.5, 0) with alpha 0.5. */
+static void test_blend(void)
 {
-    static const GLenum exact[][2] = {{GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA}, {GL_ONE, GL_ZERO}, {GL_ZERO, GL_ONE}};
-    static const GLenum approx[][2] = {{GL_ONE, GL_ONE}, {GL_SRC_ALPHA, GL_ONE}, {GL_ONE, GL_ONE_MINUS_SRC_ALPHA},
-                                       {GL_DST_COLOR, GL_ZERO}};
-    for (size_t i = 0; i < sizeof exact / sizeof *exact + sizeof approx / sizeof *approx; i++) {
-        bool is_exact = i < sizeof exact / sizeof *exact;
-        const GLenum *f = is_exact ? exact[i] : approx[i - sizeof exact / sizeof *exact];
+    static const struct {
+        GLenum src, dst;
+        bool lit;
+        float k0, alpha; /* the vertex colour's red and alpha */
+        uint64_t note, note_add;
+    } cases[] = {
+        {GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, false, 1, 0.5f, 0, 0},
+        {GL_ONE, GL_ZERO, false, 1, 1, 0, 0},
+        {GL_ZERO, GL_ONE, false, 1, 0, 0, 0},
+        {GL_ONE, GL_ONE_MINUS_SRC_ALPHA, false, 2, 0.5f, 0, 0},     /* premultiplied */
+        {GL_ONE_MINUS_SRC_ALPHA, GL_SRC_ALPHA, false, 1, 0.5f, 0, 0},
+        {GL_SRC_ALPHA, GL_ZERO, false, 0.5f, 1, 0, 0},
+        {GL_ZERO, GL_ONE_MINUS_SRC_ALPHA, false, 0, 0.5f, 0, 0},
+        {GL_SRC_ALPHA, GL_ONE, false, 64, 1.0f / 128, 0, 1},        /* additive */
+        {GL_ONE, GL_ONE, false, 128, 1.0f / 128, 0, 1},
+        {GL_DST_COLOR, GL_ZERO, false, 1, 0.5f, 1, 0},              /* colour factor */
+        {GL_ONE, GL_DST_ALPHA, false, 1, 0.5f, 1, 0},               /* framebuffer alpha */
+        {GL_ONE, GL_ONE, true, 0, 0, 1, 0},                         /* lit surface */
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
         interp *ip = fresh();
         seq s;
         seq_init(&s);
+        if (cases[i].lit) {
+            CMD(&s, Enable, GL_LIGHTING);
+            CMD(&s, Enable, GL_LIGHT0);
+        }
         CMD(&s, Enable, GL_BLEND);
-        CMD(&s, BlendFunc, f[0], f[1]);
-        CMD(&s, Color4f, 1, 0, 0, 0.5);
+        CMD(&s, BlendFunc, cases[i].src, cases[i].dst);
+        CMD(&s, Color4f, 1, 0.5, 0, 0.5);
         lit_triangle(&s);
         run(ip, &s);
-        CHECK_EQ_U(count(DIAG_NOTE_BLEND), is_exact ? 0 : 1);
+        if (count(DIAG_NOTE_BLEND) != cases[i].note || count(DIAG_NOTE_BLEND_ADD) != cases[i].note_add)
+            fprintf(stderr, "blend case %zu\n", i);
+        CHECK_EQ_U(count(DIAG_NOTE_BLEND), cases[i].note);
+        CHECK_EQ_U(count(DIAG_NOTE_BLEND_ADD), cases[i].note_add);
+        CHECK_EQ_U(sc.nverts, 3);
+        if (!cases[i].lit && sc.nverts == 3) {
+            CHECK_NEAR(sc.verts[0].color[0], cases[i].k0, 1e-5);
+            CHECK_NEAR(sc.verts[0].color[1], cases[i].k0 / 2, 1e-5);
+            CHECK_NEAR(sc.verts[0].color[3], cases[i].alpha, 1e-6);
+        }
         interp_destroy(ip);
     }
     /* Blending off: the function does not matter. */
@@ -596,9 +627,12 @@ static void test_blend_notes(void)
     seq s;
     seq_init(&s);
     CMD(&s, BlendFunc, GL_ONE, GL_ONE);
+    CMD(&s, Color4f, 1, 0.5, 0, 0.5);
     lit_triangle(&s);
     run(ip, &s);
-    CHECK_EQ_U(count(DIAG_NOTE_BLEND), 0);
+    CHECK_EQ_U(count(DIAG_NOTE_BLEND) + count(DIAG_NOTE_BLEND_ADD), 0);
+    if (sc.nverts == 3)
+        CHECK_NEAR(sc.verts[0].color[3], 1, 0);
     interp_destroy(ip);
 }
 
@@ -840,7 +874,7 @@ int main(void)
     test_culling();
     test_polygon_mode();
     test_attributes();
-    test_blend_notes();
+    test_blend();
     test_normal_notes();
     test_runs();
     test_painter();
