@@ -113,6 +113,7 @@ RAYGL_API void rayglDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLs
 RAYGL_API void rayglGenTextures(GLsizei n, GLuint *textures);
 RAYGL_API void rayglDeleteTextures(GLsizei n, const GLuint *textures);
 RAYGL_API void rayglBindTexture(GLenum target, GLuint texture);
+RAYGL_API void rayglPixelStorei(GLenum pname, GLint param);
 RAYGL_API void rayglTexImage1D(GLenum target, GLint level, GLint internalFormat, GLsizei width,
                                GLint border, GLenum format, GLenum type, const GLvoid *pixels);
 RAYGL_API void rayglTexImage2D(GLenum target, GLint level, GLint internalFormat, GLsizei width,

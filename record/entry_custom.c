@@ -195,6 +195,11 @@ typedef struct unpack_state {
 
 static unpack_state unpack_get(void)
 {
+    rgl_stream *s = rgl_tls_stream;
+    if (s && !rgl_live_context()) { /* what the program set through the recorder */
+        const int32_t *v = s->objs.unpack;
+        return (unpack_state){v[0] ? v[0] : 4, v[1], v[2], v[3]};
+    }
     unpack_state u = {0, 0, 0, 0};
     glGetIntegerv(GL_UNPACK_ALIGNMENT, &u.alignment);
     if (u.alignment != 1 && u.alignment != 2 && u.alignment != 4 && u.alignment != 8)
@@ -203,6 +208,24 @@ static unpack_state unpack_get(void)
     glGetIntegerv(GL_UNPACK_SKIP_ROWS, &u.skip_rows);
     glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &u.skip_pixels);
     return u;
+}
+
+/* Client state: executed at once, never compiled into a list (GL 1.x
+ * 5.4); kept for pixels_put when there is no context to ask. */
+RGL_EXPORT void rayglPixelStorei(GLenum pname, GLint param)
+{
+    rgl_stream *s;
+    if (rgl_reserve(&s, 1)) {
+        static const GLenum unpack[4] = {GL_UNPACK_ALIGNMENT, GL_UNPACK_ROW_LENGTH,
+                                         GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS};
+        for (int k = 0; k < 4; k++) {
+            bool ok = k == 0 ? param == 1 || param == 2 || param == 4 || param == 8 : param >= 0;
+            if (pname == unpack[k] && ok)
+                s->objs.unpack[k] = param;
+        }
+        RECORD_NOW(s, RGL_OP_PixelStorei, "ei", pname, param);
+    }
+    glPixelStorei(pname, param);
 }
 
 /* Writes the w x h image at pixels (laid out as the unpack state says) as a

@@ -82,6 +82,9 @@ typedef struct rgl_objects {
     size_t nlists, cap_lists;
     uint32_t bound[2];          /* texture bound to GL_TEXTURE_1D, GL_TEXTURE_2D */
     uint32_t next_texture_name; /* RayGL's own names when GL has no context */
+    /* GL_UNPACK_ALIGNMENT, ROW_LENGTH, SKIP_ROWS, SKIP_PIXELS as the program
+     * set them (alignment 0: GL's 4), for recording without a context. */
+    int32_t unpack[4];
     uint32_t next_list_name;
 } rgl_objects;
 

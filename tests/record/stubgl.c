@@ -116,6 +116,7 @@ void glDeleteTextures(GLsizei n, const GLuint *textures)
     arg_p(c, textures);
 }
 void glBindTexture(GLenum target, GLuint texture) { LOGV("glBindTexture", target, texture); }
+void glPixelStorei(GLenum pname, GLint param) { LOGV("glPixelStorei", pname, param); }
 void glTexImage1D(GLenum target, GLint level, GLint internalFormat, GLsizei width, GLint border,
                   GLenum format, GLenum type, const GLvoid *pixels)
 {

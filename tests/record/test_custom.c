@@ -13,6 +13,7 @@
 void test_custom(const char *dir);
 void test_alloc_failures(const char *dir);
 void test_too_large(const char *dir);
+void test_unpack(const char *dir);
 
 /* The BLOB argument of a decoded command of frame f, command i. */
 static const uint8_t *blob_of(rgl_reader *r, size_t f, size_t i, unsigned arg, size_t *n)
@@ -326,4 +327,55 @@ void test_too_large(const char *dir)
     }
     rayglRecordSetErrorHandler(NULL, NULL);
     unlink(path);
+}
+
+/* Without a context the recorder applies the unpack state the program set
+ * through it: alignment 1 (rows of 9 bytes), then row length, skipped
+ * rows and pixels at alignment 4. glPixelStorei is client state: while a
+ * list compiles it goes to the frame, not into the body. */
+void test_unpack(const char *dir)
+{
+    char path[128];
+    snprintf(path, sizeof path, "%s/unpack.raygl", dir);
+    CHECK(rayglRecordOpen(path) == 0);
+    GLubyte tight[18], big[4 * 16];
+    for (int i = 0; i < 18; i++)
+        tight[i] = (GLubyte)(i + 1);
+    for (int i = 0; i < 64; i++)
+        big[i] = (GLubyte)i;
+    rayglBindTexture(GL_TEXTURE_2D, 1);
+    rayglPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 3, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, tight);
+    /* rows of 5 RGB pixels = 15 bytes, padded to 16; the 2 x 2 image at
+     * pixel 2 of row 1: bytes 16 + 6 .. 16 + 11 and 32 + 6 .. 32 + 11 */
+    rayglPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    rayglPixelStorei(GL_UNPACK_ROW_LENGTH, 5);
+    rayglPixelStorei(GL_UNPACK_SKIP_ROWS, 1);
+    rayglPixelStorei(GL_UNPACK_SKIP_PIXELS, 2);
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, big);
+    rayglPixelStorei(GL_UNPACK_ALIGNMENT, 3); /* invalid: ignored */
+    rayglNewList(1, GL_COMPILE);
+    rayglPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    rayglEndList();
+    rayglFrameEnd();
+    rayglRecordClose();
+
+    rgl_reader *r = trace_open(path);
+    if (!r)
+        return;
+    rgl_resource res;
+    if (CHECK(rgl_reader_resource(r, 1, &res, NULL) == RGL_OK))
+        CHECK(res.kind == RGL_RES_BYTES && res.size == 18 && memcmp(res.data, tight, 18) == 0);
+    if (CHECK(rgl_reader_resource(r, 2, &res, NULL) == RGL_OK)) {
+        static const GLubyte want[12] = {22, 23, 24, 25, 26, 27, 38, 39, 40, 41, 42, 43};
+        CHECK(res.size == 12 && memcmp(res.data, want, 12) == 0);
+    }
+    rgl_frame_info fi;
+    trace_cmds f = trace_frame(r, 0, &fi);
+    CHECK(trace_cmds_count(&f, RGL_OP_PixelStorei) == 7); /* the list's too, run at once */
+    trace_cmds_free(&f);
+    trace_cmds body = trace_resource_cmds(r, 3);
+    CHECK(trace_cmds_count(&body, RGL_OP_PixelStorei) == 0);
+    trace_cmds_free(&body);
+    rgl_reader_destroy(r);
 }

@@ -21,6 +21,7 @@ void test_custom(const char *dir);
 void test_buffers(const char *dir);
 void test_alloc_failures(const char *dir);
 void test_too_large(const char *dir);
+void test_unpack(const char *dir);
 
 /* ---- Deterministic values ------------------------------------------------------- */
 
@@ -267,6 +268,7 @@ int main(void)
     test_buffers(dir);
     test_alloc_failures(dir);
     test_too_large(dir);
+    test_unpack(dir);
     if (!check_failures)
         rmdir(dir);
     return check_exit();
