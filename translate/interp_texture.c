@@ -37,6 +37,7 @@ typedef struct tex_obj {
     tex_image *img;       /* level 0, or NULL */
     uint32_t levels;      /* bit k: level k defined with the size GL expects */
     GLenum wrap_s, wrap_t, min_filter, mag_filter;
+    float border[4]; /* GL_TEXTURE_BORDER_COLOR */
 } tex_obj;
 
 struct interp_textures {
@@ -670,8 +671,14 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
             return;
         }
         break;
+    case GL_TEXTURE_BORDER_COLOR:
+        if (pa->kind == RGL_ARG_SCALAR || pa->count < 4) {
+            interp_bad_enum(ip, "texture parameter of a scalar call", pname);
+            return;
+        }
+        break;
     default:
-        return; /* border colour, priority, LOD: nothing POV-Ray shows */
+        return; /* priority, LOD: nothing POV-Ray shows */
     }
     tex_obj *o = bound_obj(ip, target, true);
     if (!o) {
@@ -679,7 +686,13 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
             ip->scene->failed = true;
         return;
     }
-    if (pname == GL_TEXTURE_WRAP_S)
+    if (pname == GL_TEXTURE_BORDER_COLOR) {
+        bool is_int = pa->type == RGL_T_i;
+        for (int k = 0; k < 4; k++) {
+            double c = pa->array[k];
+            o->border[k] = clamp01((float)(is_int ? (2 * c + 1) / 4294967295.0 : c));
+        }
+    } else if (pname == GL_TEXTURE_WRAP_S)
         o->wrap_s = e;
     else if (pname == GL_TEXTURE_WRAP_T)
         o->wrap_t = e;
@@ -880,6 +893,10 @@ int32_t interp_texture_for_draw(interp *ip)
     st.repeat_s = !clamps(o->wrap_s);
     st.repeat_t = o->target == GL_TEXTURE_1D || !clamps(o->wrap_t);
     st.linear = o->mag_filter == GL_LINEAR;
+    st.border_s = o->wrap_s == GL_CLAMP || o->wrap_s == GL_CLAMP_TO_BORDER;
+    st.border_t = o->target != GL_TEXTURE_1D &&
+                  (o->wrap_t == GL_CLAMP || o->wrap_t == GL_CLAMP_TO_BORDER);
+    memcpy(st.border, o->border, sizeof st.border);
     st.env_mode = env;
     memcpy(st.env_color, a->texture.env_color, sizeof st.env_color);
     /* Table 3.22: REPLACE takes the texel's colour unless the texture has

@@ -103,18 +103,26 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
     uint8_t *px = tr_realloc(NULL, n);
     if (!px)
         return -1;
-    /* Outside the texture the edge texel, as GL_CLAMP_TO_EDGE, and GL_CLAMP
-     * with nearest filtering, show (GL_CLAMP with GL_LINEAR would blend in
-     * the border colour: docs/mapping.md). */
+    /* Outside the texture the edge texel shows, as GL_CLAMP_TO_EDGE and
+     * nearest filtering give; GL_CLAMP with GL_LINEAR clamps the
+     * coordinate to the texture's edge, where the filter weighs the edge
+     * texel and the border colour half and half (GL 1.5 3.8.7, Mesa): that
+     * mix, per axis, outside. */
+    bool mix[2] = {tx->linear && tx->border_s, tx->linear && tx->border_t};
+    uint8_t border[4];
+    for (int k = 0; k < 4; k++)
+        border[k] = (uint8_t)(tx->border[k] * 255.0f + 0.5f);
     bool alpha = false;
     for (int y = 0; y < out[1]; y++) {
         int64_t sy = (int64_t)y - pad[1] + (int64_t)lo[1] * size[1];
+        bool outy = sy < 0 || sy >= size[1];
         if (clamp[1])
             sy = sy < 0 ? 0 : sy >= size[1] ? size[1] - 1 : sy;
         else
             sy = ((sy % size[1]) + size[1]) % size[1];
         for (int x = 0; x < out[0]; x++) {
             int64_t sx = (int64_t)x - pad[0] + (int64_t)lo[0] * size[0];
+            bool outx = sx < 0 || sx >= size[0];
             if (clamp[0])
                 sx = sx < 0 ? 0 : sx >= size[0] ? size[0] - 1 : sx;
             else
@@ -122,6 +130,12 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
             const uint8_t *src = tx->rgba + ((size_t)sy * (size_t)size[0] + (size_t)sx) * 4;
             uint8_t *d = px + ((size_t)y * (size_t)out[0] + (size_t)x) * 4;
             memcpy(d, src, 4);
+            for (int k = 0; k < 4; k++) {
+                if (mix[0] && outx)
+                    d[k] = (uint8_t)((d[k] + border[k] + 1) / 2);
+                if (mix[1] && outy)
+                    d[k] = (uint8_t)((d[k] + border[k] + 1) / 2);
+            }
             alpha = alpha || d[3] != 255;
         }
     }

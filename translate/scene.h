@@ -194,6 +194,9 @@ typedef struct scene_texture {
     int width, height;
     uint64_t hash;
     bool repeat_s, repeat_t; /* GL_REPEAT; else clamped */
+    bool border_s, border_t; /* clamped as GL_CLAMP (the border colour counts
+                                under linear filtering), not GL_CLAMP_TO_EDGE */
+    float border[4];         /* GL_TEXTURE_BORDER_COLOR */
     bool linear;             /* magnification GL_LINEAR */
     uint32_t env_mode;       /* GL_MODULATE, GL_REPLACE, GL_DECAL, GL_BLEND */
     float env_color[4];
