@@ -369,7 +369,11 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
                         uvhi[a] = uv[a] > uvhi[a] ? uv[a] : uvhi[a];
                     }
             }
-        img = povtex_map(&w->tex, sc, look->texture, uvlo, uvhi, uv_scale, uv_off);
+        /* The texels' alpha: DECAL blends by it; under blending it is the
+         * fragment's (MODULATE, and REPLACE of RGBA), POV-Ray's transmit. */
+        bool keep_alpha = (tx->env_mode == GL_DECAL && !tx->colour_is_texel) ||
+                          look->blend == SCENE_BLEND_ALPHA;
+        img = povtex_map(&w->tex, sc, look->texture, uvlo, uvhi, keep_alpha, uv_scale, uv_off);
         if (img < 0)
             return -1;
     }

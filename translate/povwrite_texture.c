@@ -68,7 +68,7 @@ static void tiles(float a, float b, int32_t *lo, int32_t *hi)
 }
 
 int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const float uvhi[2],
-               float scale[2], float offset[2])
+               bool keep_alpha, float scale[2], float offset[2])
 {
     const scene_texture *tx = &s->textures[t];
     bool clamp[2] = {!tx->repeat_s, !tx->repeat_t};
@@ -93,7 +93,8 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
     }
     for (size_t i = 0; i < pt->n; i++) {
         const povtex_image *im = &pt->imgs[i];
-        if (im->texture == t && im->lo[0] == lo[0] && im->lo[1] == lo[1] &&
+        if (im->texture == t && im->keep_alpha == keep_alpha && im->lo[0] == lo[0] &&
+            im->lo[1] == lo[1] &&
             im->hi[0] == hi[0] && im->hi[1] == hi[1])
             return (int)i;
     }
@@ -144,7 +145,8 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
     im->rgba = px;
     im->width = out[0];
     im->height = out[1];
-    im->alpha = alpha && tx->env_mode == GL_DECAL;
+    im->alpha = alpha && keep_alpha;
+    im->keep_alpha = keep_alpha;
     im->texture = t;
     memcpy(im->lo, lo, sizeof lo);
     memcpy(im->hi, hi, sizeof hi);

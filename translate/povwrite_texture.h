@@ -23,6 +23,7 @@ typedef struct povtex_image {
     /* what it was made from, to reuse it within the frame */
     int32_t texture;
     int32_t lo[2], hi[2]; /* tile range of each clamped axis; 0, 1 otherwise */
+    bool keep_alpha;
 } povtex_image;
 
 typedef struct povtex {
@@ -37,9 +38,10 @@ void povtex_finish(povtex *pt);
  * clamped axis the file holds the texture with its edge texels repeated
  * over the tiles the coordinates [uvlo, uvhi] reach (POV-Ray's image_map
  * only repeats), and u' = u * scale + offset. Returns the image's index
- * in pt, or -1 when memory ran out. */
+ * in pt, or -1 when memory ran out. keep_alpha: the file keeps the
+ * texels' alpha (when some is below 1), which POV-Ray reads as transmit. */
 int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const float uvhi[2],
-               float scale[2], float offset[2]);
+               bool keep_alpha, float scale[2], float offset[2]);
 
 /* The text inside pigment{ } that samples image i of pt as GL samples
  * texture t: `uv_mapping image_map{png "NAME" gamma 2.2 interpolate 2}`.
