@@ -18,7 +18,7 @@
 /* ---- Versions and limits ------------------------------------------------ */
 
 #define RGL_FORMAT_MAJOR 1
-#define RGL_FORMAT_MINOR 1
+#define RGL_FORMAT_MINOR 2
 
 #define RGL_FILE_MAGIC "\x89RGL\r\n\x1a\n"
 #define RGL_FILE_MAGIC_SIZE 8
@@ -78,6 +78,8 @@ typedef enum rgl_status {
     RGL_E_IO,           /* a system call failed (errno is kept) */
     RGL_E_STATE,        /* a call that the current state does not allow */
     RGL_E_ARGUMENT,     /* a bad argument to a library function */
+    RGL_E_IMAGE,        /* a snapshot image that does not decode as its
+                           command describes it (format 1.2) */
     RGL_STATUS_COUNT
 } rgl_status;
 
@@ -303,6 +305,46 @@ rgl_status rgl_trace_builder_frame(rgl_trace_builder *builder, uint32_t stream, 
  * RGL_E_LIMIT) again after any failure: the builder is then sticky-failed. */
 rgl_status rgl_trace_builder_finish(rgl_trace_builder *builder, bool with_index,
                                     const uint8_t **data, size_t *size);
+
+/* ---- Frame snapshots (format 1.2, format/snapshot.c) ------------------------- */
+
+#define RGL_SNAPSHOT_SIDE_MAX 16384    /* widest and tallest snapshot */
+#define RGL_SNAPSHOT_FORMAT_RGB 0x1907 /* GL_RGB: 3 bytes a pixel */
+#define RGL_SNAPSHOT_CODEC_ZLIB 1      /* a zlib stream (RFC 1950) */
+
+/* An @Snapshot command's arguments, checked. */
+typedef struct rgl_snapshot {
+    int32_t x, y;          /* the viewport's corner the image was read at */
+    int32_t width, height; /* 1 .. RGL_SNAPSHOT_SIDE_MAX */
+    uint32_t format;       /* RGL_SNAPSHOT_FORMAT_RGB */
+    uint32_t codec;        /* RGL_SNAPSHOT_CODEC_ZLIB */
+    uint32_t image;        /* id of the BYTES resource holding the stream */
+    uint64_t offset;       /* file offset of the command, for messages */
+} rgl_snapshot;
+
+/* Reads an @Snapshot command into *out. Returns RGL_OK, or RGL_E_IMAGE
+ * (a size out of range, an unknown format or codec, no resource id) with
+ * err naming the command, or RGL_E_ARGUMENT when cmd is not an @Snapshot. */
+rgl_status rgl_snapshot_from_cmd(const rgl_cmd *cmd, rgl_snapshot *out, rgl_error *err);
+
+/* Inflates the snapshot's image from its resource into a new buffer of
+ * width * height * 3 bytes, top row first (*rgb; free it with
+ * rgl_format_realloc(p, 0)). Checks before allocating that the compressed
+ * size can hold the image at zlib's best ratio, and after inflating that the
+ * stream ends exactly at the image's last byte and at the resource's end.
+ * Errors: RGL_E_IMAGE (naming the offset in the resource where it failed),
+ * RGL_E_RESOURCE (not a BYTES resource), RGL_E_NOMEM. */
+rgl_status rgl_snapshot_decode(const rgl_snapshot *snap, const rgl_resource *res, uint8_t **rgb,
+                               rgl_error *err);
+
+/* Compresses width * height * 3 bytes of RGB (rows in the order given) into
+ * a zlib stream at the given level (1 fastest .. 9 smallest). The stream is
+ * written to a buffer from alloc (realloc semantics); *out and *size receive
+ * it. Returns RGL_OK, RGL_E_NOMEM, or RGL_E_ARGUMENT for a size out of range.
+ * Thread-safe; for the recorder (with its allocation wrapper) and tests. */
+rgl_status rgl_snapshot_encode(const uint8_t *rgb, int32_t width, int32_t height, int level,
+                               void *(*alloc)(void *ptr, size_t size), uint8_t **out,
+                               size_t *size);
 
 /* ---- Text dump ---------------------------------------------------------------- */
 

@@ -37,6 +37,7 @@ static const char *const status_strings[RGL_STATUS_COUNT] = {
     [RGL_E_IO] = "I/O error",
     [RGL_E_STATE] = "call not allowed in this state",
     [RGL_E_ARGUMENT] = "bad argument",
+    [RGL_E_IMAGE] = "malformed snapshot image",
 };
 
 const char *rgl_status_str(rgl_status status)

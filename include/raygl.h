@@ -58,6 +58,13 @@ RAYGL_API const char *rayglRecordPath(void);
 /* A one-line description of the failure that stopped recording, or NULL. */
 RAYGL_API const char *rayglRecordError(void);
 
+/* Frame snapshots: with enable non-zero, every frame from the next frame
+ * end on also stores the image the program showed (its viewport, read back
+ * before the swap, compressed), for `raygl-compare`. The default is the
+ * RAYGL_SNAPSHOTS environment variable (1: on). Costs a glReadPixels and a
+ * deflate per frame. */
+RAYGL_API void rayglRecordSnapshots(int enable);
+
 /* Where the failure message goes: by default one line on stderr. A NULL
  * handler silences it. The handler runs at most once, on the failing thread. */
 RAYGL_API void rayglRecordSetErrorHandler(void (*handler)(const char *message, void *user),

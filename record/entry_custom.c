@@ -1204,6 +1204,7 @@ RGL_EXPORT void raygluPartialDisk(GLUquadric *quad, GLdouble inner, GLdouble out
 RGL_EXPORT void rayglutSwapBuffers(void)
 {
     rgl_record(RGL_OP_SwapBuffers, "");
+    rgl_frame_image();
     if (rgl_glut_ready())
         glutSwapBuffers();
     rgl_frame_end();

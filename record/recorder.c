@@ -74,6 +74,7 @@ static struct recorder {
     _Atomic uint32_t gen;      /* bumps at every open: streams reset */
     _Atomic bool report_pending;
     bool env_disabled;         /* RAYGL_RECORD=0 */
+    _Atomic bool snapshots;    /* RAYGL_SNAPSHOTS=1, rayglRecordSnapshots() */
     bool forked_child;
 
     /* Under file_mu. */
@@ -657,6 +658,7 @@ static void frame_write(rgl_stream *s, bool reset)
     if (!reset)
         return;
     s->frame_open = false;
+    s->image_taken = false;
     s->frame.size = 0;
     stream_window(s, false);
 }
@@ -742,6 +744,9 @@ static void init_once(void)
     const char *v = getenv("RAYGL_TEST_FAIL_ALLOC");
     if (v && *v)
         rgl_test_fail_alloc(strtoul(v, NULL, 10));
+    v = getenv("RAYGL_SNAPSHOTS");
+    if (v && strcmp(v, "1") == 0)
+        atomic_store(&g.snapshots, true);
     v = getenv("RAYGL_RECORD");
     if (v && strcmp(v, "0") == 0) {
         g.env_disabled = true;
@@ -810,6 +815,7 @@ void rgl_frame_end(void)
     rgl_stream *s = rgl_tls_stream;
     if (!s)
         return;
+    rgl_frame_image();
     pthread_mutex_lock(s->lock);
     frame_write(s, true);
     pthread_mutex_unlock(s->lock);
@@ -901,6 +907,18 @@ RGL_EXPORT void rayglRecordClose(void)
     atomic_compare_exchange_strong(&g.status, &st, RAYGL_DISABLED);
     if (!g.forked_child)
         close_trace();
+}
+
+bool rgl_snapshots_enabled(void)
+{
+    ensure_init();
+    return atomic_load_explicit(&g.snapshots, memory_order_relaxed);
+}
+
+RGL_EXPORT void rayglRecordSnapshots(int enable)
+{
+    ensure_init();
+    atomic_store(&g.snapshots, enable != 0);
 }
 
 RGL_EXPORT int rayglRecordStatus(void) { return atomic_load(&g.status); }

@@ -105,6 +105,7 @@ typedef struct rgl_stream {
     uint32_t id;           /* stream id, from 1 */
     uint32_t frame_number; /* next frame's number within the stream */
     bool frame_open;       /* the current frame has started (snapshot taken) */
+    bool image_taken;      /* rgl_frame_image() ran for the current frame */
     uint32_t frame_flags;  /* enum rgl_frame_flags */
     uint32_t state_resource;
 
@@ -173,6 +174,18 @@ void rgl_resolve_matrices(void);
  * arranges for the next call to start a new frame. A frame with no commands
  * writes nothing. */
 void rgl_frame_end(void);
+
+/* Frame snapshots (frameimage.c): when enabled, reads the image the calling
+ * thread's frame shows (the viewport of the buffer it draws into), and
+ * records it as an @Snapshot command, the frame's last. Once per frame;
+ * rgl_frame_end() calls it too, but a frame-ending entry point that swaps
+ * buffers must call it BEFORE forwarding the swap (the back buffer is
+ * undefined after it). Never raises or clears a GL error (frameimage.c). */
+void rgl_frame_image(void);
+
+/* Whether frames get snapshots: RAYGL_SNAPSHOTS=1 at initialisation, or
+ * rayglRecordSnapshots(). */
+bool rgl_snapshots_enabled(void);
 
 /* Switches the stream's write window to the display-list buffer (begin) or
  * back to the frame buffer (end). Returns the list body on end, owned by the

@@ -33,6 +33,7 @@ static bool allowed_in_begin(const char *handler)
         "vertex",       "normal",    "color",     "texcoord",       "edgeflag",   "end",
         "material",     "calllist",  "calllists", "arrayelement",   "resolvedmatrix",
         "arraydata",    "framebegin", "frameend", "swapbuffers",
+        "snapshot",
     };
     for (size_t i = 0; i < sizeof ok / sizeof ok[0]; i++)
         if (strcmp(handler, ok[i]) == 0)

@@ -91,6 +91,8 @@ void interp_end_frame(interp *ip)
 
 void interp_swapbuffers(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
 void interp_frameend(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
+/* The image the program showed: nothing to draw (raygl-compare reads it). */
+void interp_snapshot(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
 
 void interp_framebegin(interp *ip, const rgl_cmd *cmd)
 {

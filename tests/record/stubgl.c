@@ -267,6 +267,21 @@ void glGetTexGeniv(GLenum c, GLenum pname, GLint *v) { (void)c, (void)pname, (vo
 void glGetTexEnvfv(GLenum t, GLenum pname, GLfloat *v) { (void)t, (void)pname, (void)v; }
 void glGetTexEnviv(GLenum t, GLenum pname, GLint *v) { (void)t, (void)pname, (void)v; }
 void glGetTexParameteriv(GLenum t, GLenum pname, GLint *v) { (void)t, (void)pname, (void)v; }
+/* The frame snapshot's calls (record/frameimage.c): no context, no version,
+ * so a snapshot never reaches them; logged in case one does. */
+const GLubyte *glGetString(GLenum name)
+{
+    (void)name;
+    return NULL;
+}
+void glReadBuffer(GLenum mode) { LOGV("glReadBuffer", mode); }
+void glPixelTransferf(GLenum pname, GLfloat v) { LOGV("glPixelTransferf", pname, v); }
+void glPixelTransferi(GLenum pname, GLint v) { LOGV("glPixelTransferi", pname, v); }
+void glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void *p)
+{
+    (void)p;
+    LOGV("glReadPixels", x, y, w, h, format, type);
+}
 GLboolean glIsEnabled(GLenum cap)
 {
     (void)cap;

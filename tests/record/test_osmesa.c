@@ -306,6 +306,145 @@ static void test_paper_example(const char *path)
     rgl_reader_destroy(r);
 }
 
+/* The @Snapshot of frame i decoded (top row first), or NULL. */
+static uint8_t *frame_snapshot(rgl_reader *r, size_t i, rgl_snapshot *snap)
+{
+    rgl_frame_info fi;
+    rgl_error err;
+    if (!CHECK(rgl_reader_frame(r, i, &fi, &err) == RGL_OK))
+        return NULL;
+    rgl_cmd_iter it;
+    static rgl_cmd cmd;
+    rgl_cmd_iter_init(&it, fi.commands, fi.commands_size, fi.commands_offset);
+    bool found = false, last = false;
+    while (rgl_cmd_next(&it, &cmd) == RGL_OK) {
+        last = cmd.opcode == RGL_OP_Snapshot;
+        if (last)
+            found = CHECK(rgl_snapshot_from_cmd(&cmd, snap, &err) == RGL_OK);
+    }
+    if (!found)
+        return NULL;
+    CHECK(last); /* the frame's last command */
+    rgl_resource res;
+    uint8_t *rgb = NULL;
+    if (CHECK(rgl_reader_resource(r, snap->image, &res, &err) == RGL_OK))
+        CHECKM(rgl_snapshot_decode(snap, &res, &rgb, &err) == RGL_OK, "%s", err.detail);
+    return rgb;
+}
+
+/* Pixels of the OSMesa buffer (bottom row first, RGBA) in the rectangle,
+ * as RGB top row first. */
+static bool same_as_buffer(const uint8_t *rgb, int x0, int y0, int w, int h)
+{
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            const uint8_t *a = rgb + ((size_t)y * (size_t)w + (size_t)x) * 3;
+            const uint8_t *b = pixels + ((size_t)(y0 + h - 1 - y) * 64 + (size_t)(x0 + x)) * 4;
+            if (memcmp(a, b, 3) != 0) {
+                fprintf(stderr, "snapshot (%d,%d) = %d,%d,%d, buffer %d,%d,%d\n", x, y, a[0],
+                        a[1], a[2], b[0], b[1], b[2]);
+                return false;
+            }
+        }
+    return true;
+}
+
+/* RAYGL_SNAPSHOTS's API twin: each frame's image is in the trace, equal to
+ * what GL drew; the program's pixel-pack state and pending GL error are as
+ * it left them; no snapshot once turned off. */
+static void test_snapshots(const char *path)
+{
+    CHECK(rayglRecordOpen(path) == 0);
+    rayglRecordSnapshots(1);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glPixelStorei(GL_PACK_ROW_LENGTH, 7);
+    glPixelStorei(GL_PACK_SKIP_ROWS, 2);
+    for (int f = 0; f < 3; f++) {
+        if (f == 2)
+            rayglRecordSnapshots(0);
+        rayglViewport(0, 0, 64, 64);
+        rayglClearColor(0.1f * (float)f, 0.2f, 0.3f, 1);
+        rayglClear(GL_COLOR_BUFFER_BIT);
+        if (f == 1)
+            rayglViewport(8, 4, 40, 30);
+        rayglMatrixMode(GL_MODELVIEW);
+        rayglLoadIdentity();
+        rayglBegin(GL_TRIANGLES);
+        rayglColor3f(1, 0.5f, 0);
+        rayglVertex2f(-0.8f, -0.8f);
+        rayglColor3f(0, 1, 0.25f);
+        rayglVertex2f(0.9f, -0.5f);
+        rayglColor3f(0.2f, 0, 1);
+        rayglVertex2f(0, 0.9f);
+        rayglEnd();
+        glEnable(0x7fff); /* the program's own error, pending at the frame end */
+        rayglutSwapBuffers();
+        CHECK(glGetError() == GL_INVALID_ENUM);
+        CHECK(glGetError() == GL_NO_ERROR);
+        GLint v = 0;
+        glGetIntegerv(GL_PACK_ALIGNMENT, &v);
+        CHECK(v == 1);
+        glGetIntegerv(GL_PACK_ROW_LENGTH, &v);
+        CHECK(v == 7);
+        glGetIntegerv(GL_PACK_SKIP_ROWS, &v);
+        CHECK(v == 2);
+    }
+    rayglRecordClose();
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_PACK_SKIP_ROWS, 0);
+
+    rgl_reader *r = trace_open(path);
+    if (!r)
+        return;
+    CHECK(rgl_reader_frame_count(r) == 3);
+    rgl_snapshot snap;
+    /* Frame 0: the whole 64x64 buffer; the buffer still holds frame 2's
+     * image, so draw frame 0 again to compare. */
+    uint8_t *rgb = frame_snapshot(r, 0, &snap);
+    if (CHECK(rgb != NULL)) {
+        CHECK(snap.x == 0 && snap.y == 0 && snap.width == 64 && snap.height == 64);
+        glViewport(0, 0, 64, 64);
+        glClearColor(0, 0.2f, 0.3f, 1);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glBegin(GL_TRIANGLES);
+        glColor3f(1, 0.5f, 0);
+        glVertex2f(-0.8f, -0.8f);
+        glColor3f(0, 1, 0.25f);
+        glVertex2f(0.9f, -0.5f);
+        glColor3f(0.2f, 0, 1);
+        glVertex2f(0, 0.9f);
+        glEnd();
+        glFinish();
+        CHECK(same_as_buffer(rgb, 0, 0, 64, 64));
+        free(rgb);
+    }
+    /* Frame 1: the viewport rectangle only. */
+    rgb = frame_snapshot(r, 1, &snap);
+    if (CHECK(rgb != NULL)) {
+        CHECK(snap.x == 8 && snap.y == 4 && snap.width == 40 && snap.height == 30);
+        glViewport(0, 0, 64, 64);
+        glClearColor(0.1f, 0.2f, 0.3f, 1);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glViewport(8, 4, 40, 30);
+        glBegin(GL_TRIANGLES);
+        glColor3f(1, 0.5f, 0);
+        glVertex2f(-0.8f, -0.8f);
+        glColor3f(0, 1, 0.25f);
+        glVertex2f(0.9f, -0.5f);
+        glColor3f(0.2f, 0, 1);
+        glVertex2f(0, 0.9f);
+        glEnd();
+        glFinish();
+        CHECK(same_as_buffer(rgb, 8, 4, 40, 30));
+        free(rgb);
+        glViewport(0, 0, 64, 64);
+    }
+    /* Frame 2: snapshots off. */
+    CHECK(frame_snapshot(r, 2, &snap) == NULL);
+    rgl_reader_destroy(r);
+}
+
 int main(void)
 {
     OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 16, 0, 0, NULL);
@@ -314,13 +453,15 @@ int main(void)
     char dir[] = "/tmp/raygl-osmesa-XXXXXX";
     if (!CHECK(mkdtemp(dir) != NULL))
         return check_exit();
-    char p1[64], p2[64], p3[64];
+    char p1[64], p2[64], p3[64], p4[64];
+    snprintf(p4, sizeof p4, "%s/snapshots.raygl", dir);
     snprintf(p1, sizeof p1, "%s/two.raygl", dir);
     snprintf(p2, sizeof p2, "%s/paper.raygl", dir);
     snprintf(p3, sizeof p3, "%s/texture.raygl", dir);
     test_two_frames(p1);
     test_paper_example(p2);
     test_texture_updates(p3);
+    test_snapshots(p4);
     /* This Mesa faults destroying a context with drawing still queued. */
     glFinish();
     OSMesaDestroyContext(ctx);
@@ -328,6 +469,7 @@ int main(void)
         unlink(p1);
         unlink(p2);
         unlink(p3);
+        unlink(p4);
         rmdir(dir);
     }
     return check_exit();
