@@ -75,6 +75,36 @@ static void decode_sequence(const uint8_t *data, size_t size, uint64_t base)
     }
 }
 
+/* Every @Snapshot of the sequence: its image decoded from the trace's
+ * resource (format 1.2), errors inside the input. */
+static void decode_snapshots(rgl_reader *r, const uint8_t *seq, size_t n, uint64_t base,
+                             size_t size)
+{
+    static rgl_cmd cmd;
+    rgl_cmd_iter it;
+    rgl_cmd_iter_init(&it, seq, n, base);
+    while (rgl_cmd_next(&it, &cmd) == RGL_OK) {
+        rgl_snapshot snap;
+        rgl_resource res;
+        rgl_error err;
+        uint8_t *rgb = NULL;
+        if (cmd.opcode != RGL_OP_Snapshot)
+            continue;
+        if (rgl_snapshot_from_cmd(&cmd, &snap, &err) != RGL_OK) {
+            CHECK(err.offset <= size && err.status == RGL_E_IMAGE);
+            continue;
+        }
+        if (rgl_reader_resource(r, snap.image, &res, &err) != RGL_OK)
+            continue;
+        if (rgl_snapshot_decode(&snap, &res, &rgb, &err) == RGL_OK) {
+            CHECK(rgb != NULL);
+            rgl_format_realloc(rgb, 0);
+        } else {
+            CHECK(rgb == NULL && err.offset <= size);
+        }
+    }
+}
+
 static void read_trace(const uint8_t *data, size_t size)
 {
     rgl_reader *r = NULL;
@@ -101,6 +131,7 @@ static void read_trace(const uint8_t *data, size_t size)
         CHECK(f.commands_offset + f.commands_size <= size);
         CHECK(f.commands == data + f.commands_offset);
         decode_sequence(f.commands, f.commands_size, f.commands_offset);
+        decode_snapshots(r, f.commands, f.commands_size, f.commands_offset, size);
         if (f.state)
             (void)rgl_reader_resource(r, f.state, &res, &err);
     }
@@ -125,7 +156,7 @@ static void wrapped(const uint8_t *data, size_t size)
         rgl_trace_builder *b = rgl_trace_builder_create();
         const uint8_t *trace;
         size_t trace_size;
-        uint32_t id = 0;
+        uint32_t id = 0, bytes_id = 0;
         if (!b)
             return;
         /* The bytes go once into each path: as the frame without an index,
@@ -133,6 +164,8 @@ static void wrapped(const uint8_t *data, size_t size)
         if (rgl_trace_builder_info(b, "program=fuzz\n", 13) == RGL_OK &&
             rgl_trace_builder_resource(b, RGL_RES_COMMANDS, data, with_index ? size : 0, &id) ==
                 RGL_OK &&
+            /* #2: the bytes again as a BYTES resource, for @Snapshot(image=#2) */
+            rgl_trace_builder_resource(b, RGL_RES_BYTES, data, size, &bytes_id) == RGL_OK &&
             rgl_trace_builder_frame(b, 0, 0, 0, id, data, with_index ? 0 : size) == RGL_OK &&
             rgl_trace_builder_finish(b, with_index, &trace, &trace_size) == RGL_OK)
             read_trace(trace, trace_size);

@@ -60,15 +60,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define MAX_PROBES 64
+#include "imagediff.h"
 
-typedef struct image {
-    int w, h;
-    uint8_t *rgb; /* top row first, 3 bytes per pixel */
-    bool has_gama;
-    double gama; /* file gamma as stored in gAMA (0.45455 for display 2.2) */
-    bool has_srgb;
-} image;
+#define MAX_PROBES 64
 
 typedef struct options {
     int tol;
@@ -91,7 +85,7 @@ typedef struct options {
 
 /* Mean of (r + g + b) / 3 over the box x0..x1, y0..y1 (clipped to the
  * image); -1 when the box misses it. */
-static double box_mean(const image *img, const int *box)
+static double box_mean(const img *img, const int *box)
 {
     double sum = 0;
     size_t n = 0;
@@ -112,163 +106,14 @@ static void usage(FILE *f)
           f);
 }
 
-static int read_png(const char *path, image *img)
+static int read_png(const char *path, img *out)
 {
-    memset(img, 0, sizeof *img);
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        fprintf(stderr, "imgcmp: %s: %s\n", path, strerror(errno));
+    char why[128];
+    if (img_read_png(path, out, why, sizeof why) != 0) {
+        fprintf(stderr, "imgcmp: %s: %s\n", path, why);
         return -1;
     }
-    uint8_t sig[8];
-    if (fread(sig, 1, 8, f) != 8 || png_sig_cmp(sig, 0, 8) != 0) {
-        fprintf(stderr, "imgcmp: %s: not a PNG file\n", path);
-        fclose(f);
-        return -1;
-    }
-    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
-    png_infop info = png ? png_create_info_struct(png) : NULL;
-    png_bytepp rows = NULL;
-    if (!info) {
-        png_destroy_read_struct(&png, NULL, NULL);
-        fclose(f);
-        fprintf(stderr, "imgcmp: %s: out of memory\n", path);
-        return -1;
-    }
-    if (setjmp(png_jmpbuf(png))) {
-        png_destroy_read_struct(&png, &info, NULL);
-        free(rows);
-        free(img->rgb);
-        img->rgb = NULL;
-        fclose(f);
-        fprintf(stderr, "imgcmp: %s: damaged PNG\n", path);
-        return -1;
-    }
-    png_init_io(png, f);
-    png_set_sig_bytes(png, 8);
-    png_read_info(png, info);
-
-    png_uint_32 w = png_get_image_width(png, info);
-    png_uint_32 h = png_get_image_height(png, info);
-    if (w == 0 || h == 0 || w > 16384 || h > 16384) {
-        png_destroy_read_struct(&png, &info, NULL);
-        fclose(f);
-        fprintf(stderr, "imgcmp: %s: unsupported size %ux%u\n", path, (unsigned)w, (unsigned)h);
-        return -1;
-    }
-    png_fixed_point g;
-    if (png_get_gAMA_fixed(png, info, &g)) {
-        img->has_gama = true;
-        img->gama = g / 100000.0;
-    }
-    int intent;
-    if (png_get_sRGB(png, info, &intent))
-        img->has_srgb = true;
-
-    /* Values as stored: no png_set_gamma, so nothing is converted. */
-    png_set_expand(png);
-    png_set_strip_16(png);
-    png_set_strip_alpha(png);
-    png_set_gray_to_rgb(png);
-    png_read_update_info(png, info);
-    if (png_get_rowbytes(png, info) != (size_t)w * 3) {
-        png_destroy_read_struct(&png, &info, NULL);
-        fclose(f);
-        fprintf(stderr, "imgcmp: %s: unexpected pixel layout\n", path);
-        return -1;
-    }
-    img->w = (int)w;
-    img->h = (int)h;
-    img->rgb = malloc((size_t)w * h * 3);
-    rows = malloc(sizeof *rows * h);
-    if (!img->rgb || !rows)
-        png_error(png, "out of memory");
-    for (png_uint_32 y = 0; y < h; y++)
-        rows[y] = img->rgb + (size_t)y * w * 3;
-    png_read_image(png, rows);
-    png_read_end(png, NULL);
-    png_destroy_read_struct(&png, &info, NULL);
-    free(rows);
-    fclose(f);
     return 0;
-}
-
-static int write_png(const char *path, const uint8_t *rgb, int w, int h)
-{
-    FILE *f = fopen(path, "wb");
-    if (!f)
-        return -1;
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
-    png_infop info = png ? png_create_info_struct(png) : NULL;
-    if (!info) {
-        png_destroy_write_struct(&png, NULL);
-        fclose(f);
-        return -1;
-    }
-    if (setjmp(png_jmpbuf(png))) {
-        png_destroy_write_struct(&png, &info);
-        fclose(f);
-        return -1;
-    }
-    png_init_io(png, f);
-    png_set_IHDR(png, info, (png_uint_32)w, (png_uint_32)h, 8, PNG_COLOR_TYPE_RGB,
-                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    png_set_gAMA_fixed(png, info, 45455);
-    png_write_info(png, info);
-    for (int y = 0; y < h; y++)
-        png_write_row(png, (png_const_bytep)(rgb + (size_t)y * (size_t)w * 3));
-    png_write_end(png, info);
-    png_destroy_write_struct(&png, &info);
-    return fclose(f) == 0 ? 0 : -1;
-}
-
-static int cmp_u32(const void *a, const void *b)
-{
-    uint32_t x = *(const uint32_t *)a, y = *(const uint32_t *)b;
-    return (x > y) - (x < y);
-}
-
-/* The most frequent colour on the image border. */
-static void border_mode(const image *img, int bg[3])
-{
-    size_t n = 0, cap = 2 * (size_t)img->w + 2 * (size_t)img->h;
-    uint32_t *v = malloc(cap * sizeof *v);
-    if (!v) {
-        bg[0] = bg[1] = bg[2] = 0;
-        return;
-    }
-    for (int y = 0; y < img->h; y++)
-        for (int x = 0; x < img->w; x++) {
-            if (y != 0 && y != img->h - 1 && x != 0 && x != img->w - 1)
-                continue;
-            const uint8_t *p = img->rgb + ((size_t)y * img->w + x) * 3;
-            v[n++] = (uint32_t)p[0] << 16 | (uint32_t)p[1] << 8 | p[2];
-        }
-    qsort(v, n, sizeof *v, cmp_u32);
-    uint32_t best = v[0];
-    size_t best_run = 0;
-    for (size_t i = 0; i < n;) {
-        size_t j = i;
-        while (j < n && v[j] == v[i])
-            j++;
-        if (j - i > best_run) {
-            best_run = j - i;
-            best = v[i];
-        }
-        i = j;
-    }
-    free(v);
-    bg[0] = (int)(best >> 16 & 255);
-    bg[1] = (int)(best >> 8 & 255);
-    bg[2] = (int)(best & 255);
-}
-
-static bool is_fg(const uint8_t *p, const int bg[3], int tol)
-{
-    for (int c = 0; c < 3; c++)
-        if (abs((int)p[c] - bg[c]) > tol)
-            return true;
-    return false;
 }
 
 static int parse_double(const char *s, double *out)
@@ -392,7 +237,7 @@ static int parse_args(int argc, char **argv, options *o)
     return 0;
 }
 
-static void print_gamma(const char *label, const image *img)
+static void print_gamma(const char *label, const img *img)
 {
     printf("%s", label);
     if (img->has_srgb)
@@ -403,7 +248,7 @@ static void print_gamma(const char *label, const image *img)
         printf(" untagged");
 }
 
-static bool display_gamma_22(const image *img)
+static bool display_gamma_22(const img *img)
 {
     if (img->has_gama)
         return fabs(img->gama - 1.0 / 2.2) <= 0.01 / 2.2;
@@ -417,7 +262,7 @@ int main(int argc, char **argv)
         usage(stderr);
         return 2;
     }
-    image a, b;
+    img a, b;
     if (read_png(o.a_path, &a) != 0)
         return 2;
     if (read_png(o.b_path, &b) != 0) {
@@ -434,95 +279,24 @@ int main(int argc, char **argv)
     }
 
     int w = a.w, h = a.h;
-    size_t npix = (size_t)w * h;
     if (!o.have_bg)
-        border_mode(&a, o.bg);
-
-    size_t within = 0, fg_a = 0, fg_b = 0, fg_both = 0;
-    uint64_t sum[3] = {0, 0, 0};
-    int maxd = 0, max_x = 0, max_y = 0;
-    int bx0 = w, by0 = h, bx1 = -1, by1 = -1;
-    for (int y = 0; y < h; y++)
-        for (int x = 0; x < w; x++) {
-            size_t i = ((size_t)y * w + x) * 3;
-            const uint8_t *pa = a.rgb + i, *pb = b.rgb + i;
-            int m = 0;
-            for (int c = 0; c < 3; c++) {
-                int d = abs((int)pa[c] - (int)pb[c]);
-                sum[c] += (uint64_t)d;
-                if (d > m)
-                    m = d;
-            }
-            if (m <= o.tol) {
-                within++;
-            } else {
-                if (x < bx0)
-                    bx0 = x;
-                if (x > bx1)
-                    bx1 = x;
-                if (y < by0)
-                    by0 = y;
-                if (y > by1)
-                    by1 = y;
-            }
-            if (m > maxd) {
-                maxd = m;
-                max_x = x;
-                max_y = y;
-            }
-            bool fa = is_fg(pa, o.bg, o.tol), fb = is_fg(pb, o.bg, o.tol);
-            fg_a += fa;
-            fg_b += fb;
-            fg_both += fa && fb;
-        }
-
-    /* Mismatch core: beyond T, and so are the 4 edge neighbours (the image
-     * border is never core). A pixel-wide line of mismatch, even a diagonal
-     * staircase, has no core; an area wrong and at least 3 pixels thick in
-     * both directions has. */
-    size_t core = 0;
-    int core_x = -1, core_y = -1;
-    for (int y = 1; y + 1 < h; y++)
-        for (int x = 1; x + 1 < w; x++) {
-            static const int nx[5] = {0, -1, 1, 0, 0}, ny[5] = {0, 0, 0, -1, 1};
-            bool all = true;
-            for (int k = 0; k < 5 && all; k++) {
-                size_t i = ((size_t)(y + ny[k]) * w + (size_t)(x + nx[k])) * 3;
-                int m = 0;
-                for (int c = 0; c < 3; c++) {
-                    int d = abs((int)a.rgb[i + c] - (int)b.rgb[i + c]);
-                    if (d > m)
-                        m = d;
-                }
-                all = m > o.tol;
-            }
-            if (all) {
-                if (core == 0) {
-                    core_x = x;
-                    core_y = y;
-                }
-                core++;
-            }
-        }
-
-    double frac = (double)within / (double)npix;
-    double mean[3], mean_all = 0;
-    for (int c = 0; c < 3; c++) {
-        mean[c] = (double)sum[c] / (double)npix;
-        mean_all += mean[c] / 3;
-    }
-    size_t fg_union = fg_a + fg_b - fg_both;
-    double sil = fg_union ? (double)fg_both / (double)fg_union : 1.0;
+        img_border_mode(&a, o.bg);
+    img_stats st;
+    img_compare(&a, &b, o.tol, o.bg, &st);
+    size_t npix = st.npix, within = st.within, core = st.core;
+    size_t fg_a = st.fg_a, fg_b = st.fg_b, fg_both = st.fg_both;
+    double frac = (double)within / (double)npix, mean_all = st.mean_all, sil = st.silhouette;
+    const double *mean = st.mean;
 
     printf("within %d/255: %.5f (%zu of %zu pixels; %zu beyond)\n", o.tol, frac, within, npix,
            npix - within);
     printf("mean diff: %.4f/255 (r %.4f, g %.4f, b %.4f)\n", mean_all, mean[0], mean[1],
            mean[2]);
     {
-        const uint8_t *pa = a.rgb + ((size_t)max_y * w + max_x) * 3;
-        const uint8_t *pb = b.rgb + ((size_t)max_y * w + max_x) * 3;
-        printf("max diff: %d/255 at (%d,%d): A (%d,%d,%d) B (%d,%d,%d)\n", maxd, max_x, max_y,
-               pa[0], pa[1], pa[2], pb[0], pb[1], pb[2]);
+        const uint8_t *pa = a.rgb + ((size_t)st.max_y * w + st.max_x) * 3;
+        const uint8_t *pb = b.rgb + ((size_t)st.max_y * w + st.max_x) * 3;
+        printf("max diff: %d/255 at (%d,%d): A (%d,%d,%d) B (%d,%d,%d)\n", st.maxd, st.max_x,
+               st.max_y, pa[0], pa[1], pa[2], pb[0], pb[1], pb[2]);
     }
     printf("silhouette: %.5f (background %d,%d,%d; A %zu, B %zu, both %zu, A only %zu, B only "
            "%zu)\n",
@@ -530,12 +304,12 @@ int main(int argc, char **argv)
     print_gamma("gamma: A", &a);
     print_gamma(", B", &b);
     printf("\n");
-    if (bx1 >= 0)
-        printf("mismatch: x %d..%d, y %d..%d\n", bx0, bx1, by0, by1);
+    if (st.bx1 >= 0)
+        printf("mismatch: x %d..%d, y %d..%d\n", st.bx0, st.bx1, st.by0, st.by1);
     else
         printf("mismatch: none\n");
     if (core)
-        printf("core: %zu pixels (first at (%d,%d))\n", core, core_x, core_y);
+        printf("core: %zu pixels (first at (%d,%d))\n", core, st.core_x, st.core_y);
     else
         printf("core: 0 pixels\n");
     for (int k = 0; k < o.nprobes; k++) {
@@ -552,7 +326,7 @@ int main(int argc, char **argv)
 
     double shadow_ratio[2] = {0, 0};
     if (o.have_shadow) {
-        const image *im[2] = {&a, &b};
+        const img *im[2] = {&a, &b};
         for (int k = 0; k < 2; k++) {
             double in = box_mean(im[k], o.shadow_box), out = box_mean(im[k], o.shadow_box + 4);
             shadow_ratio[k] = in >= 0 && out > 0 ? in / out : -1;
@@ -566,58 +340,18 @@ int main(int argc, char **argv)
 
     int rc = 0;
     if (o.diff_path) {
-        const int gap = 4;
-        int dw = 3 * w + 2 * gap;
-        uint8_t *d = malloc((size_t)dw * h * 3);
-        if (!d) {
+        img d;
+        if (img_side_by_side(&a, &b, o.tol, &d) != 0) {
             fprintf(stderr, "imgcmp: out of memory\n");
             rc = 2;
         } else {
-            memset(d, 96, (size_t)dw * h * 3);
-            for (int y = 0; y < h; y++)
-                for (int x = 0; x < w; x++) {
-                    size_t i = ((size_t)y * w + x) * 3;
-                    uint8_t *row = d + (size_t)y * dw * 3;
-                    memcpy(row + (size_t)x * 3, a.rgb + i, 3);
-                    memcpy(row + (size_t)(w + gap + x) * 3, b.rgb + i, 3);
-                    uint8_t *q = row + (size_t)(2 * (w + gap) + x) * 3;
-                    for (int c = 0; c < 3; c++) {
-                        int dd = abs((int)a.rgb[i + c] - (int)b.rgb[i + c]);
-                        int v = dd <= o.tol ? dd * 16 : 64 + 8 * dd;
-                        q[c] = (uint8_t)(v > 255 ? 255 : v);
-                    }
-                }
-            if (write_png(o.diff_path, d, dw, h) != 0) {
+            if (img_write_png(o.diff_path, d.rgb, d.w, d.h) != 0) {
                 fprintf(stderr, "imgcmp: %s: cannot write\n", o.diff_path);
                 rc = 2;
             } else {
                 printf("diff image: %s\n", o.diff_path);
             }
-            free(d);
-        }
-    }
-
-    if (o.pair_path && rc == 0) {
-        const int gap = 4;
-        int pw = 2 * w + gap;
-        uint8_t *d = malloc((size_t)pw * h * 3);
-        if (!d) {
-            fprintf(stderr, "imgcmp: out of memory\n");
-            rc = 2;
-        } else {
-            memset(d, 255, (size_t)pw * h * 3);
-            for (int y = 0; y < h; y++) {
-                uint8_t *row = d + (size_t)y * pw * 3;
-                memcpy(row, a.rgb + (size_t)y * w * 3, (size_t)w * 3);
-                memcpy(row + (size_t)(w + gap) * 3, b.rgb + (size_t)y * w * 3, (size_t)w * 3);
-            }
-            if (write_png(o.pair_path, d, pw, h) != 0) {
-                fprintf(stderr, "imgcmp: %s: cannot write\n", o.pair_path);
-                rc = 2;
-            } else {
-                printf("pair image: %s\n", o.pair_path);
-            }
-            free(d);
+            free(d.rgb);
         }
     }
 

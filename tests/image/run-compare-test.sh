@@ -1,0 +1,97 @@
+#!/bin/sh
+# run-compare-test.sh: raygl-compare end to end on a program's snapshots.
+#
+#   run-compare-test.sh PROG RAYGL_COMPARE RAYGL2POV POVRAY OUTDIR [FLOOR-OPTION...]
+#
+# 1. PROG (an image-test program) draws one frame with OSMesa under
+#    RAYGL_SNAPSHOTS=1, so the trace holds the frame's image;
+# 2. raygl-compare translates, renders and compares it with the floors
+#    given (the image tests' thresholds), and must pass;
+# 3. bad input gives one clear line and exit 1 (not a trace; the snapshot's
+#    resource damaged; a frame list without snapshots), bad usage exit 2,
+#    and nothing is written outside the output folder.
+set -u
+[ $# -ge 5 ] || { echo "usage: $0 PROG RAYGL_COMPARE RAYGL2POV POVRAY OUTDIR [FLOOR-OPTION...]" >&2; exit 2; }
+prog=$1 cmp=$2 r2p=$3 povray=$4 out=$5
+shift 5
+fail() { echo "compare test: FAIL: $*"; exit 1; }
+absolute() {
+    case $1 in
+    /*) printf '%s\n' "$1" ;;
+    */*) printf '%s/%s\n' "$PWD" "$1" ;;
+    *) printf '%s\n' "$1" ;;
+    esac
+}
+prog=$(absolute "$prog")
+cmp=$(absolute "$cmp")
+r2p=$(absolute "$r2p")
+povray=$(absolute "$povray")
+rm -rf "$out"
+mkdir -p "$out" || exit 1
+cd "$out" || exit 1
+
+RAYGL_SNAPSHOTS=1 "$prog" --trace run.raygl --png gl.png >program.log 2>&1 ||
+    { cat program.log; fail "the program failed"; }
+"$r2p" run.raygl --dump | grep -q '@Snapshot(x=0, y=0, width=320, height=240' ||
+    fail "the trace holds no 320x240 snapshot"
+
+"$cmp" run.raygl -o cmp --raygl2pov "$r2p" --povray "$povray" "$@" -- --no-shadows >cmp.log 2>&1
+rc=$?
+cat cmp.log
+[ $rc -eq 0 ] || fail "raygl-compare exited with $rc"
+grep -q '^frame 0: 320x240 within .* silhouette ' cmp.log || fail "no figures for frame 0"
+[ -s cmp/compare-00000.png ] || fail "no cmp/compare-00000.png"
+[ -s cmp/pov/frame-00000.png ] || fail "no cmp/pov/frame-00000.png"
+
+# A floor it cannot meet fails.
+"$cmp" run.raygl -o cmp --raygl2pov "$r2p" --povray "$povray" --tol 0 --min-match 1 \
+    -- --no-shadows >floor.log 2>&1
+[ $? -eq 1 ] && grep -q 'BELOW FLOOR' floor.log || { cat floor.log; fail "an unmeetable floor passed"; }
+
+# Bad input: one line naming the file, exit 1.
+printf 'not a trace at all, just text\n' >bad.raygl
+"$cmp" bad.raygl -o badout --raygl2pov "$r2p" >bad.log 2>&1
+[ $? -eq 1 ] && grep -q '^raygl-compare: bad.raygl: ' bad.log || { cat bad.log; fail "bad trace"; }
+[ ! -e badout ] || fail "a bad trace made its output folder"
+# The snapshot's image resource damaged (its last byte before the CRC):
+# the payload checksum catches it, named with the frame and offset.
+size=$(wc -c <run.raygl)
+python3 - run.raygl damaged.raygl <<'PY'
+import sys
+d = bytearray(open(sys.argv[1], 'rb').read())
+# The second RESOURCE chunk is the snapshot image (the first is the state).
+sync = b'\xc3RGC'
+pos, seen = 32, 0
+while True:
+    i = d.find(sync, pos)
+    assert i >= 0
+    n = int.from_bytes(d[i + 8:i + 12], 'little')
+    if d[i + 4] == 2:
+        seen += 1
+        if seen == 2:
+            d[i + 16 + n - 1] ^= 0xff
+            break
+    pos = i + 20 + n
+open(sys.argv[2], 'wb').write(d)
+PY
+"$cmp" damaged.raygl -o dmg --raygl2pov "$r2p" >dmg.log 2>&1
+[ $? -eq 1 ] && grep -q '^raygl-compare: damaged.raygl: frame 0, @Snapshot image #2 @0x' dmg.log ||
+    { cat dmg.log; fail "damaged snapshot"; }
+# Truncated inside the last frame: nothing left to compare.
+head -c $((size - 100)) run.raygl >cut.raygl
+"$cmp" cut.raygl -o cut --raygl2pov "$r2p" >cut.log 2>&1
+[ $? -eq 1 ] && grep -q 'no frame holds a usable snapshot' cut.log || { cat cut.log; fail "truncated"; }
+# Bad usage.
+"$cmp" run.raygl >usage.log 2>&1
+[ $? -eq 2 ] || fail "no -o is not a usage error"
+"$cmp" run.raygl -o x --frames 3-1 >usage.log 2>&1
+[ $? -eq 2 ] || fail "--frames 3-1 is not a usage error"
+# Only the expected names in the folder (nothing escaped into it from elsewhere
+# and raygl-compare wrote only under its -o folders).
+for f in *; do
+    case $f in
+    run.raygl|gl.png|program.log|cmp.log|cmp|floor.log|bad.raygl|bad.log|damaged.raygl|dmg.log|dmg|cut.raygl|cut.log|cut|usage.log) ;;
+    *) fail "unexpected file $f" ;;
+    esac
+done
+echo "compare test: PASS"
