@@ -71,6 +71,8 @@ struct povwriter {
     bool in_proto;       /* writing a display list's prototype: no eye space known */
     uint8_t *front;      /* per pool vertex of the mesh: on a front-facing face */
     size_t cap_front;
+    double *eye;         /* per pool vertex of the mesh: its eye-space position */
+    size_t cap_eye;
     povtex tex;          /* the frame's texture images */
 };
 
@@ -97,6 +99,7 @@ void povwriter_destroy(povwriter *w)
     tr_free(w->bverts);
     tr_free(w->btris);
     tr_free(w->front);
+    tr_free(w->eye);
     povtex_finish(&w->tex);
     tr_free(w);
 }
@@ -398,14 +401,27 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
     /* Lit normals on front faces, turned toward the camera where POV-Ray
      * would mirror them (povlight_front_normal). */
     bool turn = normals && !w->in_proto;
+    mat4 to_eye_inv;
+    const mat4 *inv = turn && to_eye && mat4_invert(to_eye, &to_eye_inv) ? &to_eye_inv : NULL;
     if (turn) {
-        if (tr_grow((void **)&w->front, &w->cap_front, span, 1) != 0)
+        if (tr_grow((void **)&w->front, &w->cap_front, span, 1) != 0 ||
+            tr_grow((void **)&w->eye, &w->cap_eye, span * 3, sizeof *w->eye) != 0)
             return -1;
-        memset(w->front, 0, span);
+        /* Each vertex goes to eye space once, not once per face. */
+        memset(w->front, 2, span);
+        for (size_t i = 0; i < nt; i++)
+            for (int k = 0; k < 3; k++) {
+                uint32_t v = tris[i].v[k] - lo;
+                if (w->front[v] == 2) {
+                    povlight_eye_point(to_eye, verts[tris[i].v[k]].pos, w->eye + 3 * (size_t)v);
+                    w->front[v] = 0;
+                }
+            }
         for (size_t i = 0; i < nt; i++) {
             const scene_tri *t = &tris[i];
-            if (povlight_front_facing(&w->light, to_eye, verts[t->v[0]].pos, verts[t->v[1]].pos,
-                                      verts[t->v[2]].pos))
+            const double *e = w->eye;
+            if (povlight_front_facing(&w->light, e + 3 * (size_t)(t->v[0] - lo),
+                                      e + 3 * (size_t)(t->v[1] - lo), e + 3 * (size_t)(t->v[2] - lo)))
                 for (int k = 0; k < 3; k++)
                     w->front[t->v[k] - lo] = 1;
         }
@@ -437,7 +453,7 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
                             memcpy(ukey + 3, up, sizeof up);
                         } else if (turn && w->front[v - lo]) {
                             float tn[3];
-                            povlight_front_normal(&w->light, to_eye, sv->pos, n, tn);
+                            povlight_front_normal(&w->light, to_eye, inv, w->eye + 3 * (size_t)(v - lo), n, tn);
                             memcpy(ukey + 3, tn, 3 * sizeof *ukey);
                         } else {
                             memcpy(ukey + 3, n, 3 * sizeof *ukey);

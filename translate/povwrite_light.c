@@ -355,7 +355,7 @@ void povlight_texture_mapped(const povlight *pl, outbuf *ob, const scene_look *l
 
 /* ---- Normals ----------------------------------------------------------------------------- */
 
-static void to_eye_point(const mat4 *m, const float p[3], double out[3])
+void povlight_eye_point(const mat4 *m, const float p[3], double out[3])
 {
     double in[4] = {p[0], p[1], p[2], 1}, o[4];
     if (!m) {
@@ -382,13 +382,10 @@ static bool toward_camera(const scene_camera *cam, const double p[3], double v[3
     return true;
 }
 
-bool povlight_front_facing(const povlight *pl, const mat4 *to_eye, const float a[3],
-                           const float b[3], const float c[3])
+bool povlight_front_facing(const povlight *pl, const double pa[3], const double pb[3],
+                           const double pc[3])
 {
-    double pa[3], pb[3], pc[3], v[3];
-    to_eye_point(to_eye, a, pa);
-    to_eye_point(to_eye, b, pb);
-    to_eye_point(to_eye, c, pc);
+    double v[3];
     double e1[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
     double e2[3] = {pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]};
     double g[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
@@ -406,20 +403,19 @@ bool povlight_front_facing(const povlight *pl, const mat4 *to_eye, const float a
  * N.V is, instead of mirroring it. */
 #define FRONT_MARGIN 0.02
 
-void povlight_front_normal(const povlight *pl, const mat4 *to_eye, const float pos[3],
-                           const float n[3], float out[3])
+void povlight_front_normal(const povlight *pl, const mat4 *to_eye, const mat4 *to_eye_inv,
+                           const double p[3], const float n[3], float out[3])
 {
     memcpy(out, n, 3 * sizeof *out);
-    double p[3], v[3], ne[3];
-    to_eye_point(to_eye, pos, p);
+    double v[3], ne[3];
     if (!toward_camera(&pl->s->camera, p, v))
         return;
-    mat4 inv;
     if (to_eye) { /* eye normal = M^-T n */
-        if (!mat4_invert(to_eye, &inv))
+        if (!to_eye_inv)
             return;
+        const double *inv = to_eye_inv->m;
         for (int k = 0; k < 3; k++)
-            ne[k] = n[0] * inv.m[k * 4 + 0] + n[1] * inv.m[k * 4 + 1] + n[2] * inv.m[k * 4 + 2];
+            ne[k] = n[0] * inv[k * 4 + 0] + n[1] * inv[k * 4 + 1] + n[2] * inv[k * 4 + 2];
     } else {
         for (int k = 0; k < 3; k++)
             ne[k] = n[k];

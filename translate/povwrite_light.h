@@ -49,16 +49,21 @@ void povlight_texture_mapped(const povlight *pl, outbuf *ob, const scene_look *l
  * `#declare name=texture{...}` and a newline. */
 void povlight_fog_declare(const povlight *pl, outbuf *ob, const char *name, const mat4 *to_eye);
 
-/* Whether a triangle (a, b, c in object space, counter-clockwise front
- * first) shows its front to the camera, through to_eye (NULL: eye space). */
-bool povlight_front_facing(const povlight *pl, const mat4 *to_eye, const float a[3],
-                           const float b[3], const float c[3]);
+/* Point p (object space) in eye space through to_eye (NULL: eye space). */
+void povlight_eye_point(const mat4 *to_eye, const float p[3], double out[3]);
 
-/* The normal n (object space) of a vertex at pos on a front-facing lit
- * face, turned just far enough toward the camera that POV-Ray does not
- * flip it (see the .c); out = n when it faces the camera already. */
-void povlight_front_normal(const povlight *pl, const mat4 *to_eye, const float pos[3],
-                           const float n[3], float out[3]);
+/* Whether a triangle (a, b, c in eye space, counter-clockwise front first)
+ * shows its front to the camera. */
+bool povlight_front_facing(const povlight *pl, const double a[3], const double b[3],
+                           const double c[3]);
+
+/* The normal n (object space) of a vertex at eye-space point p on a
+ * front-facing lit face, turned just far enough toward the camera that
+ * POV-Ray does not flip it (see the .c); out = n when it faces the camera
+ * already. to_eye_inv is to_eye's inverse, computed once per mesh (NULL
+ * with to_eye set: singular, n is kept). */
+void povlight_front_normal(const povlight *pl, const mat4 *to_eye, const mat4 *to_eye_inv,
+                           const double p[3], const float n[3], float out[3]);
 
 /* The light_source statements of the scene's GL lights. */
 void povlight_lights(const povlight *pl, outbuf *ob);
