@@ -97,6 +97,11 @@ if command -v ffmpeg >/dev/null 2>&1; then
     run "$r2p" anim.raygl -o frames --video anim.mp4 --fps 10
     expect_rc 0 "--video"
     [ -s anim.mp4 ] && ok "anim.mp4 written" || fail "no anim.mp4"
+    if command -v ffprobe >/dev/null 2>&1; then
+        n=$(ffprobe -v error -select_streams v:0 -count_frames \
+            -show_entries stream=nb_read_frames,width,height -of csv=p=0 anim.mp4)
+        [ "$n" = "80,60,6" ] && ok "video: 6 frames of 80x60" || fail "video holds $n, not 80,60,6"
+    fi
 else
     run "$r2p" anim.raygl -o frames --video anim.mp4
     expect_rc 1 "--video without ffmpeg"
