@@ -221,6 +221,21 @@ static void grid_line(interp *ip, const shape_style *st, surf_fn f, const void *
     interp_prim_end(ip);
 }
 
+/* A trace may ask for any number of slices and stacks; GL would draw them
+ * all, but a few bytes must not cost minutes or gigabytes here. Above
+ * this many facets the tessellated shape is skipped (the exact solid is
+ * unaffected). */
+#define SHAPE_MAX_FACETS (1u << 20)
+
+static bool tess_ok(interp *ip, const char *shape, int ni, int nj)
+{
+    if ((uint64_t)(ni > 0 ? ni : 0) * (uint64_t)(nj > 0 ? nj : 0) <= SHAPE_MAX_FACETS)
+        return true;
+    interp_diag(ip, DIAG_IGNORED, "%s with %d x %d facets skipped: over the %u RayGL tessellates",
+                shape, ni, nj, SHAPE_MAX_FACETS);
+    return false;
+}
+
 /* Whether the exact solid shows what GL shows for a filled shape. closed:
  * the surface encloses a volume seen only from outside; faceted: GL's
  * normals are per face. */
@@ -414,12 +429,15 @@ void interp_glucylinder(interp *ip, const rgl_cmd *cmd)
     g.nz = dr / len;
     g.nxy = g.height / len;
     shape_style st = quadric_style(&q);
+    if (q.draw_style != GLU_FILL && !tess_ok(ip, "gluCylinder", g.slices, g.stacks))
+        return;
     switch (q.draw_style) {
     case GLU_FILL:
         if (g.height > 0 && exact_ok(ip, false, st.inside, glu_faceted(&q)) &&
             emit_solid(ip, SCENE_SOLID_CONE, true, g.base, g.top, g.height))
             return;
-        grid_fill(ip, &st, glu_cyl_at, &g, g.slices, g.stacks);
+        if (tess_ok(ip, "gluCylinder", g.slices, g.stacks)) /* GLU caps slices, not stacks */
+            grid_fill(ip, &st, glu_cyl_at, &g, g.slices, g.stacks);
         break;
     case GLU_POINT:
         interp_prim_begin(ip, GL_POINTS);
@@ -464,6 +482,8 @@ static void glu_disk_draw(interp *ip, const rgl_cmd *cmd, double inner, double o
                   sweep_deg == 360.0};
     int slices2 = g.full ? slices : slices + 1;
     shape_style st = quadric_style(&q);
+    if (!(q.draw_style == GLU_FILL && g.full) && !tess_ok(ip, "gluDisk", slices, loops))
+        return; /* GLU caps slices, not loops */
     if (q.normals != GLU_NONE) { /* one normal for the whole disk */
         double n[3] = {0, 0, st.inside ? -1 : 1};
         set_normal(ip, n);
@@ -474,7 +494,8 @@ static void glu_disk_draw(interp *ip, const rgl_cmd *cmd, double inner, double o
         if (g.full && exact_ok(ip, false, st.inside, false) &&
             emit_solid(ip, SCENE_SOLID_DISC, false, outer, inner, 0))
             return;
-        grid_fill(ip, &st, glu_disk_at, &g, slices, loops);
+        if (tess_ok(ip, "gluDisk", slices, loops))
+            grid_fill(ip, &st, glu_disk_at, &g, slices, loops);
         break;
     case GLU_POINT:
         interp_prim_begin(ip, GL_POINTS);
@@ -591,9 +612,10 @@ void interp_glutsphere(interp *ip, const rgl_cmd *cmd)
     saved_current sc = save_current(ip);
     if (!is_wire(cmd)) {
         if (!(exact_ok(ip, true, false, false) &&
-              emit_solid(ip, SCENE_SOLID_SPHERE, false, fabs(g.r), 0, 0)))
+              emit_solid(ip, SCENE_SOLID_SPHERE, false, fabs(g.r), 0, 0)) &&
+            tess_ok(ip, "glutSolidSphere", g.slices, g.stacks))
             grid_fill(ip, &glut_style, glut_sphere_at, &g, g.slices, g.stacks);
-    } else {
+    } else if (tess_ok(ip, "glutWireSphere", g.slices, g.stacks)) {
         for (int i = 1; i < g.stacks; i++)
             grid_line(ip, &glut_style, glut_sphere_at, &g, GL_LINE_LOOP, true, i, 0, g.slices - 1);
         for (int j = 0; j < g.slices; j++)
@@ -649,13 +671,14 @@ static void glut_cyl_draw(interp *ip, const rgl_cmd *cmd, glut_cyl *g, bool cone
     g->nz = len > 0 ? (g->base - g->top) / len : 0;
     if (!is_wire(cmd)) {
         if (!(exact_ok(ip, true, false, false) && g->height > 0 &&
-              emit_solid(ip, SCENE_SOLID_CONE, false, g->base, g->top, g->height))) {
+              emit_solid(ip, SCENE_SOLID_CONE, false, g->base, g->top, g->height)) &&
+            tess_ok(ip, cone ? "glutSolidCone" : "glutSolidCylinder", g->slices, g->stacks)) {
             grid_fill(ip, &glut_style, glut_cyl_at, g, g->slices, g->stacks);
             glut_cap(ip, g, g->base, 0, -1);
             if (!cone)
                 glut_cap(ip, g, g->top, g->height, 1);
         }
-    } else {
+    } else if (tess_ok(ip, cone ? "glutWireCone" : "glutWireCylinder", g->slices, g->stacks)) {
         /* Rings: the cone's at levels 0 .. stacks-1, the cylinder's at
          * 0 .. stacks; then one line per slice from bottom to top. */
         int rings = cone ? g->stacks - 1 : g->stacks;
@@ -730,9 +753,10 @@ void interp_gluttorus(interp *ip, const rgl_cmd *cmd)
          * cross the axis. */
         bool exact = g.inner > 0 && g.outer > g.inner;
         if (!(exact && exact_ok(ip, true, false, false) &&
-              emit_solid(ip, SCENE_SOLID_TORUS, false, g.outer, g.inner, 0)))
+              emit_solid(ip, SCENE_SOLID_TORUS, false, g.outer, g.inner, 0)) &&
+            tess_ok(ip, "glutSolidTorus", g.rings, g.sides))
             grid_fill(ip, &glut_style, glut_torus_at, &g, g.rings, g.sides);
-    } else {
+    } else if (tess_ok(ip, "glutWireTorus", g.rings, g.sides)) {
         for (int j = 0; j < g.rings; j++)
             grid_line(ip, &glut_style, glut_torus_at, &g, GL_LINE_LOOP, false, j, 0, g.sides - 1);
         for (int i = 0; i < g.sides; i++)

@@ -862,6 +862,33 @@ static void test_fast_path(void)
     }
 }
 
+/* A shape's tessellation is bounded: a few bytes of trace asking for
+ * 10^10 facets are skipped with a note, up to the bound they are drawn. */
+static void test_shape_budget(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, WireTorus, 0.2, 1, 100000, 100000);
+    CMD(&s, SolidSphere, 1, 2000000, 2000000); /* exact solid: no tessellation needed */
+    CMD(&s, NewQuadric, 1);
+    CMD(&s, QuadricDrawStyle, 1, 100011 /* GLU_LINE */);
+    CMD(&s, Cylinder, 1, 1, 1, 1, 10, 1 << 30); /* GLU caps slices, not stacks */
+    CMD(&s, Disk, 1, 0.5, 1, 10, 1 << 30);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_IGNORED), 3);
+    CHECK_EQ_U(sc.nverts + sc.nlines, 0);
+    CHECK_EQ_U(sc.nsolids, 1);
+    CHECK(strstr(dlog.e[DIAG_IGNORED].text[0], "glutWireTorus with 100000 x 100000 facets") != NULL);
+    /* 1024 x 1024 is the bound itself: drawn. */
+    seq_init(&s);
+    CMD(&s, WireTorus, 0.2, 1, 1024, 1024);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_IGNORED), 3);
+    CHECK_EQ_U(sc.nlines, 2u * 1024 * 1024); /* 1024 loops of 1024 segments each way */
+    interp_destroy(ip);
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -881,6 +908,7 @@ int main(void)
     test_alloc_failure();
     test_fast_path();
     test_alloc_translation();
+    test_shape_budget();
     scene_finish(&sc);
     return CHECK_RESULT("test_interp");
 }
