@@ -10,11 +10,14 @@
  * coordinates GLU 9 and freeglut 3 give it, so culling, polygon mode, flat
  * shading, lines (wire forms, GLU_LINE, GLU_SILHOUETTE) and points
  * (GLU_POINT) come out as GL draws them. The Platonic solids are always
- * meshes: their faces are flat. docs/mapping.md lists the rules.
+ * meshes: their faces are flat. The teapot is Newell's patches (teapot.h).
+ * docs/mapping.md lists the rules.
  */
 #include "interp_internal.h"
 
 #include <string.h>
+
+#include "teapot.h"
 
 #include <GL/glu.h>
 
@@ -114,6 +117,8 @@ typedef struct shape_style {
     bool triangles;   /* cells as two triangles split along (i,j)-(i+1,j+1),
                          as freeglut's strips split them (polygon mode
                          GL_LINE shows the split), else as GLU's quads */
+    bool clockwise;   /* front faces wound clockwise about the normal
+                         (freeglut's teapot) */
 } shape_style;
 
 static void set_normal(interp *ip, const double n[3])
@@ -184,7 +189,7 @@ static void grid_fill(interp *ip, const shape_style *st, surf_fn f, const void *
             g[2] = d1[0] * d2[1] - d1[1] * d2[0];
             for (int v = 0; v < 4; v++)
                 avg += g[0] * c[v].n[0] + g[1] * c[v].n[1] + g[2] * c[v].n[2];
-            bool reverse = (avg < 0) != st->inside;
+            bool reverse = ((avg < 0) != st->inside) != st->clockwise;
             if (st->normals == GLU_FLAT) {
                 double len = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
                 double s = (avg < 0 ? -1 : 1) / (len > 0 ? len : 1);
@@ -365,7 +370,7 @@ static void glu_disk_at(const void *ctx, int i, int j, surf_point *o)
 
 static shape_style quadric_style(const interp_quadric *q)
 {
-    shape_style st = {q->normals, q->orientation == GLU_INSIDE, q->texture, false};
+    shape_style st = {q->normals, q->orientation == GLU_INSIDE, q->texture, false, false};
     return st;
 }
 
@@ -580,7 +585,7 @@ static bool is_wire(const rgl_cmd *cmd)
     }
 }
 
-static const shape_style glut_style = {GLU_SMOOTH, false, false, true};
+static const shape_style glut_style = {GLU_SMOOTH, false, false, true, false};
 
 /* freeglut's sphere: theta_j = -2 pi j / slices around z from +x,
  * phi_i = pi i / stacks down from +z. */
@@ -950,9 +955,54 @@ void interp_glutcube(interp *ip, const rgl_cmd *cmd)
     restore_current(ip, &sc);
 }
 
+/* ---- Teapot ------------------------------------------------------------------------ */
+
+typedef struct teapot_grid {
+    int patch, n; /* n points per side */
+    double size;
+} teapot_grid;
+
+/* freeglut's grid on a patch: point (i, j) at u = i/(n-1), v = j/(n-1),
+ * texture coordinates (u, v). */
+static void teapot_at(const void *ctx, int i, int j, surf_point *o)
+{
+    const teapot_grid *g = ctx;
+    double u = (double)i / (g->n - 1), v = (double)j / (g->n - 1);
+    teapot_eval(g->patch, u, v, o->p, o->n);
+    for (int k = 0; k < 3; k++)
+        o->p[k] *= g->size;
+    o->t[0] = u;
+    o->t[1] = v;
+}
+
+/* The solid teapot is the true curved surface (Newell's patches) where
+ * exact_ok allows it; it is not closed (GL shows its inside where culling
+ * removes the outside, the teapot being wound clockwise), so culling of
+ * either face keeps freeglut's mesh. Otherwise freeglut's triangles, its
+ * normals and texture coordinates; the wire teapot is its lines, 10 along
+ * each direction of each patch. */
 void interp_glutteapot(interp *ip, const rgl_cmd *cmd)
 {
-    (void)cmd;
-    if (ip->scene)
-        interp_note(ip, DIAG_NOTE_GLUT);
+    if (!ip->scene || !finite_args(ip, cmd, 0, 1))
+        return;
+    double size = arg_num(&cmd->arg[0]);
+    saved_current sc = save_current(ip);
+    static const shape_style st = {GLU_SMOOTH, false, true, true, true};
+    if (!is_wire(cmd)) {
+        if (!(size > 0 && exact_ok(ip, false, false, false) &&
+              emit_solid(ip, SCENE_SOLID_TEAPOT, false, size, 0, 0)))
+            for (int p = 0; p < TEAPOT_PATCHES; p++) {
+                teapot_grid g = {p, TEAPOT_SOLID_GRID, size};
+                grid_fill(ip, &st, teapot_at, &g, g.n - 1, g.n - 1);
+            }
+    } else {
+        for (int p = 0; p < TEAPOT_PATCHES; p++) {
+            teapot_grid g = {p, TEAPOT_WIRE_GRID, size};
+            for (int k = 0; k < g.n; k++) {
+                grid_line(ip, &st, teapot_at, &g, GL_LINE_STRIP, true, k, 0, g.n - 1);
+                grid_line(ip, &st, teapot_at, &g, GL_LINE_STRIP, false, k, 0, g.n - 1);
+            }
+        }
+    }
+    restore_current(ip, &sc);
 }

@@ -874,6 +874,7 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
     bool no_shadows = w->light.opt.no_shadows;
     if (write_protos(w, ob, s) != 0)
         return -1;
+    povwrite_solid_declares(ob, s);
     bool any = false;
     for (size_t i = 0; i < s->nmeshes && !any; i++)
         any = s->meshes[i].tri_count > 0;

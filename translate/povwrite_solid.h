@@ -6,6 +6,10 @@
 #include "povwrite_light.h"
 #include "scene.h"
 
+/* Writes the declarations the solids use (the teapot's patches), before
+ * the scene's union. */
+void povwrite_solid_declares(outbuf *ob, const scene *s);
+
 /* Writes every solid of the scene, each in its object space with its
  * matrix (inside the scene's union, so the near/far clip applies). */
 void povwrite_solids(outbuf *ob, const scene *s, const povlight *pl);

@@ -212,10 +212,11 @@ typedef struct scene_texture {
  *           z=params[2]; open (no caps) when `open`
  *   TORUS   ring radius params[0], tube radius params[1], in the xy plane
  *           around z
- *   DISC    outer radius params[0], hole radius params[1], in z=0 */
+ *   DISC    outer radius params[0], hole radius params[1], in z=0
+ *   TEAPOT  freeglut's teapot of size params[0] (teapot.h) */
 typedef enum scene_solid_kind {
     SCENE_SOLID_SPHERE, SCENE_SOLID_BOX, SCENE_SOLID_CONE, SCENE_SOLID_TORUS,
-    SCENE_SOLID_DISC,
+    SCENE_SOLID_DISC, SCENE_SOLID_TEAPOT,
 } scene_solid_kind;
 
 typedef struct scene_solid {
