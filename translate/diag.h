@@ -37,7 +37,6 @@
     X(NOTE_LISTS, "not translated yet: display lists (calls skipped)") \
     X(NOTE_ARRAYS, "not translated yet: vertex arrays (draws skipped)") \
     X(NOTE_QUADRICS, "not translated yet: GLU quadrics (skipped)") \
-    X(NOTE_GLUT, "not translated yet: the GLUT teapot (skipped)") \
     X(NOTE_STIPPLE, "not translated: line and polygon stipple (drawn solid)") \
     X(NOTE_SCISSOR, "not translated: scissor test") \
     X(NOTE_CLIP_PLANE, "not translated: user clip planes") \

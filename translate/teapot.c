@@ -203,6 +203,11 @@ static void eval_raw(double cp[16][3], double u, double v, double p[3], double d
             }
 }
 
+static double dot3(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
 static double cross_len(const double a[3], const double b[3], double n[3])
 {
     n[0] = a[1] * b[2] - a[2] * b[1];
@@ -213,17 +218,22 @@ static double cross_len(const double a[3], const double b[3], double n[3])
 
 void teapot_eval(int patch, double u, double v, double p[3], double n[3])
 {
-    double cp[16][3], du[3], dv[3], q[3];
+    double cp[16][3], du[3], dv[3], q[3], m[3];
     teapot_control_points(patch, cp);
     eval_raw(cp, u, v, p, du, dv);
     /* The patches run clockwise seen from outside (as freeglut winds its
-     * triangles), so du x dv points in. */
+     * triangles), so dv x du points out. */
     double len = cross_len(dv, du, n);
-    if (len < 1e-9) {
-        /* A collapsed edge: step into the patch for the limit. */
-        double uu = u < 0.5 ? u + 1e-4 : u - 1e-4, vv = v < 0.5 ? v + 1e-4 : v - 1e-4;
-        eval_raw(cp, uu, vv, q, du, dv);
-        len = cross_len(dv, du, n);
+    /* Where an edge collapses (the bottom's centre) or turns back on itself
+     * (the lid's top row, 0.002 across), the normal is the limit from
+     * inside the patch, as freeglut's: straight down, straight up. */
+    double uu = u < 0.5 ? u + 1e-2 : u - 1e-2, vv = v < 0.5 ? v + 1e-2 : v - 1e-2;
+    eval_raw(cp, uu, vv, q, du, dv);
+    double mlen = cross_len(dv, du, m);
+    if (len < 1e-9 || (mlen > 0 && dot3(n, m) < 0)) {
+        for (int k = 0; k < 3; k++)
+            n[k] = m[k];
+        len = mlen;
     }
     for (int k = 0; k < 3; k++)
         n[k] = len > 0 ? n[k] / len : (k == 1);
