@@ -5,10 +5,10 @@
  * 32 bicubic Bezier patches (rim, body, lid, handle, spout and the bottom
  * that later versions added), written here as our own table. Two details
  * follow what freeglut 3 draws, measured with GL's feedback mode
- * (docs/mapping.md): the lid's top row holds the points 0.002 off the axis
- * that some copies of the data keep (so the lid's normals are defined
- * there), and the second patch of each handle and spout pair runs with
- * both parameters reversed, which only moves its texture coordinates.
+ * (docs/mapping.md): the lid's top row holds points 0.002 off the axis
+ * (where the usual table repeats the centre), and the second patch of
+ * each handle and spout pair runs with both parameters reversed, which
+ * only changes its texture coordinates.
  *
  * freeglut places the data with glRotatef(270, 1, 0, 0) after scaling it
  * by size / 2 and moving it down by 1.575 (half its height): a data point
