@@ -200,7 +200,7 @@ void rgl_frame_image(void)
 {
     rgl_stream *s = rgl_tls_stream;
     if (!s || !rgl_snapshots_enabled() || s->image_taken || !s->frame_open || s->compiling ||
-        s->in_begin || s->pos == s->base)
+        s->in_begin || s->pos == s->base || !rgl_frame_wanted(s))
         return;
     s->image_taken = true;
     if (!rgl_live_context())

@@ -16,6 +16,7 @@
 #include <fcntl.h>
 #include <limits.h>
 #include <pthread.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdatomic.h>
 #include <stdio.h>
@@ -42,8 +43,10 @@
 
 #if defined(__GNUC__)
 __thread rgl_stream *rgl_tls_stream __attribute__((tls_model("initial-exec")));
+__thread int rgl_tls_passthrough __attribute__((tls_model("initial-exec")));
 #else
 _Thread_local rgl_stream *rgl_tls_stream;
+_Thread_local int rgl_tls_passthrough;
 #endif
 
 /* One entry of the INDEX chunk. */
@@ -76,6 +79,13 @@ static struct recorder {
     bool env_disabled;         /* RAYGL_RECORD=0 */
     _Atomic bool snapshots;    /* RAYGL_SNAPSHOTS=1, rayglRecordSnapshots() */
     bool forked_child;
+    bool trace_excl;           /* RAYGL_TRACE_EXCL=1: never overwrite (raygl record) */
+
+    /* Which ended frames are kept: RAYGL_FRAMES=A-B, RAYGL_EVERY=N,
+     * RAYGL_SIGNAL=SIG (only the first frame ending after each signal). */
+    uint32_t sel_first, sel_last, sel_every;
+    int sel_signal;
+    _Atomic bool sel_armed;
 
     /* Under file_mu. */
     int fd;
@@ -100,6 +110,8 @@ static struct recorder {
     .list_mu = PTHREAD_MUTEX_INITIALIZER,
     .file_mu = PTHREAD_MUTEX_INITIALIZER,
     .fd = -1,
+    .sel_last = UINT32_MAX,
+    .sel_every = 1,
 };
 
 static void stream_destroy_key(void *arg);
@@ -325,7 +337,25 @@ static int open_trace(const char *path)
             return ENAMETOOLONG;
         }
         strcpy(g.path, path);
-        fd = open(path, O_RDWR | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+        if (!g.trace_excl) {
+            fd = open(path, O_RDWR | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+        } else {
+            /* raygl record removed the file: it exists when another process
+             * of the run (a child that exec'd) took it first. */
+            fd = open(path, O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+            if (fd < 0 && errno == EEXIST) {
+                size_t n = strlen(path);
+                if (n > 6 && strcmp(path + n - 6, ".raygl") == 0)
+                    n -= 6;
+                int k = snprintf(g.path, sizeof g.path, "%.*s.%ld.raygl", (int)n, path,
+                                 (long)getpid());
+                if (k < 0 || (size_t)k >= sizeof g.path) {
+                    fail_set(ENAMETOOLONG, path);
+                    return ENAMETOOLONG;
+                }
+                fd = open(g.path, O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+            }
+        }
     } else {
         /* <program>.raygl, then <program>.1.raygl, ... like apitrace; O_EXCL
          * keeps two programs from taking the same name. */
@@ -578,6 +608,7 @@ static void stream_adopt(rgl_stream *s, uint32_t gen)
     pthread_mutex_unlock(&g.file_mu);
     s->gen = gen;
     s->frame_number = 0;
+    s->shown = 0;
     s->frame_open = false;
     s->frame.size = 0;
     if (s->compiling) {
@@ -629,6 +660,26 @@ static void stream_free(rgl_stream *s)
     rgl_free(s);
 }
 
+/* Whether the frame the program ended as its `shown`th (from 0) is kept.
+ * A dropped frame costs nothing in the file: every frame starts with the
+ * resolved state, and lists and textures are resources. */
+static bool frame_selected(uint32_t shown)
+{
+    if (shown < g.sel_first || shown > g.sel_last || (shown - g.sel_first) % g.sel_every)
+        return false;
+    if (g.sel_signal)
+        return atomic_exchange(&g.sel_armed, false);
+    return true;
+}
+
+bool rgl_frame_wanted(const rgl_stream *s)
+{
+    uint32_t n = s->shown;
+    if (n < g.sel_first || n > g.sel_last || (n - g.sel_first) % g.sel_every)
+        return false;
+    return !g.sel_signal || atomic_load(&g.sel_armed);
+}
+
 /* Writes the stream's open frame, if it holds commands. Under the stream's
  * lock, not file_mu. With `reset` (only on the stream's own thread, whose
  * hot path moves pos without a lock) it leaves the frame closed and empty;
@@ -637,7 +688,8 @@ static void stream_free(rgl_stream *s)
 static void frame_write(rgl_stream *s, bool reset)
 {
     stream_sync(s);
-    if (s->frame_open && s->frame.size > 0 && s->gen == atomic_load(&g.gen)) {
+    if (s->frame_open && s->frame.size > 0 && s->gen == atomic_load(&g.gen) &&
+        frame_selected(s->shown++)) {
         uint8_t prefix[RGL_FRAME_PREFIX_MAX];
         uint8_t *p = rgl_put_varint(prefix, s->id);
         p = rgl_put_varint(p, s->frame_number);
@@ -739,6 +791,58 @@ static void fork_child(void)
     pthread_mutex_unlock(&g.list_mu);
 }
 
+static void on_select_signal(int sig)
+{
+    (void)sig;
+    atomic_store(&g.sel_armed, true);
+}
+
+/* A frame number from the environment: digits only, below UINT32_MAX. */
+static bool parse_u32(const char *v, char **end, uint32_t *out)
+{
+    if (*v < '0' || *v > '9')
+        return false;
+    errno = 0;
+    unsigned long long x = strtoull(v, end, 10);
+    if (errno || x >= UINT32_MAX)
+        return false;
+    *out = (uint32_t)x;
+    return true;
+}
+
+/* RAYGL_FRAMES=A-B (or A-, or A), RAYGL_EVERY=N, RAYGL_SIGNAL=number.
+ * `raygl record` checks the values and reports bad ones; here a malformed
+ * value is ignored (the recorder never stops the program). */
+static void select_from_env(void)
+{
+    const char *v = getenv("RAYGL_FRAMES");
+    char *end;
+    uint32_t a, b;
+    if (v && parse_u32(v, &end, &a)) {
+        if (*end == '\0') {
+            g.sel_first = g.sel_last = a;
+        } else if (*end == '-' && end[1] == '\0') {
+            g.sel_first = a;
+        } else if (*end == '-' && parse_u32(end + 1, &end, &b) && *end == '\0' && b >= a) {
+            g.sel_first = a;
+            g.sel_last = b;
+        }
+    }
+    v = getenv("RAYGL_EVERY");
+    if (v && parse_u32(v, &end, &a) && *end == '\0' && a > 0)
+        g.sel_every = a;
+    v = getenv("RAYGL_SIGNAL");
+    if (v && parse_u32(v, &end, &a) && *end == '\0' && a > 0 && a < (uint32_t)NSIG) {
+        struct sigaction sa;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = on_select_signal;
+        sa.sa_flags = SA_RESTART;
+        sigemptyset(&sa.sa_mask);
+        if (sigaction((int)a, &sa, NULL) == 0)
+            g.sel_signal = (int)a;
+    }
+}
+
 static void init_once(void)
 {
     const char *v = getenv("RAYGL_TEST_FAIL_ALLOC");
@@ -752,12 +856,17 @@ static void init_once(void)
         g.env_disabled = true;
         atomic_store(&g.status, RAYGL_DISABLED);
     }
+    v = getenv("RAYGL_TRACE_EXCL");
+    g.trace_excl = v && strcmp(v, "1") == 0;
+    select_from_env();
     pthread_key_create(&g.key, stream_destroy_key);
     pthread_atfork(fork_prepare, fork_parent, fork_child);
     atexit(at_exit);
 }
 
 static void ensure_init(void) { pthread_once(&g.once, init_once); }
+
+void rgl_recorder_init(void) { ensure_init(); }
 
 /* Opens the trace named by RAYGL_TRACE (or the default name) at the first
  * recorded call. */
@@ -778,6 +887,11 @@ static void auto_open(void)
 rgl_stream *rgl_reserve_slow(size_t n)
 {
     rgl_stream *s = rgl_tls_stream;
+    if (RGL_UNLIKELY(rgl_tls_passthrough > 0)) {
+        if (s)
+            s->end = s->pos;
+        return NULL;
+    }
     if (RGL_UNLIKELY(!s || atomic_load(&g.status) != RAYGL_RECORDING)) {
         ensure_init();
         if (atomic_load(&g.status) == RAYGL_IDLE)

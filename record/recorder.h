@@ -104,6 +104,7 @@ typedef struct rgl_stream {
 
     uint32_t id;           /* stream id, from 1 */
     uint32_t frame_number; /* next frame's number within the stream */
+    uint32_t shown;        /* frames the program ended, kept or not (RAYGL_FRAMES) */
     bool frame_open;       /* the current frame has started (snapshot taken) */
     bool image_taken;      /* rgl_frame_image() ran for the current frame */
     uint32_t frame_flags;  /* enum rgl_frame_flags */
@@ -126,14 +127,24 @@ typedef struct rgl_stream {
 
 #if defined(__GNUC__)
 extern __thread rgl_stream *rgl_tls_stream __attribute__((tls_model("initial-exec")));
+extern __thread int rgl_tls_passthrough __attribute__((tls_model("initial-exec")));
 #else
 extern _Thread_local rgl_stream *rgl_tls_stream;
+extern _Thread_local int rgl_tls_passthrough;
 #endif
+/* rgl_tls_passthrough > 0: the thread is inside a real GLU or GLUT call
+ * (libraygl-preload.so, preload.h); its calls are forwarded unrecorded. It
+ * is raised with the stream's `end` pulled back, so the check costs the hot
+ * path nothing. Always 0 in libraygl. */
+
+/* Initialises the recorder (environment, fork and exit handlers, the
+ * RAYGL_SIGNAL handler) ahead of the first recorded call. */
+void rgl_recorder_init(void);
 
 /* Slow path of rgl_reserve: initialises the recorder and the thread's stream
  * on first use, starts a frame (state snapshot), grows the buffer. Returns
  * the stream, with n bytes free at its pos, or NULL when not recording
- * (disabled, failed, fork child). */
+ * (disabled, failed, fork child, passthrough). */
 rgl_stream *rgl_reserve_slow(size_t n);
 
 /* Room for n bytes in the calling thread's current buffer, or NULL when not
@@ -174,6 +185,11 @@ void rgl_resolve_matrices(void);
  * arranges for the next call to start a new frame. A frame with no commands
  * writes nothing. */
 void rgl_frame_end(void);
+
+/* Whether the frame s is recording will be kept when it ends (RAYGL_FRAMES,
+ * RAYGL_EVERY, RAYGL_SIGNAL; `raygl record`); a dropped frame's image is
+ * not read. */
+bool rgl_frame_wanted(const rgl_stream *s);
 
 /* Frame snapshots (frameimage.c): when enabled, reads the image the calling
  * thread's frame shows (the viewport of the buffer it draws into), and

@@ -1,0 +1,345 @@
+/* capture_prog.c: an ordinary OpenGL program (it knows nothing of RayGL)
+ * for the `raygl record` tests. Each frame clears and draws one triangle
+ * of 3 vertices (glBegin, glColor3f, glVertex2f, glEnd), then shows it.
+ *
+ *   --api glx|egl|glut  how the window, context and frame end are made:
+ *                       glXSwapBuffers, eglSwapBuffers, glutSwapBuffers
+ *   --single            single-buffered GLX: the frame ends at glFlush
+ *   --lookup direct|dlsym|glx|egl
+ *                       where the drawing functions come from: linked,
+ *                       dlsym on dlopen("libGL.so.1"), glXGetProcAddressARB,
+ *                       eglGetProcAddress
+ *   --frames N          frames to draw (default 3)
+ *   --threads 2         two threads, each with its own window and context
+ *   --teapot            GLUT: each frame is one glutSolidTeapot instead
+ *   --hang FILE         after the frames, start one more (glBegin, two
+ *                       vertices), create FILE, and wait to be killed
+ *   --exec-child        after frame 0, fork; the child runs this program
+ *                       again (--api glx --frames 2)
+ *   --fork-child        after frame 0, fork; the child makes GL calls with
+ *                       no context of its own and exits
+ */
+#include <EGL/egl.h>
+#include <GL/freeglut.h>
+#include <GL/gl.h>
+#include <GL/glx.h>
+#include <X11/Xlib.h>
+#include <dlfcn.h>
+#include <fcntl.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+typedef struct gl_fns {
+    void (*Clear)(GLbitfield);
+    void (*ClearColor)(GLfloat, GLfloat, GLfloat, GLfloat);
+    void (*Begin)(GLenum);
+    void (*End)(void);
+    void (*Color3f)(GLfloat, GLfloat, GLfloat);
+    void (*Vertex2f)(GLfloat, GLfloat);
+    void (*Flush)(void);
+} gl_fns;
+
+static struct {
+    const char *api, *lookup, *hang;
+    int single, frames, threads, teapot, exec_child, fork_child;
+    const char *self;
+} opt = {"glx", "direct", NULL, 0, 3, 1, 0, 0, 0, NULL};
+
+static gl_fns gl;
+
+static void die(const char *what)
+{
+    fprintf(stderr, "capture_prog: %s\n", what);
+    exit(1);
+}
+
+static void *fn_ptr(void *p, const char *name)
+{
+    if (!p) {
+        fprintf(stderr, "capture_prog: no %s\n", name);
+        exit(1);
+    }
+    return p;
+}
+
+/* The drawing functions, from where --lookup says (after a context exists:
+ * eglGetProcAddress may need one). */
+static void load_fns(void)
+{
+    static const char *const names[] = {"glClear",    "glClearColor", "glBegin", "glEnd",
+                                        "glColor3f",  "glVertex2f",   "glFlush"};
+    void *ptrs[7];
+    if (strcmp(opt.lookup, "direct") == 0) {
+        gl = (gl_fns){glClear, glClearColor, glBegin, glEnd, glColor3f, glVertex2f, glFlush};
+        return;
+    }
+    void *h = NULL;
+    if (strcmp(opt.lookup, "dlsym") == 0 && !(h = dlopen("libGL.so.1", RTLD_NOW | RTLD_LOCAL)))
+        die("dlopen libGL.so.1");
+    for (int i = 0; i < 7; i++) {
+        void (*f)(void) = NULL;
+        if (h)
+            ptrs[i] = dlsym(h, names[i]);
+        else if (strcmp(opt.lookup, "glx") == 0)
+            f = glXGetProcAddressARB((const GLubyte *)names[i]);
+        else if (strcmp(opt.lookup, "egl") == 0)
+            f = eglGetProcAddress(names[i]);
+        else
+            die("bad --lookup");
+        if (!h)
+            memcpy(&ptrs[i], &f, sizeof f);
+        fn_ptr(ptrs[i], names[i]);
+    }
+    memcpy(&gl.Clear, &ptrs[0], sizeof ptrs[0]);
+    memcpy(&gl.ClearColor, &ptrs[1], sizeof ptrs[1]);
+    memcpy(&gl.Begin, &ptrs[2], sizeof ptrs[2]);
+    memcpy(&gl.End, &ptrs[3], sizeof ptrs[3]);
+    memcpy(&gl.Color3f, &ptrs[4], sizeof ptrs[4]);
+    memcpy(&gl.Vertex2f, &ptrs[5], sizeof ptrs[5]);
+    memcpy(&gl.Flush, &ptrs[6], sizeof ptrs[6]);
+}
+
+static void draw(int frame, int thread)
+{
+    gl.ClearColor(0.1f * (float)thread, 0.2f, 0.3f, 1);
+    gl.Clear(GL_COLOR_BUFFER_BIT);
+    if (opt.teapot) {
+        glColor3f(1, 0.5f, 0);
+        glutSolidTeapot(0.5);
+        return;
+    }
+    gl.Begin(GL_TRIANGLES);
+    gl.Color3f(1, 0, (float)thread);
+    gl.Vertex2f(-0.8f + 0.1f * (float)frame, -0.8f);
+    gl.Color3f(0, 1, 0);
+    gl.Vertex2f(0.8f, -0.8f);
+    gl.Color3f(0, 0, 1);
+    gl.Vertex2f(0, 0.8f);
+    gl.End();
+}
+
+/* The extra frame left unfinished for --hang. */
+static void hang(void)
+{
+    gl.Begin(GL_TRIANGLES);
+    gl.Vertex2f(0, 0);
+    gl.Vertex2f(1, 0);
+    int fd = open(opt.hang, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd >= 0)
+        close(fd);
+    for (;;)
+        pause();
+}
+
+static void after_frame(int frame)
+{
+    if (frame != 0)
+        return;
+    if (opt.exec_child || opt.fork_child) {
+        pid_t pid = fork();
+        if (pid < 0)
+            die("fork");
+        if (pid == 0) {
+            if (opt.exec_child) {
+                execl(opt.self, opt.self, "--api", "glx", "--frames", "2", (char *)NULL);
+                _exit(127);
+            }
+            /* No context of its own here: GL ignores these, and the
+             * parent's trace must not see them either. */
+            glBegin(GL_TRIANGLES);
+            glVertex2f(5, 5);
+            glEnd();
+            _exit(0);
+        }
+        int st;
+        if (waitpid(pid, &st, 0) != pid || !WIFEXITED(st) || WEXITSTATUS(st) != 0)
+            die("the child failed");
+    }
+}
+
+/* ---- GLX --------------------------------------------------------------- */
+
+static void *glx_thread(void *arg)
+{
+    int thread = (int)(long)arg;
+    Display *dpy = XOpenDisplay(NULL);
+    if (!dpy)
+        die("XOpenDisplay");
+    int attrs[] = {GLX_RGBA, GLX_RED_SIZE, 8, GLX_GREEN_SIZE, 8, GLX_BLUE_SIZE, 8,
+                   opt.single ? None : GLX_DOUBLEBUFFER, None};
+    XVisualInfo *vi = glXChooseVisual(dpy, DefaultScreen(dpy), attrs);
+    if (!vi)
+        die("glXChooseVisual");
+    XSetWindowAttributes swa = {0};
+    Window root = RootWindow(dpy, vi->screen);
+    swa.colormap = XCreateColormap(dpy, root, vi->visual, AllocNone);
+    Window win = XCreateWindow(dpy, root, 0, 0, 160, 120, 0, vi->depth, InputOutput, vi->visual,
+                               CWColormap, &swa);
+    XMapWindow(dpy, win);
+    GLXContext ctx = glXCreateContext(dpy, vi, NULL, True);
+    if (!ctx || !glXMakeCurrent(dpy, win, ctx))
+        die("glXCreateContext");
+    if (thread == 0)
+        load_fns();
+    for (int f = 0; f < opt.frames; f++) {
+        draw(f, thread);
+        if (opt.single)
+            gl.Flush();
+        else
+            glXSwapBuffers(dpy, win);
+        after_frame(f);
+    }
+    if (opt.hang)
+        hang();
+    glXMakeCurrent(dpy, None, NULL);
+    glXDestroyContext(dpy, ctx);
+    XDestroyWindow(dpy, win);
+    XFree(vi);
+    XCloseDisplay(dpy);
+    return NULL;
+}
+
+static void run_glx(void)
+{
+    if (opt.threads == 1) {
+        glx_thread(0);
+        return;
+    }
+    XInitThreads();
+    /* The functions are loaded once, before the threads draw. */
+    opt.lookup = "direct";
+    load_fns();
+    pthread_t t[2];
+    for (long i = 0; i < 2; i++)
+        if (pthread_create(&t[i], NULL, glx_thread, (void *)(i + 1)))
+            die("pthread_create");
+    for (int i = 0; i < 2; i++)
+        pthread_join(t[i], NULL);
+}
+
+/* ---- EGL on an X window ----------------------------------------------------- */
+
+static void run_egl(void)
+{
+    Display *x = XOpenDisplay(NULL);
+    if (!x)
+        die("XOpenDisplay");
+    EGLDisplay dpy = eglGetDisplay((EGLNativeDisplayType)x);
+    if (dpy == EGL_NO_DISPLAY || !eglInitialize(dpy, NULL, NULL) || !eglBindAPI(EGL_OPENGL_API))
+        die("eglInitialize");
+    EGLint attrs[] = {EGL_SURFACE_TYPE, EGL_WINDOW_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
+                      EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_NONE};
+    EGLConfig cfg;
+    EGLint n = 0;
+    if (!eglChooseConfig(dpy, attrs, &cfg, 1, &n) || n < 1)
+        die("eglChooseConfig");
+    EGLint vid;
+    eglGetConfigAttrib(dpy, cfg, EGL_NATIVE_VISUAL_ID, &vid);
+    XVisualInfo tmpl = {.visualid = (VisualID)vid};
+    int nv;
+    XVisualInfo *vi = XGetVisualInfo(x, VisualIDMask, &tmpl, &nv);
+    if (!vi)
+        die("XGetVisualInfo");
+    Window root = DefaultRootWindow(x);
+    XSetWindowAttributes swa = {0};
+    swa.colormap = XCreateColormap(x, root, vi->visual, AllocNone);
+    Window win = XCreateWindow(x, root, 0, 0, 160, 120, 0, vi->depth, InputOutput, vi->visual,
+                               CWColormap, &swa);
+    XMapWindow(x, win);
+    EGLSurface surf = eglCreateWindowSurface(dpy, cfg, (EGLNativeWindowType)win, NULL);
+    EGLContext ctx = eglCreateContext(dpy, cfg, EGL_NO_CONTEXT, NULL);
+    if (surf == EGL_NO_SURFACE || ctx == EGL_NO_CONTEXT || !eglMakeCurrent(dpy, surf, surf, ctx))
+        die("eglCreateContext");
+    load_fns();
+    for (int f = 0; f < opt.frames; f++) {
+        draw(f, 0);
+        eglSwapBuffers(dpy, surf);
+    }
+    eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    eglDestroyContext(dpy, ctx);
+    eglDestroySurface(dpy, surf);
+    eglTerminate(dpy);
+    XFree(vi);
+    XDestroyWindow(x, win);
+    XCloseDisplay(x);
+}
+
+/* ---- GLUT ------------------------------------------------------------------- */
+
+static int glut_frame;
+
+static void glut_display(void)
+{
+    if (glut_frame >= opt.frames) {
+        glutLeaveMainLoop();
+        return;
+    }
+    draw(glut_frame, 0);
+    glutSwapBuffers();
+    glut_frame++;
+    glutPostRedisplay();
+}
+
+static void run_glut(int argc, char **argv)
+{
+    glutInit(&argc, argv);
+    glutInitDisplayMode(GLUT_RGB | GLUT_DOUBLE | GLUT_DEPTH);
+    glutInitWindowSize(160, 120);
+    glutCreateWindow("capture_prog");
+    glutSetOption(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_GLUTMAINLOOP_RETURNS);
+    load_fns();
+    if (opt.teapot) {
+        glEnable(GL_DEPTH_TEST);
+        glEnable(GL_LIGHTING);
+        glEnable(GL_LIGHT0);
+        glEnable(GL_COLOR_MATERIAL);
+    }
+    glutDisplayFunc(glut_display);
+    glutMainLoop();
+}
+
+int main(int argc, char **argv)
+{
+    opt.self = argv[0];
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (strcmp(a, "--api") == 0 && v)
+            opt.api = argv[++i];
+        else if (strcmp(a, "--lookup") == 0 && v)
+            opt.lookup = argv[++i];
+        else if (strcmp(a, "--frames") == 0 && v)
+            opt.frames = atoi(argv[++i]);
+        else if (strcmp(a, "--threads") == 0 && v)
+            opt.threads = atoi(argv[++i]);
+        else if (strcmp(a, "--hang") == 0 && v)
+            opt.hang = argv[++i];
+        else if (strcmp(a, "--single") == 0)
+            opt.single = 1;
+        else if (strcmp(a, "--teapot") == 0)
+            opt.teapot = 1;
+        else if (strcmp(a, "--exec-child") == 0)
+            opt.exec_child = 1;
+        else if (strcmp(a, "--fork-child") == 0)
+            opt.fork_child = 1;
+        else {
+            fprintf(stderr, "capture_prog: bad argument %s\n", a);
+            return 2;
+        }
+    }
+    if (opt.frames < 1 || opt.frames > 1000 || (opt.threads != 1 && opt.threads != 2))
+        die("bad --frames or --threads");
+    if (strcmp(opt.api, "glx") == 0)
+        run_glx();
+    else if (strcmp(opt.api, "egl") == 0)
+        run_egl();
+    else if (strcmp(opt.api, "glut") == 0)
+        run_glut(argc, argv);
+    else
+        die("bad --api");
+    return 0;
+}
