@@ -16,8 +16,9 @@
  *                       vertices), create FILE, and wait to be killed
  *   --exec-child        after frame 0, fork; the child runs this program
  *                       again (--api glx --frames 2)
- *   --fork-child        after frame 0, fork; the child makes GL calls with
- *                       no context of its own and exits
+ *   --fork-child        after frame 0, fork; the child makes GL calls
+ *                       (glBegin, glVertex2f(5, 5), glEnd) and exits
+ *   --delay-ms N        sleep N ms after each frame
  */
 #include <EGL/egl.h>
 #include <GL/freeglut.h>
@@ -45,9 +46,9 @@ typedef struct gl_fns {
 
 static struct {
     const char *api, *lookup, *hang;
-    int single, frames, threads, teapot, exec_child, fork_child;
+    int single, frames, threads, teapot, exec_child, fork_child, delay_ms;
     const char *self;
-} opt = {"glx", "direct", NULL, 0, 3, 1, 0, 0, 0, NULL};
+} opt = {"glx", "direct", NULL, 0, 3, 1, 0, 0, 0, 0, NULL};
 
 static gl_fns gl;
 
@@ -137,6 +138,8 @@ static void hang(void)
 
 static void after_frame(int frame)
 {
+    if (opt.delay_ms > 0)
+        usleep((useconds_t)opt.delay_ms * 1000u);
     if (frame != 0)
         return;
     if (opt.exec_child || opt.fork_child) {
@@ -148,8 +151,9 @@ static void after_frame(int frame)
                 execl(opt.self, opt.self, "--api", "glx", "--frames", "2", (char *)NULL);
                 _exit(127);
             }
-            /* No context of its own here: GL ignores these, and the
-             * parent's trace must not see them either. */
+            /* Client-side calls only (nothing reaches the X connection
+             * shared with the parent); the parent's trace must not see
+             * them. */
             glBegin(GL_TRIANGLES);
             glVertex2f(5, 5);
             glEnd();
@@ -318,6 +322,8 @@ int main(int argc, char **argv)
             opt.threads = atoi(argv[++i]);
         else if (strcmp(a, "--hang") == 0 && v)
             opt.hang = argv[++i];
+        else if (strcmp(a, "--delay-ms") == 0 && v)
+            opt.delay_ms = atoi(argv[++i]);
         else if (strcmp(a, "--single") == 0)
             opt.single = 1;
         else if (strcmp(a, "--teapot") == 0)
@@ -331,7 +337,7 @@ int main(int argc, char **argv)
             return 2;
         }
     }
-    if (opt.frames < 1 || opt.frames > 1000 || (opt.threads != 1 && opt.threads != 2))
+    if (opt.frames < 1 || opt.frames > 1000 || opt.delay_ms < 0 || opt.delay_ms > 1000 || (opt.threads != 1 && opt.threads != 2))
         die("bad --frames or --threads");
     if (strcmp(opt.api, "glx") == 0)
         run_glx();
