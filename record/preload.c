@@ -78,7 +78,11 @@ static void *ptr_from(rgl_real_fn f)
     return p;
 }
 
-static void *(*real_dlsym(void))(void *, const char *)
+/* A sanitizer runtime looks its functions up with dlsym while it starts,
+ * before instrumented code may run: the dlsym path is not instrumented. */
+#define RGL_NO_SANITIZE __attribute__((no_sanitize("address", "undefined")))
+
+RGL_NO_SANITIZE static void *(*real_dlsym(void))(void *, const char *)
 {
     void *(*f)(void *, const char *) = rgl_dlsym_next;
     if (f)
@@ -312,7 +316,8 @@ static bool is_gl_library(void *handle)
  * the x86-64 thunk below (a tail jump keeps the caller's return address,
  * which is how libc knows who asked); elsewhere it is answered as if asked
  * by this library, which differs only for names this library defines. */
-__attribute__((visibility("hidden"), used)) void *rgl_dlsym_hook(void *handle, const char *name)
+RGL_NO_SANITIZE __attribute__((visibility("hidden"), used)) void *rgl_dlsym_hook(void *handle,
+                                                                                  const char *name)
 {
     void *(*ds)(void *, const char *) = real_dlsym();
     if (!ds)

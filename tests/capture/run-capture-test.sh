@@ -190,7 +190,8 @@ usage)
         line 'record: /nonexistent.so: the preload library is missing' preload
     # The program's own exit status comes back; a program that draws
     # nothing leaves no trace.
-    [ "$(st sh "$raygl" record -o none.raygl -- sh -c 'exit 3')" -eq 3 ] || fail "exit status"
+    [ "$(st env ${san:+LD_PRELOAD=$san} sh "$raygl" record -o none.raygl -- sh -c 'exit 3')" -eq 3 ] ||
+        fail "exit status"
     [ ! -e none.raygl ] || fail "a program that drew nothing left a trace"
     ;;
 glxgears)
