@@ -201,7 +201,8 @@ glxgears)
     record -o gears.raygl --frames 2-4 --snapshots -- timeout 4 glxgears -geometry 300x300 >prog.log 2>&1
     expect gears.raygl '^frame ' 3
     expect gears.raygl 'glCallList(list=1)' 3
-    "$cmp" gears.raygl -o cmp --raygl2pov "$r2p" --povray "$povray" "$@" -- --no-shadows >cmp.log 2>&1
+    # Through `raygl compare` (raygl-compare, from RAYGL_COMPARE).
+    sh "$raygl" compare gears.raygl -o cmp --raygl2pov "$r2p" --povray "$povray" "$@" -- --no-shadows >cmp.log 2>&1
     rc=$?
     cat cmp.log
     [ $rc -eq 0 ] || fail "raygl-compare exited with $rc"
