@@ -108,7 +108,9 @@ static rgl_real_fn find_next(const char *name)
     void *h = atomic_load(&gl_handle);
     if (!p && h)
         p = ds(h, name);
-    if (!p && strncmp(name, "gl", 2) == 0) {
+    /* GL's lookup answers any gl* name with a dispatch stub: not for GLU
+     * and GLUT, which it does not hold. */
+    if (!p && strncmp(name, "gl", 2) == 0 && strncmp(name, "glu", 3) != 0) {
         rgl_real_fn gpa = hook_real[H_GLX_GPA_ARB];
         if (!gpa)
             gpa = fn_from(ds(RTLD_NEXT, "glXGetProcAddressARB"));

@@ -5,9 +5,11 @@
  *   --api glx|egl|glut  how the window, context and frame end are made:
  *                       glXSwapBuffers, eglSwapBuffers, glutSwapBuffers
  *   --single            single-buffered GLX: the frame ends at glFlush
- *   --lookup direct|dlsym|glx|egl
+ *   --lookup direct|dlsym|next|glx|egl
  *                       where the drawing functions come from: linked,
- *                       dlsym on dlopen("libGL.so.1"), glXGetProcAddressARB,
+ *                       dlsym on dlopen("libGL.so.1"), dlsym(RTLD_NEXT)
+ *                       (the first definition after the program: what the
+ *                       program itself would call), glXGetProcAddressARB,
  *                       eglGetProcAddress
  *   --frames N          frames to draw (default 3)
  *   --threads 2         two threads, each with its own window and context
@@ -85,13 +87,15 @@ static void load_fns(void)
         void (*f)(void) = NULL;
         if (h)
             ptrs[i] = dlsym(h, names[i]);
+        else if (strcmp(opt.lookup, "next") == 0)
+            ptrs[i] = dlsym(RTLD_NEXT, names[i]);
         else if (strcmp(opt.lookup, "glx") == 0)
             f = glXGetProcAddressARB((const GLubyte *)names[i]);
         else if (strcmp(opt.lookup, "egl") == 0)
             f = eglGetProcAddress(names[i]);
         else
             die("bad --lookup");
-        if (!h)
+        if (!h && strcmp(opt.lookup, "next") != 0)
             memcpy(&ptrs[i], &f, sizeof f);
         fn_ptr(ptrs[i], names[i]);
     }

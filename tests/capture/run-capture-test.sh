@@ -7,6 +7,9 @@
 # Cases on capture_prog (each frame: one triangle, 3 glVertex2f):
 #   glx egl glut single      each frame end: 3 frames, 9 vertices, translated
 #   dlsym glxproc eglproc    each lookup path: the drawing calls recorded
+#   dlsym-next               dlsym(RTLD_NEXT) from the program finds what it
+#                            links to (the recording functions): libc sees
+#                            the program as the caller
 #   glut-solid               3 glutSolidTeapot, none of the GL calls
 #                            freeglut makes to draw them
 #   threads                  two threads, two contexts: two streams of 3
@@ -88,9 +91,10 @@ single)
     expect t.raygl 'glFlush()' 3
     translate t.raygl 3
     ;;
-dlsym | glxproc | eglproc)
+dlsym | dlsym-next | glxproc | eglproc)
     case $case in
     dlsym) args='--api glx --lookup dlsym' ;;
+    dlsym-next) args='--api glx --lookup next' ;;
     glxproc) args='--api glx --lookup glx' ;;
     eglproc) args='--api egl --lookup egl' ;;
     esac
