@@ -3,7 +3,8 @@
 # Runs apt-get directly as root, through sudo otherwise.
 set -eu
 PACKAGES="gcc pkg-config meson ninja-build libgl-dev libglu1-mesa-dev freeglut3-dev
-libosmesa6-dev libpng-dev zlib1g-dev povray xvfb xauth locales slurm-wlm munge parallel ffmpeg"
+libosmesa6-dev libpng-dev zlib1g-dev povray xvfb xauth locales slurm-wlm munge parallel ffmpeg
+libegl-dev libx11-dev mesa-utils xscreensaver-gl"
 SUDO=""
 [ "$(id -u)" -eq 0 ] || SUDO="sudo"
 export DEBIAN_FRONTEND=noninteractive

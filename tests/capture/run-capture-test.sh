@@ -197,6 +197,11 @@ usage)
     [ "$(st env ${san:+LD_PRELOAD=$san} sh "$raygl" record -o none.raygl -- sh -c 'exit 3')" -eq 3 ] ||
         fail "exit status"
     [ ! -e none.raygl ] || fail "a program that drew nothing left a trace"
+    line "recording sh into $out/none.raygl\$" 'the trace named'
+    [ "$(st env ${san:+LD_PRELOAD=$san} sh "$raygl" record --signal SIGUSR2 -o none.raygl -- true)" -eq 0 ] &&
+        line "recording true into $out/none.raygl (kill -USR2 [0-9]* records the next frame)\$" 'signal line'
+    [ "$(st env ${san:+LD_PRELOAD=$san} sh "$raygl" record -q -o none.raygl -- true)" -eq 0 ] &&
+        [ ! -s err.log ] || fail "-q printed $(cat err.log)"
     ;;
 glxgears)
     command -v glxgears >/dev/null 2>&1 || skip "glxgears not installed (mesa-utils)"
