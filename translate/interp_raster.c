@@ -53,6 +53,7 @@ void interp_begin_frame(interp *ip)
     ip->notes_seen = 0;
     ip->cleared = false;
     ip->painter = 0;
+    ip->shape_facets = 0;
     if (ip->scene)
         scene_reset(ip->scene);
     interp_lists_begin_frame(ip);

@@ -228,17 +228,27 @@ static void grid_line(interp *ip, const shape_style *st, surf_fn f, const void *
 
 /* A trace may ask for any number of slices and stacks; GL would draw them
  * all, but a few bytes must not cost minutes or gigabytes here. Above
- * this many facets the tessellated shape is skipped (the exact solid is
- * unaffected). */
-#define SHAPE_MAX_FACETS (1u << 20)
+ * these many facets, for one shape or for a frame's shapes together, the
+ * tessellated shape is skipped (exact solids are unaffected). A 512 x 512
+ * sphere is within the first. */
+#define SHAPE_MAX_FACETS (1u << 18)
+#define FRAME_MAX_SHAPE_FACETS (1u << 21)
 
 static bool tess_ok(interp *ip, const char *shape, int ni, int nj)
 {
-    if ((uint64_t)(ni > 0 ? ni : 0) * (uint64_t)(nj > 0 ? nj : 0) <= SHAPE_MAX_FACETS)
-        return true;
-    interp_diag(ip, DIAG_IGNORED, "%s with %d x %d facets skipped: over the %u RayGL tessellates",
-                shape, ni, nj, SHAPE_MAX_FACETS);
-    return false;
+    uint64_t n = (uint64_t)(ni > 0 ? ni : 0) * (uint64_t)(nj > 0 ? nj : 0);
+    if (n > SHAPE_MAX_FACETS) {
+        interp_diag(ip, DIAG_IGNORED, "%s with %d x %d facets skipped: over the %u RayGL tessellates",
+                    shape, ni, nj, SHAPE_MAX_FACETS);
+        return false;
+    }
+    if (ip->shape_facets + n > FRAME_MAX_SHAPE_FACETS) {
+        interp_diag(ip, DIAG_IGNORED, "%s skipped: the frame's shapes exceed %u facets", shape,
+                    FRAME_MAX_SHAPE_FACETS);
+        return false;
+    }
+    ip->shape_facets += n;
+    return true;
 }
 
 /* Whether the exact solid shows what GL shows for a filled shape. closed:

@@ -862,8 +862,9 @@ static void test_fast_path(void)
     }
 }
 
-/* A shape's tessellation is bounded: a few bytes of trace asking for
- * 10^10 facets are skipped with a note, up to the bound they are drawn. */
+/* Shapes' tessellation is bounded per shape and per frame: a few bytes of
+ * trace asking for 10^10 facets are skipped with a note, up to the bounds
+ * they are drawn. */
 static void test_shape_budget(void)
 {
     interp *ip = fresh();
@@ -880,12 +881,21 @@ static void test_shape_budget(void)
     CHECK_EQ_U(sc.nverts + sc.nlines, 0);
     CHECK_EQ_U(sc.nsolids, 1);
     CHECK(strstr(dlog.e[DIAG_IGNORED].text[0], "glutWireTorus with 100000 x 100000 facets") != NULL);
-    /* 1024 x 1024 is the bound itself: drawn. */
+    /* 512 x 512 is the bound itself: drawn; 8 of them fill the frame's
+     * budget, the 9th is skipped. */
+    for (int i = 0; i < 9; i++) {
+        seq_init(&s);
+        CMD(&s, WireTorus, 0.2, 1, 512, 512);
+        run(ip, &s);
+        CHECK_EQ_U(count(DIAG_IGNORED), i < 8 ? 3 : 4);
+        CHECK_EQ_U(sc.nlines, (i < 8 ? i + 1 : 8) * 2u * 512 * 512);
+    }
+    /* A new frame has a new budget. */
+    interp_begin_frame(ip);
     seq_init(&s);
-    CMD(&s, WireTorus, 0.2, 1, 1024, 1024);
+    CMD(&s, WireTorus, 0.2, 1, 512, 512);
     run(ip, &s);
-    CHECK_EQ_U(count(DIAG_IGNORED), 3);
-    CHECK_EQ_U(sc.nlines, 2u * 1024 * 1024); /* 1024 loops of 1024 segments each way */
+    CHECK_EQ_U(sc.nlines, 2u * 512 * 512);
     interp_destroy(ip);
 }
 
