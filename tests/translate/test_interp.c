@@ -899,10 +899,49 @@ static void test_shape_budget(void)
     interp_destroy(ip);
 }
 
+/* The teapot: the exact patches when unlit, freeglut's 3,136 triangles
+ * (32 patches of 7 x 7 cells) when the exact form does not apply, and its
+ * 5,760 wire segments (32 patches, 10 lines of 9 segments each way), 36 of
+ * them of no length, the counts measured from freeglut 3.4
+ * (docs/mapping.md section 15). */
+static void test_teapot(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, SolidTeapot, 1.5);
+    run(ip, &s);
+    CHECK_EQ_U(sc.nsolids, 1);
+    CHECK(sc.nsolids == 1 && sc.solids[0].kind == SCENE_SOLID_TEAPOT &&
+          sc.solids[0].params[0] == 1.5);
+    CHECK_EQ_U(sc.ntris + sc.nlines, 0);
+    interp_destroy(ip);
+
+    ip = fresh();
+    seq_init(&s);
+    CMD(&s, Enable, GL_LIGHTING);
+    CMD(&s, ShadeModel, GL_FLAT); /* faceted: GL's own triangles */
+    CMD(&s, SolidTeapot, 1);
+    run(ip, &s);
+    CHECK_EQ_U(sc.nsolids, 0);
+    CHECK_EQ_U(sc.ntris, 3136);
+    interp_destroy(ip);
+
+    ip = fresh();
+    seq_init(&s);
+    CMD(&s, Rotatef, 30, 1, 0.5, 0.2); /* no segment along the view */
+    CMD(&s, WireTeapot, 1);
+    run(ip, &s);
+    CHECK_EQ_U(sc.nsolids + sc.ntris, 0);
+    CHECK_EQ_U(sc.nlines, 5760 - 36); /* the bottom's centre row: 4 x 9 points in one */
+    interp_destroy(ip);
+}
+
 int main(void)
 {
     scene_init(&sc);
     test_paper_modelview();
+    test_teapot();
     test_transforms();
     test_stacks();
     test_rejected();
