@@ -998,14 +998,19 @@ void interp_glutteapot(interp *ip, const rgl_cmd *cmd)
     double size = arg_num(&cmd->arg[0]);
     saved_current sc = save_current(ip);
     static const shape_style st = {GLU_SMOOTH, false, true, true, true};
+    /* freeglut's fixed tessellation still counts toward the frame's bound:
+     * a trace of many teapot calls is as cheap to write as one. */
+    int cells = TEAPOT_SOLID_GRID - 1;
     if (!is_wire(cmd)) {
         if (!(size > 0 && exact_ok(ip, false, false, false) &&
-              emit_solid(ip, SCENE_SOLID_TEAPOT, false, size, 0, 0)))
+              emit_solid(ip, SCENE_SOLID_TEAPOT, false, size, 0, 0)) &&
+            tess_ok(ip, "glutSolidTeapot", TEAPOT_PATCHES * cells, 2 * cells))
             for (int p = 0; p < TEAPOT_PATCHES; p++) {
                 teapot_grid g = {p, TEAPOT_SOLID_GRID, size};
                 grid_fill(ip, &st, teapot_at, &g, g.n - 1, g.n - 1);
             }
-    } else {
+    } else if (tess_ok(ip, "glutWireTeapot", TEAPOT_PATCHES * TEAPOT_WIRE_GRID,
+                       2 * (TEAPOT_WIRE_GRID - 1))) {
         for (int p = 0; p < TEAPOT_PATCHES; p++) {
             teapot_grid g = {p, TEAPOT_WIRE_GRID, size};
             for (int k = 0; k < g.n; k++) {

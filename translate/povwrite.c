@@ -319,8 +319,10 @@ static void put_surface(povwriter *w, outbuf *ob, const scene_look *look,
  * in eye space. Equal vertices (position, and normal and colour where
  * they are written) are written once: one lookup per pool vertex. With
  * normals, normal_vectors runs parallel to vertex_vectors and POV-Ray takes
- * both by face_indices (no normal_indices). Colours are shared separately,
- * as texture_list entries. Returns -1 on memory failure. */
+ * both by face_indices (no normal_indices). A lit flat face carries its
+ * provoking vertex's normal at its three corners (GL lights the whole face
+ * with it), so its corners are looked up per face. Colours are shared
+ * separately, as texture_list entries. Returns -1 on memory failure. */
 static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
                        const scene_tri *tris, size_t nt, const scene_look *look,
                        const mat4 *to_eye)
@@ -329,7 +331,8 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
     const scene_texture *tx = look->texture >= 0 && sc && (size_t)look->texture < sc->ntextures
                                   ? &sc->textures[look->texture]
                                   : NULL;
-    bool normals = look->lit && !look->flat;
+    bool normals = look->lit;
+    bool flat_normals = look->lit && look->flat;
     /* A texel colour that replaces the fragment's needs no vertex colour. */
     bool vcolour = !look->flat && !(tx && tx->colour_is_texel);
     uint32_t words = 3 + (normals ? 3 : 0) + (vcolour ? 4 : 0) + (tx ? 2 : 0);
@@ -433,9 +436,17 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
         const scene_tri *t = &tris[i];
         uint32_t *f = w->faces + kept * 6;
         bool ok = true;
+        bool face_front = false;
+        if (flat_normals && turn) {
+            const double *e = w->eye;
+            face_front = povlight_front_facing(&w->light, e + 3 * (size_t)(t->v[0] - lo),
+                                               e + 3 * (size_t)(t->v[1] - lo),
+                                               e + 3 * (size_t)(t->v[2] - lo));
+        }
         for (int k = 0; k < 3 && ok; k++) {
             uint32_t v = t->v[k];
-            uint32_t *r = w->remap + (v - lo);
+            uint32_t corner = UNSET;
+            uint32_t *r = flat_normals ? &corner : w->remap + (v - lo);
             if (*r == UNSET) {
                 const scene_vertex *sv = &verts[v];
                 if (!finite3f(sv->pos)) {
@@ -447,16 +458,31 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
                     memcpy(ukey, sv->pos, 3 * sizeof *ukey);
                     uint32_t nk = 3;
                     if (normals) {
-                        const float *n = sv->normal;
+                        const float *n = flat_normals ? verts[t->provoking].normal : sv->normal;
+                        bool front = flat_normals ? face_front : turn && w->front[v - lo];
                         if (!finite3f(n) || (n[0] == 0 && n[1] == 0 && n[2] == 0)) {
                             static const float up[3] = {0, 0, 1}; /* POV-Ray normalises */
                             memcpy(ukey + 3, up, sizeof up);
-                        } else if (turn && w->front[v - lo]) {
+                        } else if (front) {
                             float tn[3];
                             povlight_front_normal(&w->light, to_eye, inv, w->eye + 3 * (size_t)(v - lo), n, tn);
                             memcpy(ukey + 3, tn, 3 * sizeof *ukey);
                         } else {
                             memcpy(ukey + 3, n, 3 * sizeof *ukey);
+                        }
+                        if (flat_normals && k == 2) {
+                            /* POV-Ray draws a smooth triangle whose three
+                             * normals are equal (within about 1e-5) with its
+                             * geometric normal: one corner's is tilted by
+                             * 1e-4, which moves the shading by under 0.1/255. */
+                            float tn[3];
+                            memcpy(tn, ukey + 3, sizeof tn);
+                            int a = 0;
+                            for (int c = 1; c < 3; c++)
+                                if (fabsf(tn[c]) < fabsf(tn[a]))
+                                    a = c;
+                            tn[a] += 1e-4f * sqrtf(tn[0] * tn[0] + tn[1] * tn[1] + tn[2] * tn[2]);
+                            memcpy(ukey + 3, tn, sizeof tn);
                         }
                         nk = 6;
                     }
