@@ -318,10 +318,46 @@ static char *list_entry(const char *prog, const char *dir, long n)
 typedef struct running {
     pid_t pid;
     size_t index;
+    int retried; /* started again after a transient failure */
     char *tmp_png, *tmp_log;
 } running;
 
-/* Starts povray for stem; 0 or -1 (message printed). */
+/* POV-Ray gives up when its worker threads are slow to start, which
+ * happens on a loaded machine and says nothing about the scene: such a
+ * frame is worth one more try. */
+static bool transient_failure(int st, const char *log)
+{
+    if (!(WIFEXITED(st) && WEXITSTATUS(st) != 0) || !log)
+        return false;
+    FILE *f = fopen(log, "r");
+    if (!f)
+        return false;
+    char line[512];
+    bool found = false;
+    while (!found && fgets(line, sizeof line, f))
+        found = strstr(line, "Timed out waiting for worker thread startup") != NULL;
+    fclose(f);
+    return found;
+}
+
+/* The signals that stop a render. While a povray is being started they
+ * wait, so that the handler never misses a child whose pid is not yet
+ * stored, nor sees a slot half filled. */
+static void stop_signals(int how, const sigset_t *in, sigset_t *old)
+{
+    sigset_t set;
+    if (!in) {
+        sigemptyset(&set);
+        sigaddset(&set, SIGINT);
+        sigaddset(&set, SIGTERM);
+        sigaddset(&set, SIGHUP);
+        in = &set;
+    }
+    sigprocmask(how, in, old);
+}
+
+/* Starts povray for stem; 0 or -1 (message printed). Call with the stop
+ * signals held (stop_signals). */
 static int start_frame(const char *prog, const char *povray, const char *stem, int threads,
                        running *r)
 {
@@ -340,8 +376,21 @@ static int start_frame(const char *prog, const char *povray, const char *stem, i
         posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
         posix_spawn_file_actions_addopen(&fa, 1, r->tmp_log, O_WRONLY | O_CREAT | O_TRUNC, 0666);
         posix_spawn_file_actions_adddup2(&fa, 1, 2);
+        /* povray starts with the signals unheld and at their defaults. */
+        posix_spawnattr_t at;
+        posix_spawnattr_init(&at);
+        sigset_t none, stops;
+        sigemptyset(&none);
+        sigemptyset(&stops);
+        sigaddset(&stops, SIGINT);
+        sigaddset(&stops, SIGTERM);
+        sigaddset(&stops, SIGHUP);
+        posix_spawnattr_setsigmask(&at, &none);
+        posix_spawnattr_setsigdefault(&at, &stops);
+        posix_spawnattr_setflags(&at, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
         char *argv[] = {(char *)povray, ini, larg, wt, oarg, "-D", NULL};
-        int e = posix_spawnp(&r->pid, povray, &fa, NULL, argv, environ);
+        int e = posix_spawnp(&r->pid, povray, &fa, &at, argv, environ);
+        posix_spawnattr_destroy(&at);
         posix_spawn_file_actions_destroy(&fa);
         if (e == 0)
             rc = 0;
@@ -538,11 +587,18 @@ static int render_local(const render_job *j, size_t *nfailed)
             while (run[slot].pid > 0)
                 slot++;
             run[slot].index = i;
-            if (start_frame(j->prog, povray, j->stems[i], threads, &run[slot]) != 0) {
+            run[slot].retried = 0;
+            sigset_t held;
+            stop_signals(SIG_BLOCK, NULL, &held);
+            int started = start_frame(j->prog, povray, j->stems[i], threads, &run[slot]);
+            if (started != 0) {
                 tr_free(run[slot].tmp_png);
                 tr_free(run[slot].tmp_log);
                 run[slot].tmp_png = run[slot].tmp_log = NULL;
                 run[slot].pid = 0;
+            }
+            stop_signals(SIG_SETMASK, &held, NULL);
+            if (started != 0) {
                 failed++;
                 done++;
                 stop = true; /* povray cannot be started: the next would fail alike */
@@ -565,6 +621,27 @@ static int render_local(const render_job *j, size_t *nfailed)
         for (int s = 0; s < jobs; s++) {
             if (run[s].pid != pid)
                 continue;
+            if (!run[s].retried && transient_failure(st, run[s].tmp_log)) {
+                sigset_t held;
+                stop_signals(SIG_BLOCK, NULL, &held);
+                tr_free(run[s].tmp_png);
+                tr_free(run[s].tmp_log);
+                run[s].retried = 1;
+                int again = start_frame(j->prog, povray, j->stems[run[s].index], threads, &run[s]);
+                if (again != 0) {
+                    tr_free(run[s].tmp_png);
+                    tr_free(run[s].tmp_log);
+                    run[s].tmp_png = run[s].tmp_log = NULL;
+                    run[s].pid = 0;
+                }
+                stop_signals(SIG_SETMASK, &held, NULL);
+                if (again == 0)
+                    break; /* still active */
+                active--;
+                done++;
+                failed++;
+                break;
+            }
             if (finish_frame(j->prog, j->stems[run[s].index], st, &run[s]))
                 rendered++;
             else
@@ -842,14 +919,26 @@ int render_task(const render_settings *r, const char *prog, const char *dir, lon
         memset(&run, 0, sizeof run);
         catch_signals(&run, 1);
         const char *povray = r->povray ? r->povray : "povray";
-        if (start_frame(prog, povray, stem, 1, &run) != 0) {
-            rc = 1;
-        } else {
+        for (int attempt = 0;; attempt++) {
+            sigset_t held;
+            stop_signals(SIG_BLOCK, NULL, &held);
+            tr_free(run.tmp_png);
+            tr_free(run.tmp_log);
+            run.tmp_png = run.tmp_log = NULL;
+            int started = start_frame(prog, povray, stem, 1, &run);
+            stop_signals(SIG_SETMASK, &held, NULL);
+            if (started != 0) {
+                rc = 1;
+                break;
+            }
             int st;
             while (waitpid(run.pid, &st, 0) < 0 && errno == EINTR)
                 ;
             run.pid = 0;
+            if (attempt == 0 && transient_failure(st, run.tmp_log))
+                continue;
             rc = finish_frame(prog, stem, st, &run) ? 0 : 1;
+            break;
         }
         tr_free(run.tmp_png);
         tr_free(run.tmp_log);

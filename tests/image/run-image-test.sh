@@ -133,6 +133,13 @@ nframes=$(ls "$dir/pov" | grep -c '^frame-[0-9]*\.pov$')
 # 3. The POV-Ray frame: no display, no antialiasing (3.7 rejects +A0).
 (cd "$dir" && "$povray" pov/frame-00000.ini -D -A) >"$dir/povray.log" 2>&1
 rc=$?
+# On a loaded machine POV-Ray may give up starting its worker threads: that
+# says nothing of the scene, so it gets one more try (as raygl-render does).
+if [ $rc -ne 0 ] && grep -q "Timed out waiting for worker thread startup" "$dir/povray.log"; then
+    echo "note: povray timed out starting its threads; trying once more"
+    (cd "$dir" && "$povray" pov/frame-00000.ini -D -A) >"$dir/povray.log" 2>&1
+    rc=$?
+fi
 if [ $rc -ne 0 ]; then
     show_log "$dir/povray.log"
     fail "povray exited with $rc"

@@ -54,6 +54,33 @@ grep -q "bad/frame-00001.ini: povray failed (exit status 1): .*Parse Error.*bogu
 [ -e bad/frame-00001.png ] && fail "a PNG for the failed frame"
 grep -q "2 frames rendered .* 1 failed" "$work/err" || fail "failure summary: $(cat "$work/err")"
 
+# ---- POV-Ray's worker-thread startup timeout (a loaded machine): tried
+# once more; a second such failure is reported like any other
+cat >flaky-povray <<EOF
+#!/bin/sh
+# Fails as POV-Ray does when its threads start too slowly, the first
+# \$FLAKY_TIMES times (counted in a file), then runs the real povray.
+n=\$(cat "$work/flaky.count" 2>/dev/null || echo 0)
+echo \$((n + 1)) >"$work/flaky.count"
+if [ "\$n" -lt "\$FLAKY_TIMES" ]; then
+    echo "Fatal error in renderer: Timed out waiting for worker thread startup."
+    exit 1
+fi
+exec povray "\$@"
+EOF
+chmod +x flaky-povray
+"$r2p" b.raygl -o flaky --frames 0 -q
+run env FLAKY_TIMES=1 "$render" flaky --povray "$work/flaky-povray"
+expect_rc 0 "a frame whose first povray timed out starting its threads"
+[ -s flaky/frame-00000.png ] && [ "$(cat flaky.count)" = 2 ] && ok "rendered on the second try" ||
+    fail "retry: $(cat flaky.count) runs, $(ls flaky)"
+rm -f flaky.count flaky/frame-00000.png
+run env FLAKY_TIMES=2 "$render" flaky --povray "$work/flaky-povray"
+expect_rc 1 "a frame that times out twice"
+grep -q "flaky/frame-00000.ini: povray failed (exit status 1): .*Timed out waiting for worker thread startup" \
+    "$work/err" && [ "$(cat flaky.count)" = 2 ] && ok "reported after the second try" ||
+    fail "second timeout: $(cat "$work/err")"
+
 # ---- bad usage and missing tools: nothing rendered is lost
 before=$(ls -l --time-style=+%s.%N frames/*.png | md5sum)
 run "$r2p" anim.raygl -o frames --render --povray /nonexistent/povray
