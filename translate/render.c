@@ -343,14 +343,19 @@ static bool transient_failure(int st, const char *log)
 /* The signals that stop a render. While a povray is being started they
  * wait, so that the handler never misses a child whose pid is not yet
  * stored, nor sees a slot half filled. */
+static void stop_signal_set(sigset_t *set)
+{
+    sigemptyset(set);
+    sigaddset(set, SIGINT);
+    sigaddset(set, SIGTERM);
+    sigaddset(set, SIGHUP);
+}
+
 static void stop_signals(int how, const sigset_t *in, sigset_t *old)
 {
     sigset_t set;
     if (!in) {
-        sigemptyset(&set);
-        sigaddset(&set, SIGINT);
-        sigaddset(&set, SIGTERM);
-        sigaddset(&set, SIGHUP);
+        stop_signal_set(&set);
         in = &set;
     }
     sigprocmask(how, in, old);
@@ -381,10 +386,7 @@ static int start_frame(const char *prog, const char *povray, const char *stem, i
         posix_spawnattr_init(&at);
         sigset_t none, stops;
         sigemptyset(&none);
-        sigemptyset(&stops);
-        sigaddset(&stops, SIGINT);
-        sigaddset(&stops, SIGTERM);
-        sigaddset(&stops, SIGHUP);
+        stop_signal_set(&stops);
         posix_spawnattr_setsigmask(&at, &none);
         posix_spawnattr_setsigdefault(&at, &stops);
         posix_spawnattr_setflags(&at, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
