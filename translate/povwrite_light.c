@@ -390,8 +390,10 @@ bool povlight_front_facing(const povlight *pl, const double pa[3], const double 
     double e2[3] = {pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]};
     double g[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
                    e1[0] * e2[1] - e1[1] * e2[0]};
-    if (!toward_camera(&pl->s->camera, pa, v))
-        return false;
+    /* Only the sign matters: the view vector needs no normalising. */
+    const scene_camera *cam = &pl->s->camera;
+    for (int k = 0; k < 3; k++)
+        v[k] = cam->kind == SCENE_CAMERA_ORTHOGRAPHIC ? -cam->direction[k] : cam->location[k] - pa[k];
     return g[0] * v[0] + g[1] * v[1] + g[2] * v[2] > 0;
 }
 
