@@ -597,6 +597,28 @@ static bool is_wire(const rgl_cmd *cmd)
 
 static const shape_style glut_style = {GLU_SMOOTH, false, false, true, false};
 
+/* Point pair k (of n round a band) of one of a shape's strips. */
+typedef void (*pair_fn)(const void *ctx, int band, int k, surf_point out[2]);
+
+/* freeglut 3 fills its sphere, cone, cylinder and torus with one
+ * GL_TRIANGLE_STRIP per band: n pairs of points once round, then the
+ * first pair again. The same strips in the same order give GL's split of
+ * each cell, its winding, and under GL_FLAT its lighting (the normal of
+ * each triangle's last vertex). */
+static void glut_strips(interp *ip, pair_fn f, const void *ctx, int bands, int n)
+{
+    for (int b = 0; b < bands; b++) {
+        interp_prim_begin(ip, GL_TRIANGLE_STRIP);
+        for (int k = 0; k <= n; k++) {
+            surf_point pr[2];
+            f(ctx, b, k % n, pr);
+            emit_point(ip, &glut_style, &pr[0]);
+            emit_point(ip, &glut_style, &pr[1]);
+        }
+        interp_prim_end(ip);
+    }
+}
+
 /* freeglut's sphere: theta_j = -2 pi j / slices around z from +x,
  * phi_i = pi i / stacks down from +z. */
 typedef struct glut_sphere {
@@ -617,6 +639,14 @@ static void glut_sphere_at(const void *ctx, int j, int i, surf_point *o)
     o->t[0] = o->t[1] = 0;
 }
 
+/* Band b lies between levels b and b + 1, the lower point first (the
+ * poles are one vertex each, their triangles the strip's every other). */
+static void glut_sphere_pair(const void *ctx, int b, int k, surf_point out[2])
+{
+    glut_sphere_at(ctx, k, b + 1, &out[0]);
+    glut_sphere_at(ctx, k, b, &out[1]);
+}
+
 void interp_glutsphere(interp *ip, const rgl_cmd *cmd)
 {
     if (!ip->scene || !finite_args(ip, cmd, 0, 1))
@@ -629,7 +659,7 @@ void interp_glutsphere(interp *ip, const rgl_cmd *cmd)
         if (!(exact_ok(ip, true, false, false) &&
               emit_solid(ip, SCENE_SOLID_SPHERE, false, fabs(g.r), 0, 0)) &&
             tess_ok(ip, "glutSolidSphere", g.slices, g.stacks))
-            grid_fill(ip, &glut_style, glut_sphere_at, &g, g.slices, g.stacks);
+            glut_strips(ip, glut_sphere_pair, &g, g.stacks, g.slices);
     } else if (tess_ok(ip, "glutWireSphere", g.slices, g.stacks)) {
         for (int i = 1; i < g.stacks; i++)
             grid_line(ip, &glut_style, glut_sphere_at, &g, GL_LINE_LOOP, true, i, 0, g.slices - 1);
@@ -661,21 +691,24 @@ static void glut_cyl_at(const void *ctx, int j, int i, surf_point *o)
     o->t[0] = o->t[1] = 0;
 }
 
-/* A cap of radius r at height z facing along sign (GL_TRIANGLE_FAN). */
-static void glut_cap(interp *ip, const glut_cyl *g, double r, double z, double sign)
+/* Band 0 is the base (its centre first), bands 1 .. stacks the side,
+ * lower level first; the cylinder's band stacks + 1 its top (centre
+ * last). The caps' points carry the caps' normals. */
+static void glut_cyl_pair(const void *ctx, int b, int k, surf_point out[2])
 {
-    double n[3] = {0, 0, sign};
-    set_normal(ip, n);
-    interp_prim_begin(ip, GL_TRIANGLE_FAN);
-    double c[3] = {0, 0, z};
-    put_vertex(ip, c);
-    for (int k = 0; k <= g->slices; k++) {
-        int j = sign > 0 ? k : g->slices - k;
-        double th = -2 * M_PI * (j % g->slices) / g->slices;
-        double p[3] = {cos(th) * r, sin(th) * r, z};
-        put_vertex(ip, p);
+    const glut_cyl *g = ctx;
+    if (b >= 1 && b <= g->stacks) {
+        glut_cyl_at(ctx, k, b - 1, &out[0]);
+        glut_cyl_at(ctx, k, b, &out[1]);
+        return;
     }
-    interp_prim_end(ip);
+    bool base = b == 0;
+    surf_point rim, centre = {{0, 0, base ? 0 : g->height}, {0, 0, base ? -1 : 1}, {0, 0}};
+    glut_cyl_at(ctx, k, base ? 0 : g->stacks, &rim);
+    rim.n[0] = rim.n[1] = 0;
+    rim.n[2] = centre.n[2];
+    out[base ? 0 : 1] = centre;
+    out[base ? 1 : 0] = rim;
 }
 
 static void glut_cyl_draw(interp *ip, const rgl_cmd *cmd, glut_cyl *g, bool cone)
@@ -688,10 +721,7 @@ static void glut_cyl_draw(interp *ip, const rgl_cmd *cmd, glut_cyl *g, bool cone
         if (!(exact_ok(ip, true, false, false) && g->height > 0 &&
               emit_solid(ip, SCENE_SOLID_CONE, false, g->base, g->top, g->height)) &&
             tess_ok(ip, cone ? "glutSolidCone" : "glutSolidCylinder", g->slices, g->stacks)) {
-            grid_fill(ip, &glut_style, glut_cyl_at, g, g->slices, g->stacks);
-            glut_cap(ip, g, g->base, 0, -1);
-            if (!cone)
-                glut_cap(ip, g, g->top, g->height, 1);
+            glut_strips(ip, glut_cyl_pair, g, g->stacks + (cone ? 1 : 2), g->slices);
         }
     } else if (tess_ok(ip, cone ? "glutWireCone" : "glutWireCylinder", g->slices, g->stacks)) {
         /* Rings: the cone's at levels 0 .. stacks-1, the cylinder's at
@@ -754,6 +784,13 @@ static void glut_torus_at(const void *ctx, int j, int i, surf_point *o)
     o->t[0] = o->t[1] = 0;
 }
 
+/* Band i runs round the rings between sides i and i + 1. */
+static void glut_torus_pair(const void *ctx, int i, int k, surf_point out[2])
+{
+    glut_torus_at(ctx, k, i, &out[0]);
+    glut_torus_at(ctx, k, i + 1, &out[1]);
+}
+
 void interp_gluttorus(interp *ip, const rgl_cmd *cmd)
 {
     if (!ip->scene || !finite_args(ip, cmd, 0, 2))
@@ -770,7 +807,7 @@ void interp_gluttorus(interp *ip, const rgl_cmd *cmd)
         if (!(exact && exact_ok(ip, true, false, false) &&
               emit_solid(ip, SCENE_SOLID_TORUS, false, g.outer, g.inner, 0)) &&
             tess_ok(ip, "glutSolidTorus", g.rings, g.sides))
-            grid_fill(ip, &glut_style, glut_torus_at, &g, g.rings, g.sides);
+            glut_strips(ip, glut_torus_pair, &g, g.sides, g.rings);
     } else if (tess_ok(ip, "glutWireTorus", g.rings, g.sides)) {
         for (int j = 0; j < g.rings; j++)
             grid_line(ip, &glut_style, glut_torus_at, &g, GL_LINE_LOOP, false, j, 0, g.sides - 1);
