@@ -8,7 +8,9 @@
  *
  * Meshes become mesh2 with shared vertices: equal positions, normals and
  * colours are written once (dedup.h). Per-vertex colours go through
- * texture_list with three indices per face, flat faces take one. Faces are
+ * texture_list with three indices per face, flat faces take one; in a
+ * display list's prototype they go as one image instead (colour_image_ok).
+ * Faces are
  * written (v0, v2, v1): POV-Ray then calls GL's front side the outside of
  * the face, which keeps `texture` for GL_FRONT and `interior_texture` for
  * GL_BACK. Degenerate faces, which POV-Ray would reject, are left out, as
@@ -74,6 +76,10 @@ struct povwriter {
     double *eye;         /* per pool vertex of the mesh: its eye-space position */
     size_t cap_eye;
     povtex tex;          /* the frame's texture images */
+    const float **vcorner; /* colour image: 3 corner colours per kept face */
+    size_t cap_vcorner;
+    float *vuv; /* colour image: 3 uv per kept face */
+    size_t cap_vuv;
 };
 
 povwriter *povwriter_create(void)
@@ -100,6 +106,8 @@ void povwriter_destroy(povwriter *w)
     tr_free(w->btris);
     tr_free(w->front);
     tr_free(w->eye);
+    tr_free(w->vcorner);
+    tr_free(w->vuv);
     povtex_finish(&w->tex);
     tr_free(w);
 }
@@ -312,6 +320,49 @@ static void put_surface(povwriter *w, outbuf *ob, const scene_look *look,
     outbuf_putc(ob, '}');
 }
 
+/* Whether a prototype's mesh carries its vertex colours as one image
+ * (povtex_colours) rather than a texture_list: each object{} copy of a
+ * mesh2 copies and transforms its whole texture_list in POV-Ray, a single
+ * texture stays one (docs/mapping.md section 12). The colours must vary,
+ * be opaque and need no more clamping than POVTEX_CLAMP_MAX; lit, the
+ * colour must be GL_AMBIENT_AND_DIFFUSE's alone (the pigment then scales
+ * both as GL's colour does), one-sided. Fog and blending keep the list. */
+#define COLOUR_IMAGE_MAX_TRIS (1u << 22)
+
+static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const scene_tri *tris,
+                            size_t nt, const scene_look *look)
+{
+    const scene *s = w->light.s;
+    if (!w->in_proto || !s || look->fog || look->blend != SCENE_BLEND_OPAQUE ||
+        nt > COLOUR_IMAGE_MAX_TRIS)
+        return false;
+    if (look->lit) {
+        if (look->material < 0 || (size_t)look->material >= s->nmaterials)
+            return false;
+        const scene_material *m = &s->materials[look->material];
+        if (m->two_sided || m->color_material[0] != (SCENE_CM_AMBIENT | SCENE_CM_DIFFUSE) ||
+            m->emission[0][0] != 0 || m->emission[0][1] != 0 || m->emission[0][2] != 0)
+            return false;
+    }
+    const float *first = NULL;
+    bool differ = false;
+    for (size_t i = 0; i < nt; i++) {
+        const float *c[3];
+        for (int k = 0; k < 3; k++) {
+            c[k] = verts[look->flat ? tris[i].provoking : tris[i].v[k]].color;
+            if (c[k][3] != 1)
+                return false;
+            if (!first)
+                first = c[k];
+            else if (!differ && memcmp(first, c[k], 3 * sizeof *first) != 0)
+                differ = true;
+        }
+        if (!look->flat && povtex_colour_origin(c) < 0)
+            return false;
+    }
+    return differ;
+}
+
 #define UNSET UINT32_MAX
 #define BAD (UINT32_MAX - 1)
 
@@ -333,8 +384,9 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
                                   : NULL;
     bool normals = look->lit;
     bool flat_normals = look->lit && look->flat;
+    bool vimage = !tx && colour_image_ok(w, verts, tris, nt, look);
     /* A texel colour that replaces the fragment's needs no vertex colour. */
-    bool vcolour = !look->flat && !(tx && tx->colour_is_texel);
+    bool vcolour = !vimage && !look->flat && !(tx && tx->colour_is_texel);
     uint32_t words = 3 + (normals ? 3 : 0) + (vcolour ? 4 : 0) + (tx ? 2 : 0);
     dedup *vd = &w->vtx;
     if (nt == 0 || (to_eye && !mat4_finite(to_eye)))
@@ -523,7 +575,9 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
                cz = e1[0] * e2[1] - e1[1] * e2[0];
         if (cx == 0 && cy == 0 && cz == 0)
             continue;
-        if (look->flat && !(tx && tx->colour_is_texel)) {
+        if (vimage) {
+            f[3] = (uint32_t)i; /* the face's colours come from its block */
+        } else if (look->flat && !(tx && tx->colour_is_texel)) {
             /* One colour, the provoking vertex's. */
             uint32_t ci;
             COLOUR_INDEX(verts[t->provoking].color, ci);
@@ -531,8 +585,8 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
         }
         kept++;
     }
-    if (tx && tx->colour_is_texel) {
-        static const float white[4] = {1, 1, 1, 1};
+    static const float white[4] = {1, 1, 1, 1};
+    if ((tx && tx->colour_is_texel) || vimage) {
         uint32_t ci;
         COLOUR_INDEX(white, ci);
         (void)ci;
@@ -541,6 +595,19 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
     if (kept == 0)
         return 0;
     bool colour_list = w->col.count > 1;
+    if (vimage) {
+        if (tr_grow((void **)&w->vcorner, &w->cap_vcorner, kept * 3, sizeof *w->vcorner) != 0 ||
+            tr_grow((void **)&w->vuv, &w->cap_vuv, kept * 6, sizeof *w->vuv) != 0)
+            return -1;
+        for (size_t i = 0; i < kept; i++) {
+            const scene_tri *t = &tris[w->faces[i * 6 + 3]];
+            for (int k = 0; k < 3; k++)
+                w->vcorner[3 * i + k] = verts[look->flat ? t->provoking : t->v[k]].color;
+        }
+        img = povtex_colours(&w->tex, w->vcorner, kept, w->vuv);
+        if (img < 0 || povtex_image_pigment(&w->tex, (size_t)img, true, pigment) == 0)
+            return -1;
+    }
 
     /* Pass 2: the text. Each entry is written into one reservation. */
     bool special = povlight_special(look) || tx;
@@ -579,6 +646,18 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
             outbuf_f32(ob, uv[0]);
             outbuf_putc(ob, ',');
             outbuf_f32(ob, uv[1]);
+            outbuf_putc(ob, '>');
+        }
+        outbuf_puts(ob, "}\n");
+    }
+    if (vimage) { /* per face corner: taken by uv_indices */
+        outbuf_puts(ob, "uv_vectors{");
+        outbuf_u64(ob, kept * 3);
+        for (size_t i = 0; i < kept * 3; i++) {
+            outbuf_puts(ob, ",\n<");
+            outbuf_f32(ob, w->vuv[2 * i]);
+            outbuf_putc(ob, ',');
+            outbuf_f32(ob, w->vuv[2 * i + 1]);
             outbuf_putc(ob, '>');
         }
         outbuf_puts(ob, "}\n");
@@ -633,8 +712,31 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
         outbuf_commit(ob, (size_t)(q - p));
     }
     outbuf_puts(ob, "}\n");
+    if (vimage) {
+        outbuf_puts(ob, "uv_indices{");
+        outbuf_u64(ob, kept);
+        for (size_t i = 0; i < kept; i++) {
+            char *p = outbuf_room(ob, 8 * 12);
+            if (!p)
+                return -1;
+            char *q = p;
+            *q++ = ',';
+            *q++ = '\n';
+            *q++ = '<';
+            for (int k = 0; k < 3; k++) {
+                q += numfmt_u64(q, 3 * i + (size_t)order[k]);
+                *q++ = k < 2 ? ',' : '>';
+            }
+            outbuf_commit(ob, (size_t)(q - p));
+        }
+        outbuf_puts(ob, "}\n");
+    }
     const float *c0 = (const float *)(const void *)dedup_key(&w->col, 0);
-    if (!colour_list) {
+    if (vimage) { /* the image is the colour: white through GL's terms */
+        outbuf_puts(ob, "texture{");
+        povlight_texture_mapped(&w->light, ob, look, white, 0, pigment);
+        outbuf_puts(ob, "}\n");
+    } else if (!colour_list) {
         if (named)
             outbuf_puts(ob, "texture{rgl_t0}");
         else if (special)

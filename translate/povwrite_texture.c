@@ -155,12 +155,115 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
     return (int)(pt->n - 1);
 }
 
-size_t povtex_pigment(const povtex *pt, size_t i, const scene_texture *t,
-                      char buf[POVTEX_PIGMENT_MAX])
+size_t povtex_image_pigment(const povtex *pt, size_t i, bool linear,
+                            char buf[POVTEX_PIGMENT_MAX])
 {
     /* gamma 2.2 = assumed_gamma: the file's values are used as they are
      * (docs/mapping.md "Gamma"); interpolate 2 is bilinear. */
     int n = snprintf(buf, POVTEX_PIGMENT_MAX, "uv_mapping image_map{png \"%s\" gamma 2.2%s}",
-                     pt->imgs[i].name, t->linear ? " interpolate 2" : "");
+                     pt->imgs[i].name, linear ? " interpolate 2" : "");
     return n > 0 && n < POVTEX_PIGMENT_MAX ? (size_t)n : 0;
+}
+
+size_t povtex_pigment(const povtex *pt, size_t i, const scene_texture *t,
+                      char buf[POVTEX_PIGMENT_MAX])
+{
+    return povtex_image_pigment(pt, i, t->linear, buf);
+}
+
+/* ---- Vertex colours as an image ------------------------------------------------------ */
+
+static int quantise(float x)
+{
+    return x > 0 ? (x < 1 ? (int)(x * 255.0f + 0.5f) : 255) : 0; /* NaN: 0 */
+}
+
+/* How far D = B + C - A of corner o as A leaves 0..255, worst channel. */
+static int clamp_excess(const float *const c[3], int o)
+{
+    int worst = 0;
+    for (int k = 0; k < 3; k++) {
+        int d = quantise(c[(o + 1) % 3][k]) + quantise(c[(o + 2) % 3][k]) - quantise(c[o][k]);
+        int e = d < 0 ? -d : d > 255 ? d - 255 : 0;
+        worst = e > worst ? e : worst;
+    }
+    return worst;
+}
+
+static int best_origin(const float *const c[3], int *excess)
+{
+    int best = 0, be = clamp_excess(c, 0);
+    for (int o = 1; o < 3 && be > 0; o++) {
+        int e = clamp_excess(c, o);
+        if (e < be)
+            best = o, be = e;
+    }
+    *excess = be;
+    return best;
+}
+
+int povtex_colour_origin(const float *const c[3])
+{
+    int e, o = best_origin(c, &e);
+    return e <= POVTEX_CLAMP_MAX ? o : -1;
+}
+
+int povtex_colours(povtex *pt, const float *const *corners, size_t n, float *uv)
+{
+    size_t bw = 1;
+    while (bw * bw < n)
+        bw++;
+    size_t bh = n ? (n + bw - 1) / bw : 1;
+    if (bw * 2 > PADDED_MAX || bh * 2 > PADDED_MAX)
+        return -1;
+    int iw = (int)(bw * 2), ih = (int)(bh * 2);
+    uint8_t *px = tr_realloc(NULL, (size_t)iw * (size_t)ih * 4);
+    if (!px)
+        return -1;
+    memset(px, 0, (size_t)iw * (size_t)ih * 4);
+    for (size_t i = 3; i < (size_t)iw * (size_t)ih * 4; i += 4)
+        px[i] = 255;
+    for (size_t j = 0; j < n; j++) {
+        const float *const *c = corners + 3 * j;
+        int e, o = best_origin(c, &e);
+        size_t x = (j % bw) * 2, y = (j / bw) * 2;
+        uint8_t *a = px + (y * (size_t)iw + x) * 4, *b = a + 4, *cc = a + (size_t)iw * 4,
+                *d = cc + 4;
+        for (int k = 0; k < 3; k++) {
+            int va = quantise(c[o][k]), vb = quantise(c[(o + 1) % 3][k]),
+                vc = quantise(c[(o + 2) % 3][k]), vd = vb + vc - va;
+            a[k] = (uint8_t)va;
+            b[k] = (uint8_t)vb;
+            cc[k] = (uint8_t)vc;
+            d[k] = (uint8_t)(vd < 0 ? 0 : vd > 255 ? 255 : vd);
+        }
+        /* Each corner samples its texel's centre, so the face stays in
+         * its block. */
+        static const int du[3] = {0, 1, 0}, dv[3] = {0, 0, 1};
+        for (int r = 0; r < 3; r++) {
+            float *t = uv + 6 * j + 2 * ((o + r) % 3);
+            t[0] = (float)(((double)x + du[r] + 0.5) / iw);
+            t[1] = (float)(((double)y + dv[r] + 0.5) / ih);
+        }
+    }
+    char name[POVTEX_NAME_MAX];
+    snprintf(name, sizeof name, "rgl-tex-%016llx.png",
+             (unsigned long long)content_hash(px, iw, ih, false));
+    for (size_t i = 0; i < pt->n; i++)
+        if (strcmp(pt->imgs[i].name, name) == 0) {
+            tr_free(px);
+            return (int)i;
+        }
+    if (tr_grow((void **)&pt->imgs, &pt->cap, pt->n + 1, sizeof *pt->imgs) != 0) {
+        tr_free(px);
+        return -1;
+    }
+    povtex_image *im = &pt->imgs[pt->n++];
+    memset(im, 0, sizeof *im);
+    memcpy(im->name, name, sizeof name);
+    im->rgba = px;
+    im->width = iw;
+    im->height = ih;
+    im->texture = -1;
+    return (int)(pt->n - 1);
 }

@@ -50,4 +50,27 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
 size_t povtex_pigment(const povtex *pt, size_t i, const scene_texture *t,
                       char buf[POVTEX_PIGMENT_MAX]);
 
+/* The same for an image that is not a GL texture (filtering linear or
+ * nearest). */
+size_t povtex_image_pigment(const povtex *pt, size_t i, bool linear,
+                            char buf[POVTEX_PIGMENT_MAX]);
+
+/* Vertex colours as one image (docs/mapping.md section 12): per face a
+ * 2 x 2 texel block A, B, C, D = B + C - A, which bilinear filtering turns
+ * into GL's linear interpolation of the corners' colours. A face's corners
+ * c[0..2] are opaque RGB colours; the corner at A is chosen so that D
+ * needs the least clamping to 0..255 (8-bit texels).
+ *
+ * povtex_colour_origin: that corner (0..2), or -1 when even the best
+ * clamps D by more than POVTEX_CLAMP_MAX (in 1/255; the error inside the
+ * face is at most a quarter of it, at the middle of the edge B-C). */
+#define POVTEX_CLAMP_MAX 4
+int povtex_colour_origin(const float *const c[3]);
+
+/* Adds the image of n faces, corners[3 * j + k] the colour of corner k of
+ * face j, and writes the uv of each corner (its texel's centre) to
+ * uv[6 * j + 2 * k]. Returns the image's index in pt, -1 when memory ran
+ * out. Images are marked texture -1. */
+int povtex_colours(povtex *pt, const float *const *corners, size_t n, float *uv);
+
 #endif

@@ -9,12 +9,18 @@
  * matrix stays inline. Arrays: @ArrayData with glDrawArrays,
  * glDrawElements (ubyte, ushort, uint), glDrawRangeElements,
  * glArrayElement, type conversion, and draws the trace cannot supply.
+ * The writer: a prototype with a colour per vertex carries its colours as
+ * one image (2x2 texels per face), or keeps its texture_list when the
+ * fourth texel would need clamping.
  */
 #include <GL/gl.h>
 #include <string.h>
 
 #include "check.h"
 #include "interp.h"
+#include "outbuf.h"
+#include "povwrite.h"
+#include "povwrite_texture.h"
 #include "tracegen.h"
 
 static scene sc;
@@ -387,6 +393,111 @@ static void test_arrays(void)
     interp_destroy(ip);
 }
 
+/* The SDL of a frame, kept in memory. */
+static char sdl[1 << 16];
+static size_t nsdl;
+
+static int keep(void *user, const char *p, size_t n)
+{
+    (void)user;
+    if (nsdl + n >= sizeof sdl)
+        return -1;
+    memcpy(sdl + nsdl, p, n);
+    nsdl += n;
+    sdl[nsdl] = 0;
+    return 0;
+}
+
+static size_t occurrences(const char *hay, const char *needle)
+{
+    size_t n = 0;
+    for (const char *p = hay; (p = strstr(p, needle)) != NULL; p++)
+        n++;
+    return n;
+}
+
+static int texel(float c) { return (int)(c * 255.0f + 0.5f); }
+
+/* One triangle with three colours, then a move of +10 in x. */
+static uint32_t coloured_body(const float c[3][3])
+{
+    static const float xy[3][2] = {{0, 0}, {1, 0}, {0, 1}};
+    seq b;
+    seq_init(&b);
+    CMD(&b, Begin, GL_TRIANGLES);
+    for (int k = 0; k < 3; k++) {
+        CMD(&b, Color3f, c[k][0], c[k][1], c[k][2]);
+        CMD(&b, Vertex2f, xy[k][0], xy[k][1]);
+    }
+    CMD0(&b, End);
+    CMD(&b, Translatef, 10, 0, 0);
+    return add_body(&b);
+}
+
+static void test_colour_image(void)
+{
+    /* D = B + C - A stays in 0..255 with corner 0 as A. */
+    static const float soft[3][3] = {{0.2f, 0.4f, 0.6f}, {0.6f, 0.4f, 0.2f}, {0.4f, 0.8f, 0.4f}};
+    /* Red, green, blue: D leaves 0..255 whichever corner is A. */
+    static const float rgb[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const float *cs[3] = {soft[0], soft[1], soft[2]}, *cr[3] = {rgb[0], rgb[1], rgb[2]};
+    CHECK(povtex_colour_origin(cs) == 0);
+    CHECK(povtex_colour_origin(cr) == -1);
+    /* Black, white, white: only a white corner as A keeps D in range. */
+    static const float bww[3][3] = {{0, 0, 0}, {1, 1, 1}, {1, 1, 1}};
+    const float *cb[3] = {bww[0], bww[1], bww[2]};
+    CHECK(povtex_colour_origin(cb) == 1);
+
+    interp *ip = fresh();
+    uint32_t bs = coloured_body(soft), br = coloured_body(rgb);
+    seq s;
+    seq_init(&s);
+    CMD(&s, Enable, GL_DEPTH_TEST);
+    CMD(&s, NewList, 1, GL_COMPILE, bs);
+    CMD0(&s, EndList);
+    CMD(&s, NewList, 2, GL_COMPILE, br);
+    CMD0(&s, EndList);
+    for (int i = 0; i < 3; i++)
+        CMD(&s, CallList, 1);
+    CMD(&s, Translatef, 0, 5, 0);
+    for (int i = 0; i < 3; i++)
+        CMD(&s, CallList, 2);
+    run(ip, &s);
+    interp_end_frame(ip);
+    CHECK_EQ_U(sc.nprotos, 2);
+
+    povwriter *w = povwriter_create();
+    outbuf ob;
+    nsdl = 0;
+    CHECK(w != NULL && outbuf_init(&ob, 1 << 12, keep, NULL) == 0);
+    CHECK(povwriter_scene(w, &ob, &sc, NULL) == 0);
+    CHECK(outbuf_flush(&ob) == 0);
+    /* The soft prototype: its colours as an image, each corner at the
+     * centre of its texel; the RGB one keeps its texture_list. */
+    CHECK_EQ_U(occurrences(sdl, "image_map{png"), 1);
+    CHECK_EQ_U(occurrences(sdl, "texture_list{3,"), 1);
+    CHECK_EQ_U(occurrences(sdl, "uv_indices{1,"), 1);
+    CHECK(strstr(sdl, "uv_vectors{3,\n<0.25,0.25>,\n<0.75,0.25>,\n<0.25,0.75>}") != NULL);
+    CHECK(strstr(sdl, "interpolate 2") != NULL);
+    const povtex_image *im = povwriter_image(w, 0);
+    CHECK(im != NULL && povwriter_image(w, 1) == NULL);
+    if (im) {
+        CHECK(im->width == 2 && im->height == 2 && !im->alpha);
+        CHECK(strstr(sdl, im->name) != NULL);
+        const uint8_t *a = im->rgba, *b = a + 4, *c = a + 8, *d = a + 12;
+        for (int k = 0; k < 3; k++) {
+            CHECK(a[k] == texel(soft[0][k]));
+            CHECK(b[k] == texel(soft[1][k]));
+            CHECK(c[k] == texel(soft[2][k]));
+            CHECK(d[k] == b[k] + c[k] - a[k]);
+        }
+    }
+    outbuf_finish(&ob);
+    povwriter_destroy(w);
+    interp_destroy(ip);
+    free_bodies();
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -397,6 +508,7 @@ int main(void)
     test_nesting_and_delete();
     test_call_budget();
     test_arrays();
+    test_colour_image();
     scene_finish(&sc);
     return CHECK_RESULT("test_lists");
 }
