@@ -12,45 +12,20 @@
 
 #include <GL/freeglut.h>
 
-static void cell(int k, float r, float g, float b)
-{
-    glLoadIdentity();
-    glTranslatef(-1.6f + 3.2f * (float)(k % 2), 1.2f - 2.4f * (float)(k / 2), -8.0f);
-    glRotatef(25.0f, 1.0f, 0.0f, 0.0f);
-    glRotatef(-30.0f, 0.0f, 1.0f, 0.0f);
-    GLfloat diffuse[4] = {r, g, b, 1.0f}, ambient[4] = {0.3f * r, 0.3f * g, 0.3f * b, 1.0f};
-    GLfloat none[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-    glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, diffuse);
-    glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, ambient);
-    glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, none);
-}
+#include "glut_flat_scene.h"
 
 static int draw(int w, int h)
 {
-    glViewport(0, 0, w, h);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    gluPerspective(45.0, (double)w / (double)h, 2.0, 40.0);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
-    glClearColor(0.1f, 0.1f, 0.15f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    glEnable(GL_LIGHTING);
-    glShadeModel(GL_FLAT);
-    GLfloat dir[4] = {1.0f, 1.5f, 2.0f, 0.0f};
-    glLightfv(GL_LIGHT0, GL_POSITION, dir);
-    glEnable(GL_LIGHT0);
-
-    cell(0, 0.9f, 0.6f, 0.3f);
+    flat_scene_begin(w, h);
+    flat_cell(0, 0.9f, 0.6f, 0.3f);
     glutSolidTeapot(1.0);
-    cell(1, 0.3f, 0.5f, 0.9f);
+    flat_cell(1, 0.3f, 0.5f, 0.9f);
     glRotatef(70.0f, 0.0f, 1.0f, 0.0f);
     glutSolidTeapot(0.9);
-    cell(2, 0.4f, 0.8f, 0.4f);
+    flat_cell(2, 0.4f, 0.8f, 0.4f);
     glRotatef(-60.0f, 1.0f, 0.0f, 0.0f);
     glutSolidTeapot(0.8);
-    cell(3, 0.8f, 0.3f, 0.7f);
+    flat_cell(3, 0.8f, 0.3f, 0.7f);
     glRotatef(160.0f, 0.0f, 1.0f, 0.0f);
     glutSolidTeapot(1.1);
     return 0;
