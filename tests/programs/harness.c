@@ -13,11 +13,11 @@
 #endif
 
 #include <errno.h>
-#include <png.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "imagediff.h"
 #include "raygl.h"
 
 /* The pattern the buffer is filled with before GL draws (RGBA). No clear
@@ -147,38 +147,6 @@ fail_pixels:
     return 1;
 }
 
-/* Writes rows (top row first, RGB) as an 8-bit RGB PNG tagged gAMA 1/2.2. */
-static int write_png(const char *path, const unsigned char *rgb, int w, int h)
-{
-    FILE *f = fopen(path, "wb");
-    if (!f)
-        return -1;
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
-    png_infop info = png ? png_create_info_struct(png) : NULL;
-    if (!info) {
-        png_destroy_write_struct(&png, NULL);
-        fclose(f);
-        return -1;
-    }
-    if (setjmp(png_jmpbuf(png))) {
-        png_destroy_write_struct(&png, &info);
-        fclose(f);
-        return -1;
-    }
-    png_init_io(png, f);
-    png_set_IHDR(png, info, (png_uint_32)w, (png_uint_32)h, 8, PNG_COLOR_TYPE_RGB,
-                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    /* POV-Ray writes gAMA 45455 for File_Gamma=2.2: the same tag on both
-     * images makes any viewer treat them alike. */
-    png_set_gAMA_fixed(png, info, 45455);
-    png_write_info(png, info);
-    for (int y = 0; y < h; y++)
-        png_write_row(png, (png_const_bytep)(rgb + (size_t)y * (size_t)w * 3));
-    png_write_end(png, info);
-    png_destroy_write_struct(&png, &info);
-    return fclose(f) == 0 ? 0 : -1;
-}
-
 int rgl_test_finish(rgl_test *t)
 {
     int rc = 1;
@@ -241,7 +209,7 @@ int rgl_test_finish(rgl_test *t)
             dst[3 * x + 2] = src[4 * x + 2];
         }
     }
-    if (write_png(t->png_path, rgb, t->width, t->height) != 0) {
+    if (img_write_png(t->png_path, rgb, t->width, t->height) != 0) {
         fprintf(stderr, "%s: %s: cannot write the PNG\n", t->name, t->png_path);
         free(rgb);
         goto out;
