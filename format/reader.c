@@ -19,6 +19,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "errset.h"
 #include "format.h"
 #include "wire.h"
 
@@ -47,11 +48,8 @@ struct rgl_reader {
     size_t info_size;
 };
 
-#if defined(__GNUC__)
-__attribute__((format(printf, 4, 5)))
-#endif
-static rgl_status set_error(rgl_error *err, rgl_status status, uint64_t offset, const char *fmt,
-                            ...)
+rgl_status rgl_set_error(rgl_error *err, rgl_status status, uint64_t offset, uint32_t opcode,
+                         const char *fmt, ...)
 {
     va_list ap;
     if (!err)
@@ -59,11 +57,15 @@ static rgl_status set_error(rgl_error *err, rgl_status status, uint64_t offset, 
     memset(err, 0, sizeof *err);
     err->status = status;
     err->offset = offset;
+    err->opcode = opcode;
     va_start(ap, fmt);
     vsnprintf(err->detail, sizeof err->detail, fmt, ap);
     va_end(ap);
     return status;
 }
+
+/* The reader's errors name no command. */
+#define set_error(err, status, offset, ...) rgl_set_error((err), (status), (offset), 0, __VA_ARGS__)
 
 static uint32_t bswap32(uint32_t v)
 {

@@ -3,12 +3,11 @@
  * recorder. zlib does the deflate work; everything the trace says is
  * checked before it sizes an allocation (docs/format.md, section 3.1).
  */
-#include <stdarg.h>
-#include <stdio.h>
 #include <string.h>
 
 #include <zlib.h>
 
+#include "errset.h"
 #include "format.h"
 
 /* zlib's deflate expands at most 1032 times (a stored run of 258-byte
@@ -17,45 +16,26 @@
 #define ZLIB_MAX_RATIO 1032u
 #define ZLIB_STREAM_MIN 8u /* 2-byte header, an empty block, Adler-32 */
 
-#if defined(__GNUC__)
-__attribute__((format(printf, 5, 6)))
-#endif
-static rgl_status set_error(rgl_error *err, rgl_status status, uint64_t offset, uint32_t opcode,
-                            const char *fmt, ...)
-{
-    va_list ap;
-    if (!err)
-        return status;
-    memset(err, 0, sizeof *err);
-    err->status = status;
-    err->offset = offset;
-    err->opcode = opcode;
-    va_start(ap, fmt);
-    vsnprintf(err->detail, sizeof err->detail, fmt, ap);
-    va_end(ap);
-    return status;
-}
-
 rgl_status rgl_snapshot_from_cmd(const rgl_cmd *cmd, rgl_snapshot *out, rgl_error *err)
 {
     if (!cmd || !out || cmd->opcode != RGL_OP_Snapshot || cmd->nargs != 7)
-        return set_error(err, RGL_E_ARGUMENT, 0, 0, "not an @Snapshot command");
+        return rgl_set_error(err, RGL_E_ARGUMENT, 0, 0, "not an @Snapshot command");
     int64_t x = rgl_arg_i(&cmd->arg[0], 0), y = rgl_arg_i(&cmd->arg[1], 0);
     int64_t w = rgl_arg_i(&cmd->arg[2], 0), h = rgl_arg_i(&cmd->arg[3], 0);
     uint64_t format = cmd->arg[4].v.u, codec = cmd->arg[5].v.u, image = cmd->arg[6].v.u;
     if (err)
         memset(err, 0, sizeof *err);
     if (w < 1 || h < 1 || w > RGL_SNAPSHOT_SIDE_MAX || h > RGL_SNAPSHOT_SIDE_MAX) {
-        set_error(err, RGL_E_IMAGE, cmd->offset, cmd->opcode, "size %lldx%lld not in 1..%d",
+        rgl_set_error(err, RGL_E_IMAGE, cmd->offset, cmd->opcode, "size %lldx%lld not in 1..%d",
                   (long long)w, (long long)h, RGL_SNAPSHOT_SIDE_MAX);
     } else if (format != RGL_SNAPSHOT_FORMAT_RGB) {
-        set_error(err, RGL_E_IMAGE, cmd->offset, cmd->opcode, "unknown pixel format 0x%llx",
+        rgl_set_error(err, RGL_E_IMAGE, cmd->offset, cmd->opcode, "unknown pixel format 0x%llx",
                   (unsigned long long)format);
     } else if (codec != RGL_SNAPSHOT_CODEC_ZLIB) {
-        set_error(err, RGL_E_IMAGE, cmd->offset, cmd->opcode, "unknown codec %llu",
+        rgl_set_error(err, RGL_E_IMAGE, cmd->offset, cmd->opcode, "unknown codec %llu",
                   (unsigned long long)codec);
     } else if (image < 1 || image > RGL_RESOURCE_ID_MAX) {
-        set_error(err, RGL_E_IMAGE, cmd->offset, cmd->opcode, "no image resource");
+        rgl_set_error(err, RGL_E_IMAGE, cmd->offset, cmd->opcode, "no image resource");
     } else {
         out->x = (int32_t)x;
         out->y = (int32_t)y;
@@ -92,20 +72,20 @@ rgl_status rgl_snapshot_decode(const rgl_snapshot *snap, const rgl_resource *res
                                rgl_error *err)
 {
     if (!snap || !res || !rgb)
-        return set_error(err, RGL_E_ARGUMENT, 0, 0, "no snapshot, resource or output");
+        return rgl_set_error(err, RGL_E_ARGUMENT, 0, 0, "no snapshot, resource or output");
     *rgb = NULL;
     if (snap->width < 1 || snap->height < 1 || snap->width > RGL_SNAPSHOT_SIDE_MAX ||
         snap->height > RGL_SNAPSHOT_SIDE_MAX)
-        return set_error(err, RGL_E_IMAGE, snap->offset, RGL_OP_Snapshot, "size %dx%d",
+        return rgl_set_error(err, RGL_E_IMAGE, snap->offset, RGL_OP_Snapshot, "size %dx%d",
                          (int)snap->width, (int)snap->height);
     if (res->kind != RGL_RES_BYTES)
-        return set_error(err, RGL_E_RESOURCE, res->data_offset, RGL_OP_Snapshot,
+        return rgl_set_error(err, RGL_E_RESOURCE, res->data_offset, RGL_OP_Snapshot,
                          "image #%u is not a BYTES resource (kind %u)", (unsigned)res->id,
                          (unsigned)res->kind);
     size_t row = (size_t)snap->width * 3;
     size_t raw = row * (size_t)snap->height;
     if (res->size < ZLIB_STREAM_MIN || (uint64_t)res->size * ZLIB_MAX_RATIO < raw)
-        return set_error(err, RGL_E_IMAGE, res->data_offset, RGL_OP_Snapshot,
+        return rgl_set_error(err, RGL_E_IMAGE, res->data_offset, RGL_OP_Snapshot,
                          "image #%u: %zu compressed bytes cannot hold %dx%d pixels",
                          (unsigned)res->id, res->size, (int)snap->width, (int)snap->height);
 
@@ -114,7 +94,7 @@ rgl_status rgl_snapshot_decode(const rgl_snapshot *snap, const rgl_resource *res
     if (!out || !tmp) {
         rgl_format_realloc(out, 0);
         rgl_format_realloc(tmp, 0);
-        return set_error(err, RGL_E_NOMEM, res->data_offset, RGL_OP_Snapshot,
+        return rgl_set_error(err, RGL_E_NOMEM, res->data_offset, RGL_OP_Snapshot,
                          "image #%u: %zu bytes", (unsigned)res->id, raw);
     }
     z_stream z;
@@ -124,7 +104,7 @@ rgl_status rgl_snapshot_decode(const rgl_snapshot *snap, const rgl_resource *res
     rgl_status st = RGL_OK;
     int zr = inflateInit(&z);
     if (zr != Z_OK) {
-        st = set_error(err, zr == Z_MEM_ERROR ? RGL_E_NOMEM : RGL_E_IMAGE, res->data_offset,
+        st = rgl_set_error(err, zr == Z_MEM_ERROR ? RGL_E_NOMEM : RGL_E_IMAGE, res->data_offset,
                        RGL_OP_Snapshot, "image #%u: inflateInit failed", (unsigned)res->id);
         goto fail_buf;
     }
@@ -135,26 +115,26 @@ rgl_status rgl_snapshot_decode(const rgl_snapshot *snap, const rgl_resource *res
     zr = inflate(&z, Z_FINISH);
     uint64_t at = res->data_offset + z.total_in;
     if (zr == Z_MEM_ERROR) {
-        st = set_error(err, RGL_E_NOMEM, at, RGL_OP_Snapshot, "image #%u: inflate",
+        st = rgl_set_error(err, RGL_E_NOMEM, at, RGL_OP_Snapshot, "image #%u: inflate",
                        (unsigned)res->id);
     } else if (zr == Z_STREAM_END && z.avail_out != 0) {
-        st = set_error(err, RGL_E_IMAGE, at, RGL_OP_Snapshot,
+        st = rgl_set_error(err, RGL_E_IMAGE, at, RGL_OP_Snapshot,
                        "image #%u: stream ends after %lu of %zu bytes", (unsigned)res->id,
                        (unsigned long)z.total_out, raw);
     } else if (zr == Z_STREAM_END && z.avail_in != 0) {
-        st = set_error(err, RGL_E_IMAGE, at, RGL_OP_Snapshot,
+        st = rgl_set_error(err, RGL_E_IMAGE, at, RGL_OP_Snapshot,
                        "image #%u: %u bytes after the stream", (unsigned)res->id,
                        (unsigned)z.avail_in);
     } else if (zr == Z_BUF_ERROR && z.avail_out == 0) {
-        st = set_error(err, RGL_E_IMAGE, at, RGL_OP_Snapshot,
+        st = rgl_set_error(err, RGL_E_IMAGE, at, RGL_OP_Snapshot,
                        "image #%u: stream holds more than %dx%d pixels", (unsigned)res->id,
                        (int)snap->width, (int)snap->height);
     } else if (zr == Z_BUF_ERROR) {
-        st = set_error(err, RGL_E_IMAGE, at, RGL_OP_Snapshot,
+        st = rgl_set_error(err, RGL_E_IMAGE, at, RGL_OP_Snapshot,
                        "image #%u: stream truncated after %lu of %zu bytes", (unsigned)res->id,
                        (unsigned long)z.total_out, raw);
     } else if (zr != Z_STREAM_END) {
-        st = set_error(err, RGL_E_IMAGE, at, RGL_OP_Snapshot, "image #%u: %s",
+        st = rgl_set_error(err, RGL_E_IMAGE, at, RGL_OP_Snapshot, "image #%u: %s",
                        (unsigned)res->id, z.msg ? z.msg : "bad zlib stream");
     }
     inflateEnd(&z);
