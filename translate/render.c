@@ -351,21 +351,16 @@ static void stop_signal_set(sigset_t *set)
     sigaddset(set, SIGHUP);
 }
 
-static void stop_signals(int how, const sigset_t *in, sigset_t *old)
-{
-    sigset_t set;
-    if (!in) {
-        stop_signal_set(&set);
-        in = &set;
-    }
-    sigprocmask(how, in, old);
-}
-
-/* Starts povray for stem; 0 or -1 (message printed). Call with the stop
- * signals held (stop_signals). */
+/* Starts povray for stem in r, dropping the names of an earlier attempt;
+ * 0, or -1 (message printed) with r emptied. */
 static int start_frame(const char *prog, const char *povray, const char *stem, int threads,
                        running *r)
 {
+    sigset_t stops, held;
+    stop_signal_set(&stops);
+    sigprocmask(SIG_BLOCK, &stops, &held);
+    tr_free(r->tmp_png);
+    tr_free(r->tmp_log);
     r->tmp_png = partial_png(stem);
     r->tmp_log = partial_log(stem);
     char *ini = aprintf("%s.ini", stem), *oarg = r->tmp_png ? aprintf("+O%s", r->tmp_png) : NULL,
@@ -384,9 +379,8 @@ static int start_frame(const char *prog, const char *povray, const char *stem, i
         /* povray starts with the signals unheld and at their defaults. */
         posix_spawnattr_t at;
         posix_spawnattr_init(&at);
-        sigset_t none, stops;
+        sigset_t none;
         sigemptyset(&none);
-        stop_signal_set(&stops);
         posix_spawnattr_setsigmask(&at, &none);
         posix_spawnattr_setsigdefault(&at, &stops);
         posix_spawnattr_setflags(&at, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
@@ -403,6 +397,13 @@ static int start_frame(const char *prog, const char *povray, const char *stem, i
     tr_free(oarg);
     tr_free(wt);
     tr_free(larg);
+    if (rc != 0) {
+        tr_free(r->tmp_png);
+        tr_free(r->tmp_log);
+        r->tmp_png = r->tmp_log = NULL;
+        r->pid = 0;
+    }
+    sigprocmask(SIG_SETMASK, &held, NULL);
     return rc;
 }
 
@@ -590,17 +591,7 @@ static int render_local(const render_job *j, size_t *nfailed)
                 slot++;
             run[slot].index = i;
             run[slot].retried = 0;
-            sigset_t held;
-            stop_signals(SIG_BLOCK, NULL, &held);
-            int started = start_frame(j->prog, povray, j->stems[i], threads, &run[slot]);
-            if (started != 0) {
-                tr_free(run[slot].tmp_png);
-                tr_free(run[slot].tmp_log);
-                run[slot].tmp_png = run[slot].tmp_log = NULL;
-                run[slot].pid = 0;
-            }
-            stop_signals(SIG_SETMASK, &held, NULL);
-            if (started != 0) {
+            if (start_frame(j->prog, povray, j->stems[i], threads, &run[slot]) != 0) {
                 failed++;
                 done++;
                 stop = true; /* povray cannot be started: the next would fail alike */
@@ -624,20 +615,8 @@ static int render_local(const render_job *j, size_t *nfailed)
             if (run[s].pid != pid)
                 continue;
             if (!run[s].retried && transient_failure(st, run[s].tmp_log)) {
-                sigset_t held;
-                stop_signals(SIG_BLOCK, NULL, &held);
-                tr_free(run[s].tmp_png);
-                tr_free(run[s].tmp_log);
                 run[s].retried = 1;
-                int again = start_frame(j->prog, povray, j->stems[run[s].index], threads, &run[s]);
-                if (again != 0) {
-                    tr_free(run[s].tmp_png);
-                    tr_free(run[s].tmp_log);
-                    run[s].tmp_png = run[s].tmp_log = NULL;
-                    run[s].pid = 0;
-                }
-                stop_signals(SIG_SETMASK, &held, NULL);
-                if (again == 0)
+                if (start_frame(j->prog, povray, j->stems[run[s].index], threads, &run[s]) == 0)
                     break; /* still active */
                 active--;
                 done++;
@@ -922,14 +901,7 @@ int render_task(const render_settings *r, const char *prog, const char *dir, lon
         catch_signals(&run, 1);
         const char *povray = r->povray ? r->povray : "povray";
         for (int attempt = 0;; attempt++) {
-            sigset_t held;
-            stop_signals(SIG_BLOCK, NULL, &held);
-            tr_free(run.tmp_png);
-            tr_free(run.tmp_log);
-            run.tmp_png = run.tmp_log = NULL;
-            int started = start_frame(prog, povray, stem, 1, &run);
-            stop_signals(SIG_SETMASK, &held, NULL);
-            if (started != 0) {
+            if (start_frame(prog, povray, stem, 1, &run) != 0) {
                 rc = 1;
                 break;
             }
