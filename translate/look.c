@@ -268,18 +268,6 @@ bool opt_set_light(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
 
 /* ---- Applying -------------------------------------------------------------------------- */
 
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void cross3(const double a[3], const double b[3], double out[3])
-{
-    out[0] = a[1] * b[2] - a[2] * b[1];
-    out[1] = a[2] * b[0] - a[0] * b[2];
-    out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
 static bool normalize3(double v[3])
 {
     double n = sqrt(dot3(v, v));

@@ -8,11 +8,27 @@
 #ifndef RGL_MAT4_H
 #define RGL_MAT4_H
 
+#include <math.h>
 #include <stdbool.h>
 
 typedef struct mat4 {
     double m[16];
 } mat4;
+
+/* 3-vectors, as the camera, lights and patches need them. */
+static inline double dot3(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static inline void cross3(const double a[3], const double b[3], double out[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static inline double len3(const double v[3]) { return sqrt(dot3(v, v)); }
 
 /* The identity. */
 mat4 mat4_identity(void);

@@ -61,8 +61,6 @@ static bool nonzero3(const double c[3])
     return c[0] != 0 || c[1] != 0 || c[2] != 0;
 }
 
-static double len3(const double v[3]) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
-
 /* ---- The scene's extent ------------------------------------------------------------ */
 
 static void grow_box(double lo[3], double hi[3], const double p[3])

@@ -251,18 +251,6 @@ static bool solve3(double a[3][3], const double b[3], double x[3])
     return true;
 }
 
-static void cross3(const double a[3], const double b[3], double o[3])
-{
-    o[0] = a[1] * b[2] - a[2] * b[1];
-    o[1] = a[2] * b[0] - a[0] * b[2];
-    o[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
 static void set_size(scene_camera *cam, const int viewport[4])
 {
     cam->width = viewport[2] > 0 ? viewport[2] : 1;

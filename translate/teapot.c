@@ -18,6 +18,8 @@
 
 #include <math.h>
 
+#include "mat4.h"
+
 static const uint16_t teapot_patch[TEAPOT_PATCHES][16] = {
     {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15},
     {3, 16, 17, 18, 7, 19, 20, 21, 11, 22, 23, 24, 15, 25, 26, 27},
@@ -203,17 +205,10 @@ static void eval_raw(double cp[16][3], double u, double v, double p[3], double d
             }
 }
 
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
 static double cross_len(const double a[3], const double b[3], double n[3])
 {
-    n[0] = a[1] * b[2] - a[2] * b[1];
-    n[1] = a[2] * b[0] - a[0] * b[2];
-    n[2] = a[0] * b[1] - a[1] * b[0];
-    return sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    cross3(a, b, n);
+    return len3(n);
 }
 
 void teapot_eval(int patch, double u, double v, double p[3], double n[3])
