@@ -203,11 +203,17 @@ static void *glx_thread(void *arg)
     }
     if (opt.hang)
         hang();
+    /* Teardown one thread at a time: two XCloseDisplay at once crashed in
+     * libXext's XextRemoveDisplay (once, ASan build, XInitThreads called);
+     * what is tested is the drawing, not Xlib's teardown. */
+    static pthread_mutex_t teardown = PTHREAD_MUTEX_INITIALIZER;
+    pthread_mutex_lock(&teardown);
     glXMakeCurrent(dpy, None, NULL);
     glXDestroyContext(dpy, ctx);
     XDestroyWindow(dpy, win);
     XFree(vi);
     XCloseDisplay(dpy);
+    pthread_mutex_unlock(&teardown);
     return NULL;
 }
 
