@@ -911,8 +911,13 @@ rgl_stream *rgl_reserve_slow(size_t n)
     if (s->gen != gen)
         stream_adopt(s, gen);
     stream_sync(s);
-    if (!s->frame_open)
+    if (!s->frame_open) {
+#ifdef RGL_FORWARD_H
+        /* The program may have made another GL's context current. */
+        rgl_forward_select();
+#endif
         frame_start(s);
+    }
     if (recording() && rgl_buf_reserve(cur_buf(s), n)) {
         stream_window(s, true);
         ready = s;
@@ -926,6 +931,11 @@ rgl_stream *rgl_reserve_slow(size_t n)
 
 void rgl_frame_end(void)
 {
+#ifdef RGL_FORWARD_H
+    /* Also when not recording: the calls of the next frame go to the GL
+     * current now. */
+    rgl_forward_select();
+#endif
     rgl_stream *s = rgl_tls_stream;
     if (!s)
         return;
