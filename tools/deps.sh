@@ -4,7 +4,7 @@
 set -eu
 PACKAGES="gcc pkg-config meson ninja-build libgl-dev libglu1-mesa-dev freeglut3-dev
 libosmesa6-dev libpng-dev zlib1g-dev povray xvfb xauth locales slurm-wlm munge parallel ffmpeg
-libegl-dev libx11-dev mesa-utils xscreensaver-gl"
+libegl-dev libx11-dev mesa-utils xscreensaver-gl man-db groff-base binutils"
 SUDO=""
 [ "$(id -u)" -eq 0 ] || SUDO="sudo"
 export DEBIAN_FRONTEND=noninteractive
