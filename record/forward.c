@@ -57,7 +57,7 @@ static rgl_fwd_fn (*osmesa_gpa)(const char *);
 
 /* Whether the tables differ (libGL linked before libOSMesa), and which one
  * GLU's and GLUT's gl* imports point at. */
-static bool mismatch;
+static _Atomic bool mismatch;
 static const rgl_fwd_fn *relinked;
 static pthread_mutex_t relink_mu = PTHREAD_MUTEX_INITIALIZER;
 
