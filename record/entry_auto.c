@@ -61,8 +61,15 @@
 /* GLUT's shapes make freeglut exit when glutInit has not run (batch use
  * with no window): only forward them once it has. */
 #define RGL_FORWARD_GUARD_GL
+#ifdef RGL_FORWARD_H
+/* GLU and GLUT draw through their own gl* imports: choose the thread's GL
+ * (and point those at it, forward.h) before the first shape too. */
+#define RGL_FORWARD_GUARD_GLU if (RGL_FWD_TABLE())
+#define RGL_FORWARD_GUARD_GLUT if (RGL_FWD_TABLE() && rgl_glut_ready())
+#else
 #define RGL_FORWARD_GUARD_GLU
 #define RGL_FORWARD_GUARD_GLUT if (rgl_glut_ready())
+#endif
 
 /* Whether GL is between glBegin and glEnd, for rgl_resolve_matrices (op
  * is a constant: this folds away for every other row). A glBegin compiled
