@@ -10,6 +10,7 @@
  * Each must land in the OSMesa buffer, and the frame must be recorded with
  * the live context's state snapshot.
  */
+#include <dlfcn.h>
 #include <link.h>
 #include <stdlib.h>
 #include <string.h>
@@ -48,6 +49,39 @@ static bool pixel_is(int x, int y, int r, int g, int b, const char *what)
     const unsigned char *p = pixels + ((size_t)y * SIDE + (size_t)x) * 4;
     return CHECKM(p[0] == r && p[1] == g && p[2] == b, "%s at (%d,%d): %d,%d,%d, want %d,%d,%d",
                   what, x, y, p[0], p[1], p[2], r, g, b);
+}
+
+/* glBegin as the program's own calls reach it (its GOT slot, read anew). */
+__attribute__((noinline)) static void *own_glBegin(void)
+{
+    void (*volatile f)(GLenum) = glBegin;
+    void *p;
+    memcpy(&p, (const void *)&f, sizeof p);
+    return p;
+}
+
+/* A context switch: the program's calls follow the GL current at RayGL's
+ * frame boundaries, and go back to the linked one when OSMesa is released. */
+static void test_switch(OSMesaContext ctx)
+{
+    void *osm = dlopen("libOSMesa.so.8", RTLD_LAZY | RTLD_NOLOAD);
+    void *os_begin = osm ? dlsym(osm, "glBegin") : NULL;
+    void *linked_begin = dlsym(RTLD_DEFAULT, "glBegin");
+    CHECK(os_begin != NULL && linked_begin != NULL);
+    CHECKM(own_glBegin() == os_begin, "OSMesa current: the program's glBegin is not OSMesa's");
+    CHECK(OSMesaMakeCurrent(NULL, NULL, 0, 0, 0));
+    rayglFrameEnd();
+    CHECKM(own_glBegin() == linked_begin, "no context: the program's glBegin is not the linked one");
+    CHECK(OSMesaMakeCurrent(ctx, pixels, GL_UNSIGNED_BYTE, SIDE, SIDE));
+    /* The first twin call of the frame chooses OSMesa again. */
+    rayglClearColor(0, 1, 1, 1);
+    rayglClear(GL_COLOR_BUFFER_BIT);
+    CHECKM(own_glBegin() == os_begin, "OSMesa current again: the program's glBegin is not OSMesa's");
+    glFinish();
+    pixel_is(SIDE / 2, SIDE / 2, 0, 255, 255, "the second clear colour");
+    rayglFrameEnd();
+    if (osm)
+        dlclose(osm);
 }
 
 int main(int argc, char **argv)
@@ -132,6 +166,7 @@ int main(int argc, char **argv)
     glGetIntegerv(GL_VIEWPORT, vp);
     CHECK(vp[2] == SIDE && vp[3] == SIDE);
 
+    test_switch(ctx);
     rayglRecordClose();
     rgl_reader *r = trace_open(path);
     if (r) {
