@@ -56,7 +56,7 @@ static void *(*_Atomic osmesa_current)(void);
 static rgl_fwd_fn (*osmesa_gpa)(const char *);
 
 /* Whether the tables differ (libGL linked before libOSMesa), and which one
- * GLU's and GLUT's gl* imports point at. */
+ * the gl* imports of GLU, GLUT and the program point at (relink.c). */
 static _Atomic bool mismatch;
 static const rgl_fwd_fn *relinked;
 static pthread_mutex_t relink_mu = PTHREAD_MUTEX_INITIALIZER;

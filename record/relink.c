@@ -44,8 +44,11 @@ static int find_relro(struct dl_phdr_info *info, size_t size, void *arg)
     for (int i = 0; i < info->dlpi_phnum; i++) {
         const ElfW(Phdr) *ph = &info->dlpi_phdr[i];
         if (ph->p_type == PT_GNU_RELRO) {
-            r->start = r->base + ph->p_vaddr;
-            r->end = r->start + ph->p_memsz;
+            /* As the dynamic linker protects it: whole pages only, so a
+             * page the region ends in part-way stays writable. */
+            uintptr_t ps = (uintptr_t)sysconf(_SC_PAGESIZE);
+            r->start = (r->base + ph->p_vaddr) & ~(ps - 1);
+            r->end = (r->base + ph->p_vaddr + ph->p_memsz) & ~(ps - 1);
         }
     }
     return 1;
