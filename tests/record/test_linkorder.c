@@ -8,7 +8,8 @@
  * the program's own gl* calls, and with a second argument `glut` a GLUT
  * cube (glutInit needs a display: meson runs that under xvfb-run).
  * Each must land in the OSMesa buffer, and the frame must be recorded with
- * the live context's state snapshot.
+ * the live context's state snapshot. Then a context switch (OSMesa
+ * released, made current again) across RayGL's frame boundaries.
  */
 #include <dlfcn.h>
 #include <link.h>
