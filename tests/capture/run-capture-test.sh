@@ -384,30 +384,30 @@ status)
 signals)
     # raygl waits for the program: TERM sent to raygl reaches it.
     long="--frames 1000 --delay-ms 10 --done done"
-    (exec env ${san:+LD_PRELOAD=$san} sh "$raygl" record -o term.raygl -- "$prog" --api glx $long >prog.log 2>&1) &
+    (exec env ${san:+LD_PRELOAD=$san} sh "$raygl" record -o term.raygl -- "$prog" --api glx $long >term.log 2>&1) &
     pid=$!
-    ppid=$(program_pid prog.log) || { kill $pid; fail "raygl printed no pid"; }
+    ppid=$(program_pid term.log) || { kill $pid; fail "raygl printed no pid"; }
     wait_for term.raygl || { kill $pid; fail "no trace"; }
     kill -TERM $pid
     wait $pid
     rc=$?
-    [ $rc -eq 143 ] || { cat prog.log; fail "raygl exited with $rc after TERM, expected 143"; }
+    [ $rc -eq 143 ] || { cat term.log; fail "raygl exited with $rc after TERM, expected 143"; }
     ! kill -0 "$ppid" 2>/dev/null || { kill -9 "$ppid"; fail "the program outlived raygl"; }
     [ ! -e done ] || fail "the program ran to its end"
     # Started in the background here, so sh ignores SIGINT for it; raygl
     # gives the program SIGINT's default action back (as a Ctrl-C finds it
     # without raygl).
-    (exec env ${san:+LD_PRELOAD=$san} sh "$raygl" record -o int.raygl -- "$prog" --api glx $long >prog.log 2>&1) &
+    (exec env ${san:+LD_PRELOAD=$san} sh "$raygl" record -o int.raygl -- "$prog" --api glx $long >int.log 2>&1) &
     pid=$!
-    ppid=$(program_pid prog.log) || { kill $pid; fail "raygl printed no pid"; }
+    ppid=$(program_pid int.log) || { kill $pid; fail "raygl printed no pid"; }
     wait_for int.raygl || { kill $pid; fail "no trace"; }
     kill -INT "$ppid"
     wait $pid
     rc=$?
-    [ $rc -eq 130 ] || { kill -9 "$ppid"; cat prog.log; fail "raygl exited with $rc after the program's SIGINT, expected 130"; }
+    [ $rc -eq 130 ] || { kill -9 "$ppid"; cat int.log; fail "raygl exited with $rc after the program's SIGINT, expected 130"; }
     # stdin reaches the program.
-    echo hello | record -q -o none.raygl -- sh -c 'read -r x && echo "$x" >got' >prog.log 2>&1 ||
-        { cat prog.log; fail "the program reading stdin failed"; }
+    echo hello | record -q -o none.raygl -- sh -c 'read -r x && echo "$x" >got' >stdin.log 2>&1 ||
+        { cat stdin.log; fail "the program reading stdin failed"; }
     [ "$(cat got)" = hello ] || fail "the program read '$(cat got)' from stdin, not hello"
     ;;
 glxgears)
