@@ -302,10 +302,10 @@ installed)
 exit)
     # A program that would draw 1000 frames (--done: it drew them all) is
     # ended after the last kept one; raygl exits 0 with the trace closed.
-    long="--frames 1000 --delay-ms 10 --done done"
+    long="--frames 1000 --delay-ms 10 --done finished"
     record -o e.raygl --frames 0-2 --exit -- "$prog" --api glx $long >prog.log 2>&1 ||
         { cat prog.log; fail "--frames 0-2 --exit: exit $?"; }
-    [ ! -e done ] || fail "--exit did not end the program"
+    [ ! -e finished ] || fail "--exit did not end the program"
     triangles e.raygl 3
     closed e.raygl
     translate e.raygl 3
@@ -325,7 +325,7 @@ exit)
         { cat prog.log; fail "--exit on a program ignoring SIGTERM: exit $?"; }
     triangles stubborn.raygl 1
     closed stubborn.raygl
-    [ ! -e done ] || fail "the program ignoring SIGTERM was not killed"
+    [ ! -e finished ] || fail "the program ignoring SIGTERM was not killed"
     # --signal --exit: the frame after the signal, then the end.
     (exec env ${san:+LD_PRELOAD=$san} sh "$raygl" record -o sig.raygl --signal USR1 --exit -- "$prog" \
         --api glx $long >prog.log 2>&1) &
@@ -335,7 +335,7 @@ exit)
     wait $pid || { cat prog.log; fail "--signal --exit: exit $?"; }
     triangles sig.raygl 1
     closed sig.raygl
-    [ ! -e done ] || fail "--signal --exit did not end the program"
+    [ ! -e finished ] || fail "--signal --exit did not end the program"
     # A program that ends before the last frame: its own status.
     code=0
     record -o short.raygl --frames 0-9 --exit -- sh -c '"$0" --api glx --frames 3; exit 4' "$prog" >prog.log 2>&1 ||
@@ -383,7 +383,7 @@ status)
     ;;
 signals)
     # raygl waits for the program: TERM sent to raygl reaches it.
-    long="--frames 1000 --delay-ms 10 --done done"
+    long="--frames 1000 --delay-ms 10 --done finished"
     (exec env ${san:+LD_PRELOAD=$san} sh "$raygl" record -o term.raygl -- "$prog" --api glx $long >term.log 2>&1) &
     pid=$!
     ppid=$(program_pid term.log) || { kill $pid; fail "raygl printed no pid"; }
@@ -393,7 +393,7 @@ signals)
     rc=$?
     [ $rc -eq 143 ] || { cat term.log; fail "raygl exited with $rc after TERM, expected 143"; }
     ! kill -0 "$ppid" 2>/dev/null || { kill -9 "$ppid"; fail "the program outlived raygl"; }
-    [ ! -e done ] || fail "the program ran to its end"
+    [ ! -e finished ] || fail "the program ran to its end"
     # Started in the background here, so sh ignores SIGINT for it; raygl
     # gives the program SIGINT's default action back (as a Ctrl-C finds it
     # without raygl).
