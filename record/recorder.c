@@ -672,6 +672,21 @@ static bool frame_selected(uint32_t shown)
     return true;
 }
 
+/* Whether no frame of s after the ones it ended can be kept: the last step
+ * of RAYGL_FRAMES (with RAYGL_EVERY) has ended, or, with RAYGL_SIGNAL, a
+ * frame was just kept. */
+static bool selection_over(const rgl_stream *s, bool kept)
+{
+    if (g.sel_signal && kept)
+        return true;
+    if (g.sel_last == UINT32_MAX)
+        return false;
+    uint32_t last = g.sel_first + (g.sel_last - g.sel_first) / g.sel_every * g.sel_every;
+    return s->shown > last;
+}
+
+void (*rgl_selection_over_hook)(void);
+
 bool rgl_frame_wanted(const rgl_stream *s)
 {
     uint32_t n = s->shown;
@@ -684,12 +699,15 @@ bool rgl_frame_wanted(const rgl_stream *s)
  * lock, not file_mu. With `reset` (only on the stream's own thread, whose
  * hot path moves pos without a lock) it leaves the frame closed and empty;
  * without it, the owner's next frame end finds the trace closed or
- * reopened and drops what it holds then. */
-static void frame_write(rgl_stream *s, bool reset)
+ * reopened and drops what it holds then. Returns whether the frame was
+ * kept (selected). */
+static bool frame_write(rgl_stream *s, bool reset)
 {
+    bool kept = false;
     stream_sync(s);
     if (s->frame_open && s->frame.size > 0 && s->gen == atomic_load(&g.gen) &&
         frame_selected(s->shown++)) {
+        kept = true;
         uint8_t prefix[RGL_FRAME_PREFIX_MAX];
         uint8_t *p = rgl_put_varint(prefix, s->id);
         p = rgl_put_varint(p, s->frame_number);
@@ -708,11 +726,12 @@ static void frame_write(rgl_stream *s, bool reset)
         s->frame_number++;
     }
     if (!reset)
-        return;
+        return kept;
     s->frame_open = false;
     s->image_taken = false;
     s->frame.size = 0;
     stream_window(s, false);
+    return kept;
 }
 
 /* Starts a frame: the resolved-state snapshot of a live context, or the
@@ -941,9 +960,12 @@ void rgl_frame_end(void)
         return;
     rgl_frame_image();
     pthread_mutex_lock(s->lock);
-    frame_write(s, true);
+    bool over = selection_over(s, frame_write(s, true));
     pthread_mutex_unlock(s->lock);
     fail_report();
+    void (*hook)(void) = rgl_selection_over_hook;
+    if (over && hook)
+        hook();
 }
 
 void rgl_list_compile_begin(rgl_stream *s, uint32_t list, uint32_t mode)

@@ -186,6 +186,12 @@ void rgl_resolve_matrices(void);
  * writes nothing. */
 void rgl_frame_end(void);
 
+/* Called by rgl_frame_end(), with no recorder lock held, after each frame
+ * end that leaves the thread's stream no later frame to keep (RAYGL_FRAMES's
+ * last step ended; with RAYGL_SIGNAL, a frame was kept). NULL in libraygl;
+ * libraygl-preload.so sets it for `raygl record --exit` (preload.c). */
+extern void (*rgl_selection_over_hook)(void);
+
 /* Whether the frame s is recording will be kept when it ends (RAYGL_FRAMES,
  * RAYGL_EVERY, RAYGL_SIGNAL; `raygl record`); a dropped frame's image is
  * not read. */

@@ -21,6 +21,9 @@
  *   --fork-child        after frame 0, fork; the child makes GL calls
  *                       (glBegin, glVertex2f(5, 5), glEnd) and exits
  *   --delay-ms N        sleep N ms after each frame
+ *   --done FILE         create FILE once every frame is drawn (a program
+ *                       ended early leaves none)
+ *   --ignore-term       ignore SIGTERM (raygl record --exit then kills)
  */
 #include <EGL/egl.h>
 #include <GL/freeglut.h>
@@ -30,6 +33,7 @@
 #include <dlfcn.h>
 #include <fcntl.h>
 #include <pthread.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -49,8 +53,8 @@ typedef struct gl_fns {
 static struct {
     const char *api, *lookup, *hang;
     int single, frames, threads, teapot, exec_child, fork_child, delay_ms;
-    const char *self;
-} opt = {"glx", "direct", NULL, 0, 3, 1, 0, 0, 0, 0, NULL};
+    const char *self, *done;
+} opt = {"glx", "direct", NULL, 0, 3, 1, 0, 0, 0, 0, NULL, NULL};
 
 static gl_fns gl;
 
@@ -342,6 +346,10 @@ int main(int argc, char **argv)
             opt.exec_child = 1;
         else if (strcmp(a, "--fork-child") == 0)
             opt.fork_child = 1;
+        else if (strcmp(a, "--done") == 0 && v)
+            opt.done = argv[++i];
+        else if (strcmp(a, "--ignore-term") == 0)
+            signal(SIGTERM, SIG_IGN);
         else {
             fprintf(stderr, "capture_prog: bad argument %s\n", a);
             return 2;
@@ -357,5 +365,11 @@ int main(int argc, char **argv)
         run_glut(argc, argv);
     else
         die("bad --api");
+    if (opt.done) {
+        int fd = open(opt.done, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (fd < 0)
+            die("cannot create the --done file");
+        close(fd);
+    }
     return 0;
 }

@@ -18,7 +18,18 @@
 #   fork exec                a forked child's calls stay out of the trace; a
 #                            child that exec's a GL program gets its own file
 #   select                   --frames, --every, --signal
-#   usage                    --help, errors and exit codes
+#   usage                    --help, --version, errors and exit codes
+#   buildtree                build/record/raygl run as it is from another
+#                            folder, and through a link on PATH
+#   installed BINDIR LIBDIR INSTALLED-RAYGL
+#                            the installed raygl in a prefix made by hand,
+#                            then moved
+#   exit                     --exit: the program ended after its last kept
+#                            frame, exit 0, the trace closed
+#   exit-glxgears            raygl record --frames 0-2 --exit -- glxgears
+#   status                   exit 74 when the trace fails; else the program's
+#   signals                  TERM to raygl reaches the program; INT keeps its
+#                            default action; stdin reaches the program
 # Cases through POV-Ray and raygl-compare, with floors (tests/capture/meson.build):
 #   glxgears FLOORS...       glxgears (GLX, display lists, lighting)
 #   hack NAME FLOORS...      an xscreensaver hack (EGL)
@@ -71,6 +82,30 @@ translate() { # TRACE FRAMES: raygl2pov writes that many scenes
         { cat "${1%.raygl}-pov.log"; fail "raygl2pov $1 failed"; }
     n=$(ls "${1%.raygl}-pov" | grep -c '^frame-.*\.pov$')
     [ "$n" -eq "$2" ] || fail "raygl2pov $1 wrote $n scenes, expected $2"
+}
+# The trace was closed: it ends with the END chunk (docs/format.md 2.7).
+closed() { # TRACE
+    [ "$(tail -c 28 "$1" | od -An -tx1 -N12 | tr -d ' \n')" = c35247430500000008000000 ] ||
+        fail "$1 does not end with the END chunk (not closed)"
+}
+# The pid raygl record's line names (the program's), once it is printed.
+program_pid() { # LOG
+    i=0
+    while [ $i -lt 300 ]; do
+        p=$(sed -n 's/^raygl: recording .* (pid \([0-9]*\)) into .*/\1/p' "$1")
+        [ -n "$p" ] && { echo "$p"; return 0; }
+        sleep 0.1
+        i=$((i + 1))
+    done
+    return 1
+}
+wait_for() { # FILE: until it exists (30 s at most)
+    i=0
+    while [ ! -e "$1" ] && [ $i -lt 300 ]; do
+        sleep 0.1
+        i=$((i + 1))
+    done
+    [ -e "$1" ]
 }
 # The program's frames: N frames, 3N vertices, N triangles.
 triangles() { # TRACE N
@@ -127,14 +162,11 @@ kill)
     (exec env ${san:+LD_PRELOAD=$san} sh "$raygl" record -o t.raygl -- "$prog" --api glx \
         --frames 4 --hang "$out/hung" >prog.log 2>&1) &
     pid=$!
-    i=0
-    while [ ! -e hung ] && [ $i -lt 300 ]; do
-        sleep 0.1
-        i=$((i + 1))
-    done
-    [ -e hung ] || { kill -9 $pid; fail "the program never reached its last frame"; }
-    kill -9 $pid
-    wait $pid 2>/dev/null
+    ppid=$(program_pid prog.log) || { kill $pid; fail "raygl printed no pid"; }
+    wait_for hung || { kill $pid; fail "the program never reached its last frame"; }
+    kill -9 "$ppid"
+    wait $pid
+    [ $? -eq 137 ] || fail "raygl record did not exit with the program's 128+9"
     triangles t.raygl 4
     translate t.raygl 4
     ;;
@@ -166,7 +198,9 @@ select)
     (exec env ${san:+LD_PRELOAD=$san} sh "$raygl" record -o sig.raygl --signal USR1 -- "$prog" \
         --api glx --frames 100 --delay-ms 20 >prog.log 2>&1) &
     pid=$!
-    sleep 1
+    # The handler is set before the first frame, which creates the trace;
+    # the signal goes to raygl, which passes it on.
+    wait_for sig.raygl || { kill $pid; fail "no trace under --signal"; }
     kill -USR1 $pid
     wait $pid || fail "the program failed under --signal"
     triangles sig.raygl 1
@@ -175,40 +209,215 @@ select)
 usage)
     sh "$raygl" --help >help.log 2>&1 || fail "--help failed"
     grep -q '^usage: raygl record' help.log || fail "--help prints no usage"
-    st() { "$@" >err.log 2>&1; echo $?; }
+    # code N CMD...: CMD exits with N; what it printed is in err.log.
+    code() {
+        want=$1
+        shift
+        "$@" >err.log 2>&1
+        got=$?
+        [ "$got" -eq "$want" ] || { cat err.log; fail "$*: exit $got, expected $want"; }
+    }
     line() { [ "$(wc -l <err.log)" -eq 1 ] && grep -q "^raygl: $1" err.log || { cat err.log; fail "message for $2"; }; }
-    [ "$(st sh "$raygl")" -eq 2 ] || fail "no verb"
-    [ "$(st sh "$raygl" frobnicate)" -eq 2 ] && line 'unknown command frobnicate' verb
-    [ "$(st sh "$raygl" record)" -eq 2 ] && line 'record: no program' 'no program'
-    [ "$(st sh "$raygl" record --bogus -- true)" -eq 2 ] && line 'record: unknown option --bogus' option
-    [ "$(st sh "$raygl" record --frames 3-1 -- true)" -eq 2 ] && line 'record: --frames 3-1' range
-    [ "$(st sh "$raygl" record --frames x -- true)" -eq 2 ] && line 'record: --frames x' 'bad range'
-    [ "$(st sh "$raygl" record --every 0 -- true)" -eq 2 ] && line 'record: --every 0' every
-    [ "$(st sh "$raygl" record --signal NOPE -- true)" -eq 2 ] && line 'record: --signal NOPE' signal
-    [ "$(st sh "$raygl" record --signal KILL -- true)" -eq 2 ] && line 'record: --signal KILL' sigkill
-    [ "$(st sh "$raygl" record -o)" -eq 2 ] && line 'record: -o needs' '-o'
-    [ "$(st sh "$raygl" record -- /nonexistent/prog)" -eq 1 ] && line 'record: /nonexistent/prog: program not found' missing
+    code 2 sh "$raygl"
+    code 2 sh "$raygl" frobnicate && line 'unknown command frobnicate' verb
+    code 2 sh "$raygl" record && line 'record: no program' 'no program'
+    code 2 sh "$raygl" record --bogus -- true && line 'record: unknown option --bogus' option
+    code 2 sh "$raygl" record --frames 3-1 -- true && line 'record: --frames 3-1' range
+    code 2 sh "$raygl" record --frames x -- true && line 'record: --frames x' 'bad range'
+    code 2 sh "$raygl" record --every 0 -- true && line 'record: --every 0' every
+    code 2 sh "$raygl" record --signal NOPE -- true && line 'record: --signal NOPE' signal
+    code 2 sh "$raygl" record --signal KILL -- true && line 'record: --signal KILL' sigkill
+    code 2 sh "$raygl" record -o && line 'record: -o needs' '-o'
+    code 1 sh "$raygl" record -- /nonexistent/prog && line 'record: /nonexistent/prog: program not found' missing
     mkdir d
-    [ "$(st sh "$raygl" record -o d -- true)" -eq 1 ] && line 'record: d is a folder' folder
-    [ "$(st env RAYGL_PRELOAD_LIB=/nonexistent.so sh "$raygl" record -- true)" -eq 1 ] &&
+    code 1 sh "$raygl" record -o d -- true && line 'record: d is a folder' folder
+    code 1 env RAYGL_PRELOAD_LIB=/nonexistent.so sh "$raygl" record -- true &&
         line 'record: /nonexistent.so: the preload library is missing' preload
+    # -V and --version print what raygl-compare's do: NAME VERSION.
+    v=$("$cmp" -V) && [ -n "$v" ] || fail "raygl-compare -V"
+    for o in -V --version; do
+        code 0 sh "$raygl" $o
+        [ "$(cat err.log)" = "raygl ${v#raygl-compare }" ] ||
+            fail "raygl $o printed '$(cat err.log)', expected 'raygl ${v#raygl-compare }'"
+    done
+    # A trace that cannot be written is refused before the program runs.
+    code 1 sh "$raygl" record -o missing/x.raygl -- sh -c ': >ran' &&
+        line 'record: missing/x.raygl: folder missing does not exist$' 'missing folder'
+    [ ! -e ran ] || fail "the program ran although its trace had no folder"
+    mkdir ro && chmod 555 ro
+    if ! (: >ro/probe) 2>/dev/null; then # root writes there anyway
+        code 1 sh "$raygl" record -o ro/x.raygl -- sh -c ': >ran' &&
+            line 'record: ro/x.raygl: cannot be written in ro' 'read-only folder'
+        [ ! -e ran ] || fail "the program ran although its trace could not be written"
+    fi
+    mkfifo fifo
+    code 1 sh "$raygl" record -o fifo -- sh -c ': >ran' && line 'record: fifo: not a regular file$' fifo
+    [ -p fifo ] && [ ! -e ran ] || fail "a fifo given as -o was removed, or the program ran"
+    # --exit needs a last frame.
+    for sel in '' '--every 2' '--frames 3-'; do
+        code 2 sh "$raygl" record $sel --exit -- true && line 'record: --exit needs a last frame' "--exit $sel"
+    done
+    code 0 env ${san:+LD_PRELOAD=$san} sh "$raygl" record -q --frames 2 --exit -o none.raygl -- true
+    code 0 env ${san:+LD_PRELOAD=$san} sh "$raygl" record -q --signal USR1 --exit -o none.raygl -- true
     # The program's own exit status comes back; a program that draws
     # nothing leaves no trace.
-    [ "$(st env ${san:+LD_PRELOAD=$san} sh "$raygl" record -o none.raygl -- sh -c 'exit 3')" -eq 3 ] ||
-        fail "exit status"
+    code 3 env ${san:+LD_PRELOAD=$san} sh "$raygl" record -o none.raygl -- sh -c 'exit 3'
     [ ! -e none.raygl ] || fail "a program that drew nothing left a trace"
-    line "recording sh into $out/none.raygl\$" 'the trace named'
-    [ "$(st env ${san:+LD_PRELOAD=$san} sh "$raygl" record --signal SIGUSR2 -o none.raygl -- true)" -eq 0 ] &&
-        line "recording true into $out/none.raygl (kill -USR2 [0-9]* records the next frame)\$" 'signal line'
-    [ "$(st env ${san:+LD_PRELOAD=$san} sh "$raygl" record -q -o none.raygl -- true)" -eq 0 ] &&
-        [ ! -s err.log ] || fail "-q printed $(cat err.log)"
+    line "recording sh (pid [0-9]*) into $out/none.raygl\$" 'the trace named'
+    code 0 env ${san:+LD_PRELOAD=$san} sh "$raygl" record --signal SIGUSR2 -o none.raygl -- true &&
+        line "recording true (pid \([0-9]*\)) into $out/none.raygl (kill -USR2 \1 records the next frame)\$" 'signal line'
+    code 0 env ${san:+LD_PRELOAD=$san} sh "$raygl" record -q -o none.raygl -- true
+    [ ! -s err.log ] || fail "-q printed $(cat err.log)"
+    ;;
+buildtree)
+    # build/record/raygl as it is (no sh, no RAYGL_PRELOAD_LIB or
+    # RAYGL_COMPARE) from another folder: the library and raygl-compare are
+    # found beside it in the build tree; through a link on PATH as well.
+    [ -x "$raygl" ] || fail "$raygl is not executable"
+    mkdir elsewhere bin && cd elsewhere || exit 1
+    ln -s "$raygl" ../bin/raygl
+    unset RAYGL_PRELOAD_LIB RAYGL_COMPARE LD_LIBRARY_PATH # as a user's shell has them
+    env ${san:+LD_PRELOAD=$san} "$raygl" record -o t.raygl -- "$prog" --api glx >prog.log 2>&1 ||
+        { cat prog.log; fail "raygl record from another folder failed"; }
+    triangles t.raygl 3
+    [ "$("$raygl" compare -V)" = "$("$cmp" -V)" ] || fail "raygl compare did not run $cmp"
+    env ${san:+LD_PRELOAD=$san} PATH="$out/bin:$PATH" raygl record -o l.raygl -- "$prog" --api glx >prog.log 2>&1 ||
+        { cat prog.log; fail "raygl record through a link on PATH failed"; }
+    triangles l.raygl 3
+    ;;
+installed)
+    # The installed raygl finds the library and raygl-compare from its own
+    # place: a prefix laid out as meson installs it, then moved.
+    bindir=$1 libdir=$2 inst=$(absolute "$3")
+    case $bindir$libdir in /*) skip "bindir or libdir outside the prefix: not relocatable" ;; esac
+    mkdir -p "p/$bindir" "p/$libdir" elsewhere || exit 1
+    cp "$inst" "p/$bindir/raygl" && cp "$cmp" "p/$bindir/raygl-compare" && cp "$preload" "p/$libdir/" || exit 1
+    mv p moved && cd elsewhere || exit 1
+    unset RAYGL_PRELOAD_LIB RAYGL_COMPARE LD_LIBRARY_PATH # as a user's shell has them
+    env ${san:+LD_PRELOAD=$san} "$out/moved/$bindir/raygl" record -o t.raygl -- "$prog" --api glx >prog.log 2>&1 ||
+        { cat prog.log; fail "the moved raygl record failed"; }
+    triangles t.raygl 3
+    [ "$("$out/moved/$bindir/raygl" compare -V)" = "$("$cmp" -V)" ] || fail "the moved raygl compare failed"
+    ;;
+exit)
+    # A program that would draw 1000 frames (--done: it drew them all) is
+    # ended after the last kept one; raygl exits 0 with the trace closed.
+    long="--frames 1000 --delay-ms 10 --done finished"
+    record -o e.raygl --frames 0-2 --exit -- "$prog" --api glx $long >prog.log 2>&1 ||
+        { cat prog.log; fail "--frames 0-2 --exit: exit $?"; }
+    [ ! -e finished ] || fail "--exit did not end the program"
+    triangles e.raygl 3
+    closed e.raygl
+    translate e.raygl 3
+    # With --every the end comes after the last step (frames 0, 3, 6 of 0-7).
+    record -o every.raygl --frames 0-7 --every 3 --exit -- "$prog" --api glx $long >prog.log 2>&1 ||
+        { cat prog.log; fail "--every --exit: exit $?"; }
+    triangles every.raygl 3
+    closed every.raygl
+    # GLUT's frame end (glutSwapBuffers), one frame.
+    record -o glut.raygl --frames 1 --exit -- "$prog" --api glut $long >prog.log 2>&1 ||
+        { cat prog.log; fail "GLUT --exit: exit $?"; }
+    triangles glut.raygl 1
+    closed glut.raygl
+    # A program that ignores SIGTERM gets SIGKILL after the grace period:
+    # still 0, the trace still whole.
+    record -o stubborn.raygl --frames 1 --exit -- "$prog" --api glx --ignore-term $long >prog.log 2>&1 ||
+        { cat prog.log; fail "--exit on a program ignoring SIGTERM: exit $?"; }
+    triangles stubborn.raygl 1
+    closed stubborn.raygl
+    [ ! -e finished ] || fail "the program ignoring SIGTERM was not killed"
+    # --signal --exit: the frame after the signal, then the end.
+    (exec env ${san:+LD_PRELOAD=$san} sh "$raygl" record -o sig.raygl --signal USR1 --exit -- "$prog" \
+        --api glx $long >prog.log 2>&1) &
+    pid=$!
+    wait_for sig.raygl || { kill $pid; fail "no trace under --signal --exit"; }
+    kill -USR1 $pid
+    wait $pid || { cat prog.log; fail "--signal --exit: exit $?"; }
+    triangles sig.raygl 1
+    closed sig.raygl
+    [ ! -e finished ] || fail "--signal --exit did not end the program"
+    # A program that ends before the last frame: its own status.
+    code=0
+    record -o short.raygl --frames 0-9 --exit -- sh -c '"$0" --api glx --frames 3; exit 4' "$prog" >prog.log 2>&1 ||
+        code=$?
+    [ $code -eq 4 ] || { cat prog.log; fail "a program ending before the last frame: exit $code, expected 4"; }
+    triangles short.raygl 3
+    closed short.raygl
+    ;;
+exit-glxgears)
+    command -v glxgears >/dev/null 2>&1 || skip "glxgears not installed (mesa-utils)"
+    # The README's command, from the build tree as it is: glxgears runs
+    # until stopped, --exit stops it (timeout only guards the test).
+    unset RAYGL_PRELOAD_LIB RAYGL_COMPARE LD_LIBRARY_PATH # as a user's shell has them
+    env ${san:+LD_PRELOAD=$san} timeout 60 "$raygl" record --frames 0-2 --exit -- glxgears >prog.log 2>&1
+    rc=$?
+    [ $rc -eq 0 ] || { cat prog.log; fail "raygl record exited with $rc (124: glxgears still running after 60 s)"; }
+    expect glxgears.raygl '^frame ' 3
+    closed glxgears.raygl
+    ;;
+status)
+    # The trace cannot be created at the first drawing (its folder went
+    # away after raygl's check): 74, whatever the program's own status.
+    mkdir gone
+    record -o gone/t.raygl -- sh -c 'rmdir gone && "$0" --api glx' "$prog" >prog.log 2>&1
+    rc=$?
+    [ $rc -eq 74 ] || { cat prog.log; fail "a trace that could not be created: exit $rc, expected 74"; }
+    grep -q '^raygl: recording stopped: .*gone/t.raygl: No such file or directory$' prog.log ||
+        { cat prog.log; fail "no line naming the trace and the reason"; }
+    # Recording stops (the recorder's third allocation fails): 74 too.
+    env ${san:+LD_PRELOAD=$san} RAYGL_TEST_FAIL_ALLOC=3 sh "$raygl" record -o alloc.raygl -- \
+        sh -c '"$0" --api glx --frames 5; exit 3' "$prog" >prog.log 2>&1
+    rc=$?
+    [ $rc -eq 74 ] || { cat prog.log; fail "recording stopped early: exit $rc, expected 74"; }
+    grep -q '^raygl: recording stopped: allocation failed' prog.log || { cat prog.log; fail "no failure line"; }
+    # Otherwise the program's status, a signal's 128+N included.
+    record -o ok.raygl -- sh -c '"$0" --api glx; exit 5' "$prog" >prog.log 2>&1
+    rc=$?
+    [ $rc -eq 5 ] || { cat prog.log; fail "the program's status 5 came back as $rc"; }
+    triangles ok.raygl 3
+    closed ok.raygl
+    record -o term.raygl -- sh -c '"$0" --api glx && kill -TERM $$' "$prog" >prog.log 2>&1
+    rc=$?
+    [ $rc -eq 143 ] || { cat prog.log; fail "a program killed by SIGTERM came back as $rc"; }
+    grep -q '^Terminated' prog.log || { cat prog.log; fail "the signal was not named"; }
+    ;;
+signals)
+    # raygl waits for the program: TERM sent to raygl reaches it.
+    long="--frames 1000 --delay-ms 10 --done finished"
+    (exec env ${san:+LD_PRELOAD=$san} sh "$raygl" record -o term.raygl -- "$prog" --api glx $long >term.log 2>&1) &
+    pid=$!
+    ppid=$(program_pid term.log) || { kill $pid; fail "raygl printed no pid"; }
+    wait_for term.raygl || { kill $pid; fail "no trace"; }
+    kill -TERM $pid
+    wait $pid
+    rc=$?
+    [ $rc -eq 143 ] || { cat term.log; fail "raygl exited with $rc after TERM, expected 143"; }
+    ! kill -0 "$ppid" 2>/dev/null || { kill -9 "$ppid"; fail "the program outlived raygl"; }
+    [ ! -e finished ] || fail "the program ran to its end"
+    # Started in the background here, so sh ignores SIGINT for it; raygl
+    # gives the program SIGINT's default action back (as a Ctrl-C finds it
+    # without raygl).
+    (exec env ${san:+LD_PRELOAD=$san} sh "$raygl" record -o int.raygl -- "$prog" --api glx $long >int.log 2>&1) &
+    pid=$!
+    ppid=$(program_pid int.log) || { kill $pid; fail "raygl printed no pid"; }
+    wait_for int.raygl || { kill $pid; fail "no trace"; }
+    kill -INT "$ppid"
+    wait $pid
+    rc=$?
+    [ $rc -eq 130 ] || { kill -9 "$ppid"; cat int.log; fail "raygl exited with $rc after the program's SIGINT, expected 130"; }
+    # stdin reaches the program.
+    echo hello | record -q -o none.raygl -- sh -c 'read -r x && echo "$x" >got' >stdin.log 2>&1 ||
+        { cat stdin.log; fail "the program reading stdin failed"; }
+    [ "$(cat got)" = hello ] || fail "the program read '$(cat got)' from stdin, not hello"
     ;;
 glxgears)
     command -v glxgears >/dev/null 2>&1 || skip "glxgears not installed (mesa-utils)"
-    # glxgears runs until stopped: frames 2 to 4 are kept, then it is
-    # stopped (the frames are on disk at their swap).
-    record -o gears.raygl --frames 2-4 --snapshots -- timeout 4 glxgears -geometry 300x300 >prog.log 2>&1
+    # glxgears runs until stopped: --exit stops it after frame 4 (timeout
+    # only guards the test).
+    record -o gears.raygl --frames 2-4 --exit --snapshots -- timeout 60 glxgears -geometry 300x300 >prog.log 2>&1 ||
+        { cat prog.log; fail "raygl record exited with $?"; }
     expect gears.raygl '^frame ' 3
+    closed gears.raygl
     expect gears.raygl 'glCallList(list=1)' 3
     # Through `raygl compare` (raygl-compare, from RAYGL_COMPARE).
     sh "$raygl" compare gears.raygl -o cmp --raygl2pov "$r2p" --povray "$povray" "$@" -- --no-shadows >cmp.log 2>&1
@@ -222,8 +431,10 @@ hack)
     shift
     hack=/usr/libexec/xscreensaver/$name
     [ -x "$hack" ] || skip "$hack not installed (xscreensaver-gl)"
-    record -o hack.raygl --frames 10-12 --snapshots -- timeout 4 "$hack" -window -geometry 320x240 >prog.log 2>&1
+    record -o hack.raygl --frames 10-12 --exit --snapshots -- timeout 60 "$hack" -window -geometry 320x240 >prog.log 2>&1 ||
+        { cat prog.log; fail "raygl record exited with $?"; }
     expect hack.raygl '^frame ' 3
+    closed hack.raygl
     expect hack.raygl '@Snapshot(x=0, y=0, width=320, height=240' 3
     "$cmp" hack.raygl -o cmp --raygl2pov "$r2p" --povray "$povray" "$@" -- --no-shadows >cmp.log 2>&1
     rc=$?
