@@ -498,6 +498,7 @@ int main(int argc, char **argv)
         img_compare(&a, &b, o.tol, bg, &st);
         double frac = (double)st.within / (double)st.npix;
         img side;
+        memset(&side, 0, sizeof side);
         snprintf(path, sizeof path, "%s/compare-%05zu.png", o.dir, i);
         /* Under a hidden name until complete (cleanup.h). */
         char tmp[PATH_MAX + 32];

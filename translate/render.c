@@ -498,10 +498,17 @@ static bool finish_frame(const char *prog, const char *stem, int st, running *r)
             snprintf(why, sizeof why, "no image");
         if (WIFEXITED(st) && WEXITSTATUS(st) == 0)
             snprintf(why, sizeof why, "no image written");
+        if (WIFSIGNALED(st) && (WTERMSIG(st) == SIGINT || WTERMSIG(st) == SIGTERM ||
+                                WTERMSIG(st) == SIGHUP)) {
+            /* Stopped, as by Ctrl-C to the group: no failure log to keep. */
+            say(prog, "%s.ini: povray stopped (signal %d)", stem, WTERMSIG(st));
+            goto clean;
+        }
         bool kept = log && rename(r->tmp_log, log) == 0;
         say(prog, "%s.ini: povray failed (%s): %s%s%s%s", stem, why, msg, kept ? " (log: " : "",
             kept ? log : "", kept ? ")" : "");
     }
+clean:
     if (r->tmp_png)
         unlink(r->tmp_png);
     if (r->tmp_log)
