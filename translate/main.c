@@ -631,7 +631,10 @@ int main(int argc, char **argv)
     memset(&err, 0, sizeof err);
     rgl_status st = rgl_reader_open_file(o.trace, &reader, &err);
     if (st != RGL_OK) {
-        if (st == RGL_E_IO)
+        struct stat sb;
+        if (st == RGL_E_IO && stat(o.trace, &sb) == 0 && S_ISDIR(sb.st_mode))
+            say(&o, "cannot read: a folder, not a trace (give the .raygl file)");
+        else if (st == RGL_E_IO)
             say(&o, "cannot read: %s", strerror(errno));
         else
             say_decode_error(&o, "", &err);
