@@ -113,12 +113,12 @@ void cleanup_drop(long id)
     cleanup_unlock();
 }
 
-/* Waits up to about 5 s for pid, then kills it. A pid another thread
+/* Waits up to about 10 s for pid, then kills it. A pid another thread
  * reaped already gives ECHILD: it is gone too. */
 static void reap(pid_t pid)
 {
     struct timespec tick = {0, 20 * 1000 * 1000};
-    for (int i = 0; i < 250; i++) {
+    for (int i = 0; i < 500; i++) {
         pid_t r = waitpid(pid, NULL, WNOHANG);
         if (r == pid || (r < 0 && errno != EINTR))
             return;

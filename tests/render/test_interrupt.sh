@@ -89,22 +89,29 @@ stop INT group a "raygl-render after a finished frame" \
     "$render" a -j 2 --povray "$work/stand-in-povray"
 [ -s a/frame-00000.png ] && ok "the finished frame kept" || fail "frame 0 lost"
 
-# The real POV-Ray: signalled once its state file exists.
+# The real POV-Ray: signalled once its state file exists, to the group
+# (POV-Ray gets it too) and to raygl-render alone (it stops POV-Ray).
 "$mkanim" big.raygl 2 480 360
 "$r2p" big.raygl -o real --radiosity --quality 11 --antialias -q
-setsid "$render" real -j 2 >"$work/out" 2>"$work/err" &
-pid=$!
-i=0
-until ls -A real | grep -q 'pov-state$'; do
-    i=$((i + 1))
-    [ $i -gt 1200 ] && { fail "POV-Ray wrote no .pov-state"; break; }
-    sleep 0.05
+for target in group proc; do
+    rm -f real/*.png
+    setsid "$render" real -j 2 >"$work/out" 2>"$work/err" &
+    pid=$!
+    i=0
+    until ls -A real | grep -q 'pov-state$'; do
+        i=$((i + 1))
+        [ $i -gt 1200 ] && { fail "POV-Ray wrote no .pov-state"; break; }
+        sleep 0.05
+    done
+    if [ $target = group ]; then kill -INT -"$pid"; else kill -INT "$pid"; fi
+    wait $pid
+    [ $? -ne 0 ] && ok "real POV-Ray, SIGINT to the $target: interrupted" ||
+        fail "real POV-Ray, SIGINT to the $target: exited 0"
+    left=$(ls -A real | grep -v -E '^(frame-[0-9]+\.(pov|ini|png)|render\.list|textures)$')
+    [ -z "$left" ] && ok "real POV-Ray, SIGINT to the $target: nothing partial left" ||
+        fail "real POV-Ray, SIGINT to the $target: left $(echo $left)"
+    pgrep -g "$pid" >/dev/null && fail "real POV-Ray, SIGINT to the $target: a process left"
 done
-kill -INT -"$pid"
-wait $pid
-[ $? -ne 0 ] && ok "real POV-Ray interrupted" || fail "real POV-Ray: exited 0"
-left=$(ls -A real | grep -v -E '^(frame-[0-9]+\.(pov|ini|png)|render\.list|textures)$')
-[ -z "$left" ] && ok "real POV-Ray: nothing partial left" || fail "real POV-Ray: left $(echo $left)"
 
 [ "$fails" -eq 0 ] && echo "interrupt: all checks passed" || echo "interrupt: $fails check(s) failed"
 [ "$fails" -eq 0 ]
