@@ -14,6 +14,7 @@
  * programs and the output folder are checked before anything is rendered.
  */
 #include <errno.h>
+#include <fcntl.h>
 #include <limits.h>
 #include <locale.h>
 #include <stdio.h>
@@ -316,7 +317,9 @@ static int precheck(const cmp_options *o, const char *r2p)
 }
 
 /* Runs raygl2pov in DIR over the frames of `list`; returns its exit
- * status, or -1 when it could not run. */
+ * status, or -1 when it could not run. Its messages are passed on when it
+ * ends, except on bad usage (exit 2): then only its first line, as the
+ * reason the options after -- are refused. */
 static int run_raygl2pov(const cmp_options *o, const char *r2p, const char *trace_abs,
                          const char *list)
 {
@@ -344,29 +347,62 @@ static int run_raygl2pov(const cmp_options *o, const char *r2p, const char *trac
     }
     args[n] = NULL;
     fflush(NULL);
+    int pfd[2];
+    if (pipe2(pfd, O_CLOEXEC) != 0)
+        return -1;
     /* Registered at once: a stop stops it too, and it cleans up its own. */
     cleanup_lock();
     pid_t pid = fork();
     long id = pid > 0 ? cleanup_child(pid) : -1;
     cleanup_unlock();
-    if (pid < 0)
+    if (pid < 0) {
+        close(pfd[0]);
+        close(pfd[1]);
         return -1;
+    }
     if (pid == 0) {
         cleanup_child_signals();
-        if (chdir(o->dir) != 0)
+        if (dup2(pfd[1], 2) < 0 || chdir(o->dir) != 0)
             _exit(127);
         execvp(r2p, (char *const *)args);
         fprintf(stderr, PROG ": %s: %s\n", r2p, strerror(errno));
         _exit(127);
     }
-    int status;
-    while (waitpid(pid, &status, 0) < 0)
-        if (errno != EINTR) {
-            cleanup_drop(id);
-            return -1;
+    close(pfd[1]);
+    char *msg = NULL;
+    size_t len = 0, cap = 0;
+    for (;;) {
+        if (len + 4096 > cap) {
+            char *m = realloc(msg, cap ? cap * 2 : 8192);
+            if (!m)
+                break;
+            msg = m;
+            cap = cap ? cap * 2 : 8192;
         }
+        ssize_t r = read(pfd[0], msg + len, cap - len);
+        if (r < 0 && errno == EINTR)
+            continue;
+        if (r <= 0)
+            break;
+        len += (size_t)r;
+    }
+    close(pfd[0]);
+    int status;
+    int w;
+    while ((w = (int)waitpid(pid, &status, 0)) < 0 && errno == EINTR)
+        ;
     cleanup_drop(id);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    int rc = w < 0 ? -1 : WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    if (rc == 2 && len > 0) {
+        size_t l = 0;
+        while (l < len && msg[l] != '\n')
+            l++;
+        fprintf(stderr, PROG ": after --: %.*s\n", (int)l, msg);
+    } else if (len > 0) {
+        fwrite(msg, 1, len, stderr);
+    }
+    free(msg);
+    return rc;
 }
 
 int main(int argc, char **argv)
@@ -451,15 +487,18 @@ int main(int argc, char **argv)
         rc = 1;
         goto out;
     }
-    if (mkdir(o.dir, 0777) != 0 && errno != EEXIST) {
+    bool made_dir = mkdir(o.dir, 0777) == 0;
+    if (!made_dir && errno != EEXIST) {
         fprintf(stderr, PROG ": %s: %s\n", o.dir, strerror(errno));
         rc = 1;
         goto out;
     }
     int r2p_rc = run_raygl2pov(&o, r2p, trace_abs, list);
     if (r2p_rc == 2) {
-        /* Its own line (above) names the option: nothing was rendered. */
-        fprintf(stderr, PROG ": %s refused the options after --; nothing rendered\n", r2p);
+        /* Its line (above) names the option; nothing was rendered, and the
+         * folder goes when this run made it. */
+        if (made_dir)
+            rmdir(o.dir);
         rc = 2;
         goto out;
     }
