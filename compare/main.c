@@ -313,6 +313,16 @@ static int precheck(const cmp_options *o, const char *r2p)
         fprintf(stderr, PROG ": -o %s: not a folder\n", o->dir);
         return 1;
     }
+    if (stat(o->dir, &st) == 0 && access(o->dir, W_OK | X_OK) != 0) {
+        fprintf(stderr, PROG ": -o %s: cannot write into it: %s\n", o->dir, strerror(errno));
+        return 1;
+    }
+    char pov[PATH_MAX];
+    if (snprintf(pov, sizeof pov, "%s/pov", o->dir) < (int)sizeof pov && stat(pov, &st) == 0 &&
+        !S_ISDIR(st.st_mode)) {
+        fprintf(stderr, PROG ": %s: not a folder (raygl2pov writes the scenes there)\n", pov);
+        return 1;
+    }
     return 0;
 }
 

@@ -108,6 +108,11 @@ head -c $((size - 100)) run.raygl >cut.raygl
 "$cmp" run.raygl -o gl.png --raygl2pov "$r2p" >opt.log 2>&1
 [ $? -eq 1 ] && grep -q '^raygl-compare: -o gl.png: not a folder$' opt.log ||
     { cat opt.log; fail "-o naming a file"; }
+mkdir povfile && : >povfile/pov
+"$cmp" run.raygl -o povfile --raygl2pov "$r2p" >opt.log 2>&1
+[ $? -eq 1 ] && grep -q '^raygl-compare: povfile/pov: not a folder' opt.log && ! grep -q FAIL opt.log ||
+    { cat opt.log; fail "DIR/pov a file"; }
+rm -rf povfile
 "$cmp" run.raygl -o opt --raygl2pov ./no-such-raygl2pov >opt.log 2>&1
 [ $? -eq 1 ] && grep -q 'no-such-raygl2pov: raygl2pov not found' opt.log ||
     { cat opt.log; fail "a missing raygl2pov"; }
