@@ -9,8 +9,10 @@
 # partial PNG, no POV-Ray .pov-state, no temporary file, no povray left
 # running. No race with POV-Ray's start-up: a stand-in povray writes what
 # POV-Ray writes (its partial PNG and its .pov-state), says so, and blocks;
-# the signal goes only once every started povray has said so. Then once
-# with the real POV-Ray, signalled once its .pov-state exists.
+# the signal goes only once every started povray has said so. raygl2pov
+# while translating: frozen with SIGSTOP at a moment its temporary scenes
+# exist, then signalled. Then the real POV-Ray, signalled once its
+# .pov-state exists.
 . "$(dirname "$0")/common.sh"
 
 cd "$work" || exit 1
@@ -88,6 +90,39 @@ done
 stop INT group a "raygl-render after a finished frame" \
     "$render" a -j 2 --povray "$work/stand-in-povray"
 [ -s a/frame-00000.png ] && ok "the finished frame kept" || fail "frame 0 lost"
+
+# raygl2pov while translating: frozen (SIGSTOP to its group) at a moment a
+# temporary scene exists, then SIGINT and SIGCONT: the temporary files go,
+# the scenes already published stay.
+"$mkanim" many.raygl 3000 80 60
+setsid "$r2p" many.raygl -o tr -j 2 -q >"$work/out" 2>"$work/err" &
+pid=$!
+i=0
+until kill -0 -"$pid" 2>/dev/null || [ $i -gt 500 ]; do i=$((i + 1)); sleep 0.01; done # setsid done
+caught=0 i=0
+while [ $i -lt 3000 ]; do
+    i=$((i + 1))
+    kill -STOP -"$pid" 2>/dev/null || break
+    if ls -A tr 2>/dev/null | grep -q '^\.raygl2pov-'; then
+        caught=1
+        kill -INT -"$pid"
+        kill -CONT -"$pid"
+        break
+    fi
+    kill -CONT -"$pid"
+    case $(ps -o stat= -p "$pid") in Z*) break ;; esac
+done
+wait $pid
+st=$?
+if [ $caught -eq 1 ]; then
+    [ "$st" -ne 0 ] && ok "translation stopped with temporary files: exits $st" ||
+        fail "translation stopped: exited 0"
+    left=$(ls -A tr | grep -v -E '^frame-[0-9]+\.(pov|ini)$')
+    [ -z "$left" ] && ok "translation stopped: no temporary file left" ||
+        fail "translation stopped: left $(echo $left)"
+else
+    fail "no moment with a temporary scene seen in $i tries (exit $st)"
+fi
 
 # The real POV-Ray: signalled once its state file exists, to the group
 # (POV-Ray gets it too) and to raygl-render alone (it stops POV-Ray).
