@@ -68,6 +68,12 @@ int main(int argc, char **argv)
         opt_free(&o);
         return 2;
     }
+    if (o.render.task >= 0 && o.nranges) {
+        fprintf(stderr, PROG ": --frames with --task: a task renders its one entry\n"
+                        "Try '" PROG " --help' for more information.\n");
+        opt_free(&o);
+        return 2;
+    }
     if (o.help) {
         fputs("Usage: " PROG " DIR [OPTION]...\n"
               "Render the scenes raygl2pov wrote into DIR (every DIR/NAME.ini) with POV-Ray,\n"

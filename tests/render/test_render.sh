@@ -112,6 +112,8 @@ grep -q "raygl-render: 1 frame rendered in .*, 1 already rendered, 0 failed" "$w
 run "$render" frames --frames 6
 expect_rc 1 "raygl-render --frames past the last scene"
 grep -q "scene 6 is outside frames (scenes 0-5)" "$work/err" || fail "range message: $(cat "$work/err")"
+run "$render" frames --frames 1 --task 0
+expect_rc 2 "raygl-render --frames with --task"
 "$render" frames -q || fail "render the rest"
 
 # ---- --video into a missing folder: refused before rendering anything
