@@ -774,7 +774,8 @@ static int make_video(const render_job *j)
             unlink(tmp);
             rc = 1;
         } else if (!j->quiet) {
-            fprintf(stderr, "%s: %s: %zu frames at %s frames/s\n", j->prog, out, n, fps);
+            fprintf(stderr, "%s: %s: %zu frame%s at %s frames/s\n", j->prog, out, n,
+                    n == 1 ? "" : "s", fps);
         }
     }
     for (size_t i = 0; i < n; i++) {
