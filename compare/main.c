@@ -10,9 +10,11 @@
  * DIR/compare-NNNNN.png shows OpenGL | POV-Ray | amplified difference
  * (compare/imagediff.h defines the figures printed). Nothing is written
  * outside DIR. Exit 0, 1 on bad input, a failed frame or a figure under a
- * floor, 2 on bad usage.
+ * floor, 2 on bad usage. Its own options, raygl2pov's (after --), the
+ * programs and the output folder are checked before anything is rendered.
  */
 #include <errno.h>
+#include <fcntl.h>
 #include <limits.h>
 #include <locale.h>
 #include <stdio.h>
@@ -22,8 +24,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "cleanup.h"
 #include "format.h"
 #include "imagediff.h"
+#include "sibling.h"
 
 #ifndef RAYGL_VERSION
 #define RAYGL_VERSION "unknown"
@@ -48,7 +52,8 @@ static void usage(FILE *f)
           "\n"
           "  -o, --output DIR        write DIR/pov/ (the scenes, rendered) and, per frame,\n"
           "                          DIR/compare-NNNNN.png: OpenGL | POV-Ray | difference\n"
-          "      --frames LIST       only these frames (file order, from 0): N, A-B, A-\n"
+          "      --frames LIST       only these frames (file order, from 0): N, A-B, A-,\n"
+          "                          each optionally with :STEP (0-100:10)\n"
           "      --tol N             per-channel tolerance in levels (default 2)\n"
           "      --min-match F       fail when a frame's fraction within N is below F\n"
           "      --min-silhouette S  fail when a frame's silhouette agreement is below S\n"
@@ -153,8 +158,9 @@ static int parse_args(int argc, char **argv, cmp_options *o)
     return 0;
 }
 
-/* Marks the frames of LIST (N, A-B, A-; comma-separated) in sel[0..n).
- * Returns 0 or -1 for a malformed list. */
+/* Marks the frames of LIST (N, A-B, A-, each optionally :STEP;
+ * comma-separated, as raygl2pov takes it) in sel[0..n). Returns 0 or -1
+ * for a malformed list. */
 static int select_frames(const char *list, bool *sel, size_t n)
 {
     const char *s = list;
@@ -178,7 +184,15 @@ static int select_frames(const char *list, bool *sel, size_t n)
                 s = end;
             }
         }
-        for (unsigned long k = a; k <= b && k < n; k++)
+        unsigned long step = 1;
+        if (*s == ':') {
+            s++;
+            step = strtoul(s, &end, 10);
+            if (errno || end == s || *s == '-' || *s == '+' || step == 0)
+                return -1;
+            s = end;
+        }
+        for (unsigned long k = a; k <= b && k < n; k += step)
             sel[k] = true;
         if (*s == '\0')
             return 0;
@@ -238,24 +252,84 @@ static uint8_t *frame_snapshot(rgl_reader *r, const char *trace, size_t i, rgl_s
     return rgb;
 }
 
-/* raygl2pov beside this program, else the name for PATH. */
+/* name found in PATH (or name itself when it holds a '/'): whether it runs. */
+static bool in_path(const char *name)
+{
+    if (strchr(name, '/'))
+        return access(name, X_OK) == 0;
+    const char *path = getenv("PATH");
+    char cand[PATH_MAX];
+    for (const char *p = path ? path : "/usr/bin:/bin"; *p;) {
+        size_t n = strcspn(p, ":");
+        struct stat st;
+        if (snprintf(cand, sizeof cand, "%.*s/%s", (int)n, n ? p : ".", name) < (int)sizeof cand &&
+            stat(cand, &st) == 0 && S_ISREG(st.st_mode) && access(cand, X_OK) == 0)
+            return true;
+        p += n + (p[n] == ':');
+    }
+    return false;
+}
+
+/* raygl2pov beside this program (sibling.h), else the name for PATH. */
 static const char *find_raygl2pov(char *buf, size_t cap)
 {
-    ssize_t n = readlink("/proc/self/exe", buf, cap - 1);
-    if (n > 0) {
-        buf[n] = '\0';
-        char *slash = strrchr(buf, '/');
-        if (slash && (size_t)(slash - buf) + sizeof "/raygl2pov" <= cap) {
-            strcpy(slash, "/raygl2pov");
-            if (access(buf, X_OK) == 0)
-                return buf;
+    return sibling_path("raygl2pov", buf, cap) ? buf : "raygl2pov";
+}
+
+/* raygl2pov's options that raygl-compare sets itself. */
+static const char *const own_options[] = {"-o", "--output", "--frames", "--name-pattern",
+                                          "--render", "--povray", "-j", "--jobs", "--video",
+                                          "--slurm", "--submit", "--sshloginfile", NULL};
+
+/* Checks what can be checked before rendering: the options after --, the
+ * programs, the output folder. Returns 0, or the exit status with one
+ * line printed. */
+static int precheck(const cmp_options *o, const char *r2p)
+{
+    for (int k = 0; k < o->npass; k++) {
+        const char *a = o->pass[k];
+        for (int i = 0; own_options[i]; i++) {
+            size_t l = strlen(own_options[i]);
+            if (strncmp(a, own_options[i], l) == 0 &&
+                (a[l] == '\0' || a[l] == '=' || (a[1] != '-' && a[l] != '\0'))) {
+                fprintf(stderr, PROG ": %s after --: raygl-compare sets it itself%s\n", a,
+                        strcmp(own_options[i], "--render") ? " (give it before --)" : "");
+                return 2;
+            }
         }
     }
-    return "raygl2pov";
+    if (!in_path(r2p)) {
+        fprintf(stderr, PROG ": %s: raygl2pov not found %s (give --raygl2pov PROG)\n", r2p,
+                strchr(r2p, '/') ? "or not executable" : "beside " PROG " nor in PATH");
+        return 1;
+    }
+    if (o->povray && !in_path(o->povray)) {
+        fprintf(stderr, PROG ": --povray %s: not found%s\n", o->povray,
+                strchr(o->povray, '/') ? " or not executable" : " in PATH");
+        return 1;
+    }
+    struct stat st;
+    if (stat(o->dir, &st) == 0 && !S_ISDIR(st.st_mode)) {
+        fprintf(stderr, PROG ": -o %s: not a folder\n", o->dir);
+        return 1;
+    }
+    if (stat(o->dir, &st) == 0 && access(o->dir, W_OK | X_OK) != 0) {
+        fprintf(stderr, PROG ": -o %s: cannot write into it: %s\n", o->dir, strerror(errno));
+        return 1;
+    }
+    char pov[PATH_MAX];
+    if (snprintf(pov, sizeof pov, "%s/pov", o->dir) < (int)sizeof pov && stat(pov, &st) == 0 &&
+        !S_ISDIR(st.st_mode)) {
+        fprintf(stderr, PROG ": %s: not a folder (raygl2pov writes the scenes there)\n", pov);
+        return 1;
+    }
+    return 0;
 }
 
 /* Runs raygl2pov in DIR over the frames of `list`; returns its exit
- * status, or -1 when it could not run. */
+ * status, or -1 when it could not run. Its messages are passed on when it
+ * ends, except on bad usage (exit 2): then only its first line, as the
+ * reason the options after -- are refused. */
 static int run_raygl2pov(const cmp_options *o, const char *r2p, const char *trace_abs,
                          const char *list)
 {
@@ -283,21 +357,62 @@ static int run_raygl2pov(const cmp_options *o, const char *r2p, const char *trac
     }
     args[n] = NULL;
     fflush(NULL);
-    pid_t pid = fork();
-    if (pid < 0)
+    int pfd[2];
+    if (pipe2(pfd, O_CLOEXEC) != 0)
         return -1;
+    /* Registered at once: a stop stops it too, and it cleans up its own. */
+    cleanup_lock();
+    pid_t pid = fork();
+    long id = pid > 0 ? cleanup_child(pid) : -1;
+    cleanup_unlock();
+    if (pid < 0) {
+        close(pfd[0]);
+        close(pfd[1]);
+        return -1;
+    }
     if (pid == 0) {
-        if (chdir(o->dir) != 0)
+        cleanup_child_signals();
+        if (dup2(pfd[1], 2) < 0 || chdir(o->dir) != 0)
             _exit(127);
         execvp(r2p, (char *const *)args);
         fprintf(stderr, PROG ": %s: %s\n", r2p, strerror(errno));
         _exit(127);
     }
+    close(pfd[1]);
+    char *msg = NULL;
+    size_t len = 0, cap = 0;
+    for (;;) {
+        if (len + 4096 > cap) {
+            char *m = realloc(msg, cap ? cap * 2 : 8192);
+            if (!m)
+                break;
+            msg = m;
+            cap = cap ? cap * 2 : 8192;
+        }
+        ssize_t r = read(pfd[0], msg + len, cap - len);
+        if (r < 0 && errno == EINTR)
+            continue;
+        if (r <= 0)
+            break;
+        len += (size_t)r;
+    }
+    close(pfd[0]);
     int status;
-    while (waitpid(pid, &status, 0) < 0)
-        if (errno != EINTR)
-            return -1;
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    int w;
+    while ((w = (int)waitpid(pid, &status, 0)) < 0 && errno == EINTR)
+        ;
+    cleanup_drop(id);
+    int rc = w < 0 ? -1 : WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    if (rc == 2 && len > 0) {
+        size_t l = 0;
+        while (l < len && msg[l] != '\n')
+            l++;
+        fprintf(stderr, PROG ": after --: %.*s\n", (int)l, msg);
+    } else if (len > 0) {
+        fwrite(msg, 1, len, stderr);
+    }
+    free(msg);
+    return rc;
 }
 
 int main(int argc, char **argv)
@@ -308,6 +423,18 @@ int main(int argc, char **argv)
         fprintf(stderr, "Try '" PROG " --help' for more information.\n");
         return 2;
     }
+    char r2p_buf[PATH_MAX];
+    const char *r2p = o.raygl2pov ? o.raygl2pov : find_raygl2pov(r2p_buf, sizeof r2p_buf);
+    int pre = precheck(&o, r2p);
+    if (pre != 0) {
+        if (pre == 2)
+            fprintf(stderr, "Try '" PROG " --help' for more information.\n");
+        return pre;
+    }
+    if (cleanup_start() != 0) {
+        fprintf(stderr, PROG ": cannot start: %s\n", strerror(errno));
+        return 1;
+    }
     char trace_abs[PATH_MAX];
     if (!realpath(o.trace, trace_abs)) {
         fprintf(stderr, PROG ": %s: %s\n", o.trace, strerror(errno));
@@ -315,9 +442,17 @@ int main(int argc, char **argv)
     }
     rgl_reader *r;
     rgl_error err;
-    if (rgl_reader_open_file(trace_abs, &r, &err) != RGL_OK) {
-        fprintf(stderr, PROG ": %s: @0x%llx: %s (%s)\n", o.trace, (unsigned long long)err.offset,
-                rgl_status_str(err.status), err.detail);
+    rgl_status ost = rgl_reader_open_file(trace_abs, &r, &err);
+    if (ost != RGL_OK) {
+        /* The detail only when it adds to the status. */
+        const char *st = rgl_status_str(err.status);
+        bool detail = err.detail[0] && strcmp(err.detail, st) != 0;
+        if (ost == RGL_E_IO)
+            fprintf(stderr, PROG ": %s: cannot read: %s\n", o.trace, strerror(errno));
+        else
+            fprintf(stderr, PROG ": %s: @0x%llx: %s%s%s\n", o.trace,
+                    (unsigned long long)err.offset, st, detail ? ": " : "",
+                    detail ? err.detail : "");
         return 1;
     }
     size_t nframes = rgl_reader_frame_count(r);
@@ -362,14 +497,26 @@ int main(int argc, char **argv)
         rc = 1;
         goto out;
     }
-    if (mkdir(o.dir, 0777) != 0 && errno != EEXIST) {
+    bool made_dir = mkdir(o.dir, 0777) == 0;
+    if (!made_dir && errno != EEXIST) {
         fprintf(stderr, PROG ": %s: %s\n", o.dir, strerror(errno));
         rc = 1;
         goto out;
     }
-    char r2p_buf[PATH_MAX];
-    const char *r2p = o.raygl2pov ? o.raygl2pov : find_raygl2pov(r2p_buf, sizeof r2p_buf);
     int r2p_rc = run_raygl2pov(&o, r2p, trace_abs, list);
+    if (r2p_rc == 2) {
+        /* Its line (above) names the option; nothing was rendered, and the
+         * folder goes when this run made it. */
+        if (made_dir)
+            rmdir(o.dir);
+        rc = 2;
+        goto out;
+    }
+    if (r2p_rc == 127 || r2p_rc < 0) {
+        fprintf(stderr, PROG ": %s could not run; nothing rendered\n", r2p);
+        rc = 1;
+        goto out;
+    }
     if (r2p_rc != 0) {
         fprintf(stderr, PROG ": %s exited with %d; comparing the frames it rendered\n", r2p,
                 r2p_rc);
@@ -400,12 +547,21 @@ int main(int argc, char **argv)
         img_compare(&a, &b, o.tol, bg, &st);
         double frac = (double)st.within / (double)st.npix;
         img side;
+        memset(&side, 0, sizeof side);
         snprintf(path, sizeof path, "%s/compare-%05zu.png", o.dir, i);
-        if (img_side_by_side(&a, &b, o.tol, &side) != 0 ||
-            img_write_png(path, side.rgb, side.w, side.h) != 0) {
-            fprintf(stderr, PROG ": %s: cannot write\n", path);
+        /* Under a hidden name until complete (cleanup.h). */
+        char tmp[PATH_MAX + 32];
+        snprintf(tmp, sizeof tmp, "%s/.compare-%05zu.png.%ld.tmp", o.dir, i, (long)getpid());
+        cleanup_lock();
+        long tid = cleanup_file(tmp);
+        if (tid < 0 || img_side_by_side(&a, &b, o.tol, &side) != 0 ||
+            img_write_png(tmp, side.rgb, side.w, side.h) != 0 || rename(tmp, path) != 0) {
+            fprintf(stderr, PROG ": %s: cannot write: %s\n", path, strerror(errno));
+            unlink(tmp);
             rc = 1;
         }
+        cleanup_drop(tid);
+        cleanup_unlock();
         free(side.rgb);
         bool below = (o.min_match >= 0 && frac < o.min_match) ||
                      (o.min_sil >= 0 && st.silhouette < o.min_sil);

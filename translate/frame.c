@@ -12,8 +12,10 @@
 #include "pngout.h"
 #include "povwrite_texture.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "interp.h"
 #include "talloc.h"
@@ -203,9 +205,23 @@ int translator_write_pov(translator *t, outbuf *ob, const pov_frame_info *info)
 
 int translator_write_images(translator *t, const char *dir)
 {
-    const povtex_image *im;
-    for (size_t i = 0; (im = povwriter_image(t->writer, i)) != NULL; i++)
-        if (pngout_place(dir, im->name, im->rgba, im->width, im->height, im->alpha) != 0)
-            return -1;
-    return 0;
+    const povtex_image *im = povwriter_image(t->writer, 0);
+    if (!im)
+        return 0;
+    /* A folder of their own: deleting or re-rendering the frames' PNGs
+     * never takes a scene's textures with them. */
+    size_t dl = strlen(dir);
+    char *sub = tr_realloc(NULL, dl + sizeof "/" POVTEX_DIR);
+    if (!sub) {
+        errno = ENOMEM;
+        return -1;
+    }
+    snprintf(sub, dl + sizeof "/" POVTEX_DIR, "%s/%s", dir, POVTEX_DIR);
+    int rc = mkdir(sub, 0777) == 0 || errno == EEXIST ? 0 : -1;
+    for (size_t i = 0; rc == 0 && (im = povwriter_image(t->writer, i)) != NULL; i++)
+        rc = pngout_place(sub, im->name, im->rgba, im->width, im->height, im->alpha);
+    int e = errno;
+    tr_free(sub);
+    errno = e;
+    return rc;
 }

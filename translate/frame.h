@@ -52,8 +52,9 @@ scene *translator_scene_edit(translator *t);
 /* Writes that scene as SDL into ob. Returns 0 or -1 (memory, or the sink). */
 int translator_write_pov(translator *t, outbuf *ob, const pov_frame_info *info);
 
-/* Writes the texture images that scene refers to into dir (existing
- * ones are kept: pngout.h). Returns 0, or -1 with errno set. */
+/* Writes the texture images that scene refers to into dir/textures
+ * (POVTEX_DIR, made when missing; existing images are kept: pngout.h).
+ * Returns 0, or -1 with errno set. */
 int translator_write_images(translator *t, const char *dir);
 
 #endif

@@ -27,6 +27,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "cleanup.h"
 #include "diag.h"
 #include "format.h"
 #include "frame.h"
@@ -215,58 +216,6 @@ static char *temp_path(const char *dir, size_t slot, const char *ext)
     return join_path(dir, name);
 }
 
-/* ---- Interruption ------------------------------------------------------------------- */
-
-/* On SIGINT, SIGTERM or SIGHUP the temporary files of the frames in flight
- * are removed before the process ends; finished frames stay. Everything the
- * handler touches is prepared beforehand (async-signal-safe: unlink, _exit,
- * atomics). */
-static char sig_prefix[4096]; /* "DIR/.raygl2pov-PID-" */
-static size_t sig_prefix_len;
-static atomic_size_t sig_first, sig_last; /* slots that may have temporary files */
-
-static void remove_temps_on_signal(int sig)
-{
-    static const char *const exts[2] = {".pov.tmp", ".ini.tmp"};
-    size_t first = atomic_load(&sig_first), last = atomic_load(&sig_last);
-    for (size_t k = first; k < last && sig_prefix_len; k++) {
-        char name[sizeof sig_prefix + 48], digits[24];
-        size_t n = 0, v = k;
-        do {
-            digits[n++] = (char)('0' + v % 10);
-            v /= 10;
-        } while (v);
-        for (int e = 0; e < 2; e++) {
-            size_t len = sig_prefix_len;
-            memcpy(name, sig_prefix, len);
-            for (size_t i = 0; i < n; i++)
-                name[len++] = digits[n - 1 - i];
-            for (const char *x = exts[e]; *x; x++)
-                name[len++] = *x;
-            name[len] = '\0';
-            unlink(name);
-        }
-    }
-    _exit(128 + sig);
-}
-
-static void catch_signals(const char *dir)
-{
-    size_t dl = strlen(dir);
-    int n = snprintf(sig_prefix, sizeof sig_prefix, "%s%s.raygl2pov-%ld-", dir,
-                     dl && dir[dl - 1] == '/' ? "" : "/", (long)getpid());
-    if (n <= 0 || (size_t)n >= sizeof sig_prefix)
-        return;
-    sig_prefix_len = (size_t)n;
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = remove_temps_on_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
-    sigaction(SIGHUP, &sa, NULL);
-}
-
 /* ---- The work ----------------------------------------------------------------------- */
 
 typedef struct slot {
@@ -281,6 +230,7 @@ typedef struct slot {
     int write_errno;    /* writing the temporary .pov failed */
     const char *look_note; /* look_apply's, static */
     char *published;       /* "DIR/NAME" once written */
+    long tmp_id;           /* the temporary .pov's cleanup entry, or -1 */
 } slot;
 
 typedef struct job {
@@ -312,9 +262,16 @@ static void write_temp(job *j, translator *t, size_t k, slot *s, outbuf *ob)
         s->write_errno = ENOMEM;
         return;
     }
-    int fd = open(path, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    /* Registered before it exists, so a stop removes it (cleanup.h). */
+    cleanup_lock();
+    s->tmp_id = cleanup_file(path);
+    int fd = s->tmp_id >= 0 ? open(path, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666) : -1;
+    int open_errno = s->tmp_id >= 0 ? errno : ENOMEM;
+    cleanup_unlock();
     if (fd < 0) {
-        s->write_errno = errno;
+        s->write_errno = open_errno;
+        cleanup_drop(s->tmp_id);
+        s->tmp_id = -1;
         tr_free(path);
         return;
     }
@@ -345,6 +302,8 @@ static void write_temp(job *j, translator *t, size_t k, slot *s, outbuf *ob)
     if (rc != 0) {
         s->write_errno = e;
         unlink(path);
+        cleanup_drop(s->tmp_id);
+        s->tmp_id = -1;
     }
     tr_free(path);
 }
@@ -359,9 +318,6 @@ static void *worker(void *arg)
         size_t k = atomic_fetch_add(&j->next, 1);
         if (k >= j->nslots)
             break;
-        size_t last = atomic_load(&sig_last); /* k may now leave a temporary file */
-        while (last < k + 1 && !atomic_compare_exchange_weak(&sig_last, &last, k + 1))
-            ;
         slot *s = &j->slots[k];
         if (atomic_load(&j->abort) || !t || !ob_ok) {
             s->status = RGL_E_NOMEM;
@@ -498,6 +454,7 @@ static void publish(const options *o, totals *tot, names *used, size_t k, slot *
     snprintf(png, sizeof png, "%s.png", stem);
     char *tmp_pov = temp_path(o->outdir, k, ".pov"), *tmp_ini = temp_path(o->outdir, k, ".ini");
     char *fin_pov = join_path(o->outdir, pov), *fin_ini = join_path(o->outdir, ini);
+    long ini_id = -1;
     if (!tmp_pov || !tmp_ini || !fin_pov || !fin_ini) {
         say(o, "frame %zu: out of memory", s->frame);
         tot->status = EXIT_INPUT;
@@ -509,9 +466,13 @@ static void publish(const options *o, totals *tot, names *used, size_t k, slot *
     dims.camera.width = s->width;
     dims.camera.height = s->height;
     outbuf ob;
-    int fd = open(tmp_ini, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    cleanup_lock();
+    ini_id = cleanup_file(tmp_ini);
+    int fd = ini_id >= 0 ? open(tmp_ini, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666) : -1;
+    int open_errno = ini_id >= 0 ? errno : ENOMEM;
+    cleanup_unlock();
     if (fd < 0) {
-        say(o, "%s: cannot create: %s", tmp_ini, strerror(errno));
+        say(o, "%s: cannot create: %s", tmp_ini, strerror(open_errno));
         tot->status = EXIT_INPUT;
         unlink(tmp_pov);
         goto done;
@@ -542,6 +503,9 @@ static void publish(const options *o, totals *tot, names *used, size_t k, slot *
     tot->written++;
     s->published = join_path(o->outdir, stem);
 done:
+    cleanup_drop(ini_id);
+    cleanup_drop(s->tmp_id);
+    s->tmp_id = -1;
     tr_free(tmp_pov);
     tr_free(tmp_ini);
     tr_free(fin_pov);
@@ -657,13 +621,20 @@ int main(int argc, char **argv)
     setlocale(LC_ALL, "");
     options o;
     parse_args(argc, argv, &o);
+    if (cleanup_start() != 0) {
+        fprintf(stderr, PROG ": cannot start: %s\n", strerror(errno));
+        return EXIT_INPUT;
+    }
 
     rgl_reader *reader = NULL;
     rgl_error err;
     memset(&err, 0, sizeof err);
     rgl_status st = rgl_reader_open_file(o.trace, &reader, &err);
     if (st != RGL_OK) {
-        if (st == RGL_E_IO)
+        struct stat sb;
+        if (st == RGL_E_IO && stat(o.trace, &sb) == 0 && S_ISDIR(sb.st_mode))
+            say(&o, "cannot read: a folder, not a trace (give the .raygl file)");
+        else if (st == RGL_E_IO)
             say(&o, "cannot read: %s", strerror(errno));
         else
             say_decode_error(&o, "", &err);
@@ -740,9 +711,10 @@ int main(int argc, char **argv)
     }
     memset(j.slots, 0, j.nslots * sizeof *j.slots);
     for (size_t i = 0, k = 0; i < nframes; i++)
-        if (opt_frame_selected(&o, i))
+        if (opt_frame_selected(&o, i)) {
+            j.slots[k].tmp_id = -1;
             j.slots[k++].frame = i;
-    catch_signals(o.outdir);
+        }
     pthread_mutex_init(&j.reader_lock, NULL);
     pthread_mutex_init(&j.done_lock, NULL);
     pthread_cond_init(&j.done_cond, NULL);
@@ -807,8 +779,9 @@ int main(int argc, char **argv)
             if (tmp)
                 unlink(tmp);
             tr_free(tmp);
+            cleanup_drop(s->tmp_id);
+            s->tmp_id = -1;
         }
-        atomic_store(&sig_first, k + 1); /* slot k is published or cleaned */
         tr_free(s->log);
         s->log = NULL;
         tr_free(s->frame_name);

@@ -7,11 +7,12 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "talloc.h"
 
-#define SETTINGS_MAX_DEPTH 8
+#define SETTINGS_MAX_DEPTH OPT_SETTINGS_MAX_DEPTH
 #define SETTINGS_MAX_LINE 65536
 
 const opt_def opt_table[] = {
@@ -212,7 +213,16 @@ bool opt_set_jobs(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
 bool opt_set_settings(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
 {
     const char *path = opt_path(o, v, ctx, err);
-    return path && opt_parse_file(o, path, err);
+    if (!path)
+        return false;
+    /* A file that reads itself, directly or through others: one error. */
+    struct stat st;
+    for (int i = 0; i < o->settings_depth && stat(path, &st) == 0; i++)
+        if (o->settings_open[i][0] == (unsigned long long)st.st_dev &&
+            o->settings_open[i][1] == (unsigned long long)st.st_ino)
+            return opt_fail(err, "%s '%s': that settings file is already being read (a cycle)",
+                            ctx->option, v);
+    return opt_parse_file(o, path, err);
 }
 
 bool opt_set_dump(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
@@ -329,6 +339,8 @@ static bool settings_line(options *o, char *line, const opt_ctx *where, opt_err 
             break;
         }
     }
+    if (quoted)
+        return opt_fail(err, "unterminated quote (a '\"' without its closing '\"')");
     char *s = trim(line);
     if (!*s)
         return true;
@@ -370,6 +382,14 @@ bool opt_parse_file(options *o, const char *path, opt_err *err)
     FILE *f = fopen(path, "r");
     if (!f)
         return opt_fail(err, "%s: cannot read the settings file: %s", path, strerror(errno));
+    struct stat st;
+    memset(&st, 0, sizeof st);
+    if (fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) {
+        fclose(f);
+        return opt_fail(err, "%s: a folder, not a settings file", path);
+    }
+    o->settings_open[o->settings_depth][0] = (unsigned long long)st.st_dev;
+    o->settings_open[o->settings_depth][1] = (unsigned long long)st.st_ino;
     o->settings_depth++;
     char *line = NULL;
     size_t cap = 0;

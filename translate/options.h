@@ -33,6 +33,9 @@ typedef struct frame_range {
     uint64_t first, last, step;
 } frame_range;
 
+/* Settings files read from settings files, at most this deep. */
+#define OPT_SETTINGS_MAX_DEPTH 8
+
 typedef struct options {
     const char *trace;
     const char *outdir;
@@ -51,6 +54,7 @@ typedef struct options {
     struct opt_string *owned;
     size_t cap_ranges;
     int settings_depth;
+    unsigned long long settings_open[OPT_SETTINGS_MAX_DEPTH][2]; /* device, inode */
 } options;
 
 /* Where a value came from: the command line (file NULL) or a settings

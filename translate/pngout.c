@@ -12,6 +12,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "cleanup.h"
 #include "talloc.h"
 
 static atomic_uint tmp_serial;
@@ -72,8 +73,15 @@ int pngout_place(const char *dir, const char *name, const uint8_t *rgba, int w, 
         goto done; /* already there: the same content */
     snprintf(tmp, dl + 80, "%s/.raygl2pov-%ld-tex%u.png.tmp", dir, (long)getpid(),
              atomic_fetch_add(&tmp_serial, 1));
-    int fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    /* Registered before it exists, so a stop removes it (cleanup.h). */
+    cleanup_lock();
+    long id = cleanup_file(tmp);
+    int fd = id >= 0 ? open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666) : -1;
+    int open_errno = id >= 0 ? errno : ENOMEM;
+    cleanup_unlock();
     if (fd < 0) {
+        cleanup_drop(id);
+        errno = open_errno;
         rc = -1;
         goto done;
     }
@@ -82,6 +90,7 @@ int pngout_place(const char *dir, const char *name, const uint8_t *rgba, int w, 
         int e = errno;
         close(fd);
         unlink(tmp);
+        cleanup_drop(id);
         errno = e;
         rc = -1;
         goto done;
@@ -97,10 +106,11 @@ int pngout_place(const char *dir, const char *name, const uint8_t *rgba, int w, 
         rc = -1;
         e = errno;
     }
-    if (rc != 0) {
+    if (rc != 0)
         unlink(tmp);
+    cleanup_drop(id);
+    if (rc != 0)
         errno = e;
-    }
 done:
     tr_free(fin);
     tr_free(tmp);

@@ -160,7 +160,7 @@ size_t povtex_image_pigment(const povtex *pt, size_t i, bool linear,
 {
     /* gamma 2.2 = assumed_gamma: the file's values are used as they are
      * (docs/mapping.md "Gamma"); interpolate 2 is bilinear. */
-    int n = snprintf(buf, POVTEX_PIGMENT_MAX, "uv_mapping image_map{png \"%s\" gamma 2.2%s}",
+    int n = snprintf(buf, POVTEX_PIGMENT_MAX, "uv_mapping image_map{png \"" POVTEX_DIR "/%s\" gamma 2.2%s}",
                      pt->imgs[i].name, linear ? " interpolate 2" : "");
     return n > 0 && n < POVTEX_PIGMENT_MAX ? (size_t)n : 0;
 }

@@ -13,8 +13,10 @@
 #include "scene.h"
 
 /* An image file the scene refers to: RGBA texels, bottom row first, named
- * by its content (POVTEX_NAME_MAX with the NUL). */
+ * by its content (POVTEX_NAME_MAX with the NUL). The files go in the
+ * output folder's POVTEX_DIR, apart from the frames' PNGs. */
 #define POVTEX_NAME_MAX 32
+#define POVTEX_DIR "textures"
 typedef struct povtex_image {
     char name[POVTEX_NAME_MAX];
     uint8_t *rgba;

@@ -16,7 +16,9 @@
 #include <dirent.h>
 #include <unistd.h>
 
+#include "cleanup.h"
 #include "options.h"
+#include "sibling.h"
 #include "talloc.h"
 
 extern char **environ;
@@ -121,6 +123,16 @@ static char *partial_png(const char *stem)
     return aprintf("%.*s/.%s.partial.png", (int)(slash - stem), stem, slash + 1);
 }
 
+/* POV-Ray's render state file: its output's name with .pov-state for the
+ * extension, written all through the render and kept when stopped. */
+static char *partial_state(const char *stem)
+{
+    const char *slash = strrchr(stem, '/');
+    if (!slash)
+        return aprintf(".%s.partial.pov-state", stem);
+    return aprintf("%.*s/.%s.partial.pov-state", (int)(slash - stem), stem, slash + 1);
+}
+
 static char *partial_log(const char *stem)
 {
     const char *slash = strrchr(stem, '/');
@@ -182,21 +194,8 @@ static int cores(void)
 /* The sibling raygl-render of this executable: the command remote tasks run. */
 static char *render_command(void)
 {
-    char self[PATH_MAX];
-    ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
-    if (n <= 0)
-        return NULL;
-    self[n] = '\0';
-    char *slash = strrchr(self, '/');
-    if (!slash)
-        return NULL;
-    *slash = '\0';
-    char *p = aprintf("%s/raygl-render", self);
-    if (p && access(p, X_OK) != 0) {
-        tr_free(p);
-        return NULL;
-    }
-    return p;
+    char buf[PATH_MAX];
+    return sibling_path("raygl-render", buf, sizeof buf) ? aprintf("%s", buf) : NULL;
 }
 
 bool render_wanted(const render_settings *r)
@@ -222,6 +221,24 @@ int render_check_tools(const render_settings *r, const char *prog)
             return 1;
         }
         tr_free(p);
+        /* Its folder now, not after hours of rendering. */
+        const char *slash = strrchr(r->video, '/');
+        char *dir = slash ? aprintf("%.*s", (int)(slash - r->video + (slash == r->video)),
+                                    r->video)
+                          : aprintf(".");
+        struct stat st;
+        const char *why = !dir                          ? strerror(ENOMEM)
+                          : stat(dir, &st) != 0         ? strerror(errno)
+                          : !S_ISDIR(st.st_mode)        ? "not a folder"
+                          : access(dir, W_OK | X_OK) != 0 ? strerror(errno)
+                                                        : NULL;
+        if (why) {
+            say(prog, "--video %s: cannot write into '%s': %s", r->video, dir ? dir : "",
+                why);
+            tr_free(dir);
+            return 1;
+        }
+        tr_free(dir);
     }
     if (r->submit) {
         if (!(p = find_program("sbatch"))) {
@@ -264,7 +281,10 @@ static int write_list(const render_job *j)
 {
     char *path = list_path(j->dir), *tmp = path ? aprintf("%s.tmp", path) : NULL;
     int rc = -1;
-    FILE *f = tmp ? fopen(tmp, "w") : NULL;
+    cleanup_lock();
+    long id = tmp ? cleanup_file(tmp) : -1;
+    FILE *f = id >= 0 ? fopen(tmp, "w") : NULL;
+    cleanup_unlock();
     if (f) {
         for (size_t i = 0; i < j->nstems; i++)
             fprintf(f, "%s\n", j->stems[i]);
@@ -276,6 +296,7 @@ static int write_list(const render_job *j)
         if (rc != 0)
             unlink(tmp);
     }
+    cleanup_drop(id);
     if (rc != 0)
         say(j->prog, "%s: cannot write: %s", path ? path : j->dir, strerror(errno));
     tr_free(path);
@@ -319,8 +340,25 @@ typedef struct running {
     pid_t pid;
     size_t index;
     int retried; /* started again after a transient failure */
-    char *tmp_png, *tmp_log;
+    char *tmp_png, *tmp_log, *tmp_state;
+    long ids[4]; /* cleanup entries: the three files and the child */
 } running;
+
+static void forget(running *r)
+{
+    for (int i = 0; i < 4; i++) {
+        cleanup_drop(r->ids[i]);
+        r->ids[i] = -1;
+    }
+}
+
+/* The child is reaped: a stop must not signal its pid again. */
+static void reaped(running *r)
+{
+    cleanup_drop(r->ids[3]);
+    r->ids[3] = -1;
+    r->pid = 0;
+}
 
 /* POV-Ray gives up when its worker threads are slow to start, which
  * happens on a loaded machine and says nothing about the scene: such a
@@ -340,29 +378,25 @@ static bool transient_failure(int st, const char *log)
     return found;
 }
 
-/* The signals that stop a render. While a povray is being started they
- * wait, so that the handler never misses a child whose pid is not yet
- * stored, nor sees a slot half filled. */
-static void stop_signal_set(sigset_t *set)
-{
-    sigemptyset(set);
-    sigaddset(set, SIGINT);
-    sigaddset(set, SIGTERM);
-    sigaddset(set, SIGHUP);
-}
-
 /* Starts povray for stem in r, dropping the names of an earlier attempt;
- * 0, or -1 (message printed) with r emptied. */
+ * 0, or -1 (message printed) with r emptied. The partial files and the
+ * child are registered for a stop (cleanup.h) before they exist. */
 static int start_frame(const char *prog, const char *povray, const char *stem, int threads,
                        running *r)
 {
-    sigset_t stops, held;
-    stop_signal_set(&stops);
-    sigprocmask(SIG_BLOCK, &stops, &held);
+    cleanup_lock();
+    forget(r);
     tr_free(r->tmp_png);
     tr_free(r->tmp_log);
+    tr_free(r->tmp_state);
     r->tmp_png = partial_png(stem);
     r->tmp_log = partial_log(stem);
+    r->tmp_state = partial_state(stem);
+    if (r->tmp_png && r->tmp_log && r->tmp_state) {
+        r->ids[0] = cleanup_file(r->tmp_png);
+        r->ids[1] = cleanup_file(r->tmp_log);
+        r->ids[2] = cleanup_file(r->tmp_state);
+    }
     char *ini = aprintf("%s.ini", stem), *oarg = r->tmp_png ? aprintf("+O%s", r->tmp_png) : NULL,
          *wt = aprintf("+WT%d", threads);
     /* The stem's folder as a library path too: the .ini's own Library_Path
@@ -370,7 +404,8 @@ static int start_frame(const char *prog, const char *povray, const char *stem, i
     const char *slash = strrchr(stem, '/');
     char *larg = slash ? aprintf("+L%.*s", (int)(slash - stem), stem) : aprintf("+L.");
     int rc = -1;
-    if (ini && oarg && wt && larg && r->tmp_log) {
+    if (ini && oarg && wt && larg && r->tmp_state && r->ids[0] >= 0 && r->ids[1] >= 0 &&
+        r->ids[2] >= 0) {
         posix_spawn_file_actions_t fa;
         posix_spawn_file_actions_init(&fa);
         posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
@@ -379,31 +414,33 @@ static int start_frame(const char *prog, const char *povray, const char *stem, i
         /* povray starts with the signals unheld and at their defaults. */
         posix_spawnattr_t at;
         posix_spawnattr_init(&at);
-        sigset_t none;
-        sigemptyset(&none);
-        posix_spawnattr_setsigmask(&at, &none);
-        posix_spawnattr_setsigdefault(&at, &stops);
-        posix_spawnattr_setflags(&at, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+        cleanup_spawnattr(&at);
         char *argv[] = {(char *)povray, ini, larg, wt, oarg, "-D", NULL};
         int e = posix_spawnp(&r->pid, povray, &fa, &at, argv, environ);
         posix_spawnattr_destroy(&at);
         posix_spawn_file_actions_destroy(&fa);
-        if (e == 0)
+        if (e == 0) {
             rc = 0;
-        else
+            r->ids[3] = cleanup_child(r->pid);
+        } else {
             say(prog, "%s: cannot run %s: %s", ini, povray, strerror(e));
+        }
+    } else if (ini && oarg && wt && larg) {
+        say(prog, "out of memory");
     }
     tr_free(ini);
     tr_free(oarg);
     tr_free(wt);
     tr_free(larg);
     if (rc != 0) {
+        forget(r);
         tr_free(r->tmp_png);
         tr_free(r->tmp_log);
-        r->tmp_png = r->tmp_log = NULL;
+        tr_free(r->tmp_state);
+        r->tmp_png = r->tmp_log = r->tmp_state = NULL;
         r->pid = 0;
     }
-    sigprocmask(SIG_SETMASK, &held, NULL);
+    cleanup_unlock();
     return rc;
 }
 
@@ -461,56 +498,31 @@ static bool finish_frame(const char *prog, const char *stem, int st, running *r)
             snprintf(why, sizeof why, "no image");
         if (WIFEXITED(st) && WEXITSTATUS(st) == 0)
             snprintf(why, sizeof why, "no image written");
+        if (WIFSIGNALED(st) && (WTERMSIG(st) == SIGINT || WTERMSIG(st) == SIGTERM ||
+                                WTERMSIG(st) == SIGHUP)) {
+            /* Stopped, as by Ctrl-C to the group: no failure log to keep. */
+            say(prog, "%s.ini: povray stopped (signal %d)", stem, WTERMSIG(st));
+            goto clean;
+        }
         bool kept = log && rename(r->tmp_log, log) == 0;
         say(prog, "%s.ini: povray failed (%s): %s%s%s%s", stem, why, msg, kept ? " (log: " : "",
             kept ? log : "", kept ? ")" : "");
     }
+clean:
     if (r->tmp_png)
         unlink(r->tmp_png);
     if (r->tmp_log)
         unlink(r->tmp_log);
+    if (r->tmp_state)
+        unlink(r->tmp_state);
+    forget(r);
     tr_free(png);
     tr_free(log);
     tr_free(r->tmp_png);
     tr_free(r->tmp_log);
-    r->tmp_png = r->tmp_log = NULL;
+    tr_free(r->tmp_state);
+    r->tmp_png = r->tmp_log = r->tmp_state = NULL;
     return ok;
-}
-
-/* ---- Interruption --------------------------------------------------------------------------- */
-
-/* On SIGINT/SIGTERM/SIGHUP: stop the povray processes, remove their partial
- * files, exit. Finished PNGs stay. */
-static running *sig_run;
-static int sig_nrun;
-
-static void on_signal(int sig)
-{
-    for (int i = 0; i < sig_nrun; i++)
-        if (sig_run[i].pid > 0)
-            kill(sig_run[i].pid, SIGTERM);
-    for (int i = 0; i < sig_nrun; i++) {
-        if (sig_run[i].pid > 0)
-            waitpid(sig_run[i].pid, NULL, 0);
-        if (sig_run[i].tmp_png)
-            unlink(sig_run[i].tmp_png);
-        if (sig_run[i].tmp_log)
-            unlink(sig_run[i].tmp_log);
-    }
-    _exit(128 + sig);
-}
-
-static void catch_signals(running *run, int n)
-{
-    sig_run = run;
-    sig_nrun = n;
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
-    sigaction(SIGHUP, &sa, NULL);
 }
 
 /* ---- Local rendering -------------------------------------------------------------------------- */
@@ -557,6 +569,23 @@ static void progress(const render_job *j, size_t done, size_t total, size_t rend
     progress_shown = true;
 }
 
+/* "6 frames rendered in 0:00:02 (..., 2 at once), 0 already rendered, 0
+ * failed": printed unless quiet, and always when a frame failed. */
+static void summary(const render_job *j, size_t rendered, double dt, const char *how,
+                    size_t skipped, size_t failed, size_t notrun)
+{
+    if (j->quiet && !failed && !notrun)
+        return;
+    char t[32], rate[32];
+    hms(dt, t, sizeof t);
+    tenths(dt > 0 ? rendered * 60.0 / dt : 0.0, rate, sizeof rate);
+    fprintf(stderr,
+            "%s: %zu frame%s rendered in %s (%s frames/min, %s), %zu already rendered, %zu "
+            "failed%s\n",
+            j->prog, rendered, rendered == 1 ? "" : "s", t, rate, how, skipped, failed + notrun,
+            notrun ? " or not started" : "");
+}
+
 static int render_local(const render_job *j, size_t *nfailed)
 {
     const char *povray = j->r->povray ? j->r->povray : "povray";
@@ -571,7 +600,9 @@ static int render_local(const render_job *j, size_t *nfailed)
         return 1;
     }
     memset(run, 0, (size_t)jobs * sizeof *run);
-    catch_signals(run, jobs);
+    for (int s = 0; s < jobs; s++)
+        for (int k = 0; k < 4; k++)
+            run[s].ids[k] = -1;
     scan_includes(j->dir);
 
     size_t skipped = 0, rendered = 0, failed = 0, done = 0, next = 0;
@@ -614,6 +645,7 @@ static int render_local(const render_job *j, size_t *nfailed)
         for (int s = 0; s < jobs; s++) {
             if (run[s].pid != pid)
                 continue;
+            reaped(&run[s]);
             if (!run[s].retried && transient_failure(st, run[s].tmp_log)) {
                 run[s].retried = 1;
                 if (start_frame(j->prog, povray, j->stems[run[s].index], threads, &run[s]) == 0)
@@ -637,41 +669,40 @@ static int render_local(const render_job *j, size_t *nfailed)
         fputs("\r\033[K", stderr);
         progress_shown = false;
     }
-    signal(SIGINT, SIG_DFL);
-    signal(SIGTERM, SIG_DFL);
-    signal(SIGHUP, SIG_DFL);
-    sig_nrun = 0;
     tr_free(run);
     size_t notrun = j->nstems - done;
-    double dt = now() - t0;
-    if (!j->quiet || failed) {
-        char t[32], rate[32];
-        hms(dt, t, sizeof t);
-        tenths(dt > 0 ? rendered * 60.0 / dt : 0.0, rate, sizeof rate);
-        fprintf(stderr,
-                "%s: %zu frames rendered in %s (%s frames/min, %d at once), %zu already "
-                "rendered, %zu failed%s\n",
-                j->prog, rendered, t, rate, jobs, skipped, failed + notrun,
-                notrun ? " or not started" : "");
-    }
+    char how[32];
+    snprintf(how, sizeof how, "%d at once", jobs);
+    summary(j, rendered, now() - t0, how, skipped, failed, notrun);
     *nfailed = failed + notrun;
     return failed + notrun ? 1 : 0;
 }
 
 /* ---- Video ------------------------------------------------------------------------------------ */
 
+/* Runs argv and waits; a stop signal stops it too (cleanup.h). */
 static int run_wait(char *const argv[], const char *prog)
 {
     pid_t pid;
-    int e = posix_spawnp(&pid, argv[0], NULL, NULL, argv, environ);
+    posix_spawnattr_t at;
+    posix_spawnattr_init(&at);
+    cleanup_spawnattr(&at);
+    cleanup_lock();
+    int e = posix_spawnp(&pid, argv[0], NULL, &at, argv, environ);
+    long id = e == 0 ? cleanup_child(pid) : -1;
+    cleanup_unlock();
+    posix_spawnattr_destroy(&at);
     if (e != 0) {
         say(prog, "cannot run %s: %s", argv[0], strerror(e));
         return -1;
     }
     int st;
     while (waitpid(pid, &st, 0) < 0)
-        if (errno != EINTR)
+        if (errno != EINTR) {
+            cleanup_drop(id);
             return -1;
+        }
+    cleanup_drop(id);
     return WIFEXITED(st) ? WEXITSTATUS(st) : 128 + (WIFSIGNALED(st) ? WTERMSIG(st) : 0);
 }
 
@@ -683,32 +714,50 @@ static int make_video(const render_job *j)
     size_t dl = strlen(j->dir);
     const char *sep = dl && j->dir[dl - 1] == '/' ? "" : "/";
     char *seq = aprintf("%s%s.video-%ld", j->dir, sep, (long)getpid());
-    if (!seq || mkdir(seq, 0777) != 0) {
-        say(j->prog, "%s: cannot create: %s", seq ? seq : j->dir, strerror(errno));
-        tr_free(seq);
-        return 1;
-    }
-    int rc = 0;
-    size_t n = 0;
-    for (size_t i = 0; i < j->nstems && rc == 0; i++) {
-        char *png = aprintf("%s.png", j->stems[i]);
-        char *abs = png ? realpath(png, NULL) : NULL;
-        char *link = aprintf("%s/%06zu.png", seq, n);
-        if (abs && link && symlink(abs, link) == 0)
-            n++;
-        tr_free(png);
-        free(abs);
-        tr_free(link);
-    }
     const char *out = j->r->video;
     const char *slash = strrchr(out, '/');
     char *tmp = slash ? aprintf("%.*s/.%s.partial%s", (int)(slash - out), out, slash + 1,
                                 strrchr(slash, '.') ? strrchr(slash, '.') : "")
                       : aprintf(".%s.partial%s", out, strrchr(out, '.') ? strrchr(out, '.') : "");
+    /* The folder, its links and the partial video go on a stop. */
+    cleanup_lock();
+    long seq_id = seq ? cleanup_dir(seq) : -1, tmp_id = tmp ? cleanup_file(tmp) : -1;
+    if (seq_id < 0 || tmp_id < 0 || mkdir(seq, 0777) != 0) {
+        cleanup_drop(seq_id);
+        cleanup_drop(tmp_id);
+        cleanup_unlock();
+        say(j->prog, "%s: cannot create: %s", seq ? seq : j->dir, strerror(errno));
+        tr_free(seq);
+        tr_free(tmp);
+        return 1;
+    }
+    cleanup_unlock();
+    long *link_ids = tr_realloc(NULL, (j->nstems ? j->nstems : 1) * sizeof *link_ids);
+    int rc = link_ids ? 0 : 1;
+    size_t n = 0;
+    for (size_t i = 0; i < j->nstems && rc == 0; i++) {
+        char *png = aprintf("%s.png", j->stems[i]);
+        char *abs = png ? realpath(png, NULL) : NULL;
+        char *link = aprintf("%s/%06zu.png", seq, n);
+        if (abs && link) {
+            cleanup_lock();
+            link_ids[n] = cleanup_file(link);
+            if (link_ids[n] >= 0 && symlink(abs, link) == 0)
+                n++;
+            else
+                cleanup_drop(link_ids[n]);
+            cleanup_unlock();
+        }
+        tr_free(png);
+        free(abs);
+        tr_free(link);
+    }
     char *pattern = aprintf("%s/%%06d.png", seq);
     char fps[16];
     snprintf(fps, sizeof fps, "%d", j->r->fps > 0 ? j->r->fps : 25);
-    if (n == 0) {
+    if (rc != 0) {
+        say(j->prog, "out of memory");
+    } else if (n == 0) {
         say(j->prog, "--video: no rendered frames to assemble");
         rc = 1;
     } else if (tmp && pattern) {
@@ -725,7 +774,8 @@ static int make_video(const render_job *j)
             unlink(tmp);
             rc = 1;
         } else if (!j->quiet) {
-            fprintf(stderr, "%s: %s: %zu frames at %s frames/s\n", j->prog, out, n, fps);
+            fprintf(stderr, "%s: %s: %zu frame%s at %s frames/s\n", j->prog, out, n,
+                    n == 1 ? "" : "s", fps);
         }
     }
     for (size_t i = 0; i < n; i++) {
@@ -733,8 +783,12 @@ static int make_video(const render_job *j)
         if (link)
             unlink(link);
         tr_free(link);
+        cleanup_drop(link_ids[i]);
     }
     rmdir(seq);
+    cleanup_drop(seq_id);
+    cleanup_drop(tmp_id);
+    tr_free(link_ids);
     tr_free(seq);
     tr_free(tmp);
     tr_free(pattern);
@@ -770,7 +824,10 @@ static int write_slurm(const render_job *j, char **script_out)
     char *qlog = absdir ? aprintf("%s%sslurm-%s.log", absdir, sep, ids) : NULL;
     char *qpov = j->r->povray ? sh_quote(j->r->povray) : NULL;
     int rc = -1;
-    FILE *f = (path && tmp && qcwd && qcmd && qdir && qlog) ? fopen(tmp, "w") : NULL;
+    cleanup_lock();
+    long id = tmp ? cleanup_file(tmp) : -1;
+    FILE *f = (id >= 0 && path && qcwd && qcmd && qdir && qlog) ? fopen(tmp, "w") : NULL;
+    cleanup_unlock();
     if (f) {
         size_t last = j->nstems < SLURM_ARRAY_CHUNK ? j->nstems - 1 : SLURM_ARRAY_CHUNK - 1;
         fprintf(f,
@@ -802,6 +859,7 @@ static int write_slurm(const render_job *j, char **script_out)
         if (rc != 0)
             unlink(tmp);
     }
+    cleanup_drop(id);
     if (rc != 0)
         say(j->prog, "%s: cannot write: %s", path ? path : j->dir,
             cmd ? strerror(errno) : "raygl-render not found next to this program");
@@ -851,6 +909,13 @@ static int render_parallel(const render_job *j)
                                 : NULL;
     char *last = aprintf("%zu", j->nstems - 1);
     int rc = 1;
+    /* The summary counts PNGs up to date before and after, as the hosts'
+     * tasks report nothing back but their exit status. */
+    scan_includes(j->dir);
+    size_t before = 0;
+    for (size_t i = 0; i < j->nstems; i++)
+        before += up_to_date(j->stems[i]);
+    double t0 = now();
     if (cwd && line && last) {
         char *argv[] = {"parallel", "--will-cite", "--halt", "never", "--sshloginfile",
                         (char *)j->r->sshloginfile, "--workdir", cwd, line, ":::", NULL, NULL};
@@ -870,6 +935,11 @@ static int render_parallel(const render_job *j)
             if (st != 0)
                 say(j->prog, "GNU parallel: %d frame(s) failed (see the messages above)", st);
             rc = st == 0 ? 0 : 1;
+            size_t after = 0;
+            for (size_t i = 0; i < j->nstems; i++)
+                after += up_to_date(j->stems[i]);
+            size_t rendered = after > before ? after - before : 0;
+            summary(j, rendered, now() - t0, "over SSH", before, j->nstems - after, 0);
         }
         tr_free(full);
         tr_free(nums);
@@ -898,7 +968,8 @@ int render_task(const render_settings *r, const char *prog, const char *dir, lon
     if (!up_to_date(stem)) {
         running run;
         memset(&run, 0, sizeof run);
-        catch_signals(&run, 1);
+        for (int k = 0; k < 4; k++)
+            run.ids[k] = -1;
         const char *povray = r->povray ? r->povray : "povray";
         for (int attempt = 0;; attempt++) {
             if (start_frame(prog, povray, stem, 1, &run) != 0) {
@@ -908,14 +979,16 @@ int render_task(const render_settings *r, const char *prog, const char *dir, lon
             int st;
             while (waitpid(run.pid, &st, 0) < 0 && errno == EINTR)
                 ;
-            run.pid = 0;
+            reaped(&run);
             if (attempt == 0 && transient_failure(st, run.tmp_log))
                 continue;
             rc = finish_frame(prog, stem, st, &run) ? 0 : 1;
             break;
         }
+        forget(&run);
         tr_free(run.tmp_png);
         tr_free(run.tmp_log);
+        tr_free(run.tmp_state);
     }
     tr_free(stem);
     return rc;

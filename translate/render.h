@@ -8,7 +8,10 @@
  *   local     povray processes, -j at once, each writing a hidden partial
  *             PNG renamed into place when complete: an interrupted run
  *             never leaves a half-written PNG under its final name, and a
- *             PNG newer than its .pov and .ini is not rendered again;
+ *             PNG newer than its .pov and .ini is not rendered again; the
+ *             partial files (PNG, log, POV-Ray's .pov-state) and the
+ *             children are registered with cleanup.h, so a stop signal
+ *             leaves none of them;
  *   Slurm     a job-array script (DIR/render.slurm), one frame per task,
  *             each task running `raygl-render DIR --task N`;
  *   parallel  GNU parallel over SSH (--sshloginfile), each job running

@@ -9,7 +9,10 @@
 #    given (the image tests' thresholds), and must pass;
 # 3. bad input gives one clear line and exit 1 (not a trace; the snapshot's
 #    resource damaged; a frame list without snapshots), bad usage exit 2,
-#    and nothing is written outside the output folder.
+#    and nothing is written outside the output folder;
+# 4. run from another folder it finds raygl2pov itself; options (its own
+#    and raygl2pov's) and the output folder are checked before rendering;
+#    a stop signal leaves no partial file.
 set -u
 [ $# -ge 5 ] || { echo "usage: $0 PROG RAYGL_COMPARE RAYGL2POV POVRAY OUTDIR [FLOOR-OPTION...]" >&2; exit 2; }
 prog=$1 cmp=$2 r2p=$3 povray=$4 out=$5
@@ -42,6 +45,14 @@ cat cmp.log
 grep -q '^frame 0: 320x240 within .* silhouette ' cmp.log || fail "no figures for frame 0"
 [ -s cmp/compare-00000.png ] || fail "no cmp/compare-00000.png"
 [ -s cmp/pov/frame-00000.png ] || fail "no cmp/pov/frame-00000.png"
+
+# From the build tree, from another folder, with no raygl2pov in PATH: it
+# finds its sibling itself (issue 11).
+mkdir elsewhere
+(cd elsewhere && env PATH=/usr/bin:/bin "$cmp" ../run.raygl -o ../sib --povray "$povray" \
+    --frames 0-0:1 -- --no-shadows) >sib.log 2>&1 ||
+    { cat sib.log; fail "raygl-compare without --raygl2pov, run from another folder"; }
+[ -s sib/compare-00000.png ] || fail "no sib/compare-00000.png"
 
 # A floor it cannot meet fails.
 "$cmp" run.raygl -o cmp --raygl2pov "$r2p" --povray "$povray" --tol 0 --min-match 1 \
@@ -86,11 +97,64 @@ head -c $((size - 100)) run.raygl >cut.raygl
 [ $? -eq 2 ] || fail "no -o is not a usage error"
 "$cmp" run.raygl -o x --frames 3-1 >usage.log 2>&1
 [ $? -eq 2 ] || fail "--frames 3-1 is not a usage error"
+# Checked before rendering: one line naming the option or file, no FAIL
+# line, nothing rendered.
+"$cmp" run.raygl -o opt --raygl2pov "$r2p" -- --bogus >opt.log 2>&1
+[ $? -eq 2 ] && [ "$(wc -l <opt.log)" -eq 1 ] && grep -q '^raygl-compare: after --: raygl2pov: .*bogus' opt.log &&
+    [ ! -e opt ] || { cat opt.log; fail "a bad raygl2pov option"; }
+"$cmp" run.raygl -o opt --raygl2pov "$r2p" -- -o elsewhere >opt.log 2>&1
+[ $? -eq 2 ] && grep -q '^raygl-compare: -o after --: raygl-compare sets it itself' opt.log ||
+    { cat opt.log; fail "-o after --"; }
+"$cmp" run.raygl -o gl.png --raygl2pov "$r2p" >opt.log 2>&1
+[ $? -eq 1 ] && grep -q '^raygl-compare: -o gl.png: not a folder$' opt.log ||
+    { cat opt.log; fail "-o naming a file"; }
+mkdir povfile && : >povfile/pov
+"$cmp" run.raygl -o povfile --raygl2pov "$r2p" >opt.log 2>&1
+[ $? -eq 1 ] && grep -q '^raygl-compare: povfile/pov: not a folder' opt.log && ! grep -q FAIL opt.log ||
+    { cat opt.log; fail "DIR/pov a file"; }
+rm -rf povfile
+"$cmp" run.raygl -o opt --raygl2pov ./no-such-raygl2pov >opt.log 2>&1
+[ $? -eq 1 ] && grep -q 'no-such-raygl2pov: raygl2pov not found' opt.log ||
+    { cat opt.log; fail "a missing raygl2pov"; }
+head -c 4096 /dev/urandom >random.raygl
+"$cmp" random.raygl -o opt --raygl2pov "$r2p" >opt.log 2>&1
+[ $? -eq 1 ] && [ "$(grep -o 'not a RayGL trace' opt.log | wc -l)" -eq 1 ] ||
+    { cat opt.log; fail "random bytes"; }
+rm -rf opt
+
+# Stopped (SIGINT to its group, as Ctrl-C sends it, and SIGTERM to the
+# process) once a stand-in povray has written its partial files: no partial
+# or temporary file anywhere under the output folder.
+cat >stand-in-povray <<EOF
+#!/bin/sh
+for a; do case \$a in +O*) out=\${a#+O} ;; esac; done
+printf partial >"\$out"
+printf state >"\${out%.png}.pov-state"
+: >"$PWD/stand-in.started"
+exec sleep 300
+EOF
+chmod +x stand-in-povray
+for how in group proc; do
+    rm -f stand-in.started
+    setsid "$cmp" run.raygl -o stop --raygl2pov "$r2p" --povray "$PWD/stand-in-povray" >stop.log 2>&1 &
+    pid=$!
+    i=0
+    while [ ! -e stand-in.started ] && [ $i -lt 600 ]; do sleep 0.1; i=$((i + 1)); done
+    [ -e stand-in.started ] || fail "the stand-in povray never started"
+    if [ $how = group ]; then kill -INT -$pid; else kill -TERM $pid; fi
+    wait $pid
+    [ $? -ne 0 ] || fail "stopped raygl-compare exited 0"
+    left=$(cd stop && find . -name '.*' ! -name . -o -name '*.pov-state' -o -name '*.tmp' -o -name '*partial*')
+    [ -z "$left" ] || fail "stopped ($how): left $left"
+done
+rm -f stand-in-povray stand-in.started
+
 # Only the expected names in the folder (nothing escaped into it from elsewhere
 # and raygl-compare wrote only under its -o folders).
 for f in *; do
     case $f in
     run.raygl|gl.png|program.log|cmp.log|cmp|floor.log|bad.raygl|bad.log|damaged.raygl|dmg.log|dmg|cut.raygl|cut.log|cut|usage.log) ;;
+    elsewhere|sib|sib.log|opt.log|random.raygl|stop|stop.log) ;;
     *) fail "unexpected file $f" ;;
     esac
 done

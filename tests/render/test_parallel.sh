@@ -17,6 +17,8 @@ cd "$work" || exit 1
 echo ":" >hosts
 run "$r2p" anim.raygl -o remote --sshloginfile hosts
 expect_rc 0 "--sshloginfile hosts"
+grep -q "^raygl2pov: 5 frames rendered in .* (.* frames/min, over SSH), 0 already rendered, 0 failed$" \
+    "$work/err" && ok "the summary, as for a local render" || fail "summary: $(cat "$work/err")"
 run "$r2p" anim.raygl -o local --render -q
 expect_rc 0 "local render"
 n=$(same_pngs local remote)
@@ -30,5 +32,7 @@ run "$r2p" anim.raygl -o remote --frames 0-2 -q
 run "$render" remote --sshloginfile hosts
 expect_rc 1 "raygl-render --sshloginfile with a broken frame"
 grep -q "remote/frame-00003.ini: povray failed" "$work/err" || fail "message: $(cat "$work/err")"
+grep -q "^raygl-render: 0 frames rendered in .*, 4 already rendered, 1 failed$" "$work/err" ||
+    fail "summary with a broken frame: $(cat "$work/err")"
 [ "$fails" -eq 0 ] && echo "parallel: all checks passed" || echo "parallel: $fails check(s) failed"
 [ "$fails" -eq 0 ]

@@ -102,6 +102,37 @@ grep -q "bad.conf:2: quality '99'" "$work/err" || fail "settings message: $(cat 
 after=$(ls -l --time-style=+%s.%N frames/*.png | md5sum)
 [ "$before" = "$after" ] && ok "rendered PNGs untouched" || fail "a failed run touched the PNGs"
 
+# ---- raygl-render --frames (the scenes in name order), "1 frame"
+rm -f frames/frame-00001.png frames/frame-00003.png
+run "$render" frames --frames 0-5:3 -j 1
+expect_rc 0 "raygl-render --frames 0-5:3"
+grep -q "raygl-render: 1 frame rendered in .*, 1 already rendered, 0 failed" "$work/err" &&
+    [ -s frames/frame-00003.png ] && [ ! -e frames/frame-00001.png ] &&
+    ok "--frames 0-5:3 renders scenes 0 and 3 only" || fail "--frames: $(cat "$work/err"); $(ls frames)"
+run "$render" frames --frames 6
+expect_rc 1 "raygl-render --frames past the last scene"
+grep -q "scene 6 is outside frames (scenes 0-5)" "$work/err" || fail "range message: $(cat "$work/err")"
+run "$render" frames --frames 1 --task 0
+expect_rc 2 "raygl-render --frames with --task"
+"$render" frames -q || fail "render the rest"
+
+# ---- --video into a missing folder: refused before rendering anything
+rm -rf vid
+run "$r2p" anim.raygl -o vid --video nodir/anim.mp4 -q
+expect_rc 1 "--video into a missing folder"
+grep -q "^raygl2pov: --video nodir/anim.mp4: cannot write into 'nodir': No such file or directory" \
+    "$work/err" && [ ! -e vid ] && ok "refused before anything was written" ||
+    fail "--video check: $(cat "$work/err"); $(ls vid 2>&1)"
+
+# ---- textures survive deleting the frames' PNGs
+"$(dirname "$mkanim")/../translate/mktextrace" tex.raygl || fail "mktextrace"
+"$r2p" tex.raygl -o tex --render -q || fail "render a textured trace"
+rm -f tex/*.png
+run "$render" tex
+expect_rc 0 "rendering again after deleting the frames' PNGs"
+[ "$(ls tex/*.png | wc -l)" -eq "$(ls tex/*.ini | wc -l)" ] && ok "every textured frame rendered again" ||
+    fail "after rm *.png: $(ls tex)"
+
 # ---- interrupted: no partial PNG, finished frames kept
 "$mkanim" big.raygl 4 480 360
 "$r2p" big.raygl -o int --radiosity --quality 11 --antialias -q

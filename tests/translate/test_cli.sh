@@ -182,6 +182,35 @@ grep -q "cannot write" "$work/err" || fail "full-disk message: $(cat "$work/err"
 [ -z "$(ls -A full)" ] && ok "no file left after the failed write" ||
     fail "left after a failed write: $(ls -A full | tr '\n' ' ')"
 
+# ---- a new user's first hour (issue 11)
+mkdir "$work/adir"
+run "$work/adir" -o "$work/never"
+expect_rc 1 "a folder as trace"
+grep -q "adir: cannot read: a folder, not a trace" "$work/err" ||
+    fail "folder-as-trace message: $(cat "$work/err")"
+printf '# reads itself\nsettings = self.conf\n' >"$work/self.conf"
+run "$good" -o "$work/never" --settings "$work/self.conf"
+expect_rc 2 "a settings file that reads itself"
+[ "$(grep -c 'self.conf' "$work/err")" -eq 1 ] &&
+    grep -q "self.conf:2: settings 'self.conf': that settings file is already being read (a cycle)" \
+        "$work/err" && ok "the cycle named once, with FILE:LINE" || fail "cycle message: $(cat "$work/err")"
+printf 'light = "1,2,3\n' >"$work/quote.conf"
+run "$good" -o "$work/never" --settings "$work/quote.conf"
+expect_rc 2 "an unterminated quote"
+grep -q "quote.conf:1: unterminated quote" "$work/err" && ok "reported as a quote" ||
+    fail "quote message: $(cat "$work/err")"
+[ ! -e "$work/never" ] && ok "no output folder made by bad usage" || fail "bad usage made its folder"
+
+# ---- textures apart from the frames: deleting the frames' PNGs keeps them
+"$(dirname "$mktraces")/mktextrace" "$work/tex.raygl" || fail "mktextrace"
+run "$work/tex.raygl" -o "$work/tex" -q
+expect_rc 0 "a textured trace"
+[ -n "$(ls "$work/tex/textures" 2>/dev/null | grep '^rgl-tex-.*\.png$')" ] &&
+    [ -z "$(ls "$work/tex" | grep '\.png$')" ] && ok "texture images in textures/" ||
+    fail "texture images: $(ls -R "$work/tex")"
+grep -q 'image_map{png "textures/rgl-tex-' "$work/tex/frame-00000.pov" && ok "the scene names textures/" ||
+    fail "the scene's image_map: $(grep image_map "$work/tex/frame-00000.pov" | head -1)"
+
 if [ $fails -ne 0 ]; then
     echo "test_cli: $fails failure(s)"
     exit 1

@@ -178,7 +178,9 @@ int main(int argc, char **argv)
         {"jobs\n", ":1: 'jobs' needs a value"},
         {"help\n", ":1: 'help' is a command-line option"},
         {"quiet = maybe\n", ":1: quiet 'maybe': expected on or off"},
-        {"settings = look.conf\n", "nested more than"},
+        {"settings = look.conf\n",
+         ":1: settings 'look.conf': that settings file is already being read (a cycle)"},
+        {"light = \"1,2\n", ":1: unterminated quote"},
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         const char *p = write_file("look.conf", bad[i].text);

@@ -1,0 +1,221 @@
+/* cleanup.c: the stop-signal thread and its registry (cleanup.h). */
+#include "cleanup.h"
+
+#include <errno.h>
+#include <pthread.h>
+#include <signal.h>
+#include <stdbool.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+enum { KIND_FILE = 1, KIND_DIR, KIND_CHILD };
+
+typedef struct entry {
+    int kind; /* 0: free */
+    pid_t pid;
+    char *path;
+} entry;
+
+static pthread_mutex_t lock;
+static pthread_once_t lock_once = PTHREAD_ONCE_INIT;
+static entry *entries;
+static size_t nentries, cap;
+
+static void init_lock(void)
+{
+    pthread_mutexattr_t a;
+    pthread_mutexattr_init(&a);
+    pthread_mutexattr_settype(&a, PTHREAD_MUTEX_RECURSIVE);
+    pthread_mutex_init(&lock, &a);
+    pthread_mutexattr_destroy(&a);
+}
+
+void cleanup_lock(void)
+{
+    pthread_once(&lock_once, init_lock);
+    pthread_mutex_lock(&lock);
+}
+
+void cleanup_unlock(void)
+{
+    pthread_mutex_unlock(&lock);
+}
+
+static void stop_set(sigset_t *s)
+{
+    sigemptyset(s);
+    sigaddset(s, SIGINT);
+    sigaddset(s, SIGTERM);
+    sigaddset(s, SIGHUP);
+}
+
+static long add(int kind, const char *path, pid_t pid)
+{
+    char *copy = NULL;
+    if (path) {
+        copy = malloc(strlen(path) + 1);
+        if (!copy)
+            return -1;
+        strcpy(copy, path);
+    }
+    cleanup_lock();
+    size_t i = 0;
+    while (i < nentries && entries[i].kind)
+        i++;
+    if (i == nentries) {
+        if (nentries == cap) {
+            size_t ncap = cap ? cap * 2 : 16;
+            entry *e = realloc(entries, ncap * sizeof *e);
+            if (!e) {
+                cleanup_unlock();
+                free(copy);
+                return -1;
+            }
+            entries = e;
+            cap = ncap;
+        }
+        nentries++;
+    }
+    entries[i].kind = kind;
+    entries[i].pid = pid;
+    entries[i].path = copy;
+    cleanup_unlock();
+    return (long)i;
+}
+
+long cleanup_file(const char *path)
+{
+    return add(KIND_FILE, path, 0);
+}
+
+long cleanup_dir(const char *path)
+{
+    return add(KIND_DIR, path, 0);
+}
+
+long cleanup_child(pid_t pid)
+{
+    return add(KIND_CHILD, NULL, pid);
+}
+
+void cleanup_drop(long id)
+{
+    if (id < 0)
+        return;
+    cleanup_lock();
+    if ((size_t)id < nentries) {
+        free(entries[id].path);
+        memset(&entries[id], 0, sizeof entries[id]);
+    }
+    cleanup_unlock();
+}
+
+/* Waits up to about 10 s for pid, then kills it. A pid another thread
+ * reaped already gives ECHILD: it is gone too. */
+static void reap(pid_t pid)
+{
+    struct timespec tick = {0, 20 * 1000 * 1000};
+    for (int i = 0; i < 500; i++) {
+        pid_t r = waitpid(pid, NULL, WNOHANG);
+        if (r == pid || (r < 0 && errno != EINTR))
+            return;
+        nanosleep(&tick, NULL);
+    }
+    kill(pid, SIGKILL);
+    while (waitpid(pid, NULL, 0) < 0 && errno == EINTR)
+        ;
+}
+
+static void *waiter(void *arg)
+{
+    (void)arg;
+    sigset_t set;
+    stop_set(&set);
+    int sig = 0;
+    while (sigwait(&set, &sig) != 0)
+        ;
+    cleanup_lock(); /* kept: nothing registered is made from now on */
+    for (size_t i = 0; i < nentries; i++)
+        if (entries[i].kind == KIND_CHILD)
+            kill(entries[i].pid, SIGTERM);
+    for (size_t i = 0; i < nentries; i++)
+        if (entries[i].kind == KIND_CHILD)
+            reap(entries[i].pid);
+    for (size_t i = nentries; i-- > 0;)
+        if (entries[i].kind == KIND_FILE)
+            unlink(entries[i].path);
+    for (size_t i = nentries; i-- > 0;)
+        if (entries[i].kind == KIND_DIR)
+            rmdir(entries[i].path);
+    /* End by the signal, as the shell expects of Ctrl-C. */
+    signal(sig, SIG_DFL);
+    sigset_t one;
+    sigemptyset(&one);
+    sigaddset(&one, sig);
+    pthread_sigmask(SIG_UNBLOCK, &one, NULL);
+    raise(sig);
+    _exit(128 + sig);
+}
+
+static void ignore(int sig)
+{
+    (void)sig;
+}
+
+int cleanup_start(void)
+{
+    static bool started;
+    if (started)
+        return 0;
+    sigset_t set;
+    stop_set(&set);
+    if (pthread_sigmask(SIG_BLOCK, &set, NULL) != 0)
+        return -1;
+    /* A blocked signal stays pending unless ignored: a program started in
+     * the background by a shell inherits SIGINT ignored, yet is stopped by
+     * one sent on purpose. */
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = ignore;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+    sigaction(SIGHUP, &sa, NULL);
+    pthread_t t;
+    pthread_attr_t a;
+    pthread_attr_init(&a);
+    pthread_attr_setdetachstate(&a, PTHREAD_CREATE_DETACHED);
+    int rc = pthread_create(&t, &a, waiter, NULL);
+    pthread_attr_destroy(&a);
+    if (rc != 0) {
+        errno = rc;
+        return -1;
+    }
+    started = true;
+    return 0;
+}
+
+void cleanup_spawnattr(posix_spawnattr_t *attr)
+{
+    sigset_t none, stops;
+    sigemptyset(&none);
+    stop_set(&stops);
+    posix_spawnattr_setsigmask(attr, &none);
+    posix_spawnattr_setsigdefault(attr, &stops);
+    short flags = 0;
+    posix_spawnattr_getflags(attr, &flags);
+    posix_spawnattr_setflags(attr, flags | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+}
+
+void cleanup_child_signals(void)
+{
+    sigset_t stops;
+    stop_set(&stops);
+    signal(SIGINT, SIG_DFL);
+    signal(SIGTERM, SIG_DFL);
+    signal(SIGHUP, SIG_DFL);
+    sigprocmask(SIG_UNBLOCK, &stops, NULL);
+}

@@ -1,0 +1,50 @@
+/* cleanup.h: what a stop signal undoes.
+ *
+ * SIGINT, SIGTERM and SIGHUP (Ctrl-C to the process or its group, kill, a
+ * closed terminal) end raygl2pov, raygl-render and raygl-compare; what
+ * they leave must be complete files only. cleanup_start blocks those
+ * signals in the calling thread, and so in every thread it creates later,
+ * and starts a thread that waits for them. On one, that thread takes the
+ * registry's lock for good, stops the registered children (SIGTERM, then
+ * SIGKILL after a while) and waits for them, removes the registered files,
+ * then the registered folders, and ends the process by the signal.
+ *
+ * A temporary file (or a child that writes one) is registered before it
+ * is made, and made with the lock held, so nothing is made after the
+ * removal. Without cleanup_start the registry is kept and never used.
+ */
+#ifndef RGL_CLEANUP_H
+#define RGL_CLEANUP_H
+
+#include <spawn.h>
+#include <sys/types.h>
+
+/* Blocks the stop signals here and starts the waiting thread; call from
+ * the main thread before any other thread exists. Returns 0 or -1. */
+int cleanup_start(void);
+
+/* The registry's lock (recursive): hold it while making what was
+ * registered, so a stop cannot fall between the two. */
+void cleanup_lock(void);
+void cleanup_unlock(void);
+
+/* Registers a file to remove (cleanup_file), an empty folder to remove
+ * after the files (cleanup_dir), or a child to stop and wait for before
+ * anything is removed (cleanup_child). The path is copied. Returns an id
+ * for cleanup_drop, or -1 when out of memory. Thread-safe. */
+long cleanup_file(const char *path);
+long cleanup_dir(const char *path);
+long cleanup_child(pid_t pid);
+
+/* Forgets entry id (the file renamed into place or removed, the child
+ * waited for); -1 is ignored. Thread-safe. */
+void cleanup_drop(long id);
+
+/* A child's start: the stop signals unblocked and at their defaults, so
+ * Ctrl-C reaches it as if started from the shell. For posix_spawn (the
+ * attributes' mask and defaults are set), and for a forked child before
+ * exec (async-signal-safe). */
+void cleanup_spawnattr(posix_spawnattr_t *attr);
+void cleanup_child_signals(void);
+
+#endif
