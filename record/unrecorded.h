@@ -36,9 +36,10 @@ static inline void rgl_unrecorded_count(unsigned id)
 }
 
 /* Appends one @NotRecorded command per entry point counted since the last
- * flush to b (NULL: to the stream's write window, which must be open on
- * its frame), and zeroes the counts. Calling thread's stream only. On
- * failure (the recorder has failed then) the counts are dropped. */
+ * flush to b (NULL: through the stream's write window, onto its open
+ * frame), and zeroes those counts. Calling thread's stream only. Stops at
+ * the first record that cannot be written (the recorder has failed then;
+ * nothing will be written any more). */
 void rgl_unrecorded_flush(rgl_stream *s, rgl_buf *b);
 
 #endif
