@@ -74,6 +74,7 @@ class Entry:
         self.name = name      # glAccum
         self.ret = ret        # "void", "const GLubyte *"
         self.params = params  # [(declaration text, name)]
+        self.ext_only = False  # declared by glext.h only, not gl.h
 
 
 def declared(header_texts, name):
@@ -111,7 +112,9 @@ def gl_entries(gl_xml, header_texts):
         params = []
         for p in c.findall("param"):
             params.append((" ".join("".join(p.itertext()).split()), p.find("name").text))
-        out.append(Entry(name, ret, params))
+        e = Entry(name, ret, params)
+        e.ext_only = not declared(header_texts[:1], name)
+        out.append(e)
     return out
 
 
@@ -297,7 +300,15 @@ extern "C" {
     print("#if defined(RAYGL_GL_H) && !defined(RAYGL_UNRECORDED_MACROS)")
     print("#define RAYGL_UNRECORDED_MACROS")
     for e in es:
-        print("#define %s %s" % (e.name, twin_name(e.name)))
+        if not e.ext_only:
+            print("#define %s %s" % (e.name, twin_name(e.name)))
+    print("/* Names only glext.h declares: a program without GL_GLEXT_PROTOTYPES")
+    print(" * looks them up into function pointers of those very names. */")
+    print("#ifdef GL_GLEXT_PROTOTYPES")
+    for e in es:
+        if e.ext_only:
+            print("#define %s %s" % (e.name, twin_name(e.name)))
+    print("#endif")
     print("#endif")
 
 
