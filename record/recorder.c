@@ -900,9 +900,11 @@ rgl_stream *rgl_stream_current(void)
     if (s)
         return s;
     ensure_init();
-    if (atomic_load(&g.status) == RAYGL_IDLE)
-        auto_open();
-    if (atomic_load(&g.status) != RAYGL_RECORDING)
+    /* Before the trace opens (at the first recorded call) the stream is
+     * made already, so what the program calls first is counted; a program
+     * that records nothing leaves no file. */
+    int st = atomic_load(&g.status);
+    if (st != RAYGL_RECORDING && st != RAYGL_IDLE)
         return NULL;
     return stream_create();
 }

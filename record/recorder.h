@@ -151,9 +151,10 @@ void rgl_recorder_init(void);
  * (disabled, failed, fork child, passthrough). */
 rgl_stream *rgl_reserve_slow(size_t n);
 
-/* The calling thread's stream, created (and the trace opened) as at the
- * first recorded call, but without starting a frame; NULL when not
- * recording. For calls that count without recording (unrecorded.h). */
+/* The calling thread's stream, created if need be (also before the trace
+ * opens at the first recorded call), without starting a frame; NULL when
+ * recording is off, closed or failed. For calls that count without
+ * recording (unrecorded.h). */
 rgl_stream *rgl_stream_current(void);
 
 /* Room for n bytes in the calling thread's current buffer, or NULL when not

@@ -20,7 +20,8 @@ extern const unsigned rgl_unrecorded_total;
 extern const char *const rgl_unrecorded_names[];
 
 /* The slow path of rgl_unrecorded_count: creates the thread's stream
- * (opening the trace as the first recorded call would) and counts there;
+ * (without opening the trace: a program that records nothing leaves no
+ * file) and counts there;
  * counts nothing while not recording or inside a recorded GLU or GLUT call
  * (the preload's passthrough). */
 void rgl_unrecorded_slow(unsigned id);

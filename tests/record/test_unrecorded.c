@@ -98,11 +98,16 @@ static void test_trace(const char *dir)
     char path[128];
     snprintf(path, sizeof path, "%s/unrecorded.raygl", dir);
 
-    /* Before the trace is open: glutInit is counted into the first frame. */
-    CHECK(rayglRecordOpen(path) == 0);
+    /* Before anything is recorded: glutInit is counted, into the first
+     * frame, and opens no trace (a program that records nothing leaves no
+     * file). */
+    setenv("RAYGL_TRACE", path, 1);
     stub_reset();
     int argc = 0;
     rayglutInit(&argc, NULL);
+    CHECK(rayglRecordStatus() == RAYGL_IDLE && access(path, F_OK) != 0);
+    CHECK(rgl_tls_stream != NULL);
+    CHECK(rayglRecordOpen(path) == 0);
     rayglAccum(GL_LOAD, 1.0f);
     rayglAccum(GL_ACCUM, 0.5f);
     rayglAccum(GL_RETURN, 1.0f);
