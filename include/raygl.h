@@ -12,7 +12,9 @@
  * below choose the file and query the recorder from the program instead.
  *
  * The prototypes of most twins are generated from the command table
- * (commands.def); the hand-written ones follow.
+ * (commands.def); the hand-written ones follow. Every other GL 1.0-2.1, GLU
+ * and freeglut call has a twin too, in raygl/unrecorded.h: it is counted
+ * (the trace says per frame what was not recorded), not recorded.
  */
 #ifndef RAYGL_H
 #define RAYGL_H

@@ -26,6 +26,7 @@
 #include <GL/glext.h>
 
 #include "recorder.h"
+#include "unrecorded.h"
 
 #define SENTINEL_I 0x7ead7ead
 
@@ -203,6 +204,8 @@ void rgl_frame_image(void)
         s->in_begin || s->pos == s->base || !rgl_frame_wanted(s))
         return;
     s->image_taken = true;
+    /* The snapshot stays the frame's last command: the counts go first. */
+    rgl_unrecorded_flush(s, NULL);
     if (!rgl_live_context())
         return;
     gl_version v;

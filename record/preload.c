@@ -146,6 +146,45 @@ rgl_real_fn rgl_real_resolve(unsigned index)
     return f;
 }
 
+/* The real functions of the entry points passed through unrecorded
+ * (preload_unrecorded.h), found at their first call or lookup. A function
+ * found in this library itself would call itself: refused. */
+rgl_real_fn rgl_unrecorded_fns[RGL_UNRECORDED_COUNT];
+
+static bool in_this_library(rgl_real_fn f)
+{
+    Dl_info mine, theirs;
+    return dladdr(ptr_from((rgl_real_fn)rgl_unrecorded_resolve), &mine) &&
+           dladdr(ptr_from(f), &theirs) && mine.dli_fbase == theirs.dli_fbase;
+}
+
+rgl_real_fn rgl_unrecorded_resolve(unsigned index)
+{
+    rgl_real_fn f = find_next(rgl_unrecorded_names[index]);
+    if (!f || in_this_library(f))
+        return (rgl_real_fn)missing;
+    rgl_unrecorded_fns[index] = f;
+    return f;
+}
+
+/* The index of an unrecorded entry point's name, or -1 (the names are
+ * sorted). */
+static int unrecorded_index(const char *name)
+{
+    int lo = 0, hi = RGL_UNRECORDED_COUNT - 1;
+    while (lo <= hi) {
+        int mid = lo + (hi - lo) / 2;
+        int c = strcmp(name, rgl_unrecorded_names[mid]);
+        if (c == 0)
+            return mid;
+        if (c < 0)
+            hi = mid - 1;
+        else
+            lo = mid + 1;
+    }
+    return -1;
+}
+
 static rgl_real_fn real_hook(int h)
 {
     rgl_real_fn f = hook_real[h];
@@ -281,6 +320,12 @@ static rgl_real_fn intercept(const char *name, rgl_real_fn real)
                 rgl_real_fns[i] = real;
             return ours[i];
         }
+    }
+    int u = unrecorded_index(name);
+    if (u >= 0) {
+        if (!rgl_unrecorded_fns[u] && !in_this_library(real))
+            rgl_unrecorded_fns[u] = real;
+        return rgl_unrecorded_twins[u];
     }
     return real;
 }

@@ -31,6 +31,7 @@
 
 #include "raygl.h"
 #include "recorder.h"
+#include "unrecorded.h"
 
 #ifndef RAYGL_VERSION
 #define RAYGL_VERSION "0.0.0"
@@ -624,15 +625,19 @@ static rgl_stream *stream_create(void)
 {
     rgl_stream *s = rgl_alloc(sizeof *s);
     pthread_mutex_t *mu = rgl_alloc(sizeof *mu);
-    if (!s || !mu) {
+    uint64_t *unrec = rgl_alloc(rgl_unrecorded_total * sizeof *unrec);
+    if (!s || !mu || !unrec) {
         rgl_free(s);
         rgl_free(mu);
+        rgl_free(unrec);
         rgl_fail(ENOMEM, "allocation failed");
         return NULL;
     }
     memset(s, 0, sizeof *s);
+    memset(unrec, 0, rgl_unrecorded_total * sizeof *unrec);
     pthread_mutex_init(mu, NULL);
     s->lock = mu;
+    s->unrecorded = unrec;
     for (int i = 0; i < RGL_MAX_CLIENT_ARRAYS; i++)
         s->arrays[i].size = 4;
     s->arrays[RGL_CA_VERTEX].type = s->arrays[RGL_CA_COLOR].type = GL_FLOAT;
@@ -655,6 +660,7 @@ static void stream_free(rgl_stream *s)
     rgl_buf_finish(&s->list);
     rgl_buf_finish(&s->snap);
     objects_clear(&s->objs, false);
+    rgl_free(s->unrecorded);
     pthread_mutex_destroy(s->lock);
     rgl_free(s->lock);
     rgl_free(s);
@@ -708,6 +714,10 @@ static bool frame_write(rgl_stream *s, bool reset)
     if (s->frame_open && s->frame.size > 0 && s->gen == atomic_load(&g.gen) &&
         frame_selected(s->shown++)) {
         kept = true;
+        /* Calls not recorded since the last written frame (a dropped
+         * frame's too); rgl_frame_image() flushed them before a snapshot. */
+        if (reset && !s->image_taken)
+            rgl_unrecorded_flush(s, &s->frame);
         uint8_t prefix[RGL_FRAME_PREFIX_MAX];
         uint8_t *p = rgl_put_varint(prefix, s->id);
         p = rgl_put_varint(p, s->frame_number);
@@ -901,6 +911,21 @@ static void auto_open(void)
     }
     pthread_mutex_unlock(&g.file_mu);
     fail_report();
+}
+
+rgl_stream *rgl_stream_current(void)
+{
+    rgl_stream *s = rgl_tls_stream;
+    if (s)
+        return s;
+    ensure_init();
+    /* Before the trace opens (at the first recorded call) the stream is
+     * made already, so what the program calls first is counted; a program
+     * that records nothing leaves no file. */
+    int st = atomic_load(&g.status);
+    if (st != RAYGL_RECORDING && st != RAYGL_IDLE)
+        return NULL;
+    return stream_create();
 }
 
 rgl_stream *rgl_reserve_slow(size_t n)

@@ -114,6 +114,10 @@ typedef struct rgl_stream {
     bool have_matrix[2];
     float matrix[2][16]; /* [0] modelview, [1] projection */
 
+    /* Calls of each unrecorded entry point since the stream's last written
+     * frame, by id (unrecorded.h); written by the stream's thread only. */
+    uint64_t *unrecorded;
+
     rgl_client_array_state arrays[RGL_MAX_CLIENT_ARRAYS];
     uint32_t array_buffer, element_buffer; /* buffer bindings (GL 1.5) */
     rgl_objects objs;
@@ -146,6 +150,12 @@ void rgl_recorder_init(void);
  * the stream, with n bytes free at its pos, or NULL when not recording
  * (disabled, failed, fork child, passthrough). */
 rgl_stream *rgl_reserve_slow(size_t n);
+
+/* The calling thread's stream, created if need be (also before the trace
+ * opens at the first recorded call), without starting a frame; NULL when
+ * recording is off, closed or failed. For calls that count without
+ * recording (unrecorded.h). */
+rgl_stream *rgl_stream_current(void);
 
 /* Room for n bytes in the calling thread's current buffer, or NULL when not
  * recording (*sp is NULL then). Encode into the returned pointer, then

@@ -1,6 +1,7 @@
 /* gen_dropin.c: writes include/raygl/gl.h, the drop-in header, from the
- * command table: one `#define glX rayglX` per GL, GLU and GLUT row. Run by
- * the build; the output is never edited by hand. */
+ * command table: one `#define glX rayglX` per GL, GLU and GLUT row; the
+ * calls not recorded come from raygl/unrecorded.h, which it includes. Run
+ * by the build; the output is never edited by hand. */
 #include <stdio.h>
 
 #include "cmdtable.h"
@@ -25,6 +26,9 @@ int main(void)
     puts("#ifndef RAYGL_GL_H");
     puts("#define RAYGL_GL_H");
     puts("#include <raygl.h>");
+    /* The twins of the calls not recorded (tools/gen_unrecorded.py), with
+     * their macros. */
+    puts("#include \"unrecorded.h\"");
     for (size_t i = 0; i < sizeof pairs / sizeof pairs[0]; i++)
         if (pairs[i][0])
             printf("#define %s %s\n", pairs[i][0], pairs[i][1]);

@@ -188,6 +188,7 @@ rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result
     out->status = interp_run(ip, fi->commands, fi->commands_size, fi->commands_offset,
                              &out->error);
     interp_end_frame(ip);
+    out->unrecorded = interp_unrecorded(ip);
     const char *name = interp_frame_name(ip);
     if (name) {
         snprintf(t->name, sizeof t->name, "%s", name);

@@ -35,6 +35,9 @@ typedef struct frame_result {
     rgl_error error;   /* where, when status != RGL_OK */
     const char *frame_name; /* rayglFrameBegin's name (owned by the translator,
                                valid until the next call), or NULL */
+    const struct unrec_table *unrecorded; /* the frame's calls not recorded
+                               (unrecorded.h; owned by the translator, valid
+                               until the next call) */
 } frame_result;
 
 /* Builds the scene of frame i (file order), logging diagnostics into log

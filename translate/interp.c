@@ -33,7 +33,7 @@ static bool allowed_in_begin(const char *handler)
         "vertex",       "normal",    "color",     "texcoord",       "edgeflag",   "end",
         "material",     "calllist",  "calllists", "arrayelement",   "resolvedmatrix",
         "arraydata",    "framebegin", "frameend", "swapbuffers",
-        "snapshot",
+        "snapshot",     "notrecorded",
     };
     for (size_t i = 0; i < sizeof ok / sizeof ok[0]; i++)
         if (strcmp(handler, ok[i]) == 0)
@@ -193,6 +193,7 @@ void interp_destroy(interp *ip)
     if (!ip)
         return;
     interp_lists_free(ip);
+    unrec_finish(&ip->unrecorded);
     tr_free(ip->begin_ok);
     tr_free(ip->edge);
     tr_free(ip->clipv);

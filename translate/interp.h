@@ -213,4 +213,9 @@ bool interp_in_begin(const interp *ip);
  * unsanitised), or NULL when the frame has none. */
 const char *interp_frame_name(const interp *ip);
 
+struct unrec_table;
+/* The calls the current frame's @NotRecorded commands say were not
+ * recorded (unrecorded.h); empty for an interpreter without a scene. */
+const struct unrec_table *interp_unrecorded(const interp *ip);
+
 #endif

@@ -10,6 +10,7 @@
 #include <math.h>
 
 #include "interp.h"
+#include "unrecorded.h"
 
 /* Every handler named in commands.def; a missing definition fails the link. */
 #define RGL_CMD(op, api, gen, name, handler, ...) \
@@ -96,6 +97,7 @@ struct interp {
     /* rayglFrameBegin */
     bool frame_begin;
     char frame_name[RGL_STRING_MAX + 1];
+    unrec_table unrecorded; /* the frame's @NotRecorded (interp_unrecorded.c) */
     double fb_loc[3], fb_look[3], fb_light[3];
 };
 

@@ -54,6 +54,7 @@ void interp_begin_frame(interp *ip)
     ip->cleared = false;
     ip->painter = 0;
     ip->shape_facets = 0;
+    unrec_clear(&ip->unrecorded);
     if (ip->scene)
         scene_reset(ip->scene);
     interp_lists_begin_frame(ip);

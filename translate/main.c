@@ -38,6 +38,7 @@
 #include "povwrite.h"
 #include "render.h"
 #include "talloc.h"
+#include "unrecorded.h"
 
 #ifndef RAYGL_VERSION
 #define RAYGL_VERSION "unknown"
@@ -126,6 +127,9 @@ static void say(const options *o, const char *fmt, ...)
     va_end(ap);
     fputc('\n', stderr);
 }
+
+/* say() for a line of text, as a callback. */
+static void say_line(const char *text, void *user) { say(user, "%s", text); }
 
 /* "@0x1f0: truncated: detail", with the command when the error names one. */
 static void say_decode_error(const options *o, const char *where, const rgl_error *e)
@@ -231,6 +235,7 @@ typedef struct slot {
     const char *look_note; /* look_apply's, static */
     char *published;       /* "DIR/NAME" once written */
     long tmp_id;           /* the temporary .pov's cleanup entry, or -1 */
+    unrec_table unrec;     /* the frame's calls not recorded */
 } slot;
 
 typedef struct job {
@@ -331,6 +336,8 @@ static void *worker(void *arg)
         s->status = translator_build(t, s->frame, j->o->quiet ? NULL : s->log, &res);
         s->error = res.error;
         s->info = res.info;
+        if (res.unrecorded)
+            (void)unrec_copy(&s->unrec, res.unrecorded);
         if (res.frame_name) {
             s->frame_name = tr_realloc(NULL, strlen(res.frame_name) + 1);
             if (s->frame_name)
@@ -733,6 +740,8 @@ int main(int argc, char **argv)
     bool fatal = false;
     const char *notes[4];
     int nnotes = 0;
+    unrec_table unrec; /* the whole trace's, reported once at the end */
+    unrec_init(&unrec);
     for (size_t k = 0; k < j.nslots; k++) {
         slot *s = &j.slots[k];
         pthread_mutex_lock(&j.done_lock);
@@ -786,11 +795,16 @@ int main(int argc, char **argv)
         s->log = NULL;
         tr_free(s->frame_name);
         s->frame_name = NULL;
+        (void)unrec_merge(&unrec, &s->unrec, s->frame);
+        unrec_finish(&s->unrec);
         progress(&o, k + 1, j.nslots);
     }
     for (int t = 0; t < started; t++)
         pthread_join(threads[t], NULL);
     clear_progress();
+    if (!o.quiet)
+        unrec_report(&unrec, say_line, &o);
+    unrec_finish(&unrec);
     print_summary(&o, &tot);
 
     if (render_wanted(&o.render) && !fatal) {

@@ -24,6 +24,12 @@
  *   --done FILE         create FILE once every frame is drawn (a program
  *                       ended early leaves none)
  *   --ignore-term       ignore SIGTERM (raygl record --exit then kills)
+ *   --unrecorded        each frame also makes calls RayGL passes through
+ *                       unrecorded (glRasterPos2i, glMap1f, two
+ *                       glutBitmapCharacter with --api glut,
+ *                       glActiveTexture found with
+ *                       glXGetProcAddressARB) and queries (glGetError,
+ *                       glGetIntegerv, glIsEnabled)
  */
 #include <EGL/egl.h>
 #include <GL/freeglut.h>
@@ -52,9 +58,9 @@ typedef struct gl_fns {
 
 static struct {
     const char *api, *lookup, *hang;
-    int single, frames, threads, teapot, exec_child, fork_child, delay_ms;
+    int single, frames, threads, teapot, exec_child, fork_child, delay_ms, unrecorded;
     const char *self, *done;
-} opt = {"glx", "direct", NULL, 0, 3, 1, 0, 0, 0, 0, NULL, NULL};
+} opt = {"glx", "direct", NULL, 0, 3, 1, 0, 0, 0, 0, 0, NULL, NULL};
 
 static gl_fns gl;
 
@@ -112,8 +118,31 @@ static void load_fns(void)
     memcpy(&gl.Flush, &ptrs[6], sizeof ptrs[6]);
 }
 
+/* Calls RayGL does not record, and queries. */
+static void unrecorded_calls(void)
+{
+    static const GLfloat pts[6] = {0, 0, 0, 1, 1, 0};
+    glRasterPos2i(0, 0);
+    glMap1f(GL_MAP1_VERTEX_3, 0, 1, 3, 2, pts);
+    if (strcmp(opt.api, "glut") == 0) { /* freeglut exits without glutInit */
+        glutBitmapCharacter(GLUT_BITMAP_8_BY_13, 'R');
+        glutBitmapCharacter(GLUT_BITMAP_8_BY_13, 'G');
+    }
+    void (*active)(GLenum) =
+        (void (*)(GLenum))glXGetProcAddressARB((const GLubyte *)"glActiveTexture");
+    if (active)
+        active(GL_TEXTURE0);
+    GLint v[4];
+    glGetIntegerv(GL_VIEWPORT, v);
+    (void)glIsEnabled(GL_LIGHTING);
+    while (glGetError() != GL_NO_ERROR)
+        ;
+}
+
 static void draw(int frame, int thread)
 {
+    if (opt.unrecorded)
+        unrecorded_calls();
     gl.ClearColor(0.1f * (float)thread, 0.2f, 0.3f, 1);
     gl.Clear(GL_COLOR_BUFFER_BIT);
     if (opt.teapot) {
@@ -340,6 +369,8 @@ int main(int argc, char **argv)
             opt.delay_ms = atoi(argv[++i]);
         else if (strcmp(a, "--single") == 0)
             opt.single = 1;
+        else if (strcmp(a, "--unrecorded") == 0)
+            opt.unrecorded = 1;
         else if (strcmp(a, "--teapot") == 0)
             opt.teapot = 1;
         else if (strcmp(a, "--exec-child") == 0)

@@ -12,6 +12,9 @@
 #                            the program as the caller
 #   glut-solid               3 glutSolidTeapot, none of the GL calls
 #                            freeglut makes to draw them
+#   unrecorded               calls passed through unrecorded: counted per
+#                            frame (@NotRecorded), reported by raygl2pov;
+#                            queries not counted
 #   threads                  two threads, two contexts: two streams of 3
 #   kill                     SIGKILL mid-frame: the complete frames read
 #                            and translate
@@ -145,6 +148,38 @@ glut-solid)
     # none of it may appear beside the shape.
     expect t.raygl 'glBegin(\|glDrawArrays(\|glDrawElements(\|glVertexPointer(\|glNormalPointer(\|glVertex3f(' 0
     translate t.raygl 3
+    ;;
+unrecorded)
+    record -o t.raygl -- "$prog" --api glut --unrecorded >prog.log 2>&1 || { cat prog.log; fail "the program failed"; }
+    triangles t.raygl 3
+    # Counted per frame, the lookup's function too; queries never.
+    expect t.raygl '@NotRecorded(name="glRasterPos2i", count=1)' 3
+    expect t.raygl '@NotRecorded(name="glMap1f", count=1)' 3
+    expect t.raygl '@NotRecorded(name="glutBitmapCharacter", count=2)' 3
+    expect t.raygl '@NotRecorded(name="glActiveTexture", count=1)' 3
+    expect t.raygl '@NotRecorded(name="glutInit", count=1)' 1
+    expect t.raygl 'glGetError\|glGetIntegerv\|glIsEnabled' 0
+    translate t.raygl 3
+    log=t-pov.log
+    for want in "glRasterPos2i: 3 calls not recorded, from frame 0" \
+        "glutBitmapCharacter: 6 calls not recorded, from frame 0" \
+        "glActiveTexture: 3 calls not recorded, from frame 0" \
+        "glutInit: 1 call not recorded, from frame 0"; do
+        grep -q "t.raygl: $want\$" "$log" || { cat "$log"; fail "raygl2pov does not say '$want'"; }
+    done
+    [ "$(grep -c 'glRasterPos2i:' "$log")" -eq 1 ] || fail "glRasterPos2i reported more than once"
+    # With snapshots: the counts come before @Snapshot, each frame's last
+    # command; the recorder's own glReadBuffer and glPixelTransfer calls
+    # are not the program's.
+    record --snapshots -o s.raygl -- "$prog" --api glx --unrecorded >prog.log 2>&1 ||
+        { cat prog.log; fail "the program failed (snapshots)"; }
+    triangles s.raygl 3
+    expect s.raygl '@Snapshot(' 3
+    expect s.raygl '@NotRecorded(name="glRasterPos2i", count=1)' 3
+    expect s.raygl 'glReadBuffer\|glPixelTransfer' 0
+    dump s.raygl | awk '/^frame / { if (n++ && last !~ /@Snapshot/) bad = 1 }
+        /^  [0-9]/ { last = $0 } END { exit bad || last !~ /@Snapshot/ }' ||
+        fail "@Snapshot is not each frame's last command"
     ;;
 threads)
     record -o t.raygl -- "$prog" --api glx --threads 2 >prog.log 2>&1 || { cat prog.log; fail "the program failed"; }

@@ -29,6 +29,10 @@ extern int stub_glut_ready;  /* what glutGet(GLUT_INIT_STATE) returns */
 
 void stub_reset(void);
 
+/* Logs a call with no arguments (the generated stubs of the unrecorded
+ * entry points, stub_unrecorded.c, log only their names). */
+void stub_log_name(const char *name);
+
 /* What the stub's glMapBuffer returns. */
 extern unsigned char stub_mapped[4096];
 

@@ -150,5 +150,33 @@ int main(int argc, char **argv)
     write_file(path, t.data, t.size);
     seq_free(&s);
     trace_free(&t);
+
+    /* @NotRecorded (format 1.3): frame 1 carries frame 0's state (replayed
+     * without being reported again); a hostile name; a second stream. */
+    trace_init(&t);
+    seq_init(&s);
+    scene_smooth(&s);
+    seq_cmd(&s, RGL_OP_NotRecorded, "glAccum", (const double[]){1000}, 1);
+    seq_cmd(&s, RGL_OP_NotRecorded, "glRasterPos2i", (const double[]){1}, 1);
+    trace_frame(&t, 0, 0, 0, 0, &s);
+    seq_free(&s);
+    seq_init(&s);
+    CMD(&s, Clear, GL_COLOR_BUFFER_BIT);
+    seq_cmd(&s, RGL_OP_NotRecorded, "glMap1f", (const double[]){5}, 1);
+    seq_cmd(&s, RGL_OP_NotRecorded, "glAccum", (const double[]){200}, 1);
+    seq_cmd(&s, RGL_OP_NotRecorded, "glAccum", (const double[]){4}, 1);
+    seq_cmd(&s, RGL_OP_NotRecorded, "gl\033[31mEvil\n", (const double[]){2}, 1);
+    trace_frame(&t, 0, 1, RGL_FRAME_STATE_CARRIED, 0, &s);
+    seq_free(&s);
+    seq_init(&s);
+    scene_lines_points(&s);
+    seq_cmd(&s, RGL_OP_NotRecorded, "glutBitmapCharacter", (const double[]){7}, 1);
+    seq_cmd(&s, RGL_OP_NotRecorded, "glActiveTexture", (const double[]){1}, 1);
+    trace_frame(&t, 1, 0, 0, 0, &s);
+    seq_free(&s);
+    trace_finish(&t);
+    snprintf(path, sizeof path, "%s/unrecorded.raygl", argv[1]);
+    write_file(path, t.data, t.size);
+    trace_free(&t);
     return 0;
 }

@@ -211,6 +211,36 @@ expect_rc 0 "a textured trace"
 grep -q 'image_map{png "textures/rgl-tex-' "$work/tex/frame-00000.pov" && ok "the scene names textures/" ||
     fail "the scene's image_map: $(grep image_map "$work/tex/frame-00000.pov" | head -1)"
 
+# ---- calls not recorded (@NotRecorded): one report per trace, by name
+unrec=$work/traces/unrecorded.raygl
+p="raygl2pov: $unrec:"
+printf '%s\n' "$p gl??31mEvil?: 2 calls not recorded, from frame 1" \
+    "$p glAccum: 1,204 calls not recorded, from frame 0" \
+    "$p glActiveTexture: 1 call not recorded, from frame 2" \
+    "$p glMap1f: 5 calls not recorded, from frame 1" \
+    "$p glRasterPos2i: 1 call not recorded, from frame 0" \
+    "$p glutBitmapCharacter: 7 calls not recorded, from frame 2" >"$work/unrec.want"
+for j in 1 3; do
+    run "$unrec" -o "$work/unrec$j" -j $j
+    expect_rc 0 "calls not recorded, -j $j"
+    grep 'not recorded' "$work/err" >"$work/unrec.got"
+    cmp -s "$work/unrec.want" "$work/unrec.got" && ok "calls not recorded reported once, -j $j" ||
+        fail "calls not recorded, -j $j: $(diff "$work/unrec.want" "$work/unrec.got")"
+done
+run "$unrec" -o "$work/unrec4" --frames 1
+grep 'not recorded' "$work/err" >"$work/unrec.got"
+printf '%s\n' "$p gl??31mEvil?: 2 calls not recorded, from frame 1" \
+    "$p glAccum: 204 calls not recorded, from frame 1" \
+    "$p glMap1f: 5 calls not recorded, from frame 1" >"$work/unrec.want1"
+cmp -s "$work/unrec.want1" "$work/unrec.got" && ok "--frames 1: that frame's calls only" ||
+    fail "--frames 1: $(diff "$work/unrec.want1" "$work/unrec.got")"
+run "$unrec" -o "$work/unrec5" --quiet
+grep -q 'not recorded' "$work/err" && fail "--quiet still reports calls not recorded" ||
+    ok "--quiet: no report"
+run "$unrec" --dump
+grep -q '@NotRecorded(name="glAccum", count=1000)' "$work/out" && ok "--dump shows @NotRecorded" ||
+    fail "--dump: no @NotRecorded"
+
 if [ $fails -ne 0 ]; then
     echo "test_cli: $fails failure(s)"
     exit 1
