@@ -19,6 +19,7 @@ unrecorded ones need, each output from the same list:
   dropin     include/raygl/unrecorded.h: the twins' prototypes, and the
              drop-in macros (#define glAccum rayglAccum) for raygl/gl.h
   stub       the stub GL of tests/record: each real function logs its call
+  glnames    the gl* names, one a line, for tools/gen_preload.c forward
 
 Why Python: gl.xml is XML and the GLU and freeglut prototypes are C text;
 Python's standard library parses both, and meson runs on Python, so the
@@ -333,11 +334,19 @@ def out_stub(es):
         print("}")
 
 
+def out_glnames(es):
+    # For tools/gen_preload.c forward: libraygl's twins reach these gl*
+    # functions through the current context's table too (record/forward.h).
+    for e in es:
+        if e.name.startswith("gl") and not e.name.startswith(("glu", "glut")):
+            print(e.name)
+
+
 def main(argv):
     modes = {"twins": out_twins, "header": out_header, "ldscript": out_ldscript,
-             "dropin": out_dropin, "stub": out_stub}
+             "dropin": out_dropin, "stub": out_stub, "glnames": out_glnames}
     if len(argv) < 8 or argv[1] not in modes:
-        sys.stderr.write("usage: gen_unrecorded.py twins|header|ldscript|dropin|stub COMMANDS_DEF "
+        sys.stderr.write("usage: gen_unrecorded.py twins|header|ldscript|dropin|stub|glnames COMMANDS_DEF "
                          "GL_XML GL_H GLEXT_H GLU_H FREEGLUT_HEADER...\n")
         return 2
     try:
