@@ -186,6 +186,12 @@ rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result
     out->status = interp_run(ip, fi->commands, fi->commands_size, fi->commands_offset,
                              &out->error);
     interp_end_frame(ip);
+    const char *cut = interp_frame_cut(ip);
+    if (cut)
+        snprintf(out->cut, sizeof out->cut, "%s", cut);
+    const char *missing = interp_frame_missing(ip, &out->nmissing);
+    if (missing)
+        snprintf(out->missing, sizeof out->missing, "%s", missing);
     const char *name = interp_frame_name(ip);
     if (name) {
         snprintf(t->name, sizeof t->name, "%s", name);

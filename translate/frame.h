@@ -35,12 +35,21 @@ typedef struct frame_result {
     rgl_error error;   /* where, when status != RGL_OK */
     const char *frame_name; /* rayglFrameBegin's name (owned by the translator,
                                valid until the next call), or NULL */
+    /* A frame built (RGL_OK) may still be incomplete: cut by the frame
+     * budget (interp_frame_cut's line), or drawn without parts the damaged
+     * trace could not supply (the first as a line, and how many). Empty
+     * strings and 0 when complete. */
+    char cut[DIAG_TEXT];
+    char missing[DIAG_TEXT];
+    uint32_t nmissing;
 } frame_result;
 
 /* Builds the scene of frame i (file order), logging diagnostics into log
  * (may be NULL). A frame whose chunk or commands are damaged reports the
  * decoder's error: the scene then holds what came before the damage, and
- * the caller does not write it. RGL_E_NOMEM when memory ran out. */
+ * the caller does not write it. RGL_E_NOMEM when memory ran out. A frame
+ * cut by its budget, or missing a part that damage took, is RGL_OK with
+ * out->cut or out->missing set: the caller writes it and says so. */
 rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result *out);
 
 /* The scene the last translator_build made. */

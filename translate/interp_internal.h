@@ -46,6 +46,13 @@ struct interp {
                             or last clear (interp_prim.c, painter_shift) */
     uint64_t shape_facets; /* facets of tessellated shapes in this frame (interp_shape.c) */
 
+    /* The frame's budget and completeness (interp_bounds.c). */
+    uint64_t cmds_run, assembled, texels;
+    bool cut;                /* the budget ran out: the rest of the frame is skipped */
+    char cut_why[DIAG_TEXT];
+    uint32_t nmissing;       /* parts left out for damage */
+    char missing[DIAG_TEXT]; /* the first of them */
+
     /* glBegin .. glEnd */
     bool in_begin;
     GLenum prim_mode;
@@ -167,6 +174,32 @@ void interp_bad_op(interp *ip, const char *why);
 bool interp_reject_in_begin(interp *ip);
 
 /* ---- Shared between the files --------------------------------------------------- */
+
+/* The frame's budget (interp_bounds.c). interp_bounds_begin_frame starts
+ * a frame's counts. interp_budget_after is called after each command with
+ * its offset, interp_budget_vertex before a vertex is assembled and
+ * interp_budget_texels before texture bytes are read, copied or kept: each
+ * returns false once the frame is cut (and cuts it when this one is over),
+ * and the caller then stops. */
+void interp_bounds_begin_frame(interp *ip);
+bool interp_budget_over(interp *ip, uint64_t offset);
+static inline bool interp_budget_after(interp *ip, uint64_t offset)
+{
+    const scene *s = ip->scene;
+    if (ip->cut || ++ip->cmds_run > INTERP_BUDGET_COMMANDS ||
+        (s && (s->nverts > INTERP_BUDGET_VERTICES ||
+               s->ntris > INTERP_BUDGET_TRIANGLES ||
+               s->nlines + s->npoints > INTERP_BUDGET_LINES ||
+               s->nsolids > INTERP_BUDGET_SOLIDS || s->ninstances > INTERP_BUDGET_INSTANCES)))
+        return !interp_budget_over(ip, offset);
+    return true;
+}
+bool interp_budget_vertex(interp *ip);
+bool interp_budget_texels(interp *ip, uint64_t bytes);
+
+/* Records that the frame is drawn without `what` (damage in the trace:
+ * a display-list body, texture pixels), for interp_frame_missing. */
+void interp_missing(interp *ip, const char *what);
 
 /* Index of a cap, or -1 for an enum glEnable does not accept. */
 int interp_cap_index(GLenum cap);

@@ -27,6 +27,7 @@
  */
 #include "interp_internal.h"
 
+#include <stdio.h>
 #include <string.h>
 
 #include "talloc.h"
@@ -185,15 +186,22 @@ static bool list_fetch(interp *ip, list_entry *e)
     rgl_resource res;
     rgl_error err;
     memset(&err, 0, sizeof err);
+    char what[DIAG_TEXT];
     if (ip->res_fn(ip->res_ctx, e->body, &res, &err) != RGL_OK) {
         interp_diag(ip, DIAG_IGNORED, "display list %u: body #%u unreadable (%s): call skipped",
                     e->name, e->body, rgl_status_str(err.status));
+        snprintf(what, sizeof what, "display list %u (body #%u unreadable: %s)", e->name,
+                 e->body, rgl_status_str(err.status));
+        interp_missing(ip, what);
         return false;
     }
     if (res.kind != RGL_RES_COMMANDS) {
         interp_diag(ip, DIAG_IGNORED,
                     "display list %u: body #%u is not a command sequence: call skipped",
                     e->name, e->body);
+        snprintf(what, sizeof what, "display list %u (body #%u is not a command sequence)",
+                 e->name, e->body);
+        interp_missing(ip, what);
         return false;
     }
     e->fetched = true;
@@ -374,6 +382,8 @@ static void share_output(interp *ip, uint32_t body, const call_mark *mk)
 
 static void call_list(interp *ip, uint32_t name)
 {
+    if (ip->cut)
+        return;
     if (ip->list_depth >= INTERP_MAX_LIST_NESTING) {
         interp_diag(ip, DIAG_LIMIT, "display list %u nested deeper than %d: call skipped", name,
                     INTERP_MAX_LIST_NESTING);
@@ -419,10 +429,15 @@ static void call_list(interp *ip, uint32_t name)
     rgl_status st = interp_run(ip, data, size, offset, &err);
     ip->list_depth--;
     ip->cmd = outer;
-    if (st != RGL_OK)
+    if (st != RGL_OK) {
         interp_diag(ip, DIAG_IGNORED,
                     "display list %u: body #%u damaged at 0x%llx (%s): the rest of it skipped",
                     name, body, (unsigned long long)err.offset, rgl_status_str(st));
+        char what[DIAG_TEXT];
+        snprintf(what, sizeof what, "the rest of display list %u (body #%u damaged at 0x%llx: %s)",
+                 name, body, (unsigned long long)err.offset, rgl_status_str(st));
+        interp_missing(ip, what);
+    }
     if (share)
         share_output(ip, body, &mk);
 }

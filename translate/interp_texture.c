@@ -14,6 +14,7 @@
  * records the call (record/entry_custom.c, pixels_put), so glPixelStorei
  * is kept as state but never applied again here.
  */
+#include <stdio.h>
 #include <string.h>
 
 #include "interp_internal.h"
@@ -331,12 +332,18 @@ static const uint8_t *fetch_pixels(interp *ip, uint32_t id, size_t need)
         interp_diag(ip, DIAG_IGNORED, "texture image: no resources to read pixels #%u from", id);
         return NULL;
     }
+    if (!interp_budget_texels(ip, need))
+        return NULL;
     rgl_resource res;
     rgl_error err;
     memset(&err, 0, sizeof err);
     if (ip->res_fn(ip->res_ctx, id, &res, &err) != RGL_OK) {
         interp_diag(ip, DIAG_IGNORED, "texture image: pixels #%u unreadable (%s)", id,
                     rgl_status_str(err.status));
+        char what[DIAG_TEXT];
+        snprintf(what, sizeof what, "a texture image (pixels #%u unreadable: %s)", id,
+                 rgl_status_str(err.status));
+        interp_missing(ip, what);
         return NULL;
     }
     if (res.kind != RGL_RES_BYTES || res.size != need) {
@@ -475,6 +482,8 @@ static tex_image *image_own(interp *ip, tex_obj *o)
     if (o->img->refs == 1)
         return o->img;
     size_t n = sizeof *o->img + (size_t)o->img->width * (size_t)o->img->height * 4;
+    if (!interp_budget_texels(ip, n))
+        return NULL;
     tex_image *c = tr_realloc(NULL, n);
     if (!c) {
         if (ip->scene)
@@ -565,6 +574,8 @@ void interp_build2dmipmaps(interp *ip, const rgl_cmd *cmd)
     }
     if (p[0] != w || p[1] != h) {
         tex_image *src = o->img;
+        if (!interp_budget_texels(ip, (uint64_t)p[0] * (uint64_t)p[1] * 4))
+            return;
         tex_image *img = tr_realloc(NULL, sizeof *img + (size_t)p[0] * (size_t)p[1] * 4);
         if (!img) {
             if (ip->scene)
@@ -916,6 +927,8 @@ int32_t interp_texture_for_draw(interp *ip)
             return t->cached_index;
     }
     size_t n = (size_t)st.width * (size_t)st.height * 4;
+    if (!interp_budget_texels(ip, n))
+        return -1;
     st.rgba = tr_realloc(NULL, n);
     if (!st.rgba) {
         ip->scene->failed = true;

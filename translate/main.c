@@ -281,6 +281,9 @@ typedef struct slot {
     int write_errno;    /* writing the temporary .pov failed */
     const char *look_note; /* look_apply's, static */
     char *published;       /* "DIR/NAME" once written */
+    char *incomplete;      /* why the scene is incomplete: the cut, then what
+                              damage took (frame_result), or NULL */
+    bool damaged;          /* a part of it was lost to damage */
 } slot;
 
 typedef struct job {
@@ -323,7 +326,7 @@ static void write_temp(job *j, translator *t, size_t k, slot *s, outbuf *ob)
     name_stem(j->o->name_pattern, &nv, fname, NAME_MAX_STEM + 1);
     strcat(fname, ".pov");
     pov_frame_info info = {fname, j->o->trace, s->frame, s->info.stream, s->info.number,
-                           s->frame_name, &j->o->pov};
+                           s->frame_name, &j->o->pov, s->incomplete};
     ob->len = 0;
     ob->failed = false;
     ob->user = &fd;
@@ -347,6 +350,24 @@ static void write_temp(job *j, translator *t, size_t k, slot *s, outbuf *ob)
         unlink(path);
     }
     tr_free(path);
+}
+
+/* "cut at ...\nwritten without ..." for a frame written incomplete, or
+ * NULL (no memory: the messages are then lost, not the frame). */
+static char *incomplete_text(const frame_result *res, bool *damaged)
+{
+    char more[48] = "";
+    if (res->nmissing > 1)
+        snprintf(more, sizeof more, " and %" PRIu32 " more part%s", res->nmissing - 1,
+                 res->nmissing > 2 ? "s" : "");
+    size_t cap = strlen(res->cut) + strlen(res->missing) + sizeof more + 32;
+    char *t = tr_realloc(NULL, cap);
+    if (!t)
+        return NULL;
+    *damaged = res->nmissing > 0;
+    snprintf(t, cap, "%s%s%s%s%s", res->cut, res->cut[0] && res->nmissing ? "\n" : "",
+             res->nmissing ? "written without " : "", res->missing, more);
+    return t;
 }
 
 static void *worker(void *arg)
@@ -380,6 +401,8 @@ static void *worker(void *arg)
             if (s->frame_name)
                 strcpy(s->frame_name, res.frame_name);
         }
+        if (s->status == RGL_OK && (res.cut[0] || res.nmissing))
+            s->incomplete = incomplete_text(&res, &s->damaged);
         scene *sc = translator_scene_edit(t);
         if (s->status == RGL_OK)
             s->look_note = look_apply(&j->o->look, sc);
@@ -546,6 +569,25 @@ done:
     tr_free(tmp_ini);
     tr_free(fin_pov);
     tr_free(fin_ini);
+}
+
+/* A frame written incomplete: the cut is a note (the frame is what the
+ * budget allows); a part lost to damage is damage, said and counted in the
+ * exit status even with --quiet (raygl2pov(1), "Damage"). */
+static void say_incomplete(const options *o, totals *tot, const slot *s)
+{
+    if (!s->incomplete || !s->published)
+        return;
+    for (const char *p = s->incomplete; *p; p += *p == '\n') {
+        const char *nl = strchr(p, '\n');
+        int len = nl ? (int)(nl - p) : (int)strlen(p);
+        bool cut = strncmp(p, "cut ", 4) == 0;
+        if (!cut || !o->quiet)
+            say(o, "frame %zu: %.*s", s->frame, len, p);
+        p += len;
+    }
+    if (s->damaged)
+        tot->status = EXIT_INPUT;
 }
 
 static void progress(const options *o, size_t done, size_t total)
@@ -801,6 +843,7 @@ int main(int argc, char **argv)
             atomic_store(&j.abort, 1);
         } else {
             publish(&o, &tot, &used, k, s);
+            say_incomplete(&o, &tot, s);
         }
         if (fatal && s->status == RGL_OK && !s->write_errno) {
             char *tmp = temp_path(o.outdir, k, ".pov");
@@ -813,6 +856,8 @@ int main(int argc, char **argv)
         s->log = NULL;
         tr_free(s->frame_name);
         s->frame_name = NULL;
+        tr_free(s->incomplete);
+        s->incomplete = NULL;
         progress(&o, k + 1, j.nslots);
     }
     for (int t = 0; t < started; t++)

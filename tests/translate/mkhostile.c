@@ -1,0 +1,243 @@
+/* mkhostile.c: writes the hostile traces test_bounds.sh feeds raygl2pov.
+ *
+ *   mkhostile DIR
+ *
+ * DIR/bomb-N.raygl    list 1 draws a triangle list of N vertices and calls
+ *                     itself twice (issue 12: a few hundred bytes asking for
+ *                     2^64 bodies); N = 3, 30, 300.
+ * DIR/bomb-solid.raygl the same with a glutSolidSphere per call, and
+ *                     DIR/bomb-empty.raygl with 4000 state calls per body and
+ *                     no drawing (work without output).
+ * DIR/bomb-lines.raygl the same with lines of 30 vertices.
+ * DIR/bomb-calls.raygl 100000 outermost calls of one small list (instances);
+ *                     DIR/bomb-calls300.raygl 60000 calls of 300 vertices.
+ * DIR/lists.raygl     two frames drawing through display lists (one nested),
+ *                     small: test_bounds.sh flips each of its bytes.
+ * DIR/unclosed.raygl  three frames, no index and no END trailer (the recorder
+ *                     killed between frames); DIR/cut.raygl the same with a
+ *                     fourth frame cut short in the middle (a full disk).
+ * DIR/snap.raygl      three frames, each with an @Snapshot of one shared image
+ *                     resource (as the recorder shares an unchanged picture);
+ *                     the image resource's payload spans printed on stdout as
+ *                     "snapshot-image START END" for the test to damage.
+ */
+#include <GL/gl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "tracegen.h"
+
+static void camera(seq *s)
+{
+    CMD(s, Viewport, 0, 0, 64, 48);
+    CMD(s, MatrixMode, GL_PROJECTION);
+    CMD(s, Frustum, -1, 1, -0.75, 0.75, 1, 100);
+    CMD(s, MatrixMode, GL_MODELVIEW);
+    CMD(s, Translatef, 0, 0, -5);
+    CMD(s, Enable, GL_DEPTH_TEST);
+}
+
+static void finish(rgl_trace_builder *b, bool with_index, const char *dir, const char *name)
+{
+    const uint8_t *data;
+    size_t size;
+    char path[4096];
+    if (rgl_trace_builder_finish(b, with_index, &data, &size) != RGL_OK) {
+        fprintf(stderr, "mkhostile: %s: cannot build\n", name);
+        exit(1);
+    }
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    write_file(path, data, size);
+}
+
+static uint32_t resource(rgl_trace_builder *b, uint32_t kind, const void *data, size_t size)
+{
+    uint32_t id;
+    if (rgl_trace_builder_resource(b, kind, data, size, &id) != RGL_OK) {
+        fprintf(stderr, "mkhostile: cannot add a resource\n");
+        exit(1);
+    }
+    return id;
+}
+
+static void frame(rgl_trace_builder *b, uint32_t number, const seq *s)
+{
+    if (rgl_trace_builder_frame(b, 0, number, 0, 0, s->data, s->len) != RGL_OK) {
+        fprintf(stderr, "mkhostile: cannot add a frame\n");
+        exit(1);
+    }
+}
+
+/* kind 0: a triangle list of n vertices; 1: a sphere; 2: n state calls;
+ * 3: lines of n vertices. */
+static void bomb(const char *dir, const char *name, int kind, int n)
+{
+    rgl_trace_builder *b = rgl_trace_builder_create();
+    seq body, s;
+    seq_init(&body);
+    if (kind == 0 || kind == 3) {
+        CMD(&body, Begin, kind == 0 ? GL_TRIANGLES : GL_LINES);
+        for (int i = 0; i < n; i++)
+            CMD(&body, Vertex3f, i % 3 == 1, i % 3 == 2, -(double)i / n);
+        CMD0(&body, End);
+    } else if (kind == 1) {
+        CMD(&body, SolidSphere, 0.5, 8, 8);
+    } else {
+        for (int i = 0; i < n; i++)
+            CMD(&body, Color3f, 1, 0.5, 0.25);
+    }
+    CMD(&body, CallList, 1);
+    CMD(&body, CallList, 1);
+    uint32_t id = resource(b, RGL_RES_COMMANDS, body.data, body.len);
+    seq_init(&s);
+    camera(&s);
+    CMD(&s, NewList, 1, GL_COMPILE, id);
+    CMD(&s, CallList, 1);
+    frame(b, 0, &s);
+    finish(b, true, dir, name);
+    seq_free(&body);
+    seq_free(&s);
+    rgl_trace_builder_destroy(b);
+}
+
+/* ncalls outermost calls of a list of nverts vertices, each shared. */
+static void many_calls(const char *dir, const char *name, int nverts, int ncalls)
+{
+    rgl_trace_builder *b = rgl_trace_builder_create();
+    seq body, s;
+    seq_init(&body);
+    CMD(&body, Begin, GL_TRIANGLES);
+    for (int i = 0; i < nverts; i++)
+        CMD(&body, Vertex3f, (i % 3 == 1) * 0.01, (i % 3 == 2) * 0.01, -(double)i / nverts);
+    CMD0(&body, End);
+    uint32_t id = resource(b, RGL_RES_COMMANDS, body.data, body.len);
+    seq_init(&s);
+    camera(&s);
+    CMD(&s, NewList, 1, GL_COMPILE, id);
+    for (int i = 0; i < ncalls; i++) {
+        CMD(&s, Translatef, 1e-5, 0, 0);
+        CMD(&s, CallList, 1);
+    }
+    frame(b, 0, &s);
+    finish(b, true, dir, name);
+    seq_free(&body);
+    seq_free(&s);
+    rgl_trace_builder_destroy(b);
+}
+
+static void lists(const char *dir)
+{
+    rgl_trace_builder *b = rgl_trace_builder_create();
+    seq tri, outer, s;
+    seq_init(&tri);
+    CMD(&tri, Begin, GL_TRIANGLES);
+    CMD(&tri, Vertex2f, 0, 0);
+    CMD(&tri, Vertex2f, 1, 0);
+    CMD(&tri, Vertex2f, 0, 1);
+    CMD0(&tri, End);
+    uint32_t t = resource(b, RGL_RES_COMMANDS, tri.data, tri.len);
+    seq_init(&outer);
+    CMD(&outer, Translatef, 1, 0, 0);
+    CMD(&outer, CallList, 1);
+    uint32_t o = resource(b, RGL_RES_COMMANDS, outer.data, outer.len);
+    for (uint32_t f = 0; f < 2; f++) {
+        seq_init(&s);
+        camera(&s);
+        CMD(&s, NewList, 1, GL_COMPILE, t);
+        CMD(&s, NewList, 2, GL_COMPILE, o);
+        CMD(&s, CallList, 1);
+        CMD(&s, CallList, 2);
+        frame(b, f, &s);
+        seq_free(&s);
+    }
+    finish(b, true, dir, "lists.raygl");
+    seq_free(&tri);
+    seq_free(&outer);
+    rgl_trace_builder_destroy(b);
+}
+
+static void unclosed(const char *dir, bool cut)
+{
+    rgl_trace_builder *b = rgl_trace_builder_create();
+    seq s;
+    for (uint32_t f = 0; f < (cut ? 4u : 3u); f++) {
+        seq_init(&s);
+        camera(&s);
+        CMD(&s, Begin, GL_TRIANGLES);
+        CMD(&s, Vertex2f, 0, 0);
+        CMD(&s, Vertex2f, 1, 0);
+        CMD(&s, Vertex2f, 0, 1);
+        CMD0(&s, End);
+        frame(b, f, &s);
+        seq_free(&s);
+    }
+    const uint8_t *data;
+    size_t size;
+    if (rgl_trace_builder_finish(b, false, &data, &size) != RGL_OK)
+        exit(1);
+    char path[4096];
+    snprintf(path, sizeof path, "%s/%s", dir, cut ? "cut.raygl" : "unclosed.raygl");
+    write_file(path, data, cut ? size - 20 : size); /* 20: inside the last frame */
+    rgl_trace_builder_destroy(b);
+}
+
+/* An image resource of the snapshot: any bytes do for raygl2pov; a real
+ * zlib stream is not needed to show that translation never reads it. */
+static void snapshots(const char *dir)
+{
+    rgl_trace_builder *b = rgl_trace_builder_create();
+    uint8_t image[64];
+    for (size_t i = 0; i < sizeof image; i++)
+        image[i] = (uint8_t)(i * 7);
+    uint32_t img = resource(b, RGL_RES_BYTES, image, sizeof image);
+    for (uint32_t f = 0; f < 3; f++) {
+        seq s;
+        seq_init(&s);
+        camera(&s);
+        CMD(&s, Begin, GL_TRIANGLES);
+        CMD(&s, Vertex2f, 0, 0);
+        CMD(&s, Vertex2f, 1, 0);
+        CMD(&s, Vertex2f, 0, 1);
+        CMD0(&s, End);
+        CMD(&s, Snapshot, 0, 0, 4, 4, 0x1907, 1, img);
+        frame(b, f, &s);
+        seq_free(&s);
+    }
+    const uint8_t *data;
+    size_t size;
+    if (rgl_trace_builder_finish(b, true, &data, &size) != RGL_OK)
+        exit(1);
+    char path[4096];
+    snprintf(path, sizeof path, "%s/snap.raygl", dir);
+    write_file(path, data, size);
+    const uint8_t *hit = NULL;
+    for (size_t i = 0; i + sizeof image <= size; i++)
+        if (memcmp(data + i, image, sizeof image) == 0)
+            hit = data + i;
+    if (hit)
+        printf("snapshot-image %zu %zu\n", (size_t)(hit - data), (size_t)(hit - data) + sizeof image);
+    rgl_trace_builder_destroy(b);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc != 2) {
+        fprintf(stderr, "usage: mkhostile DIR\n");
+        return 2;
+    }
+    const char *dir = argv[1];
+    bomb(dir, "bomb-3.raygl", 0, 3);
+    bomb(dir, "bomb-30.raygl", 0, 30);
+    bomb(dir, "bomb-300.raygl", 0, 300);
+    bomb(dir, "bomb-solid.raygl", 1, 0);
+    bomb(dir, "bomb-empty.raygl", 2, 4000);
+    bomb(dir, "bomb-lines.raygl", 3, 30);
+    many_calls(dir, "bomb-calls.raygl", 3, 100000);
+    many_calls(dir, "bomb-calls300.raygl", 300, 60000);
+    lists(dir);
+    unclosed(dir, false);
+    unclosed(dir, true);
+    snapshots(dir);
+    return 0;
+}
