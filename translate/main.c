@@ -719,6 +719,11 @@ int main(int argc, char **argv)
             d->detail[0] ? ": " : "", d->detail);
         tot.status = EXIT_INPUT;
     }
+    /* Not damage: what the recorder wrote before it stopped is whole. */
+    if (!rgl_reader_closed(reader, NULL) && !o.quiet)
+        say(&o, "trace not closed (the recording was killed or the disk filled): %zu complete "
+            "frame%s, the frame in progress is lost", rgl_reader_frame_count(reader),
+            rgl_reader_frame_count(reader) == 1 ? "" : "s");
     if (o.dump && dump(&o, reader) != 0)
         tot.status = EXIT_INPUT;
     if (!o.outdir) {
