@@ -12,14 +12,14 @@
  * DIR/bomb-calls.raygl 100000 outermost calls of one small list (instances);
  *                     DIR/bomb-calls300.raygl 60000 calls of 300 vertices.
  * DIR/lists.raygl     two frames drawing through display lists (one nested),
- *                     small: test_bounds.sh flips each of its bytes.
+ *                     small: test_bounds.sh flips each of its bytes. The
+ *                     span of list 1's body is printed as "list-body START END".
  * DIR/unclosed.raygl  three frames, no index and no END trailer (the recorder
  *                     killed between frames); DIR/cut.raygl the same with a
  *                     fourth frame cut short in the middle (a full disk).
  * DIR/snap.raygl      three frames, each with an @Snapshot of one shared image
  *                     resource (as the recorder shares an unchanged picture);
- *                     the image resource's payload spans printed on stdout as
- *                     "snapshot-image START END" for the test to damage.
+ *                     the image's span printed as "snapshot-image START END".
  */
 #include <GL/gl.h>
 #include <stdio.h>
@@ -151,7 +151,16 @@ static void lists(const char *dir)
         frame(b, f, &s);
         seq_free(&s);
     }
-    finish(b, true, dir, "lists.raygl");
+    const uint8_t *data;
+    size_t size;
+    if (rgl_trace_builder_finish(b, true, &data, &size) != RGL_OK)
+        exit(1);
+    char path[4096];
+    snprintf(path, sizeof path, "%s/lists.raygl", dir);
+    write_file(path, data, size);
+    for (size_t i = 0; i + tri.len <= size; i++)
+        if (memcmp(data + i, tri.data, tri.len) == 0)
+            printf("list-body %zu %zu\n", i, i + tri.len);
     seq_free(&tri);
     seq_free(&outer);
     rgl_trace_builder_destroy(b);
