@@ -230,6 +230,11 @@ const char *interp_frame_cut(const interp *ip);
  * (and 0) when nothing. Valid until the next frame. */
 const char *interp_frame_missing(const interp *ip, uint32_t *count);
 
+/* Records that the current frame is drawn without `what` (damage in the
+ * trace: a display-list body, texture pixels, state that damaged earlier
+ * frames would have carried), for interp_frame_missing. */
+void interp_missing(interp *ip, const char *what);
+
 /* The state, for tests and for the frame driver. */
 const gl_state *interp_state(const interp *ip);
 

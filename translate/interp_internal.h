@@ -197,9 +197,6 @@ static inline bool interp_budget_after(interp *ip, uint64_t offset)
 bool interp_budget_vertex(interp *ip);
 bool interp_budget_texels(interp *ip, uint64_t bytes);
 
-/* Records that the frame is drawn without `what` (damage in the trace:
- * a display-list body, texture pixels), for interp_frame_missing. */
-void interp_missing(interp *ip, const char *what);
 
 /* Index of a cap, or -1 for an enum glEnable does not accept. */
 int interp_cap_index(GLenum cap);

@@ -830,7 +830,7 @@ int main(int argc, char **argv)
             /* Already stopped: drop what the workers still made. */
         } else if (s->status != RGL_OK) {
             char where[64];
-            snprintf(where, sizeof where, "frame %zu", s->frame);
+            snprintf(where, sizeof where, "frame %zu (not written)", s->frame);
             if (s->status == RGL_E_NOMEM && atomic_load(&j.abort) == 0)
                 say(&o, "frame %zu: out of memory", s->frame);
             else if (s->status != RGL_E_NOMEM)

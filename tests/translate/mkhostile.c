@@ -12,8 +12,11 @@
  * DIR/bomb-calls.raygl 100000 outermost calls of one small list (instances);
  *                     DIR/bomb-calls300.raygl 60000 calls of 300 vertices.
  * DIR/lists.raygl     two frames drawing through display lists (one nested),
- *                     small: test_bounds.sh flips each of its bytes. The
- *                     span of list 1's body is printed as "list-body START END".
+ *                     the second with the lists and camera the first left
+ *                     (STATE_CARRIED); small: test_bounds.sh changes each
+ *                     of its bytes. The spans of list 1's body and of
+ *                     frame 0's commands are printed as "list-body START
+ *                     END" and "frame-0 START END".
  * DIR/unclosed.raygl  three frames, no index and no END trailer (the recorder
  *                     killed between frames); DIR/cut.raygl the same with a
  *                     fourth frame cut short in the middle (a full disk).
@@ -141,16 +144,20 @@ static void lists(const char *dir)
     CMD(&outer, Translatef, 1, 0, 0);
     CMD(&outer, CallList, 1);
     uint32_t o = resource(b, RGL_RES_COMMANDS, outer.data, outer.len);
-    for (uint32_t f = 0; f < 2; f++) {
-        seq_init(&s);
-        camera(&s);
-        CMD(&s, NewList, 1, GL_COMPILE, t);
-        CMD(&s, NewList, 2, GL_COMPILE, o);
-        CMD(&s, CallList, 1);
-        CMD(&s, CallList, 2);
-        frame(b, f, &s);
-        seq_free(&s);
-    }
+    /* Frame 1 carries frame 0's state: its camera and lists. */
+    seq_init(&s);
+    camera(&s);
+    CMD(&s, NewList, 1, GL_COMPILE, t);
+    CMD(&s, NewList, 2, GL_COMPILE, o);
+    CMD(&s, CallList, 1);
+    CMD(&s, CallList, 2);
+    frame(b, 0, &s);
+    seq f0 = s;
+    seq_init(&s);
+    CMD(&s, CallList, 2);
+    if (rgl_trace_builder_frame(b, 0, 1, RGL_FRAME_STATE_CARRIED, 0, s.data, s.len) != RGL_OK)
+        exit(1);
+    seq_free(&s);
     const uint8_t *data;
     size_t size;
     if (rgl_trace_builder_finish(b, true, &data, &size) != RGL_OK)
@@ -161,6 +168,10 @@ static void lists(const char *dir)
     for (size_t i = 0; i + tri.len <= size; i++)
         if (memcmp(data + i, tri.data, tri.len) == 0)
             printf("list-body %zu %zu\n", i, i + tri.len);
+    for (size_t i = 0; i + f0.len <= size; i++)
+        if (memcmp(data + i, f0.data, f0.len) == 0)
+            printf("frame-0 %zu %zu\n", i, i + f0.len);
+    seq_free(&f0);
     seq_free(&tri);
     seq_free(&outer);
     rgl_trace_builder_destroy(b);

@@ -102,6 +102,18 @@ rc=$?
 [ "$rc" -eq 1 ] && grep -q "frame 0: written without display list 1" "$work/err" &&
     ok "--quiet still says what damage took" || fail "--quiet on damage: exit $rc, $(cat "$work/err")"
 
+# Frame 0 damaged: not written; frame 1, which carries its state, is
+# written and says what it lacks.
+set -- $(span frame-0)
+flip "$work/lists.raygl" $(($1 + 20)) "$work/v.raygl"
+rm -rf "$work/d"
+"$r2p" "$work/v.raygl" -o "$work/d" -j 1 >/dev/null 2>"$work/err"
+rc=$?
+[ "$rc" -eq 1 ] && grep -q "frame 0 (not written) @0x[0-9a-f]*: checksum mismatch" "$work/err" &&
+    grep -q "frame 1: written without the state carried from stream 0's frame 0 (lost to damage)" "$work/err" &&
+    [ ! -e "$work/d/frame-00000.pov" ] && [ -s "$work/d/frame-00001.pov" ] &&
+    ok "a damaged frame: not written; the frame carrying its state names what it lacks" ||
+    fail "damaged frame 0: exit $rc: $(cat "$work/err")"
 # Every byte of lists.raygl changed in turn.
 cp "$work/lists.raygl" "$work/v.raygl"
 rm -rf "$work/d"
