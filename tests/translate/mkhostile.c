@@ -23,6 +23,8 @@
  * DIR/snap.raygl      three frames, each with an @Snapshot of one shared image
  *                     resource (as the recorder shares an unchanged picture);
  *                     the image's span printed as "snapshot-image START END".
+ * DIR/snapshots.raygl four 8 x 6 frames with real snapshots, three sharing
+ *                     one image (raygl-compare's test: compare/main.c).
  */
 #include <GL/gl.h>
 #include <stdio.h>
@@ -240,6 +242,52 @@ static void snapshots(const char *dir)
     rgl_trace_builder_destroy(b);
 }
 
+/* Four 8 x 6 frames with real snapshots: frame 0 its own image, frames
+ * 1-3 one shared image (the recorder shares an unchanged picture); that
+ * shared image's span is printed as "shared-image START END". */
+static void *grow(void *p, size_t n) { return realloc(p, n); }
+
+static void compare_snapshots(const char *dir)
+{
+    rgl_trace_builder *b = rgl_trace_builder_create();
+    uint32_t img[2];
+    size_t at[2] = {0, 0}, len[2] = {0, 0};
+    uint8_t *z[2];
+    for (int k = 0; k < 2; k++) {
+        uint8_t rgb[8 * 6 * 3];
+        for (size_t i = 0; i < sizeof rgb; i++)
+            rgb[i] = (uint8_t)(k ? 0x40 : 0x20); /* background: the clear colour */
+        if (rgl_snapshot_encode(rgb, 8, 6, 9, grow, &z[k], &len[k]) != RGL_OK)
+            exit(1);
+        img[k] = resource(b, RGL_RES_BYTES, z[k], len[k]);
+    }
+    for (uint32_t f = 0; f < 4; f++) {
+        seq s;
+        seq_init(&s);
+        CMD(&s, Viewport, 0, 0, 8, 6);
+        double c = f ? 0x40 / 255.0 : 0x20 / 255.0;
+        CMD(&s, ClearColor, c, c, c, 1);
+        CMD(&s, Clear, GL_COLOR_BUFFER_BIT);
+        CMD(&s, Snapshot, 0, 0, 8, 6, 0x1907, 1, img[f ? 1 : 0]);
+        frame(b, f, &s);
+        seq_free(&s);
+    }
+    const uint8_t *data;
+    size_t size;
+    if (rgl_trace_builder_finish(b, true, &data, &size) != RGL_OK)
+        exit(1);
+    char path[4096];
+    snprintf(path, sizeof path, "%s/snapshots.raygl", dir);
+    write_file(path, data, size);
+    for (size_t i = 0; i + len[1] <= size; i++)
+        if (memcmp(data + i, z[1], len[1]) == 0)
+            at[1] = i;
+    printf("shared-image %zu %zu\n", at[1], at[1] + len[1]);
+    free(z[0]);
+    free(z[1]);
+    rgl_trace_builder_destroy(b);
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 2) {
@@ -259,5 +307,6 @@ int main(int argc, char **argv)
     unclosed(dir, false);
     unclosed(dir, true);
     snapshots(dir);
+    compare_snapshots(dir);
     return 0;
 }
