@@ -438,7 +438,8 @@ static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t inte
     if (iw <= 0 || ih <= 0 || !id)
         return; /* an image with no texels, or undefined contents: no texturing */
     const uint8_t *px = fetch_pixels(ip, id, bytes);
-    if (!px)
+    /* Held as RGBA: 4 bytes a texel whatever the trace's format. */
+    if (!px || !interp_budget_texels(ip, (uint64_t)w * (uint64_t)h * 4))
         return;
     tex_image *img = tr_realloc(NULL, sizeof *img + (size_t)w * (size_t)h * 4);
     if (!img) {

@@ -8,7 +8,8 @@
  * DIR/bomb-solid.raygl the same with a glutSolidSphere per call, and
  *                     DIR/bomb-empty.raygl with 4000 state calls per body and
  *                     no drawing (work without output).
- * DIR/bomb-lines.raygl the same with lines of 30 vertices.
+ * DIR/bomb-lines.raygl the same with lines of 30 vertices, and
+ *                     DIR/bomb-texture.raygl with a texture upload per call.
  * DIR/bomb-calls.raygl 100000 outermost calls of one small list (instances);
  *                     DIR/bomb-calls300.raygl 60000 calls of 300 vertices.
  * DIR/lists.raygl     two frames drawing through display lists (one nested),
@@ -101,6 +102,44 @@ static void bomb(const char *dir, const char *name, int kind, int n)
     CMD(&s, CallList, 1);
     frame(b, 0, &s);
     finish(b, true, dir, name);
+    seq_free(&body);
+    seq_free(&s);
+    rgl_trace_builder_destroy(b);
+}
+
+/* A list that uploads a 256 x 256 luminance texture (64 KiB in the trace,
+ * 256 KiB as RGBA), draws a textured triangle and calls itself twice. */
+static void texture_bomb(const char *dir)
+{
+    rgl_trace_builder *b = rgl_trace_builder_create();
+    static uint8_t lum[256 * 256];
+    for (size_t i = 0; i < sizeof lum; i++)
+        lum[i] = (uint8_t)(i * 13 + (i >> 8));
+    uint32_t px = resource(b, RGL_RES_BYTES, lum, sizeof lum);
+    seq body, s;
+    seq_init(&body);
+    CMD(&body, TexImage2D, GL_TEXTURE_2D, 0, GL_LUMINANCE, 256, 256, 0, GL_LUMINANCE,
+        GL_UNSIGNED_BYTE, px);
+    CMD(&body, Begin, GL_TRIANGLES);
+    CMD(&body, TexCoord2f, 0, 0);
+    CMD(&body, Vertex3f, 0, 0, -1);
+    CMD(&body, TexCoord2f, 1, 0);
+    CMD(&body, Vertex3f, 1, 0, -1);
+    CMD(&body, TexCoord2f, 0, 1);
+    CMD(&body, Vertex3f, 0, 1, -1);
+    CMD0(&body, End);
+    CMD(&body, CallList, 1);
+    CMD(&body, CallList, 1);
+    uint32_t id = resource(b, RGL_RES_COMMANDS, body.data, body.len);
+    seq_init(&s);
+    camera(&s);
+    CMD(&s, BindTexture, GL_TEXTURE_2D, 1);
+    CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    CMD(&s, Enable, GL_TEXTURE_2D);
+    CMD(&s, NewList, 1, GL_COMPILE, id);
+    CMD(&s, CallList, 1);
+    frame(b, 0, &s);
+    finish(b, true, dir, "bomb-texture.raygl");
     seq_free(&body);
     seq_free(&s);
     rgl_trace_builder_destroy(b);
@@ -301,6 +340,7 @@ int main(int argc, char **argv)
     bomb(dir, "bomb-solid.raygl", 1, 0);
     bomb(dir, "bomb-empty.raygl", 2, 4000);
     bomb(dir, "bomb-lines.raygl", 3, 30);
+    texture_bomb(dir);
     many_calls(dir, "bomb-calls.raygl", 3, 100000);
     many_calls(dir, "bomb-calls300.raygl", 300, 60000);
     lists(dir);

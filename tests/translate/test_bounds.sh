@@ -68,6 +68,7 @@ bomb-300 4194304 vertices
 bomb-lines 1048576 lines and points
 bomb-solid 262144 solids
 bomb-empty 67108864 commands run
+bomb-texture 268435456 texture bytes
 bomb-calls300 16777216 vertices assembled
 bomb-calls
 EOF
