@@ -10,6 +10,8 @@
  *                     no drawing (work without output).
  * DIR/bomb-lines.raygl the same with lines of 30 vertices, and
  *                     DIR/bomb-texture.raygl with a texture upload per call.
+ * DIR/fill-all.raygl  two frames, each filling every output budget to just
+ *                     under its bound (no cut): the most memory a frame can take.
  * DIR/bomb-calls.raygl 100000 outermost calls of one small list (instances);
  *                     DIR/bomb-calls300.raygl 60000 calls of 300 vertices.
  * DIR/lists.raygl     two frames drawing through display lists (one nested),
@@ -141,6 +143,55 @@ static void texture_bomb(const char *dir)
     frame(b, 0, &s);
     finish(b, true, dir, "bomb-texture.raygl");
     seq_free(&body);
+    seq_free(&s);
+    rgl_trace_builder_destroy(b);
+}
+
+/* Lists first .. first + depth: each calls the next twice, the last runs
+ * body: 2^depth runs of it from one call of `first`. */
+static void chain(rgl_trace_builder *b, seq *s, uint32_t first, int depth, const seq *body)
+{
+    uint32_t leaf = resource(b, RGL_RES_COMMANDS, body->data, body->len);
+    CMD(s, NewList, first + (uint32_t)depth, GL_COMPILE, leaf);
+    for (int k = depth - 1; k >= 0; k--) {
+        seq inner;
+        seq_init(&inner);
+        CMD(&inner, CallList, first + (uint32_t)k + 1);
+        CMD(&inner, CallList, first + (uint32_t)k + 1);
+        CMD(s, NewList, first + (uint32_t)k, GL_COMPILE,
+            resource(b, RGL_RES_COMMANDS, inner.data, inner.len));
+        seq_free(&inner);
+    }
+}
+
+/* Every budget filled to just under its bound in one frame, by doubling
+ * chains that stop short of a cut: 3.9 M vertices in triangles, 983 k
+ * lines, 262 k solids (the worst case for memory a trace can ask for). */
+static void fill_all(const char *dir)
+{
+    rgl_trace_builder *b = rgl_trace_builder_create();
+    seq s, body;
+    seq_init(&s);
+    camera(&s);
+    for (int kind = 0; kind < 3; kind++) {
+        seq_init(&body);
+        if (kind < 2) {
+            CMD(&body, Begin, kind == 0 ? GL_TRIANGLES : GL_LINES);
+            for (int i = 0; i < 30; i++)
+                CMD(&body, Vertex3f, i % 3 == 1, i % 3 == 2, -(double)i / 30);
+            CMD0(&body, End);
+        } else {
+            CMD(&body, SolidSphere, 0.5, 8, 8);
+        }
+        CMD(&body, Translatef, 1e-3, 0, 0);
+        uint32_t first = 100u * (uint32_t)(kind + 1);
+        chain(b, &s, first, kind == 0 ? 17 : kind == 1 ? 16 : 18, &body);
+        CMD(&s, CallList, first);
+        seq_free(&body);
+    }
+    frame(b, 0, &s);
+    frame(b, 1, &s);
+    finish(b, true, dir, "fill-all.raygl");
     seq_free(&s);
     rgl_trace_builder_destroy(b);
 }
@@ -341,6 +392,7 @@ int main(int argc, char **argv)
     bomb(dir, "bomb-empty.raygl", 2, 4000);
     bomb(dir, "bomb-lines.raygl", 3, 30);
     texture_bomb(dir);
+    fill_all(dir);
     many_calls(dir, "bomb-calls.raygl", 3, 100000);
     many_calls(dir, "bomb-calls300.raygl", 300, 60000);
     lists(dir);
