@@ -77,6 +77,20 @@ void translator_destroy(translator *t)
 }
 
 const scene *translator_scene(const translator *t) { return &t->scene; }
+
+int translator_trim(translator *t)
+{
+    scene_finish(&t->scene);
+    scene_init(&t->scene);
+    povwriter_destroy(t->writer);
+    t->writer = povwriter_create();
+    return t->writer ? 0 : -1;
+}
+
+void translator_set_heavy(translator *t, void (*fn)(void *ctx), void *ctx)
+{
+    interp_set_heavy(t->ip, fn, ctx);
+}
 scene *translator_scene_edit(translator *t) { return &t->scene; }
 
 static rgl_status get_frame(translator *t, size_t i, rgl_frame_info *fi, rgl_error *err)

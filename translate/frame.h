@@ -52,6 +52,15 @@ typedef struct frame_result {
  * out->cut or out->missing set: the caller writes it and says so. */
 rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result *out);
 
+/* Heavy frames (interp_set_heavy): fn(ctx) is called from translator_build
+ * when its frame turns heavy, and may block. */
+void translator_set_heavy(translator *t, void (*fn)(void *ctx), void *ctx);
+
+/* Gives back the storage the scene and the writer keep for the next frame
+ * (after a heavy frame, so that its memory does not stay with the worker).
+ * Returns 0, or -1 when the writer cannot be made again (no memory). */
+int translator_trim(translator *t);
+
 /* The scene the last translator_build made. */
 const scene *translator_scene(const translator *t);
 

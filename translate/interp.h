@@ -220,6 +220,15 @@ rgl_status interp_run(interp *ip, const uint8_t *data, size_t size, uint64_t bas
 rgl_status interp_run_slow(interp *ip, const uint8_t *data, size_t size, uint64_t base_offset,
                            rgl_error *err);
 
+/* A heavy frame: once in a frame, when what its scene holds first passes
+ * INTERP_HEAVY_BYTES (an estimate, texture bytes included), fn(ctx) is
+ * called and may block until the frame may go on. raygl2pov lets one heavy
+ * frame run at a time, so that -j N costs at most one frame's budget plus
+ * N - 1 light frames, whatever the trace; the output does not change. */
+#define INTERP_HEAVY_BYTES (32u << 20)
+typedef void (*interp_heavy_fn)(void *ctx);
+void interp_set_heavy(interp *ip, interp_heavy_fn fn, void *ctx);
+
 /* Why the current frame was cut (its budget ran out), as one line that
  * names where, or NULL when it was not. Valid until the next frame. */
 const char *interp_frame_cut(const interp *ip);

@@ -25,6 +25,7 @@ void interp_bounds_begin_frame(interp *ip)
 {
     ip->cmds_run = ip->assembled = ip->texels = 0;
     ip->cut = false;
+    ip->heavy = false;
     ip->cut_why[0] = '\0';
     ip->nmissing = 0;
     ip->missing[0] = '\0';
@@ -61,6 +62,30 @@ bool interp_budget_over(interp *ip, uint64_t offset)
     if (s->ninstances > INTERP_BUDGET_INSTANCES)
         return cut(ip, offset, "display-list instances", INTERP_BUDGET_INSTANCES);
     return false;
+}
+
+void interp_set_heavy(interp *ip, interp_heavy_fn fn, void *ctx)
+{
+    ip->heavy_fn = fn;
+    ip->heavy_ctx = ctx;
+}
+
+/* What the scene holds, with what the writer makes of it: lines and
+ * points become a solid each (measured: about 380 bytes a line in all). */
+void interp_heavy_check(interp *ip)
+{
+    const scene *s = ip->scene;
+    if (!s)
+        return;
+    uint64_t bytes = (uint64_t)s->cap_verts * sizeof *s->verts +
+                     (uint64_t)s->cap_tris * sizeof *s->tris * 2 +
+                     (uint64_t)(s->cap_lines + s->cap_points) * 400 +
+                     (uint64_t)s->cap_solids * sizeof *s->solids * 2 +
+                     (uint64_t)s->cap_instances * sizeof *s->instances + ip->texels;
+    if (bytes > INTERP_HEAVY_BYTES) {
+        ip->heavy = true;
+        ip->heavy_fn(ip->heavy_ctx);
+    }
 }
 
 /* The command being run, for a cut inside one (an array draw, a texture). */

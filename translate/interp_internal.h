@@ -49,6 +49,9 @@ struct interp {
     /* The frame's budget and completeness (interp_bounds.c). */
     uint64_t cmds_run, assembled, texels;
     bool cut;                /* the budget ran out: the rest of the frame is skipped */
+    bool heavy;              /* heavy_fn was called in this frame */
+    interp_heavy_fn heavy_fn;
+    void *heavy_ctx;
     char cut_why[DIAG_TEXT];
     uint32_t nmissing;       /* parts left out for damage */
     char missing[DIAG_TEXT]; /* the first of them */
@@ -183,9 +186,12 @@ bool interp_reject_in_begin(interp *ip);
  * and the caller then stops. */
 void interp_bounds_begin_frame(interp *ip);
 bool interp_budget_over(interp *ip, uint64_t offset);
+void interp_heavy_check(interp *ip);
 static inline bool interp_budget_after(interp *ip, uint64_t offset)
 {
     const scene *s = ip->scene;
+    if ((ip->cmds_run & 1023) == 0 && !ip->heavy && ip->heavy_fn)
+        interp_heavy_check(ip);
     if (ip->cut || ++ip->cmds_run > INTERP_BUDGET_COMMANDS ||
         (s && (s->nverts > INTERP_BUDGET_VERTICES ||
                s->ntris > INTERP_BUDGET_TRIANGLES ||

@@ -297,7 +297,35 @@ typedef struct job {
     pthread_mutex_t done_lock;
     pthread_cond_t done_cond;
     char **includes; /* --include files' names in the output folder */
+    /* Held by the worker whose frame is heavy (interp_set_heavy) until it
+     * is written: one heavy frame at a time bounds the memory of -j N. */
+    pthread_mutex_t heavy_lock;
 } job;
+
+typedef struct worker_ctx {
+    job *j;
+    bool heavy; /* holds j->heavy_lock */
+} worker_ctx;
+
+static void heavy_enter(void *ctx)
+{
+    worker_ctx *w = ctx;
+    pthread_mutex_lock(&w->j->heavy_lock);
+    w->heavy = true;
+}
+
+/* After a heavy frame is written: its memory goes back before the next
+ * heavy frame may start. False when the translator cannot go on. */
+static bool heavy_leave(worker_ctx *w, translator *t)
+{
+    bool ok = true;
+    if (w->heavy) {
+        ok = translator_trim(t) == 0;
+        pthread_mutex_unlock(&w->j->heavy_lock);
+    }
+    w->heavy = false;
+    return ok;
+}
 
 static void finish_slot(job *j, slot *s)
 {
@@ -373,7 +401,10 @@ static char *incomplete_text(const frame_result *res, bool *damaged)
 static void *worker(void *arg)
 {
     job *j = arg;
+    worker_ctx w = {j, false};
     translator *t = translator_create(j->reader, &j->reader_lock);
+    if (t)
+        translator_set_heavy(t, heavy_enter, &w);
     outbuf ob;
     bool ob_ok = outbuf_init(&ob, 1 << 20, fd_flush, NULL) == 0;
     for (;;) {
@@ -410,6 +441,10 @@ static void *worker(void *arg)
         s->height = sc->camera.height;
         if (s->status == RGL_OK && j->o->outdir)
             write_temp(j, t, k, s, &ob);
+        if (!heavy_leave(&w, t)) {
+            translator_destroy(t);
+            t = NULL; /* the next slots fail as out of memory */
+        }
         finish_slot(j, s);
     }
     outbuf_finish(&ob);
@@ -792,6 +827,7 @@ int main(int argc, char **argv)
     catch_signals(o.outdir);
     pthread_mutex_init(&j.reader_lock, NULL);
     pthread_mutex_init(&j.done_lock, NULL);
+    pthread_mutex_init(&j.heavy_lock, NULL);
     pthread_cond_init(&j.done_cond, NULL);
 
     int nthreads = o.jobs < (int)j.nslots ? o.jobs : (int)j.nslots;
@@ -899,6 +935,7 @@ int main(int argc, char **argv)
     opt_free(&o);
     pthread_cond_destroy(&j.done_cond);
     pthread_mutex_destroy(&j.done_lock);
+    pthread_mutex_destroy(&j.heavy_lock);
     pthread_mutex_destroy(&j.reader_lock);
     rgl_reader_destroy(reader);
     if (fflush(stdout) != 0)

@@ -5,7 +5,9 @@
 #
 # 1. Display-list bombs (mkhostile.c) finish under a 1 GiB address-space
 #    cap and a time limit, write their frame, and say when it was cut, in
-#    the messages and in the .pov.
+#    the messages and in the .pov; two frames that fill every budget just
+#    short of a cut fit too, and give the same bytes with -j 2 (one heavy
+#    frame at a time).
 # 2. Damage: a damaged list body gives exit 1 and names the part the frame
 #    was written without; every one-byte change of a small trace with
 #    lists either leaves every frame as it was with exit 0, or exits 1 and
@@ -71,7 +73,18 @@ bomb-empty 67108864 commands run
 bomb-texture 268435456 texture bytes
 bomb-calls300 16777216 vertices assembled
 bomb-calls
+fill-all
 EOF
+# fill-all's two frames are each as heavy as a frame may be: with -j 2
+# they take turns (interp_set_heavy) and give the same bytes as -j 1.
+mv "$work/o" "$work/o1"
+"$r2p" "$work/fill-all.raygl" -o "$work/o" -j 2 >/dev/null 2>&1
+rc=$?
+for f in frame-00000.pov frame-00001.pov; do
+    cmp -s "$work/o/$f" "$work/o1/$f" || fail "fill-all: $f differs with -j 2 (exit $rc)"
+done
+[ "$rc" -eq 0 ] && ok "fill-all: -j 2 gives the same bytes"
+rm -rf "$work/o1"
 # A cut is a note: --quiet hides it, and the exit status stays 0.
 "$r2p" "$work/bomb-30.raygl" -o "$work/o" -q 2>"$work/err"
 rc=$?
