@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "interp_internal.h"
+#include "namemap.h"
 #include "talloc.h"
 
 /* Pixels above this per image are refused (an error value, not an attempt
@@ -44,6 +45,7 @@ typedef struct tex_obj {
 struct interp_textures {
     tex_obj *objs; /* named objects, unordered */
     size_t n, cap;
+    namemap names; /* name -> index in objs */
     tex_obj zero[2];         /* object 0 of GL_TEXTURE_1D, GL_TEXTURE_2D */
     int32_t unpack[8];       /* glPixelStorei values, by pname - GL_UNPACK_SWAP_BYTES */
     /* The last draw's scene texture, to skip rebuilding it per primitive. */
@@ -94,10 +96,8 @@ static interp_textures *textures(interp *ip)
 
 static tex_obj *find_obj(interp_textures *t, uint32_t name)
 {
-    for (size_t i = 0; i < t->n; i++)
-        if (t->objs[i].name == name)
-            return &t->objs[i];
-    return NULL;
+    int64_t i = namemap_get(&t->names, name);
+    return i >= 0 ? &t->objs[i] : NULL;
 }
 
 /* The object `name` (created when create is set); object 0 is per target. */
@@ -111,7 +111,8 @@ static tex_obj *get_obj(interp *ip, GLenum target, uint32_t name, bool create)
     tex_obj *o = find_obj(t, name);
     if (o || !create)
         return o;
-    if (tr_grow((void **)&t->objs, &t->cap, t->n + 1, sizeof *t->objs) != 0)
+    if (t->n >= UINT32_MAX || tr_grow((void **)&t->objs, &t->cap, t->n + 1, sizeof *t->objs) != 0 ||
+        namemap_put(&t->names, name, (uint32_t)t->n) != 0)
         return NULL;
     o = &t->objs[t->n++];
     obj_defaults(o, name);
@@ -150,7 +151,10 @@ void interp_deletetextures(interp *ip, const rgl_cmd *cmd)
         if (!o)
             continue;
         image_release(o->img);
+        namemap_del(&t->names, name);
         *o = t->objs[--t->n];
+        if (o != &t->objs[t->n]) /* the last object moved into o's place */
+            namemap_put(&t->names, o->name, (uint32_t)(o - t->objs));
         /* GL binds 0 in place of a deleted bound texture. */
         if (ip->st.a.texture.binding_1d == name)
             ip->st.a.texture.binding_1d = 0;
@@ -811,11 +815,17 @@ int interp_textures_copy(interp *dst, const interp *src)
     *t = *s;
     t->objs = NULL;
     t->cap = 0;
+    namemap_init(&t->names);
+    if (namemap_copy(&t->names, &s->names) != 0) {
+        tr_free(t);
+        return -1;
+    }
     t->cached_img = NULL;
     t->cached_index = -1;
     t->cached_scene = NULL;
     t->nrm_ok = false;
     if (s->n && tr_grow((void **)&t->objs, &t->cap, s->n, sizeof *t->objs) != 0) {
+        namemap_finish(&t->names);
         tr_free(t);
         return -1;
     }
@@ -839,6 +849,7 @@ void interp_textures_free(interp *ip)
         image_release(t->objs[i].img);
     for (int k = 0; k < 2; k++)
         image_release(t->zero[k].img);
+    namemap_finish(&t->names);
     tr_free(t->objs);
     tr_free(t);
     ip->tex = NULL;

@@ -10,6 +10,7 @@
  *                     no drawing (work without output).
  * DIR/bomb-lines.raygl the same with lines of 30 vertices, and
  *                     DIR/bomb-texture.raygl with a texture upload per call.
+ * DIR/bomb-names.raygl 50000 textures and lists, then a list bomb of lookups.
  * DIR/fill-all.raygl  two frames, each filling every output budget to just
  *                     under its bound (no cut): the most memory a frame can take.
  * DIR/bomb-calls.raygl 100000 outermost calls of one small list (instances);
@@ -142,6 +143,36 @@ static void texture_bomb(const char *dir)
     CMD(&s, CallList, 1);
     frame(b, 0, &s);
     finish(b, true, dir, "bomb-texture.raygl");
+    seq_free(&body);
+    seq_free(&s);
+    rgl_trace_builder_destroy(b);
+}
+
+/* 50000 texture objects and 50000 lists, named in decreasing order, then a
+ * list that binds a texture and deletes a range of lists 1000 times and
+ * calls itself twice: every lookup must cost the same whatever the table. */
+static void names_bomb(const char *dir)
+{
+    rgl_trace_builder *b = rgl_trace_builder_create();
+    seq body, s;
+    seq_init(&body);
+    for (int i = 0; i < 1000; i++) {
+        CMD(&body, BindTexture, GL_TEXTURE_2D, 7);
+        CMD(&body, DeleteLists, 60000, 1000);
+    }
+    CMD(&body, CallList, 1);
+    CMD(&body, CallList, 1);
+    uint32_t id = resource(b, RGL_RES_COMMANDS, body.data, body.len);
+    seq_init(&s);
+    camera(&s);
+    for (int i = 50000; i > 0; i--) {
+        CMD(&s, BindTexture, GL_TEXTURE_2D, 10 + i);
+        CMD(&s, NewList, 10 + i, GL_COMPILE, 0);
+    }
+    CMD(&s, NewList, 1, GL_COMPILE, id);
+    CMD(&s, CallList, 1);
+    frame(b, 0, &s);
+    finish(b, true, dir, "bomb-names.raygl");
     seq_free(&body);
     seq_free(&s);
     rgl_trace_builder_destroy(b);
@@ -392,6 +423,7 @@ int main(int argc, char **argv)
     bomb(dir, "bomb-empty.raygl", 2, 4000);
     bomb(dir, "bomb-lines.raygl", 3, 30);
     texture_bomb(dir);
+    names_bomb(dir);
     fill_all(dir);
     many_calls(dir, "bomb-calls.raygl", 3, 100000);
     many_calls(dir, "bomb-calls300.raygl", 300, 60000);

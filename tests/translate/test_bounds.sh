@@ -71,6 +71,7 @@ bomb-lines 1048576 lines and points
 bomb-solid 262144 solids
 bomb-empty 67108864 commands run
 bomb-texture 268435456 texture bytes
+bomb-names 67108864 commands run
 bomb-calls300 16777216 vertices assembled
 bomb-calls
 fill-all
