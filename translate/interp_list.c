@@ -467,7 +467,8 @@ void interp_calllists(interp *ip, const rgl_cmd *cmd)
         return;
     }
     const uint8_t *p = blob->bytes;
-    for (int64_t i = 0; i < n; i++, p += ts) {
+    ip->cmds_run += (uint64_t)n; /* each name costs as a command */
+    for (int64_t i = 0; i < n && !ip->cut; i++, p += ts) {
         uint32_t off;
         switch (type) {
         case GL_BYTE: off = (uint32_t)(int32_t)(int8_t)p[0]; break;
