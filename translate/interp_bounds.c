@@ -122,8 +122,20 @@ const char *interp_frame_cut(const interp *ip) { return ip->cut ? ip->cut_why : 
 
 void interp_missing(interp *ip, const char *what)
 {
-    if (ip->nmissing++ == 0)
+    /* The same part again (a list called twice, a texture drawn twice) is
+     * not another part: the first INTERP_MISSING_KEPT are told apart. */
+    uint64_t h = 0xcbf29ce484222325ull;
+    for (const char *p = what; *p; p++)
+        h = (h ^ (unsigned char)*p) * 0x100000001b3ull;
+    uint32_t kept = ip->nmissing < INTERP_MISSING_KEPT ? ip->nmissing : INTERP_MISSING_KEPT;
+    for (uint32_t k = 0; k < kept; k++)
+        if (ip->missing_hash[k] == h)
+            return;
+    if (ip->nmissing < INTERP_MISSING_KEPT)
+        ip->missing_hash[ip->nmissing] = h;
+    if (ip->nmissing == 0)
         snprintf(ip->missing, sizeof ip->missing, "%s", what);
+    ip->nmissing++;
 }
 
 const char *interp_frame_missing(const interp *ip, uint32_t *count)

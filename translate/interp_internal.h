@@ -55,6 +55,8 @@ struct interp {
     char cut_why[DIAG_TEXT];
     uint32_t nmissing;       /* parts left out for damage */
     char missing[DIAG_TEXT]; /* the first of them */
+#define INTERP_MISSING_KEPT 16
+    uint64_t missing_hash[INTERP_MISSING_KEPT]; /* of the first parts' texts */
 
     /* glBegin .. glEnd */
     bool in_begin;

@@ -40,6 +40,8 @@ typedef struct tex_obj {
     uint32_t levels;      /* bit k: level k defined with the size GL expects */
     GLenum wrap_s, wrap_t, min_filter, mag_filter;
     float border[4]; /* GL_TEXTURE_BORDER_COLOR */
+    uint32_t lost;   /* pixels whose damage left the image missing or partly
+                        stale (0: none): every frame drawing with it says so */
 } tex_obj;
 
 struct interp_textures {
@@ -329,8 +331,9 @@ static uint64_t image_hash(const tex_image *img)
 }
 
 /* The texel bytes of pixel resource `id` holding exactly `need` bytes, or
- * NULL after a diagnostic. */
-static const uint8_t *fetch_pixels(interp *ip, uint32_t id, size_t need)
+ * NULL after a diagnostic; *lost is set to id when the trace's damage is
+ * why. */
+static const uint8_t *fetch_pixels(interp *ip, uint32_t id, size_t need, uint32_t *lost)
 {
     if (!ip->res_fn) {
         interp_diag(ip, DIAG_IGNORED, "texture image: no resources to read pixels #%u from", id);
@@ -348,6 +351,7 @@ static const uint8_t *fetch_pixels(interp *ip, uint32_t id, size_t need)
         snprintf(what, sizeof what, "a texture image (pixels #%u unreadable: %s)", id,
                  rgl_status_str(err.status));
         interp_missing(ip, what);
+        *lost = id;
         return NULL;
     }
     if (res.kind != RGL_RES_BYTES || res.size != need) {
@@ -437,11 +441,12 @@ static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t inte
     image_release(o->img);
     o->img = NULL;
     o->levels = 0;
+    o->lost = 0;
     o->base_format = base;
     int64_t iw = w - 2 * border, ih = target == GL_TEXTURE_2D ? h - 2 * border : 1;
     if (iw <= 0 || ih <= 0 || !id)
         return; /* an image with no texels, or undefined contents: no texturing */
-    const uint8_t *px = fetch_pixels(ip, id, bytes);
+    const uint8_t *px = fetch_pixels(ip, id, bytes, &o->lost);
     /* Held as RGBA: 4 bytes a texel whatever the trace's format. */
     if (!px || !interp_budget_texels(ip, (uint64_t)w * (uint64_t)h * 4))
         return;
@@ -531,7 +536,7 @@ void interp_texsubimage2d(interp *ip, const rgl_cmd *cmd)
     }
     if (w == 0 || h == 0 || !id)
         return;
-    const uint8_t *px = fetch_pixels(ip, id, bytes);
+    const uint8_t *px = fetch_pixels(ip, id, bytes, &o->lost);
     tex_image *img = px ? image_own(ip, o) : NULL;
     if (!img)
         return;
@@ -897,6 +902,11 @@ int32_t interp_texture_for_draw(interp *ip)
     if (!c[INTERP_CAP_TEXTURE_2D] && !c[INTERP_CAP_TEXTURE_1D])
         return -1;
     tex_obj *o = draw_obj(ip);
+    if (o && o->lost) {
+        char what[DIAG_TEXT];
+        snprintf(what, sizeof what, "texture %u (pixels #%u unreadable)", o->name, o->lost);
+        interp_missing(ip, what);
+    }
     if (!o || !complete(o))
         return -1;
     const gl_attribs *a = &ip->st.a;

@@ -11,6 +11,8 @@
  * DIR/bomb-lines.raygl the same with lines of 30 vertices, and
  *                     DIR/bomb-texture.raygl with a texture upload per call.
  * DIR/bomb-names.raygl 50000 textures and lists, then a list bomb of lookups.
+ * DIR/texframes.raygl a texture uploaded and drawn in frame 0, drawn again in
+ *                     frame 1 (STATE_CARRIED).
  * DIR/fill-all.raygl  two frames, each filling every output budget to just
  *                     under its bound (no cut): the most memory a frame can take.
  * DIR/bomb-calls.raygl 100000 outermost calls of one small list (instances);
@@ -175,6 +177,53 @@ static void names_bomb(const char *dir)
     finish(b, true, dir, "bomb-names.raygl");
     seq_free(&body);
     seq_free(&s);
+    rgl_trace_builder_destroy(b);
+}
+
+/* Frame 0 uploads texture 1 and draws with it; frame 1 carries it and
+ * draws with it again. The pixels' span is printed as "tex-pixels START
+ * END". */
+static void texture_frames(const char *dir)
+{
+    rgl_trace_builder *b = rgl_trace_builder_create();
+    uint8_t lum[64];
+    for (size_t i = 0; i < sizeof lum; i++)
+        lum[i] = (uint8_t)(i * 37 + 11);
+    uint32_t px = resource(b, RGL_RES_BYTES, lum, sizeof lum);
+    for (uint32_t f = 0; f < 2; f++) {
+        seq s;
+        seq_init(&s);
+        if (f == 0) {
+            camera(&s);
+            CMD(&s, BindTexture, GL_TEXTURE_2D, 1);
+            CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            CMD(&s, TexImage2D, GL_TEXTURE_2D, 0, GL_LUMINANCE, 8, 8, 0, GL_LUMINANCE,
+                GL_UNSIGNED_BYTE, px);
+            CMD(&s, Enable, GL_TEXTURE_2D);
+        }
+        CMD(&s, Begin, GL_TRIANGLES);
+        CMD(&s, TexCoord2f, 0, 0);
+        CMD(&s, Vertex3f, 0, 0, -1);
+        CMD(&s, TexCoord2f, 1, 0);
+        CMD(&s, Vertex3f, 1, 0, -1);
+        CMD(&s, TexCoord2f, 0, 1);
+        CMD(&s, Vertex3f, 0, 1, -1);
+        CMD0(&s, End);
+        if (rgl_trace_builder_frame(b, 0, f, f ? RGL_FRAME_STATE_CARRIED : 0, 0, s.data, s.len) !=
+            RGL_OK)
+            exit(1);
+        seq_free(&s);
+    }
+    const uint8_t *data;
+    size_t size;
+    if (rgl_trace_builder_finish(b, true, &data, &size) != RGL_OK)
+        exit(1);
+    char path[4096];
+    snprintf(path, sizeof path, "%s/texframes.raygl", dir);
+    write_file(path, data, size);
+    for (size_t i = 0; i + sizeof lum <= size; i++)
+        if (memcmp(data + i, lum, sizeof lum) == 0)
+            printf("tex-pixels %zu %zu\n", i, i + sizeof lum);
     rgl_trace_builder_destroy(b);
 }
 
@@ -424,6 +473,7 @@ int main(int argc, char **argv)
     bomb(dir, "bomb-lines.raygl", 3, 30);
     texture_bomb(dir);
     names_bomb(dir);
+    texture_frames(dir);
     fill_all(dir);
     many_calls(dir, "bomb-calls.raygl", 3, 100000);
     many_calls(dir, "bomb-calls300.raygl", 300, 60000);

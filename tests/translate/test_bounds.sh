@@ -129,6 +129,20 @@ rc=$?
     [ ! -e "$work/d/frame-00000.pov" ] && [ -s "$work/d/frame-00001.pov" ] &&
     ok "a damaged frame: not written; the frame carrying its state names what it lacks" ||
     fail "damaged frame 0: exit $rc: $(cat "$work/err")"
+# Damaged texture pixels: the frame that uploads them and the later frame
+# that draws with the texture both say so.
+set -- $(span tex-pixels)
+flip "$work/texframes.raygl" $(($1 + 9)) "$work/v.raygl"
+rm -rf "$work/d"
+"$r2p" "$work/v.raygl" -o "$work/d" -j 1 >/dev/null 2>"$work/err"
+rc=$?
+[ "$rc" -eq 1 ] &&
+    grep -q "frame 0: written without a texture image (pixels #1 unreadable: checksum mismatch) and 1 more part$" "$work/err" &&
+    grep -q "frame 1: written without texture 1 (pixels #1 unreadable)$" "$work/err" &&
+    grep -q "^// Incomplete: written without texture 1 (pixels #1 unreadable)" "$work/d/frame-00001.pov" &&
+    ok "damaged texture pixels: both frames say what they lack, exit 1" ||
+    fail "damaged texture pixels: exit $rc: $(cat "$work/err")"
+
 # Every byte of lists.raygl changed in turn.
 cp "$work/lists.raygl" "$work/v.raygl"
 rm -rf "$work/d"
