@@ -381,8 +381,8 @@ static void write_temp(job *j, translator *t, size_t k, slot *s, outbuf *ob)
 }
 
 /* "cut at ...\nwritten without ..." for a frame written incomplete, or
- * NULL (no memory: the messages are then lost, not the frame). */
-static char *incomplete_text(const frame_result *res, bool *damaged)
+ * NULL (no memory: the details are then lost, not the frame). */
+static char *incomplete_text(const frame_result *res)
 {
     char more[48] = "";
     if (res->nmissing > 1)
@@ -392,7 +392,6 @@ static char *incomplete_text(const frame_result *res, bool *damaged)
     char *t = tr_realloc(NULL, cap);
     if (!t)
         return NULL;
-    *damaged = res->nmissing > 0;
     snprintf(t, cap, "%s%s%s%s%s", res->cut, res->cut[0] && res->nmissing ? "\n" : "",
              res->nmissing ? "written without " : "", res->missing, more);
     return t;
@@ -432,8 +431,10 @@ static void *worker(void *arg)
             if (s->frame_name)
                 strcpy(s->frame_name, res.frame_name);
         }
-        if (s->status == RGL_OK && (res.cut[0] || res.nmissing))
-            s->incomplete = incomplete_text(&res, &s->damaged);
+        if (s->status == RGL_OK && (res.cut[0] || res.nmissing)) {
+            s->incomplete = incomplete_text(&res);
+            s->damaged = res.nmissing > 0;
+        }
         scene *sc = translator_scene_edit(t);
         if (s->status == RGL_OK)
             s->look_note = look_apply(&j->o->look, sc);
@@ -611,9 +612,11 @@ done:
  * exit status even with --quiet (raygl2pov(1), "Damage"). */
 static void say_incomplete(const options *o, totals *tot, const slot *s)
 {
-    if (!s->incomplete || !s->published)
+    if (!s->published)
         return;
-    for (const char *p = s->incomplete; *p; p += *p == '\n') {
+    if (s->damaged && !s->incomplete)
+        say(o, "frame %zu: written without a part lost to damage", s->frame);
+    for (const char *p = s->incomplete; p && *p; p += *p == '\n') {
         const char *nl = strchr(p, '\n');
         int len = nl ? (int)(nl - p) : (int)strlen(p);
         bool cut = strncmp(p, "cut ", 4) == 0;
