@@ -202,10 +202,57 @@ static int select_frames(const char *list, bool *sel, size_t n)
     }
 }
 
+/* Snapshot images that did not decode, with the frames that share them:
+ * the recorder shares one image among frames that showed the same, so one
+ * damaged image is said once, with its frames, not once a frame. */
+typedef struct bad_image {
+    uint32_t id;
+    size_t first, last, n; /* frames */
+    rgl_error err;
+} bad_image;
+
+typedef struct bad_images {
+    bad_image *v;
+    size_t n, cap;
+} bad_images;
+
+static bad_image *bad_find(bad_images *b, uint32_t id)
+{
+    for (size_t k = 0; k < b->n; k++)
+        if (b->v[k].id == id)
+            return &b->v[k];
+    return NULL;
+}
+
+/* Records frame i as sharing bad image id; false when out of memory. */
+static bool bad_add(bad_images *b, uint32_t id, size_t i, const rgl_error *err)
+{
+    bad_image *e = bad_find(b, id);
+    if (!e) {
+        if (b->n == b->cap) {
+            size_t cap = b->cap ? 2 * b->cap : 8;
+            bad_image *v = realloc(b->v, cap * sizeof *v);
+            if (!v)
+                return false;
+            b->v = v;
+            b->cap = cap;
+        }
+        e = &b->v[b->n++];
+        e->id = id;
+        e->first = i;
+        e->n = 0;
+        e->err = *err;
+    }
+    e->last = i;
+    e->n++;
+    return true;
+}
+
 /* The frame's @Snapshot decoded (top row first), or NULL: *had says
- * whether there was one; a bad one is reported. */
+ * whether there was one; a bad command is reported, a bad image is kept in
+ * bad for one message per image. */
 static uint8_t *frame_snapshot(rgl_reader *r, const char *trace, size_t i, rgl_snapshot *snap,
-                               bool *had)
+                               bool *had, bad_images *bad)
 {
     static rgl_cmd cmd;
     rgl_frame_info fi;
@@ -242,11 +289,16 @@ static uint8_t *frame_snapshot(rgl_reader *r, const char *trace, size_t i, rgl_s
         return NULL;
     rgl_resource res;
     uint8_t *rgb = NULL;
+    if (bad_find(bad, snap->image)) {
+        bad_add(bad, snap->image, i, NULL);
+        return NULL;
+    }
     if (rgl_reader_resource(r, snap->image, &res, &err) != RGL_OK ||
         rgl_snapshot_decode(snap, &res, &rgb, &err) != RGL_OK) {
-        fprintf(stderr, PROG ": %s: frame %zu, @Snapshot image #%u @0x%llx: %s: %s\n", trace, i,
-                (unsigned)snap->image, (unsigned long long)err.offset, rgl_status_str(err.status),
-                err.detail);
+        if (!bad_add(bad, snap->image, i, &err))
+            fprintf(stderr, PROG ": %s: frame %zu, @Snapshot image #%u @0x%llx: %s: %s\n", trace,
+                    i, (unsigned)snap->image, (unsigned long long)err.offset,
+                    rgl_status_str(err.status), err.detail);
         return NULL;
     }
     return rgb;
@@ -479,11 +531,12 @@ int main(int argc, char **argv)
     }
     size_t nsnap = 0, ll = 0;
     list[0] = '\0';
+    bad_images bad = {NULL, 0, 0};
     for (size_t i = 0; i < nframes; i++) {
         if (!sel[i])
             continue;
         bool had;
-        gl[i] = frame_snapshot(r, o.trace, i, &snaps[i], &had);
+        gl[i] = frame_snapshot(r, o.trace, i, &snaps[i], &had, &bad);
         if (had && !gl[i])
             rc = 1;
         if (gl[i]) {
@@ -491,6 +544,22 @@ int main(int argc, char **argv)
             nsnap++;
         }
     }
+    /* Only the comparison of those frames is lost: they are translated
+     * as any other (raygl2pov never reads snapshot images). */
+    for (size_t k = 0; k < bad.n; k++) {
+        const bad_image *e = &bad.v[k];
+        char frames[96];
+        if (e->n == 1)
+            snprintf(frames, sizeof frames, "frame %zu", e->first);
+        else
+            snprintf(frames, sizeof frames, "%zu frames from %zu to %zu", e->n, e->first,
+                     e->last);
+        fprintf(stderr, PROG ": %s: frame %zu, @Snapshot image #%u @0x%llx: %s: %s: %s not "
+                "compared\n", o.trace, e->first, (unsigned)e->id,
+                (unsigned long long)e->err.offset, rgl_status_str(e->err.status), e->err.detail,
+                frames);
+    }
+    free(bad.v);
     if (nsnap == 0) {
         fprintf(stderr, PROG ": %s: no %sframe holds a usable snapshot (record with "
                 "RAYGL_SNAPSHOTS=1)\n", o.trace, o.frames ? "selected " : "");

@@ -271,6 +271,15 @@ rgl_status rgl_reader_resource_at(rgl_reader *reader, size_t i, rgl_resource *ou
 size_t rgl_reader_damage_count(const rgl_reader *reader);
 const rgl_error *rgl_reader_damage(const rgl_reader *reader, size_t i);
 
+/* Whether the trace was closed: it ends with the END trailer the recorder
+ * writes when it closes the file. A recording that was killed, or stopped
+ * by a full disk, was not: *tail (when tail is not NULL) then receives the
+ * offset of the chunk that the end of the file cuts short, or the file size
+ * when the file ends between chunks (0 for a closed trace). Such a
+ * cut-short last chunk is the recording's last write, not damage: it is not
+ * listed by rgl_reader_damage. */
+bool rgl_reader_closed(const rgl_reader *reader, uint64_t *tail);
+
 /* The INFO chunk's text (key=value lines), or NULL. */
 const char *rgl_reader_info(const rgl_reader *reader, size_t *size);
 

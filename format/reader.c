@@ -46,6 +46,9 @@ struct rgl_reader {
     size_t ndamage, cap_damage;
     char *info; /* NUL-terminated copy of the INFO text */
     size_t info_size;
+    bool closed;   /* the file ends with an END trailer */
+    uint64_t tail; /* not closed: offset of the chunk the file's end cuts
+                      short, or the file size */
 };
 
 rgl_status rgl_set_error(rgl_error *err, rgl_status status, uint64_t offset, uint32_t opcode,
@@ -252,6 +255,7 @@ static rgl_status load_index(rgl_reader *r)
         if (push_chunk(&r->res, &r->nres, &r->cap_res, v, rh.length, (uint32_t)id) != RGL_OK)
             return RGL_E_NOMEM;
     }
+    r->closed = true;
     /* The index does not list INFO: it is the first chunk when there is one. */
     if (check_header(r, r->header_size, &h) == RGL_OK && h.type == RGL_CHUNK_INFO &&
         chunk_fits(r->header_size, &h, r->size))
@@ -288,11 +292,26 @@ static const char *status_word(rgl_status st)
     }
 }
 
+/* Whether the bytes from pos to the end of the file are the start of a
+ * chunk that the end cuts short, as a recording stopped in mid-write
+ * leaves it: a whole header whose chunk runs past the end, or the start of
+ * a header, with nothing after it. */
+static bool cut_tail(const rgl_reader *r, uint64_t pos, rgl_status hs)
+{
+    size_t left = (size_t)(r->size - pos);
+    if (hs == RGL_OK)
+        return resync(r, pos + 1) == r->size;
+    return hs == RGL_E_TRUNCATED &&
+           memcmp(r->data + pos, RGL_CHUNK_SYNC, left < 4 ? left : 4) == 0;
+}
+
 static rgl_status scan(rgl_reader *r)
 {
     uint64_t pos = r->header_size;
     rgl_status st;
+    bool last_end = false; /* the last chunk read is an END trailer */
 
+    r->tail = r->size;
     while (pos < r->size) {
         chunk_hdr h;
         rgl_status hs = check_header(r, pos, &h);
@@ -301,6 +320,7 @@ static rgl_status scan(rgl_reader *r)
         if (hs == RGL_OK && chunk_fits(pos, &h, r->size)) {
             uint64_t payload = pos + RGL_CHUNK_HEADER_SIZE;
             st = RGL_OK;
+            last_end = h.type == RGL_CHUNK_END;
             if (h.type == RGL_CHUNK_FRAME) {
                 st = push_chunk(&r->frames, &r->nframes, &r->cap_frames, pos, h.length, 0);
             } else if (h.type == RGL_CHUNK_RESOURCE) {
@@ -319,6 +339,11 @@ static rgl_status scan(rgl_reader *r)
             continue;
         }
 
+        last_end = false;
+        if (cut_tail(r, pos, hs)) {
+            r->tail = pos; /* the chunk being written when the recording stopped */
+            break;
+        }
         next = resync(r, pos + 1);
         if (hs == RGL_OK)
             st = add_damage(r, RGL_E_TRUNCATED, pos,
@@ -332,6 +357,7 @@ static rgl_status scan(rgl_reader *r)
             return st;
         pos = next;
     }
+    r->closed = last_end && r->tail == r->size;
     return RGL_OK;
 }
 
@@ -536,6 +562,13 @@ void rgl_reader_destroy(rgl_reader *r)
 size_t rgl_reader_frame_count(const rgl_reader *r) { return r ? r->nframes : 0; }
 
 size_t rgl_reader_damage_count(const rgl_reader *r) { return r ? r->ndamage : 0; }
+
+bool rgl_reader_closed(const rgl_reader *r, uint64_t *tail)
+{
+    if (tail)
+        *tail = r && !r->closed ? r->tail : 0;
+    return r && r->closed;
+}
 
 const rgl_error *rgl_reader_damage(const rgl_reader *r, size_t i)
 {

@@ -24,6 +24,13 @@ typedef struct cursor {
     uint32_t stream;
     size_t pos; /* frames [0, pos) of the file are replayed */
     interp *ip;
+    /* Since the stream's last frame that did not carry state: the first
+     * replayed frame whose commands (or snapshot) were cut short by damage,
+     * plus one (0: none), and the number of the last frame replayed (-1:
+     * none). Frames are numbered from 0 in each stream, so a gap in the
+     * numbers is a frame lost to damage. */
+    size_t bad;
+    int64_t last;
 } cursor;
 
 struct translator {
@@ -72,6 +79,20 @@ void translator_destroy(translator *t)
 }
 
 const scene *translator_scene(const translator *t) { return &t->scene; }
+
+int translator_trim(translator *t)
+{
+    scene_finish(&t->scene);
+    scene_init(&t->scene);
+    povwriter_destroy(t->writer);
+    t->writer = povwriter_create();
+    return t->writer ? 0 : -1;
+}
+
+void translator_set_heavy(translator *t, void (*fn)(void *ctx), void *ctx)
+{
+    interp_set_heavy(t->ip, fn, ctx);
+}
 scene *translator_scene_edit(translator *t) { return &t->scene; }
 
 static rgl_status get_frame(translator *t, size_t i, rgl_frame_info *fi, rgl_error *err)
@@ -118,8 +139,10 @@ static rgl_status run_snapshot(translator *t, interp *ip, uint32_t id, rgl_error
     return interp_run(ip, res.data, res.size, res.data_offset, err);
 }
 
-/* The state-only interpreter of `stream`, advanced to just before frame i. */
-static interp *carried_state(translator *t, uint32_t stream, size_t i)
+/* The state-only interpreter of `stream`, advanced to just before frame i;
+ * *bad and *last receive the cursor's (above). */
+static interp *carried_state(translator *t, uint32_t stream, size_t i, size_t *bad,
+                             int64_t *last)
 {
     cursor *c = NULL;
     for (size_t k = 0; k < t->ncursors; k++)
@@ -131,6 +154,7 @@ static interp *carried_state(translator *t, uint32_t stream, size_t i)
         c = &t->cursors[t->ncursors];
         memset(c, 0, sizeof *c);
         c->stream = stream;
+        c->last = -1;
         if (!(c->ip = interp_create(NULL, NULL)))
             return NULL;
         interp_set_resources(c->ip, fetch_resource, t);
@@ -139,6 +163,8 @@ static interp *carried_state(translator *t, uint32_t stream, size_t i)
     if (c->pos > i) { /* asked for an earlier frame: start over */
         interp_reset(c->ip);
         c->pos = 0;
+        c->bad = 0;
+        c->last = -1;
     }
     for (; c->pos < i; c->pos++) {
         rgl_frame_info fi;
@@ -146,13 +172,22 @@ static interp *carried_state(translator *t, uint32_t stream, size_t i)
         if (get_frame(t, c->pos, &fi, &err) != RGL_OK || fi.stream != stream)
             continue; /* a damaged earlier frame is reported when it is translated */
         interp_begin_frame(c->ip);
-        if (!(fi.flags & RGL_FRAME_STATE_CARRIED))
+        if (!(fi.flags & RGL_FRAME_STATE_CARRIED)) {
             interp_reset(c->ip);
-        if (fi.state)
-            run_snapshot(t, c->ip, fi.state, &err);
-        interp_run(c->ip, fi.commands, fi.commands_size, fi.commands_offset, &err);
+            c->bad = 0; /* a fresh start: nothing earlier counts */
+        } else if (fi.number != c->last + 1 && !c->bad) {
+            c->bad = c->pos + 1; /* carries from a lost frame */
+        }
+        c->last = fi.number;
+        bool whole = !fi.state || run_snapshot(t, c->ip, fi.state, &err) == RGL_OK;
+        whole &= interp_run(c->ip, fi.commands, fi.commands_size, fi.commands_offset, &err) ==
+                 RGL_OK;
         interp_end_frame(c->ip);
+        if (!whole && !c->bad)
+            c->bad = c->pos + 1;
     }
+    *bad = c->bad;
+    *last = c->last;
     return c->ip;
 }
 
@@ -167,8 +202,10 @@ rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result
 
     interp_attach(ip, &t->scene, log);
     interp_reset(ip);
+    size_t bad = 0;
+    int64_t last = -1;
     if (fi->flags & RGL_FRAME_STATE_CARRIED) {
-        interp *src = carried_state(t, fi->stream, i);
+        interp *src = carried_state(t, fi->stream, i, &bad, &last);
         if (!src) {
             out->status = RGL_E_NOMEM;
             return out->status;
@@ -176,6 +213,24 @@ rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result
         interp_copy_state(ip, src);
     }
     interp_begin_frame(ip);
+    if (fi->flags & RGL_FRAME_STATE_CARRIED) {
+        /* The state comes from the stream's earlier frames: one cut short
+         * by damage, or lost to it (a gap in the numbers), leaves this
+         * frame without what that one set. */
+        char what[DIAG_TEXT] = "";
+        if (bad)
+            snprintf(what, sizeof what, "the state carried from frame %zu (damaged)", bad - 1);
+        else if (fi->number == last + 2)
+            snprintf(what, sizeof what,
+                     "the state carried from stream %u's frame %lld (lost to damage)",
+                     fi->stream, (long long)(last + 1));
+        else if (fi->number != last + 1)
+            snprintf(what, sizeof what,
+                     "the state carried from stream %u's frames %lld-%lld (lost to damage)",
+                     fi->stream, (long long)(last + 1), (long long)fi->number - 1);
+        if (what[0])
+            interp_missing(ip, what);
+    }
     if (fi->state) {
         char label[32];
         snprintf(label, sizeof label, "snapshot #%u", fi->state);
@@ -189,6 +244,12 @@ rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result
                              &out->error);
     interp_end_frame(ip);
     out->unrecorded = interp_unrecorded(ip);
+    const char *cut = interp_frame_cut(ip);
+    if (cut)
+        snprintf(out->cut, sizeof out->cut, "%s", cut);
+    const char *missing = interp_frame_missing(ip, &out->nmissing);
+    if (missing)
+        snprintf(out->missing, sizeof out->missing, "%s", missing);
     const char *name = interp_frame_name(ip);
     if (name) {
         snprintf(t->name, sizeof t->name, "%s", name);

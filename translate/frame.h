@@ -38,13 +38,31 @@ typedef struct frame_result {
     const struct unrec_table *unrecorded; /* the frame's calls not recorded
                                (unrecorded.h; owned by the translator, valid
                                until the next call) */
+    /* A frame built (RGL_OK) may still be incomplete: cut by the frame
+     * budget (interp_frame_cut's line), or drawn without parts the damaged
+     * trace could not supply (the first as a line, and how many). Empty
+     * strings and 0 when complete. */
+    char cut[DIAG_TEXT];
+    char missing[DIAG_TEXT];
+    uint32_t nmissing;
 } frame_result;
 
 /* Builds the scene of frame i (file order), logging diagnostics into log
  * (may be NULL). A frame whose chunk or commands are damaged reports the
  * decoder's error: the scene then holds what came before the damage, and
- * the caller does not write it. RGL_E_NOMEM when memory ran out. */
+ * the caller does not write it. RGL_E_NOMEM when memory ran out. A frame
+ * cut by its budget, or missing a part that damage took, is RGL_OK with
+ * out->cut or out->missing set: the caller writes it and says so. */
 rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result *out);
+
+/* Heavy frames (interp_set_heavy): fn(ctx) is called from translator_build
+ * when its frame turns heavy, and may block. */
+void translator_set_heavy(translator *t, void (*fn)(void *ctx), void *ctx);
+
+/* Gives back the storage the scene and the writer keep for the next frame
+ * (after a heavy frame, so that its memory does not stay with the worker).
+ * Returns 0, or -1 when the writer cannot be made again (no memory). */
+int translator_trim(translator *t);
 
 /* The scene the last translator_build made. */
 const scene *translator_scene(const translator *t);

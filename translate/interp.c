@@ -346,22 +346,31 @@ rgl_status interp_run(interp *ip, const uint8_t *data, size_t size, uint64_t bas
 {
     rgl_cmd_iter it;
     rgl_cmd cmd;
-    rgl_status st;
+    rgl_status st = RGL_END;
 
     rgl_cmd_iter_init(&it, data, size, base_offset);
     for (;;) {
+        if (ip->cut)
+            break;
         if (it.pos < it.end) {
-            size_t n = fast_command(ip, it.pos, (size_t)(it.end - it.pos));
+            const uint8_t *at = it.pos;
+            size_t n = fast_command(ip, at, (size_t)(it.end - at));
             if (n) {
                 it.pos += n;
                 it.index++;
+                if (!interp_budget_after(ip, base_offset + (uint64_t)(at - data)))
+                    break;
                 continue;
             }
         }
         if ((st = rgl_cmd_next(&it, &cmd)) != RGL_OK)
             break;
         interp_exec(ip, &cmd);
+        if (!interp_budget_after(ip, cmd.offset))
+            break;
     }
+    if (ip->cut)
+        st = RGL_END; /* cut, not damaged: what ran is kept */
     ip->cmd = NULL;
     interp_arrays_forget(ip);
     if (st == RGL_END)
@@ -376,11 +385,16 @@ rgl_status interp_run_slow(interp *ip, const uint8_t *data, size_t size, uint64_
 {
     rgl_cmd_iter it;
     rgl_cmd cmd;
-    rgl_status st;
+    rgl_status st = RGL_END;
 
     rgl_cmd_iter_init(&it, data, size, base_offset);
-    while ((st = rgl_cmd_next(&it, &cmd)) == RGL_OK)
+    while (!ip->cut && (st = rgl_cmd_next(&it, &cmd)) == RGL_OK) {
         interp_exec(ip, &cmd);
+        if (!interp_budget_after(ip, cmd.offset)) {
+            st = RGL_END;
+            break;
+        }
+    }
     ip->cmd = NULL;
     interp_arrays_forget(ip);
     if (st == RGL_END)

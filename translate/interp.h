@@ -21,6 +21,8 @@
  *   interp_list.c    display lists: the list table, calls, nesting, and
  *                    the prototypes that repeated calls share
  *   interp_array.c   vertex arrays and their draws, buffer objects
+ *   interp_bounds.c  the frame's budget (a frame that would cost more is
+ *                    cut) and the parts a damaged trace left out of it
  *
  * Not thread-safe; one interpreter per worker thread.
  */
@@ -46,6 +48,24 @@
 #define INTERP_MAX_VIEWPORT 16384 /* Mesa's GL_MAX_VIEWPORT_DIMS */
 #define INTERP_MAX_LIST_NESTING 64 /* GL_MAX_LIST_NESTING (GL 1.x table 6.28) */
 #define INTERP_MAX_TEXTURE_SIZE 16384 /* Mesa's GL_MAX_TEXTURE_SIZE */
+
+/* The frame budget (docs/mapping.md, "Bounds"): what one frame may cost,
+ * display-list bodies and state snapshots included, so that a few hundred
+ * bytes (a list that calls itself twice) cannot ask for unbounded time or
+ * memory. Output is counted as the scene holds it: a display list drawn
+ * many times and shared (interp_list.c) counts its vertices once and one
+ * instance per call. A frame that would exceed one is cut there: the rest
+ * of its commands are skipped, what came before is kept, and
+ * interp_frame_cut says why. */
+#define INTERP_BUDGET_COMMANDS (1u << 26)    /* commands run */
+#define INTERP_BUDGET_ASSEMBLED (1u << 24)   /* vertices assembled */
+#define INTERP_BUDGET_VERTICES (1u << 22)    /* vertices the scene holds */
+#define INTERP_BUDGET_TRIANGLES (1u << 22)   /* triangles it holds */
+#define INTERP_BUDGET_LINES (1u << 20)       /* lines and points it holds (each
+                                                costs the writer as a few triangles) */
+#define INTERP_BUDGET_SOLIDS (1u << 18)      /* exact GLU/GLUT solids it holds */
+#define INTERP_BUDGET_INSTANCES (1u << 18)   /* placements of shared list output */
+#define INTERP_BUDGET_TEXELS (1u << 28)      /* texture bytes read, copied or held */
 
 enum interp_matrix_mode { INTERP_MV, INTERP_PROJ, INTERP_TEX, INTERP_NMODES };
 
@@ -199,6 +219,30 @@ rgl_status interp_run(interp *ip, const uint8_t *data, size_t size, uint64_t bas
  * check that both give the same scene. */
 rgl_status interp_run_slow(interp *ip, const uint8_t *data, size_t size, uint64_t base_offset,
                            rgl_error *err);
+
+/* A heavy frame: once in a frame, when what its scene holds first passes
+ * INTERP_HEAVY_BYTES (an estimate, texture bytes included), fn(ctx) is
+ * called and may block until the frame may go on. raygl2pov lets one heavy
+ * frame run at a time, so that -j N costs at most one frame's budget plus
+ * N - 1 light frames, whatever the trace; the output does not change. */
+#define INTERP_HEAVY_BYTES (32u << 20)
+typedef void (*interp_heavy_fn)(void *ctx);
+void interp_set_heavy(interp *ip, interp_heavy_fn fn, void *ctx);
+
+/* Why the current frame was cut (its budget ran out), as one line that
+ * names where, or NULL when it was not. Valid until the next frame. */
+const char *interp_frame_cut(const interp *ip);
+
+/* What the current frame was drawn without because the trace is damaged
+ * (display-list bodies or texture images that could not be read): the
+ * first such part as one line, and in *count how many there were; NULL
+ * (and 0) when nothing. Valid until the next frame. */
+const char *interp_frame_missing(const interp *ip, uint32_t *count);
+
+/* Records that the current frame is drawn without `what` (damage in the
+ * trace: a display-list body, texture pixels, state that damaged earlier
+ * frames would have carried), for interp_frame_missing. */
+void interp_missing(interp *ip, const char *what);
 
 /* The state, for tests and for the frame driver. */
 const gl_state *interp_state(const interp *ip);

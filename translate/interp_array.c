@@ -216,6 +216,10 @@ static size_t index_bytes(GLenum type)
 static void draw(interp *ip, GLenum mode, int64_t first, int64_t count, const uint8_t *idx,
                  size_t its)
 {
+    /* Each element is checked, then drawn: it costs as a command does. */
+    ip->cmds_run += (uint64_t)count;
+    if (interp_budget_over(ip, ip->cmd ? ip->cmd->offset : 0))
+        return;
     for (int64_t i = 0; i < count; i++) {
         uint64_t e = idx ? index_at(idx, its, (size_t)i) : (uint64_t)(first + i);
         if (e > UINT32_MAX || !have_element(ip, (uint32_t)e)) {
@@ -226,7 +230,7 @@ static void draw(interp *ip, GLenum mode, int64_t first, int64_t count, const ui
         }
     }
     interp_prim_begin(ip, mode);
-    for (int64_t i = 0; i < count; i++)
+    for (int64_t i = 0; i < count && !ip->cut; i++)
         array_element(ip, idx ? index_at(idx, its, (size_t)i) : (uint32_t)(first + i));
     interp_prim_end(ip);
 }

@@ -47,6 +47,18 @@ struct interp {
                             or last clear (interp_prim.c, painter_shift) */
     uint64_t shape_facets; /* facets of tessellated shapes in this frame (interp_shape.c) */
 
+    /* The frame's budget and completeness (interp_bounds.c). */
+    uint64_t cmds_run, assembled, texels;
+    bool cut;                /* the budget ran out: the rest of the frame is skipped */
+    bool heavy;              /* heavy_fn was called in this frame */
+    interp_heavy_fn heavy_fn;
+    void *heavy_ctx;
+    char cut_why[DIAG_TEXT];
+    uint32_t nmissing;       /* parts left out for damage */
+    char missing[DIAG_TEXT]; /* the first of them */
+#define INTERP_MISSING_KEPT 16
+    uint64_t missing_hash[INTERP_MISSING_KEPT]; /* of the first parts' texts */
+
     /* glBegin .. glEnd */
     bool in_begin;
     GLenum prim_mode;
@@ -169,6 +181,32 @@ void interp_bad_op(interp *ip, const char *why);
 bool interp_reject_in_begin(interp *ip);
 
 /* ---- Shared between the files --------------------------------------------------- */
+
+/* The frame's budget (interp_bounds.c). interp_bounds_begin_frame starts
+ * a frame's counts. interp_budget_after is called after each command with
+ * its offset, interp_budget_vertex before a vertex is assembled and
+ * interp_budget_texels before texture bytes are read, copied or kept: each
+ * returns false once the frame is cut (and cuts it when this one is over),
+ * and the caller then stops. */
+void interp_bounds_begin_frame(interp *ip);
+bool interp_budget_over(interp *ip, uint64_t offset);
+void interp_heavy_check(interp *ip);
+static inline bool interp_budget_after(interp *ip, uint64_t offset)
+{
+    const scene *s = ip->scene;
+    if ((ip->cmds_run & 1023) == 0 && !ip->heavy && ip->heavy_fn)
+        interp_heavy_check(ip);
+    if (ip->cut || ++ip->cmds_run > INTERP_BUDGET_COMMANDS ||
+        (s && (s->nverts > INTERP_BUDGET_VERTICES ||
+               s->ntris > INTERP_BUDGET_TRIANGLES ||
+               s->nlines + s->npoints > INTERP_BUDGET_LINES ||
+               s->nsolids > INTERP_BUDGET_SOLIDS || s->ninstances > INTERP_BUDGET_INSTANCES)))
+        return !interp_budget_over(ip, offset);
+    return true;
+}
+bool interp_budget_vertex(interp *ip);
+bool interp_budget_texels(interp *ip, uint64_t bytes);
+
 
 /* Index of a cap, or -1 for an enum glEnable does not accept. */
 int interp_cap_index(GLenum cap);

@@ -27,8 +27,10 @@
  */
 #include "interp_internal.h"
 
+#include <stdio.h>
 #include <string.h>
 
+#include "namemap.h"
 #include "talloc.h"
 
 typedef struct list_entry {
@@ -41,8 +43,9 @@ typedef struct list_entry {
 } list_entry;
 
 struct interp_lists {
-    list_entry *v; /* sorted by name */
+    list_entry *v; /* unordered */
     size_t n, cap;
+    namemap names; /* name -> index in v */
 };
 
 /* One outermost call's meshes, kept while the frame lasts for later calls
@@ -74,26 +77,13 @@ struct interp_groups {
 
 /* ---- The table ------------------------------------------------------------------- */
 
-static size_t lower_bound(const struct interp_lists *t, uint32_t name)
-{
-    size_t lo = 0, hi = t->n;
-    while (lo < hi) {
-        size_t mid = lo + (hi - lo) / 2;
-        if (t->v[mid].name < name)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo;
-}
-
 static list_entry *list_find(interp *ip, uint32_t name)
 {
     struct interp_lists *t = ip->lists;
     if (!t)
         return NULL;
-    size_t i = lower_bound(t, name);
-    return i < t->n && t->v[i].name == name ? &t->v[i] : NULL;
+    int64_t i = namemap_get(&t->names, name);
+    return i >= 0 ? &t->v[i] : NULL;
 }
 
 static bool list_define(interp *ip, uint32_t name, uint32_t body)
@@ -105,11 +95,12 @@ static bool list_define(interp *ip, uint32_t name, uint32_t body)
         memset(ip->lists, 0, sizeof *ip->lists);
     }
     struct interp_lists *t = ip->lists;
-    size_t i = lower_bound(t, name);
-    if (i == t->n || t->v[i].name != name) {
-        if (tr_grow((void **)&t->v, &t->cap, t->n + 1, sizeof *t->v) != 0)
+    int64_t found = namemap_get(&t->names, name);
+    size_t i = found >= 0 ? (size_t)found : t->n;
+    if (found < 0) {
+        if (t->n >= UINT32_MAX || tr_grow((void **)&t->v, &t->cap, t->n + 1, sizeof *t->v) != 0 ||
+            namemap_put(&t->names, name, (uint32_t)t->n) != 0)
             return false;
-        memmove(&t->v[i + 1], &t->v[i], (t->n - i) * sizeof *t->v);
         t->n++;
     }
     memset(&t->v[i], 0, sizeof t->v[i]);
@@ -120,8 +111,10 @@ static bool list_define(interp *ip, uint32_t name, uint32_t body)
 
 void interp_lists_reset(interp *ip)
 {
-    if (ip->lists)
+    if (ip->lists) {
         ip->lists->n = 0;
+        namemap_clear(&ip->lists->names);
+    }
     ip->list_depth = 0;
 }
 
@@ -137,7 +130,8 @@ bool interp_lists_copy(interp *dst, const interp *src)
         memset(dst->lists, 0, sizeof *dst->lists);
     }
     struct interp_lists *t = dst->lists;
-    if (tr_grow((void **)&t->v, &t->cap, src->lists->n, sizeof *t->v) != 0)
+    if (tr_grow((void **)&t->v, &t->cap, src->lists->n, sizeof *t->v) != 0 ||
+        namemap_copy(&t->names, &src->lists->names) != 0)
         return false;
     memcpy(t->v, src->lists->v, src->lists->n * sizeof *t->v);
     t->n = src->lists->n;
@@ -146,8 +140,10 @@ bool interp_lists_copy(interp *dst, const interp *src)
 
 void interp_lists_free(interp *ip)
 {
-    if (ip->lists)
+    if (ip->lists) {
         tr_free(ip->lists->v);
+        namemap_finish(&ip->lists->names);
+    }
     tr_free(ip->lists);
     ip->lists = NULL;
     if (ip->groups) {
@@ -185,15 +181,22 @@ static bool list_fetch(interp *ip, list_entry *e)
     rgl_resource res;
     rgl_error err;
     memset(&err, 0, sizeof err);
+    char what[DIAG_TEXT];
     if (ip->res_fn(ip->res_ctx, e->body, &res, &err) != RGL_OK) {
         interp_diag(ip, DIAG_IGNORED, "display list %u: body #%u unreadable (%s): call skipped",
                     e->name, e->body, rgl_status_str(err.status));
+        snprintf(what, sizeof what, "display list %u (body #%u unreadable: %s)", e->name,
+                 e->body, rgl_status_str(err.status));
+        interp_missing(ip, what);
         return false;
     }
     if (res.kind != RGL_RES_COMMANDS) {
         interp_diag(ip, DIAG_IGNORED,
                     "display list %u: body #%u is not a command sequence: call skipped",
                     e->name, e->body);
+        snprintf(what, sizeof what, "display list %u (body #%u is not a command sequence)",
+                 e->name, e->body);
+        interp_missing(ip, what);
         return false;
     }
     e->fetched = true;
@@ -374,6 +377,8 @@ static void share_output(interp *ip, uint32_t body, const call_mark *mk)
 
 static void call_list(interp *ip, uint32_t name)
 {
+    if (ip->cut)
+        return;
     if (ip->list_depth >= INTERP_MAX_LIST_NESTING) {
         interp_diag(ip, DIAG_LIMIT, "display list %u nested deeper than %d: call skipped", name,
                     INTERP_MAX_LIST_NESTING);
@@ -419,10 +424,15 @@ static void call_list(interp *ip, uint32_t name)
     rgl_status st = interp_run(ip, data, size, offset, &err);
     ip->list_depth--;
     ip->cmd = outer;
-    if (st != RGL_OK)
+    if (st != RGL_OK) {
         interp_diag(ip, DIAG_IGNORED,
                     "display list %u: body #%u damaged at 0x%llx (%s): the rest of it skipped",
                     name, body, (unsigned long long)err.offset, rgl_status_str(st));
+        char what[DIAG_TEXT];
+        snprintf(what, sizeof what, "the rest of display list %u (body #%u damaged at 0x%llx: %s)",
+                 name, body, (unsigned long long)err.offset, rgl_status_str(st));
+        interp_missing(ip, what);
+    }
     if (share)
         share_output(ip, body, &mk);
 }
@@ -457,7 +467,8 @@ void interp_calllists(interp *ip, const rgl_cmd *cmd)
         return;
     }
     const uint8_t *p = blob->bytes;
-    for (int64_t i = 0; i < n; i++, p += ts) {
+    ip->cmds_run += (uint64_t)n; /* each name costs as a command */
+    for (int64_t i = 0; i < n && !ip->cut; i++, p += ts) {
         uint32_t off;
         switch (type) {
         case GL_BYTE: off = (uint32_t)(int32_t)(int8_t)p[0]; break;
@@ -532,10 +543,30 @@ void interp_deletelists(interp *ip, const rgl_cmd *cmd)
     if (!t)
         return;
     uint64_t end = (uint64_t)first + (uint64_t)range;
+    /* By name or over the table, whichever is shorter; it costs as many
+     * commands (a list calling glDeleteLists 10^7 times stays bounded). */
+    if ((uint64_t)range < t->n) {
+        ip->cmds_run += (uint64_t)range;
+        for (uint64_t name = first; name < end && name <= UINT32_MAX; name++) {
+            int64_t i = namemap_get(&t->names, (uint32_t)name);
+            if (i < 0)
+                continue;
+            namemap_del(&t->names, (uint32_t)name);
+            t->v[i] = t->v[--t->n];
+            if ((size_t)i < t->n) /* the last entry moved into i */
+                namemap_put(&t->names, t->v[i].name, (uint32_t)i);
+        }
+        return;
+    }
+    ip->cmds_run += t->n;
     size_t k = 0;
+    namemap_clear(&t->names);
     for (size_t i = 0; i < t->n; i++)
-        if (!(t->v[i].name >= first && t->v[i].name < end))
-            t->v[k++] = t->v[i];
+        if (!(t->v[i].name >= first && t->v[i].name < end)) {
+            t->v[k] = t->v[i];
+            namemap_put(&t->names, t->v[k].name, (uint32_t)k); /* cannot grow: fewer than before */
+            k++;
+        }
     t->n = k;
 }
 

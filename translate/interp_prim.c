@@ -375,6 +375,8 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
 {
     scene *s = ip->scene;
     size_t k = s->nverts - ip->prim_first;
+    if (!interp_budget_vertex(ip))
+        return;
     scene_vertex *v = scene_reserve_vertices(s, 1);
     if (!v)
         return;

@@ -55,6 +55,7 @@ void interp_begin_frame(interp *ip)
     ip->painter = 0;
     ip->shape_facets = 0;
     unrec_clear(&ip->unrecorded);
+    interp_bounds_begin_frame(ip);
     if (ip->scene)
         scene_reset(ip->scene);
     interp_lists_begin_frame(ip);
@@ -63,7 +64,9 @@ void interp_begin_frame(interp *ip)
 void interp_end_frame(interp *ip)
 {
     scene *s = ip->scene;
-    if (ip->in_begin) {
+    if (ip->in_begin && ip->cut) {
+        interp_abort_begin(ip); /* the cut stopped it, not the trace */
+    } else if (ip->in_begin) {
         interp_diag(ip, DIAG_IGNORED, "frame ends inside glBegin: the open primitive is dropped");
         interp_abort_begin(ip);
     }

@@ -14,9 +14,11 @@
  * records the call (record/entry_custom.c, pixels_put), so glPixelStorei
  * is kept as state but never applied again here.
  */
+#include <stdio.h>
 #include <string.h>
 
 #include "interp_internal.h"
+#include "namemap.h"
 #include "talloc.h"
 
 /* Pixels above this per image are refused (an error value, not an attempt
@@ -38,11 +40,14 @@ typedef struct tex_obj {
     uint32_t levels;      /* bit k: level k defined with the size GL expects */
     GLenum wrap_s, wrap_t, min_filter, mag_filter;
     float border[4]; /* GL_TEXTURE_BORDER_COLOR */
+    uint32_t lost;   /* pixels whose damage left the image missing or partly
+                        stale (0: none): every frame drawing with it says so */
 } tex_obj;
 
 struct interp_textures {
     tex_obj *objs; /* named objects, unordered */
     size_t n, cap;
+    namemap names; /* name -> index in objs */
     tex_obj zero[2];         /* object 0 of GL_TEXTURE_1D, GL_TEXTURE_2D */
     int32_t unpack[8];       /* glPixelStorei values, by pname - GL_UNPACK_SWAP_BYTES */
     /* The last draw's scene texture, to skip rebuilding it per primitive. */
@@ -93,10 +98,8 @@ static interp_textures *textures(interp *ip)
 
 static tex_obj *find_obj(interp_textures *t, uint32_t name)
 {
-    for (size_t i = 0; i < t->n; i++)
-        if (t->objs[i].name == name)
-            return &t->objs[i];
-    return NULL;
+    int64_t i = namemap_get(&t->names, name);
+    return i >= 0 ? &t->objs[i] : NULL;
 }
 
 /* The object `name` (created when create is set); object 0 is per target. */
@@ -110,7 +113,8 @@ static tex_obj *get_obj(interp *ip, GLenum target, uint32_t name, bool create)
     tex_obj *o = find_obj(t, name);
     if (o || !create)
         return o;
-    if (tr_grow((void **)&t->objs, &t->cap, t->n + 1, sizeof *t->objs) != 0)
+    if (t->n >= UINT32_MAX || tr_grow((void **)&t->objs, &t->cap, t->n + 1, sizeof *t->objs) != 0 ||
+        namemap_put(&t->names, name, (uint32_t)t->n) != 0)
         return NULL;
     o = &t->objs[t->n++];
     obj_defaults(o, name);
@@ -149,7 +153,10 @@ void interp_deletetextures(interp *ip, const rgl_cmd *cmd)
         if (!o)
             continue;
         image_release(o->img);
+        namemap_del(&t->names, name);
         *o = t->objs[--t->n];
+        if (o != &t->objs[t->n]) /* the last object moved into o's place */
+            namemap_put(&t->names, o->name, (uint32_t)(o - t->objs));
         /* GL binds 0 in place of a deleted bound texture. */
         if (ip->st.a.texture.binding_1d == name)
             ip->st.a.texture.binding_1d = 0;
@@ -324,19 +331,27 @@ static uint64_t image_hash(const tex_image *img)
 }
 
 /* The texel bytes of pixel resource `id` holding exactly `need` bytes, or
- * NULL after a diagnostic. */
-static const uint8_t *fetch_pixels(interp *ip, uint32_t id, size_t need)
+ * NULL after a diagnostic; *lost is set to id when the trace's damage is
+ * why. */
+static const uint8_t *fetch_pixels(interp *ip, uint32_t id, size_t need, uint32_t *lost)
 {
     if (!ip->res_fn) {
         interp_diag(ip, DIAG_IGNORED, "texture image: no resources to read pixels #%u from", id);
         return NULL;
     }
+    if (!interp_budget_texels(ip, need))
+        return NULL;
     rgl_resource res;
     rgl_error err;
     memset(&err, 0, sizeof err);
     if (ip->res_fn(ip->res_ctx, id, &res, &err) != RGL_OK) {
         interp_diag(ip, DIAG_IGNORED, "texture image: pixels #%u unreadable (%s)", id,
                     rgl_status_str(err.status));
+        char what[DIAG_TEXT];
+        snprintf(what, sizeof what, "a texture image (pixels #%u unreadable: %s)", id,
+                 rgl_status_str(err.status));
+        interp_missing(ip, what);
+        *lost = id;
         return NULL;
     }
     if (res.kind != RGL_RES_BYTES || res.size != need) {
@@ -426,12 +441,14 @@ static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t inte
     image_release(o->img);
     o->img = NULL;
     o->levels = 0;
+    o->lost = 0;
     o->base_format = base;
     int64_t iw = w - 2 * border, ih = target == GL_TEXTURE_2D ? h - 2 * border : 1;
     if (iw <= 0 || ih <= 0 || !id)
         return; /* an image with no texels, or undefined contents: no texturing */
-    const uint8_t *px = fetch_pixels(ip, id, bytes);
-    if (!px)
+    const uint8_t *px = fetch_pixels(ip, id, bytes, &o->lost);
+    /* Held as RGBA: 4 bytes a texel whatever the trace's format. */
+    if (!px || !interp_budget_texels(ip, (uint64_t)w * (uint64_t)h * 4))
         return;
     tex_image *img = tr_realloc(NULL, sizeof *img + (size_t)w * (size_t)h * 4);
     if (!img) {
@@ -475,6 +492,8 @@ static tex_image *image_own(interp *ip, tex_obj *o)
     if (o->img->refs == 1)
         return o->img;
     size_t n = sizeof *o->img + (size_t)o->img->width * (size_t)o->img->height * 4;
+    if (!interp_budget_texels(ip, n))
+        return NULL;
     tex_image *c = tr_realloc(NULL, n);
     if (!c) {
         if (ip->scene)
@@ -517,7 +536,7 @@ void interp_texsubimage2d(interp *ip, const rgl_cmd *cmd)
     }
     if (w == 0 || h == 0 || !id)
         return;
-    const uint8_t *px = fetch_pixels(ip, id, bytes);
+    const uint8_t *px = fetch_pixels(ip, id, bytes, &o->lost);
     tex_image *img = px ? image_own(ip, o) : NULL;
     if (!img)
         return;
@@ -565,6 +584,8 @@ void interp_build2dmipmaps(interp *ip, const rgl_cmd *cmd)
     }
     if (p[0] != w || p[1] != h) {
         tex_image *src = o->img;
+        if (!interp_budget_texels(ip, (uint64_t)p[0] * (uint64_t)p[1] * 4))
+            return;
         tex_image *img = tr_realloc(NULL, sizeof *img + (size_t)p[0] * (size_t)p[1] * 4);
         if (!img) {
             if (ip->scene)
@@ -799,11 +820,17 @@ int interp_textures_copy(interp *dst, const interp *src)
     *t = *s;
     t->objs = NULL;
     t->cap = 0;
+    namemap_init(&t->names);
+    if (namemap_copy(&t->names, &s->names) != 0) {
+        tr_free(t);
+        return -1;
+    }
     t->cached_img = NULL;
     t->cached_index = -1;
     t->cached_scene = NULL;
     t->nrm_ok = false;
     if (s->n && tr_grow((void **)&t->objs, &t->cap, s->n, sizeof *t->objs) != 0) {
+        namemap_finish(&t->names);
         tr_free(t);
         return -1;
     }
@@ -827,6 +854,7 @@ void interp_textures_free(interp *ip)
         image_release(t->objs[i].img);
     for (int k = 0; k < 2; k++)
         image_release(t->zero[k].img);
+    namemap_finish(&t->names);
     tr_free(t->objs);
     tr_free(t);
     ip->tex = NULL;
@@ -874,6 +902,11 @@ int32_t interp_texture_for_draw(interp *ip)
     if (!c[INTERP_CAP_TEXTURE_2D] && !c[INTERP_CAP_TEXTURE_1D])
         return -1;
     tex_obj *o = draw_obj(ip);
+    if (o && o->lost) {
+        char what[DIAG_TEXT];
+        snprintf(what, sizeof what, "texture %u (pixels #%u unreadable)", o->name, o->lost);
+        interp_missing(ip, what);
+    }
     if (!o || !complete(o))
         return -1;
     const gl_attribs *a = &ip->st.a;
@@ -916,6 +949,8 @@ int32_t interp_texture_for_draw(interp *ip)
             return t->cached_index;
     }
     size_t n = (size_t)st.width * (size_t)st.height * 4;
+    if (!interp_budget_texels(ip, n))
+        return -1;
     st.rgba = tr_realloc(NULL, n);
     if (!st.rgba) {
         ip->scene->failed = true;

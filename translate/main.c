@@ -236,6 +236,9 @@ typedef struct slot {
     char *published;       /* "DIR/NAME" once written */
     long tmp_id;           /* the temporary .pov's cleanup entry, or -1 */
     unrec_table unrec;     /* the frame's calls not recorded */
+    char *incomplete;      /* why the scene is incomplete: the cut, then what
+                              damage took (frame_result), or NULL */
+    bool damaged;          /* a part of it was lost to damage */
 } slot;
 
 typedef struct job {
@@ -249,7 +252,35 @@ typedef struct job {
     pthread_mutex_t done_lock;
     pthread_cond_t done_cond;
     char **includes; /* --include files' names in the output folder */
+    /* Held by the worker whose frame is heavy (interp_set_heavy) until it
+     * is written: one heavy frame at a time bounds the memory of -j N. */
+    pthread_mutex_t heavy_lock;
 } job;
+
+typedef struct worker_ctx {
+    job *j;
+    bool heavy; /* holds j->heavy_lock */
+} worker_ctx;
+
+static void heavy_enter(void *ctx)
+{
+    worker_ctx *w = ctx;
+    pthread_mutex_lock(&w->j->heavy_lock);
+    w->heavy = true;
+}
+
+/* After a heavy frame is written: its memory goes back before the next
+ * heavy frame may start. False when the translator cannot go on. */
+static bool heavy_leave(worker_ctx *w, translator *t)
+{
+    bool ok = true;
+    if (w->heavy) {
+        ok = translator_trim(t) == 0;
+        pthread_mutex_unlock(&w->j->heavy_lock);
+    }
+    w->heavy = false;
+    return ok;
+}
 
 static void finish_slot(job *j, slot *s)
 {
@@ -285,7 +316,7 @@ static void write_temp(job *j, translator *t, size_t k, slot *s, outbuf *ob)
     name_stem(j->o->name_pattern, &nv, fname, NAME_MAX_STEM + 1);
     strcat(fname, ".pov");
     pov_frame_info info = {fname, j->o->trace, s->frame, s->info.stream, s->info.number,
-                           s->frame_name, &j->o->pov};
+                           s->frame_name, &j->o->pov, s->incomplete};
     ob->len = 0;
     ob->failed = false;
     ob->user = &fd;
@@ -313,10 +344,30 @@ static void write_temp(job *j, translator *t, size_t k, slot *s, outbuf *ob)
     tr_free(path);
 }
 
+/* "cut at ...\nwritten without ..." for a frame written incomplete, or
+ * NULL (no memory: the details are then lost, not the frame). */
+static char *incomplete_text(const frame_result *res)
+{
+    char more[48] = "";
+    if (res->nmissing > 1)
+        snprintf(more, sizeof more, " and %" PRIu32 " more part%s", res->nmissing - 1,
+                 res->nmissing > 2 ? "s" : "");
+    size_t cap = strlen(res->cut) + strlen(res->missing) + sizeof more + 32;
+    char *t = tr_realloc(NULL, cap);
+    if (!t)
+        return NULL;
+    snprintf(t, cap, "%s%s%s%s%s", res->cut, res->cut[0] && res->nmissing ? "\n" : "",
+             res->nmissing ? "written without " : "", res->missing, more);
+    return t;
+}
+
 static void *worker(void *arg)
 {
     job *j = arg;
+    worker_ctx w = {j, false};
     translator *t = translator_create(j->reader, &j->reader_lock);
+    if (t)
+        translator_set_heavy(t, heavy_enter, &w);
     outbuf ob;
     bool ob_ok = outbuf_init(&ob, 1 << 20, fd_flush, NULL) == 0;
     for (;;) {
@@ -343,6 +394,10 @@ static void *worker(void *arg)
             if (s->frame_name)
                 strcpy(s->frame_name, res.frame_name);
         }
+        if (s->status == RGL_OK && (res.cut[0] || res.nmissing)) {
+            s->incomplete = incomplete_text(&res);
+            s->damaged = res.nmissing > 0;
+        }
         scene *sc = translator_scene_edit(t);
         if (s->status == RGL_OK)
             s->look_note = look_apply(&j->o->look, sc);
@@ -350,6 +405,10 @@ static void *worker(void *arg)
         s->height = sc->camera.height;
         if (s->status == RGL_OK && j->o->outdir)
             write_temp(j, t, k, s, &ob);
+        if (!heavy_leave(&w, t)) {
+            translator_destroy(t);
+            t = NULL; /* the next slots fail as out of memory */
+        }
         finish_slot(j, s);
     }
     outbuf_finish(&ob);
@@ -519,6 +578,27 @@ done:
     tr_free(fin_ini);
 }
 
+/* A frame written incomplete: the cut is a note (the frame is what the
+ * budget allows); a part lost to damage is damage, said and counted in the
+ * exit status even with --quiet (raygl2pov(1), "Damage"). */
+static void say_incomplete(const options *o, totals *tot, const slot *s)
+{
+    if (!s->published)
+        return;
+    if (s->damaged && !s->incomplete)
+        say(o, "frame %zu: written without a part lost to damage", s->frame);
+    for (const char *p = s->incomplete; p && *p; p += *p == '\n') {
+        const char *nl = strchr(p, '\n');
+        int len = nl ? (int)(nl - p) : (int)strlen(p);
+        bool cut = strncmp(p, "cut ", 4) == 0;
+        if (!cut || !o->quiet)
+            say(o, "frame %zu: %.*s", s->frame, len, p);
+        p += len;
+    }
+    if (s->damaged)
+        tot->status = EXIT_INPUT;
+}
+
 static void progress(const options *o, size_t done, size_t total)
 {
     if (o->quiet || total < 2 || !isatty(STDERR_FILENO))
@@ -655,6 +735,11 @@ int main(int argc, char **argv)
             d->detail[0] ? ": " : "", d->detail);
         tot.status = EXIT_INPUT;
     }
+    /* Not damage: what the recorder wrote before it stopped is whole. */
+    if (!rgl_reader_closed(reader, NULL) && !o.quiet)
+        say(&o, "trace not closed (the recording was killed or the disk filled): %zu complete "
+            "frame%s, the frame in progress is lost", rgl_reader_frame_count(reader),
+            rgl_reader_frame_count(reader) == 1 ? "" : "s");
     if (o.dump && dump(&o, reader) != 0)
         tot.status = EXIT_INPUT;
     if (!o.outdir) {
@@ -724,6 +809,7 @@ int main(int argc, char **argv)
         }
     pthread_mutex_init(&j.reader_lock, NULL);
     pthread_mutex_init(&j.done_lock, NULL);
+    pthread_mutex_init(&j.heavy_lock, NULL);
     pthread_cond_init(&j.done_cond, NULL);
 
     int nthreads = o.jobs < (int)j.nslots ? o.jobs : (int)j.nslots;
@@ -764,7 +850,7 @@ int main(int argc, char **argv)
             /* Already stopped: drop what the workers still made. */
         } else if (s->status != RGL_OK) {
             char where[64];
-            snprintf(where, sizeof where, "frame %zu", s->frame);
+            snprintf(where, sizeof where, "frame %zu (not written)", s->frame);
             if (s->status == RGL_E_NOMEM && atomic_load(&j.abort) == 0)
                 say(&o, "frame %zu: out of memory", s->frame);
             else if (s->status != RGL_E_NOMEM)
@@ -782,6 +868,7 @@ int main(int argc, char **argv)
             atomic_store(&j.abort, 1);
         } else {
             publish(&o, &tot, &used, k, s);
+            say_incomplete(&o, &tot, s);
         }
         if (fatal && s->status == RGL_OK && !s->write_errno) {
             char *tmp = temp_path(o.outdir, k, ".pov");
@@ -797,6 +884,8 @@ int main(int argc, char **argv)
         s->frame_name = NULL;
         (void)unrec_merge(&unrec, &s->unrec, s->frame);
         unrec_finish(&s->unrec);
+        tr_free(s->incomplete);
+        s->incomplete = NULL;
         progress(&o, k + 1, j.nslots);
     }
     for (int t = 0; t < started; t++)
@@ -836,6 +925,7 @@ int main(int argc, char **argv)
     opt_free(&o);
     pthread_cond_destroy(&j.done_cond);
     pthread_mutex_destroy(&j.done_lock);
+    pthread_mutex_destroy(&j.heavy_lock);
     pthread_mutex_destroy(&j.reader_lock);
     rgl_reader_destroy(reader);
     if (fflush(stdout) != 0)

@@ -987,6 +987,13 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
             outbuf_puts(ob, "\n// rayglFrameBegin name: ");
             put_comment_text(ob, info->frame_name);
         }
+        for (const char *p = info->incomplete; p && *p; p += *p == '\n') {
+            outbuf_puts(ob, "\n// Incomplete: ");
+            for (; *p && *p != '\n'; p++) {
+                unsigned char c = (unsigned char)*p;
+                outbuf_putc(ob, c >= 0x20 && c < 0x7f ? (char)c : '?');
+            }
+        }
     }
     outbuf_puts(ob, "\n// Eye coordinates of the OpenGL frame: x right, y up, the camera looks"
                     " down -z.\n#version 3.7;\nglobal_settings{assumed_gamma 2.2}\n");

@@ -31,6 +31,10 @@ typedef struct pov_frame_info {
     uint32_t stream, number;
     const char *frame_name; /* rayglFrameBegin's name, or NULL */
     const pov_options *options; /* NULL: the defaults */
+    /* Why the scene is incomplete (the frame cut by its budget, parts
+     * that damage took), one reason a line, or NULL: each line becomes an
+     * "// Incomplete: ..." comment under the header. */
+    const char *incomplete;
 } pov_frame_info;
 
 typedef struct povwriter povwriter;

@@ -222,7 +222,7 @@ static void run_layout(const char *name, int strips, int nframes, size_t tris, i
             translator_build(t, i, NULL, &res);
             bld[k] += now() - tb0;
             ntri_total += translator_scene(t)->ntris;
-            pov_frame_info info = {"frame.pov", "bench.raygl", i, 0, (uint32_t)i, NULL, NULL};
+            pov_frame_info info = {"frame.pov", "bench.raygl", i, 0, (uint32_t)i, NULL, NULL, NULL};
             ob.len = 0;
             translator_write_pov(t, &ob, &info);
             sdl += (double)ob.len;
@@ -325,7 +325,7 @@ static void run_povray(const char *povray, size_t tris, const char *dir, bool co
     size_t ntris = translator_scene(t)->ntris;
     outbuf ob;
     outbuf_init(&ob, 1 << 26, NULL, NULL);
-    pov_frame_info info = {"big.pov", "bench.raygl", 0, 0, 0, NULL, NULL};
+    pov_frame_info info = {"big.pov", "bench.raygl", 0, 0, 0, NULL, NULL, NULL};
     translator_write_pov(t, &ob, &info);
     char path[4096], cmd[8192];
     snprintf(path, sizeof path, "%s/big.pov", dir);

@@ -145,17 +145,32 @@ static void hostile_traces(void)
     uint8_t fp[16];
     size_t size, good_end;
 
-    /* A frame, then a chunk whose (CRC-valid) length runs past the end. */
+    /* A frame, then a chunk whose (CRC-valid) length runs past the end:
+     * the recording stopped while writing it. Not closed, and the cut
+     * chunk is its last write, not damage; nor is the start of a header. */
+    uint64_t tail;
     rgl_file_header_encode(buf, 0);
     size = append_chunk(buf, RGL_FILE_HEADER_SIZE, RGL_CHUNK_FRAME, fp, (uint32_t)frame_payload(fp, 0));
     good_end = size;
-    rgl_chunk_header_encode(buf + size, RGL_CHUNK_FRAME, 5000);
-    size += RGL_CHUNK_HEADER_SIZE + 10;
     CHECK(rgl_reader_open_memory(buf, size, &rd, &err) == RGL_OK);
-    CHECK(rgl_reader_frame_count(rd) == 1 && rgl_reader_damage_count(rd) == 1);
-    CHECK(rgl_reader_damage(rd, 0)->status == RGL_E_TRUNCATED &&
-          rgl_reader_damage(rd, 0)->offset == good_end);
+    CHECK(!rgl_reader_closed(rd, &tail) && tail == good_end && rgl_reader_damage_count(rd) == 0);
     rgl_reader_destroy(rd);
+    rgl_chunk_header_encode(buf + size, RGL_CHUNK_FRAME, 5000);
+    for (size_t cut = 1; cut <= RGL_CHUNK_HEADER_SIZE + 10; cut += cut < 20 ? 1 : 6) {
+        CHECK(rgl_reader_open_memory(buf, good_end + cut, &rd, &err) == RGL_OK);
+        CHECK(rgl_reader_frame_count(rd) == 1 && rgl_reader_damage_count(rd) == 0);
+        CHECKF(!rgl_reader_closed(rd, &tail) && tail == good_end, "cut %zu: tail %llu", cut,
+               (unsigned long long)tail);
+        rgl_reader_destroy(rd);
+    }
+    /* Garbage at the end is damage, and the trace is not closed either. */
+    memcpy(buf + good_end, "garbage!", 8);
+    CHECK(rgl_reader_open_memory(buf, good_end + 8, &rd, &err) == RGL_OK);
+    CHECK(rgl_reader_damage_count(rd) == 1 && rgl_reader_damage(rd, 0)->offset == good_end);
+    CHECK(!rgl_reader_closed(rd, &tail) && tail == good_end + 8);
+    rgl_reader_destroy(rd);
+    rgl_chunk_header_encode(buf + good_end, RGL_CHUNK_FRAME, 5000);
+    size = good_end + RGL_CHUNK_HEADER_SIZE + 10;
 
     /* A CRC-valid header with a length over the limit, then a good frame. */
     rgl_chunk_header_encode(buf + good_end, RGL_CHUNK_FRAME, RGL_CHUNK_MAX_PAYLOAD + 1);

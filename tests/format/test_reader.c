@@ -77,6 +77,10 @@ static void test_roundtrip(void)
         CHECK(sample_build(&s, with_index, 7));
         CHECK(rgl_reader_open_memory(s.data, s.size, &rd, &err) == RGL_OK);
         check_whole(&s, rd, with_index ? "memory, index" : "memory, no index");
+        /* Without index and END the trace was not closed; it ends between chunks. */
+        uint64_t tail;
+        CHECK(rgl_reader_closed(rd, &tail) == (bool)with_index &&
+              tail == (with_index ? 0 : s.size));
         rgl_reader_destroy(rd);
 
         char path[] = "/tmp/rgl-reader-XXXXXX";
@@ -156,6 +160,7 @@ static void test_index_used(void)
         for (size_t f = 0; f < SAMPLE_FRAMES; f++)
             CHECKF(sample_frame_ok(&s, rd, f, f), "variant %d frame %zu", variant, f);
         CHECK(rgl_reader_resource_count(rd) == SAMPLE_RESOURCES);
+        CHECKF(rgl_reader_closed(rd, NULL), "variant %d: an END trailer closes the trace", variant);
         rgl_reader_destroy(rd);
     }
     rgl_trace_builder_destroy(s.builder);

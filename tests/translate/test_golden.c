@@ -92,7 +92,7 @@ static void run_case(const char *dir, const char *name, seq *frames, int nframes
             continue;
         }
         pov_frame_info info = {file, "golden.raygl", (uint64_t)i, 0, (uint32_t)i,
-                               res.frame_name, NULL};
+                               res.frame_name, NULL, NULL};
         ob.len = 0;
         if (translator_write_pov(tr, &ob, &info) != 0) {
             fprintf(stderr, "%s: the writer failed\n", case_name);

@@ -804,7 +804,7 @@ static void test_alloc_translation(void)
         for (size_t i = 0; tr && oi == 0 && i < 2; i++) {
             frame_result res;
             if (translator_build(tr, i, NULL, &res) == RGL_OK) {
-                pov_frame_info info = {"f.pov", "t.raygl", i, 0, (uint32_t)i, NULL, NULL};
+                pov_frame_info info = {"f.pov", "t.raygl", i, 0, (uint32_t)i, NULL, NULL, NULL};
                 ob.len = 0;
                 ok += translator_write_pov(tr, &ob, &info) == 0 && !ob.failed;
             }
@@ -881,17 +881,21 @@ static void test_shape_budget(void)
     CHECK_EQ_U(sc.nverts + sc.nlines, 0);
     CHECK_EQ_U(sc.nsolids, 1);
     CHECK(strstr(dlog.e[DIAG_IGNORED].text[0], "glutWireTorus with 100000 x 100000 facets") != NULL);
-    /* 512 x 512 is the bound itself: drawn; 8 of them fill the frame's
-     * budget, the 9th is skipped. */
+    /* 512 x 512 is the bound itself: drawn. Each draws 2^19 lines: the
+     * third goes over the frame budget of lines (INTERP_BUDGET_LINES), which
+     * cuts the frame after it; later commands are not run. */
     for (int i = 0; i < 9; i++) {
         seq_init(&s);
         CMD(&s, WireTorus, 0.2, 1, 512, 512);
         run(ip, &s);
-        CHECK_EQ_U(count(DIAG_IGNORED), i < 8 ? 3 : 4);
-        CHECK_EQ_U(sc.nlines, (i < 8 ? i + 1 : 8) * 2u * 512 * 512);
+        CHECK_EQ_U(count(DIAG_IGNORED), 3);
+        CHECK_EQ_U(sc.nlines, (i < 3 ? i + 1 : 3) * 2u * 512 * 512);
+        CHECK((interp_frame_cut(ip) != NULL) == (i >= 2));
     }
+    CHECK(strstr(interp_frame_cut(ip), "over the frame budget of 1048576 lines and points") != NULL);
     /* A new frame has a new budget. */
     interp_begin_frame(ip);
+    CHECK(interp_frame_cut(ip) == NULL);
     seq_init(&s);
     CMD(&s, WireTorus, 0.2, 1, 512, 512);
     run(ip, &s);

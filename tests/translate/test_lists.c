@@ -306,6 +306,65 @@ static void test_call_budget(void)
     free_bodies();
 }
 
+/* A list of 30 vertices that calls itself twice (issue 12: 524 bytes took
+ * 4.9 s and 1.96 GB) is cut by the frame budget: the scene stops at the
+ * budget's vertices, the rest of the frame is not run, and the next frame
+ * has a budget of its own. */
+static void test_frame_budget(void)
+{
+    interp *ip = fresh();
+    seq b;
+    seq_init(&b);
+    CMD(&b, Begin, GL_TRIANGLES);
+    for (int i = 0; i < 30; i++)
+        CMD(&b, Vertex3f, i % 3 == 1, i % 3 == 2, -1);
+    CMD0(&b, End);
+    CMD(&b, CallList, 4);
+    CMD(&b, CallList, 4);
+    uint32_t bomb = add_body(&b);
+    seq s;
+    seq_init(&s);
+    CMD(&s, NewList, 4, GL_COMPILE, bomb);
+    CMD(&s, CallList, 4);
+    CMD(&s, Translatef, 5, 0, 0); /* after the cut: not run */
+    run(ip, &s);
+    const char *cut = interp_frame_cut(ip);
+    CHECK(cut != NULL && strstr(cut, "over the frame budget of 4194304 vertices") != NULL &&
+          strstr(cut, "(in a display list)") != NULL);
+    CHECK(sc.nverts <= INTERP_BUDGET_VERTICES && sc.nverts > INTERP_BUDGET_VERTICES - 30);
+    CHECK_NEAR(interp_matrix(ip, INTERP_MV)->m[12], 0, 0);
+    interp_end_frame(ip);
+    CHECK_EQ_U(count(DIAG_IGNORED), 0); /* the open glBegin the cut left is not the trace's */
+    interp_begin_frame(ip);
+    CHECK(interp_frame_cut(ip) == NULL && sc.nverts == 0);
+    seq_init(&s);
+    CMD(&s, Translatef, 5, 0, 0);
+    run(ip, &s);
+    CHECK_NEAR(interp_matrix(ip, INTERP_MV)->m[12], 5, 0);
+    interp_destroy(ip);
+    free_bodies();
+}
+
+/* A list whose body the trace cannot supply: the call is skipped, and the
+ * frame knows what it was drawn without (the CLI then exits 1). */
+static void test_missing_body(void)
+{
+    interp *ip = fresh();
+    uint32_t n;
+    seq s;
+    seq_init(&s);
+    CMD(&s, NewList, 3, GL_COMPILE, 42); /* no resource 42 */
+    CMD(&s, CallList, 3);
+    CMD(&s, CallList, 3);
+    run(ip, &s);
+    const char *m = interp_frame_missing(ip, &n);
+    CHECK(m != NULL && strcmp(m, "display list 3 (body #42 unreadable: missing or malformed resource)") == 0);
+    CHECK(n >= 1);
+    interp_begin_frame(ip);
+    CHECK(interp_frame_missing(ip, &n) == NULL && n == 0);
+    interp_destroy(ip);
+}
+
 /* ---- Arrays ------------------------------------------------------------------------------ */
 
 static void array_data(seq *s, GLenum array, int first, int size, GLenum type, const void *data,
@@ -507,6 +566,8 @@ int main(void)
     test_calllists_types();
     test_nesting_and_delete();
     test_call_budget();
+    test_frame_budget();
+    test_missing_body();
     test_arrays();
     test_colour_image();
     scene_finish(&sc);

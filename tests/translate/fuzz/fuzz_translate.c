@@ -94,7 +94,7 @@ static void translate_all(rgl_reader *r)
         if (translator_build(t, i, &log, &res) != RGL_OK)
             continue;
         pov_frame_info info = {"frame.pov", "fuzz.raygl", i, res.info.stream, res.info.number,
-                               res.frame_name, NULL};
+                               res.frame_name, NULL, NULL};
         ob.len = 0;
         ob.failed = false;
         if (translator_write_pov(t, &ob, &info) == 0)

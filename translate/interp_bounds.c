@@ -1,0 +1,145 @@
+/* interp_bounds.c: the frame's budget, and what damage left out of it.
+ *
+ * Budget. A trace can ask for far more work than its size: a display list
+ * that calls itself twice runs 2^20 bodies before the call cap stops it,
+ * each drawing what its body draws. So every frame has a budget
+ * (INTERP_BUDGET_* in interp.h, docs/mapping.md "Bounds") of commands run,
+ * vertices assembled, vertices and primitives the scene holds, instances
+ * and texture bytes. The run loop checks it after every command, vertex
+ * assembly and texture reads before they happen; the first check that
+ * fails cuts the frame: every later command of the frame, in any list, is
+ * skipped, and interp_frame_cut says where and why. The scene keeps what
+ * came before, so the writer still writes a valid (if incomplete) scene.
+ *
+ * Missing parts. A display-list body or texture image that the trace
+ * cannot supply (a checksum mismatch, a chunk lost in a damaged region) is
+ * left out of the frame with a diagnostic; here the frame also remembers
+ * it, so that the CLI can say which frames were written without what, and
+ * exit with 1, whether or not diagnostics are printed.
+ */
+#include "interp_internal.h"
+
+#include <stdio.h>
+
+void interp_bounds_begin_frame(interp *ip)
+{
+    ip->cmds_run = ip->assembled = ip->texels = 0;
+    ip->cut = false;
+    ip->heavy = false;
+    ip->cut_why[0] = '\0';
+    ip->nmissing = 0;
+    ip->missing[0] = '\0';
+}
+
+static bool cut(interp *ip, uint64_t offset, const char *what, unsigned long long limit)
+{
+    ip->cut = true;
+    snprintf(ip->cut_why, sizeof ip->cut_why,
+             "cut at @0x%llx%s: over the frame budget of %llu %s; the rest of the frame is "
+             "not translated",
+             (unsigned long long)offset, ip->list_depth ? " (in a display list)" : "", limit,
+             what);
+    return true;
+}
+
+bool interp_budget_over(interp *ip, uint64_t offset)
+{
+    if (ip->cut)
+        return true;
+    const scene *s = ip->scene;
+    if (ip->cmds_run > INTERP_BUDGET_COMMANDS)
+        return cut(ip, offset, "commands run", INTERP_BUDGET_COMMANDS);
+    if (!s)
+        return false;
+    if (s->nverts > INTERP_BUDGET_VERTICES)
+        return cut(ip, offset, "vertices", INTERP_BUDGET_VERTICES);
+    if (s->ntris > INTERP_BUDGET_TRIANGLES)
+        return cut(ip, offset, "triangles", INTERP_BUDGET_TRIANGLES);
+    if (s->nlines + s->npoints > INTERP_BUDGET_LINES)
+        return cut(ip, offset, "lines and points", INTERP_BUDGET_LINES);
+    if (s->nsolids > INTERP_BUDGET_SOLIDS)
+        return cut(ip, offset, "solids", INTERP_BUDGET_SOLIDS);
+    if (s->ninstances > INTERP_BUDGET_INSTANCES)
+        return cut(ip, offset, "display-list instances", INTERP_BUDGET_INSTANCES);
+    return false;
+}
+
+void interp_set_heavy(interp *ip, interp_heavy_fn fn, void *ctx)
+{
+    ip->heavy_fn = fn;
+    ip->heavy_ctx = ctx;
+}
+
+/* What the scene holds, with what the writer makes of it: lines and
+ * points become a solid each (measured: about 380 bytes a line in all). */
+void interp_heavy_check(interp *ip)
+{
+    const scene *s = ip->scene;
+    if (!s)
+        return;
+    uint64_t bytes = (uint64_t)s->cap_verts * sizeof *s->verts +
+                     (uint64_t)s->cap_tris * sizeof *s->tris * 2 +
+                     (uint64_t)(s->cap_lines + s->cap_points) * 400 +
+                     (uint64_t)s->cap_solids * sizeof *s->solids * 2 +
+                     (uint64_t)s->cap_instances * sizeof *s->instances + ip->texels;
+    if (bytes > INTERP_HEAVY_BYTES) {
+        ip->heavy = true;
+        ip->heavy_fn(ip->heavy_ctx);
+    }
+}
+
+/* The command being run, for a cut inside one (an array draw, a texture). */
+static uint64_t here(const interp *ip) { return ip->cmd ? ip->cmd->offset : 0; }
+
+bool interp_budget_vertex(interp *ip)
+{
+    if (ip->cut)
+        return false;
+    if (++ip->assembled > INTERP_BUDGET_ASSEMBLED) {
+        cut(ip, here(ip), "vertices assembled", INTERP_BUDGET_ASSEMBLED);
+        return false;
+    }
+    if (ip->scene && ip->scene->nverts >= INTERP_BUDGET_VERTICES) {
+        cut(ip, here(ip), "vertices", INTERP_BUDGET_VERTICES);
+        return false;
+    }
+    return true;
+}
+
+bool interp_budget_texels(interp *ip, uint64_t bytes)
+{
+    if (ip->cut)
+        return false;
+    if (bytes > INTERP_BUDGET_TEXELS - ip->texels) {
+        cut(ip, here(ip), "texture bytes", INTERP_BUDGET_TEXELS);
+        return false;
+    }
+    ip->texels += bytes;
+    return true;
+}
+
+const char *interp_frame_cut(const interp *ip) { return ip->cut ? ip->cut_why : NULL; }
+
+void interp_missing(interp *ip, const char *what)
+{
+    /* The same part again (a list called twice, a texture drawn twice) is
+     * not another part: the first INTERP_MISSING_KEPT are told apart. */
+    uint64_t h = 0xcbf29ce484222325ull;
+    for (const char *p = what; *p; p++)
+        h = (h ^ (unsigned char)*p) * 0x100000001b3ull;
+    uint32_t kept = ip->nmissing < INTERP_MISSING_KEPT ? ip->nmissing : INTERP_MISSING_KEPT;
+    for (uint32_t k = 0; k < kept; k++)
+        if (ip->missing_hash[k] == h)
+            return;
+    if (ip->nmissing < INTERP_MISSING_KEPT)
+        ip->missing_hash[ip->nmissing] = h;
+    if (ip->nmissing == 0)
+        snprintf(ip->missing, sizeof ip->missing, "%s", what);
+    ip->nmissing++;
+}
+
+const char *interp_frame_missing(const interp *ip, uint32_t *count)
+{
+    *count = ip->nmissing;
+    return ip->nmissing ? ip->missing : NULL;
+}
