@@ -33,7 +33,7 @@ static bool allowed_in_begin(const char *handler)
         "vertex",       "normal",    "color",     "texcoord",       "edgeflag",   "end",
         "material",     "calllist",  "calllists", "arrayelement",   "resolvedmatrix",
         "arraydata",    "framebegin", "frameend", "swapbuffers",
-        "snapshot",
+        "snapshot",     "evalcoord1", "evalcoord2", "evalpoint1", "evalpoint2",
     };
     for (size_t i = 0; i < sizeof ok / sizeof ok[0]; i++)
         if (strcmp(handler, ok[i]) == 0)
@@ -197,6 +197,7 @@ void interp_destroy(interp *ip)
     tr_free(ip->edge);
     tr_free(ip->clipv);
     interp_textures_free(ip);
+    interp_eval_free(ip);
     tr_free(ip);
 }
 
@@ -205,6 +206,7 @@ void interp_reset(interp *ip)
     interp_default_state(&ip->st);
     memset(ip->quadrics, 0, sizeof ip->quadrics);
     interp_textures_free(ip);
+    interp_eval_free(ip);
     ip->in_begin = false;
     ip->camera_fixed = false;
     ip->frame_begin = false;
@@ -220,6 +222,8 @@ void interp_copy_state(interp *dst, const interp *src)
     if (interp_textures_copy(dst, src) != 0 && dst->scene)
         dst->scene->failed = true;
     if (!interp_lists_copy(dst, src) && dst->scene)
+        dst->scene->failed = true;
+    if (interp_eval_copy(dst, src) != 0 && dst->scene)
         dst->scene->failed = true;
 }
 

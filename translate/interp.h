@@ -21,6 +21,7 @@
  *   interp_list.c    display lists: the list table, calls, nesting, and
  *                    the prototypes that repeated calls share
  *   interp_array.c   vertex arrays and their draws, buffer objects
+ *   interp_eval.c    evaluators: maps, grids, glEvalCoord, glEvalMesh
  *
  * Not thread-safe; one interpreter per worker thread.
  */
@@ -46,6 +47,7 @@
 #define INTERP_MAX_VIEWPORT 16384 /* Mesa's GL_MAX_VIEWPORT_DIMS */
 #define INTERP_MAX_LIST_NESTING 64 /* GL_MAX_LIST_NESTING (GL 1.x table 6.28) */
 #define INTERP_MAX_TEXTURE_SIZE 16384 /* Mesa's GL_MAX_TEXTURE_SIZE */
+#define INTERP_MAX_EVAL_ORDER 30 /* Mesa's GL_MAX_EVAL_ORDER */
 
 enum interp_matrix_mode { INTERP_MV, INTERP_PROJ, INTERP_TEX, INTERP_NMODES };
 
