@@ -355,3 +355,30 @@ unsigned char stub_mapped[4096];
     }
 STUB_BUFFERS()
 STUB_BUFFERS(ARB)
+
+/* ---- Evaluator maps ---------------------------------------------------------------- */
+
+void glMap1f(GLenum target, GLfloat u1, GLfloat u2, GLint stride, GLint order,
+             const GLfloat *points)
+{
+    LOGV("glMap1f", target, u1, u2, stride, order);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], points);
+}
+void glMap1d(GLenum target, GLdouble u1, GLdouble u2, GLint stride, GLint order,
+             const GLdouble *points)
+{
+    LOGV("glMap1d", target, u1, u2, stride, order);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], points);
+}
+void glMap2f(GLenum target, GLfloat u1, GLfloat u2, GLint ustride, GLint uorder, GLfloat v1,
+             GLfloat v2, GLint vstride, GLint vorder, const GLfloat *points)
+{
+    LOGV("glMap2f", target, u1, u2, ustride, uorder, v1, v2, vstride, vorder);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], points);
+}
+void glMap2d(GLenum target, GLdouble u1, GLdouble u2, GLint ustride, GLint uorder, GLdouble v1,
+             GLdouble v2, GLint vstride, GLint vorder, const GLdouble *points)
+{
+    LOGV("glMap2d", target, u1, u2, ustride, uorder, v1, v2, vstride, vorder);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], points);
+}
