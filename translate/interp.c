@@ -99,6 +99,10 @@ void interp_default_state(gl_state *st)
     a->current.edge_flag = true;
     memcpy(a->caps, cap_defaults, sizeof a->caps);
 
+    for (int d = 0; d < 2; d++) { /* glMapGrid: 1 partition of [0, 1] */
+        a->eval.grid_n[d][0] = a->eval.grid_n[d][1] = 1;
+        a->eval.grid[d][0][1] = a->eval.grid[d][1][1] = 1;
+    }
     a->lighting.shade_model = GL_SMOOTH;
     for (int f = 0; f < 2; f++) {
         gl_material *m = &a->lighting.material[f];
@@ -538,6 +542,8 @@ void interp_popattrib(interp *ip, const rgl_cmd *cmd)
         a->hint = s->hint;
     if (m & GL_TEXTURE_BIT)
         a->texture = s->texture;
+    if (m & GL_EVAL_BIT)
+        a->eval = s->eval;
     for (int i = 0; i < INTERP_CAP_COUNT; i++)
         if ((m & GL_ENABLE_BIT) || (m & cap_groups[i]))
             a->caps[i] = s->caps[i];

@@ -131,6 +131,10 @@ typedef struct gl_attribs {
         double eye_plane[4][4];   /* GL_EYE_PLANE, times the inverse modelview
                                      current at the glTexGen call */
     } texture; /* GL_TEXTURE_BIT */
+    struct {
+        int32_t grid_n[2][2];    /* [dimension - 1][u, v]: glMapGrid's partitions */
+        double grid[2][2][2];    /* [dimension - 1][u, v][start, end] */
+    } eval; /* GL_EVAL_BIT (the maps themselves are not attributes) */
 } gl_attribs;
 
 typedef struct gl_attrib_entry {

@@ -11,9 +11,10 @@
  * culling and the vertex counts of the frame follow; glEvalMesh opens and
  * closes its own primitives through interp_prim_begin/interp_prim_end.
  *
- * The maps and grids live in ip->eval (NULL while everything has its
- * initial value), context state that interp_copy_state carries and display
- * lists see as they are at glCallList. The enables are caps (caps.def).
+ * The maps live in ip->eval (NULL while every map has its initial value),
+ * context state that interp_copy_state carries and display lists see as
+ * they are at glCallList. The grids are attributes (gl_attribs.eval, saved
+ * by GL_EVAL_BIT), the enables caps (caps.def).
  */
 #include "interp_internal.h"
 
@@ -33,8 +34,6 @@ typedef struct eval_map {
 
 struct interp_eval {
     eval_map map[2][EVAL_TARGETS]; /* [0] glMap1, [1] glMap2 */
-    int32_t grid_n[2][2];          /* [dimension - 1][u, v] */
-    double grid[2][2][2];          /* [dimension - 1][u, v][start, end] */
 };
 
 /* Values per point and the initial map's single point (GL 1.x table 5.1):
@@ -53,8 +52,6 @@ static void eval_defaults(struct interp_eval *e)
             e->map[d][t].order[0] = e->map[d][t].order[1] = 1;
             e->map[d][t].dom[0][1] = e->map[d][t].dom[1][1] = 1;
         }
-        e->grid_n[d][0] = e->grid_n[d][1] = 1;
-        e->grid[d][0][1] = e->grid[d][1][1] = 1;
     }
 }
 
@@ -252,13 +249,11 @@ static void define_grid(interp *ip, const rgl_cmd *cmd, int dims)
             return;
         }
     }
-    struct interp_eval *e = eval_get(ip);
-    if (!e)
-        return;
+    gl_attribs *a = &ip->st.a;
     for (int d = 0; d < dims; d++) {
-        e->grid_n[dims - 1][d] = (int32_t)n[d];
-        e->grid[dims - 1][d][0] = g[d][0];
-        e->grid[dims - 1][d][1] = g[d][1];
+        a->eval.grid_n[dims - 1][d] = (int32_t)n[d];
+        a->eval.grid[dims - 1][d][0] = g[d][0];
+        a->eval.grid[dims - 1][d][1] = g[d][1];
     }
 }
 
@@ -382,9 +377,8 @@ void interp_evalcoord2(interp *ip, const rgl_cmd *cmd)
  * (GL 1.x 5.1, with the point at i == n exactly the end). */
 static double grid_at(const interp *ip, int dims, int d, int64_t i)
 {
-    int32_t n = ip->eval ? ip->eval->grid_n[dims - 1][d] : 1;
-    double g0 = ip->eval ? ip->eval->grid[dims - 1][d][0] : 0;
-    double g1 = ip->eval ? ip->eval->grid[dims - 1][d][1] : 1;
+    int32_t n = ip->st.a.eval.grid_n[dims - 1][d];
+    double g0 = ip->st.a.eval.grid[dims - 1][d][0], g1 = ip->st.a.eval.grid[dims - 1][d][1];
     if (i == n)
         return g1;
     return (double)i * (g1 - g0) / n + g0;
@@ -401,19 +395,29 @@ void interp_evalpoint2(interp *ip, const rgl_cmd *cmd)
                grid_at(ip, 2, 1, rgl_arg_i(&cmd->arg[1], 0)));
 }
 
-/* A mesh draws at most this many grid points: a hostile trace's grid of
- * 2^31 partitions ends here with a diagnostic. */
-#define EVAL_MESH_MAX_POINTS (1u << 22)
+/* A trace may ask for a grid of 2^31 partitions; GL would draw them all,
+ * but a few bytes must not cost minutes or gigabytes here. Above these many
+ * grid points for one mesh, or with the frame's tessellated shapes
+ * (interp_shape.c) over their budget, the mesh is skipped with a
+ * diagnostic. A 512 x 512 mesh is within the first. */
+#define EVAL_MESH_MAX_POINTS (1u << 18)
+#define EVAL_FRAME_MAX_POINTS (1u << 21)
 
 static bool mesh_range(interp *ip, int64_t lo, int64_t hi, int64_t lo2, int64_t hi2)
 {
     uint64_t a = hi >= lo ? (uint64_t)(hi - lo + 1) : 0;
     uint64_t b = hi2 >= lo2 ? (uint64_t)(hi2 - lo2 + 1) : 0;
-    if (a * b > EVAL_MESH_MAX_POINTS) {
-        interp_diag(ip, DIAG_LIMIT, "evaluator mesh of %llu x %llu points skipped",
-                    (unsigned long long)a, (unsigned long long)b);
+    if (a > EVAL_MESH_MAX_POINTS || b > EVAL_MESH_MAX_POINTS || a * b > EVAL_MESH_MAX_POINTS) {
+        interp_diag(ip, DIAG_LIMIT, "evaluator mesh of %llu x %llu points skipped: over %u",
+                    (unsigned long long)a, (unsigned long long)b, EVAL_MESH_MAX_POINTS);
         return false;
     }
+    if (ip->shape_facets + a * b > EVAL_FRAME_MAX_POINTS) {
+        interp_diag(ip, DIAG_LIMIT, "evaluator mesh skipped: the frame's meshes and shapes "
+                                    "exceed %u points", EVAL_FRAME_MAX_POINTS);
+        return false;
+    }
+    ip->shape_facets += a * b;
     return a > 0 && b > 0;
 }
 

@@ -46,7 +46,8 @@ struct interp {
     bool cleared;        /* the frame cleared the colour buffer */
     uint32_t painter;    /* draws without a depth test since the frame's start
                             or last clear (interp_prim.c, painter_shift) */
-    uint64_t shape_facets; /* facets of tessellated shapes in this frame (interp_shape.c) */
+    uint64_t shape_facets; /* facets of tessellated shapes and evaluator mesh points in this
+                              frame (interp_shape.c, interp_eval.c) */
 
     /* glBegin .. glEnd */
     bool in_begin;

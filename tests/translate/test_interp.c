@@ -1087,6 +1087,17 @@ static void test_eval_draw(void)
     CMD0(&s, End);
     run(ip, &s);
     CHECK_EQ_U(sc.npoints, 10);
+
+    /* The grids are GL_EVAL_BIT attributes, with the map enables. */
+    seq_init(&s);
+    CMD(&s, PushAttrib, GL_EVAL_BIT);
+    CMD(&s, MapGrid1f, 7, -1, 1);
+    CMD(&s, Disable, GL_MAP1_VERTEX_3);
+    CMD0(&s, PopAttrib);
+    run(ip, &s);
+    CHECK_EQ_U(interp_state(ip)->a.eval.grid_n[0][0], 4);
+    CHECK_NEAR(interp_state(ip)->a.eval.grid[0][0][0], 2, 0);
+    CHECK(interp_state(ip)->a.caps[INTERP_CAP_MAP1_VERTEX_3]);
     interp_destroy(ip);
 }
 
