@@ -17,9 +17,6 @@
 #include "raygl.h"
 #include "recorder.h"
 
-/* Mesa's GL_MAX_EVAL_ORDER. */
-#define MAX_EVAL_ORDER 30
-
 /* k, or 0 when GL rejects the one-dimensional part (u1, u2, stride, order)
  * of a map of dimension `two` (0: glMap1, 1: glMap2). */
 static uint32_t map_check(GLenum target, bool want_two, double u1, double u2, GLint stride,
@@ -27,7 +24,7 @@ static uint32_t map_check(GLenum target, bool want_two, double u1, double u2, GL
 {
     bool two;
     uint32_t k = rgl_map_components(target, &two);
-    if (k == 0 || two != want_two || order < 1 || order > MAX_EVAL_ORDER || u1 == u2 ||
+    if (k == 0 || two != want_two || order < 1 || order > RGL_MAX_EVAL_ORDER || u1 == u2 ||
         stride < (GLint)k)
         return 0;
     return k;
