@@ -12,6 +12,8 @@
 #                            the program as the caller
 #   glut-solid               3 glutSolidTeapot, none of the GL calls
 #                            freeglut makes to draw them
+#   nurbs                    3 GLU NURBS surfaces: GLU draws them through
+#                            evaluators, recorded and translated as meshes
 #   threads                  two threads, two contexts: two streams of 3
 #   kill                     SIGKILL mid-frame: the complete frames read
 #                            and translate
@@ -110,6 +112,16 @@ glut-solid)
     # none of it may appear beside the shape.
     expect t.raygl 'glBegin(\|glDrawArrays(\|glDrawElements(\|glVertexPointer(\|glNormalPointer(\|glVertex3f(' 0
     translate t.raygl 3
+    ;;
+nurbs)
+    record -o t.raygl -- "$prog" --api glx --nurbs >prog.log 2>&1 || { cat prog.log; fail "the program failed"; }
+    expect t.raygl '^frame ' 3
+    [ "$(count t.raygl 'glMap2f(target=GL_MAP2_VERTEX_3')" -ge 3 ] || fail "no glMap2f per surface"
+    [ "$(count t.raygl 'glEvalMesh2(\|glEvalCoord2f(')" -ge 3 ] || fail "no evaluation"
+    translate t.raygl 3
+    for f in t-pov/frame-*.pov; do
+        grep -q '^mesh2{' "$f" || fail "$f: the surface drew nothing"
+    done
     ;;
 threads)
     record -o t.raygl -- "$prog" --api glx --threads 2 >prog.log 2>&1 || { cat prog.log; fail "the program failed"; }
