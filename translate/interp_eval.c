@@ -36,10 +36,11 @@ struct interp_eval {
     eval_map map[2][EVAL_TARGETS]; /* [0] glMap1, [1] glMap2 */
 };
 
-/* Values per point and the initial map's single point (GL 1.x table 5.1):
- * colour (1,1,1,1), index 1, normal (0,0,1), texture (0,0,0,1), vertex
- * (0,0,0,1). */
-static const uint32_t comps[EVAL_TARGETS] = {4, 1, 3, 1, 2, 3, 4, 3, 4};
+/* Values per point of target t (format/tables.c, shared with the recorder). */
+static uint32_t comps(int t) { return rgl_map_components(GL_MAP1_COLOR_4 + (uint32_t)t, NULL); }
+
+/* The initial map's single point (GL 1.x table 5.1): colour (1,1,1,1),
+ * index 1, normal (0,0,1), texture (0,0,0,1), vertex (0,0,0,1). */
 static const double initial[EVAL_TARGETS][4] = {
     {1, 1, 1, 1}, {1}, {0, 0, 1}, {0}, {0, 0}, {0, 0, 0}, {0, 0, 0, 1}, {0, 0, 0}, {0, 0, 0, 1},
 };
@@ -97,7 +98,7 @@ int interp_eval_copy(interp *dst, const interp *src)
             const eval_map *m = &src->eval->map[d][t];
             if (!m->pts)
                 continue;
-            size_t n = (size_t)m->order[0] * (size_t)m->order[1] * comps[t];
+            size_t n = (size_t)m->order[0] * (size_t)m->order[1] * comps(t);
             e->map[d][t].pts = tr_realloc(NULL, n * sizeof(double));
             if (!e->map[d][t].pts) { /* that map falls back to its initial point */
                 rc = -1;
@@ -276,19 +277,19 @@ static void eval_map_at(const interp *ip, int two, int t, double u, double v, do
 {
     const eval_map *m = ip->eval ? &ip->eval->map[two][t] : NULL;
     if (!m || !m->pts) {
-        memcpy(out, initial[t], comps[t] * sizeof *out);
+        memcpy(out, initial[t], comps(t) * sizeof *out);
         if (du)
-            for (uint32_t c = 0; c < comps[t]; c++)
+            for (uint32_t c = 0; c < comps(t); c++)
                 du[c] = dv[c] = 0;
         return;
     }
     double uu = (u - m->dom[0][0]) / (m->dom[0][1] - m->dom[0][0]);
     if (!two) {
-        interp_eval_curve(m->pts, m->order[0], comps[t], uu, out);
+        interp_eval_curve(m->pts, m->order[0], comps(t), uu, out);
         return;
     }
     double vv = (v - m->dom[1][0]) / (m->dom[1][1] - m->dom[1][0]);
-    interp_eval_surface(m->pts, m->order[0], m->order[1], comps[t], uu, vv, out, du, dv);
+    interp_eval_surface(m->pts, m->order[0], m->order[1], comps(t), uu, vv, out, du, dv);
 }
 
 /* glEvalCoord1/2 at (u, v) (two: glEvalCoord2). */
@@ -336,7 +337,7 @@ static void eval_coord(interp *ip, int two, double u, double v)
         static const float def[4] = {0, 0, 0, 1};
         eval_map_at(ip, two, t, u, v, val, NULL, NULL);
         for (uint32_t c = 0; c < 4; c++)
-            a->current.texcoord[c] = c < comps[t] ? (float)val[c] : def[c];
+            a->current.texcoord[c] = c < comps(t) ? (float)val[c] : def[c];
         break;
     }
     bool autonormal = two && a->caps[INTERP_CAP_AUTO_NORMAL];

@@ -33,7 +33,7 @@ struct interp {
     gl_state st;
     interp_quadric quadrics[INTERP_QUADRICS]; /* context state, like st */
     interp_textures *tex; /* texture objects and unpack state; NULL: none yet */
-    struct interp_eval *eval; /* evaluator maps and grids; NULL: initial values */
+    struct interp_eval *eval; /* evaluator maps; NULL: all at their initial values */
     scene *scene; /* NULL: state only */
     diag_log *log;
     uint8_t *begin_ok; /* by opcode: allowed between glBegin and glEnd */
@@ -209,7 +209,7 @@ void interp_eval_free(interp *ip);
 /* The Bezier curve of `order` points of k values each, packed, at t in
  * [0, 1] (GL 1.x 5.1, Bernstein polynomials), into out[k]; and the surface of
  * uorder x vorder points (u major) at (u, v), with its partial derivatives
- * in u and v into du and dv (either may be NULL: dv needs du). k <= 4, orders
+ * in u and v into du and dv (either may be NULL). k <= 4, orders
  * 1..INTERP_MAX_EVAL_ORDER (interp_eval.c). */
 void interp_eval_curve(const double *pts, int order, uint32_t k, double t, double *out);
 void interp_eval_surface(const double *pts, int uorder, int vorder, uint32_t k, double u,
