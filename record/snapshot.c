@@ -178,7 +178,9 @@ static void snap_eval(rgl_buf *b)
                 continue;
             glGetMapdv(target, GL_DOMAIN, dom);
             size_t cnt = (size_t)order[0] * (size_t)order[1] * k;
-            GLdouble *pts = rgl_realloc(NULL, cnt * (sizeof *pts + 8));
+            /* Initial maps (most of them) need no allocation. */
+            GLdouble small[2 * 16];
+            GLdouble *pts = cnt <= 16 ? small : rgl_realloc(NULL, cnt * (sizeof *pts + 8));
             if (!pts)
                 continue;
             memcpy(pts, initial[t], k * sizeof *pts);
@@ -198,7 +200,8 @@ static void snap_eval(rgl_buf *b)
                     rgl_emit(b, RGL_OP_Map1d, "eddiiB", target, dom[0], dom[1], (GLint)k,
                              order[0], (const void *)blob, cnt * 8);
             }
-            rgl_free(pts);
+            if (pts != small)
+                rgl_free(pts);
         }
     }
 }
