@@ -143,6 +143,11 @@ const rgl_cmd_info *const *rgl_cmd_info_all(size_t *count);
 /* Number of values a GL parameter name takes (GL_AMBIENT: 4), 0 if unknown. */
 uint32_t rgl_pname_count(uint32_t pname);
 
+/* Values per control point of an evaluator map target (GL_MAP1_* or
+ * GL_MAP2_*, GL 1.x table 5.1: GL_MAP1_VERTEX_4 has 4), 0 for any other
+ * value; *two receives whether it is a GL_MAP2_* target (may be NULL). */
+uint32_t rgl_map_components(uint32_t target, bool *two);
+
 /* The GL_ name of an enum value, or NULL. For values shared by several names
  * (GL_POINTS and GL_ZERO), `hint` picks the family: the argument's name. */
 const char *rgl_enum_name(uint32_t value, const char *hint);

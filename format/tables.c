@@ -111,6 +111,20 @@ uint32_t rgl_pname_count(uint32_t pname)
     }
 }
 
+/* GL_MAP1_COLOR_4 (0x0D90) .. GL_MAP1_VERTEX_4 (0x0D98) and GL_MAP2_* at
+ * 0x0DB0 in the same order: COLOR_4, INDEX, NORMAL, TEXTURE_COORD_1..4,
+ * VERTEX_3, VERTEX_4. */
+uint32_t rgl_map_components(uint32_t target, bool *two)
+{
+    static const uint8_t k[9] = {4, 1, 3, 1, 2, 3, 4, 3, 4};
+    bool is2 = target >= 0x0DB0 && target <= 0x0DB8;
+    if (two)
+        *two = is2;
+    if (target >= 0x0D90 && target <= 0x0D98)
+        return k[target - 0x0D90];
+    return is2 ? k[target - 0x0DB0] : 0;
+}
+
 /* ---- Enum names ------------------------------------------------------------------- */
 
 enum enum_family { FAM_GEN, FAM_PRIM, FAM_BLEND, FAM_BOOL };

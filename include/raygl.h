@@ -172,6 +172,18 @@ RAYGL_API void rayglBufferSubDataARB(GLenum target, GLintptrARB offset, GLsizeip
 RAYGL_API void *rayglMapBufferARB(GLenum target, GLenum access);
 RAYGL_API GLboolean rayglUnmapBufferARB(GLenum target);
 
+/* Evaluator maps: the control points GL reads, copied into the record. */
+RAYGL_API void rayglMap1f(GLenum target, GLfloat u1, GLfloat u2, GLint stride, GLint order,
+                          const GLfloat *points);
+RAYGL_API void rayglMap1d(GLenum target, GLdouble u1, GLdouble u2, GLint stride, GLint order,
+                          const GLdouble *points);
+RAYGL_API void rayglMap2f(GLenum target, GLfloat u1, GLfloat u2, GLint ustride, GLint uorder,
+                          GLfloat v1, GLfloat v2, GLint vstride, GLint vorder,
+                          const GLfloat *points);
+RAYGL_API void rayglMap2d(GLenum target, GLdouble u1, GLdouble u2, GLint ustride, GLint uorder,
+                          GLdouble v1, GLdouble v2, GLint vstride, GLint vorder,
+                          const GLdouble *points);
+
 RAYGL_API GLUquadric *raygluNewQuadric(void);
 RAYGL_API void raygluDeleteQuadric(GLUquadric *quad);
 RAYGL_API void raygluQuadricDrawStyle(GLUquadric *quad, GLenum draw);

@@ -31,6 +31,7 @@
 
 /* GL's own limits, mirrored where the recorder needs them. */
 #define RGL_MAX_CLIENT_ARRAYS 5 /* vertex, normal, color, texcoord, edge flag */
+#define RGL_MAX_EVAL_ORDER 30   /* Mesa's GL_MAX_EVAL_ORDER */
 
 enum rgl_client_array { RGL_CA_VERTEX, RGL_CA_NORMAL, RGL_CA_COLOR, RGL_CA_TEXCOORD, RGL_CA_EDGEFLAG };
 

@@ -28,7 +28,11 @@ static const GLenum caps_off[] = {
     GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_GEN_S,
     GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q, GL_POLYGON_OFFSET_FILL,
     GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT, GL_LINE_SMOOTH, GL_POINT_SMOOTH,
-    GL_POLYGON_SMOOTH, GL_AUTO_NORMAL,
+    GL_POLYGON_SMOOTH, GL_AUTO_NORMAL, GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL,
+    GL_MAP1_TEXTURE_COORD_1, GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3,
+    GL_MAP1_TEXTURE_COORD_4, GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP2_COLOR_4, GL_MAP2_INDEX,
+    GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1, GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3,
+    GL_MAP2_TEXTURE_COORD_4, GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4,
 };
 
 /* Texture parameters read back from GL (the rest come from tracking). */
@@ -138,6 +142,68 @@ static void snap_enables(rgl_buf *b)
             rgl_emit(b, RGL_OP_Enable, "e", caps_off[k]);
     if (!glIsEnabled(GL_DITHER))
         rgl_emit(b, RGL_OP_Disable, "e", GL_DITHER);
+}
+
+/* Evaluators: the grids, and every map that is not GL's initial one (order
+ * 1, domain [0, 1], the initial point), read back with glGetMap. GL_COEFF
+ * gives glMap2's points u major, as the record packs them (Mesa; the order
+ * is checked by tests/record/test_osmesa.c). */
+static void snap_eval(rgl_buf *b)
+{
+    GLdouble g[4] = {0, 1, 0, 1};
+    GLint n[2] = {1, 1};
+    glGetDoublev(GL_MAP1_GRID_DOMAIN, g);
+    glGetIntegerv(GL_MAP1_GRID_SEGMENTS, n);
+    if (n[0] != 1 || g[0] != 0 || g[1] != 1)
+        rgl_emit(b, RGL_OP_MapGrid1d, "idd", n[0], g[0], g[1]);
+    glGetDoublev(GL_MAP2_GRID_DOMAIN, g);
+    glGetIntegerv(GL_MAP2_GRID_SEGMENTS, n);
+    if (n[0] != 1 || n[1] != 1 || g[0] != 0 || g[1] != 1 || g[2] != 0 || g[3] != 1)
+        rgl_emit(b, RGL_OP_MapGrid2d, "iddidd", n[0], g[0], g[1], n[1], g[2], g[3]);
+
+    static const double initial[9][4] = {
+        {1, 1, 1, 1}, {1}, {0, 0, 1}, {0}, {0, 0}, {0, 0, 0}, {0, 0, 0, 1}, {0, 0, 0}, {0, 0, 0, 1},
+    };
+    for (int two = 0; two < 2; two++) {
+        for (GLenum t = 0; t < 9; t++) {
+            GLenum target = (two ? GL_MAP2_COLOR_4 : GL_MAP1_COLOR_4) + t;
+            uint32_t k = rgl_map_components(target, NULL);
+            GLint order[2] = {0, 1};
+            GLdouble dom[4] = {0, 1, 0, 1};
+            glGetMapiv(target, GL_ORDER, order);
+            if (!two)
+                order[1] = 1;
+            if (order[0] < 1 || order[0] > RGL_MAX_EVAL_ORDER || order[1] < 1 ||
+                order[1] > RGL_MAX_EVAL_ORDER)
+                continue;
+            glGetMapdv(target, GL_DOMAIN, dom);
+            size_t cnt = (size_t)order[0] * (size_t)order[1] * k;
+            /* Initial maps (most of them) need no allocation. */
+            GLdouble small[2 * 16];
+            GLdouble *pts = cnt <= 16 ? small : rgl_realloc(NULL, cnt * (sizeof *pts + 8));
+            if (!pts)
+                continue;
+            memcpy(pts, initial[t], k * sizeof *pts);
+            glGetMapdv(target, GL_COEFF, pts);
+            bool initial_map = cnt == k && dom[0] == 0 && dom[1] == 1 &&
+                               (!two || (dom[2] == 0 && dom[3] == 1)) &&
+                               memcmp(pts, initial[t], k * sizeof *pts) == 0;
+            if (!initial_map && dom[0] != dom[1] && (!two || dom[2] != dom[3])) {
+                uint8_t *blob = (uint8_t *)(pts + cnt), *p = blob;
+                for (size_t i = 0; i < cnt; i++)
+                    p = rgl_put_d(p, pts[i]);
+                if (two)
+                    rgl_emit(b, RGL_OP_Map2d, "eddiiddiiB", target, dom[0], dom[1],
+                             order[1] * (GLint)k, order[0], dom[2], dom[3], (GLint)k, order[1],
+                             (const void *)blob, cnt * 8);
+                else
+                    rgl_emit(b, RGL_OP_Map1d, "eddiiB", target, dom[0], dom[1], (GLint)k,
+                             order[0], (const void *)blob, cnt * 8);
+            }
+            if (pts != small)
+                rgl_free(pts);
+        }
+    }
 }
 
 static void snap_raster(rgl_buf *b)
@@ -311,6 +377,7 @@ bool rgl_snapshot_take(rgl_stream *s, rgl_buf *out)
     snap_current(out);
     snap_materials(out);
     snap_enables(out);
+    snap_eval(out);
     snap_raster(out);
     snap_texenv(out);
     rgl_emit(out, RGL_OP_ListBase, "e", (uint32_t)get_i(GL_LIST_BASE));

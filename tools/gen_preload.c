@@ -110,7 +110,8 @@ static int header(void)
  * libGL directly, which tests/record's `forward-symbols` test rejects. */
 static const char *const forward_extra[] = {
     "glGetBooleanv", "glGetBufferParameteriv", "glGetDoublev", "glGetError", "glGetFloatv",
-    "glGetIntegerv", "glGetLightfv", "glGetMaterialfv", "glGetPointerv", "glGetString",
+    "glGetIntegerv", "glGetLightfv", "glGetMapdv", "glGetMapiv", "glGetMaterialfv",
+    "glGetPointerv", "glGetString",
     "glGetTexEnvfv", "glGetTexEnviv", "glGetTexGenfv", "glGetTexGeniv", "glGetTexImage",
     "glGetTexLevelParameteriv", "glGetTexParameterfv", "glGetTexParameteriv", "glIsBuffer",
     "glIsEnabled", "glIsList", "glIsTexture", "glPixelStoref", "glPixelTransferf",

@@ -47,7 +47,8 @@
     X(NOTE_CAMERA, "approximated: projection matrix is not a camera POV-Ray can express (default camera used)") \
     X(NOTE_PROJECTIVE_MODELVIEW, "approximated: projective modelview applied to the vertices") \
     X(NOTE_SPOT_SPECULAR, "approximated: a spot light whose specular colour differs from its diffuse colour makes highlights as if they were equal") \
-    X(NOTE_NORMALS, "approximated: lit normals that are not unit length in eye space (GL_NORMALIZE off) are used normalised")
+    X(NOTE_NORMALS, "approximated: lit normals that are not unit length in eye space (GL_NORMALIZE off) are used normalised") \
+    X(NOTE_EVAL_INDEX, "not translated: colour-index evaluator maps (GL_MAP1_INDEX, GL_MAP2_INDEX)")
 
 typedef enum diag_kind {
 #define DIAG_ENUM_(name, text) DIAG_##name,

@@ -33,7 +33,7 @@ static bool allowed_in_begin(const char *handler)
         "vertex",       "normal",    "color",     "texcoord",       "edgeflag",   "end",
         "material",     "calllist",  "calllists", "arrayelement",   "resolvedmatrix",
         "arraydata",    "framebegin", "frameend", "swapbuffers",
-        "snapshot",     "notrecorded",
+        "snapshot",     "notrecorded", "evalcoord1", "evalcoord2", "evalpoint1", "evalpoint2",
     };
     for (size_t i = 0; i < sizeof ok / sizeof ok[0]; i++)
         if (strcmp(handler, ok[i]) == 0)
@@ -99,6 +99,10 @@ void interp_default_state(gl_state *st)
     a->current.edge_flag = true;
     memcpy(a->caps, cap_defaults, sizeof a->caps);
 
+    for (int d = 0; d < 2; d++) { /* glMapGrid: 1 partition of [0, 1] */
+        a->eval.grid_n[d][0] = a->eval.grid_n[d][1] = 1;
+        a->eval.grid[d][0][1] = a->eval.grid[d][1][1] = 1;
+    }
     a->lighting.shade_model = GL_SMOOTH;
     for (int f = 0; f < 2; f++) {
         gl_material *m = &a->lighting.material[f];
@@ -198,6 +202,7 @@ void interp_destroy(interp *ip)
     tr_free(ip->edge);
     tr_free(ip->clipv);
     interp_textures_free(ip);
+    interp_eval_free(ip);
     tr_free(ip);
 }
 
@@ -206,6 +211,7 @@ void interp_reset(interp *ip)
     interp_default_state(&ip->st);
     memset(ip->quadrics, 0, sizeof ip->quadrics);
     interp_textures_free(ip);
+    interp_eval_free(ip);
     ip->in_begin = false;
     ip->camera_fixed = false;
     ip->frame_begin = false;
@@ -221,6 +227,8 @@ void interp_copy_state(interp *dst, const interp *src)
     if (interp_textures_copy(dst, src) != 0 && dst->scene)
         dst->scene->failed = true;
     if (!interp_lists_copy(dst, src) && dst->scene)
+        dst->scene->failed = true;
+    if (interp_eval_copy(dst, src) != 0 && dst->scene)
         dst->scene->failed = true;
 }
 
@@ -549,6 +557,8 @@ void interp_popattrib(interp *ip, const rgl_cmd *cmd)
         a->hint = s->hint;
     if (m & GL_TEXTURE_BIT)
         a->texture = s->texture;
+    if (m & GL_EVAL_BIT)
+        a->eval = s->eval;
     for (int i = 0; i < INTERP_CAP_COUNT; i++)
         if ((m & GL_ENABLE_BIT) || (m & cap_groups[i]))
             a->caps[i] = s->caps[i];

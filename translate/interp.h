@@ -23,6 +23,7 @@
  *   interp_array.c   vertex arrays and their draws, buffer objects
  *   interp_bounds.c  the frame's budget (a frame that would cost more is
  *                    cut) and the parts a damaged trace left out of it
+ *   interp_eval.c    evaluators: maps, grids, glEvalCoord, glEvalMesh
  *
  * Not thread-safe; one interpreter per worker thread.
  */
@@ -48,6 +49,7 @@
 #define INTERP_MAX_VIEWPORT 16384 /* Mesa's GL_MAX_VIEWPORT_DIMS */
 #define INTERP_MAX_LIST_NESTING 64 /* GL_MAX_LIST_NESTING (GL 1.x table 6.28) */
 #define INTERP_MAX_TEXTURE_SIZE 16384 /* Mesa's GL_MAX_TEXTURE_SIZE */
+#define INTERP_MAX_EVAL_ORDER 30 /* Mesa's GL_MAX_EVAL_ORDER */
 
 /* The frame budget (docs/mapping.md, "Bounds"): what one frame may cost,
  * display-list bodies and state snapshots included, so that a few hundred
@@ -149,6 +151,10 @@ typedef struct gl_attribs {
         double eye_plane[4][4];   /* GL_EYE_PLANE, times the inverse modelview
                                      current at the glTexGen call */
     } texture; /* GL_TEXTURE_BIT */
+    struct {
+        int32_t grid_n[2][2];    /* [dimension - 1][u, v]: glMapGrid's partitions */
+        double grid[2][2][2];    /* [dimension - 1][u, v][start, end] */
+    } eval; /* GL_EVAL_BIT (the maps themselves are not attributes) */
 } gl_attribs;
 
 typedef struct gl_attrib_entry {

@@ -28,11 +28,13 @@ typedef struct interp_quadric {
 #define INTERP_QUADRICS 64
 
 typedef struct interp_textures interp_textures; /* interp_texture.c */
+struct interp_eval;                             /* interp_eval.c */
 
 struct interp {
     gl_state st;
     interp_quadric quadrics[INTERP_QUADRICS]; /* context state, like st */
     interp_textures *tex; /* texture objects and unpack state; NULL: none yet */
+    struct interp_eval *eval; /* evaluator maps; NULL: all at their initial values */
     scene *scene; /* NULL: state only */
     diag_log *log;
     uint8_t *begin_ok; /* by opcode: allowed between glBegin and glEnd */
@@ -45,7 +47,8 @@ struct interp {
     bool cleared;        /* the frame cleared the colour buffer */
     uint32_t painter;    /* draws without a depth test since the frame's start
                             or last clear (interp_prim.c, painter_shift) */
-    uint64_t shape_facets; /* facets of tessellated shapes in this frame (interp_shape.c) */
+    uint64_t shape_facets; /* facets of tessellated shapes and evaluator mesh points in this
+                              frame (interp_shape.c, interp_eval.c) */
 
     /* The frame's budget and completeness (interp_bounds.c). */
     uint64_t cmds_run, assembled, texels;
@@ -236,6 +239,21 @@ scene_look interp_current_look(interp *ip);
  * emptied by a reset, freed with the interpreter. */
 int interp_textures_copy(interp *dst, const interp *src);
 void interp_textures_free(interp *ip);
+
+/* Evaluator state (interp_eval.c): copied with the context state (-1 on
+ * allocation failure, the maps not copied then at their initial value),
+ * freed by a reset and with the interpreter. */
+int interp_eval_copy(interp *dst, const interp *src);
+void interp_eval_free(interp *ip);
+
+/* The Bezier curve of `order` points of k values each, packed, at t in
+ * [0, 1] (GL 1.x 5.1, Bernstein polynomials), into out[k]; and the surface of
+ * uorder x vorder points (u major) at (u, v), with its partial derivatives
+ * in u and v into du and dv (either may be NULL). k <= 4, orders
+ * 1..INTERP_MAX_EVAL_ORDER (interp_eval.c). */
+void interp_eval_curve(const double *pts, int order, uint32_t k, double t, double *out);
+void interp_eval_surface(const double *pts, int uorder, int vorder, uint32_t k, double u,
+                         double v, double *out, double *du, double *dv);
 
 /* The texture index (in the scene) that a draw with the current state
  * samples, or -1 (interp_texture.c). */

@@ -14,6 +14,8 @@
  *   --frames N          frames to draw (default 3)
  *   --threads 2         two threads, each with its own window and context
  *   --teapot            GLUT: each frame is one glutSolidTeapot instead
+ *   --nurbs             each frame is one GLU NURBS surface instead (GLU
+ *                       draws it through evaluators: glMap2f, glEvalMesh2)
  *   --hang FILE         after the frames, start one more (glBegin, two
  *                       vertices), create FILE, and wait to be killed
  *   --exec-child        after frame 0, fork; the child runs this program
@@ -25,7 +27,7 @@
  *                       ended early leaves none)
  *   --ignore-term       ignore SIGTERM (raygl record --exit then kills)
  *   --unrecorded        each frame also makes calls RayGL passes through
- *                       unrecorded (glRasterPos2i, glMap1f, two
+ *                       unrecorded (glRasterPos2i, glPixelZoom, two
  *                       glutBitmapCharacter with --api glut,
  *                       glActiveTexture found with
  *                       glXGetProcAddressARB) and queries (glGetError,
@@ -34,6 +36,7 @@
 #include <EGL/egl.h>
 #include <GL/freeglut.h>
 #include <GL/gl.h>
+#include <GL/glu.h>
 #include <GL/glx.h>
 #include <X11/Xlib.h>
 #include <dlfcn.h>
@@ -58,9 +61,9 @@ typedef struct gl_fns {
 
 static struct {
     const char *api, *lookup, *hang;
-    int single, frames, threads, teapot, exec_child, fork_child, delay_ms, unrecorded;
+    int single, frames, threads, teapot, exec_child, fork_child, delay_ms, unrecorded, nurbs;
     const char *self, *done;
-} opt = {"glx", "direct", NULL, 0, 3, 1, 0, 0, 0, 0, 0, NULL, NULL};
+} opt = {"glx", "direct", NULL, 0, 3, 1, 0, 0, 0, 0, 0, 0, NULL, NULL};
 
 static gl_fns gl;
 
@@ -121,9 +124,8 @@ static void load_fns(void)
 /* Calls RayGL does not record, and queries. */
 static void unrecorded_calls(void)
 {
-    static const GLfloat pts[6] = {0, 0, 0, 1, 1, 0};
     glRasterPos2i(0, 0);
-    glMap1f(GL_MAP1_VERTEX_3, 0, 1, 3, 2, pts);
+    glPixelZoom(1.0f, 1.0f);
     if (strcmp(opt.api, "glut") == 0) { /* freeglut exits without glutInit */
         glutBitmapCharacter(GLUT_BITMAP_8_BY_13, 'R');
         glutBitmapCharacter(GLUT_BITMAP_8_BY_13, 'G');
@@ -148,6 +150,25 @@ static void draw(int frame, int thread)
     if (opt.teapot) {
         glColor3f(1, 0.5f, 0);
         glutSolidTeapot(0.5);
+        return;
+    }
+    if (opt.nurbs) {
+        /* A bicubic Bezier patch as a NURBS surface, a dome over [-0.6, 0.6]^2. */
+        static GLfloat knots[8] = {0, 0, 0, 0, 1, 1, 1, 1};
+        GLfloat ctl[4][4][3];
+        for (int u = 0; u < 4; u++)
+            for (int v = 0; v < 4; v++) {
+                ctl[u][v][0] = 0.4f * ((float)u - 1.5f);
+                ctl[u][v][1] = 0.4f * ((float)v - 1.5f);
+                ctl[u][v][2] = (u == 1 || u == 2) && (v == 1 || v == 2) ? 0.6f : 0.0f;
+            }
+        GLUnurbsObj *n = gluNewNurbsRenderer();
+        gluNurbsProperty(n, GLU_SAMPLING_TOLERANCE, 25.0f);
+        glColor3f(1, 0.5f, 0);
+        gluBeginSurface(n);
+        gluNurbsSurface(n, 8, knots, 8, knots, 4 * 3, 3, &ctl[0][0][0], 4, 4, GL_MAP2_VERTEX_3);
+        gluEndSurface(n);
+        gluDeleteNurbsRenderer(n);
         return;
     }
     gl.Begin(GL_TRIANGLES);
@@ -373,6 +394,8 @@ int main(int argc, char **argv)
             opt.unrecorded = 1;
         else if (strcmp(a, "--teapot") == 0)
             opt.teapot = 1;
+        else if (strcmp(a, "--nurbs") == 0)
+            opt.nurbs = 1;
         else if (strcmp(a, "--exec-child") == 0)
             opt.exec_child = 1;
         else if (strcmp(a, "--fork-child") == 0)

@@ -15,6 +15,8 @@
 #   unrecorded               calls passed through unrecorded: counted per
 #                            frame (@NotRecorded), reported by raygl2pov;
 #                            queries not counted
+#   nurbs                    3 GLU NURBS surfaces: GLU draws them through
+#                            evaluators, recorded and translated as meshes
 #   threads                  two threads, two contexts: two streams of 3
 #   kill                     SIGKILL mid-frame: the complete frames read
 #                            and translate
@@ -154,7 +156,7 @@ unrecorded)
     triangles t.raygl 3
     # Counted per frame, the lookup's function too; queries never.
     expect t.raygl '@NotRecorded(name="glRasterPos2i", count=1)' 3
-    expect t.raygl '@NotRecorded(name="glMap1f", count=1)' 3
+    expect t.raygl '@NotRecorded(name="glPixelZoom", count=1)' 3
     expect t.raygl '@NotRecorded(name="glutBitmapCharacter", count=2)' 3
     expect t.raygl '@NotRecorded(name="glActiveTexture", count=1)' 3
     expect t.raygl '@NotRecorded(name="glutInit", count=1)' 1
@@ -180,6 +182,15 @@ unrecorded)
     dump s.raygl | awk '/^frame / { if (n++ && last !~ /@Snapshot/) bad = 1 }
         /^  [0-9]/ { last = $0 } END { exit bad || last !~ /@Snapshot/ }' ||
         fail "@Snapshot is not each frame's last command"
+nurbs)
+    record -o t.raygl -- "$prog" --api glx --nurbs >prog.log 2>&1 || { cat prog.log; fail "the program failed"; }
+    expect t.raygl '^frame ' 3
+    [ "$(count t.raygl 'glMap2f(target=GL_MAP2_VERTEX_3')" -ge 3 ] || fail "no glMap2f per surface"
+    [ "$(count t.raygl 'glEvalMesh2(\|glEvalCoord2f(')" -ge 3 ] || fail "no evaluation"
+    translate t.raygl 3
+    for f in t-pov/frame-*.pov; do
+        grep -q '^mesh2{' "$f" || fail "$f: the surface drew nothing"
+    done
     ;;
 threads)
     record -o t.raygl -- "$prog" --api glx --threads 2 >prog.log 2>&1 || { cat prog.log; fail "the program failed"; }

@@ -4,7 +4,9 @@
  * the table with random valid arguments, with and without an index, with
  * command and byte resources, plus bare command sequences. Deterministic:
  * the same binary writes the same files. The files are checked in; rerun
- * this only to refresh them (and review the diff). The corpus also holds
+ * this only to refresh them (and review the diff). eval-*.bin hold evaluator
+ * sequences with valid maps (random blobs rarely have a map's size), so the
+ * fuzzers start from meshes that draw. The corpus also holds
  * recorded-*.bin, traces written by libraygl for the image tests.
  */
 #include "testutil.h"
@@ -80,6 +82,121 @@ out:
     return rc;
 }
 
+/* ---- Evaluators: maps whose blobs fit their orders ------------------------------- */
+
+static size_t eval_len;
+
+/* Appends command `op` with scalars v (in row order, skipping the blob) and,
+ * for a map row, a blob of n little-endian floats (or doubles) from pts. */
+static void eval_cmd(uint32_t op, const double *v, size_t nv, const double *pts, size_t n)
+{
+    static rgl_cmd cmd;
+    static uint8_t blob[4096];
+    if (rgl_cmd_init(&cmd, op) != RGL_OK)
+        return;
+    size_t used = 0;
+    for (uint32_t k = 0; k < cmd.nargs; k++) {
+        rgl_arg *a = &cmd.arg[k];
+        if (a->kind == RGL_ARG_BLOB) {
+            bool dbl = cmd.arg[1].type == RGL_T_d;
+            for (size_t i = 0; i < n; i++) {
+                if (dbl)
+                    rgl_put_d(blob + 8 * i, pts[i]);
+                else
+                    rgl_put_f(blob + 4 * i, (float)pts[i]);
+            }
+            a->bytes = blob;
+            a->count = (uint32_t)(n * (dbl ? 8 : 4));
+        } else if (a->kind == RGL_ARG_ARRAY) {
+            static double arr[RGL_MAX_ARGS][4];
+            for (uint32_t c = 0; c < a->count; c++)
+                arr[k][c] = used < nv ? v[used++] : 0;
+            a->array = arr[k];
+        } else if (a->type == RGL_T_f || a->type == RGL_T_d) {
+            a->v.f = used < nv ? v[used++] : 0;
+        } else if (a->type == RGL_T_i) {
+            a->v.i = used < nv ? (int64_t)v[used++] : 0;
+        } else {
+            a->v.u = used < nv ? (uint64_t)v[used++] : 0;
+        }
+    }
+    eval_len += rgl_cmd_encode(&cmd, seq + eval_len, sizeof seq - eval_len);
+}
+
+#define EV(name, ...)                                                                   \
+    eval_cmd(RGL_OP_##name, (const double[]){__VA_ARGS__},                              \
+             sizeof((const double[]){__VA_ARGS__}) / sizeof(double), NULL, 0)
+
+static int write_eval(const char *dir)
+{
+    double cubic[4 * 3], patch[4 * 4 * 3], col[2 * 2 * 4], tex[2 * 2 * 2], w4[3 * 4];
+    for (int i = 0; i < 4; i++) {
+        cubic[3 * i] = i;
+        cubic[3 * i + 1] = (i % 3) * 0.5;
+        cubic[3 * i + 2] = -1;
+        for (int j = 0; j < 4; j++) {
+            patch[12 * i + 3 * j] = i - 1.5;
+            patch[12 * i + 3 * j + 1] = j - 1.5;
+            patch[12 * i + 3 * j + 2] = (i * j) % 3 * 0.4;
+        }
+    }
+    for (int i = 0; i < 16; i++)
+        col[i] = (i % 5) * 0.25;
+    for (int i = 0; i < 8; i++)
+        tex[i] = (i % 3) * 0.5;
+    for (int i = 0; i < 12; i++)
+        w4[i] = i % 4 == 3 ? 1 + i / 4 : i * 0.3;
+    int rc = 0;
+
+    eval_len = 0;
+    EV(Ortho, -3, 3, -3, 3, -5, 5);
+    eval_cmd(RGL_OP_Map2f, (const double[]){0x0DB7, 0, 1, 12, 4, 0, 1, 3, 4}, 9, patch, 48);
+    eval_cmd(RGL_OP_Map2d, (const double[]){0x0DB0, 0, 1, 8, 2, 0, 1, 4, 2}, 9, col, 16);
+    eval_cmd(RGL_OP_Map2f, (const double[]){0x0DB4, 0, 1, 4, 2, 0, 1, 2, 2}, 9, tex, 8);
+    EV(Enable, 0x0DB7);
+    EV(Enable, 0x0DB0);
+    EV(Enable, 0x0DB4);
+    EV(Enable, 0x0D80); /* GL_AUTO_NORMAL */
+    EV(Enable, 0x0B50); /* GL_LIGHTING */
+    EV(MapGrid2f, 6, 0, 1, 5, 0, 1);
+    EV(EvalMesh2, 0x1B02, 0, 6, 0, 5);
+    EV(MapGrid2d, 3, 0.25, 0.75, 2, 0, 1);
+    EV(EvalMesh2, 0x1B01, 0, 3, 0, 2);
+    EV(EvalMesh2, 0x1B00, 1, 2, 0, 2);
+    EV(Begin, 0x0008); /* GL_QUAD_STRIP */
+    EV(EvalCoord2f, 0, 0);
+    EV(EvalCoord2fv, 0, 1);
+    EV(EvalCoord2d, 1, 0);
+    EV(EvalCoord2dv, 1, 1);
+    EV(EvalPoint2, 1, 1);
+    EV(EvalPoint2, 2, 1);
+    eval_cmd(RGL_OP_End, NULL, 0, NULL, 0);
+    rc |= write_file(dir, "eval-map2.bin", seq, eval_len);
+
+    eval_len = 0;
+    EV(Ortho, -3, 3, -3, 3, -5, 5);
+    eval_cmd(RGL_OP_Map1f, (const double[]){0x0D97, 2, 4, 3, 4}, 5, cubic, 12);
+    eval_cmd(RGL_OP_Map1d, (const double[]){0x0D98, -1, 1, 4, 3}, 5, w4, 12);
+    eval_cmd(RGL_OP_Map1f, (const double[]){0x0D90, 0, 1, 4, 2}, 5, col, 8);
+    EV(Enable, 0x0D97);
+    EV(Enable, 0x0D90);
+    EV(Enable, 0x0D91); /* GL_MAP1_INDEX: noted, not drawn */
+    EV(MapGrid1f, 8, 2, 4);
+    EV(EvalMesh1, 0x1B01, 0, 8);
+    EV(Enable, 0x0D98);
+    EV(MapGrid1d, 4, -1, 1);
+    EV(EvalMesh1, 0x1B00, 0, 4);
+    EV(Begin, 0x0003); /* GL_LINE_STRIP */
+    EV(EvalCoord1f, 2);
+    EV(EvalCoord1fv, 3);
+    EV(EvalCoord1d, 3.5);
+    EV(EvalCoord1dv, 4);
+    EV(EvalPoint1, 1);
+    eval_cmd(RGL_OP_End, NULL, 0, NULL, 0);
+    rc |= write_file(dir, "eval-map1.bin", seq, eval_len);
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
     rng r = {0x5eed5eed12345678ull};
@@ -101,5 +218,6 @@ int main(int argc, char **argv)
         snprintf(name, sizeof name, "seq-%02d.bin", k);
         rc |= write_file(argv[1], name, seq, len);
     }
+    rc |= write_eval(argv[1]);
     return rc;
 }

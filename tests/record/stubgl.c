@@ -263,6 +263,8 @@ void glGetFloatv(GLenum pname, GLfloat *v) { (void)pname, (void)v; }
 void glGetDoublev(GLenum pname, GLdouble *v) { (void)pname, (void)v; }
 void glGetBooleanv(GLenum pname, GLboolean *v) { (void)pname, (void)v; }
 void glGetLightfv(GLenum l, GLenum pname, GLfloat *v) { (void)l, (void)pname, (void)v; }
+void glGetMapdv(GLenum t, GLenum q, GLdouble *v) { (void)t, (void)q, (void)v; }
+void glGetMapiv(GLenum t, GLenum q, GLint *v) { (void)t, (void)q, (void)v; }
 void glGetMaterialfv(GLenum f, GLenum pname, GLfloat *v) { (void)f, (void)pname, (void)v; }
 void glGetTexGenfv(GLenum c, GLenum pname, GLfloat *v) { (void)c, (void)pname, (void)v; }
 void glGetTexGeniv(GLenum c, GLenum pname, GLint *v) { (void)c, (void)pname, (void)v; }
@@ -357,3 +359,30 @@ unsigned char stub_mapped[4096];
     }
 STUB_BUFFERS()
 STUB_BUFFERS(ARB)
+
+/* ---- Evaluator maps ---------------------------------------------------------------- */
+
+void glMap1f(GLenum target, GLfloat u1, GLfloat u2, GLint stride, GLint order,
+             const GLfloat *points)
+{
+    LOGV("glMap1f", target, u1, u2, stride, order);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], points);
+}
+void glMap1d(GLenum target, GLdouble u1, GLdouble u2, GLint stride, GLint order,
+             const GLdouble *points)
+{
+    LOGV("glMap1d", target, u1, u2, stride, order);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], points);
+}
+void glMap2f(GLenum target, GLfloat u1, GLfloat u2, GLint ustride, GLint uorder, GLfloat v1,
+             GLfloat v2, GLint vstride, GLint vorder, const GLfloat *points)
+{
+    LOGV("glMap2f", target, u1, u2, ustride, uorder, v1, v2, vstride, vorder);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], points);
+}
+void glMap2d(GLenum target, GLdouble u1, GLdouble u2, GLint ustride, GLint uorder, GLdouble v1,
+             GLdouble v2, GLint vstride, GLint vorder, const GLdouble *points)
+{
+    LOGV("glMap2d", target, u1, u2, ustride, uorder, v1, v2, vstride, vorder);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], points);
+}

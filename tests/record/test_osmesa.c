@@ -445,6 +445,69 @@ static void test_snapshots(const char *path)
     rgl_reader_destroy(r);
 }
 
+/* Evaluator state set in one frame reaches the next frame's snapshot: the
+ * map enables, the grids and each map that is not GL's initial one, its
+ * points read back with glGetMap and packed u major as glMap2 records
+ * them. */
+static void test_eval_snapshot(const char *path)
+{
+    CHECK(rayglRecordOpen(path) == 0);
+    GLfloat p2[2][3][3];
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 3; j++)
+            for (int c = 0; c < 3; c++)
+                p2[i][j][c] = (GLfloat)(100 * i + 10 * j + c);
+    static const GLfloat col[2][4] = {{1, 0, 0, 1}, {0, 0, 1, 0.5f}};
+    rayglMap2f(GL_MAP2_VERTEX_3, 0, 2, 9, 2, -1, 1, 3, 3, &p2[0][0][0]);
+    rayglMap1f(GL_MAP1_COLOR_4, 1, 3, 4, 2, &col[0][0]);
+    rayglEnable(GL_MAP2_VERTEX_3);
+    rayglEnable(GL_AUTO_NORMAL);
+    rayglMapGrid2f(5, 0, 2, 4, -1, 1);
+    rayglutSwapBuffers();
+    rayglEvalMesh2(GL_FILL, 0, 5, 0, 4);
+    rayglutSwapBuffers();
+    rayglRecordClose();
+    rayglDisable(GL_MAP2_VERTEX_3);
+    rayglDisable(GL_AUTO_NORMAL);
+
+    rgl_reader *r = trace_open(path);
+    if (!r)
+        return;
+    rgl_frame_info fi;
+    if (CHECK(rgl_reader_frame_count(r) == 2) &&
+        CHECK(rgl_reader_frame(r, 1, &fi, NULL) == RGL_OK) && CHECK(fi.state != 0)) {
+        trace_cmds s = trace_resource_cmds(r, fi.state);
+        CHECK(trace_cmds_find(&s, 0, "glEnable(cap=GL_MAP2_VERTEX_3)") >= 0);
+        CHECK(trace_cmds_find(&s, 0, "glEnable(cap=GL_AUTO_NORMAL)") >= 0);
+        CHECK(trace_cmds_find(&s, 0, "glMapGrid2d(un=5, u1=0, u2=2, vn=4, v1=-1, v2=1)") >= 0);
+        CHECK(trace_cmds_find(&s, 0,
+                              "glMap2d(target=GL_MAP2_VERTEX_3, u1=0, u2=2, ustride=9, uorder=2, "
+                              "v1=-1, v2=1, vstride=3, vorder=3, points=<144 bytes>)") >= 0);
+        CHECK(trace_cmds_find(&s, 0, "glMap1d(target=GL_MAP1_COLOR_4, u1=1, u2=3, stride=4, "
+                                     "order=2, points=<64 bytes>)") >= 0);
+        CHECK(trace_cmds_count(&s, RGL_OP_Map2d) == 1 && trace_cmds_count(&s, RGL_OP_Map1d) == 1);
+        /* The points: the resource's glMap2d blob, value by value. */
+        rgl_resource res;
+        if (CHECK(rgl_reader_resource(r, fi.state, &res, NULL) == RGL_OK)) {
+            rgl_cmd_iter it;
+            static rgl_cmd cmd;
+            rgl_cmd_iter_init(&it, res.data, res.size, res.data_offset);
+            bool found = false;
+            while (rgl_cmd_next(&it, &cmd) == RGL_OK) {
+                if (cmd.opcode != RGL_OP_Map2d || cmd.arg[9].count != 18 * 8)
+                    continue;
+                found = true;
+                for (int k = 0; k < 18; k++)
+                    CHECK(rgl_bits_f64(rgl_get_u64(cmd.arg[9].bytes + 8 * k)) ==
+                          (&p2[0][0][0])[k]);
+            }
+            CHECK(found);
+        }
+        trace_cmds_free(&s);
+    }
+    rgl_reader_destroy(r);
+}
+
 int main(void)
 {
     OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 16, 0, 0, NULL);
@@ -453,8 +516,9 @@ int main(void)
     char dir[] = "/tmp/raygl-osmesa-XXXXXX";
     if (!CHECK(mkdtemp(dir) != NULL))
         return check_exit();
-    char p1[64], p2[64], p3[64], p4[64];
+    char p1[64], p2[64], p3[64], p4[64], p5[64];
     snprintf(p4, sizeof p4, "%s/snapshots.raygl", dir);
+    snprintf(p5, sizeof p5, "%s/eval.raygl", dir);
     snprintf(p1, sizeof p1, "%s/two.raygl", dir);
     snprintf(p2, sizeof p2, "%s/paper.raygl", dir);
     snprintf(p3, sizeof p3, "%s/texture.raygl", dir);
@@ -462,6 +526,7 @@ int main(void)
     test_paper_example(p2);
     test_texture_updates(p3);
     test_snapshots(p4);
+    test_eval_snapshot(p5);
     /* This Mesa faults destroying a context with drawing still queued. */
     glFinish();
     OSMesaDestroyContext(ctx);
@@ -470,6 +535,7 @@ int main(void)
         unlink(p2);
         unlink(p3);
         unlink(p4);
+        unlink(p5);
         rmdir(dir);
     }
     return check_exit();

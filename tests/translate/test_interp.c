@@ -12,6 +12,7 @@
 #include "check.h"
 #include "frame.h"
 #include "interp.h"
+#include "interp_internal.h"
 #include "talloc.h"
 #include "scenes.h"
 #include "tracegen.h"
@@ -941,6 +942,218 @@ static void test_teapot(void)
     interp_destroy(ip);
 }
 
+/* ---- Evaluators ------------------------------------------------------------------ */
+
+/* The Bernstein maths of interp_eval.c against values worked by hand. */
+static void test_eval_maths(void)
+{
+    /* Cubic (0,0) (1,2) (3,2) (4,0): at 1/2 the weights are 1/8 3/8 3/8 1/8,
+     * at 1/4 27/64 27/64 9/64 1/64. */
+    static const double cubic[4][3] = {{0, 0, 0}, {1, 2, 0}, {3, 2, 0}, {4, 0, 0}};
+    double out[4];
+    interp_eval_curve(&cubic[0][0], 4, 3, 0.5, out);
+    CHECK_NEAR(out[0], 2.0, 1e-12);
+    CHECK_NEAR(out[1], 1.5, 1e-12);
+    interp_eval_curve(&cubic[0][0], 4, 3, 0.25, out);
+    CHECK_NEAR(out[0], 58.0 / 64, 1e-12);
+    CHECK_NEAR(out[1], 72.0 / 64, 1e-12);
+    interp_eval_curve(&cubic[0][0], 4, 3, 1.0, out);
+    CHECK_NEAR(out[0], 4.0, 1e-12);
+    /* One point: a constant. */
+    static const double one[4] = {0.1, 0.2, 0.3, 0.4};
+    interp_eval_curve(one, 1, 4, 0.7, out);
+    CHECK_NEAR(out[3], 0.4, 0);
+    /* Bilinear patch, u major: p(u, v) = (u, v, u v); the partials at
+     * (1/2, 1/2) are (1, 0, 1/2) and (0, 1, 1/2). */
+    static const double bil[2][2][3] = {{{0, 0, 0}, {0, 1, 0}}, {{1, 0, 0}, {1, 1, 1}}};
+    double du[4], dv[4];
+    interp_eval_surface(&bil[0][0][0], 2, 2, 3, 0.5, 0.5, out, du, dv);
+    CHECK_NEAR(out[0], 0.5, 1e-12);
+    CHECK_NEAR(out[1], 0.5, 1e-12);
+    CHECK_NEAR(out[2], 0.25, 1e-12);
+    CHECK_NEAR(du[0], 1, 1e-12);
+    CHECK_NEAR(du[1], 0, 1e-12);
+    CHECK_NEAR(du[2], 0.5, 1e-12);
+    CHECK_NEAR(dv[0], 0, 1e-12);
+    CHECK_NEAR(dv[1], 1, 1e-12);
+    CHECK_NEAR(dv[2], 0.5, 1e-12);
+    /* Biquadratic, 2 x 3 in u x v: the v curve of each row, then along u. */
+    static const double bq[2][3][1] = {{{0}, {4}, {0}}, {{2}, {2}, {2}}};
+    interp_eval_surface(&bq[0][0][0], 2, 3, 1, 0.25, 0.5, out, NULL, NULL);
+    CHECK_NEAR(out[0], 0.75 * 2 + 0.25 * 2, 1e-12); /* row 0 at v 1/2: 2; row 1: 2 */
+}
+
+/* glMap1f's blob: the packed little-endian floats. */
+static void put_floats(uint8_t *b, const float *f, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        uint32_t u;
+        memcpy(&u, &f[i], 4);
+        for (int k = 0; k < 4; k++)
+            b[4 * i + k] = (uint8_t)(u >> (8 * k));
+    }
+}
+
+static void map1f(seq *s, GLenum target, double u1, double u2, int stride, int order,
+                  const float *pts, size_t n)
+{
+    uint8_t b[4 * 4 * 30];
+    put_floats(b, pts, n);
+    seq_cmd_bytes(s, RGL_OP_Map1f, b, 4 * n, (const double[]){target, u1, u2, stride, order}, 5);
+}
+
+static void map2f(seq *s, GLenum target, int uorder, int vorder, const float *pts, size_t n)
+{
+    uint8_t b[4 * 4 * 64];
+    put_floats(b, pts, n);
+    uint32_t k = rgl_map_components(target, NULL);
+    seq_cmd_bytes(s, RGL_OP_Map2f, b, 4 * n,
+                  (const double[]){target, 0, 1, (double)(k * (uint32_t)vorder), uorder, 0, 1, k,
+                                   vorder},
+                  9);
+}
+
+/* Evaluated vertices reach the scene with the evaluated attributes, and the
+ * current ones stay. */
+static void test_eval_draw(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    static const float cubic[4][3] = {{0, 0, 0}, {1, 2, 0}, {3, 2, 0}, {4, 0, 0}};
+    static const float cols[2][4] = {{1, 0, 0, 1}, {0, 0, 1, 1}};
+    CMD(&s, Ortho, -10, 10, -10, 10, -10, 10);
+    map1f(&s, GL_MAP1_VERTEX_3, 2, 4, 3, 4, &cubic[0][0], 12); /* domain [2, 4] */
+    map1f(&s, GL_MAP1_COLOR_4, 2, 4, 4, 2, &cols[0][0], 8);
+    CMD(&s, Enable, GL_MAP1_VERTEX_3);
+    CMD(&s, Enable, GL_MAP1_COLOR_4);
+    CMD(&s, Color3f, 0, 1, 0);
+    CMD(&s, Begin, GL_TRIANGLES);
+    CMD(&s, EvalCoord1f, 2);
+    CMD(&s, EvalCoord1f, 3);   /* u' = 1/2 */
+    CMD(&s, EvalCoord1d, 2.5); /* u' = 1/4 */
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 1);
+    CHECK_EQ_U(sc.nverts, 3);
+    if (sc.nverts == 3) {
+        CHECK_NEAR(sc.verts[1].pos[0], 2.0, 1e-6);
+        CHECK_NEAR(sc.verts[1].pos[1], 1.5, 1e-6);
+        CHECK_NEAR(sc.verts[2].pos[0], 58.0 / 64, 1e-6);
+        CHECK_NEAR(sc.verts[0].color[0], 1, 1e-6);
+        CHECK_NEAR(sc.verts[1].color[0], 0.5, 1e-6);
+        CHECK_NEAR(sc.verts[1].color[2], 0.5, 1e-6);
+    }
+    /* The current colour is still glColor's. */
+    CHECK_NEAR(interp_state(ip)->a.current.color[1], 1, 0);
+    CHECK_NEAR(interp_state(ip)->a.current.color[0], 0, 0);
+
+    /* glEvalMesh2(GL_FILL) over a 2 x 2 grid: two quad strips of two quads;
+     * GL_AUTO_NORMAL on a patch in the xy plane gives (0, 0, 1). */
+    static const float flat[2][2][3] = {{{0, 0, 0}, {0, 1, 0}}, {{1, 0, 0}, {1, 1, 0}}};
+    seq_init(&s);
+    map2f(&s, GL_MAP2_VERTEX_3, 2, 2, &flat[0][0][0], 12);
+    CMD(&s, Enable, GL_MAP2_VERTEX_3);
+    CMD(&s, Enable, GL_AUTO_NORMAL);
+    CMD(&s, MapGrid2f, 2, 0, 1, 2, 0, 1);
+    CMD(&s, EvalMesh2, GL_FILL, 0, 2, 0, 2);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 1 + 8);
+    CHECK_EQ_U(sc.nverts, 3 + 12);
+    for (size_t i = 3; i < sc.nverts; i++)
+        CHECK_NEAR(sc.verts[i].normal[2], 1, 1e-6);
+    /* The first strip: (u, 0) and (u, 1/2) for u = 0, 1/2, 1. */
+    if (sc.nverts >= 9) {
+        CHECK_NEAR(sc.verts[4].pos[1], 0.5, 1e-6);
+        CHECK_NEAR(sc.verts[5].pos[0], 0.5, 1e-6);
+        CHECK_NEAR(sc.verts[8].pos[0], 1, 1e-6);
+    }
+    CHECK_NEAR(interp_state(ip)->a.current.normal[2], 1, 0); /* GL's initial normal */
+
+    /* GL_LINE: 3 row strips and 3 column strips of 2 segments; GL_POINT: 9. */
+    CHECK_EQ_U(sc.nlines, 0);
+    seq_init(&s);
+    CMD(&s, EvalMesh2, GL_LINE, 0, 2, 0, 2);
+    CMD(&s, EvalMesh2, GL_POINT, 0, 2, 0, 2);
+    CMD(&s, Disable, GL_MAP1_VERTEX_3);
+    CMD(&s, EvalMesh1, GL_LINE, 0, 2); /* no MAP1 vertex map on: nothing */
+    run(ip, &s);
+    CHECK_EQ_U(sc.nlines, 12);
+    CHECK_EQ_U(sc.npoints, 9);
+
+    /* glEvalPoint1 on the grid: i * (u2 - u1) / n + u1. */
+    seq_init(&s);
+    CMD(&s, Enable, GL_MAP1_VERTEX_3);
+    CMD(&s, Disable, GL_MAP1_COLOR_4);
+    CMD(&s, MapGrid1f, 4, 2, 4);
+    CMD(&s, Begin, GL_POINTS);
+    CMD(&s, EvalPoint1, 2); /* u = 3 */
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(sc.npoints, 10);
+
+    /* The grids are GL_EVAL_BIT attributes, with the map enables. */
+    seq_init(&s);
+    CMD(&s, PushAttrib, GL_EVAL_BIT);
+    CMD(&s, MapGrid1f, 7, -1, 1);
+    CMD(&s, Disable, GL_MAP1_VERTEX_3);
+    CMD0(&s, PopAttrib);
+    run(ip, &s);
+    CHECK_EQ_U(interp_state(ip)->a.eval.grid_n[0][0], 4);
+    CHECK_NEAR(interp_state(ip)->a.eval.grid[0][0][0], 2, 0);
+    CHECK(interp_state(ip)->a.caps[INTERP_CAP_MAP1_VERTEX_3]);
+    interp_destroy(ip);
+}
+
+/* Calls GL rejects leave the map as it was; hostile blobs too. */
+static void test_eval_rejected(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    static const float pts[4][4] = {{1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}};
+    static const float good[2][3] = {{0, 0, 0}, {2, 0, 0}};
+    CMD(&s, Ortho, -10, 10, -10, 10, -10, 10);
+    map1f(&s, GL_MAP1_VERTEX_3, 0, 1, 3, 2, &good[0][0], 6);
+    map1f(&s, 0x0D99, 0, 1, 3, 2, &pts[0][0], 6);             /* invalid enum: no target */
+    map1f(&s, GL_MAP2_VERTEX_3, 0, 1, 3, 2, &pts[0][0], 6);   /* invalid enum: a MAP2 */
+    map1f(&s, GL_MAP1_VERTEX_3, 0, 1, 3, 0, &pts[0][0], 0);   /* invalid value: order 0 */
+    map1f(&s, GL_MAP1_VERTEX_3, 0, 1, 3, 31, &pts[0][0], 0);  /* invalid value: order 31 */
+    map1f(&s, GL_MAP1_VERTEX_3, 1, 1, 3, 2, &pts[0][0], 6);   /* invalid value: u1 == u2 */
+    map1f(&s, GL_MAP1_VERTEX_3, 0, 1, 2, 2, &pts[0][0], 6);   /* invalid value: stride < 3 */
+    map1f(&s, GL_MAP1_VERTEX_3, 0, 1, 3, 2, &pts[0][0], 5);   /* invalid value: short blob */
+    map1f(&s, GL_MAP1_VERTEX_3, 0, 1, 3, 2, &pts[0][0], 7);   /* invalid value: long blob */
+    CMD(&s, MapGrid1f, 0, 0, 1);                              /* invalid value */
+    CMD(&s, MapGrid2f, 2, 0, 1, -1, 0, 1);                    /* invalid value */
+    CMD(&s, EvalMesh1, GL_FILL, 0, 1);                        /* invalid enum */
+    CMD(&s, EvalMesh2, GL_LINE_STRIP, 0, 1, 0, 1);            /* invalid enum */
+    CMD(&s, Begin, GL_POINTS);
+    map1f(&s, GL_MAP1_VERTEX_3, 0, 1, 3, 2, &pts[0][0], 6);   /* invalid operation */
+    CMD(&s, EvalMesh1, GL_POINT, 0, 1);                       /* invalid operation */
+    CMD(&s, Enable, GL_MAP1_VERTEX_3);                        /* invalid operation */
+    CMD0(&s, End);
+    CMD(&s, Enable, GL_MAP1_VERTEX_3);
+    CMD(&s, Enable, GL_MAP1_INDEX); /* not translated: a note */
+    CMD(&s, MapGrid1f, 1, 0, 1);
+    CMD(&s, EvalMesh1, GL_POINT, 1, 1); /* u = 1: the first map's (2, 0, 0) */
+    CMD(&s, EvalMesh1, GL_LINE, 0, 2000000000); /* past the mesh limit */
+    CMD(&s, EvalPoint1, 1); /* outside glBegin: ignored */
+    CMD(&s, Begin, GL_POINTS);
+    CMD(&s, Vertex3f, 2, 0, 0); /* where the evaluated point must be */
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 4);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_VALUE), 8);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_OPERATION), 3);
+    CHECK_EQ_U(count(DIAG_NOTE_EVAL_INDEX), 1);
+    CHECK_EQ_U(count(DIAG_LIMIT), 1);
+    CHECK_EQ_U(count(DIAG_IGNORED), 1);
+    CHECK_EQ_U(sc.npoints, 2);
+    if (sc.npoints == 2)
+        CHECK_NEAR(sc.points[0].p[0], sc.points[1].p[0], 1e-6);
+    interp_destroy(ip);
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -962,6 +1175,9 @@ int main(void)
     test_fast_path();
     test_alloc_translation();
     test_shape_budget();
+    test_eval_maths();
+    test_eval_draw();
+    test_eval_rejected();
     scene_finish(&sc);
     return CHECK_RESULT("test_interp");
 }
