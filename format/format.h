@@ -18,7 +18,7 @@
 /* ---- Versions and limits ------------------------------------------------ */
 
 #define RGL_FORMAT_MAJOR 1
-#define RGL_FORMAT_MINOR 2
+#define RGL_FORMAT_MINOR 3
 
 #define RGL_FILE_MAGIC "\x89RGL\r\n\x1a\n"
 #define RGL_FILE_MAGIC_SIZE 8
@@ -50,6 +50,12 @@ enum rgl_chunk_type {
 enum rgl_resource_kind {
     RGL_RES_COMMANDS = 1, /* a command sequence: state snapshot or list body */
     RGL_RES_BYTES = 2,    /* raw bytes: texel data */
+};
+
+/* Why a call was not recorded (@Skipped, format 1.3). */
+enum rgl_skip_reason {
+    RGL_SKIP_UNKNOWN_ENUM = 1, /* an enum the recorder does not know (GL may) */
+    RGL_SKIP_NO_DATA = 2,      /* the data the call reads could not be read */
 };
 
 /* Frame flags. */

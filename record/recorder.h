@@ -82,9 +82,10 @@ typedef struct rgl_objects {
     size_t nlists, cap_lists;
     uint32_t bound[2];          /* texture bound to GL_TEXTURE_1D, GL_TEXTURE_2D */
     uint32_t next_texture_name; /* RayGL's own names when GL has no context */
-    /* GL_UNPACK_ALIGNMENT, ROW_LENGTH, SKIP_ROWS, SKIP_PIXELS as the program
-     * set them (alignment 0: GL's 4), for recording without a context. */
-    int32_t unpack[4];
+    /* GL_UNPACK_SWAP_BYTES .. GL_UNPACK_ALIGNMENT (0x0CF0 .. 0x0CF5) as the
+     * program set them (alignment 0: GL's 4), for recording without a
+     * context. */
+    int32_t unpack[6];
     uint32_t next_list_name;
 } rgl_objects;
 
@@ -116,6 +117,7 @@ typedef struct rgl_stream {
 
     rgl_client_array_state arrays[RGL_MAX_CLIENT_ARRAYS];
     uint32_t array_buffer, element_buffer; /* buffer bindings (GL 1.5) */
+    uint32_t unpack_buffer, pack_buffer;   /* pixel buffer bindings (GL 2.1) */
     rgl_objects objs;
 
     /* Recorder bookkeeping (recorder.c): never touched on the hot path. */
@@ -260,6 +262,25 @@ bool rgl_record(uint32_t op, const char *fmt, ...);
  * lock: call rgl_buffer_release() when done with the data. */
 const uint8_t *rgl_buffer_acquire(uint32_t name, size_t *size);
 void rgl_buffer_release(void);
+
+/* The buffer bound to target (GL_ARRAY_BUFFER, GL_ELEMENT_ARRAY_BUFFER,
+ * GL_PIXEL_UNPACK_BUFFER) for a call about to be made on s's thread: GL's
+ * own answer with a live context (0 when it has no such buffers), the
+ * recorder's tracking without one or between glBegin and glEnd. Raises no
+ * GL error. */
+uint32_t rgl_buffer_binding(rgl_stream *s, uint32_t target);
+
+/* Whether a GL context is current (checked through glGetString, which
+ * raises no error outside glBegin/glEnd). */
+bool rgl_buffer_live(void);
+
+/* Copies `rows` rows of `row` bytes, `stride` apart from `offset` on, of
+ * buffer `name` bound to target, tightly into out: read from GL when live
+ * (the context is current; raises no GL error), else from the recorder's
+ * copy. False, with nothing read, when GL would refuse to read them: the
+ * buffer is mapped or the rows pass its end. */
+bool rgl_buffer_gather(uint32_t target, uint32_t name, bool live, uint64_t offset,
+                       uint64_t stride, size_t row, size_t rows, uint8_t *out);
 
 /* Returns the texture record for `name` in s, creating it when create is set
  * (NULL when absent or on allocation failure). */
