@@ -568,6 +568,21 @@ static size_t element_size(const rgl_client_array_state *a)
     return (size_t)a->size * type_size(a->type);
 }
 
+/* Whether a draw (not glArrayElement) is one GL carries out and RayGL
+ * records: outside glBegin/glEnd, a mode of GL 1.x, the vertex array
+ * enabled. GL refuses a bad mode (INVALID_ENUM) or a draw inside
+ * glBegin/glEnd (INVALID_OPERATION) and reads no element, and without the
+ * vertex array it draws nothing. The later modes (lines and triangles with
+ * adjacency, patches) are GL's but not RayGL's: @Skipped. */
+static bool draw_ok(rgl_stream *s, uint32_t op, GLenum mode)
+{
+    if (s->in_begin || !s->arrays[RGL_CA_VERTEX].enabled)
+        return false;
+    if (mode > GL_POLYGON && mode <= GL_PATCHES)
+        note_skipped(op, PX_SKIP_ENUM);
+    return mode <= GL_POLYGON;
+}
+
 /* Where array a's element `first` starts and how far its data runs: in
  * client memory, or in the recorder's copy of its buffer (which is then
  * acquired: release it after the copy). False when the elements
@@ -679,17 +694,17 @@ static bool index_range(GLsizei count, GLenum type, const void *indices, uint32_
     return true;
 }
 
-/* The indices of a draw: client memory, or (with a buffer bound to
+/* The indices of a draw: client memory, or (with buffer `eb` bound to
  * GL_ELEMENT_ARRAY_BUFFER) the recorder's copy of the buffer from offset
  * `indices` on, acquired (*locked set: release after use). NULL when the
  * buffer does not hold `bytes` bytes there. */
-static const void *index_source(rgl_stream *s, const void *indices, size_t bytes, bool *locked)
+static const void *index_source(uint32_t eb, const void *indices, size_t bytes, bool *locked)
 {
     *locked = false;
-    if (!s->element_buffer)
+    if (!eb)
         return indices;
     size_t size;
-    const uint8_t *data = rgl_buffer_acquire(s->element_buffer, &size);
+    const uint8_t *data = rgl_buffer_acquire(eb, &size);
     uint64_t offset = (uintptr_t)indices;
     if (!data || offset + bytes > size) {
         rgl_buffer_release();
@@ -708,9 +723,10 @@ static bool record_elements(uint32_t op, GLenum mode, GLuint start, GLuint end, 
     size_t bytes;
     bool locked;
     rgl_stream *s = rgl_tls_stream;
-    if (!s || !index_size(type) || count < 0)
+    if (!s || !index_size(type) || count < 0 || !draw_ok(s, op, mode))
         return false;
-    const void *idx = index_source(s, indices, (size_t)count * index_size(type), &locked);
+    uint32_t eb = rgl_buffer_binding(s, GL_ELEMENT_ARRAY_BUFFER);
+    const void *idx = index_source(eb, indices, (size_t)count * index_size(type), &locked);
     bool ok = idx && index_range(count, type, idx, &lo, &hi, &bytes);
     if (locked)
         rgl_buffer_release();
@@ -719,7 +735,7 @@ static bool record_elements(uint32_t op, GLenum mode, GLuint start, GLuint end, 
     rgl_resolve_matrices();
     if (count > 0 && !record_arrays(lo, (int64_t)hi - lo + 1))
         return false;
-    if (!(idx = index_source(s, indices, bytes, &locked)))
+    if (!(idx = index_source(eb, indices, bytes, &locked)))
         return false;
     if (op == RGL_OP_DrawElements)
         ok = rgl_record(op, "eieB", mode, count, type, idx, bytes);
@@ -740,7 +756,8 @@ RGL_EXPORT void rayglArrayElement(GLint i)
 
 RGL_EXPORT void rayglDrawArrays(GLenum mode, GLint first, GLsizei count)
 {
-    if (first >= 0 && count >= 0) {
+    rgl_stream *s = rgl_tls_stream;
+    if (first >= 0 && count >= 0 && s && draw_ok(s, RGL_OP_DrawArrays, mode)) {
         rgl_resolve_matrices();
         if (record_arrays(first, count))
             rgl_record(RGL_OP_DrawArrays, "eii", mode, first, count);
@@ -767,7 +784,9 @@ RGL_EXPORT void rayglDrawRangeElements(GLenum mode, GLuint start, GLuint end, GL
 RGL_EXPORT void rayglMultiDrawArrays(GLenum mode, const GLint *first, const GLsizei *count,
                                      GLsizei drawcount)
 {
-    bool ok = drawcount >= 0 && (drawcount == 0 || (first && count));
+    rgl_stream *s = rgl_tls_stream;
+    bool ok = drawcount >= 0 && (drawcount == 0 || (first && count)) && s &&
+              draw_ok(s, RGL_OP_MultiDrawArrays, mode);
     int64_t lo = INT64_MAX, hi = 0;
     for (GLsizei i = 0; ok && i < drawcount; i++) {
         if (first[i] < 0 || count[i] < 0)
@@ -796,8 +815,10 @@ static void record_multi_elements(GLenum mode, const GLsizei *count, GLenum type
 {
     size_t ts = index_size(type);
     rgl_stream *s = rgl_tls_stream;
-    if (!s || !ts || drawcount < 0 || (drawcount > 0 && (!count || !indices)))
+    if (!s || !ts || drawcount < 0 || (drawcount > 0 && (!count || !indices)) ||
+        !draw_ok(s, RGL_OP_MultiDrawElements, mode))
         return;
+    uint32_t eb = rgl_buffer_binding(s, GL_ELEMENT_ARRAY_BUFFER);
     size_t total = 0;
     for (GLsizei i = 0; i < drawcount; i++) {
         if (count[i] < 0)
@@ -815,7 +836,7 @@ static void record_multi_elements(GLenum mode, const GLsizei *count, GLenum type
     for (GLsizei i = 0; ok && i < drawcount; i++) {
         size_t bytes = (size_t)count[i] * ts;
         bool locked;
-        const void *idx = index_source(s, indices[i], bytes, &locked);
+        const void *idx = index_source(eb, indices[i], bytes, &locked);
         uint32_t l, h;
         size_t b;
         ok = idx && index_range(count[i], type, idx, &l, &h, &b);
@@ -861,7 +882,7 @@ static void array_pointer(int slot, uint32_t op, GLint size, GLenum type, GLsize
     a->type = type;
     a->stride = stride;
     a->pointer = ptr;
-    a->buffer = s->array_buffer;
+    a->buffer = rgl_buffer_binding(s, GL_ARRAY_BUFFER);
     switch (slot) {
     case RGL_CA_NORMAL: RECORD_NOW(s, op, "ei", type, stride); break;
     case RGL_CA_EDGEFLAG: RECORD_NOW(s, op, "i", stride); break;
@@ -971,7 +992,7 @@ RGL_EXPORT void rayglInterleavedArrays(GLenum format, GLsizei stride, const GLvo
         a[RGL_CA_EDGEFLAG].enabled = false;
         a[RGL_CA_TEXCOORD].enabled = f->et;
         /* With an array buffer bound, pointer is an offset in it. */
-        uint32_t buf = s->array_buffer;
+        uint32_t buf = rgl_buffer_binding(s, GL_ARRAY_BUFFER);
         const uint8_t *q = p || buf ? p : NULL;
 #define AT(off) (q || buf ? (const void *)((uintptr_t)q + (off)) : NULL)
         if (f->et)

@@ -191,3 +191,206 @@ void test_buffers(const char *dir)
     if (!check_failures)
         unlink(path);
 }
+
+/* A buffer bound to GL_PIXEL_UNPACK_BUFFER: the pixels argument is an
+ * offset into it (the conformance test that crashed the recorder: 4092
+ * bytes, then 32 x 32 RGBA at offset 0 and 32 x 16 at 0x800, both past the
+ * end, which GL refuses). Without a context the recorder's copy is read;
+ * the unpack state applies inside the buffer; a mapped buffer is not read;
+ * GLU, which reads client memory whatever is bound, leaves @Skipped;
+ * unbinding or deleting the buffer makes pointers addresses again. */
+void test_pbo(const char *dir)
+{
+    char path[128];
+    snprintf(path, sizeof path, "%s/pbo.raygl", dir);
+    CHECK(rayglRecordOpen(path) == 0);
+    static uint8_t bytes[4092];
+    for (size_t i = 0; i < sizeof bytes; i++)
+        bytes[i] = (uint8_t)(i * 7 + i / 256);
+    GLuint b[1] = {0};
+    rayglGenBuffers(1, b);
+    rayglBindTexture(GL_TEXTURE_2D, 1);
+    rayglBindBuffer(GL_PIXEL_UNPACK_BUFFER, b[0]);
+    rayglBufferData(GL_PIXEL_UNPACK_BUFFER, sizeof bytes, bytes, GL_STREAM_DRAW);
+    stub_reset();
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 32, 32, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 32, 16, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                    (const void *)0x800);
+    rayglTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE,
+                       (const void *)(uintptr_t)-8); /* wraps around */
+    CHECK(stub_nlog == 3 && stub_log[1].p[8] == (const void *)0x800); /* GL gets the offset */
+    /* Inside: 16 x 16 at 0x400; a 2 x 2 RGB sub-image at offset 1 with
+     * rows of 5 pixels, one row and two pixels skipped. */
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 16, 16, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                    (const void *)0x400);
+    rayglPixelStorei(GL_UNPACK_ROW_LENGTH, 5);
+    rayglPixelStorei(GL_UNPACK_SKIP_ROWS, 1);
+    rayglPixelStorei(GL_UNPACK_SKIP_PIXELS, 2);
+    rayglTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 2, 2, GL_RGB, GL_UNSIGNED_BYTE, (const void *)1);
+    rayglPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    rayglPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+    rayglPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    /* Offset 0 is data, not "no pixels". */
+    rayglTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    raygluBuild2DMipmaps(GL_TEXTURE_2D, GL_RGBA, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, (const void *)8);
+    rayglMapBuffer(GL_PIXEL_UNPACK_BUFFER, GL_WRITE_ONLY);
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    memcpy(stub_mapped, bytes, sizeof bytes);
+    rayglUnmapBuffer(GL_PIXEL_UNPACK_BUFFER);
+    rayglDeleteBuffers(1, b); /* unbinds it */
+    static const uint8_t px[4] = {9, 8, 7, 6};
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    rayglFrameEnd();
+    rayglRecordClose();
+
+    rgl_reader *r = trace_open(path);
+    if (!r)
+        return;
+    rgl_frame_info fi;
+    char gen[64], bind[96], del[64];
+    snprintf(gen, sizeof gen, "glGenBuffers(buffers=[%u])", b[0]);
+    snprintf(bind, sizeof bind, "glBindBuffer(target=GL_PIXEL_UNPACK_BUFFER, buffer=%u)", b[0]);
+    snprintf(del, sizeof del, "glDeleteBuffers(buffers=[%u])", b[0]);
+    const char *const want[] = {
+        gen,
+        "glBindTexture(target=GL_TEXTURE_2D, texture=1)",
+        bind,
+        "glBufferData(target=GL_PIXEL_UNPACK_BUFFER, size=4092, data=#1, usage=GL_STREAM_DRAW)",
+        "glTexImage2D(target=GL_TEXTURE_2D, level=0, internalformat=6408, width=16, height=16, border=0, format=GL_RGBA, type=GL_UNSIGNED_BYTE, pixels=#2)",
+        "glPixelStorei(pname=GL_UNPACK_ROW_LENGTH, param=5)",
+        "glPixelStorei(pname=GL_UNPACK_SKIP_ROWS, param=1)",
+        "glPixelStorei(pname=GL_UNPACK_SKIP_PIXELS, param=2)",
+        "glTexSubImage2D(target=GL_TEXTURE_2D, level=0, xoffset=0, yoffset=0, width=2, height=2, format=GL_RGB, type=GL_UNSIGNED_BYTE, pixels=#3)",
+        "glPixelStorei(pname=GL_UNPACK_ROW_LENGTH, param=0)",
+        "glPixelStorei(pname=GL_UNPACK_SKIP_ROWS, param=0)",
+        "glPixelStorei(pname=GL_UNPACK_SKIP_PIXELS, param=0)",
+        "glTexSubImage2D(target=GL_TEXTURE_2D, level=0, xoffset=0, yoffset=0, width=1, height=1, format=GL_RGBA, type=GL_UNSIGNED_BYTE, pixels=#4)",
+        "@Skipped(opcode=0xe3, reason=0x2)", /* gluBuild2DMipmaps */
+        "glMapBuffer(target=GL_PIXEL_UNPACK_BUFFER, access=GL_WRITE_ONLY)",
+        "glBufferSubData(target=GL_PIXEL_UNPACK_BUFFER, offset=0, size=4092, data=#1)",
+        "glUnmapBuffer(target=GL_PIXEL_UNPACK_BUFFER)",
+        del,
+        "glTexImage2D(target=GL_TEXTURE_2D, level=0, internalformat=6408, width=1, height=1, border=0, format=GL_RGBA, type=GL_UNSIGNED_BYTE, pixels=#5)",
+        "rayglFrameEnd()",
+    };
+    trace_cmds c = trace_frame(r, 0, &fi);
+    CHECK(c.clean);
+    expect(&c, want, sizeof want / sizeof want[0], "pbo frame");
+    trace_cmds_free(&c);
+    rgl_resource res;
+    if (CHECK(rgl_reader_resource(r, 2, &res, NULL) == RGL_OK))
+        CHECK(res.size == 1024 && memcmp(res.data, bytes + 0x400, 1024) == 0);
+    if (CHECK(rgl_reader_resource(r, 3, &res, NULL) == RGL_OK)) {
+        /* rows of 15 bytes padded to 16: bytes 1 + 16 + 6 .. and 1 + 32 + 6 .. */
+        CHECK(res.size == 12 && memcmp(res.data, bytes + 23, 6) == 0 &&
+              memcmp(res.data + 6, bytes + 39, 6) == 0);
+    }
+    if (CHECK(rgl_reader_resource(r, 4, &res, NULL) == RGL_OK))
+        CHECK(res.size == 4 && memcmp(res.data, bytes, 4) == 0);
+    if (CHECK(rgl_reader_resource(r, 5, &res, NULL) == RGL_OK))
+        CHECK(res.size == 4 && memcmp(res.data, px, 4) == 0);
+    rgl_reader_destroy(r);
+    if (!check_failures)
+        unlink(path);
+}
+
+/* With a live context the recorder asks GL which buffer is bound, and
+ * believes it over its own tracking (a binding glPopClientAttrib or a
+ * vertex array object restored, which it never saw): the stub answers
+ * like GL 2.1 would. Pixels come from GL's buffer (glGetBufferSubData),
+ * not refused past GL's size or while mapped; array pointers and indices
+ * are offsets into the buffers GL names. A GL 1.4 context without the
+ * extensions has no such buffers: its pointers are addresses, and the
+ * binding queries (an error there) are not made. */
+void test_live_bindings(const char *dir)
+{
+    char path[128];
+    snprintf(path, sizeof path, "%s/live.raygl", dir);
+    CHECK(rayglRecordOpen(path) == 0);
+    GLuint b[2] = {0, 0};
+    rayglGenBuffers(2, b);
+    static const float pos[3][2] = {{1, 2}, {3, 4}, {5, 6}};
+    static const GLushort idx[2] = {2, 0};
+    rayglBindBuffer(GL_ARRAY_BUFFER, b[0]);
+    rayglBufferData(GL_ARRAY_BUFFER, sizeof pos, pos, GL_STATIC_DRAW);
+    rayglBindBuffer(GL_ARRAY_BUFFER, 0);
+    rayglBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b[1]);
+    rayglBufferData(GL_ELEMENT_ARRAY_BUFFER, sizeof idx, idx, GL_STATIC_DRAW);
+    rayglBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+    for (int i = 0; i < 64; i++)
+        stub_buffer[i] = (uint8_t)(100 + i);
+    stub_version = "2.1 Mesa";
+    stub_ints[0] = (stub_int){GL_PIXEL_UNPACK_BUFFER_BINDING, 7};
+    stub_ints[1] = (stub_int){GL_ARRAY_BUFFER_BINDING, (int)b[0]};
+    stub_ints[2] = (stub_int){GL_ELEMENT_ARRAY_BUFFER_BINDING, (int)b[1]};
+    stub_nints = 3;
+    stub_buffer_size = 64;
+    stub_buffer_mapped = 0;
+    rayglBindTexture(GL_TEXTURE_2D, 1);
+    stub_reset();
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                    (const void *)16);
+    CHECK(stub_nlog == 2 && strcmp(stub_log[0].name, "glGetBufferSubData") == 0 &&
+          stub_log[0].v[1] == 16 && stub_log[0].v[2] == 16);
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                    (const void *)52); /* ends at 68 > 64 */
+    stub_buffer_mapped = 1;
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    stub_buffer_mapped = 0;
+    rayglEnableClientState(GL_VERTEX_ARRAY);
+    rayglVertexPointer(2, GL_FLOAT, 0, (const void *)8); /* pos[1] on */
+    rayglDrawArrays(GL_POINTS, 0, 2);
+    rayglDrawElements(GL_POINTS, 1, GL_UNSIGNED_SHORT, (const void *)2); /* index 0 */
+    /* GL 1.4, no extensions: the pointers are addresses. */
+    stub_version = "1.4";
+    static const uint8_t px[4] = {1, 2, 3, 4};
+    static const float cv[2] = {9, 8};
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    rayglVertexPointer(2, GL_FLOAT, 0, cv);
+    rayglDrawArrays(GL_POINTS, 0, 1);
+    rayglDisableClientState(GL_VERTEX_ARRAY);
+    stub_version = NULL;
+    stub_nints = 0;
+    rayglFrameEnd();
+    rayglRecordClose();
+
+    rgl_reader *r = trace_open(path);
+    if (!r)
+        return;
+    rgl_frame_info fi;
+    trace_cmds c = trace_frame(r, 0, &fi);
+    CHECK(c.clean);
+    long t0 = trace_cmds_find(&c, 0, "glTexImage2D");
+    CHECK(t0 >= 0 && strstr(c.lines[t0], "width=2") != NULL);
+    long t1 = t0 >= 0 ? trace_cmds_find(&c, (size_t)t0 + 1, "glTexImage2D") : -1;
+    CHECK(t1 >= 0 && strstr(c.lines[t1], "width=1") != NULL); /* the 1.4 one */
+    long d0 = trace_cmds_find(&c, 0, "glDrawArrays");
+    long e0 = trace_cmds_find(&c, 0, "glDrawElements");
+    long d1 = d0 >= 0 ? trace_cmds_find(&c, (size_t)d0 + 1, "glDrawArrays") : -1;
+    CHECK(d0 > 0 && e0 > d0 && d1 > e0);
+    size_t n;
+    const uint8_t *d = d0 > 0 ? blob(r, 0, (size_t)d0 - 1, 4, &n) : NULL;
+    if (CHECK(d && n == 16)) {
+        float got[4];
+        memcpy(got, d, sizeof got);
+        CHECK(got[0] == 3 && got[1] == 4 && got[2] == 5 && got[3] == 6);
+    }
+    d = e0 > 0 ? blob(r, 0, (size_t)e0, 3, &n) : NULL;
+    CHECK(d && n == 2 && d[0] == 0 && d[1] == 0);
+    d = d1 > 0 ? blob(r, 0, (size_t)d1 - 1, 4, &n) : NULL;
+    if (CHECK(d && n == 8)) {
+        float got[2];
+        memcpy(got, d, sizeof got);
+        CHECK(got[0] == 9 && got[1] == 8);
+    }
+    trace_cmds_free(&c);
+    rgl_resource res;
+    bool found = false;
+    for (uint32_t id = 1; id < 10; id++)
+        if (rgl_reader_resource(r, id, &res, NULL) == RGL_OK && res.size == 16)
+            found |= memcmp(res.data, stub_buffer + 16, 16) == 0;
+    CHECK(found);
+    rgl_reader_destroy(r);
+    if (!check_failures)
+        unlink(path);
+}

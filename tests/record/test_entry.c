@@ -22,6 +22,9 @@ void test_buffers(const char *dir);
 void test_alloc_failures(const char *dir);
 void test_too_large(const char *dir);
 void test_unpack(const char *dir);
+void test_pixel_rules(const char *dir);
+void test_pbo(const char *dir);
+void test_live_bindings(const char *dir);
 
 /* ---- Deterministic values ------------------------------------------------------- */
 
@@ -269,6 +272,9 @@ int main(void)
     test_alloc_failures(dir);
     test_too_large(dir);
     test_unpack(dir);
+    test_pixel_rules(dir);
+    test_pbo(dir);
+    test_live_bindings(dir);
     if (!check_failures)
         rmdir(dir);
     return check_exit();
