@@ -149,6 +149,21 @@ const rgl_cmd_info *const *rgl_cmd_info_all(size_t *count);
 /* Number of values a GL parameter name takes (GL_AMBIENT: 4), 0 if unknown. */
 uint32_t rgl_pname_count(uint32_t pname);
 
+/* The calls that take a parameter name (format/pnames.def). */
+enum rgl_pname_family {
+    RGL_PN_LIGHT = 1u << 0,
+    RGL_PN_MATERIAL = 1u << 1,
+    RGL_PN_LIGHT_MODEL = 1u << 2,
+    RGL_PN_FOG = 1u << 3,
+    RGL_PN_TEX_PARAMETER = 1u << 4,
+    RGL_PN_TEX_ENV = 1u << 5,
+    RGL_PN_TEX_GEN = 1u << 6,
+};
+
+/* Number of values the calls of `family` read for pname: 0 when pname is
+ * unknown or not theirs (GL refuses it and reads nothing). */
+uint32_t rgl_pname_count_in(uint32_t family, uint32_t pname);
+
 /* The GL_ name of an enum value, or NULL. For values shared by several names
  * (GL_POINTS and GL_ZERO), `hint` picks the family: the argument's name. */
 const char *rgl_enum_name(uint32_t value, const char *hint);

@@ -101,9 +101,22 @@ const rgl_cmd_info *const *rgl_cmd_info_all(size_t *count)
 uint32_t rgl_pname_count(uint32_t pname)
 {
     switch (pname) {
-#define RGL_PNAME(name, value, count)                                                \
+#define RGL_PNAME(name, value, count, families)                                      \
     case value:                                                                     \
         return count;
+#include "pnames.def"
+#undef RGL_PNAME
+    default:
+        return 0;
+    }
+}
+
+uint32_t rgl_pname_count_in(uint32_t family, uint32_t pname)
+{
+    switch (pname) {
+#define RGL_PNAME(name, value, count, families)                                      \
+    case value:                                                                     \
+        return ((families) & family) ? count : 0;
 #include "pnames.def"
 #undef RGL_PNAME
     default:

@@ -1266,7 +1266,7 @@ RGL_EXPORT void rayglTexParameteri(GLenum target, GLenum pname, GLint param)
 
 RGL_EXPORT void rayglTexParameterfv(GLenum target, GLenum pname, const GLfloat *params)
 {
-    uint32_t n = rgl_pname_count(pname);
+    uint32_t n = rgl_pname_count_in(RGL_PN_TEX_PARAMETER, pname);
     if (params && n <= RGL_ARRAY_MAX &&
         rgl_record(RGL_OP_TexParameterfv, "eeN", target, pname, params, (int)n))
         texture_param(target, pname, true, params, NULL, n);
@@ -1275,7 +1275,7 @@ RGL_EXPORT void rayglTexParameterfv(GLenum target, GLenum pname, const GLfloat *
 
 RGL_EXPORT void rayglTexParameteriv(GLenum target, GLenum pname, const GLint *params)
 {
-    uint32_t n = rgl_pname_count(pname);
+    uint32_t n = rgl_pname_count_in(RGL_PN_TEX_PARAMETER, pname);
     if (params && n <= RGL_ARRAY_MAX &&
         rgl_record(RGL_OP_TexParameteriv, "eeI", target, pname, params, (int)n))
         texture_param(target, pname, false, NULL, params, n);

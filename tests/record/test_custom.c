@@ -470,6 +470,18 @@ void test_pixel_rules(const char *dir)
     rayglDisableClientState(GL_COLOR_ARRAY);
     rayglDisableClientState(GL_VERTEX_ARRAY);
     CHECK(stub_nlog == 37);
+    /* A *v call reads the values of its pname only when the call takes
+     * it: one float before the fault, names of other calls that take 4. */
+    float *one = (float *)(void *)(bad - sizeof(float));
+    *one = 2;
+    rayglFogfv(GL_AMBIENT, one);
+    rayglLightfv(GL_LIGHT0, GL_FOG_COLOR, one);
+    rayglMaterialfv(GL_FRONT, GL_POSITION, one);
+    rayglTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_BORDER_COLOR, one);
+    rayglTexGenfv(GL_S, GL_TEXTURE_ENV_COLOR, one);
+    rayglLightModelfv(GL_EYE_PLANE, one);
+    rayglTexParameterfv(GL_TEXTURE_2D, GL_SPECULAR, one);
+    rayglFogfv(GL_FOG_DENSITY, one); /* its own: 1 value */
 
     /* Exactly what GL reads, up to the page's end. 3 x 2 RGB at alignment
      * 4: a row of 12 bytes, then the last row's 9 (no padding read). */
@@ -514,6 +526,9 @@ void test_pixel_rules(const char *dir)
         CHECK(count_lines(&c, "glTexSubImage") == 0 && count_lines(&c, "gluBuild2DMipmaps") == 0);
         CHECK(count_lines(&c, "glDraw") == 0 && count_lines(&c, "glMultiDraw") == 0);
         CHECK(count_lines(&c, "@ArrayData") == 0);
+        CHECK(count_lines(&c, "glFogfv(pname=GL_AMBIENT, params=[])") == 1);
+        CHECK(count_lines(&c, "glLightfv(light=GL_LIGHT0, pname=GL_FOG_COLOR, params=[])") == 1);
+        CHECK(count_lines(&c, "glFogfv(pname=GL_FOG_DENSITY, params=[2])") == 1);
         CHECK(count_lines(&c, "@Skipped(opcode=0x7e, reason=0x1)") == 1); /* glDrawArrays */
         CHECK(count_lines(&c, "@Skipped(opcode=0xb5, reason=0x1)") == 3); /* glTexImage2D */
         if (count_lines(&c, "@Skipped") != 4)
