@@ -499,15 +499,14 @@ static bool internal_format_known(GLint f)
     return false;
 }
 
-/* Checks a glTexImage1D/2D or glTexSubImage2D call as GL does before it
- * reads a pixel (GL 2.1 3.8.1, 3.8.2): target, level, sizes and border;
- * with a live context also the largest size, and for a sub-image the
- * rectangle inside the level it changes. internal < 0 for a sub-image. */
-static enum px_status tex_check(rgl_stream *s, int dims, GLenum target, GLint level,
+/* Checks a glTexImage1D/2D or glTexSubImage2D (sub) call as GL does
+ * before it reads a pixel (GL 2.1 3.8.1, 3.8.2): target, level, sizes and
+ * border; with a live context also the largest size, and for a sub-image
+ * the rectangle inside the level it changes. */
+static enum px_status tex_check(rgl_stream *s, int dims, bool sub, GLenum target, GLint level,
                                 GLint internal, GLint x, GLint y, GLsizei w, GLsizei h,
                                 GLint border)
 {
-    bool sub = internal < 0;
     if (s->in_begin || level < 0 || w < 0 || h < 0 || border < 0 || border > 1 ||
         !tex_target_ok(dims, target, sub))
         return PX_REJECT;
@@ -517,17 +516,18 @@ static enum px_status tex_check(rgl_stream *s, int dims, GLenum target, GLint le
     if (!sub && (w < 2 * border || (dims == 2 && h < 2 * border && target != GL_TEXTURE_1D_ARRAY &&
                                     target != GL_PROXY_TEXTURE_1D_ARRAY)))
         return PX_REJECT;
+    if (!sub && internal <= 0)
+        return PX_REJECT;
     if (!sub && !internal_format_known(internal))
         return PX_UNKNOWN;
-    if (!rgl_live_context())
+    /* The queries below only for the GL 1.1 targets: those of later GLs
+     * are enum errors of their own in a context that lacks them. */
+    bool basic = target == GL_TEXTURE_1D || target == GL_TEXTURE_2D ||
+                 target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D;
+    if (!basic || !rgl_live_context())
         return PX_OK;
     GLint max = 0;
-    glGetIntegerv(rect ? GL_MAX_RECTANGLE_TEXTURE_SIZE
-                  : target == GL_TEXTURE_2D || target == GL_PROXY_TEXTURE_2D || dims == 1 ||
-                          target == GL_TEXTURE_1D_ARRAY || target == GL_PROXY_TEXTURE_1D_ARRAY
-                      ? GL_MAX_TEXTURE_SIZE
-                      : GL_MAX_CUBE_MAP_TEXTURE_SIZE,
-                  &max);
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max);
     if (max > 0) {
         int levels = 0;
         while ((max >> levels) > 1)
@@ -1158,7 +1158,8 @@ RGL_EXPORT void rayglTexImage1D(GLenum target, GLint level, GLint internalFormat
 {
     rgl_stream *s;
     if (rgl_reserve(&s, 1)) {
-        enum px_status st = tex_check(s, 1, target, level, internalFormat, 0, 0, width, 1, border);
+        enum px_status st =
+            tex_check(s, 1, false, target, level, internalFormat, 0, 0, width, 1, border);
         int64_t id = tex_pixels(s, st, target, format, type, width, 1, pixels);
         note_skipped(RGL_OP_TexImage1D, id);
         if (id >= 0 && rgl_reserve(&s, RGL_TEX_RECORD_ROOM)) {
@@ -1179,7 +1180,7 @@ RGL_EXPORT void rayglTexImage2D(GLenum target, GLint level, GLint internalFormat
     rgl_stream *s;
     if (rgl_reserve(&s, 1)) {
         enum px_status st =
-            tex_check(s, 2, target, level, internalFormat, 0, 0, width, height, border);
+            tex_check(s, 2, false, target, level, internalFormat, 0, 0, width, height, border);
         int64_t id = tex_pixels(s, st, target, format, type, width, height, pixels);
         note_skipped(RGL_OP_TexImage2D, id);
         if (id >= 0 && rgl_reserve(&s, RGL_TEX_RECORD_ROOM)) {
@@ -1200,7 +1201,7 @@ RGL_EXPORT void rayglTexSubImage2D(GLenum target, GLint level, GLint xoffset, GL
     rgl_stream *s;
     if (rgl_reserve(&s, 1)) {
         enum px_status st =
-            tex_check(s, 2, target, level, -1, xoffset, yoffset, width, height, 0);
+            tex_check(s, 2, true, target, level, 0, xoffset, yoffset, width, height, 0);
         int64_t id = tex_pixels(s, st, target, format, type, width, height, pixels);
         note_skipped(RGL_OP_TexSubImage2D, id);
         if (id > 0 && rgl_reserve(&s, RGL_TEX_RECORD_ROOM)) {
