@@ -294,13 +294,18 @@ RGL_EXPORT void rayglDeleteBuffersARB(GLsizei n, const GLuint *buffers)
 
 static void bind_buffer(uint32_t op, GLenum target, GLuint buffer)
 {
+    /* The binding is kept while not recording too (a trace opened later
+     * must not take an offset for an address); the object is made then. */
     rgl_stream *s;
-    if (!rgl_reserve(&s, 1))
-        return;
-    uint32_t *slot = binding(s, target);
+    bool rec = rgl_reserve(&s, 1) != NULL;
+    if (!rec)
+        s = rgl_tls_stream;
+    uint32_t *slot = s ? binding(s, target) : NULL;
     if (!slot)
         return; /* another target: not recorded (it feeds no fixed-function call) */
     *slot = buffer;
+    if (!rec)
+        return;
     pthread_mutex_lock(&bufs.mu);
     find(buffer, true); /* binding a new name creates the object */
     pthread_mutex_unlock(&bufs.mu);

@@ -281,18 +281,21 @@ static void unpack_get(rgl_stream *s, GLint u[UP_COUNT])
  * 5.4); kept for pixels_put when there is no context to ask. */
 RGL_EXPORT void rayglPixelStorei(GLenum pname, GLint param)
 {
+    /* Kept while not recording too: a trace opened later starts from it. */
     rgl_stream *s;
-    if (rgl_reserve(&s, 1)) {
-        if (pname >= GL_UNPACK_SWAP_BYTES && pname <= GL_UNPACK_ALIGNMENT) {
-            int k = (int)(pname - GL_UNPACK_SWAP_BYTES);
-            bool ok = k == UP_ALIGNMENT ? param == 1 || param == 2 || param == 4 || param == 8
-                    : k <= UP_LSB        ? true
-                                         : param >= 0;
-            if (ok)
-                s->objs.unpack[k] = k <= UP_LSB ? param != 0 : param;
-        }
-        RECORD_NOW(s, RGL_OP_PixelStorei, "ei", pname, param);
+    bool rec = rgl_reserve(&s, 1) != NULL;
+    if (!rec)
+        s = rgl_tls_stream;
+    if (s && pname >= GL_UNPACK_SWAP_BYTES && pname <= GL_UNPACK_ALIGNMENT) {
+        int k = (int)(pname - GL_UNPACK_SWAP_BYTES);
+        bool ok = k == UP_ALIGNMENT ? param == 1 || param == 2 || param == 4 || param == 8
+                : k <= UP_LSB        ? true
+                                     : param >= 0;
+        if (ok)
+            s->objs.unpack[k] = k <= UP_LSB ? param != 0 : param;
     }
+    if (rec)
+        RECORD_NOW(s, RGL_OP_PixelStorei, "ei", pname, param);
     glPixelStorei(pname, param);
 }
 
@@ -874,8 +877,11 @@ RGL_EXPORT void rayglMultiDrawElements(GLenum mode, const GLsizei *count, GLenum
 static void array_pointer(int slot, uint32_t op, GLint size, GLenum type, GLsizei stride,
                           const GLvoid *ptr)
 {
+    /* Kept while not recording too: a pointer the recorder missed would be
+     * read, when a trace is opened later, after the program freed it. */
     rgl_stream *s;
-    if (!rgl_reserve(&s, 1))
+    bool rec = rgl_reserve(&s, 1) != NULL;
+    if (!rec && !(s = rgl_tls_stream))
         return;
     rgl_client_array_state *a = &s->arrays[slot];
     a->size = size;
@@ -883,6 +889,8 @@ static void array_pointer(int slot, uint32_t op, GLint size, GLenum type, GLsize
     a->stride = stride;
     a->pointer = ptr;
     a->buffer = rgl_buffer_binding(s, GL_ARRAY_BUFFER);
+    if (!rec)
+        return;
     switch (slot) {
     case RGL_CA_NORMAL: RECORD_NOW(s, op, "ei", type, stride); break;
     case RGL_CA_EDGEFLAG: RECORD_NOW(s, op, "i", stride); break;
@@ -931,10 +939,13 @@ static void client_state(GLenum array, bool enable)
 {
     int slot = array_slot(array);
     rgl_stream *s;
-    if (slot >= 0 && rgl_reserve(&s, 1)) {
+    bool rec = slot >= 0 && rgl_reserve(&s, 1) != NULL;
+    if (!rec)
+        s = rgl_tls_stream;
+    if (slot >= 0 && s) /* kept while not recording too (array_pointer) */
         s->arrays[slot].enabled = enable;
+    if (rec)
         RECORD_NOW(s, enable ? RGL_OP_EnableClientState : RGL_OP_DisableClientState, "e", array);
-    }
 }
 
 RGL_EXPORT void rayglEnableClientState(GLenum array)
@@ -984,8 +995,11 @@ RGL_EXPORT void rayglInterleavedArrays(GLenum format, GLsizei stride, const GLvo
     for (size_t k = 0; k < sizeof interleaved / sizeof interleaved[0]; k++)
         if (interleaved[k].format == format)
             f = &interleaved[k];
-    rgl_stream *s;
-    if (f && stride >= 0 && rgl_reserve(&s, 1)) {
+    rgl_stream *s; /* kept while not recording too (array_pointer) */
+    bool rec = f && stride >= 0 && rgl_reserve(&s, 1) != NULL;
+    if (!rec)
+        s = rgl_tls_stream;
+    if (f && stride >= 0 && s) {
         GLsizei st = stride ? stride : f->s;
         const uint8_t *p = pointer;
         rgl_client_array_state *a = s->arrays;
@@ -1005,7 +1019,8 @@ RGL_EXPORT void rayglInterleavedArrays(GLenum format, GLsizei stride, const GLvo
             a[RGL_CA_NORMAL] = (rgl_client_array_state){true, 3, GL_FLOAT, st, AT(f->pn), buf};
         a[RGL_CA_VERTEX] = (rgl_client_array_state){true, f->sv, GL_FLOAT, st, AT(f->pv), buf};
 #undef AT
-        RECORD_NOW(s, RGL_OP_InterleavedArrays, "ei", format, stride);
+        if (rec)
+            RECORD_NOW(s, RGL_OP_InterleavedArrays, "ei", format, stride);
     }
     glInterleavedArrays(format, stride, pointer);
 }

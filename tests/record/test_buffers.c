@@ -15,6 +15,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 #include <unistd.h>
 
 #include <GL/gl.h>
@@ -390,6 +391,56 @@ void test_live_bindings(const char *dir)
         if (rgl_reader_resource(r, id, &res, NULL) == RGL_OK && res.size == 16)
             found |= memcmp(res.data, stub_buffer + 16, 16) == 0;
     CHECK(found);
+    rgl_reader_destroy(r);
+    if (!check_failures)
+        unlink(path);
+}
+
+/* Client state set while no trace is open is still GL's when one opens:
+ * the recorder keeps it. A pointer replaced while closed (the old memory
+ * then gone: here a page made unreadable) is not read, nor is an offset
+ * into an unpack buffer bound while closed taken for an address. */
+void test_reopen(const char *dir)
+{
+    char path[128];
+    snprintf(path, sizeof path, "%s/reopen.raygl", dir);
+    long pg = sysconf(_SC_PAGESIZE);
+    float *old = mmap(NULL, (size_t)pg, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (!CHECK(old != MAP_FAILED))
+        return;
+    static const float now[3][2] = {{1, 2}, {3, 4}, {5, 6}};
+    CHECK(rayglRecordOpen(path) == 0);
+    rayglBindBuffer(GL_ARRAY_BUFFER, 0);
+    rayglEnableClientState(GL_VERTEX_ARRAY);
+    rayglVertexPointer(2, GL_FLOAT, 0, old);
+    rayglRecordClose();
+    rayglVertexPointer(2, GL_FLOAT, 0, now);
+    CHECK(mprotect(old, (size_t)pg, PROT_NONE) == 0);
+    GLuint b[1] = {0};
+    rayglGenBuffers(1, b);
+    rayglBindBuffer(GL_PIXEL_UNPACK_BUFFER, b[0] ? b[0] : 99);
+    CHECK(rayglRecordOpen(path) == 0);
+    rayglDrawArrays(GL_TRIANGLES, 0, 3);
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 32, 16, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                    (const void *)0x800);
+    rayglBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    rayglDisableClientState(GL_VERTEX_ARRAY);
+    rayglFrameEnd();
+    rayglRecordClose();
+    munmap(old, (size_t)pg);
+
+    rgl_reader *r = trace_open(path);
+    if (!r)
+        return;
+    rgl_frame_info fi;
+    trace_cmds c = trace_frame(r, 0, &fi);
+    long d = trace_cmds_find(&c, 0, "glDrawArrays");
+    CHECK(d > 0 && trace_cmds_find(&c, 0, "glTexImage2D") < 0);
+    size_t n;
+    const uint8_t *data = d > 0 ? blob(r, 0, (size_t)d - 1, 4, &n) : NULL;
+    if (CHECK(data && n == sizeof now))
+        CHECK(memcmp(data, now, sizeof now) == 0);
+    trace_cmds_free(&c);
     rgl_reader_destroy(r);
     if (!check_failures)
         unlink(path);

@@ -425,6 +425,8 @@ void test_pixel_rules(const char *dir)
     rayglBindTexture(GL_TEXTURE_2D, 1);
     rayglDisableClientState(GL_VERTEX_ARRAY); /* whatever the tests before left */
     rayglDisableClientState(GL_NORMAL_ARRAY);
+    rayglPixelStorei(GL_UNPACK_SKIP_ROWS, 0); /* test_unpack's, kept as GL keeps them */
+    rayglPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
     stub_reset();
     /* Refused by GL: nothing read, everything forwarded. */
     rayglTexImage2D(0x1234, 0, GL_RGBA, 64, 64, 0, GL_RGBA, GL_UNSIGNED_BYTE, bad);

@@ -25,6 +25,7 @@ void test_unpack(const char *dir);
 void test_pixel_rules(const char *dir);
 void test_pbo(const char *dir);
 void test_live_bindings(const char *dir);
+void test_reopen(const char *dir);
 
 /* ---- Deterministic values ------------------------------------------------------- */
 
@@ -275,6 +276,7 @@ int main(void)
     test_pixel_rules(dir);
     test_pbo(dir);
     test_live_bindings(dir);
+    test_reopen(dir);
     if (!check_failures)
         rmdir(dir);
     return check_exit();
