@@ -15,6 +15,7 @@
 
 #include <GL/gl.h>
 #include <GL/glext.h>
+#include <GL/glu.h>
 #include <GL/osmesa.h>
 
 #define SIDE 32
@@ -101,6 +102,29 @@ int main(void)
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1024, 1024, 0, GL_RGBA, GL_UNSIGNED_BYTE, tiny);
         glEnd());
     TRY(glTexSubImage2D(GL_TEXTURE_2D, 0, 15, 15, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, tiny));
+
+    /* GLU refuses these before it reads (its return value printed). */
+    printf("gluBuild2DMipmaps %d\n",
+           gluBuild2DMipmaps(GL_TEXTURE_2D, GL_RGBA, 0, 1024, GL_RGBA, GL_UNSIGNED_BYTE, tiny));
+    printf("gluBuild2DMipmaps %d\n", gluBuild2DMipmaps(GL_TEXTURE_2D, GL_RGBA, 1024, 1024,
+                                                      GL_RGBA, GL_UNSIGNED_SHORT_5_6_5, tiny));
+    report("glGetError after GLU");
+
+    /* Parameter names of other calls, one value behind them. */
+    static GLfloat one[1] = {2};
+    static GLint ione[1] = {2};
+    TRY(glFogfv(GL_AMBIENT, one));
+    TRY(glLightfv(GL_LIGHT0, GL_FOG_COLOR, one));
+    TRY(glMaterialfv(GL_FRONT, GL_POSITION, one));
+    TRY(glLightModelfv(GL_EYE_PLANE, one));
+    TRY(glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_BORDER_COLOR, one));
+    TRY(glTexGenfv(GL_S, GL_TEXTURE_ENV_COLOR, one));
+    TRY(glTexParameterfv(GL_TEXTURE_2D, GL_SPECULAR, one));
+    TRY(glTexParameteriv(GL_TEXTURE_2D, GL_EMISSION, ione));
+    TRY(glFogfv(GL_FOG_DENSITY, one));
+    static const GLubyte lists[2] = {1, 2};
+    TRY(glCallLists(-1, GL_UNSIGNED_BYTE, lists));
+    TRY(glCallLists(1 << 20, 0x1234, lists));
 
     /* Draws GL refuses, or that draw nothing, over 3 vertices and 1 index. */
     static const GLfloat tri[9] = {-1, -1, 0, 1, -1, 0, 1, 1, 0};
