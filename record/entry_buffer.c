@@ -327,20 +327,33 @@ RGL_EXPORT void rayglBindBufferARB(GLenum target, GLuint buffer)
 /* ---- Contents ---------------------------------------------------------------------- */
 
 /* The bound object of target for a data call, or NULL (bufs.mu held). */
-static buffer_obj *bound(rgl_stream *s, GLenum target)
+/* The buffer a data call on target changes: GL's answer with a live
+ * context (rgl_buffer_binding), 0 for a target RayGL does not keep. Asked
+ * before bufs.mu is taken. */
+static uint32_t bound_name(rgl_stream *s, GLenum target)
 {
-    uint32_t *slot = binding(s, target);
-    return slot && *slot ? find(*slot, true) : NULL;
+    return binding(s, target) ? rgl_buffer_binding(s, target) : 0;
+}
+
+/* The object of a name from bound_name, or NULL (bufs.mu held). */
+static buffer_obj *bound(uint32_t name) { return name ? find(name, true) : NULL; }
+
+/* GL 1.5 table 2.7: a usage GL refuses (INVALID_ENUM) reads no data. */
+static bool usage_ok(GLenum usage)
+{
+    return usage >= GL_STREAM_DRAW && usage <= GL_DYNAMIC_COPY && usage != 0x88E3 &&
+           usage != 0x88E7;
 }
 
 static void buffer_data(uint32_t op, GLenum target, GLsizeiptr size, const void *data,
                         GLenum usage)
 {
     rgl_stream *s;
-    if (size < 0 || !rgl_reserve(&s, 1))
+    if (size < 0 || !usage_ok(usage) || !rgl_reserve(&s, 1) || s->in_begin)
         return;
+    uint32_t name = bound_name(s, target);
     pthread_mutex_lock(&bufs.mu);
-    buffer_obj *b = bound(s, target);
+    buffer_obj *b = bound(name);
     bool ok = false;
     if (b && !b->mapped) {
         uint8_t *copy = rgl_realloc(b->data, size ? (size_t)size : 1);
@@ -381,10 +394,11 @@ static void buffer_sub_data(uint32_t op, GLenum target, GLintptr offset, GLsizei
                             const void *data)
 {
     rgl_stream *s;
-    if (offset < 0 || size < 0 || !data || !rgl_reserve(&s, 1))
+    if (offset < 0 || size < 0 || !data || !rgl_reserve(&s, 1) || s->in_begin)
         return;
+    uint32_t name = bound_name(s, target);
     pthread_mutex_lock(&bufs.mu);
-    buffer_obj *b = bound(s, target);
+    buffer_obj *b = bound(name);
     bool ok = b && !b->mapped && (uint64_t)offset + (uint64_t)size <= b->size;
     if (ok)
         memcpy(b->data + offset, data, (size_t)size);
@@ -415,8 +429,26 @@ static void map_buffer(uint32_t op, GLenum target, GLenum access, void *ptr)
     rgl_stream *s;
     if (!ptr || !rgl_reserve(&s, 1))
         return;
+    uint32_t name = bound_name(s, target);
+    /* The mapping is as long as GL's buffer, which the copy may not be
+     * (filled through a call RayGL does not see): unmap reads that many. */
+    GLint size = -1;
+    if (name && rgl_buffer_live())
+        glGetBufferParameteriv(target, GL_BUFFER_SIZE, &size);
     pthread_mutex_lock(&bufs.mu);
-    buffer_obj *b = bound(s, target);
+    buffer_obj *b = bound(name);
+    if (b && size >= 0 && (size_t)size != b->size) {
+        uint8_t *copy = rgl_realloc(b->data, size ? (size_t)size : 1);
+        if (copy) {
+            if ((size_t)size > b->size)
+                memset(copy + b->size, 0, (size_t)size - b->size);
+            b->data = copy;
+            b->size = (size_t)size;
+        } else {
+            rgl_fail(ENOMEM, "allocation failed");
+            b = NULL;
+        }
+    }
     if (b) {
         b->mapped = ptr;
         b->access = access;
@@ -447,8 +479,9 @@ static void unmap_buffer(uint32_t op, uint32_t sub_op, GLenum target)
     rgl_stream *s;
     if (!rgl_reserve(&s, 1))
         return;
+    uint32_t name = bound_name(s, target);
     pthread_mutex_lock(&bufs.mu);
-    buffer_obj *b = bound(s, target);
+    buffer_obj *b = bound(name);
     bool was_mapped = b && b->mapped;
     bool wrote = was_mapped && b->access != GL_READ_ONLY && b->size > 0;
     uint32_t id = 0;

@@ -445,3 +445,55 @@ void test_reopen(const char *dir)
     if (!check_failures)
         unlink(path);
 }
+
+/* glBufferData with a usage GL refuses reads no data (1 MiB asked of a
+ * pointer to a page that faults); a mapping is as long as GL says the
+ * buffer is (64 bytes), though the recorder's copy held 16: unmap records
+ * all 64. */
+void test_buffer_rules(const char *dir)
+{
+    char path[128];
+    snprintf(path, sizeof path, "%s/bufrules.raygl", dir);
+    long pg = sysconf(_SC_PAGESIZE);
+    uint8_t *bad = mmap(NULL, (size_t)pg, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (!CHECK(bad != MAP_FAILED))
+        return;
+    CHECK(rayglRecordOpen(path) == 0);
+    GLuint b[1] = {0};
+    rayglGenBuffers(1, b);
+    rayglBindBuffer(GL_ARRAY_BUFFER, b[0]);
+    stub_reset();
+    rayglBufferData(GL_ARRAY_BUFFER, 1 << 20, bad, 0x1234);
+    rayglBufferData(GL_ARRAY_BUFFER, 1 << 20, bad, GL_STATIC_DRAW + 3); /* 0x88e7: no usage */
+    CHECK(stub_nlog == 2);
+    static const uint8_t small[16] = {1, 2, 3};
+    rayglBufferData(GL_ARRAY_BUFFER, sizeof small, small, GL_STATIC_DRAW);
+    stub_version = "2.1 Mesa";
+    stub_ints[0] = (stub_int){GL_ARRAY_BUFFER_BINDING, (int)b[0]};
+    stub_nints = 1;
+    stub_buffer_size = 64;
+    uint8_t *m = rayglMapBuffer(GL_ARRAY_BUFFER, GL_WRITE_ONLY);
+    if (CHECK(m == stub_mapped))
+        for (int i = 0; i < 64; i++)
+            m[i] = (uint8_t)(i + 1);
+    rayglUnmapBuffer(GL_ARRAY_BUFFER);
+    stub_version = NULL;
+    stub_nints = 0;
+    rayglBindBuffer(GL_ARRAY_BUFFER, 0);
+    rayglFrameEnd();
+    rayglRecordClose();
+    munmap(bad, (size_t)pg);
+
+    rgl_reader *r = trace_open(path);
+    if (!r)
+        return;
+    rgl_frame_info fi;
+    trace_cmds c = trace_frame(r, 0, &fi);
+    CHECK(trace_cmds_count(&c, RGL_OP_BufferData) == 1);
+    long k = trace_cmds_find(&c, 0, "glBufferSubData(target=GL_ARRAY_BUFFER, offset=0, size=64,");
+    CHECK(k > 0);
+    trace_cmds_free(&c);
+    rgl_reader_destroy(r);
+    if (!check_failures)
+        unlink(path);
+}

@@ -26,6 +26,7 @@ void test_pixel_rules(const char *dir);
 void test_pbo(const char *dir);
 void test_live_bindings(const char *dir);
 void test_reopen(const char *dir);
+void test_buffer_rules(const char *dir);
 
 /* ---- Deterministic values ------------------------------------------------------- */
 
@@ -277,6 +278,7 @@ int main(void)
     test_pbo(dir);
     test_live_bindings(dir);
     test_reopen(dir);
+    test_buffer_rules(dir);
     if (!check_failures)
         rmdir(dir);
     return check_exit();
