@@ -1,16 +1,24 @@
 #!/bin/sh
-# same_output.sh PLAIN RECORDED DIR: runs a program built plain and built to
-# record (-include raygl/gl.h), and fails unless both print the same lines
-# and exit with the same status, and the recorded one wrote a trace. Each
-# run works in a directory of its own under DIR (runs may be concurrent),
-# kept when it fails.
+# same_output.sh PLAIN RECORDED DIR [PRELOAD]: runs a program built plain
+# and built to record (-include raygl/gl.h), or with PRELOAD the plain one
+# again under LD_PRELOAD=PRELOAD (what `raygl record` does), and fails
+# unless both print the same lines and exit with the same status, and the
+# recorded one wrote a trace. Each run works in a directory of its own
+# under DIR (runs may be concurrent), kept when it fails.
 set -u
-plain=$1 recorded=$2
+plain=$1 recorded=$2 preload=${4:-}
 mkdir -p "$3" || exit 1
 dir=$(mktemp -d "$3/run.XXXXXX") || exit 1
 "$plain" >"$dir/plain.txt" 2>"$dir/plain.err"
 ps=$?
-RAYGL_TRACE="$dir/recorded.raygl" "$recorded" >"$dir/recorded.txt" 2>"$dir/recorded.err"
+if [ -n "$preload" ]; then
+    # A preload library built with sanitizers needs their runtimes first.
+    san=$(ldd "$preload" | awk '/lib(asan|ubsan)\.so/ {print $3}' | tr '\n' ':')
+    RAYGL_TRACE="$dir/recorded.raygl" ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 \
+        LD_PRELOAD="$san$preload" "$recorded" >"$dir/recorded.txt" 2>"$dir/recorded.err"
+else
+    RAYGL_TRACE="$dir/recorded.raygl" "$recorded" >"$dir/recorded.txt" 2>"$dir/recorded.err"
+fi
 rs=$?
 fail=0
 if [ "$ps" -ne "$rs" ]; then
