@@ -286,7 +286,7 @@ RGL_EXPORT void rayglPixelStorei(GLenum pname, GLint param)
     bool rec = rgl_reserve(&s, 1) != NULL;
     if (!rec)
         s = rgl_tls_stream;
-    if (s && pname >= GL_UNPACK_SWAP_BYTES && pname <= GL_UNPACK_ALIGNMENT) {
+    if (s && !s->in_begin && pname >= GL_UNPACK_SWAP_BYTES && pname <= GL_UNPACK_ALIGNMENT) {
         int k = (int)(pname - GL_UNPACK_SWAP_BYTES);
         bool ok = k == UP_ALIGNMENT ? param == 1 || param == 2 || param == 4 || param == 8
                 : k <= UP_LSB        ? true
