@@ -174,14 +174,24 @@ uint32_t rgl_buffer_binding(rgl_stream *s, GLenum target)
     case GL_PIXEL_UNPACK_BUFFER: pname = GL_PIXEL_UNPACK_BUFFER_BINDING; need = CAP_PBO; break;
     default: return tracked;
     }
-    unsigned caps = gl_caps();
-    if (!(caps & CAP_LIVE))
-        return tracked;
+    /* What a live context has is asked once a frame (glGetString costs
+     * three times the binding query in Mesa): a thread that makes a
+     * context of another GL version current within a frame gets the first
+     * one's answer until the next frame. Whether there is a context at all
+     * is seen at every call: the query leaves its output alone without. */
+    unsigned caps = s->frame_open ? s->gl_caps : 0;
+    if (!caps) {
+        caps = gl_caps();
+        if (!(caps & CAP_LIVE))
+            return tracked;
+        if (s->frame_open)
+            s->gl_caps = caps;
+    }
     if (!(caps & need))
         return 0; /* GL has no such binding: the pointer is an address */
-    GLint b = 0;
+    GLint b = -1;
     glGetIntegerv(pname, &b);
-    return (uint32_t)b;
+    return b == -1 ? tracked : (uint32_t)b;
 }
 
 bool rgl_buffer_live(void) { return gl_caps() & CAP_LIVE; }

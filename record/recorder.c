@@ -723,6 +723,7 @@ static void frame_write(rgl_stream *s, bool reset)
 static void frame_start(rgl_stream *s)
 {
     s->frame_open = true;
+    s->gl_caps = 0; /* asked again in the frame (entry_buffer.c) */
     s->have_matrix[0] = s->have_matrix[1] = false;
     s->snap.size = 0;
     if (rgl_snapshot_take(s, &s->snap)) {

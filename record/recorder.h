@@ -118,6 +118,8 @@ typedef struct rgl_stream {
     rgl_client_array_state arrays[RGL_MAX_CLIENT_ARRAYS];
     uint32_t array_buffer, element_buffer; /* buffer bindings (GL 1.5) */
     uint32_t unpack_buffer, pack_buffer;   /* pixel buffer bindings (GL 2.1) */
+    uint32_t gl_caps; /* what the context has (entry_buffer.c), 0: not asked
+                         in this frame yet */
     rgl_objects objs;
 
     /* Recorder bookkeeping (recorder.c): never touched on the hot path. */
