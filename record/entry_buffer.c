@@ -88,9 +88,6 @@ const uint8_t *rgl_buffer_acquire(uint32_t name, size_t *size)
 {
     pthread_mutex_lock(&bufs.mu);
     buffer_obj *b = find(name, false);
-    /* GL sources nothing from a mapped buffer (GL 1.5, 2.9.3). */
-    if (b && b->mapped)
-        b = NULL;
     *size = b ? b->size : 0;
     return b ? b->data : NULL;
 }
@@ -220,12 +217,13 @@ bool rgl_buffer_gather(uint32_t target, uint32_t name, bool live, uint64_t offse
         }
         return true;
     }
-    size_t size;
-    const uint8_t *data = rgl_buffer_acquire(name, &size);
-    bool ok = data && end <= size;
+    pthread_mutex_lock(&bufs.mu);
+    buffer_obj *b = find(name, false);
+    /* GL takes no pixels from a mapped buffer (GL 2.1, 2.9.3). */
+    bool ok = b && b->data && !b->mapped && end <= b->size;
     for (size_t y = 0; ok && y < rows; y++)
-        memcpy(out + y * row, data + offset + y * stride, row);
-    rgl_buffer_release();
+        memcpy(out + y * row, b->data + offset + y * stride, row);
+    pthread_mutex_unlock(&bufs.mu);
     return ok;
 }
 

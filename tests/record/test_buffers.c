@@ -455,7 +455,7 @@ void test_reopen(const char *dir)
 /* glBufferData with a usage GL refuses reads no data (1 MiB asked of a
  * pointer to a page that faults); a mapping is as long as GL says the
  * buffer is (64 bytes), though the recorder's copy held 16: unmap records
- * all 64. */
+ * all 64; a draw from a buffer mapped for reading is recorded. */
 void test_buffer_rules(const char *dir)
 {
     char path[128];
@@ -485,6 +485,14 @@ void test_buffer_rules(const char *dir)
     rayglUnmapBuffer(GL_ARRAY_BUFFER);
     stub_version = NULL;
     stub_nints = 0;
+    /* Drawn from while mapped for reading (Mesa draws): recorded from the
+     * recorder's copy, which the mapping cannot change. */
+    rayglMapBuffer(GL_ARRAY_BUFFER, GL_READ_ONLY);
+    rayglEnableClientState(GL_VERTEX_ARRAY);
+    rayglVertexPointer(2, GL_FLOAT, 0, (const void *)0);
+    rayglDrawArrays(GL_POINTS, 0, 2);
+    rayglDisableClientState(GL_VERTEX_ARRAY);
+    rayglUnmapBuffer(GL_ARRAY_BUFFER);
     rayglBindBuffer(GL_ARRAY_BUFFER, 0);
     rayglFrameEnd();
     rayglRecordClose();
@@ -496,6 +504,7 @@ void test_buffer_rules(const char *dir)
     rgl_frame_info fi;
     trace_cmds c = trace_frame(r, 0, &fi);
     CHECK(trace_cmds_count(&c, RGL_OP_BufferData) == 1);
+    CHECK(trace_cmds_count(&c, RGL_OP_DrawArrays) == 1);
     long k = trace_cmds_find(&c, 0, "glBufferSubData(target=GL_ARRAY_BUFFER, offset=0, size=64,");
     CHECK(k > 0);
     trace_cmds_free(&c);
