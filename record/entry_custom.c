@@ -614,9 +614,11 @@ static bool array_source(const rgl_client_array_state *a, int64_t first, int64_t
 
 /* Records @ArrayData for the elements [first, first+count) of every enabled
  * array, packed. Returns false (nothing recorded) when an enabled array
- * has no pointer, or buffer data that does not hold the elements: GL would
- * fault or refuse, the draw goes on unrecorded. */
-static bool record_arrays(int64_t first, int64_t count)
+ * has no pointer (GL would fault: the draw goes on unrecorded), or buffer
+ * data that does not hold the elements: GL may refuse the draw, or draw
+ * from a buffer filled in a way the recorder did not see; op, the draw,
+ * is then marked @Skipped. */
+static bool record_arrays(uint32_t op, int64_t first, int64_t count)
 {
     rgl_stream *s = rgl_tls_stream;
     if (!s)
@@ -630,8 +632,10 @@ static bool record_arrays(int64_t first, int64_t count)
     for (int k = 0; k < RGL_MAX_CLIENT_ARRAYS; k++) {
         const uint8_t *src;
         if (s->arrays[k].enabled && s->arrays[k].buffer && count > 0) {
-            if (!array_source(&s->arrays[k], first, count, &src))
+            if (!array_source(&s->arrays[k], first, count, &src)) {
+                note_skipped(op, PX_SKIP_DATA);
                 return false;
+            }
             rgl_buffer_release();
         }
     }
@@ -733,10 +737,12 @@ static bool record_elements(uint32_t op, GLenum mode, GLuint start, GLuint end, 
     bool ok = idx && index_range(count, type, idx, &lo, &hi, &bytes);
     if (locked)
         rgl_buffer_release();
+    if (!idx && eb)
+        note_skipped(op, PX_SKIP_DATA); /* see record_arrays */
     if (!ok)
         return false;
     rgl_resolve_matrices();
-    if (count > 0 && !record_arrays(lo, (int64_t)hi - lo + 1))
+    if (count > 0 && !record_arrays(op, lo, (int64_t)hi - lo + 1))
         return false;
     if (!(idx = index_source(eb, indices, bytes, &locked)))
         return false;
@@ -752,7 +758,7 @@ static bool record_elements(uint32_t op, GLenum mode, GLuint start, GLuint end, 
 RGL_EXPORT void rayglArrayElement(GLint i)
 {
     /* Inside glBegin/glEnd: no matrix read-back here (glGet is illegal). */
-    if (i >= 0 && record_arrays(i, 1))
+    if (i >= 0 && record_arrays(RGL_OP_ArrayElement, i, 1))
         rgl_record(RGL_OP_ArrayElement, "i", i);
     glArrayElement(i);
 }
@@ -762,7 +768,7 @@ RGL_EXPORT void rayglDrawArrays(GLenum mode, GLint first, GLsizei count)
     rgl_stream *s = rgl_tls_stream;
     if (first >= 0 && count >= 0 && s && draw_ok(s, RGL_OP_DrawArrays, mode)) {
         rgl_resolve_matrices();
-        if (record_arrays(first, count))
+        if (record_arrays(RGL_OP_DrawArrays, first, count))
             rgl_record(RGL_OP_DrawArrays, "eii", mode, first, count);
     }
     glDrawArrays(mode, first, count);
@@ -803,7 +809,7 @@ RGL_EXPORT void rayglMultiDrawArrays(GLenum mode, const GLint *first, const GLsi
         rgl_resolve_matrices();
         if (lo == INT64_MAX)
             lo = hi = 0;
-        if (record_arrays(lo, hi - lo))
+        if (record_arrays(RGL_OP_MultiDrawArrays, lo, hi - lo))
             rgl_record(RGL_OP_MultiDrawArrays, "eBBi", mode, (const void *)first,
                        (size_t)drawcount * 4, (const void *)count, (size_t)drawcount * 4,
                        drawcount);
@@ -843,6 +849,8 @@ static void record_multi_elements(GLenum mode, const GLsizei *count, GLenum type
         uint32_t l, h;
         size_t b;
         ok = idx && index_range(count[i], type, idx, &l, &h, &b);
+        if (!idx && eb)
+            note_skipped(RGL_OP_MultiDrawElements, PX_SKIP_DATA); /* see record_arrays */
         if (ok && bytes) {
             memcpy(all + at, idx, bytes);
             at += bytes;
@@ -858,7 +866,7 @@ static void record_multi_elements(GLenum mode, const GLsizei *count, GLenum type
             lo = hi = 0;
         else
             hi++;
-        if (record_arrays(lo, (int64_t)hi - lo))
+        if (record_arrays(RGL_OP_MultiDrawElements, lo, (int64_t)hi - lo))
             rgl_record(RGL_OP_MultiDrawElements, "eBeBi", mode, (const void *)count,
                        (size_t)drawcount * 4, type, (const void *)all, total, drawcount);
     }

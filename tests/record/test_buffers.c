@@ -7,7 +7,7 @@
  * indices that are offsets into a bound element buffer, resolved into
  * @ArrayData and index blobs; a mapped buffer's bytes recorded at unmap
  * (a write mapping) and not (a read-only one); the ARB names; a draw past
- * a buffer's end left unrecorded; glMultiDrawArrays / glMultiDrawElements;
+ * a buffer's end left unrecorded, with @Skipped; glMultiDrawArrays / glMultiDrawElements;
  * glGenLists, glDeleteLists, pointer and client-state calls made while a
  * list compiles go to the frame, and @ArrayData stays in the list.
  */
@@ -77,7 +77,7 @@ void test_buffers(const char *dir)
     rayglDrawElements(GL_TRIANGLES, 3, GL_UNSIGNED_SHORT, (const void *)2); /* 1, 2, 1 */
     CHECK(stub_nlog == 1 && stub_log[0].p[3] == (const void *)2); /* GL gets the offset */
     rayglDrawArrays(GL_POINTS, 2, 3); /* elements 2..4: the buffer holds 0..3 (+ 2 of 0) */
-    rayglDrawArrays(GL_POINTS, 5, 2); /* 5, 6 end at byte 72 > 64: not recorded */
+    rayglDrawArrays(GL_POINTS, 5, 2); /* 5, 6 end at byte 72 > 64: @Skipped */
     static const GLint mf[2] = {0, 2};
     static const GLsizei mc[2] = {1, 2};
     rayglMultiDrawArrays(GL_POINTS, mf, mc, 2);
@@ -129,6 +129,7 @@ void test_buffers(const char *dir)
         "glDrawElements(mode=GL_TRIANGLES, count=3, type=GL_UNSIGNED_SHORT, indices=<6 bytes>)",
         "@ArrayData(array=GL_VERTEX_ARRAY, first=2, size=2, type=GL_FLOAT, data=<24 bytes>)",
         "glDrawArrays(mode=GL_POINTS, first=2, count=3)",
+        "@Skipped(opcode=0x7e, reason=0x2)", /* past the buffer's end: said */
         "@ArrayData(array=GL_VERTEX_ARRAY, first=0, size=2, type=GL_FLOAT, data=<32 bytes>)",
         "glMultiDrawArrays(mode=GL_POINTS, first=<8 bytes>, count=<8 bytes>, drawcount=2)",
         "@ArrayData(array=GL_VERTEX_ARRAY, first=1, size=2, type=GL_FLOAT, data=<24 bytes>)",
@@ -158,7 +159,7 @@ void test_buffers(const char *dir)
     }
     d = blob(r, 0, 9, 3, &n);
     CHECK(d && n == 6 && d[0] == 1 && d[2] == 2 && d[4] == 1);
-    d = blob(r, 0, 15, 3, &n);
+    d = blob(r, 0, 16, 3, &n);
     CHECK(d && n == 6 && d[0] == 3 && d[2] == 1 && d[4] == 2);
     rgl_resource res;
     if (CHECK(rgl_reader_resource(r, 3, &res, NULL) == RGL_OK))
