@@ -10,7 +10,10 @@
  *
  * As with the generated entry points, each call is recorded and then made
  * for real; a call GL would reject or fault on (a NULL pointer, a negative
- * count, an unknown type) is forwarded unrecorded.
+ * count, an unknown type) is forwarded unrecorded, and none of its memory
+ * is read: the recorder reads what GL reads, no more (docs/design.md, "As
+ * safe as GL"). A call GL may carry out but the recorder cannot record
+ * leaves @Skipped in its place.
  */
 #include <errno.h>
 #include <pthread.h>
