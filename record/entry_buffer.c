@@ -56,9 +56,6 @@ static struct {
     uint32_t next_name; /* RayGL's own names when GL has no context */
 } bufs = {.mu = PTHREAD_MUTEX_INITIALIZER};
 
-/* Calls GL executes at once: into the frame even while a list compiles. */
-#define RECORD_NOW(s, op, ...) \
-    ((s)->compiling ? rgl_emit(&(s)->frame, (op), __VA_ARGS__) : rgl_record((op), __VA_ARGS__))
 
 /* The object `name`, created when create is set; bufs.mu held. */
 static buffer_obj *find(uint32_t name, bool create)

@@ -284,6 +284,48 @@ bool rgl_buffer_live(void);
 bool rgl_buffer_gather(uint32_t target, uint32_t name, bool live, uint64_t offset,
                        uint64_t stride, size_t row, size_t rows, uint8_t *out);
 
+/* Records a call GL executes at once even while a list is compiled
+ * (client state, list names, buffer objects): into the frame, never into
+ * the list body. */
+#define RECORD_NOW(s, op, ...) \
+    ((s)->compiling ? rgl_emit(&(s)->frame, (op), __VA_ARGS__) : rgl_record((op), __VA_ARGS__))
+
+/* Pixels (pixels.c). What a pixel call came to: a resource id (> 0), or
+ * one of these. */
+enum rgl_px_result {
+    RGL_PX_NONE = 0,       /* no data: NULL pixels, an empty image, a proxy */
+    RGL_PX_REFUSED = -1,   /* GL refuses the call and reads nothing, or recording failed */
+    RGL_PX_SKIP_ENUM = -2, /* not recorded: an enum RayGL does not know */
+    RGL_PX_SKIP_DATA = -3, /* not recorded: the data could not be read */
+};
+
+/* Writes the w x h image at pixels (laid out as the unpack state says) as a
+ * tightly packed RGL_RES_BYTES resource, reading only what GL reads: from
+ * client memory, or from the buffer bound to GL_PIXEL_UNPACK_BUFFER (glu:
+ * for GLU, which reads client memory whatever is bound; a bound buffer is
+ * then RGL_PX_SKIP_DATA). Calling thread's stream s, outside glBegin/glEnd. */
+int64_t rgl_pixels_put(rgl_stream *s, uint32_t format, uint32_t type, int32_t w, int32_t h,
+                       const void *pixels, bool glu);
+
+/* The pixels of glTexImage1D/2D (sub false) or glTexSubImage2D (sub true;
+ * internal unused): checked as GL checks target, level, sizes and border
+ * first (with a live context also the largest size and a sub-image's
+ * place), then rgl_pixels_put. A proxy reads nothing (RGL_PX_NONE). */
+int64_t rgl_tex_pixels(rgl_stream *s, int dims, bool sub, uint32_t target, int32_t level,
+                       int32_t internal, int32_t x, int32_t y, int32_t w, int32_t h,
+                       int32_t border, uint32_t format, uint32_t type, const void *pixels);
+
+/* The pixels of gluBuild2DMipmaps, after GLU's own checks. */
+int64_t rgl_glu_pixels(rgl_stream *s, int32_t w, int32_t h, uint32_t format, uint32_t type,
+                       const void *data);
+
+/* Whether target is a proxy texture target (GL reads no pixels for it). */
+bool rgl_tex_is_proxy(uint32_t target);
+
+/* Records @Skipped(op, reason) where a call was passed to GL unrecorded
+ * with RGL_PX_SKIP_ENUM or RGL_PX_SKIP_DATA; nothing for other values. */
+void rgl_note_skipped(uint32_t op, int64_t why);
+
 /* Returns the texture record for `name` in s, creating it when create is set
  * (NULL when absent or on allocation failure). */
 rgl_texture *rgl_texture_get(rgl_stream *s, uint32_t name, bool create);
