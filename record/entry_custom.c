@@ -5,8 +5,9 @@
  * table cannot express (arrays, pixels, list names), that return names, or
  * that mark frame boundaries. Client memory is copied into the trace: pixel
  * data as resources, tightly packed (pixels.c); the used range of each
- * enabled client array as @ArrayData before each draw. Texture and display-list objects are
- * tracked per stream so the frame-start snapshot can re-create them.
+ * enabled client array as @ArrayData before each draw. Texture and
+ * display-list objects are tracked per stream so the frame-start snapshot
+ * can re-create them.
  *
  * As with the generated entry points, each call is recorded and then made
  * for real; a call GL would reject or fault on (a NULL pointer, a negative
