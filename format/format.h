@@ -52,6 +52,12 @@ enum rgl_resource_kind {
     RGL_RES_BYTES = 2,    /* raw bytes: texel data */
 };
 
+/* Why a call was not recorded (@Skipped, format 1.3). */
+enum rgl_skip_reason {
+    RGL_SKIP_UNKNOWN_ENUM = 1, /* an enum the recorder does not know (GL may) */
+    RGL_SKIP_NO_DATA = 2,      /* the data the call reads could not be read */
+};
+
 /* Frame flags. */
 enum rgl_frame_flags {
     RGL_FRAME_LIVE_CONTEXT = 1u << 0, /* recorded with a live GL context */
@@ -147,6 +153,21 @@ uint32_t rgl_pname_count(uint32_t pname);
  * GL_MAP2_*, GL 1.x table 5.1: GL_MAP1_VERTEX_4 has 4), 0 for any other
  * value; *two receives whether it is a GL_MAP2_* target (may be NULL). */
 uint32_t rgl_map_components(uint32_t target, bool *two);
+
+/* The calls that take a parameter name (format/pnames.def). */
+enum rgl_pname_family {
+    RGL_PN_LIGHT = 1u << 0,
+    RGL_PN_MATERIAL = 1u << 1,
+    RGL_PN_LIGHT_MODEL = 1u << 2,
+    RGL_PN_FOG = 1u << 3,
+    RGL_PN_TEX_PARAMETER = 1u << 4,
+    RGL_PN_TEX_ENV = 1u << 5,
+    RGL_PN_TEX_GEN = 1u << 6,
+};
+
+/* Number of values the calls of `family` read for pname: 0 when pname is
+ * unknown or not theirs (GL refuses it and reads nothing). */
+uint32_t rgl_pname_count_in(uint32_t family, uint32_t pname);
 
 /* The GL_ name of an enum value, or NULL. For values shared by several names
  * (GL_POINTS and GL_ZERO), `hint` picks the family: the argument's name. */

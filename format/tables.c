@@ -101,7 +101,7 @@ const rgl_cmd_info *const *rgl_cmd_info_all(size_t *count)
 uint32_t rgl_pname_count(uint32_t pname)
 {
     switch (pname) {
-#define RGL_PNAME(name, value, count)                                                \
+#define RGL_PNAME(name, value, count, families)                                      \
     case value:                                                                     \
         return count;
 #include "pnames.def"
@@ -123,6 +123,19 @@ uint32_t rgl_map_components(uint32_t target, bool *two)
     if (target >= 0x0D90 && target <= 0x0D98)
         return k[target - 0x0D90];
     return is2 ? k[target - 0x0DB0] : 0;
+}
+
+uint32_t rgl_pname_count_in(uint32_t family, uint32_t pname)
+{
+    switch (pname) {
+#define RGL_PNAME(name, value, count, families)                                      \
+    case value:                                                                     \
+        return ((families) & family) ? count : 0;
+#include "pnames.def"
+#undef RGL_PNAME
+    default:
+        return 0;
+    }
 }
 
 /* ---- Enum names ------------------------------------------------------------------- */

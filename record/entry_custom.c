@@ -4,13 +4,17 @@
  * These are the calls whose arguments point at client memory of a size the
  * table cannot express (arrays, pixels, list names), that return names, or
  * that mark frame boundaries. Client memory is copied into the trace: pixel
- * data as resources, tightly packed; the used range of each enabled client
- * array as @ArrayData before each draw. Texture and display-list objects are
- * tracked per stream so the frame-start snapshot can re-create them.
+ * data as resources, tightly packed (pixels.c); the used range of each
+ * enabled client array as @ArrayData before each draw. Texture and
+ * display-list objects are tracked per stream so the frame-start snapshot
+ * can re-create them.
  *
  * As with the generated entry points, each call is recorded and then made
  * for real; a call GL would reject or fault on (a NULL pointer, a negative
- * count, an unknown type) is forwarded unrecorded.
+ * count, an unknown type) is forwarded unrecorded, and none of its memory
+ * is read: the recorder reads what GL reads, no more (docs/design.md, "As
+ * safe as GL"). A call GL may carry out but the recorder cannot record
+ * leaves @Skipped in its place.
  */
 #include <errno.h>
 #include <pthread.h>
@@ -86,10 +90,6 @@ static bool executes(const rgl_stream *s)
     return !s->compiling || s->list_mode == GL_COMPILE_AND_EXECUTE;
 }
 
-/* Records a call GL executes at once even while a list is compiled
- * (client state, list names): into the frame, never into the list body. */
-#define RECORD_NOW(s, op, ...) \
-    ((s)->compiling ? rgl_emit(&(s)->frame, (op), __VA_ARGS__) : rgl_record((op), __VA_ARGS__))
 
 static int target_slot(GLenum target)
 {
@@ -155,136 +155,6 @@ static void texture_param(GLenum target, GLenum pname, bool is_float, const GLfl
     }
 }
 
-/* ---- Pixels ---------------------------------------------------------------- */
-
-/* Bytes per pixel of format/type (GL 1.5, tables 3.5 and 3.8), 0 if invalid;
- * *packed tells whether the type packs all components into one element. */
-static size_t pixel_size(GLenum format, GLenum type)
-{
-    size_t comps;
-    switch (format) {
-    case GL_COLOR_INDEX: case GL_STENCIL_INDEX: case GL_DEPTH_COMPONENT: case GL_RED:
-    case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_LUMINANCE:
-        comps = 1;
-        break;
-    case GL_LUMINANCE_ALPHA: comps = 2; break;
-    case GL_RGB: case GL_BGR: comps = 3; break;
-    case GL_RGBA: case GL_BGRA: comps = 4; break;
-    default: return 0;
-    }
-    switch (type) {
-    case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV:
-        return 1;
-    case GL_UNSIGNED_SHORT_5_6_5: case GL_UNSIGNED_SHORT_5_6_5_REV:
-    case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_4_4_4_4_REV:
-    case GL_UNSIGNED_SHORT_5_5_5_1: case GL_UNSIGNED_SHORT_1_5_5_5_REV:
-        return 2;
-    case GL_UNSIGNED_INT_8_8_8_8: case GL_UNSIGNED_INT_8_8_8_8_REV:
-    case GL_UNSIGNED_INT_10_10_10_2: case GL_UNSIGNED_INT_2_10_10_10_REV:
-        return 4;
-    default:
-        return comps * type_size(type == GL_DOUBLE ? 0 : type);
-    }
-}
-
-/* GL's unpack state: read back from a live context, GL's defaults without
- * one (a batch program's glPixelStorei is recorded but not seen here). */
-typedef struct unpack_state {
-    GLint alignment, row_length, skip_rows, skip_pixels;
-} unpack_state;
-
-static unpack_state unpack_get(void)
-{
-    rgl_stream *s = rgl_tls_stream;
-    if (s && !rgl_live_context()) { /* what the program set through the recorder */
-        const int32_t *v = s->objs.unpack;
-        return (unpack_state){v[0] ? v[0] : 4, v[1], v[2], v[3]};
-    }
-    unpack_state u = {0, 0, 0, 0};
-    glGetIntegerv(GL_UNPACK_ALIGNMENT, &u.alignment);
-    if (u.alignment != 1 && u.alignment != 2 && u.alignment != 4 && u.alignment != 8)
-        return (unpack_state){4, 0, 0, 0};
-    glGetIntegerv(GL_UNPACK_ROW_LENGTH, &u.row_length);
-    glGetIntegerv(GL_UNPACK_SKIP_ROWS, &u.skip_rows);
-    glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &u.skip_pixels);
-    return u;
-}
-
-/* Client state: executed at once, never compiled into a list (GL 1.x
- * 5.4); kept for pixels_put when there is no context to ask. */
-RGL_EXPORT void rayglPixelStorei(GLenum pname, GLint param)
-{
-    rgl_stream *s;
-    if (rgl_reserve(&s, 1)) {
-        static const GLenum unpack[4] = {GL_UNPACK_ALIGNMENT, GL_UNPACK_ROW_LENGTH,
-                                         GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS};
-        for (int k = 0; k < 4; k++) {
-            bool ok = k == 0 ? param == 1 || param == 2 || param == 4 || param == 8 : param >= 0;
-            if (pname == unpack[k] && ok)
-                s->objs.unpack[k] = param;
-        }
-        RECORD_NOW(s, RGL_OP_PixelStorei, "ei", pname, param);
-    }
-    glPixelStorei(pname, param);
-}
-
-/* Writes the w x h image at pixels (laid out as the unpack state says) as a
- * tightly packed RGL_RES_BYTES resource. Returns its id; 0 for NULL pixels;
- * -1 when GL would reject the call (bad format, type or size) or recording
- * failed. */
-static int64_t pixels_put(GLenum format, GLenum type, GLsizei w, GLsizei h, const void *pixels)
-{
-    if (w < 0 || h < 0)
-        return -1;
-    if (!pixels)
-        return 0;
-    unpack_state u = unpack_get();
-    size_t row, stride;
-    const uint8_t *src = pixels;
-    if (type == GL_BITMAP) {
-        if (format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX)
-            return -1;
-        size_t l = (size_t)(u.row_length > 0 ? u.row_length : w);
-        row = ((size_t)w + 7) / 8;
-        stride = ((l + 7) / 8 + (size_t)u.alignment - 1) / (size_t)u.alignment * (size_t)u.alignment;
-        /* Skipped pixels of a bitmap are bits: whole bytes only. */
-        src += (size_t)u.skip_rows * stride + (size_t)u.skip_pixels / 8;
-    } else {
-        size_t ps = pixel_size(format, type);
-        if (!ps)
-            return -1;
-        size_t l = (size_t)(u.row_length > 0 ? u.row_length : w);
-        row = (size_t)w * ps;
-        stride = (l * ps + (size_t)u.alignment - 1) / (size_t)u.alignment * (size_t)u.alignment;
-        src += (size_t)u.skip_rows * stride + (size_t)u.skip_pixels * ps;
-    }
-    if (h > 0 && row > (RGL_CHUNK_MAX_PAYLOAD + (size_t)0) / (size_t)h) {
-        rgl_fail(EFBIG, "a texture image is larger than a chunk can hold");
-        return -1;
-    }
-    size_t total = row * (size_t)h;
-    uint32_t id;
-    if (stride == row || h <= 1) {
-        id = rgl_resource_put(RGL_RES_BYTES, src, total);
-    } else {
-        uint8_t *tight = rgl_alloc(total);
-        if (!tight) {
-            rgl_fail(ENOMEM, "allocation failed");
-            return -1;
-        }
-        for (size_t y = 0; y < (size_t)h; y++)
-            memcpy(tight + y * row, src + y * stride, row);
-        id = rgl_resource_put(RGL_RES_BYTES, tight, total);
-        rgl_free(tight);
-    }
-    return id ? (int64_t)id : -1;
-}
-
-static bool is_proxy(GLenum target)
-{
-    return target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D;
-}
-
 /* ---- Client arrays --------------------------------------------------------- */
 
 static const GLenum array_enums[RGL_MAX_CLIENT_ARRAYS] = {
@@ -302,6 +172,21 @@ static int array_slot(GLenum array)
 static size_t element_size(const rgl_client_array_state *a)
 {
     return (size_t)a->size * type_size(a->type);
+}
+
+/* Whether a draw (not glArrayElement) is one GL carries out and RayGL
+ * records: outside glBegin/glEnd, a mode of GL 1.x, the vertex array
+ * enabled. GL refuses a bad mode (INVALID_ENUM) or a draw inside
+ * glBegin/glEnd (INVALID_OPERATION) and reads no element, and without the
+ * vertex array it draws nothing. The later modes (lines and triangles with
+ * adjacency, patches) are GL's but not RayGL's: @Skipped. */
+static bool draw_ok(rgl_stream *s, uint32_t op, GLenum mode)
+{
+    if (s->in_begin || !s->arrays[RGL_CA_VERTEX].enabled)
+        return false;
+    if (mode > GL_POLYGON && mode <= GL_PATCHES)
+        rgl_note_skipped(op, RGL_PX_SKIP_ENUM);
+    return mode <= GL_POLYGON;
 }
 
 /* Where array a's element `first` starts and how far its data runs: in
@@ -332,9 +217,11 @@ static bool array_source(const rgl_client_array_state *a, int64_t first, int64_t
 
 /* Records @ArrayData for the elements [first, first+count) of every enabled
  * array, packed. Returns false (nothing recorded) when an enabled array
- * has no pointer, or buffer data that does not hold the elements: GL would
- * fault or refuse, the draw goes on unrecorded. */
-static bool record_arrays(int64_t first, int64_t count)
+ * has no pointer (GL would fault: the draw goes on unrecorded), or buffer
+ * data that does not hold the elements: GL may refuse the draw, or draw
+ * from a buffer filled in a way the recorder did not see; op, the draw,
+ * is then marked @Skipped. */
+static bool record_arrays(uint32_t op, int64_t first, int64_t count)
 {
     rgl_stream *s = rgl_tls_stream;
     if (!s)
@@ -348,8 +235,10 @@ static bool record_arrays(int64_t first, int64_t count)
     for (int k = 0; k < RGL_MAX_CLIENT_ARRAYS; k++) {
         const uint8_t *src;
         if (s->arrays[k].enabled && s->arrays[k].buffer && count > 0) {
-            if (!array_source(&s->arrays[k], first, count, &src))
+            if (!array_source(&s->arrays[k], first, count, &src)) {
+                rgl_note_skipped(op, RGL_PX_SKIP_DATA);
                 return false;
+            }
             rgl_buffer_release();
         }
     }
@@ -415,17 +304,17 @@ static bool index_range(GLsizei count, GLenum type, const void *indices, uint32_
     return true;
 }
 
-/* The indices of a draw: client memory, or (with a buffer bound to
+/* The indices of a draw: client memory, or (with buffer `eb` bound to
  * GL_ELEMENT_ARRAY_BUFFER) the recorder's copy of the buffer from offset
  * `indices` on, acquired (*locked set: release after use). NULL when the
  * buffer does not hold `bytes` bytes there. */
-static const void *index_source(rgl_stream *s, const void *indices, size_t bytes, bool *locked)
+static const void *index_source(uint32_t eb, const void *indices, size_t bytes, bool *locked)
 {
     *locked = false;
-    if (!s->element_buffer)
+    if (!eb)
         return indices;
     size_t size;
-    const uint8_t *data = rgl_buffer_acquire(s->element_buffer, &size);
+    const uint8_t *data = rgl_buffer_acquire(eb, &size);
     uint64_t offset = (uintptr_t)indices;
     if (!data || offset + bytes > size) {
         rgl_buffer_release();
@@ -444,18 +333,21 @@ static bool record_elements(uint32_t op, GLenum mode, GLuint start, GLuint end, 
     size_t bytes;
     bool locked;
     rgl_stream *s = rgl_tls_stream;
-    if (!s || !index_size(type) || count < 0)
+    if (!s || !index_size(type) || count < 0 || !draw_ok(s, op, mode))
         return false;
-    const void *idx = index_source(s, indices, (size_t)count * index_size(type), &locked);
+    uint32_t eb = rgl_buffer_binding(s, GL_ELEMENT_ARRAY_BUFFER);
+    const void *idx = index_source(eb, indices, (size_t)count * index_size(type), &locked);
     bool ok = idx && index_range(count, type, idx, &lo, &hi, &bytes);
     if (locked)
         rgl_buffer_release();
+    if (!idx && eb)
+        rgl_note_skipped(op, RGL_PX_SKIP_DATA); /* see record_arrays */
     if (!ok)
         return false;
     rgl_resolve_matrices();
-    if (count > 0 && !record_arrays(lo, (int64_t)hi - lo + 1))
+    if (count > 0 && !record_arrays(op, lo, (int64_t)hi - lo + 1))
         return false;
-    if (!(idx = index_source(s, indices, bytes, &locked)))
+    if (!(idx = index_source(eb, indices, bytes, &locked)))
         return false;
     if (op == RGL_OP_DrawElements)
         ok = rgl_record(op, "eieB", mode, count, type, idx, bytes);
@@ -469,16 +361,17 @@ static bool record_elements(uint32_t op, GLenum mode, GLuint start, GLuint end, 
 RGL_EXPORT void rayglArrayElement(GLint i)
 {
     /* Inside glBegin/glEnd: no matrix read-back here (glGet is illegal). */
-    if (i >= 0 && record_arrays(i, 1))
+    if (i >= 0 && record_arrays(RGL_OP_ArrayElement, i, 1))
         rgl_record(RGL_OP_ArrayElement, "i", i);
     glArrayElement(i);
 }
 
 RGL_EXPORT void rayglDrawArrays(GLenum mode, GLint first, GLsizei count)
 {
-    if (first >= 0 && count >= 0) {
+    rgl_stream *s = rgl_tls_stream;
+    if (first >= 0 && count >= 0 && s && draw_ok(s, RGL_OP_DrawArrays, mode)) {
         rgl_resolve_matrices();
-        if (record_arrays(first, count))
+        if (record_arrays(RGL_OP_DrawArrays, first, count))
             rgl_record(RGL_OP_DrawArrays, "eii", mode, first, count);
     }
     glDrawArrays(mode, first, count);
@@ -503,7 +396,9 @@ RGL_EXPORT void rayglDrawRangeElements(GLenum mode, GLuint start, GLuint end, GL
 RGL_EXPORT void rayglMultiDrawArrays(GLenum mode, const GLint *first, const GLsizei *count,
                                      GLsizei drawcount)
 {
-    bool ok = drawcount >= 0 && (drawcount == 0 || (first && count));
+    rgl_stream *s = rgl_tls_stream;
+    bool ok = drawcount >= 0 && (drawcount == 0 || (first && count)) && s &&
+              draw_ok(s, RGL_OP_MultiDrawArrays, mode);
     int64_t lo = INT64_MAX, hi = 0;
     for (GLsizei i = 0; ok && i < drawcount; i++) {
         if (first[i] < 0 || count[i] < 0)
@@ -517,7 +412,7 @@ RGL_EXPORT void rayglMultiDrawArrays(GLenum mode, const GLint *first, const GLsi
         rgl_resolve_matrices();
         if (lo == INT64_MAX)
             lo = hi = 0;
-        if (record_arrays(lo, hi - lo))
+        if (record_arrays(RGL_OP_MultiDrawArrays, lo, hi - lo))
             rgl_record(RGL_OP_MultiDrawArrays, "eBBi", mode, (const void *)first,
                        (size_t)drawcount * 4, (const void *)count, (size_t)drawcount * 4,
                        drawcount);
@@ -532,8 +427,10 @@ static void record_multi_elements(GLenum mode, const GLsizei *count, GLenum type
 {
     size_t ts = index_size(type);
     rgl_stream *s = rgl_tls_stream;
-    if (!s || !ts || drawcount < 0 || (drawcount > 0 && (!count || !indices)))
+    if (!s || !ts || drawcount < 0 || (drawcount > 0 && (!count || !indices)) ||
+        !draw_ok(s, RGL_OP_MultiDrawElements, mode))
         return;
+    uint32_t eb = rgl_buffer_binding(s, GL_ELEMENT_ARRAY_BUFFER);
     size_t total = 0;
     for (GLsizei i = 0; i < drawcount; i++) {
         if (count[i] < 0)
@@ -551,10 +448,12 @@ static void record_multi_elements(GLenum mode, const GLsizei *count, GLenum type
     for (GLsizei i = 0; ok && i < drawcount; i++) {
         size_t bytes = (size_t)count[i] * ts;
         bool locked;
-        const void *idx = index_source(s, indices[i], bytes, &locked);
+        const void *idx = index_source(eb, indices[i], bytes, &locked);
         uint32_t l, h;
         size_t b;
         ok = idx && index_range(count[i], type, idx, &l, &h, &b);
+        if (!idx && eb)
+            rgl_note_skipped(RGL_OP_MultiDrawElements, RGL_PX_SKIP_DATA); /* see record_arrays */
         if (ok && bytes) {
             memcpy(all + at, idx, bytes);
             at += bytes;
@@ -570,7 +469,7 @@ static void record_multi_elements(GLenum mode, const GLsizei *count, GLenum type
             lo = hi = 0;
         else
             hi++;
-        if (record_arrays(lo, (int64_t)hi - lo))
+        if (record_arrays(RGL_OP_MultiDrawElements, lo, (int64_t)hi - lo))
             rgl_record(RGL_OP_MultiDrawElements, "eBeBi", mode, (const void *)count,
                        (size_t)drawcount * 4, type, (const void *)all, total, drawcount);
     }
@@ -589,15 +488,20 @@ RGL_EXPORT void rayglMultiDrawElements(GLenum mode, const GLsizei *count, GLenum
 static void array_pointer(int slot, uint32_t op, GLint size, GLenum type, GLsizei stride,
                           const GLvoid *ptr)
 {
+    /* Kept while not recording too: a pointer the recorder missed would be
+     * read, when a trace is opened later, after the program freed it. */
     rgl_stream *s;
-    if (!rgl_reserve(&s, 1))
+    bool rec = rgl_reserve(&s, 1) != NULL;
+    if (!rec && !(s = rgl_tls_stream))
         return;
     rgl_client_array_state *a = &s->arrays[slot];
     a->size = size;
     a->type = type;
     a->stride = stride;
     a->pointer = ptr;
-    a->buffer = s->array_buffer;
+    a->buffer = rgl_buffer_binding(s, GL_ARRAY_BUFFER);
+    if (!rec)
+        return;
     switch (slot) {
     case RGL_CA_NORMAL: RECORD_NOW(s, op, "ei", type, stride); break;
     case RGL_CA_EDGEFLAG: RECORD_NOW(s, op, "i", stride); break;
@@ -646,10 +550,13 @@ static void client_state(GLenum array, bool enable)
 {
     int slot = array_slot(array);
     rgl_stream *s;
-    if (slot >= 0 && rgl_reserve(&s, 1)) {
+    bool rec = slot >= 0 && rgl_reserve(&s, 1) != NULL;
+    if (!rec)
+        s = rgl_tls_stream;
+    if (slot >= 0 && s) /* kept while not recording too (array_pointer) */
         s->arrays[slot].enabled = enable;
+    if (rec)
         RECORD_NOW(s, enable ? RGL_OP_EnableClientState : RGL_OP_DisableClientState, "e", array);
-    }
 }
 
 RGL_EXPORT void rayglEnableClientState(GLenum array)
@@ -699,15 +606,18 @@ RGL_EXPORT void rayglInterleavedArrays(GLenum format, GLsizei stride, const GLvo
     for (size_t k = 0; k < sizeof interleaved / sizeof interleaved[0]; k++)
         if (interleaved[k].format == format)
             f = &interleaved[k];
-    rgl_stream *s;
-    if (f && stride >= 0 && rgl_reserve(&s, 1)) {
+    rgl_stream *s; /* kept while not recording too (array_pointer) */
+    bool rec = f && stride >= 0 && rgl_reserve(&s, 1) != NULL;
+    if (!rec)
+        s = rgl_tls_stream;
+    if (f && stride >= 0 && s) {
         GLsizei st = stride ? stride : f->s;
         const uint8_t *p = pointer;
         rgl_client_array_state *a = s->arrays;
         a[RGL_CA_EDGEFLAG].enabled = false;
         a[RGL_CA_TEXCOORD].enabled = f->et;
         /* With an array buffer bound, pointer is an offset in it. */
-        uint32_t buf = s->array_buffer;
+        uint32_t buf = rgl_buffer_binding(s, GL_ARRAY_BUFFER);
         const uint8_t *q = p || buf ? p : NULL;
 #define AT(off) (q || buf ? (const void *)((uintptr_t)q + (off)) : NULL)
         if (f->et)
@@ -720,7 +630,8 @@ RGL_EXPORT void rayglInterleavedArrays(GLenum format, GLsizei stride, const GLvo
             a[RGL_CA_NORMAL] = (rgl_client_array_state){true, 3, GL_FLOAT, st, AT(f->pn), buf};
         a[RGL_CA_VERTEX] = (rgl_client_array_state){true, f->sv, GL_FLOAT, st, AT(f->pv), buf};
 #undef AT
-        RECORD_NOW(s, RGL_OP_InterleavedArrays, "ei", format, stride);
+        if (rec)
+            RECORD_NOW(s, RGL_OP_InterleavedArrays, "ei", format, stride);
     }
     glInterleavedArrays(format, stride, pointer);
 }
@@ -858,12 +769,14 @@ RGL_EXPORT void rayglTexImage1D(GLenum target, GLint level, GLint internalFormat
 {
     rgl_stream *s;
     if (rgl_reserve(&s, 1)) {
-        int64_t id = is_proxy(target) ? 0 : pixels_put(format, type, width, 1, pixels);
+        int64_t id = rgl_tex_pixels(s, 1, false, target, level, internalFormat, 0, 0, width, 1,
+                                    border, format, type, pixels);
+        rgl_note_skipped(RGL_OP_TexImage1D, id);
         if (id >= 0 && rgl_reserve(&s, RGL_TEX_RECORD_ROOM)) {
             const uint8_t *from = s->pos;
             if (rgl_record(RGL_OP_TexImage1D, "eiiiieee", target, level, internalFormat, width,
                            border, format, type, (uint32_t)id) &&
-                !is_proxy(target))
+                !rgl_tex_is_proxy(target))
                 texture_define(s, target, from, level == 0);
         }
     }
@@ -876,12 +789,14 @@ RGL_EXPORT void rayglTexImage2D(GLenum target, GLint level, GLint internalFormat
 {
     rgl_stream *s;
     if (rgl_reserve(&s, 1)) {
-        int64_t id = is_proxy(target) ? 0 : pixels_put(format, type, width, height, pixels);
+        int64_t id = rgl_tex_pixels(s, 2, false, target, level, internalFormat, 0, 0, width,
+                                    height, border, format, type, pixels);
+        rgl_note_skipped(RGL_OP_TexImage2D, id);
         if (id >= 0 && rgl_reserve(&s, RGL_TEX_RECORD_ROOM)) {
             const uint8_t *from = s->pos;
             if (rgl_record(RGL_OP_TexImage2D, "eiiiiieee", target, level, internalFormat, width,
                            height, border, format, type, (uint32_t)id) &&
-                !is_proxy(target))
+                !rgl_tex_is_proxy(target))
                 texture_define(s, target, from, level == 0);
         }
     }
@@ -893,8 +808,10 @@ RGL_EXPORT void rayglTexSubImage2D(GLenum target, GLint level, GLint xoffset, GL
                                    const GLvoid *pixels)
 {
     rgl_stream *s;
-    if (pixels && rgl_reserve(&s, 1)) {
-        int64_t id = pixels_put(format, type, width, height, pixels);
+    if (rgl_reserve(&s, 1)) {
+        int64_t id = rgl_tex_pixels(s, 2, true, target, level, 0, xoffset, yoffset, width,
+                                    height, 0, format, type, pixels);
+        rgl_note_skipped(RGL_OP_TexSubImage2D, id);
         if (id > 0 && rgl_reserve(&s, RGL_TEX_RECORD_ROOM)) {
             const uint8_t *from = s->pos;
             if (rgl_record(RGL_OP_TexSubImage2D, "eiiiiieee", target, level, xoffset, yoffset,
@@ -910,8 +827,9 @@ RGL_EXPORT GLint raygluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsiz
                                       GLsizei height, GLenum format, GLenum type, const void *data)
 {
     rgl_stream *s;
-    if (data && rgl_reserve(&s, 1)) {
-        int64_t id = pixels_put(format, type, width, height, data);
+    if (data && rgl_reserve(&s, 1) && !s->in_begin) {
+        int64_t id = rgl_glu_pixels(s, width, height, format, type, data);
+        rgl_note_skipped(RGL_OP_Build2DMipmaps, id);
         if (id > 0 && rgl_reserve(&s, RGL_TEX_RECORD_ROOM)) {
             const uint8_t *from = s->pos;
             if (rgl_record(RGL_OP_Build2DMipmaps, "eiiieee", target, internalFormat, width,
@@ -938,7 +856,7 @@ RGL_EXPORT void rayglTexParameteri(GLenum target, GLenum pname, GLint param)
 
 RGL_EXPORT void rayglTexParameterfv(GLenum target, GLenum pname, const GLfloat *params)
 {
-    uint32_t n = rgl_pname_count(pname);
+    uint32_t n = rgl_pname_count_in(RGL_PN_TEX_PARAMETER, pname);
     if (params && n <= RGL_ARRAY_MAX &&
         rgl_record(RGL_OP_TexParameterfv, "eeN", target, pname, params, (int)n))
         texture_param(target, pname, true, params, NULL, n);
@@ -947,7 +865,7 @@ RGL_EXPORT void rayglTexParameterfv(GLenum target, GLenum pname, const GLfloat *
 
 RGL_EXPORT void rayglTexParameteriv(GLenum target, GLenum pname, const GLint *params)
 {
-    uint32_t n = rgl_pname_count(pname);
+    uint32_t n = rgl_pname_count_in(RGL_PN_TEX_PARAMETER, pname);
     if (params && n <= RGL_ARRAY_MAX &&
         rgl_record(RGL_OP_TexParameteriv, "eeI", target, pname, params, (int)n))
         texture_param(target, pname, false, NULL, params, n);

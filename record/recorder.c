@@ -590,12 +590,15 @@ static void objects_clear(rgl_objects *o, bool keep_names)
     rgl_free(o->lists);
     uint32_t bound[2] = {o->bound[0], o->bound[1]};
     uint32_t nt = o->next_texture_name, nl = o->next_list_name;
+    int32_t unpack[6];
+    memcpy(unpack, o->unpack, sizeof unpack);
     memset(o, 0, sizeof *o);
-    if (keep_names) {
+    if (keep_names) { /* GL state, not the trace's: a new trace keeps it */
         o->bound[0] = bound[0];
         o->bound[1] = bound[1];
         o->next_texture_name = nt;
         o->next_list_name = nl;
+        memcpy(o->unpack, unpack, sizeof unpack);
     }
 }
 
@@ -749,6 +752,7 @@ static bool frame_write(rgl_stream *s, bool reset)
 static void frame_start(rgl_stream *s)
 {
     s->frame_open = true;
+    s->gl_caps = 0; /* asked again in the frame (entry_buffer.c) */
     s->have_matrix[0] = s->have_matrix[1] = false;
     s->snap.size = 0;
     if (rgl_snapshot_take(s, &s->snap)) {

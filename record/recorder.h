@@ -83,9 +83,10 @@ typedef struct rgl_objects {
     size_t nlists, cap_lists;
     uint32_t bound[2];          /* texture bound to GL_TEXTURE_1D, GL_TEXTURE_2D */
     uint32_t next_texture_name; /* RayGL's own names when GL has no context */
-    /* GL_UNPACK_ALIGNMENT, ROW_LENGTH, SKIP_ROWS, SKIP_PIXELS as the program
-     * set them (alignment 0: GL's 4), for recording without a context. */
-    int32_t unpack[4];
+    /* GL_UNPACK_SWAP_BYTES .. GL_UNPACK_ALIGNMENT (0x0CF0 .. 0x0CF5) as the
+     * program set them (alignment 0: GL's 4), for recording without a
+     * context. */
+    int32_t unpack[6];
     uint32_t next_list_name;
 } rgl_objects;
 
@@ -121,6 +122,9 @@ typedef struct rgl_stream {
 
     rgl_client_array_state arrays[RGL_MAX_CLIENT_ARRAYS];
     uint32_t array_buffer, element_buffer; /* buffer bindings (GL 1.5) */
+    uint32_t unpack_buffer, pack_buffer;   /* pixel buffer bindings (GL 2.1) */
+    uint32_t gl_caps; /* what the context has (entry_buffer.c), 0: not asked
+                         in this frame yet */
     rgl_objects objs;
 
     /* Recorder bookkeeping (recorder.c): never touched on the hot path. */
@@ -277,6 +281,67 @@ bool rgl_record(uint32_t op, const char *fmt, ...);
  * lock: call rgl_buffer_release() when done with the data. */
 const uint8_t *rgl_buffer_acquire(uint32_t name, size_t *size);
 void rgl_buffer_release(void);
+
+/* The buffer bound to target (GL_ARRAY_BUFFER, GL_ELEMENT_ARRAY_BUFFER,
+ * GL_PIXEL_UNPACK_BUFFER) for a call about to be made on s's thread: GL's
+ * own answer with a live context (0 when it has no such buffers), the
+ * recorder's tracking without one or between glBegin and glEnd. Raises no
+ * GL error. */
+uint32_t rgl_buffer_binding(rgl_stream *s, uint32_t target);
+
+/* Whether a GL context is current (checked through glGetString, which
+ * raises no error outside glBegin/glEnd). */
+bool rgl_buffer_live(void);
+
+/* Copies `rows` rows of `row` bytes, `stride` apart from `offset` on, of
+ * buffer `name` bound to target, tightly into out: read from GL when live
+ * (the context is current; raises no GL error), else from the recorder's
+ * copy. False, with nothing read, when GL would refuse to read them: the
+ * buffer is mapped or the rows pass its end. */
+bool rgl_buffer_gather(uint32_t target, uint32_t name, bool live, uint64_t offset,
+                       uint64_t stride, size_t row, size_t rows, uint8_t *out);
+
+/* Records a call GL executes at once even while a list is compiled
+ * (client state, list names, buffer objects): into the frame, never into
+ * the list body. */
+#define RECORD_NOW(s, op, ...) \
+    ((s)->compiling ? rgl_emit(&(s)->frame, (op), __VA_ARGS__) : rgl_record((op), __VA_ARGS__))
+
+/* Pixels (pixels.c). What a pixel call came to: a resource id (> 0), or
+ * one of these. */
+enum rgl_px_result {
+    RGL_PX_NONE = 0,       /* no data: NULL pixels, an empty image, a proxy */
+    RGL_PX_REFUSED = -1,   /* GL refuses the call and reads nothing, or recording failed */
+    RGL_PX_SKIP_ENUM = -2, /* not recorded: an enum RayGL does not know */
+    RGL_PX_SKIP_DATA = -3, /* not recorded: the data could not be read */
+};
+
+/* Writes the w x h image at pixels (laid out as the unpack state says) as a
+ * tightly packed RGL_RES_BYTES resource, reading only what GL reads: from
+ * client memory, or from the buffer bound to GL_PIXEL_UNPACK_BUFFER (glu:
+ * for GLU, which reads client memory whatever is bound; a bound buffer is
+ * then RGL_PX_SKIP_DATA). Calling thread's stream s, outside glBegin/glEnd. */
+int64_t rgl_pixels_put(rgl_stream *s, uint32_t format, uint32_t type, int32_t w, int32_t h,
+                       const void *pixels, bool glu);
+
+/* The pixels of glTexImage1D/2D (sub false) or glTexSubImage2D (sub true;
+ * internal unused): checked as GL checks target, level, sizes and border
+ * first (with a live context also the largest size and a sub-image's
+ * place), then rgl_pixels_put. A proxy reads nothing (RGL_PX_NONE). */
+int64_t rgl_tex_pixels(rgl_stream *s, int dims, bool sub, uint32_t target, int32_t level,
+                       int32_t internal, int32_t x, int32_t y, int32_t w, int32_t h,
+                       int32_t border, uint32_t format, uint32_t type, const void *pixels);
+
+/* The pixels of gluBuild2DMipmaps, after GLU's own checks. */
+int64_t rgl_glu_pixels(rgl_stream *s, int32_t w, int32_t h, uint32_t format, uint32_t type,
+                       const void *data);
+
+/* Whether target is a proxy texture target (GL reads no pixels for it). */
+bool rgl_tex_is_proxy(uint32_t target);
+
+/* Records @Skipped(op, reason) where a call was passed to GL unrecorded
+ * with RGL_PX_SKIP_ENUM or RGL_PX_SKIP_DATA; nothing for other values. */
+void rgl_note_skipped(uint32_t op, int64_t why);
 
 /* Returns the texture record for `name` in s, creating it when create is set
  * (NULL when absent or on allocation failure). */

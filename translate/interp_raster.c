@@ -99,6 +99,18 @@ void interp_frameend(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
 /* The image the program showed: nothing to draw (raygl-compare reads it). */
 void interp_snapshot(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
 
+/* A call the recorder passed to GL unrecorded (docs/format.md 3.2): said,
+ * since the frame may lack what it did. */
+void interp_skipped(interp *ip, const rgl_cmd *cmd)
+{
+    const rgl_cmd_info *call = rgl_cmd_info_get((uint32_t)cmd->arg[0].v.u);
+    uint64_t reason = cmd->arg[1].v.u;
+    interp_diag(ip, DIAG_IGNORED, "%s was not recorded: %s", call ? call->name : "a call",
+                reason == RGL_SKIP_UNKNOWN_ENUM ? "an enum the recorder does not know"
+                : reason == RGL_SKIP_NO_DATA    ? "its data could not be read"
+                                                : "unknown reason");
+}
+
 void interp_framebegin(interp *ip, const rgl_cmd *cmd)
 {
     const rgl_arg *name = &cmd->arg[0];

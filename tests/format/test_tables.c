@@ -68,9 +68,11 @@ static void test_status(void)
 static void test_pnames(void)
 {
     int rows = 0;
-#define RGL_PNAME(name, value, count)                                                 \
+#define RGL_PNAME(name, value, count, families)                                       \
     CHECKF((value) == (name), #name " is 0x%x in pnames.def, 0x%x in GL", (value), (name)); \
     CHECK(rgl_pname_count(name) == (count));                                          \
+    CHECK(rgl_pname_count_in(families, name) == (count));                             \
+    CHECK(rgl_pname_count_in(~(uint32_t)(families), name) == 0);                      \
     rows++;
 #include "pnames.def"
 #undef RGL_PNAME
@@ -78,6 +80,11 @@ static void test_pnames(void)
     CHECK(rgl_pname_count(GL_SHININESS) == 1 && rgl_pname_count(GL_FOG_COLOR) == 4);
     CHECK(rgl_pname_count(GL_EYE_PLANE) == 4 && rgl_pname_count(GL_TEXTURE_ENV_MODE) == 1);
     CHECK(rgl_pname_count(0) == 0 && rgl_pname_count(GL_LIGHT0) == 0);
+    /* A name of another call: GL refuses it, nothing is read. */
+    CHECK(rgl_pname_count_in(RGL_PN_FOG, GL_AMBIENT) == 0);
+    CHECK(rgl_pname_count_in(RGL_PN_MATERIAL, GL_AMBIENT) == 4);
+    CHECK(rgl_pname_count_in(RGL_PN_LIGHT, GL_SHININESS) == 0);
+    CHECK(rgl_pname_count_in(RGL_PN_TEX_ENV, GL_TEXTURE_BORDER_COLOR) == 0);
     printf("  %d pname rows match <GL/gl.h>; counts as the GL spec says\n", rows);
 }
 

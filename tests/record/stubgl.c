@@ -258,7 +258,12 @@ void glutSwapBuffers(void) { LOG0("glutSwapBuffers"); }
 /* ---- Queries: GL with no current context changes nothing ---------------------- */
 
 int glutGet(GLenum what) { return what == GLUT_INIT_STATE ? stub_glut_ready : 0; }
-void glGetIntegerv(GLenum pname, GLint *v) { (void)pname, (void)v; }
+void glGetIntegerv(GLenum pname, GLint *v)
+{
+    for (size_t k = 0; k < stub_nints; k++)
+        if (stub_ints[k].pname == pname)
+            *v = stub_ints[k].value;
+}
 void glGetFloatv(GLenum pname, GLfloat *v) { (void)pname, (void)v; }
 void glGetDoublev(GLenum pname, GLdouble *v) { (void)pname, (void)v; }
 void glGetBooleanv(GLenum pname, GLboolean *v) { (void)pname, (void)v; }
@@ -275,8 +280,7 @@ void glGetTexParameteriv(GLenum t, GLenum pname, GLint *v) { (void)t, (void)pnam
  * so a snapshot never reaches them; logged in case one does. */
 const GLubyte *glGetString(GLenum name)
 {
-    (void)name;
-    return NULL;
+    return name == GL_VERSION ? (const GLubyte *)stub_version : NULL;
 }
 void glReadBuffer(GLenum mode) { LOGV("glReadBuffer", mode); }
 void glPixelTransferf(GLenum pname, GLfloat v) { LOGV("glPixelTransferf", pname, v); }
@@ -324,6 +328,25 @@ void glMultiDrawElements(GLenum mode, const GLsizei *count, GLenum type,
 /* A mapping: unlike GL without a context, the stub maps its own scratch
  * memory, so that a test can write through it. */
 unsigned char stub_mapped[4096];
+
+const char *stub_version;
+stub_int stub_ints[8];
+size_t stub_nints;
+unsigned char stub_buffer[4096];
+GLint stub_buffer_size, stub_buffer_mapped;
+
+void glGetBufferParameteriv(GLenum t, GLenum pname, GLint *v)
+{
+    (void)t;
+    if (stub_version)
+        *v = pname == GL_BUFFER_SIZE ? stub_buffer_size : stub_buffer_mapped;
+}
+void glGetBufferSubData(GLenum t, GLintptr o, GLsizeiptr n, void *d)
+{
+    LOGV("glGetBufferSubData", t, (double)o, (double)n);
+    if (o >= 0 && n >= 0 && (size_t)o + (size_t)n <= sizeof stub_buffer)
+        memcpy(d, stub_buffer + o, (size_t)n);
+}
 
 #define STUB_BUFFERS(sfx)                                                                 \
     void glGenBuffers##sfx(GLsizei n, GLuint *b)                                          \

@@ -36,4 +36,19 @@ void stub_log_name(const char *name);
 /* What the stub's glMapBuffer returns. */
 extern unsigned char stub_mapped[4096];
 
+/* A context as far as the buffer queries go: glGetString(GL_VERSION)
+ * returns stub_version (NULL: none), glGetIntegerv answers the pnames in
+ * stub_ints, glGetBufferParameteriv stub_buffer_size and _mapped, and
+ * glGetBufferSubData copies from stub_buffer. Everything else still acts
+ * as GL without a context. */
+typedef struct stub_int {
+    unsigned pname;
+    int value;
+} stub_int;
+extern const char *stub_version;
+extern stub_int stub_ints[8];
+extern size_t stub_nints;
+extern unsigned char stub_buffer[4096];
+extern int stub_buffer_size, stub_buffer_mapped;
+
 #endif

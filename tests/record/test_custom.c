@@ -3,6 +3,7 @@
  * Part of test_entry; see that file. */
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 #include <unistd.h>
 
 #include "check.h"
@@ -14,6 +15,7 @@ void test_custom(const char *dir);
 void test_alloc_failures(const char *dir);
 void test_too_large(const char *dir);
 void test_unpack(const char *dir);
+void test_pixel_rules(const char *dir);
 
 /* The BLOB argument of a decoded command of frame f, command i. */
 static const uint8_t *blob_of(rgl_reader *r, size_t f, size_t i, unsigned arg, size_t *n)
@@ -378,4 +380,180 @@ void test_unpack(const char *dir)
     CHECK(trace_cmds_count(&body, RGL_OP_PixelStorei) == 0);
     trace_cmds_free(&body);
     rgl_reader_destroy(r);
+}
+
+/* A page that faults on any access, and the page before it readable: a
+ * read of one byte more than GL reads, or of any byte of a call GL
+ * refuses, kills the test. */
+static uint8_t *guard_pages(uint8_t **fault)
+{
+    long pg = sysconf(_SC_PAGESIZE);
+    uint8_t *p = mmap(NULL, (size_t)pg * 2, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS,
+                      -1, 0);
+    if (!CHECK(p != MAP_FAILED))
+        return NULL;
+    CHECK(mprotect(p + pg, (size_t)pg, PROT_NONE) == 0);
+    memset(p, 0, (size_t)pg);
+    *fault = p + pg;
+    return p;
+}
+
+/* The dump lines of frame 0 of path that name op (a prefix). */
+static size_t count_lines(const trace_cmds *c, const char *prefix)
+{
+    size_t n = 0;
+    for (long i = trace_cmds_find(c, 0, prefix); i >= 0; i = trace_cmds_find(c, (size_t)i + 1, prefix))
+        n++;
+    return n;
+}
+
+/* Every pixel and draw call GL refuses reads nothing (its pointer faults),
+ * an enum RayGL does not know leaves @Skipped, and an image that ends at
+ * a page's end is read to its last byte and no further: the last row's
+ * alignment padding and a bitmap's bits past its width are not read. The
+ * unpack state is applied whole: skipped pixels inside a bitmap byte,
+ * GL_UNPACK_LSB_FIRST and GL_UNPACK_SWAP_BYTES. */
+void test_pixel_rules(const char *dir)
+{
+    char path[128];
+    snprintf(path, sizeof path, "%s/rules.raygl", dir);
+    uint8_t *bad, *page = guard_pages(&bad);
+    if (!page)
+        return;
+    long pg = sysconf(_SC_PAGESIZE);
+    CHECK(rayglRecordOpen(path) == 0);
+    rayglBindTexture(GL_TEXTURE_2D, 1);
+    rayglDisableClientState(GL_VERTEX_ARRAY); /* whatever the tests before left */
+    rayglDisableClientState(GL_NORMAL_ARRAY);
+    rayglPixelStorei(GL_UNPACK_SKIP_ROWS, 0); /* test_unpack's, kept as GL keeps them */
+    rayglPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    stub_reset();
+    /* Refused by GL: nothing read, everything forwarded. */
+    rayglTexImage2D(0x1234, 0, GL_RGBA, 64, 64, 0, GL_RGBA, GL_UNSIGNED_BYTE, bad);
+    rayglTexImage2D(GL_TEXTURE_3D, 0, GL_RGBA, 64, 64, 0, GL_RGBA, GL_UNSIGNED_BYTE, bad);
+    rayglTexImage2D(GL_TEXTURE_2D, -1, GL_RGBA, 64, 64, 0, GL_RGBA, GL_UNSIGNED_BYTE, bad);
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, -1, 64, 0, GL_RGBA, GL_UNSIGNED_BYTE, bad);
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 64, 64, 2, GL_RGBA, GL_UNSIGNED_BYTE, bad);
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 64, 64, 0, GL_RGBA, GL_UNSIGNED_SHORT_5_6_5, bad);
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 64, 64, 0, GL_RGB, GL_BITMAP, bad);
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 64, 64, 0, GL_RGBA_INTEGER, GL_FLOAT, bad);
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 64, 64, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_BYTE, bad);
+    rayglTexImage2D(GL_TEXTURE_2D, 0, -1, 64, 64, 0, GL_RGBA, GL_UNSIGNED_BYTE, bad);
+    rayglTexImage1D(GL_TEXTURE_2D, 0, GL_RGBA, 64, 0, GL_RGBA, GL_UNSIGNED_BYTE, bad);
+    rayglTexSubImage2D(GL_PROXY_TEXTURE_2D, 0, 0, 0, 64, 64, GL_RGBA, GL_UNSIGNED_BYTE, bad);
+    rayglTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 64, 64, GL_RGB, GL_UNSIGNED_INT_8_8_8_8, bad);
+    CHECK(raygluBuild2DMipmaps(GL_TEXTURE_2D, GL_RGBA, 0, 64, GL_RGBA, GL_UNSIGNED_BYTE, bad) == 0);
+    raygluBuild2DMipmaps(GL_TEXTURE_2D, GL_RGBA, 64, 64, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, bad);
+    rayglBegin(GL_POINTS); /* no texture call inside glBegin/glEnd */
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 64, 64, 0, GL_RGBA, GL_UNSIGNED_BYTE, bad);
+    rayglEnd();
+    /* Draws GL refuses, or that draw nothing, read no element. */
+    rayglEnableClientState(GL_COLOR_ARRAY);
+    rayglColorPointer(4, GL_UNSIGNED_BYTE, 0, bad);
+    rayglDrawArrays(GL_TRIANGLES, 0, 1000); /* no vertex array: nothing drawn */
+    rayglEnableClientState(GL_VERTEX_ARRAY);
+    rayglVertexPointer(3, GL_FLOAT, 0, bad);
+    rayglDrawArrays(0x20, 0, 1000);
+    rayglDrawElements(0x20, 1000, GL_UNSIGNED_INT, bad);
+    rayglDrawRangeElements(0x20, 0, 9, 1000, GL_UNSIGNED_INT, bad);
+    static const GLint mf[1] = {0};
+    static const GLsizei mc[1] = {1000};
+    const void *const mi[1] = {bad};
+    rayglMultiDrawArrays(0x20, mf, mc, 1);
+    rayglMultiDrawElements(0x20, mc, GL_UNSIGNED_INT, mi, 1);
+    rayglBegin(GL_POINTS);
+    rayglDrawArrays(GL_POINTS, 0, 1000);
+    rayglDrawElements(GL_POINTS, 1000, GL_UNSIGNED_INT, bad);
+    rayglEnd();
+    /* GL's, not RayGL's: forwarded, @Skipped. */
+    rayglDrawArrays(GL_TRIANGLES_ADJACENCY, 0, 1000);
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 64, 64, 0, 0x9999, GL_UNSIGNED_BYTE, bad);
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 64, 64, 0, GL_RGBA, 0x9999, bad);
+    rayglTexImage2D(GL_TEXTURE_2D, 0, 0x9999, 64, 64, 0, GL_RGBA, GL_UNSIGNED_BYTE, bad);
+    rayglDisableClientState(GL_COLOR_ARRAY);
+    rayglDisableClientState(GL_VERTEX_ARRAY);
+    CHECK(stub_nlog == 38);
+    /* A *v call reads the values of its pname only when the call takes
+     * it: one float before the fault, names of other calls that take 4. */
+    float *one = (float *)(void *)(bad - sizeof(float));
+    *one = 2;
+    rayglFogfv(GL_AMBIENT, one);
+    rayglLightfv(GL_LIGHT0, GL_FOG_COLOR, one);
+    rayglMaterialfv(GL_FRONT, GL_POSITION, one);
+    rayglTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_BORDER_COLOR, one);
+    rayglTexGenfv(GL_S, GL_TEXTURE_ENV_COLOR, one);
+    rayglLightModelfv(GL_EYE_PLANE, one);
+    rayglTexParameterfv(GL_TEXTURE_2D, GL_SPECULAR, one);
+    rayglFogfv(GL_FOG_DENSITY, one); /* its own: 1 value */
+
+    /* Exactly what GL reads, up to the page's end. 3 x 2 RGB at alignment
+     * 4: a row of 12 bytes, then the last row's 9 (no padding read). */
+    uint8_t *rgb = bad - 21;
+    for (int i = 0; i < 21; i++)
+        rgb[i] = (uint8_t)(i + 1);
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 3, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, rgb);
+    /* A 5-pixel bitmap row from bit 6 on, least significant bit first: two
+     * bytes, the second the page's last. Pixels 6, 7 of byte 0 (bits 6, 7
+     * from the bottom) and 8 .. 10 of byte 1 (bits 0 .. 2): 1 0 1 1 0. */
+    uint8_t *bits = bad - 2;
+    bits[0] = 0x40;
+    bits[1] = 0x03 | 0xf8;
+    rayglPixelStorei(GL_UNPACK_SKIP_PIXELS, 6);
+    rayglPixelStorei(GL_UNPACK_LSB_FIRST, GL_TRUE);
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 5, 1, 0, GL_COLOR_INDEX, GL_BITMAP, bits);
+    rayglPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    rayglPixelStorei(GL_UNPACK_LSB_FIRST, GL_FALSE);
+    /* Two shorts, bytes swapped. */
+    uint8_t *shorts = bad - 4;
+    shorts[0] = 1, shorts[1] = 2, shorts[2] = 3, shorts[3] = 4;
+    rayglPixelStorei(GL_UNPACK_SWAP_BYTES, GL_TRUE);
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE, 2, 1, 0, GL_LUMINANCE, GL_UNSIGNED_SHORT,
+                    shorts);
+    rayglPixelStorei(GL_UNPACK_SWAP_BYTES, GL_FALSE);
+    /* A 4-byte element type at alignment 8: rows padded to 8 bytes. */
+    uint8_t *rows = bad - 12;
+    for (int i = 0; i < 12; i++)
+        rows[i] = (uint8_t)(0x10 + i);
+    rayglPixelStorei(GL_UNPACK_ALIGNMENT, 8);
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, rows);
+    rayglPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    rayglFrameEnd();
+    rayglRecordClose();
+
+    rgl_reader *r = trace_open(path);
+    if (r) {
+        rgl_frame_info fi;
+        trace_cmds c = trace_frame(r, 0, &fi);
+        CHECK(c.clean);
+        CHECK(count_lines(&c, "glTexImage") == 4);
+        CHECK(count_lines(&c, "glTexSubImage") == 0 && count_lines(&c, "gluBuild2DMipmaps") == 0);
+        CHECK(count_lines(&c, "glDraw") == 0 && count_lines(&c, "glMultiDraw") == 0);
+        CHECK(count_lines(&c, "@ArrayData") == 0);
+        CHECK(count_lines(&c, "glFogfv(pname=GL_AMBIENT, params=[])") == 1);
+        CHECK(count_lines(&c, "glLightfv(light=GL_LIGHT0, pname=GL_FOG_COLOR, params=[])") == 1);
+        CHECK(count_lines(&c, "glFogfv(pname=GL_FOG_DENSITY, params=[2])") == 1);
+        CHECK(count_lines(&c, "@Skipped(opcode=0x7e, reason=0x1)") == 1); /* glDrawArrays */
+        CHECK(count_lines(&c, "@Skipped(opcode=0xb5, reason=0x1)") == 3); /* glTexImage2D */
+        if (count_lines(&c, "@Skipped") != 4)
+            trace_cmds_print(&c, "rules");
+        trace_cmds_free(&c);
+        rgl_resource res;
+        if (CHECK(rgl_reader_resource(r, 1, &res, NULL) == RGL_OK)) {
+            static const uint8_t want[18] = {1, 2, 3, 4, 5, 6, 7, 8, 9,
+                                             13, 14, 15, 16, 17, 18, 19, 20, 21};
+            CHECK(res.size == 18 && memcmp(res.data, want, 18) == 0);
+        }
+        if (CHECK(rgl_reader_resource(r, 2, &res, NULL) == RGL_OK))
+            CHECKM(res.size == 1 && res.data[0] == 0xb0, "bitmap %zu bytes, %#x", (size_t)res.size,
+                   res.size ? res.data[0] : 0u);
+        if (CHECK(rgl_reader_resource(r, 3, &res, NULL) == RGL_OK))
+            CHECK(res.size == 4 && res.data[0] == 2 && res.data[1] == 1 && res.data[3] == 3);
+        if (CHECK(rgl_reader_resource(r, 4, &res, NULL) == RGL_OK))
+            CHECK(res.size == 8 && res.data[3] == 0x13 && res.data[4] == 0x18 &&
+                  res.data[7] == 0x1b);
+        rgl_reader_destroy(r);
+    }
+    munmap(page, (size_t)pg * 2);
+    if (!check_failures)
+        unlink(path);
 }

@@ -23,6 +23,11 @@ void test_eval(const char *dir);
 void test_alloc_failures(const char *dir);
 void test_too_large(const char *dir);
 void test_unpack(const char *dir);
+void test_pixel_rules(const char *dir);
+void test_pbo(const char *dir);
+void test_live_bindings(const char *dir);
+void test_reopen(const char *dir);
+void test_buffer_rules(const char *dir);
 
 /* ---- Deterministic values ------------------------------------------------------- */
 
@@ -271,6 +276,11 @@ int main(void)
     test_alloc_failures(dir);
     test_too_large(dir);
     test_unpack(dir);
+    test_pixel_rules(dir);
+    test_pbo(dir);
+    test_live_bindings(dir);
+    test_reopen(dir);
+    test_buffer_rules(dir);
     if (!check_failures)
         rmdir(dir);
     return check_exit();

@@ -904,6 +904,27 @@ static void test_shape_budget(void)
     interp_destroy(ip);
 }
 
+/* @Skipped: a call the recorder passed to GL unrecorded is said, by name
+ * and reason, and changes nothing. */
+static void test_skipped(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Skipped, RGL_OP_TexImage2D, RGL_SKIP_NO_DATA);
+    CMD(&s, Skipped, RGL_OP_DrawArrays, RGL_SKIP_UNKNOWN_ENUM);
+    CMD(&s, Skipped, 0x7fff, 99);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_IGNORED), 3);
+    CHECK(strstr(dlog.e[DIAG_IGNORED].text[0],
+                 "glTexImage2D was not recorded: its data could not be read") != NULL);
+    CHECK(strstr(dlog.e[DIAG_IGNORED].text[1],
+                 "glDrawArrays was not recorded: an enum the recorder does not know") != NULL);
+    CHECK(strstr(dlog.e[DIAG_IGNORED].text[2], "a call was not recorded: unknown reason") != NULL);
+    CHECK_EQ_U(sc.nverts + sc.nlines, 0);
+    interp_destroy(ip);
+}
+
 /* The teapot: the exact patches when unlit, freeglut's 3,136 triangles
  * (32 patches of 7 x 7 cells) when the exact form does not apply, and its
  * 5,760 wire segments (32 patches, 10 lines of 9 segments each way), 36 of
@@ -1178,6 +1199,7 @@ int main(void)
     test_eval_maths();
     test_eval_draw();
     test_eval_rejected();
+    test_skipped();
     scene_finish(&sc);
     return CHECK_RESULT("test_interp");
 }
