@@ -109,7 +109,7 @@ static int header(void)
  * (snapshot.c, frameimage.c, entry_*.c). A gl* call missing here links to
  * libGL directly, which tests/record's `forward-symbols` test rejects. */
 static const char *const forward_extra[] = {
-    "glGetBooleanv", "glGetBufferParameteriv", "glGetDoublev", "glGetError", "glGetFloatv",
+    "glGetBooleanv", "glGetBufferParameteriv", "glGetBufferSubData", "glGetDoublev", "glGetError", "glGetFloatv",
     "glGetIntegerv", "glGetLightfv", "glGetMapdv", "glGetMapiv", "glGetMaterialfv",
     "glGetPointerv", "glGetString",
     "glGetTexEnvfv", "glGetTexEnviv", "glGetTexGenfv", "glGetTexGeniv", "glGetTexImage",
