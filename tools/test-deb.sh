@@ -152,11 +152,11 @@ xvfb-run -a -s '-screen 0 320x240x24' /usr/bin/raygl record -o plain.raygl -- ./
 for tr in dropin plain; do
     n=$(/usr/bin/raygl2pov $tr.raygl --dump 2>&1 | grep -c 'glutSolidTeapot')
     [ "$n" -eq 3 ] || fail "$tr.raygl: $n glutSolidTeapot calls recorded, not 3"
-    /usr/bin/raygl2pov $tr.raygl -o $tr >/dev/null || fail "/usr/bin/raygl2pov $tr.raygl failed"
+    /usr/bin/raygl2pov $tr.raygl -o $tr-frames >/dev/null || fail "/usr/bin/raygl2pov $tr.raygl failed"
 done
-/usr/bin/raygl-render plain >render.log 2>&1 || { cat render.log; fail "/usr/bin/raygl-render failed"; }
+/usr/bin/raygl-render plain-frames >render.log 2>&1 || { cat render.log; fail "/usr/bin/raygl-render failed"; }
 for f in 0 1 2; do
-    [ -s plain/frame-0000$f.png ] || fail "raygl-render made no plain/frame-0000$f.png"
+    [ -s plain-frames/frame-0000$f.png ] || fail "raygl-render made no plain-frames/frame-0000$f.png"
 done
 cd / || fail "cannot leave $t"
 # shellcheck disable=SC2086
