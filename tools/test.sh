@@ -1,16 +1,51 @@
 #!/bin/sh
-# The whole test suite: a normal build and an AddressSanitizer +
-# UndefinedBehaviorSanitizer build, each running `meson test`. Prints
-# `N passed, N failed` last and exits non-zero on any failure.
+# The whole test suite, as CI runs it (.ci/run), on its own on a fresh
+# machine too: installs the packages it needs (tools/deps.sh), then runs
+# `meson test` in a normal build (build/) and an AddressSanitizer +
+# UndefinedBehaviorSanitizer build (build-asan/), each configured with
+# this script's options whatever an earlier `meson setup` chose (the quick
+# start's build/ has no -Dwerror), then the Debian packages' test
+# (tools/test-deb.sh: in CI, or with RAYGL_TEST_DEB=1; it installs and
+# purges packages). Prints `N passed, N failed` last and exits non-zero
+# on any failure.
 set -u
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/.." || exit 1
 passed=0
 failed=0
-run_suite() { # build-dir, meson setup options...
+
+if ! tools/deps.sh </dev/null >deps.log 2>&1; then
+    tail -n 30 deps.log
+    echo "tools/deps.sh failed (deps.log): the packages are not installed"
+    echo "0 passed, 1 failed"
+    exit 1
+fi
+
+# configure DIR OPTION...: DIR set up with exactly these options. An
+# existing DIR keeps its prefix but takes every option named here; one
+# that meson cannot reconfigure (another meson version, damaged) is wiped.
+configure() {
     dir=$1
     shift
-    if [ ! -d "$dir" ]; then
-        meson setup "$dir" "$@" >/dev/null || { failed=$((failed + 1)); echo "setup of $dir failed"; return; }
+    if [ -f "$dir/meson-private/coredata.dat" ]; then
+        meson setup --reconfigure "$dir" "$@" >"$dir.setup.log" 2>&1 ||
+            meson setup --wipe "$dir" "$@" >"$dir.setup.log" 2>&1
+    else
+        meson setup "$dir" "$@" >"$dir.setup.log" 2>&1
+    fi
+}
+
+# Options that decide what the suite is: warnings fail the build, tests
+# built, the image tests wherever OSMesa and POV-Ray are, no fuzz targets.
+common="-Dwerror=true -Dtests=true -Dimage_tests=auto -Dfuzz=false"
+
+run_suite() { # build-dir, meson setup options...
+    dir=$1
+    # shellcheck disable=SC2086
+    if ! configure "$@" $common; then
+        tail -n 20 "$dir.setup.log"
+        echo "setup of $dir failed ($dir.setup.log)"
+        failed=$((failed + 1))
+        return
     fi
     if ! ninja -C "$dir" >"$dir.build.log" 2>&1; then
         tail -n 40 "$dir.build.log"
@@ -30,13 +65,26 @@ for line in open(sys.argv[1]):
         bad += 1
 print(ok, bad)
 PY
-)
+) || counts="0 1"
+    # shellcheck disable=SC2086
     set -- $counts
     passed=$((passed + $1))
     failed=$((failed + $2))
 }
-run_suite build -Dwerror=true
-run_suite build-asan -Dwerror=true -Db_sanitize=address,undefined -Db_lundef=false \
-    -Dbuildtype=debug
+run_suite build -Dbuildtype=debugoptimized -Db_sanitize=none -Db_lundef=true
+run_suite build-asan -Dbuildtype=debug -Db_sanitize=address,undefined -Db_lundef=false
+
+# The Debian packages count as one test.
+if [ "${CI:-}" = true ] || [ "${RAYGL_TEST_DEB:-0}" = 1 ]; then
+    tools/test-deb.sh </dev/null
+    case $? in
+    0) passed=$((passed + 1)) ;;
+    77) ;;
+    *) failed=$((failed + 1)) ;;
+    esac
+else
+    echo "test-deb: SKIP: runs in CI (CI=true) or with RAYGL_TEST_DEB=1 (it installs packages)"
+fi
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
