@@ -182,6 +182,7 @@ unrecorded)
     dump s.raygl | awk '/^frame / { if (n++ && last !~ /@Snapshot/) bad = 1 }
         /^  [0-9]/ { last = $0 } END { exit bad || last !~ /@Snapshot/ }' ||
         fail "@Snapshot is not each frame's last command"
+    ;;
 nurbs)
     record -o t.raygl -- "$prog" --api glx --nurbs >prog.log 2>&1 || { cat prog.log; fail "the program failed"; }
     expect t.raygl '^frame ' 3
@@ -333,11 +334,12 @@ buildtree)
     ;;
 installed)
     # The installed raygl finds the library and raygl-compare from its own
-    # place: a prefix laid out as meson installs it, then moved.
+    # place: a prefix laid out as meson installs it (the library in
+    # LIBDIR/raygl/), then moved.
     bindir=$1 libdir=$2 inst=$(absolute "$3")
     case $bindir$libdir in /*) skip "bindir or libdir outside the prefix: not relocatable" ;; esac
-    mkdir -p "p/$bindir" "p/$libdir" elsewhere || exit 1
-    cp "$inst" "p/$bindir/raygl" && cp "$cmp" "p/$bindir/raygl-compare" && cp "$preload" "p/$libdir/" || exit 1
+    mkdir -p "p/$bindir" "p/$libdir/raygl" elsewhere || exit 1
+    cp "$inst" "p/$bindir/raygl" && cp "$cmp" "p/$bindir/raygl-compare" && cp "$preload" "p/$libdir/raygl/" || exit 1
     mv p moved && cd elsewhere || exit 1
     unset RAYGL_PRELOAD_LIB RAYGL_COMPARE LD_LIBRARY_PATH # as a user's shell has them
     env ${san:+LD_PRELOAD=$san} "$out/moved/$bindir/raygl" record -o t.raygl -- "$prog" --api glx >prog.log 2>&1 ||

@@ -36,8 +36,11 @@ for so in "$lib"/*.so*; do
     [ -L "$so" ] && continue
     readelf -d "$so" | grep -q '(SONAME)' || fail "$so has no SONAME but is in libdir"
 done
-grep -qF "\${RAYGL_PRELOAD_LIB:-$prefix/$libdir/raygl/libraygl-preload.so}" "$root/bin/raygl" ||
-    fail "bin/raygl does not name $prefix/$libdir/raygl/libraygl-preload.so"
+# The installed script names the library relative to its own folder, so a
+# moved prefix still works: that path must lead to the staged library.
+rel=$(sed -n "s/^preload=\${RAYGL_PRELOAD_LIB:-\$(beside '\(.*\)')}\$/\1/p" "$root/bin/raygl")
+[ "$rel" = "../$libdir/raygl/libraygl-preload.so" ] && [ -f "$root/bin/$rel" ] ||
+    fail "bin/raygl names '$rel', not ../$libdir/raygl/libraygl-preload.so"
 
 # The environment the README gives for a prefix of one's own; the staged
 # tree stands in for it (its .pc file's prefix moved to where it is).
