@@ -39,6 +39,7 @@ struct translator {
     scene scene;
     interp *ip;
     povwriter *writer;
+    unsigned budget_shift;
     cursor *cursors;
     size_t ncursors, cap_cursors;
     char name[RGL_STRING_MAX + 1];
@@ -63,6 +64,14 @@ translator *translator_create(rgl_reader *reader, pthread_mutex_t *reader_lock)
     }
     interp_set_resources(t->ip, fetch_resource, t);
     return t;
+}
+
+void translator_set_budget_shift(translator *t, unsigned shift)
+{
+    t->budget_shift = shift;
+    interp_set_budget_shift(t->ip, shift);
+    for (size_t k = 0; k < t->ncursors; k++)
+        interp_set_budget_shift(t->cursors[k].ip, shift);
 }
 
 void translator_destroy(translator *t)
@@ -157,6 +166,7 @@ static interp *carried_state(translator *t, uint32_t stream, size_t i, size_t *b
         c->last = -1;
         if (!(c->ip = interp_create(NULL, NULL)))
             return NULL;
+        interp_set_budget_shift(c->ip, t->budget_shift);
         interp_set_resources(c->ip, fetch_resource, t);
         t->ncursors++;
     }

@@ -55,6 +55,10 @@ typedef struct frame_result {
  * out->cut or out->missing set: the caller writes it and says so. */
 rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result *out);
 
+/* The frame budget divided by 2^shift (interp_set_budget_shift), for the
+ * fuzz target. */
+void translator_set_budget_shift(translator *t, unsigned shift);
+
 /* Heavy frames (interp_set_heavy): fn(ctx) is called from translator_build
  * when its frame turns heavy, and may block. */
 void translator_set_heavy(translator *t, void (*fn)(void *ctx), void *ctx);

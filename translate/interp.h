@@ -181,6 +181,11 @@ typedef struct interp interp;
  * STATE_CARRIED frame). log receives diagnostics (may be NULL). NULL on
  * allocation failure. */
 interp *interp_create(scene *out, diag_log *log);
+
+/* Divides every limit of the frame budget by 2^shift (at most 16) for the
+ * frames ip runs from now on: the fuzz targets run on a small budget, so
+ * an input that would cut a frame at the full budget costs them little. */
+void interp_set_budget_shift(interp *ip, unsigned shift);
 void interp_destroy(interp *ip);
 
 /* Back to GL's initial state; the scene and log stay attached. */

@@ -47,21 +47,26 @@ bool interp_budget_over(interp *ip, uint64_t offset)
     if (ip->cut)
         return true;
     const scene *s = ip->scene;
-    if (ip->cmds_run > INTERP_BUDGET_COMMANDS)
-        return cut(ip, offset, "commands run", INTERP_BUDGET_COMMANDS);
+    if (ip->cmds_run > INTERP_LIMIT(ip, COMMANDS))
+        return cut(ip, offset, "commands run", INTERP_LIMIT(ip, COMMANDS));
     if (!s)
         return false;
-    if (s->nverts > INTERP_BUDGET_VERTICES)
-        return cut(ip, offset, "vertices", INTERP_BUDGET_VERTICES);
-    if (s->ntris > INTERP_BUDGET_TRIANGLES)
-        return cut(ip, offset, "triangles", INTERP_BUDGET_TRIANGLES);
-    if (s->nlines + s->npoints > INTERP_BUDGET_LINES)
-        return cut(ip, offset, "lines and points", INTERP_BUDGET_LINES);
-    if (s->nsolids > INTERP_BUDGET_SOLIDS)
-        return cut(ip, offset, "solids", INTERP_BUDGET_SOLIDS);
-    if (s->ninstances > INTERP_BUDGET_INSTANCES)
-        return cut(ip, offset, "display-list instances", INTERP_BUDGET_INSTANCES);
+    if (s->nverts > INTERP_LIMIT(ip, VERTICES))
+        return cut(ip, offset, "vertices", INTERP_LIMIT(ip, VERTICES));
+    if (s->ntris > INTERP_LIMIT(ip, TRIANGLES))
+        return cut(ip, offset, "triangles", INTERP_LIMIT(ip, TRIANGLES));
+    if (s->nlines + s->npoints > INTERP_LIMIT(ip, LINES))
+        return cut(ip, offset, "lines and points", INTERP_LIMIT(ip, LINES));
+    if (s->nsolids > INTERP_LIMIT(ip, SOLIDS))
+        return cut(ip, offset, "solids", INTERP_LIMIT(ip, SOLIDS));
+    if (s->ninstances > INTERP_LIMIT(ip, INSTANCES))
+        return cut(ip, offset, "display-list instances", INTERP_LIMIT(ip, INSTANCES));
     return false;
+}
+
+void interp_set_budget_shift(interp *ip, unsigned shift)
+{
+    ip->budget_shift = shift < 16 ? shift : 16;
 }
 
 void interp_set_heavy(interp *ip, interp_heavy_fn fn, void *ctx)
@@ -95,12 +100,12 @@ bool interp_budget_vertex(interp *ip)
 {
     if (ip->cut)
         return false;
-    if (++ip->assembled > INTERP_BUDGET_ASSEMBLED) {
-        cut(ip, here(ip), "vertices assembled", INTERP_BUDGET_ASSEMBLED);
+    if (++ip->assembled > INTERP_LIMIT(ip, ASSEMBLED)) {
+        cut(ip, here(ip), "vertices assembled", INTERP_LIMIT(ip, ASSEMBLED));
         return false;
     }
-    if (ip->scene && ip->scene->nverts >= INTERP_BUDGET_VERTICES) {
-        cut(ip, here(ip), "vertices", INTERP_BUDGET_VERTICES);
+    if (ip->scene && ip->scene->nverts >= INTERP_LIMIT(ip, VERTICES)) {
+        cut(ip, here(ip), "vertices", INTERP_LIMIT(ip, VERTICES));
         return false;
     }
     return true;
@@ -110,8 +115,8 @@ bool interp_budget_texels(interp *ip, uint64_t bytes)
 {
     if (ip->cut)
         return false;
-    if (bytes > INTERP_BUDGET_TEXELS - ip->texels) {
-        cut(ip, here(ip), "texture bytes", INTERP_BUDGET_TEXELS);
+    if (bytes > INTERP_LIMIT(ip, TEXELS) - ip->texels) {
+        cut(ip, here(ip), "texture bytes", INTERP_LIMIT(ip, TEXELS));
         return false;
     }
     ip->texels += bytes;

@@ -52,6 +52,7 @@ struct interp {
 
     /* The frame's budget and completeness (interp_bounds.c). */
     uint64_t cmds_run, assembled, texels;
+    unsigned budget_shift; /* the budget divided by 2^shift (interp_set_budget_shift) */
     bool cut;                /* the budget ran out: the rest of the frame is skipped */
     bool heavy;              /* heavy_fn was called in this frame */
     interp_heavy_fn heavy_fn;
@@ -194,16 +195,18 @@ bool interp_reject_in_begin(interp *ip);
 void interp_bounds_begin_frame(interp *ip);
 bool interp_budget_over(interp *ip, uint64_t offset);
 void interp_heavy_check(interp *ip);
+/* A limit of the frame budget as this interpreter applies it. */
+#define INTERP_LIMIT(ip, name) ((uint64_t)INTERP_BUDGET_##name >> (ip)->budget_shift)
 static inline bool interp_budget_after(interp *ip, uint64_t offset)
 {
     const scene *s = ip->scene;
     if ((ip->cmds_run & 1023) == 0 && !ip->heavy && ip->heavy_fn)
         interp_heavy_check(ip);
-    if (ip->cut || ++ip->cmds_run > INTERP_BUDGET_COMMANDS ||
-        (s && (s->nverts > INTERP_BUDGET_VERTICES ||
-               s->ntris > INTERP_BUDGET_TRIANGLES ||
-               s->nlines + s->npoints > INTERP_BUDGET_LINES ||
-               s->nsolids > INTERP_BUDGET_SOLIDS || s->ninstances > INTERP_BUDGET_INSTANCES)))
+    if (ip->cut || ++ip->cmds_run > INTERP_LIMIT(ip, COMMANDS) ||
+        (s && (s->nverts > INTERP_LIMIT(ip, VERTICES) || s->ntris > INTERP_LIMIT(ip, TRIANGLES) ||
+               s->nlines + s->npoints > INTERP_LIMIT(ip, LINES) ||
+               s->nsolids > INTERP_LIMIT(ip, SOLIDS) ||
+               s->ninstances > INTERP_LIMIT(ip, INSTANCES))))
         return !interp_budget_over(ip, offset);
     return true;
 }
