@@ -54,6 +54,13 @@ QUERIES = {
 QUERY_PREFIXES = ("glGet", "glIs", "gluGet", "glutGet")
 
 
+# Seen through: neither recorded nor counted, and not interposed, so that
+# the gl* calls they make reach the recorder as the program's (freeglut
+# draws bitmap text with glBitmap, a recorded row: the text is recorded as
+# those calls, docs/design.md "What is not recorded").
+SEEN_THROUGH = {"glutBitmapCharacter", "glutBitmapString"}
+
+
 def is_query(name):
     return name in QUERIES or name.startswith(QUERY_PREFIXES)
 
@@ -179,7 +186,7 @@ def entries(argv):
         all_entries += header_entries(h, "FGAPI", "glut")
     seen, out = set(), []
     for e in all_entries:
-        if e.name in seen or e.name in recorded or is_query(e.name):
+        if e.name in seen or e.name in recorded or is_query(e.name) or e.name in SEEN_THROUGH:
             continue
         seen.add(e.name)
         out.append(e)

@@ -185,6 +185,17 @@ bool interp_reject_in_begin(interp *ip);
 
 /* ---- Shared between the files --------------------------------------------------- */
 
+/* Pixels in client formats (interp_texture.c). interp_pixel_bytes: the
+ * tightly packed size of w x h pixels of format/type, 0 for a pair not
+ * translated (packed types, index, depth and stencil formats) or too many
+ * pixels. interp_pixels_float: n such pixels as GL's RGBA floats before
+ * pixel transfer (GL 2.1 3.6.4). interp_pixels_fetch: the bytes of pixel
+ * resource id, exactly `need` of them (counted in the frame's budget), or
+ * NULL after a diagnostic (*lost = id when damage is why). */
+size_t interp_pixel_bytes(GLenum format, GLenum type, int64_t w, int64_t h);
+void interp_pixels_float(float *dst, const uint8_t *src, size_t n, GLenum format, GLenum type);
+const uint8_t *interp_pixels_fetch(interp *ip, uint32_t id, size_t need, uint32_t *lost);
+
 /* The frame's budget (interp_bounds.c). interp_bounds_begin_frame starts
  * a frame's counts. interp_budget_after is called after each command with
  * its offset, interp_budget_vertex before a vertex is assembled and

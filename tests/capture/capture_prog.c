@@ -27,8 +27,9 @@
  *                       ended early leaves none)
  *   --ignore-term       ignore SIGTERM (raygl record --exit then kills)
  *   --unrecorded        each frame also makes calls RayGL passes through
- *                       unrecorded (glRasterPos2i, glPixelZoom, two
- *                       glutBitmapCharacter with --api glut,
+ *                       unrecorded (glIndexi, glIndexMask; with --api
+ *                       glut bitmap text, glutBitmapCharacter and
+ *                       glutBitmapString, whose glBitmap calls are recorded;
  *                       glActiveTexture found with
  *                       glXGetProcAddressARB) and queries (glGetError,
  *                       glGetIntegerv, glIsEnabled)
@@ -124,11 +125,12 @@ static void load_fns(void)
 /* Calls RayGL does not record, and queries. */
 static void unrecorded_calls(void)
 {
-    glRasterPos2i(0, 0);
-    glPixelZoom(1.0f, 1.0f);
+    glIndexi(0);
+    glIndexMask(~0u);
     if (strcmp(opt.api, "glut") == 0) { /* freeglut exits without glutInit */
+        glRasterPos2f(-0.9f, -0.9f);
         glutBitmapCharacter(GLUT_BITMAP_8_BY_13, 'R');
-        glutBitmapCharacter(GLUT_BITMAP_8_BY_13, 'G');
+        glutBitmapString(GLUT_BITMAP_8_BY_13, (const unsigned char *)"GB");
     }
     void (*active)(GLenum) =
         (void (*)(GLenum))glXGetProcAddressARB((const GLubyte *)"glActiveTexture");
