@@ -131,6 +131,18 @@ void interp_pixeltransfer(interp *ip, const rgl_cmd *cmd)
 
 /* ---- The frame's image of pixels --------------------------------------------------- */
 
+static uint64_t scene_items(const scene *s)
+{
+    return (uint64_t)s->ntris + s->nlines + s->npoints + s->nsolids + s->ninstances;
+}
+
+void interp_pixels_end_frame(interp *ip)
+{
+    /* GL would draw that geometry over the pixels; the image is in front. */
+    if (ip->scene && ip->scene->overlay && scene_items(ip->scene) > ip->pixels_mark)
+        interp_note(ip, DIAG_NOTE_PIXELS_DEPTH);
+}
+
 /* The overlay, made on first use at the camera's viewport size; NULL when
  * there is no scene, or memory or the budget ran out. */
 static uint8_t *overlay(interp *ip)
@@ -154,6 +166,7 @@ static uint8_t *overlay(interp *ip)
     }
     memset(px, 0, bytes);
     s->overlay = px;
+    ip->pixels_mark = scene_items(s);
     s->overlay_w = w;
     s->overlay_h = h;
     return px;
@@ -184,6 +197,8 @@ static bool pixels_begin(interp *ip)
     const gl_attribs *a = &ip->st.a;
     if (a->caps[INTERP_CAP_DEPTH_TEST])
         interp_note(ip, DIAG_NOTE_PIXELS_DEPTH);
+    if (ip->scene)
+        ip->pixels_mark = scene_items(ip->scene);
     return a->caps[INTERP_CAP_BLEND] && a->color_buffer.blend_src == GL_SRC_ALPHA &&
            a->color_buffer.blend_dst == GL_ONE_MINUS_SRC_ALPHA;
 }

@@ -1323,6 +1323,43 @@ static void test_draw_pixels(void)
     interp_destroy(ip);
 }
 
+/* The image is in front of everything: a note says when GL would hide
+ * some of it (the depth test on, or geometry drawn after it). */
+static void test_pixels_notes(void)
+{
+    static const uint8_t bits[1] = {0x80};
+    px_bytes[0] = bits;
+    px_sizes[0] = 1;
+    for (int k = 0; k < 3; k++) {
+        interp *ip = fresh();
+        interp_set_resources(ip, px_fetch, NULL);
+        seq s;
+        seq_init(&s);
+        if (k == 2)
+            CMD(&s, Enable, GL_DEPTH_TEST);
+        if (k != 1) { /* the triangle first: the text over it is exact */
+            CMD(&s, Begin, GL_TRIANGLES);
+            CMD(&s, Vertex2f, 0, 0);
+            CMD(&s, Vertex2f, 1, 0);
+            CMD(&s, Vertex2f, 0, 1);
+            CMD0(&s, End);
+        }
+        CMD(&s, Bitmap, 1, 1, 0, 0, 0, 0, 1);
+        if (k == 1) {
+            CMD(&s, Begin, GL_TRIANGLES);
+            CMD(&s, Vertex2f, 0, 0);
+            CMD(&s, Vertex2f, 1, 0);
+            CMD(&s, Vertex2f, 0, 1);
+            CMD0(&s, End);
+        }
+        run(ip, &s);
+        interp_end_frame(ip);
+        CHECK(sc.overlay != NULL);
+        CHECK(count(DIAG_NOTE_PIXELS_DEPTH) == (k == 0 ? 0u : 1u));
+        interp_destroy(ip);
+    }
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -1351,6 +1388,7 @@ int main(void)
     test_raster_pos();
     test_bitmap();
     test_draw_pixels();
+    test_pixels_notes();
     scene_finish(&sc);
     return CHECK_RESULT("test_interp");
 }
