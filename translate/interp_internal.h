@@ -49,6 +49,7 @@ struct interp {
                             or last clear (interp_prim.c, painter_shift) */
     uint64_t pixels_mark; /* the scene's items after the frame's last pixel draw
                              (interp_pixels.c) */
+    int32_t pixels_org[2]; /* window position of scene.overlay's pixel (0, 0) */
     uint64_t shape_facets; /* facets of tessellated shapes and evaluator mesh points in this
                               frame (interp_shape.c, interp_eval.c) */
 
@@ -196,8 +197,9 @@ bool interp_reject_in_begin(interp *ip);
  * NULL after a diagnostic (*lost = id when damage is why). */
 size_t interp_pixel_bytes(GLenum format, GLenum type, int64_t w, int64_t h);
 
-/* At the frame's end: notes that geometry drawn after bitmaps or pixel
- * rectangles shows behind them (interp_pixels.c). */
+/* At the frame's end, the camera fixed: fits the image of bitmaps and
+ * pixel rectangles to the camera's viewport, and notes that geometry drawn
+ * after them shows behind them (interp_pixels.c). */
 void interp_pixels_end_frame(interp *ip);
 void interp_pixels_float(float *dst, const uint8_t *src, size_t n, GLenum format, GLenum type);
 const uint8_t *interp_pixels_fetch(interp *ip, uint32_t id, size_t need, uint32_t *lost);

@@ -138,13 +138,49 @@ static uint64_t scene_items(const scene *s)
 
 void interp_pixels_end_frame(interp *ip)
 {
+    scene *s = ip->scene;
+    if (!s || !s->overlay)
+        return;
     /* GL would draw that geometry over the pixels; the image is in front. */
-    if (ip->scene && ip->scene->overlay && scene_items(ip->scene) > ip->pixels_mark)
+    if (scene_items(s) > ip->pixels_mark)
         interp_note(ip, DIAG_NOTE_PIXELS_DEPTH);
+    /* The image was made at the viewport of the first pixel draw; the
+     * camera may have another (fixed by a later draw): the same window
+     * pixels, in the camera's rectangle. */
+    const int32_t *vp = ip->cam_viewport;
+    int w = vp[2], h = vp[3];
+    if (vp[0] == ip->pixels_org[0] && vp[1] == ip->pixels_org[1] && w == s->overlay_w &&
+        h == s->overlay_h)
+        return;
+    uint8_t *px = NULL;
+    if (w >= 1 && h >= 1 && w <= INTERP_MAX_VIEWPORT && h <= INTERP_MAX_VIEWPORT &&
+        interp_budget_texels(ip, (uint64_t)w * (uint64_t)h * 4))
+        px = tr_realloc(NULL, (size_t)w * (size_t)h * 4);
+    if (px) {
+        memset(px, 0, (size_t)w * (size_t)h * 4);
+        for (int y = 0; y < h; y++) {
+            int64_t sy = (int64_t)vp[1] + y - ip->pixels_org[1];
+            if (sy < 0 || sy >= s->overlay_h)
+                continue;
+            for (int x = 0; x < w; x++) {
+                int64_t sx = (int64_t)vp[0] + x - ip->pixels_org[0];
+                if (sx >= 0 && sx < s->overlay_w)
+                    memcpy(px + ((size_t)y * (size_t)w + (size_t)x) * 4,
+                           s->overlay + ((size_t)sy * (size_t)s->overlay_w + (size_t)sx) * 4, 4);
+            }
+        }
+    }
+    tr_free(s->overlay);
+    s->overlay = px;
+    s->overlay_w = px ? w : 0;
+    s->overlay_h = px ? h : 0;
 }
 
-/* The overlay, made on first use at the camera's viewport size; NULL when
- * there is no scene, or memory or the budget ran out. */
+/* The overlay, made on first use at the size of the camera's viewport,
+ * or the current one while no draw has fixed the camera (the first
+ * pixels must not choose the frame's camera: a text overlay's projection
+ * is rarely the scene's); NULL when there is no scene, or memory or the
+ * budget ran out. */
 static uint8_t *overlay(interp *ip)
 {
     scene *s = ip->scene;
@@ -152,8 +188,8 @@ static uint8_t *overlay(interp *ip)
         return NULL;
     if (s->overlay)
         return s->overlay;
-    interp_fix_camera(ip);
-    int w = ip->cam_viewport[2], h = ip->cam_viewport[3];
+    const int32_t *vp = ip->camera_fixed ? ip->cam_viewport : ip->st.a.viewport.rect;
+    int w = vp[2], h = vp[3];
     if (w < 1 || h < 1 || w > INTERP_MAX_VIEWPORT || h > INTERP_MAX_VIEWPORT)
         return NULL;
     size_t bytes = (size_t)w * (size_t)h * 4;
@@ -169,6 +205,8 @@ static uint8_t *overlay(interp *ip)
     ip->pixels_mark = scene_items(s);
     s->overlay_w = w;
     s->overlay_h = h;
+    ip->pixels_org[0] = vp[0];
+    ip->pixels_org[1] = vp[1];
     return px;
 }
 
@@ -232,8 +270,8 @@ void interp_bitmap(interp *ip, const rgl_cmd *cmd)
         if (ov && interp_budget_texels(ip, (uint64_t)w * (uint64_t)h)) {
             /* The lower left corner at (floor(xr - xo), floor(yr - yo)),
              * in the overlay's coordinates. */
-            double fx = floor(rp[0] - xo) - ip->cam_viewport[0];
-            double fy = floor(rp[1] - yo) - ip->cam_viewport[1];
+            double fx = floor(rp[0] - xo) - ip->pixels_org[0];
+            double fy = floor(rp[1] - yo) - ip->pixels_org[1];
             int ow = ip->scene->overlay_w, oh = ip->scene->overlay_h;
             for (int64_t j = 0; j < h; j++) {
                 double y = fy + (double)j;
@@ -272,8 +310,8 @@ static void draw_rect(interp *ip, float *px, int64_t w, int64_t h)
     if (zx == 0 || zy == 0)
         return;
     /* The window pixels whose centres lie in the zoomed rectangle. */
-    double xr = a->current.raster_pos[0] - ip->cam_viewport[0];
-    double yr = a->current.raster_pos[1] - ip->cam_viewport[1];
+    double xr = a->current.raster_pos[0] - ip->pixels_org[0];
+    double yr = a->current.raster_pos[1] - ip->pixels_org[1];
     double x0 = fmin(xr, xr + zx * (double)w), x1 = fmax(xr, xr + zx * (double)w);
     double y0 = fmin(yr, yr + zy * (double)h), y1 = fmax(yr, yr + zy * (double)h);
     int ow = ip->scene->overlay_w, oh = ip->scene->overlay_h;

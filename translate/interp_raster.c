@@ -73,8 +73,8 @@ void interp_end_frame(interp *ip)
     }
     if (!s)
         return;
-    interp_pixels_end_frame(ip);
     interp_fix_camera(ip);
+    interp_pixels_end_frame(ip);
     if (!ip->cleared)
         for (int i = 0; i < 4; i++)
             s->background[i] = clamp01(ip->st.a.color_buffer.clear[i]);

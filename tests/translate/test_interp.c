@@ -1360,6 +1360,39 @@ static void test_pixels_notes(void)
     }
 }
 
+/* Pixels drawn before any geometry do not choose the camera; the image
+ * then takes the camera's viewport, the same window pixels. */
+static void test_pixels_first(void)
+{
+    static const uint8_t bits[1] = {0x80};
+    px_bytes[0] = bits;
+    px_sizes[0] = 1;
+    interp *ip = fresh();
+    interp_set_resources(ip, px_fetch, NULL);
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 100, 50);
+    CMD(&s, Ortho, 0, 100, 0, 50, -1, 1);
+    CMD(&s, RasterPos2i, 30, 20);
+    CMD(&s, Bitmap, 1, 1, 0, 0, 0, 0, 1);
+    CMD0(&s, LoadIdentity); /* the projection */
+    CMD(&s, Viewport, 10, 5, 80, 40);
+    CMD(&s, Begin, GL_TRIANGLES);
+    CMD(&s, Vertex2f, 0, 0);
+    CMD(&s, Vertex2f, 1, 0);
+    CMD(&s, Vertex2f, 0, 1);
+    CMD0(&s, End);
+    run(ip, &s);
+    interp_end_frame(ip);
+    CHECK(sc.overlay != NULL && sc.overlay_w == 80 && sc.overlay_h == 40);
+    CHECK(sc.camera.width == 80);
+    if (sc.overlay && sc.overlay_w == 80) {
+        CHECK(overlay_px(20, 15)[3] == 255);
+        CHECK(overlay_px(30, 20)[3] == 0);
+    }
+    interp_destroy(ip);
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -1389,6 +1422,7 @@ int main(void)
     test_bitmap();
     test_draw_pixels();
     test_pixels_notes();
+    test_pixels_first();
     scene_finish(&sc);
     return CHECK_RESULT("test_interp");
 }
