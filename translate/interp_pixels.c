@@ -315,19 +315,24 @@ static void draw_rect(interp *ip, float *px, int64_t w, int64_t h)
     double x0 = fmin(xr, xr + zx * (double)w), x1 = fmax(xr, xr + zx * (double)w);
     double y0 = fmin(yr, yr + zy * (double)h), y1 = fmax(yr, yr + zy * (double)h);
     int ow = ip->scene->overlay_w, oh = ip->scene->overlay_h;
-    int64_t xa = (int64_t)fmax(0, ceil(x0 - 0.5)), xb = (int64_t)fmin(ow, ceil(x1 - 0.5));
-    int64_t ya = (int64_t)fmax(0, ceil(y0 - 0.5)), yb = (int64_t)fmin(oh, ceil(y1 - 0.5));
+    /* Clamped as doubles first: a hostile position is far outside int64_t. */
+    int64_t xa = (int64_t)fmin(ow, fmax(0, ceil(x0 - 0.5)));
+    int64_t xb = (int64_t)fmin(ow, fmax(0, ceil(x1 - 0.5)));
+    int64_t ya = (int64_t)fmin(oh, fmax(0, ceil(y0 - 0.5)));
+    int64_t yb = (int64_t)fmin(oh, fmax(0, ceil(y1 - 0.5)));
     if (xa >= xb || ya >= yb ||
         !interp_budget_texels(ip, (uint64_t)(xb - xa) * (uint64_t)(yb - ya)))
         return;
     for (int64_t y = ya; y < yb; y++) {
-        int64_t m = (int64_t)floor((y + 0.5 - yr) / zy);
-        if (m < 0 || m >= h)
+        double fm = floor(((double)y + 0.5 - yr) / zy);
+        if (!(fm >= 0 && fm < (double)h))
             continue;
+        int64_t m = (int64_t)fm;
         for (int64_t x = xa; x < xb; x++) {
-            int64_t k = (int64_t)floor((x + 0.5 - xr) / zx);
-            if (k < 0 || k >= w)
+            double fk = floor(((double)x + 0.5 - xr) / zx);
+            if (!(fk >= 0 && fk < (double)w))
                 continue;
+            int64_t k = (int64_t)fk;
             put_pixel(ov + ((size_t)y * (size_t)ow + (size_t)x) * 4,
                       px + ((size_t)m * (size_t)w + (size_t)k) * 4, over);
         }

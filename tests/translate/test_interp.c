@@ -1312,6 +1312,20 @@ static void test_draw_pixels(void)
         CHECK(overlay_px(10, 3)[3] == 0 && overlay_px(5, 3)[3] == 0);
         CHECK(overlay_px(8, 5)[3] == 0 && overlay_px(8, 1)[3] == 0);
     }
+    /* Hostile positions and zooms: nothing drawn, nothing undefined. */
+    seq_init(&s);
+    CMD(&s, WindowPos2f, -3e38, 3e38);
+    CMD(&s, PixelZoom, 1e-30, -1e30);
+    CMD(&s, DrawPixels, 2, 1, GL_RGB, GL_UNSIGNED_BYTE, 2);
+    CMD(&s, PixelZoom, 3e38, 3e38);
+    CMD(&s, WindowPos2f, 1, 1);
+    CMD(&s, DrawPixels, 2, 1, GL_RGB, GL_UNSIGNED_BYTE, 2);
+    CMD(&s, WindowPos2f, 3e38, -3e38);
+    CMD(&s, Bitmap, 1, 1, 0, 0, 3e38, 3e38, 0);
+    CMD(&s, Bitmap, 2, 1, -3e38, 3e38, 0, 0, 2);
+    run(ip, &s);
+    if (sc.overlay)
+        CHECK(overlay_px(1, 1)[0] == 128 && overlay_px(19, 9)[0] == 128);
     /* Colour-index pixels and a copy of depth: noted, not drawn. */
     seq_init(&s);
     CMD(&s, DrawPixels, 2, 1, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, 2);
