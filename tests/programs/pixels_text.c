@@ -5,8 +5,9 @@
  * copied), each advancing the raster position. Drawn after the scene with
  * the depth test and lighting off, so it lies on top. A second line starts
  * at a position outside the view volume: invalid, so it draws nothing; a
- * third is placed by glWindowPos2i, in a colour set after it (the raster
- * colour is the one current at the call).
+ * third, from a font of display lists (glCallLists), is placed by
+ * glWindowPos2i, in a colour set after it (the raster colour is the one
+ * current at the call).
  */
 #include "lit_scene.h"
 
@@ -55,10 +56,21 @@ static int draw(int w, int h)
     glColor3f(1.0f, 0.2f, 0.2f);
     glRasterPos2f(-10.0f, 40.0f); /* outside: invalid */
     text("WWWW");
+    /* A font in display lists, as glXUseXFont makes one: glCallLists of
+     * a string. */
+    GLuint base = glGenLists(4);
+    for (int k = 0; k < 4; k++) {
+        glNewList(base + (GLuint)k, GL_COMPILE);
+        glBitmap(5, 7, 0.5f, 1.0f, 7.0f, 0.0f, font[k]);
+        glEndList();
+    }
     glColor3f(0.2f, 1.0f, 0.4f);
     glWindowPos2i(30, 20);
     glColor3f(0.0f, 0.0f, 1.0f); /* too late for the raster colour */
-    text("CAB");
+    static const GLubyte cab[] = {2, 0, 1, 3, 3, 1};
+    glListBase(base);
+    glCallLists(6, GL_UNSIGNED_BYTE, cab);
+    glListBase(0);
     glPopMatrix();
     glMatrixMode(GL_PROJECTION);
     glPopMatrix();
