@@ -16,6 +16,8 @@
  * buffer, queries only of enums the context's version has. Everything it
  * changes (read buffer, pixel pack state and pack buffer, pixel transfer
  * scales, biases and colour mapping) is read first and put back after.
+ * rgl_read_rgba reads glCopyPixels' source rectangle the same way, from
+ * the program's read buffer.
  */
 #define GL_GLEXT_PROTOTYPES 1
 #include <stdio.h>
