@@ -184,6 +184,14 @@ RAYGL_API void rayglMap2d(GLenum target, GLdouble u1, GLdouble u2, GLint ustride
                           GLdouble v1, GLdouble v2, GLint vstride, GLint vorder,
                           const GLdouble *points);
 
+/* Pixel rectangles: the bits and pixels GL reads, as a resource;
+ * glCopyPixels' source read back from the framebuffer at the call. */
+RAYGL_API void rayglBitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig,
+                           GLfloat xmove, GLfloat ymove, const GLubyte *bitmap);
+RAYGL_API void rayglDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type,
+                               const GLvoid *pixels);
+RAYGL_API void rayglCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type);
+
 RAYGL_API GLUquadric *raygluNewQuadric(void);
 RAYGL_API void raygluDeleteQuadric(GLUquadric *quad);
 RAYGL_API void raygluQuadricDrawStyle(GLUquadric *quad, GLenum draw);

@@ -16,6 +16,8 @@
  * buffer, queries only of enums the context's version has. Everything it
  * changes (read buffer, pixel pack state and pack buffer, pixel transfer
  * scales, biases and colour mapping) is read first and put back after.
+ * rgl_read_rgba reads glCopyPixels' source rectangle the same way, from
+ * the program's read buffer.
  */
 #define GL_GLEXT_PROTOTYPES 1
 #include <stdio.h>
@@ -164,7 +166,8 @@ static void save_and_set(const gl_version *v, saved_state *st, GLint read_buf)
     if (!v->es) {
         st->read_buffer = SENTINEL_I;
         glGetIntegerv(GL_READ_BUFFER, &st->read_buffer);
-        if (st->read_buffer != SENTINEL_I && st->read_buffer != read_buf) {
+        if (read_buf != SENTINEL_I && st->read_buffer != SENTINEL_I &&
+            st->read_buffer != read_buf) {
             st->set_read_buffer = true;
             glReadBuffer((GLenum)read_buf);
         }
@@ -195,6 +198,18 @@ static void *image_alloc(void *p, size_t n)
         return NULL;
     }
     return rgl_realloc(p, n);
+}
+
+bool rgl_read_rgba(int32_t x, int32_t y, int32_t w, int32_t h, uint8_t *px)
+{
+    gl_version v;
+    if (!rgl_live_context() || !read_version(&v) || !v.compat)
+        return false;
+    saved_state st;
+    save_and_set(&v, &st, SENTINEL_I); /* the program's read buffer, as glCopyPixels */
+    glReadPixels(x, y, w, h, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    restore(&st);
+    return true;
 }
 
 void rgl_frame_image(void)

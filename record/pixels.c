@@ -1,6 +1,6 @@
 /* pixels.c: what the recorder reads of a pixel call (glTexImage1D/2D,
- * glTexSubImage2D, gluBuild2DMipmaps) and how it turns it into a texel
- * resource.
+ * glTexSubImage2D, gluBuild2DMipmaps, glDrawPixels, glBitmap) and how it
+ * turns it into a pixel resource.
  *
  * GL's rules, applied before a byte is read: the format/type pairs GL
  * takes and their pixel sizes (packed types included); the unpack state

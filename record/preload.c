@@ -325,7 +325,7 @@ static rgl_real_fn intercept(const char *name, rgl_real_fn real)
     if (u >= 0) {
         if (!rgl_unrecorded_fns[u] && !in_this_library(real))
             rgl_unrecorded_fns[u] = real;
-        return rgl_unrecorded_twins[u];
+        return rgl_unrecorded_twins[u] ? rgl_unrecorded_twins[u] : real; /* NULL: seen through */
     }
     return real;
 }

@@ -220,6 +220,13 @@ bool rgl_frame_wanted(const rgl_stream *s);
  * undefined after it). Never raises or clears a GL error (frameimage.c). */
 void rgl_frame_image(void);
 
+/* Reads the w x h rectangle at x, y of the current read buffer as 8-bit
+ * RGBA, bottom row first, into px (w * h * 4 bytes), with the pack and
+ * transfer state at GL's defaults (put back after): what glCopyPixels
+ * copies, before its pixel transfer (frameimage.c). False, px untouched,
+ * without a live compatibility context. Outside glBegin/glEnd only. */
+bool rgl_read_rgba(int32_t x, int32_t y, int32_t w, int32_t h, uint8_t *px);
+
 /* Whether frames get snapshots: RAYGL_SNAPSHOTS=1 at initialisation, or
  * rayglRecordSnapshots(). */
 bool rgl_snapshots_enabled(void);

@@ -114,8 +114,7 @@ static const char *const forward_extra[] = {
     "glGetPointerv", "glGetString",
     "glGetTexEnvfv", "glGetTexEnviv", "glGetTexGenfv", "glGetTexGeniv", "glGetTexImage",
     "glGetTexLevelParameteriv", "glGetTexParameterfv", "glGetTexParameteriv", "glIsBuffer",
-    "glIsEnabled", "glIsList", "glIsTexture", "glPixelStoref", "glPixelTransferf",
-    "glPixelTransferi", "glReadBuffer", "glReadPixels",
+    "glIsEnabled", "glIsList", "glIsTexture", "glPixelStoref", "glReadBuffer", "glReadPixels",
 };
 
 static int is_row(const char *name)

@@ -97,6 +97,11 @@ void interp_default_state(gl_state *st)
     a->current.normal[2] = 1;
     set4(a->current.texcoord, 0, 0, 0, 1);
     a->current.edge_flag = true;
+    set4(a->current.raster_color, 1, 1, 1, 1);
+    a->current.raster_pos[3] = 1;
+    a->current.raster_valid = true;
+    a->pixel.zoom[0] = a->pixel.zoom[1] = 1;
+    set4(a->pixel.scale, 1, 1, 1, 1);
     memcpy(a->caps, cap_defaults, sizeof a->caps);
 
     for (int d = 0; d < 2; d++) { /* glMapGrid: 1 partition of [0, 1] */
@@ -559,6 +564,8 @@ void interp_popattrib(interp *ip, const rgl_cmd *cmd)
         a->texture = s->texture;
     if (m & GL_EVAL_BIT)
         a->eval = s->eval;
+    if (m & GL_PIXEL_MODE_BIT)
+        a->pixel = s->pixel;
     for (int i = 0; i < INTERP_CAP_COUNT; i++)
         if ((m & GL_ENABLE_BIT) || (m & cap_groups[i]))
             a->caps[i] = s->caps[i];

@@ -96,6 +96,12 @@ typedef struct gl_attribs {
     struct {
         float color[4], normal[3], texcoord[4];
         bool edge_flag;
+        /* The current raster position (GL 2.1 2.13): window x, y, depth
+         * z in [0, 1], clip w; its colour (the current colour at the
+         * glRasterPos call); invalid once clipped: pixels draw nothing. */
+        double raster_pos[4];
+        float raster_color[4];
+        bool raster_valid;
     } current; /* GL_CURRENT_BIT */
     uint8_t caps[INTERP_CAP_COUNT]; /* GL_ENABLE_BIT (and each cap's group) */
     struct {
@@ -155,6 +161,12 @@ typedef struct gl_attribs {
         int32_t grid_n[2][2];    /* [dimension - 1][u, v]: glMapGrid's partitions */
         double grid[2][2][2];    /* [dimension - 1][u, v][start, end] */
     } eval; /* GL_EVAL_BIT (the maps themselves are not attributes) */
+    struct {
+        float zoom[2];         /* glPixelZoom */
+        float scale[4], bias[4]; /* GL_RED_SCALE .. GL_ALPHA_BIAS */
+        uint32_t others;       /* other glPixelTransfer pnames set away from
+                                  their defaults (not translated) */
+    } pixel; /* GL_PIXEL_MODE_BIT */
 } gl_attribs;
 
 typedef struct gl_attrib_entry {

@@ -47,6 +47,9 @@ struct interp {
     bool cleared;        /* the frame cleared the colour buffer */
     uint32_t painter;    /* draws without a depth test since the frame's start
                             or last clear (interp_prim.c, painter_shift) */
+    uint64_t pixels_mark; /* the scene's items after the frame's last pixel draw
+                             (interp_pixels.c) */
+    int32_t pixels_org[2]; /* window position of scene.overlay's pixel (0, 0) */
     uint64_t shape_facets; /* facets of tessellated shapes and evaluator mesh points in this
                               frame (interp_shape.c, interp_eval.c) */
 
@@ -185,6 +188,22 @@ void interp_bad_op(interp *ip, const char *why);
 bool interp_reject_in_begin(interp *ip);
 
 /* ---- Shared between the files --------------------------------------------------- */
+
+/* Pixels in client formats (interp_texture.c). interp_pixel_bytes: the
+ * tightly packed size of w x h pixels of format/type, 0 for a pair not
+ * translated (packed types, index, depth and stencil formats) or too many
+ * pixels. interp_pixels_float: n such pixels as GL's RGBA floats before
+ * pixel transfer (GL 2.1 3.6.4). interp_pixels_fetch: the bytes of pixel
+ * resource id, exactly `need` of them (counted in the frame's budget), or
+ * NULL after a diagnostic (*lost = id when damage is why). */
+size_t interp_pixel_bytes(GLenum format, GLenum type, int64_t w, int64_t h);
+
+/* At the frame's end, the camera fixed: fits the image of bitmaps and
+ * pixel rectangles to the camera's viewport, and notes that geometry drawn
+ * after them shows behind them (interp_pixels.c). */
+void interp_pixels_end_frame(interp *ip);
+void interp_pixels_float(float *dst, const uint8_t *src, size_t n, GLenum format, GLenum type);
+const uint8_t *interp_pixels_fetch(interp *ip, uint32_t id, size_t need, uint32_t *lost);
 
 /* The frame's budget (interp_bounds.c). interp_bounds_begin_frame starts
  * a frame's counts. interp_budget_after is called after each command with

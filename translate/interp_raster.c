@@ -54,6 +54,7 @@ void interp_begin_frame(interp *ip)
     ip->cleared = false;
     ip->painter = 0;
     ip->shape_facets = 0;
+    ip->pixels_mark = 0;
     unrec_clear(&ip->unrecorded);
     interp_bounds_begin_frame(ip);
     if (ip->scene)
@@ -73,6 +74,7 @@ void interp_end_frame(interp *ip)
     if (!s)
         return;
     interp_fix_camera(ip);
+    interp_pixels_end_frame(ip);
     if (!ip->cleared)
         for (int i = 0; i < 4; i++)
             s->background[i] = clamp01(ip->st.a.color_buffer.clear[i]);

@@ -251,6 +251,35 @@ static float component(const uint8_t *p, GLenum type)
     }
 }
 
+size_t interp_pixel_bytes(GLenum format, GLenum type, int64_t w, int64_t h)
+{
+    int layout[4];
+    int nc = format_layout(format, layout);
+    size_t tb = type_bytes(type);
+    if (!nc || !tb || w < 0 || h < 0 || (uint64_t)w * (uint64_t)h > TEX_MAX_TEXELS)
+        return 0;
+    return (size_t)w * (size_t)h * (size_t)nc * tb;
+}
+
+void interp_pixels_float(float *dst, const uint8_t *src, size_t n, GLenum format, GLenum type)
+{
+    int layout[4] = {0, 0, 0, 0};
+    int nc = format_layout(format, layout);
+    size_t tb = type_bytes(type);
+    for (size_t i = 0; i < n; i++, src += (size_t)nc * tb, dst += 4) {
+        /* GL 2.1 3.6.4, "Conversion to RGBA": missing R, G, B are 0, A is 1. */
+        dst[0] = dst[1] = dst[2] = 0;
+        dst[3] = 1;
+        for (int k = 0; k < nc; k++) {
+            float v = component(src + (size_t)k * tb, type);
+            if (layout[k] == 4)
+                dst[0] = dst[1] = dst[2] = v;
+            else
+                dst[layout[k]] = v;
+        }
+    }
+}
+
 /* The base internal format (GL 1.5 table 3.15) of an internal format, or 0. */
 static GLenum base_format(int32_t internal)
 {
@@ -333,7 +362,7 @@ static uint64_t image_hash(const tex_image *img)
 /* The texel bytes of pixel resource `id` holding exactly `need` bytes, or
  * NULL after a diagnostic; *lost is set to id when the trace's damage is
  * why. */
-static const uint8_t *fetch_pixels(interp *ip, uint32_t id, size_t need, uint32_t *lost)
+const uint8_t *interp_pixels_fetch(interp *ip, uint32_t id, size_t need, uint32_t *lost)
 {
     if (!ip->res_fn) {
         interp_diag(ip, DIAG_IGNORED, "texture image: no resources to read pixels #%u from", id);
@@ -446,7 +475,7 @@ static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t inte
     int64_t iw = w - 2 * border, ih = target == GL_TEXTURE_2D ? h - 2 * border : 1;
     if (iw <= 0 || ih <= 0 || !id)
         return; /* an image with no texels, or undefined contents: no texturing */
-    const uint8_t *px = fetch_pixels(ip, id, bytes, &o->lost);
+    const uint8_t *px = interp_pixels_fetch(ip, id, bytes, &o->lost);
     /* Held as RGBA: 4 bytes a texel whatever the trace's format. */
     if (!px || !interp_budget_texels(ip, (uint64_t)w * (uint64_t)h * 4))
         return;
@@ -536,7 +565,7 @@ void interp_texsubimage2d(interp *ip, const rgl_cmd *cmd)
     }
     if (w == 0 || h == 0 || !id)
         return;
-    const uint8_t *px = fetch_pixels(ip, id, bytes, &o->lost);
+    const uint8_t *px = interp_pixels_fetch(ip, id, bytes, &o->lost);
     tex_image *img = px ? image_own(ip, o) : NULL;
     if (!img)
         return;

@@ -968,6 +968,68 @@ static void write_clip(outbuf *ob, const scene_camera *cam)
     outbuf_puts(ob, "}\n");
 }
 
+/* The distance along a camera ray (from `from`, direction r) to the
+ * near plane: the nearer of the two clip planes ahead, -1 for none. */
+static double near_t(const scene_camera *cam, const double from[3], const double r[3])
+{
+    double best = -1;
+    for (int i = 0; cam->has_clip && i < 2; i++) {
+        const double *a = cam->clip[i];
+        double den = dot3(a, r);
+        if (den == 0 || !isfinite(den))
+            continue;
+        double tt = -(dot3(a, from) + a[3]) / den;
+        if (isfinite(tt) && (best < 0 || tt < best) && (tt > 0 || cam->kind == SCENE_CAMERA_ORTHOGRAPHIC))
+            best = tt;
+    }
+    return best;
+}
+
+/* Bitmaps and pixel rectangles (scene.overlay): one image covering the
+ * camera's view exactly, pixel for pixel (image_map without
+ * interpolation: each ray through a pixel centre meets its texel's
+ * centre), just beyond the near plane, so in front of the whole scene.
+ * Unlit (the #default finish), casting no shadow, seen in no reflection
+ * or radiosity. Transparent where nothing was drawn. */
+static int write_overlay(povwriter *w, outbuf *ob, const scene *s)
+{
+    const scene_camera *cam = &s->camera;
+    int img = povtex_overlay(&w->tex, s->overlay, s->overlay_w, s->overlay_h);
+    char pigment[POVTEX_PIGMENT_MAX];
+    if (img < 0 || povtex_image_pigment(&w->tex, (size_t)img, false, pigment) == 0)
+        return -1;
+    bool ortho = cam->kind == SCENE_CAMERA_ORTHOGRAPHIC;
+    static const double uv[4][2] = {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}};
+    double p[4][3];
+    for (int c = 0; c < 4; c++) {
+        double from[3], r[3];
+        for (int k = 0; k < 3; k++) {
+            double side = uv[c][0] * cam->right[k] + uv[c][1] * cam->up[k];
+            from[k] = cam->location[k] + (ortho ? side : 0);
+            r[k] = cam->direction[k] + (ortho ? 0 : side);
+        }
+        double tt = near_t(cam, from, r);
+        /* Just past the near plane: a ten-thousandth of its distance for
+         * a camera with a centre, a hair along the ray for a parallel one. */
+        tt = ortho ? (tt < 0 && !cam->has_clip ? 0 : tt) + 1e-4 : (tt > 0 ? tt * (1 + 1e-4) : 1e-3);
+        for (int k = 0; k < 3; k++)
+            p[c][k] = from[k] + tt * r[k];
+        if (!finite3d(p[c]))
+            return 0;
+    }
+    outbuf_puts(ob, "mesh2{vertex_vectors{4");
+    for (int c = 0; c < 4; c++) {
+        outbuf_putc(ob, ',');
+        put_vec3d(ob, p[c]);
+    }
+    outbuf_puts(ob, "}\nuv_vectors{4,<0,0>,<1,0>,<1,1>,<0,1>}\n"
+                    "face_indices{2,<0,1,2>,<0,2,3>}\nuv_indices{2,<0,1,2>,<0,2,3>}\n"
+                    "texture{pigment{");
+    outbuf_puts(ob, pigment);
+    outbuf_puts(ob, "}}\nno_shadow no_reflection no_radiosity}\n");
+    return 0;
+}
+
 int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_info *info)
 {
     outbuf_puts(ob, "// ");
@@ -1054,6 +1116,8 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
     int prc = write_points(w, ob, s);
     w->mesh_no_shadow = false;
     if (prc != 0)
+        return -1;
+    if (s->overlay && write_overlay(w, ob, s) != 0)
         return -1;
     povlight_lights(&w->light, ob);
     return ob->failed ? -1 : 0;

@@ -155,6 +155,31 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
     return (int)(pt->n - 1);
 }
 
+int povtex_overlay(povtex *pt, const uint8_t *rgba, int w, int h)
+{
+    size_t n = (size_t)w * (size_t)h * 4;
+    if (tr_grow((void **)&pt->imgs, &pt->cap, pt->n + 1, sizeof *pt->imgs) != 0)
+        return -1;
+    uint8_t *px = tr_realloc(NULL, n);
+    if (!px)
+        return -1;
+    memcpy(px, rgba, n);
+    bool alpha = false;
+    for (size_t i = 3; i < n && !alpha; i += 4)
+        alpha = px[i] != 255;
+    povtex_image *im = &pt->imgs[pt->n++];
+    memset(im, 0, sizeof *im);
+    im->rgba = px;
+    im->width = w;
+    im->height = h;
+    im->alpha = alpha;
+    im->keep_alpha = true;
+    im->texture = -1;
+    snprintf(im->name, sizeof im->name, "rgl-tex-%016llx.png",
+             (unsigned long long)content_hash(px, w, h, alpha));
+    return (int)(pt->n - 1);
+}
+
 size_t povtex_image_pigment(const povtex *pt, size_t i, bool linear,
                             char buf[POVTEX_PIGMENT_MAX])
 {

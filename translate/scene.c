@@ -40,6 +40,7 @@ void scene_finish(scene *s)
     tr_free(s->protos);
     tr_free(s->instances);
     tr_free(s->materials);
+    tr_free(s->overlay);
     memset(s, 0, sizeof *s);
 }
 
@@ -66,6 +67,9 @@ void scene_clear_geometry(scene *s)
         tr_free(s->textures[i].rgba);
     s->ntextures = 0;
     s->nprotos = s->ninstances = s->mesh_floor = 0;
+    tr_free(s->overlay); /* a glClear erases the pixels drawn too */
+    s->overlay = NULL;
+    s->overlay_w = s->overlay_h = 0;
     s->generation++;
 }
 

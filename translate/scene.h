@@ -265,6 +265,13 @@ typedef struct scene {
     bool have_view;
     mat4 view;
 
+    /* Bitmaps and pixel rectangles (interp_pixels.c): one RGBA image of
+     * overlay_w x overlay_h pixels, the camera's viewport, bottom row
+     * first, alpha 0 where none was drawn; shown in front of the scene,
+     * unlit, casting no shadow. NULL: none in this frame. */
+    uint8_t *overlay;
+    int overlay_w, overlay_h;
+
     bool failed; /* an allocation or limit failed; the scene is incomplete */
 } scene;
 

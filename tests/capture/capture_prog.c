@@ -27,11 +27,13 @@
  *                       ended early leaves none)
  *   --ignore-term       ignore SIGTERM (raygl record --exit then kills)
  *   --unrecorded        each frame also makes calls RayGL passes through
- *                       unrecorded (glRasterPos2i, glPixelZoom, two
- *                       glutBitmapCharacter with --api glut,
+ *                       unrecorded (glIndexi, glIndexMask,
  *                       glActiveTexture found with
  *                       glXGetProcAddressARB) and queries (glGetError,
- *                       glGetIntegerv, glIsEnabled)
+ *                       glGetIntegerv, glIsEnabled); with --api glut
+ *                       also bitmap text after the triangle
+ *                       (glutBitmapCharacter, glutBitmapString: their
+ *                       glBitmap calls are recorded)
  */
 #include <EGL/egl.h>
 #include <GL/freeglut.h>
@@ -124,12 +126,8 @@ static void load_fns(void)
 /* Calls RayGL does not record, and queries. */
 static void unrecorded_calls(void)
 {
-    glRasterPos2i(0, 0);
-    glPixelZoom(1.0f, 1.0f);
-    if (strcmp(opt.api, "glut") == 0) { /* freeglut exits without glutInit */
-        glutBitmapCharacter(GLUT_BITMAP_8_BY_13, 'R');
-        glutBitmapCharacter(GLUT_BITMAP_8_BY_13, 'G');
-    }
+    glIndexi(0);
+    glIndexMask(~0u);
     void (*active)(GLenum) =
         (void (*)(GLenum))glXGetProcAddressARB((const GLubyte *)"glActiveTexture");
     if (active)
@@ -139,6 +137,17 @@ static void unrecorded_calls(void)
     (void)glIsEnabled(GL_LIGHTING);
     while (glGetError() != GL_NO_ERROR)
         ;
+}
+
+/* Bitmap text over the frame, as a GLUT program writes it. */
+static void bitmap_text(void)
+{
+    if (strcmp(opt.api, "glut") != 0) /* freeglut exits without glutInit */
+        return;
+    glColor3f(1, 1, 0);
+    glRasterPos2f(-0.9f, -0.9f);
+    glutBitmapCharacter(GLUT_BITMAP_8_BY_13, 'R');
+    glutBitmapString(GLUT_BITMAP_8_BY_13, (const unsigned char *)"GB");
 }
 
 static void draw(int frame, int thread)
@@ -179,6 +188,8 @@ static void draw(int frame, int thread)
     gl.Color3f(0, 0, 1);
     gl.Vertex2f(0, 0.8f);
     gl.End();
+    if (opt.unrecorded)
+        bitmap_text();
 }
 
 /* The extra frame left unfinished for --hang. */

@@ -155,21 +155,27 @@ unrecorded)
     record -o t.raygl -- "$prog" --api glut --unrecorded >prog.log 2>&1 || { cat prog.log; fail "the program failed"; }
     triangles t.raygl 3
     # Counted per frame, the lookup's function too; queries never.
-    expect t.raygl '@NotRecorded(name="glRasterPos2i", count=1)' 3
-    expect t.raygl '@NotRecorded(name="glPixelZoom", count=1)' 3
-    expect t.raygl '@NotRecorded(name="glutBitmapCharacter", count=2)' 3
+    expect t.raygl '@NotRecorded(name="glIndexi", count=1)' 3
+    expect t.raygl '@NotRecorded(name="glIndexMask", count=1)' 3
+    # Bitmap text: freeglut's glBitmap calls are recorded as the
+    # program's (three characters a frame), the GLUT calls not counted.
+    expect t.raygl 'glBitmap(width=8, height=1[34],' 9
+    expect t.raygl 'glutBitmap' 0
     expect t.raygl '@NotRecorded(name="glActiveTexture", count=1)' 3
     expect t.raygl '@NotRecorded(name="glutInit", count=1)' 1
     expect t.raygl 'glGetError\|glGetIntegerv\|glIsEnabled' 0
     translate t.raygl 3
     log=t-pov.log
-    for want in "glRasterPos2i: 3 calls not recorded, from frame 0" \
-        "glutBitmapCharacter: 6 calls not recorded, from frame 0" \
+    # ... drawn as one image in front of the scene, in every frame.
+    [ "$(ls t-pov/textures | grep -c '^rgl-tex-.*\.png$')" -ge 1 ] || fail "no image of the bitmap text written"
+    [ "$(grep -l 'no_shadow no_reflection no_radiosity' t-pov/frame-*.pov | wc -l)" -eq 3 ] ||
+        fail "the bitmap text is not in every scene"
+    for want in "glIndexi: 3 calls not recorded, from frame 0" \
         "glActiveTexture: 3 calls not recorded, from frame 0" \
         "glutInit: 1 call not recorded, from frame 0"; do
         grep -q "t.raygl: $want\$" "$log" || { cat "$log"; fail "raygl2pov does not say '$want'"; }
     done
-    [ "$(grep -c 'glRasterPos2i:' "$log")" -eq 1 ] || fail "glRasterPos2i reported more than once"
+    [ "$(grep -c 'glIndexi:' "$log")" -eq 1 ] || fail "glIndexi reported more than once"
     # With snapshots: the counts come before @Snapshot, each frame's last
     # command; the recorder's own glReadBuffer and glPixelTransfer calls
     # are not the program's.
@@ -177,7 +183,7 @@ unrecorded)
         { cat prog.log; fail "the program failed (snapshots)"; }
     triangles s.raygl 3
     expect s.raygl '@Snapshot(' 3
-    expect s.raygl '@NotRecorded(name="glRasterPos2i", count=1)' 3
+    expect s.raygl '@NotRecorded(name="glIndexi", count=1)' 3
     expect s.raygl 'glReadBuffer\|glPixelTransfer' 0
     dump s.raygl | awk '/^frame / { if (n++ && last !~ /@Snapshot/) bad = 1 }
         /^  [0-9]/ { last = $0 } END { exit bad || last !~ /@Snapshot/ }' ||

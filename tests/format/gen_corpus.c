@@ -6,7 +6,8 @@
  * the same binary writes the same files. The files are checked in; rerun
  * this only to refresh them (and review the diff). eval-*.bin hold evaluator
  * sequences with valid maps (random blobs rarely have a map's size), so the
- * fuzzers start from meshes that draw. The corpus also holds
+ * fuzzers start from meshes that draw; pixels.bin holds bitmaps and pixel
+ * rectangles with resources of their size. The corpus also holds
  * recorded-*.bin, traces written by libraygl for the image tests.
  */
 #include "testutil.h"
@@ -197,6 +198,39 @@ static int write_eval(const char *dir)
     return rc;
 }
 
+/* ---- Pixels: bitmaps and pixel rectangles with resources of their size ---------- */
+
+static int write_pixels(const char *dir)
+{
+    static const uint8_t rgba[16] = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 9, 9, 9, 9};
+    static const uint8_t bits[2] = {0xa5, 0x5a};
+    rgl_trace_builder *b = rgl_trace_builder_create();
+    uint32_t px = 0, bm = 0;
+    const uint8_t *data;
+    size_t size;
+    int rc = 1;
+    if (!b)
+        return 1;
+    rgl_trace_builder_resource(b, RGL_RES_BYTES, rgba, sizeof rgba, &px);
+    rgl_trace_builder_resource(b, RGL_RES_BYTES, bits, sizeof bits, &bm);
+    eval_len = 0;
+    EV(Viewport, 0, 0, 32, 32);
+    EV(Color3f, 1, 1, 0);
+    EV(RasterPos2f, 0.25, -0.5);
+    EV(Bitmap, 8, 2, 0.5, 0, 9, 0, bm);
+    EV(Bitmap, 0, 0, 0, 0, 9, 1, 0);
+    EV(PixelZoom, 2, -3);
+    EV(PixelTransferf, 0x0D14, 0.5); /* GL_RED_SCALE */
+    EV(DrawPixels, 2, 2, 0x1908, 0x1401, px); /* GL_RGBA, GL_UNSIGNED_BYTE */
+    EV(WindowPos2i, 4, 20);
+    EV(CopyPixels, 0, 0, 2, 2, 0x1800, px); /* GL_COLOR */
+    if (rgl_trace_builder_frame(b, 0, 0, 0, 0, seq, eval_len) == RGL_OK &&
+        rgl_trace_builder_finish(b, true, &data, &size) == RGL_OK)
+        rc = write_file(dir, "pixels.bin", data, size);
+    rgl_trace_builder_destroy(b);
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
     rng r = {0x5eed5eed12345678ull};
@@ -219,5 +253,6 @@ int main(int argc, char **argv)
         rc |= write_file(argv[1], name, seq, len);
     }
     rc |= write_eval(argv[1]);
+    rc |= write_pixels(argv[1]);
     return rc;
 }

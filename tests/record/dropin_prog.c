@@ -21,7 +21,7 @@ static void display(float angle)
     glVertex3f(0, 0.5f, 0);
     glEnd();
     glutSolidTorus(0.25, 1, 8, 16);
-    glRasterPos2i(0, 0);
+    glIndexi(0);
     glAccum(GL_LOAD, 1);
     glAccum(GL_RETURN, 1);
     if (glUseProgram)

@@ -283,8 +283,6 @@ const GLubyte *glGetString(GLenum name)
     return name == GL_VERSION ? (const GLubyte *)stub_version : NULL;
 }
 void glReadBuffer(GLenum mode) { LOGV("glReadBuffer", mode); }
-void glPixelTransferf(GLenum pname, GLfloat v) { LOGV("glPixelTransferf", pname, v); }
-void glPixelTransferi(GLenum pname, GLint v) { LOGV("glPixelTransferi", pname, v); }
 void glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void *p)
 {
     (void)p;
@@ -382,6 +380,24 @@ void glGetBufferSubData(GLenum t, GLintptr o, GLsizeiptr n, void *d)
     }
 STUB_BUFFERS()
 STUB_BUFFERS(ARB)
+
+/* ---- Pixel rectangles ---------------------------------------------------------------- */
+
+void glBitmap(GLsizei w, GLsizei h, GLfloat xo, GLfloat yo, GLfloat xm, GLfloat ym,
+              const GLubyte *bitmap)
+{
+    LOGV("glBitmap", w, h, xo, yo, xm, ym);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], bitmap);
+}
+void glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const GLvoid *pixels)
+{
+    LOGV("glDrawPixels", w, h, format, type);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], pixels);
+}
+void glCopyPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type)
+{
+    LOGV("glCopyPixels", x, y, w, h, type);
+}
 
 /* ---- Evaluator maps ---------------------------------------------------------------- */
 

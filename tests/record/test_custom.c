@@ -16,6 +16,7 @@ void test_alloc_failures(const char *dir);
 void test_too_large(const char *dir);
 void test_unpack(const char *dir);
 void test_pixel_rules(const char *dir);
+void test_raster(const char *dir);
 
 /* The BLOB argument of a decoded command of frame f, command i. */
 static const uint8_t *blob_of(rgl_reader *r, size_t f, size_t i, unsigned arg, size_t *n)
@@ -556,4 +557,88 @@ void test_pixel_rules(const char *dir)
     munmap(page, (size_t)pg * 2);
     if (!check_failures)
         unlink(path);
+}
+
+static size_t forwarded(const char *name)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < stub_nlog && i < STUB_LOG_MAX; i++)
+        n += strcmp(stub_log[i].name, name) == 0;
+    return n;
+}
+
+/* glBitmap, glDrawPixels and glCopyPixels (record/entry_raster.c): the
+ * bits GL reads with the unpack state undone, nothing read or recorded
+ * for a call GL refuses (its pointer faults), everything forwarded, and
+ * glCopyPixels without a context marked @Skipped. */
+void test_raster(const char *dir)
+{
+    char path[128];
+    snprintf(path, sizeof path, "%s/raster.raygl", dir);
+    uint8_t *bad, *page = guard_pages(&bad);
+    if (!page)
+        return;
+    long pg = sysconf(_SC_PAGESIZE);
+    CHECK(rayglRecordOpen(path) == 0);
+    stub_reset();
+    /* 5 x 2 bits from bit 3 of each byte, least significant bit first;
+     * the rows end at the page's end. */
+    uint8_t *bits = bad - 2;
+    bits[0] = 0xa8; /* bits 3, 5, 7: pixels 0, 2, 4 */
+    bits[1] = 0x50; /* bits 4, 6: pixels 1, 3 */
+    rayglPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    rayglPixelStorei(GL_UNPACK_LSB_FIRST, 1);
+    rayglPixelStorei(GL_UNPACK_SKIP_PIXELS, 3);
+    rayglWindowPos2i(4, 5);
+    rayglBitmap(5, 2, 0.5f, 1, 6, 0, bits);
+    rayglPixelStorei(GL_UNPACK_LSB_FIRST, 0);
+    rayglPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    rayglBitmap(0, 0, 0, 0, 6, 0, NULL); /* moves only */
+    /* Refused: nothing read, nothing recorded. */
+    rayglBitmap(-1, 2, 0, 0, 0, 0, bad);
+    rayglDrawPixels(4, -1, GL_RGB, GL_UNSIGNED_BYTE, bad);
+    rayglDrawPixels(4, 4, GL_RGB, GL_BITMAP, bad);
+    rayglCopyPixels(0, 0, 4, 4, GL_RGB);
+    rayglBegin(GL_POINTS);
+    rayglBitmap(8, 8, 0, 0, 0, 0, bad);
+    rayglDrawPixels(4, 4, GL_RGB, GL_UNSIGNED_BYTE, bad);
+    rayglCopyPixels(0, 0, 4, 4, GL_COLOR);
+    rayglEnd();
+    /* 2 x 1 RGB ending at the page's end. */
+    uint8_t *rgb = bad - 6;
+    for (int i = 0; i < 6; i++)
+        rgb[i] = (uint8_t)(10 + i);
+    rayglDrawPixels(2, 1, GL_RGB, GL_UNSIGNED_BYTE, rgb);
+    rayglCopyPixels(1, 2, 3, 4, GL_COLOR); /* no context: not read */
+    rayglCopyPixels(1, 2, 3, 4, GL_DEPTH);
+    CHECK(forwarded("glBitmap") == 4 && forwarded("glDrawPixels") == 4 &&
+          forwarded("glCopyPixels") == 4);
+    rayglPixelStorei(GL_UNPACK_ALIGNMENT, 4); /* GL's default, for the tests after */
+    rayglFrameEnd();
+    rayglRecordClose();
+    munmap(page, (size_t)pg * 2);
+
+    rgl_reader *r = trace_open(path);
+    if (!r)
+        return;
+    rgl_frame_info fi;
+    trace_cmds c = trace_frame(r, 0, &fi);
+    CHECK(count_lines(&c, "glWindowPos2i(x=4, y=5)") == 1);
+    CHECK(count_lines(&c, "glBitmap(") == 2);
+    CHECK(count_lines(&c, "glBitmap(width=5, height=2, xorig=0.5, yorig=1, xmove=6, ymove=0, bitmap=#") == 1);
+    CHECK(count_lines(&c, "glBitmap(width=0, height=0, xorig=0, yorig=0, xmove=6, ymove=0, bitmap=#0)") == 1);
+    CHECK(count_lines(&c, "glDrawPixels(") == 1);
+    CHECK(count_lines(&c, "glDrawPixels(width=2, height=1, format=GL_RGB, type=GL_UNSIGNED_BYTE, pixels=#") == 1);
+    CHECK(count_lines(&c, "glCopyPixels(") == 1);
+    CHECK(count_lines(&c, "glCopyPixels(x=1, y=2, width=3, height=4, type=GL_DEPTH, pixels=#0)") == 1);
+    CHECK(count_lines(&c, "@Skipped(opcode=0x14e, reason=0x2)") == 1);
+    trace_cmds_free(&c);
+    rgl_resource res;
+    /* The bitmap: pixels 1 0 1 0 1 and 0 1 0 1 0, most significant bit first. */
+    if (CHECK(rgl_reader_resource(r, 1, &res, NULL) == RGL_OK))
+        CHECK(res.kind == RGL_RES_BYTES && res.size == 2 && res.data[0] == 0xa8 &&
+              res.data[1] == 0x50);
+    if (CHECK(rgl_reader_resource(r, 2, &res, NULL) == RGL_OK))
+        CHECK(res.size == 6 && res.data[0] == 10 && res.data[5] == 15);
+    rgl_reader_destroy(r);
 }

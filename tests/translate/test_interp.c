@@ -1175,6 +1175,238 @@ static void test_eval_rejected(void)
     interp_destroy(ip);
 }
 
+
+/* ---- Raster positions and pixel rectangles ------------------------------------------ */
+
+static const uint8_t *px_bytes[4];
+static size_t px_sizes[4];
+
+static rgl_status px_fetch(void *ctx, uint32_t id, rgl_resource *out, rgl_error *err)
+{
+    (void)ctx;
+    if (id == 0 || id > 4 || !px_bytes[id - 1]) {
+        err->status = RGL_E_RESOURCE;
+        return RGL_E_RESOURCE;
+    }
+    memset(out, 0, sizeof *out);
+    out->id = id;
+    out->kind = RGL_RES_BYTES;
+    out->data = px_bytes[id - 1];
+    out->size = px_sizes[id - 1];
+    return RGL_OK;
+}
+
+static const uint8_t *overlay_px(int x, int y)
+{
+    return sc.overlay + ((size_t)y * (size_t)sc.overlay_w + (size_t)x) * 4;
+}
+
+static void test_raster_pos(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 10, 20, 200, 100);
+    CMD(&s, Ortho, -1, 1, -1, 1, -1, 1);
+    CMD(&s, Color3f, 0.25, 0.5, 1);
+    CMD(&s, RasterPos3f, 0.5, -0.5, 0.5);
+    run(ip, &s);
+    const gl_attribs *a = &interp_state(ip)->a;
+    CHECK(a->current.raster_valid);
+    CHECK_NEAR(a->current.raster_pos[0], 10 + 150, 1e-9);
+    CHECK_NEAR(a->current.raster_pos[1], 20 + 25, 1e-9);
+    CHECK_NEAR(a->current.raster_pos[2], 0.25, 1e-9); /* glOrtho's z is negated */
+    CHECK_NEAR(a->current.raster_color[1], 0.5, 0);
+    /* Outside the view volume: invalid; the raster colour stays. */
+    seq_init(&s);
+    CMD(&s, Color3f, 1, 0, 0);
+    CMD(&s, RasterPos2i, 2, 0);
+    run(ip, &s);
+    CHECK(!a->current.raster_valid);
+    CHECK_NEAR(a->current.raster_color[0], 0.25, 0);
+    /* glWindowPos: window coordinates as they are, valid, depth by the
+     * depth range; GL_CURRENT_BIT saves the raster position. */
+    seq_init(&s);
+    CMD(&s, PushAttrib, GL_CURRENT_BIT);
+    CMD(&s, DepthRange, 0.5, 1);
+    CMD(&s, WindowPos3f, 3.5, 4, 0.5);
+    run(ip, &s);
+    CHECK(a->current.raster_valid);
+    CHECK_NEAR(a->current.raster_pos[0], 3.5, 0);
+    CHECK_NEAR(a->current.raster_pos[2], 0.75, 1e-9);
+    CHECK_NEAR(a->current.raster_color[0], 1, 0);
+    seq_init(&s);
+    CMD0(&s, PopAttrib);
+    CMD(&s, Begin, GL_POINTS);
+    CMD(&s, RasterPos2i, 0, 0); /* not between glBegin and glEnd */
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK(!a->current.raster_valid);
+    CHECK(count(DIAG_GL_INVALID_OPERATION) == 1);
+    interp_destroy(ip);
+}
+
+static void test_bitmap(void)
+{
+    interp *ip = fresh();
+    interp_set_resources(ip, px_fetch, NULL);
+    static const uint8_t bits[2] = {0xa0, 0x40}; /* 3 x 2: row 0 X.X, row 1 .X. */
+    px_bytes[0] = bits;
+    px_sizes[0] = 2;
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 40, 30);
+    CMD(&s, Color3f, 0, 1, 0);
+    CMD(&s, WindowPos2f, 5.7, 3.2);
+    CMD(&s, Bitmap, 3, 2, 1, 0, 10, 1, 1); /* corner floor(4.7), floor(3.2) */
+    run(ip, &s);
+    CHECK(sc.overlay != NULL && sc.overlay_w == 40 && sc.overlay_h == 30);
+    if (sc.overlay) {
+        CHECK(overlay_px(4, 3)[1] == 255 && overlay_px(4, 3)[3] == 255);
+        CHECK(overlay_px(5, 3)[3] == 0);
+        CHECK(overlay_px(6, 3)[1] == 255);
+        CHECK(overlay_px(5, 4)[3] == 255 && overlay_px(4, 4)[3] == 0);
+    }
+    const gl_attribs *a = &interp_state(ip)->a;
+    CHECK_NEAR(a->current.raster_pos[0], 15.7, 1e-6); /* moved */
+    CHECK_NEAR(a->current.raster_pos[1], 4.2, 1e-6);
+    /* An invalid position: nothing drawn, no move. glClear erases. */
+    seq_init(&s);
+    CMD(&s, RasterPos2i, 5, 5);
+    CMD(&s, Bitmap, 0, 0, 0, 0, 10, 0, 0);
+    run(ip, &s);
+    CHECK(!a->current.raster_valid);
+    CHECK_NEAR(a->current.raster_pos[0], 15.7, 1e-6);
+    seq_init(&s);
+    CMD(&s, Clear, GL_COLOR_BUFFER_BIT);
+    CMD(&s, Bitmap, -1, 2, 0, 0, 0, 0, 1);
+    run(ip, &s);
+    CHECK(sc.overlay == NULL);
+    CHECK(count(DIAG_GL_INVALID_VALUE) == 1);
+    interp_destroy(ip);
+}
+
+static void test_draw_pixels(void)
+{
+    interp *ip = fresh();
+    interp_set_resources(ip, px_fetch, NULL);
+    /* 2 x 1 RGB: red, blue. */
+    static const uint8_t rgb[6] = {255, 0, 0, 0, 0, 255};
+    px_bytes[1] = rgb;
+    px_sizes[1] = 6;
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 20, 10);
+    CMD(&s, WindowPos2i, 10, 2);
+    CMD(&s, PixelZoom, -2, 3);
+    CMD(&s, PixelTransferf, GL_RED_SCALE, 0.5);
+    CMD(&s, PixelTransferf, GL_GREEN_BIAS, 0.25);
+    CMD(&s, DrawPixels, 2, 1, GL_RGB, GL_UNSIGNED_BYTE, 2);
+    run(ip, &s);
+    CHECK(sc.overlay != NULL);
+    if (sc.overlay) {
+        /* Zoom -2: pixel 0 covers x 8..9, pixel 1 x 6..7; rows 2..4. */
+        CHECK(overlay_px(9, 2)[0] == 128 && overlay_px(9, 2)[1] == 64);
+        CHECK(overlay_px(8, 4)[0] == 128 && overlay_px(8, 4)[3] == 255);
+        CHECK(overlay_px(7, 3)[2] == 255 && overlay_px(6, 3)[0] == 0);
+        CHECK(overlay_px(10, 3)[3] == 0 && overlay_px(5, 3)[3] == 0);
+        CHECK(overlay_px(8, 5)[3] == 0 && overlay_px(8, 1)[3] == 0);
+    }
+    /* Hostile positions and zooms: nothing drawn, nothing undefined. */
+    seq_init(&s);
+    CMD(&s, WindowPos2f, -3e38, 3e38);
+    CMD(&s, PixelZoom, 1e-30, -1e30);
+    CMD(&s, DrawPixels, 2, 1, GL_RGB, GL_UNSIGNED_BYTE, 2);
+    CMD(&s, PixelZoom, 3e38, 3e38);
+    CMD(&s, WindowPos2f, 1, 1);
+    CMD(&s, DrawPixels, 2, 1, GL_RGB, GL_UNSIGNED_BYTE, 2);
+    CMD(&s, WindowPos2f, 3e38, -3e38);
+    CMD(&s, Bitmap, 1, 1, 0, 0, 3e38, 3e38, 0);
+    CMD(&s, Bitmap, 2, 1, -3e38, 3e38, 0, 0, 2);
+    run(ip, &s);
+    if (sc.overlay)
+        CHECK(overlay_px(1, 1)[0] == 128 && overlay_px(19, 9)[0] == 128);
+    /* Colour-index pixels and a copy of depth: noted, not drawn. */
+    seq_init(&s);
+    CMD(&s, DrawPixels, 2, 1, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, 2);
+    CMD(&s, CopyPixels, 0, 0, 2, 2, GL_DEPTH, 0);
+    CMD(&s, CopyPixels, 0, 0, 2, 2, GL_RGB, 0); /* bad type */
+    run(ip, &s);
+    CHECK(count(DIAG_NOTE_PIXELS_OTHER) == 1);
+    CHECK(count(DIAG_GL_INVALID_ENUM) == 1);
+    interp_destroy(ip);
+}
+
+/* The image is in front of everything: a note says when GL would hide
+ * some of it (the depth test on, or geometry drawn after it). */
+static void test_pixels_notes(void)
+{
+    static const uint8_t bits[1] = {0x80};
+    px_bytes[0] = bits;
+    px_sizes[0] = 1;
+    for (int k = 0; k < 3; k++) {
+        interp *ip = fresh();
+        interp_set_resources(ip, px_fetch, NULL);
+        seq s;
+        seq_init(&s);
+        if (k == 2)
+            CMD(&s, Enable, GL_DEPTH_TEST);
+        if (k != 1) { /* the triangle first: the text over it is exact */
+            CMD(&s, Begin, GL_TRIANGLES);
+            CMD(&s, Vertex2f, 0, 0);
+            CMD(&s, Vertex2f, 1, 0);
+            CMD(&s, Vertex2f, 0, 1);
+            CMD0(&s, End);
+        }
+        CMD(&s, Bitmap, 1, 1, 0, 0, 0, 0, 1);
+        if (k == 1) {
+            CMD(&s, Begin, GL_TRIANGLES);
+            CMD(&s, Vertex2f, 0, 0);
+            CMD(&s, Vertex2f, 1, 0);
+            CMD(&s, Vertex2f, 0, 1);
+            CMD0(&s, End);
+        }
+        run(ip, &s);
+        interp_end_frame(ip);
+        CHECK(sc.overlay != NULL);
+        CHECK(count(DIAG_NOTE_PIXELS_DEPTH) == (k == 0 ? 0u : 1u));
+        interp_destroy(ip);
+    }
+}
+
+/* Pixels drawn before any geometry do not choose the camera; the image
+ * then takes the camera's viewport, the same window pixels. */
+static void test_pixels_first(void)
+{
+    static const uint8_t bits[1] = {0x80};
+    px_bytes[0] = bits;
+    px_sizes[0] = 1;
+    interp *ip = fresh();
+    interp_set_resources(ip, px_fetch, NULL);
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 100, 50);
+    CMD(&s, Ortho, 0, 100, 0, 50, -1, 1);
+    CMD(&s, RasterPos2i, 30, 20);
+    CMD(&s, Bitmap, 1, 1, 0, 0, 0, 0, 1);
+    CMD0(&s, LoadIdentity); /* the projection */
+    CMD(&s, Viewport, 10, 5, 80, 40);
+    CMD(&s, Begin, GL_TRIANGLES);
+    CMD(&s, Vertex2f, 0, 0);
+    CMD(&s, Vertex2f, 1, 0);
+    CMD(&s, Vertex2f, 0, 1);
+    CMD0(&s, End);
+    run(ip, &s);
+    interp_end_frame(ip);
+    CHECK(sc.overlay != NULL && sc.overlay_w == 80 && sc.overlay_h == 40);
+    CHECK(sc.camera.width == 80);
+    if (sc.overlay && sc.overlay_w == 80) {
+        CHECK(overlay_px(20, 15)[3] == 255);
+        CHECK(overlay_px(30, 20)[3] == 0);
+    }
+    interp_destroy(ip);
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -1200,6 +1432,11 @@ int main(void)
     test_eval_draw();
     test_eval_rejected();
     test_skipped();
+    test_raster_pos();
+    test_bitmap();
+    test_draw_pixels();
+    test_pixels_notes();
+    test_pixels_first();
     scene_finish(&sc);
     return CHECK_RESULT("test_interp");
 }

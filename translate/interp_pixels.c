@@ -1,0 +1,408 @@
+/* interp_pixels.c: the raster position and what is drawn at it: glRasterPos,
+ * glWindowPos, glBitmap, glDrawPixels, glCopyPixels, glPixelZoom and the
+ * colour scales and biases of glPixelTransfer (GL 2.1 sections 2.13,
+ * 3.6-3.7, 4.3.3).
+ *
+ * Bitmaps and pixel rectangles are not geometry: GL writes them to window
+ * pixels. The interpreter composites them, in window coordinates, into one
+ * RGBA image of the frame's viewport (scene.overlay), which the writer
+ * shows in front of the scene, unlit, pixel for pixel (docs/mapping.md
+ * "Bitmaps and pixel rectangles"). Where the depth test would let the 3D
+ * scene hide them, or geometry drawn later covers them, they still show:
+ * a note says so.
+ */
+#include "interp_internal.h"
+
+#include <string.h>
+
+#include "talloc.h"
+
+/* ---- The raster position --------------------------------------------------------- */
+
+/* The current colour becomes the raster colour (GL 2.1 2.13: lit when
+ * lighting is on, which is not computed here). */
+static void take_colour(interp *ip)
+{
+    gl_attribs *a = &ip->st.a;
+    memcpy(a->current.raster_color, a->current.color, sizeof a->current.raster_color);
+}
+
+void interp_rasterpos(interp *ip, const rgl_cmd *cmd)
+{
+    if (interp_reject_in_begin(ip))
+        return;
+    double obj[4] = {0, 0, 0, 1};
+    uint32_t n = cmd_value_count(cmd);
+    for (uint32_t k = 0; k < n && k < 4; k++)
+        obj[k] = cmd_value(cmd, k);
+    gl_attribs *a = &ip->st.a;
+    double eye[4], clip[4];
+    mat4_apply(interp_matrix(ip, INTERP_MV), obj, eye);
+    mat4_apply(interp_matrix(ip, INTERP_PROJ), eye, clip);
+    /* The position is a point clipped against the view volume: outside
+     * it, the raster position is invalid. */
+    double w = clip[3];
+    bool in = isfinite(w) && w > 0;
+    for (int k = 0; k < 3 && in; k++)
+        in = isfinite(clip[k]) && clip[k] >= -w && clip[k] <= w;
+    a->current.raster_valid = in;
+    if (!in)
+        return;
+    const int32_t *vp = a->viewport.rect;
+    double n_ = a->viewport.near, f_ = a->viewport.far;
+    a->current.raster_pos[0] = vp[0] + (clip[0] / w + 1) * vp[2] / 2;
+    a->current.raster_pos[1] = vp[1] + (clip[1] / w + 1) * vp[3] / 2;
+    a->current.raster_pos[2] = n_ + (clip[2] / w + 1) / 2 * (f_ - n_);
+    a->current.raster_pos[3] = w;
+    take_colour(ip);
+    if (a->caps[INTERP_CAP_LIGHTING])
+        interp_note(ip, DIAG_NOTE_RASTER_LIT);
+}
+
+void interp_windowpos(interp *ip, const rgl_cmd *cmd)
+{
+    if (interp_reject_in_begin(ip))
+        return;
+    gl_attribs *a = &ip->st.a;
+    double x = cmd_value(cmd, 0), y = cmd_value(cmd, 1);
+    double z = cmd_value_count(cmd) > 2 ? cmd_value(cmd, 2) : 0;
+    if (!isfinite(x) || !isfinite(y) || !isfinite(z)) {
+        interp_diag(ip, DIAG_BAD_NUMBER, "glWindowPos: NaN or infinite position");
+        return;
+    }
+    /* GL 2.1 2.13: never clipped, depth mapped by the depth range, the
+     * colour unlit. */
+    z = z > 0 ? (z < 1 ? z : 1) : 0;
+    double n_ = a->viewport.near, f_ = a->viewport.far;
+    a->current.raster_pos[0] = x;
+    a->current.raster_pos[1] = y;
+    a->current.raster_pos[2] = n_ + z * (f_ - n_);
+    a->current.raster_pos[3] = 1;
+    a->current.raster_valid = true;
+    take_colour(ip);
+}
+
+void interp_pixelzoom(interp *ip, const rgl_cmd *cmd)
+{
+    if (interp_reject_in_begin(ip))
+        return;
+    double x = arg_num(&cmd->arg[0]), y = arg_num(&cmd->arg[1]);
+    if (!isfinite(x) || !isfinite(y)) {
+        interp_diag(ip, DIAG_BAD_NUMBER, "glPixelZoom: NaN or infinite factor");
+        return;
+    }
+    ip->st.a.pixel.zoom[0] = (float)x;
+    ip->st.a.pixel.zoom[1] = (float)y;
+}
+
+void interp_pixeltransfer(interp *ip, const rgl_cmd *cmd)
+{
+    if (interp_reject_in_begin(ip))
+        return;
+    GLenum pname = arg_enum(cmd, 0);
+    double v = arg_num(&cmd->arg[1]);
+    gl_attribs *a = &ip->st.a;
+    static const GLenum scales[4] = {GL_RED_SCALE, GL_GREEN_SCALE, GL_BLUE_SCALE, GL_ALPHA_SCALE};
+    static const GLenum biases[4] = {GL_RED_BIAS, GL_GREEN_BIAS, GL_BLUE_BIAS, GL_ALPHA_BIAS};
+    for (int k = 0; k < 4; k++)
+        if (pname == scales[k] || pname == biases[k]) {
+            if (!isfinite(v)) {
+                interp_diag(ip, DIAG_BAD_NUMBER, "glPixelTransfer: NaN or infinite value");
+                return;
+            }
+            (pname == scales[k] ? a->pixel.scale : a->pixel.bias)[k] = (float)v;
+            return;
+        }
+    /* Others that change colour pixels: index shift and offset (colour
+     * index pixels only), colour mapping, and the depth scale and bias. */
+    static const GLenum others[] = {GL_MAP_COLOR, GL_MAP_STENCIL, GL_INDEX_SHIFT,
+                                    GL_INDEX_OFFSET, GL_DEPTH_SCALE, GL_DEPTH_BIAS};
+    for (size_t k = 0; k < sizeof others / sizeof others[0]; k++)
+        if (pname == others[k]) {
+            bool def = pname == GL_DEPTH_SCALE ? v == 1 : v == 0;
+            if (def)
+                a->pixel.others &= ~(1u << k);
+            else
+                a->pixel.others |= 1u << k;
+            return;
+        }
+    interp_bad_enum(ip, "glPixelTransfer pname", pname);
+}
+
+/* ---- The frame's image of pixels --------------------------------------------------- */
+
+static uint64_t scene_items(const scene *s)
+{
+    return (uint64_t)s->ntris + s->nlines + s->npoints + s->nsolids + s->ninstances;
+}
+
+void interp_pixels_end_frame(interp *ip)
+{
+    scene *s = ip->scene;
+    if (!s || !s->overlay)
+        return;
+    /* GL would draw that geometry over the pixels; the image is in front. */
+    if (scene_items(s) > ip->pixels_mark)
+        interp_note(ip, DIAG_NOTE_PIXELS_DEPTH);
+    /* The image was made at the viewport of the first pixel draw; the
+     * camera may have another (fixed by a later draw): the same window
+     * pixels, in the camera's rectangle. */
+    const int32_t *vp = ip->cam_viewport;
+    int w = vp[2], h = vp[3];
+    if (vp[0] == ip->pixels_org[0] && vp[1] == ip->pixels_org[1] && w == s->overlay_w &&
+        h == s->overlay_h)
+        return;
+    uint8_t *px = NULL;
+    if (w >= 1 && h >= 1 && w <= INTERP_MAX_VIEWPORT && h <= INTERP_MAX_VIEWPORT &&
+        interp_budget_texels(ip, (uint64_t)w * (uint64_t)h * 4))
+        px = tr_realloc(NULL, (size_t)w * (size_t)h * 4);
+    if (px) {
+        memset(px, 0, (size_t)w * (size_t)h * 4);
+        for (int y = 0; y < h; y++) {
+            int64_t sy = (int64_t)vp[1] + y - ip->pixels_org[1];
+            if (sy < 0 || sy >= s->overlay_h)
+                continue;
+            for (int x = 0; x < w; x++) {
+                int64_t sx = (int64_t)vp[0] + x - ip->pixels_org[0];
+                if (sx >= 0 && sx < s->overlay_w)
+                    memcpy(px + ((size_t)y * (size_t)w + (size_t)x) * 4,
+                           s->overlay + ((size_t)sy * (size_t)s->overlay_w + (size_t)sx) * 4, 4);
+            }
+        }
+    }
+    tr_free(s->overlay);
+    s->overlay = px;
+    s->overlay_w = px ? w : 0;
+    s->overlay_h = px ? h : 0;
+}
+
+/* The overlay, made on first use at the size of the camera's viewport,
+ * or the current one while no draw has fixed the camera (the first
+ * pixels must not choose the frame's camera: a text overlay's projection
+ * is rarely the scene's); NULL when there is no scene, or memory or the
+ * budget ran out. */
+static uint8_t *overlay(interp *ip)
+{
+    scene *s = ip->scene;
+    if (!s || s->failed)
+        return NULL;
+    if (s->overlay)
+        return s->overlay;
+    const int32_t *vp = ip->camera_fixed ? ip->cam_viewport : ip->st.a.viewport.rect;
+    int w = vp[2], h = vp[3];
+    if (w < 1 || h < 1 || w > INTERP_MAX_VIEWPORT || h > INTERP_MAX_VIEWPORT)
+        return NULL;
+    size_t bytes = (size_t)w * (size_t)h * 4;
+    if (!interp_budget_texels(ip, bytes))
+        return NULL;
+    uint8_t *px = tr_realloc(NULL, bytes);
+    if (!px) {
+        s->failed = true;
+        return NULL;
+    }
+    memset(px, 0, bytes);
+    s->overlay = px;
+    ip->pixels_mark = scene_items(s);
+    s->overlay_w = w;
+    s->overlay_h = h;
+    ip->pixels_org[0] = vp[0];
+    ip->pixels_org[1] = vp[1];
+    return px;
+}
+
+/* How a fragment of colour c lands on an overlay pixel: the blend
+ * function GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA (with GL_BLEND) lays it
+ * over what is there; otherwise it replaces it, opaque over the scene. */
+static void put_pixel(uint8_t *d, const float c[4], bool over)
+{
+    float a = clamp01(c[3]);
+    for (int k = 0; k < 3; k++) {
+        float v = clamp01(c[k]);
+        if (over) {
+            float da = d[3] / 255.0f, dv = d[k] / 255.0f;
+            float oa = a + da * (1 - a);
+            v = oa > 0 ? (v * a + dv * da * (1 - a)) / oa : 0;
+        }
+        d[k] = (uint8_t)(clamp01(v) * 255.0f + 0.5f);
+    }
+    d[3] = over ? (uint8_t)(clamp01(a + d[3] / 255.0f * (1 - a)) * 255.0f + 0.5f) : 255;
+}
+
+/* Whether the frame's fragments of pixels are blended over what is there,
+ * after the notes that apply to every pixel draw. */
+static bool pixels_begin(interp *ip)
+{
+    const gl_attribs *a = &ip->st.a;
+    if (a->caps[INTERP_CAP_DEPTH_TEST])
+        interp_note(ip, DIAG_NOTE_PIXELS_DEPTH);
+    if (ip->scene)
+        ip->pixels_mark = scene_items(ip->scene);
+    return a->caps[INTERP_CAP_BLEND] && a->color_buffer.blend_src == GL_SRC_ALPHA &&
+           a->color_buffer.blend_dst == GL_ONE_MINUS_SRC_ALPHA;
+}
+
+void interp_bitmap(interp *ip, const rgl_cmd *cmd)
+{
+    if (interp_reject_in_begin(ip))
+        return;
+    int64_t w = cmd->arg[0].v.i, h = cmd->arg[1].v.i;
+    double xo = arg_num(&cmd->arg[2]), yo = arg_num(&cmd->arg[3]);
+    double xm = arg_num(&cmd->arg[4]), ym = arg_num(&cmd->arg[5]);
+    uint32_t id = (uint32_t)cmd->arg[6].v.u;
+    if (w < 0 || h < 0) {
+        interp_bad_value(ip, "glBitmap: negative size");
+        return;
+    }
+    if (!isfinite(xo) || !isfinite(yo) || !isfinite(xm) || !isfinite(ym)) {
+        interp_diag(ip, DIAG_BAD_NUMBER, "glBitmap: NaN or infinite origin or move");
+        return;
+    }
+    gl_attribs *a = &ip->st.a;
+    if (!a->current.raster_valid) /* GL 2.1 3.7: ignored, the position stays */
+        return;
+    double *rp = a->current.raster_pos;
+    size_t row = (size_t)(w + 7) / 8, need = row * (size_t)h;
+    if (id && w > 0 && h > 0 && (uint64_t)w * (uint64_t)h <= (1u << 26)) {
+        bool over = pixels_begin(ip);
+        uint32_t lost = 0;
+        const uint8_t *bits = ip->scene ? interp_pixels_fetch(ip, id, need, &lost) : NULL;
+        uint8_t *ov = bits ? overlay(ip) : NULL;
+        if (ov && interp_budget_texels(ip, (uint64_t)w * (uint64_t)h)) {
+            /* The lower left corner at (floor(xr - xo), floor(yr - yo)),
+             * in the overlay's coordinates. */
+            double fx = floor(rp[0] - xo) - ip->pixels_org[0];
+            double fy = floor(rp[1] - yo) - ip->pixels_org[1];
+            int ow = ip->scene->overlay_w, oh = ip->scene->overlay_h;
+            for (int64_t j = 0; j < h; j++) {
+                double y = fy + (double)j;
+                if (y < 0 || y >= oh)
+                    continue;
+                for (int64_t i = 0; i < w; i++) {
+                    double x = fx + (double)i;
+                    if (x < 0 || x >= ow || !((bits[(size_t)j * row + (size_t)i / 8] >> (7 - i % 8)) & 1))
+                        continue;
+                    put_pixel(ov + ((size_t)y * (size_t)ow + (size_t)x) * 4,
+                              a->current.raster_color, over);
+                }
+            }
+        }
+    }
+    rp[0] += xm;
+    rp[1] += ym;
+}
+
+/* Draws w x h RGBA pixels (floats, before pixel transfer) at the raster
+ * position with the pixel zoom (GL 2.1 3.6.4 and 3.6.5). */
+static void draw_rect(interp *ip, float *px, int64_t w, int64_t h)
+{
+    const gl_attribs *a = &ip->st.a;
+    size_t n = (size_t)w * (size_t)h;
+    for (size_t i = 0; i < n; i++)
+        for (int k = 0; k < 4; k++)
+            px[i * 4 + k] = clamp01(px[i * 4 + k] * a->pixel.scale[k] + a->pixel.bias[k]);
+    if (a->pixel.others)
+        interp_note(ip, DIAG_NOTE_PIXELS_OTHER);
+    bool over = pixels_begin(ip);
+    uint8_t *ov = overlay(ip);
+    if (!ov)
+        return;
+    double zx = a->pixel.zoom[0], zy = a->pixel.zoom[1];
+    if (zx == 0 || zy == 0)
+        return;
+    /* The window pixels whose centres lie in the zoomed rectangle. */
+    double xr = a->current.raster_pos[0] - ip->pixels_org[0];
+    double yr = a->current.raster_pos[1] - ip->pixels_org[1];
+    double x0 = fmin(xr, xr + zx * (double)w), x1 = fmax(xr, xr + zx * (double)w);
+    double y0 = fmin(yr, yr + zy * (double)h), y1 = fmax(yr, yr + zy * (double)h);
+    int ow = ip->scene->overlay_w, oh = ip->scene->overlay_h;
+    /* Clamped as doubles first: a hostile position is far outside int64_t. */
+    int64_t xa = (int64_t)fmin(ow, fmax(0, ceil(x0 - 0.5)));
+    int64_t xb = (int64_t)fmin(ow, fmax(0, ceil(x1 - 0.5)));
+    int64_t ya = (int64_t)fmin(oh, fmax(0, ceil(y0 - 0.5)));
+    int64_t yb = (int64_t)fmin(oh, fmax(0, ceil(y1 - 0.5)));
+    if (xa >= xb || ya >= yb ||
+        !interp_budget_texels(ip, (uint64_t)(xb - xa) * (uint64_t)(yb - ya)))
+        return;
+    for (int64_t y = ya; y < yb; y++) {
+        double fm = floor(((double)y + 0.5 - yr) / zy);
+        if (!(fm >= 0 && fm < (double)h))
+            continue;
+        int64_t m = (int64_t)fm;
+        for (int64_t x = xa; x < xb; x++) {
+            double fk = floor(((double)x + 0.5 - xr) / zx);
+            if (!(fk >= 0 && fk < (double)w))
+                continue;
+            int64_t k = (int64_t)fk;
+            put_pixel(ov + ((size_t)y * (size_t)ow + (size_t)x) * 4,
+                      px + ((size_t)m * (size_t)w + (size_t)k) * 4, over);
+        }
+    }
+}
+
+/* Converts resource id's w x h pixels of format/type and draws them. */
+static void draw_pixels(interp *ip, uint32_t id, GLenum format, GLenum type, int64_t w,
+                        int64_t h)
+{
+    size_t need = interp_pixel_bytes(format, type, w, h);
+    if (!need) {
+        interp_note(ip, DIAG_NOTE_PIXELS_OTHER);
+        return;
+    }
+    uint32_t lost = 0;
+    const uint8_t *src = interp_pixels_fetch(ip, id, need, &lost);
+    if (!src || !interp_budget_texels(ip, (uint64_t)w * (uint64_t)h * 16))
+        return;
+    float *px = tr_realloc(NULL, (size_t)w * (size_t)h * 4 * sizeof *px);
+    if (!px) {
+        ip->scene->failed = true;
+        return;
+    }
+    interp_pixels_float(px, src, (size_t)w * (size_t)h, format, type);
+    draw_rect(ip, px, w, h);
+    tr_free(px);
+}
+
+void interp_drawpixels(interp *ip, const rgl_cmd *cmd)
+{
+    if (interp_reject_in_begin(ip))
+        return;
+    int64_t w = cmd->arg[0].v.i, h = cmd->arg[1].v.i;
+    GLenum format = arg_enum(cmd, 2), type = arg_enum(cmd, 3);
+    uint32_t id = (uint32_t)cmd->arg[4].v.u;
+    if (w < 0 || h < 0) {
+        interp_bad_value(ip, "glDrawPixels: negative size");
+        return;
+    }
+    if (!ip->st.a.current.raster_valid || !ip->scene || !id || w == 0 || h == 0)
+        return;
+    draw_pixels(ip, id, format, type, w, h);
+}
+
+void interp_copypixels(interp *ip, const rgl_cmd *cmd)
+{
+    if (interp_reject_in_begin(ip))
+        return;
+    int64_t w = cmd->arg[2].v.i, h = cmd->arg[3].v.i;
+    GLenum type = arg_enum(cmd, 4);
+    uint32_t id = (uint32_t)cmd->arg[5].v.u;
+    if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL) {
+        interp_bad_enum(ip, "glCopyPixels type", type);
+        return;
+    }
+    if (w < 0 || h < 0) {
+        interp_bad_value(ip, "glCopyPixels: negative size");
+        return;
+    }
+    if (!ip->st.a.current.raster_valid || !ip->scene || w == 0 || h == 0)
+        return;
+    if (type != GL_COLOR) {
+        interp_note(ip, DIAG_NOTE_PIXELS_OTHER);
+        return;
+    }
+    if (!id) {
+        interp_diag(ip, DIAG_IGNORED, "glCopyPixels: the recorder could not read the pixels");
+        return;
+    }
+    /* The recorder read the source as 8-bit RGBA, before pixel transfer. */
+    draw_pixels(ip, id, GL_RGBA, GL_UNSIGNED_BYTE, w, h);
+}
