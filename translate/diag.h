@@ -48,7 +48,9 @@
     X(NOTE_PROJECTIVE_MODELVIEW, "approximated: projective modelview applied to the vertices") \
     X(NOTE_SPOT_SPECULAR, "approximated: a spot light whose specular colour differs from its diffuse colour makes highlights as if they were equal") \
     X(NOTE_NORMALS, "approximated: lit normals that are not unit length in eye space (GL_NORMALIZE off) are used normalised") \
-    X(NOTE_EVAL_INDEX, "not translated: colour-index evaluator maps (GL_MAP1_INDEX, GL_MAP2_INDEX)")
+    X(NOTE_EVAL_INDEX, "not translated: colour-index evaluator maps (GL_MAP1_INDEX, GL_MAP2_INDEX)") \
+    X(NOTE_ACCUM_PASSES, "approximated: accumulation-buffer passes that differ other than by a sub-pixel jitter of the projection or an eye moved around a focal point (motion blur) are drawn as their first pass alone") \
+    X(NOTE_ACCUM_WEIGHTS, "approximated: accumulation weights that do not add up to one, GL_MULT or GL_ADD, are drawn as an average of the passes")
 
 typedef enum diag_kind {
 #define DIAG_ENUM_(name, text) DIAG_##name,

@@ -294,6 +294,9 @@ static void begin_mode(interp *ip, GLenum mode)
     ip->prim_skip = true;
     if (!ip->scene)
         return;
+    interp_accum_draw(ip);
+    if (ip->accum.active)
+        return; /* a later accumulation pass: the scene holds the first */
     draw_notes(ip);
     interp_fix_camera(ip);
     if (!setup_transform(ip))
