@@ -31,7 +31,7 @@ static long name_index(const char *name)
 static void test_list(void)
 {
     static const char *const counted[] = {
-        "glPixelZoom", "glRasterPos2i", "glActiveTexture", "glAccum", "glutBitmapCharacter",
+        "glPixelZoom", "glRasterPos2i", "glActiveTexture", "glLogicOp", "glutBitmapCharacter",
         "glBitmap", "glDrawPixels", "glRenderMode", "glClipPlane", "glStencilFunc",
         "glTexImage3D", "glUseProgram", "glUniform4fv", "glActiveTextureARB", "glMultiTexCoord2f",
         "glPolygonStipple", "gluNurbsSurface", "gluTessVertex", "gluBuild1DMipmaps", "glutInit",
@@ -72,8 +72,8 @@ static size_t stub_calls(const char *name)
 static void *other_thread(void *arg)
 {
     (void)arg;
-    rayglAccum(GL_ADD, 0.5f);
-    rayglAccum(GL_ADD, 0.5f);
+    rayglLogicOp(GL_XOR);
+    rayglLogicOp(GL_XOR);
     rayglVertex2f(0, 0);
     rayglFrameEnd();
     return NULL;
@@ -108,12 +108,12 @@ static void test_trace(const char *dir)
     CHECK(rayglRecordStatus() == RAYGL_IDLE && access(path, F_OK) != 0);
     CHECK(rgl_tls_stream != NULL);
     CHECK(rayglRecordOpen(path) == 0);
-    rayglAccum(GL_LOAD, 1.0f);
-    rayglAccum(GL_ACCUM, 0.5f);
-    rayglAccum(GL_RETURN, 1.0f);
+    rayglLogicOp(GL_XOR);
+    rayglLogicOp(GL_AND);
+    rayglLogicOp(GL_COPY);
     rayglRasterPos2i(3, 4);
     rayglVertex3f(1, 2, 3);
-    CHECK(stub_calls("glAccum") == 3 && stub_calls("glRasterPos2i") == 1 &&
+    CHECK(stub_calls("glLogicOp") == 3 && stub_calls("glRasterPos2i") == 1 &&
           stub_calls("glutInit") == 1 && stub_calls("glVertex3f") == 1);
     CHECK(rayglRenderMode(GL_RENDER) == 0); /* the stub's answer, passed back */
     rayglFrameEnd();
@@ -148,8 +148,8 @@ static void test_trace(const char *dir)
 
     /* Not recording: forwarded, not counted, nothing breaks. */
     stub_reset();
-    rayglAccum(GL_LOAD, 1.0f);
-    CHECK(stub_calls("glAccum") == 1);
+    rayglLogicOp(GL_COPY);
+    CHECK(stub_calls("glLogicOp") == 1);
 
     rgl_reader *r = trace_open(path);
     if (!r)
@@ -158,7 +158,7 @@ static void test_trace(const char *dir)
     static const char *const want0[] = {
         "glVertex3f(x=1, y=2, z=3)",
         "rayglFrameEnd()",
-        "@NotRecorded(name=\"glAccum\", count=3)",
+        "@NotRecorded(name=\"glLogicOp\", count=3)",
         "@NotRecorded(name=\"glRasterPos2i\", count=1)",
         "@NotRecorded(name=\"glRenderMode\", count=1)",
         "@NotRecorded(name=\"glutInit\", count=1)",
@@ -185,7 +185,7 @@ static void test_trace(const char *dir)
     static const char *const want3[] = {
         "glVertex2f(x=0, y=0)",
         "rayglFrameEnd()",
-        "@NotRecorded(name=\"glAccum\", count=2)",
+        "@NotRecorded(name=\"glLogicOp\", count=2)",
     };
     check_frame(r, 3, want3, sizeof want3 / sizeof want3[0]);
     rgl_reader_destroy(r);
