@@ -1175,6 +1175,92 @@ static void test_eval_rejected(void)
     interp_destroy(ip);
 }
 
+/* ---- Accumulation buffer ---------------------------------------------------- */
+
+/* One accumulated pass: a triangle seen through a frustum moved by
+ * (pdx, pdy) pixels of 320 x 240 and an eye moved by (ex, ey) around a
+ * focus at 5, the triangle itself moved by mx. */
+static void accum_pass(seq *s, double pdx, double pdy, double ex, double ey, double mx)
+{
+    const double top = 0.36397023426620234, right = top * 320 / 240;
+    double dx = -(pdx * 2 * right / 320 + ex / 5), dy = -(pdy * 2 * top / 240 + ey / 5);
+    CMD(s, Clear, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    CMD(s, MatrixMode, GL_PROJECTION);
+    CMD0(s, LoadIdentity);
+    CMD(s, Frustum, -right + dx, right + dx, -top + dy, top + dy, 1, 30);
+    CMD(s, MatrixMode, GL_MODELVIEW);
+    CMD0(s, LoadIdentity);
+    CMD(s, Translatef, -ex, -ey, 0);
+    CMD(s, Translatef, mx, 0, 0);
+    CMD(s, Begin, GL_TRIANGLES);
+    CMD(s, Vertex3f, -1, -1, -5);
+    CMD(s, Vertex3f, 1, -1, -5);
+    CMD(s, Vertex3f, 0, 1, -6);
+    CMD0(s, End);
+    CMD(s, Accum, GL_ACCUM, 0.25);
+}
+
+static void test_accum(void)
+{
+    static const double jit[4][2] = {{-0.375, -0.125}, {-0.125, 0.375}, {0.125, -0.375},
+                                     {0.375, 0.125}};
+    /* Jittered projection: one copy, antialiasing, no note. */
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 320, 240);
+    for (int i = 0; i < 4; i++)
+        accum_pass(&s, jit[i][0], jit[i][1], 0, 0, 0);
+    CMD(&s, Accum, GL_RETURN, 1);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 1);
+    CHECK_EQ_U(sc.antialias_depth, 2);
+    CHECK(!sc.focal_blur);
+    CHECK_EQ_U(count(DIAG_NOTE_ACCUM_PASSES) + count(DIAG_NOTE_ACCUM_WEIGHTS), 0);
+    CHECK_EQ_U(count(DIAG_NOTE_PROJECTION), 0);
+    interp_destroy(ip);
+
+    /* The eye around a focal point at 5: one copy, focal blur. */
+    ip = fresh();
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 320, 240);
+    for (int i = 0; i < 4; i++)
+        accum_pass(&s, 0, 0, 0.1 * jit[i][0], 0.1 * jit[i][1], 0);
+    CMD(&s, Accum, GL_RETURN, 1);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 1);
+    CHECK_EQ_U(sc.antialias_depth, 0);
+    CHECK(sc.focal_blur);
+    CHECK_NEAR(sc.focal_point[2], -5, 1e-3);
+    CHECK(sc.aperture > 0.1 && sc.aperture < 0.12); /* 2 sqrt(2) x the eyes' rms spread, 0.0395 */
+    CHECK_EQ_U(count(DIAG_NOTE_ACCUM_PASSES), 0);
+    interp_destroy(ip);
+
+    /* The geometry moves (motion blur): one copy, the first pass, noted;
+     * weights adding up to 1/2 are noted too. A draw after GL_RETURN adds. */
+    ip = fresh();
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 320, 240);
+    for (int i = 0; i < 2; i++)
+        accum_pass(&s, 0, 0, 0, 0, 0.1 * i);
+    CMD(&s, Accum, GL_RETURN, 1);
+    CMD(&s, Begin, GL_TRIANGLES);
+    CMD(&s, Vertex3f, -1, -1, -5);
+    CMD(&s, Vertex3f, 1, -1, -5);
+    CMD(&s, Vertex3f, 0, 1, -6);
+    CMD0(&s, End);
+    CMD(&s, Accum, 0x1234, 1);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 2);
+    CHECK(sc.nverts >= 1 && sc.verts[0].pos[0] == -1);
+    CHECK_EQ_U(sc.antialias_depth, 0);
+    CHECK(!sc.focal_blur);
+    CHECK_EQ_U(count(DIAG_NOTE_ACCUM_PASSES), 1);
+    CHECK_EQ_U(count(DIAG_NOTE_ACCUM_WEIGHTS), 1);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 1);
+    interp_destroy(ip);
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -1200,6 +1286,7 @@ int main(void)
     test_eval_draw();
     test_eval_rejected();
     test_skipped();
+    test_accum();
     scene_finish(&sc);
     return CHECK_RESULT("test_interp");
 }
