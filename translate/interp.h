@@ -105,6 +105,7 @@ typedef struct gl_attribs {
         gl_light light[INTERP_MAX_LIGHTS];
         float model_ambient[4];
         bool local_viewer, two_side;
+        GLenum color_control; /* GL_LIGHT_MODEL_COLOR_CONTROL */
     } lighting; /* GL_LIGHTING_BIT */
     struct {
         GLenum front_face, cull_mode;
@@ -138,6 +139,7 @@ typedef struct gl_attribs {
     struct {
         GLenum mode;
         float density, start, end, color[4];
+        GLenum coord_src; /* GL_FOG_COORD_SRC */
     } fog; /* GL_FOG_BIT */
     struct {
         GLenum perspective, point, line, polygon, fog;

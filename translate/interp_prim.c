@@ -94,6 +94,24 @@ static void draw_notes(interp *ip)
         interp_note(ip, DIAG_NOTE_COLOR_MASK);
     if (!c[INTERP_CAP_DEPTH_TEST] || (a->depth.func != GL_LESS && a->depth.func != GL_LEQUAL))
         interp_note(ip, DIAG_NOTE_DEPTH);
+    /* glFogCoord and glSecondaryColor are not recorded (yet): a frame
+     * that uses them says so. */
+    if (c[INTERP_CAP_FOG] && a->fog.coord_src == GL_FOG_COORD)
+        interp_note(ip, DIAG_NOTE_FOG_COORD);
+    if (c[INTERP_CAP_COLOR_SUM] && !c[INTERP_CAP_LIGHTING])
+        interp_note(ip, DIAG_NOTE_COLOR_SUM);
+    /* GL 1.x 3.9: with GL_SINGLE_COLOR the texture modulates the specular
+     * term too; POV-Ray adds the highlight after the texture, which is
+     * GL_SEPARATE_SPECULAR_COLOR. */
+    if (c[INTERP_CAP_LIGHTING] && a->lighting.color_control == GL_SINGLE_COLOR &&
+        (c[INTERP_CAP_TEXTURE_2D] || c[INTERP_CAP_TEXTURE_1D]) &&
+        a->texture.env_mode == GL_MODULATE) {
+        const float *sp = a->lighting.material[0].specular, *bp = a->lighting.material[1].specular;
+        bool cm_spec = c[INTERP_CAP_COLOR_MATERIAL] &&
+                       a->lighting.color_material_mode == GL_SPECULAR;
+        if (cm_spec || sp[0] > 0 || sp[1] > 0 || sp[2] > 0 || bp[0] > 0 || bp[1] > 0 || bp[2] > 0)
+            interp_note(ip, DIAG_NOTE_SINGLE_COLOR);
+    }
 }
 
 /* Without a depth test GL shows the later of two draws where they overlap;

@@ -1261,6 +1261,61 @@ static void test_accum(void)
     interp_destroy(ip);
 }
 
+/* ---- Fog coordinates, secondary colour, colour control: said when used --------- */
+
+static void tri(seq *s)
+{
+    CMD(s, Begin, GL_TRIANGLES);
+    CMD(s, Vertex3f, -1, -1, -5);
+    CMD(s, Vertex3f, 1, -1, -5);
+    CMD(s, Vertex3f, 0, 1, -5);
+    CMD0(s, End);
+}
+
+static void test_secondary_notes(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Enable, GL_FOG);
+    tri(&s);
+    CMD(&s, Fogi, GL_FOG_COORD_SRC, 0x1234);
+    CMD(&s, Fogi, GL_FOG_COORD_SRC, GL_FOG_COORD);
+    tri(&s);
+    CMD(&s, Disable, GL_FOG);
+    tri(&s);
+    CMD(&s, Enable, GL_COLOR_SUM);
+    tri(&s);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 1);
+    CHECK_EQ_U(count(DIAG_NOTE_FOG_COORD), 1);
+    CHECK_EQ_U(count(DIAG_NOTE_COLOR_SUM), 1);
+    CHECK(interp_state(ip)->a.fog.coord_src == GL_FOG_COORD);
+    interp_destroy(ip);
+
+    /* Lit and textured: GL_SINGLE_COLOR (the default) is noted where the
+     * material has a highlight, GL_SEPARATE_SPECULAR_COLOR is not. */
+    for (int sep = 0; sep < 2; sep++) {
+        ip = fresh();
+        seq_init(&s);
+        CMD(&s, Enable, GL_LIGHTING);
+        CMD(&s, Enable, GL_TEXTURE_2D);
+        if (sep)
+            CMD(&s, LightModeli, GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
+        tri(&s); /* the default material has no highlight */
+        run(ip, &s);
+        CHECK_EQ_U(count(DIAG_NOTE_SINGLE_COLOR), 0);
+        seq_init(&s);
+        CMD(&s, Materialf, GL_FRONT, GL_SHININESS, 20);
+        CMD(&s, Materialfv, GL_FRONT, GL_SPECULAR, 0.5, 0.5, 0.5, 1.0);
+        tri(&s);
+        run(ip, &s);
+        CHECK_EQ_U(count(DIAG_NOTE_SINGLE_COLOR), sep ? 0 : 1);
+        CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 0);
+        interp_destroy(ip);
+    }
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -1287,6 +1342,7 @@ int main(void)
     test_eval_rejected();
     test_skipped();
     test_accum();
+    test_secondary_notes();
     scene_finish(&sc);
     return CHECK_RESULT("test_interp");
 }
