@@ -95,6 +95,7 @@ typedef struct gl_light {
 typedef struct gl_attribs {
     struct {
         float color[4], normal[3], texcoord[4];
+        float secondary[3], fog_coord; /* glSecondaryColor, glFogCoord: kept, not drawn yet */
         bool edge_flag;
     } current; /* GL_CURRENT_BIT */
     uint8_t caps[INTERP_CAP_COUNT]; /* GL_ENABLE_BIT (and each cap's group) */

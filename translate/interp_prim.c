@@ -47,6 +47,21 @@ void interp_color(interp *ip, const rgl_cmd *cmd)
         interp_color_material_update(ip);
 }
 
+/* The current secondary colour and fog coordinate: state only; a draw
+ * that would use them is noted (draw_notes). */
+void interp_secondarycolor(interp *ip, const rgl_cmd *cmd)
+{
+    uint8_t type = cmd_value_type(cmd);
+    for (uint32_t k = 0; k < 3; k++)
+        ip->st.a.current.secondary[k] = (float)normalise(type, cmd_value(cmd, k));
+}
+
+void interp_fogcoord(interp *ip, const rgl_cmd *cmd)
+{
+    double v = cmd_value(cmd, 0);
+    ip->st.a.current.fog_coord = isfinite(v) ? (float)v : 0.0f;
+}
+
 void interp_normal(interp *ip, const rgl_cmd *cmd)
 {
     uint8_t type = cmd_value_type(cmd);
@@ -94,8 +109,8 @@ static void draw_notes(interp *ip)
         interp_note(ip, DIAG_NOTE_COLOR_MASK);
     if (!c[INTERP_CAP_DEPTH_TEST] || (a->depth.func != GL_LESS && a->depth.func != GL_LEQUAL))
         interp_note(ip, DIAG_NOTE_DEPTH);
-    /* glFogCoord and glSecondaryColor are not recorded (yet): a frame
-     * that uses them says so. */
+    /* Fog coordinates and secondary colours are recorded, not drawn yet:
+     * a frame that uses them says so. */
     if (c[INTERP_CAP_FOG] && a->fog.coord_src == GL_FOG_COORD)
         interp_note(ip, DIAG_NOTE_FOG_COORD);
     if (c[INTERP_CAP_COLOR_SUM] && !c[INTERP_CAP_LIGHTING])
