@@ -1293,6 +1293,23 @@ static void test_secondary_notes(void)
     CHECK(interp_state(ip)->a.fog.coord_src == GL_FOG_COORD);
     interp_destroy(ip);
 
+    /* The current values, kept (GL 1.x 2.7: integers normalised). */
+    ip = fresh();
+    seq_init(&s);
+    CMD(&s, SecondaryColor3ub, 255, 51, 0);
+    CMD(&s, FogCoordfEXT, 3.5);
+    run(ip, &s);
+    CHECK_NEAR(interp_state(ip)->a.current.secondary[0], 1, 1e-6);
+    CHECK_NEAR(interp_state(ip)->a.current.secondary[1], 0.2, 1e-6);
+    CHECK_NEAR(interp_state(ip)->a.current.fog_coord, 3.5, 0);
+    seq_init(&s);
+    CMD(&s, SecondaryColor3fvEXT, 0.25, 0.5, 0.75);
+    CMD(&s, FogCoorddv, -2);
+    run(ip, &s);
+    CHECK_NEAR(interp_state(ip)->a.current.secondary[2], 0.75, 0);
+    CHECK_NEAR(interp_state(ip)->a.current.fog_coord, -2, 0);
+    interp_destroy(ip);
+
     /* Lit and textured: GL_SINGLE_COLOR (the default) is noted where the
      * material has a highlight, GL_SEPARATE_SPECULAR_COLOR is not. */
     for (int sep = 0; sep < 2; sep++) {
