@@ -7,7 +7,7 @@
  * that is NULL is not read: the call is forwarded unrecorded, as GL would
  * fault on it or reject it.
  */
-#define GL_GLEXT_PROTOTYPES 1 /* glWindowPos (GL 1.4) */
+#define GL_GLEXT_PROTOTYPES 1 /* GL 1.4 and EXT rows (glWindowPos, glFogCoord, glSecondaryColor) */
 #include <GL/gl.h>
 #include <GL/glext.h>
 #include <GL/glu.h>

@@ -158,6 +158,8 @@ void interp_default_state(gl_state *st)
     a->depth.mask = true;
     a->depth.clear = 1;
     a->fog.mode = GL_EXP;
+    a->fog.coord_src = GL_FRAGMENT_DEPTH;
+    a->lighting.color_control = GL_SINGLE_COLOR;
     a->fog.density = 1;
     a->fog.start = 0;
     a->fog.end = 1;

@@ -95,6 +95,7 @@ typedef struct gl_light {
 typedef struct gl_attribs {
     struct {
         float color[4], normal[3], texcoord[4];
+        float secondary[3], fog_coord; /* glSecondaryColor, glFogCoord: kept, not drawn yet */
         bool edge_flag;
         /* The current raster position (GL 2.1 2.13): window x, y, depth
          * z in [0, 1], clip w; its colour (the current colour at the
@@ -111,6 +112,7 @@ typedef struct gl_attribs {
         gl_light light[INTERP_MAX_LIGHTS];
         float model_ambient[4];
         bool local_viewer, two_side;
+        GLenum color_control; /* GL_LIGHT_MODEL_COLOR_CONTROL */
     } lighting; /* GL_LIGHTING_BIT */
     struct {
         GLenum front_face, cull_mode;
@@ -144,6 +146,7 @@ typedef struct gl_attribs {
     struct {
         GLenum mode;
         float density, start, end, color[4];
+        GLenum coord_src; /* GL_FOG_COORD_SRC */
     } fog; /* GL_FOG_BIT */
     struct {
         GLenum perspective, point, line, polygon, fog;

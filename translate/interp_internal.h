@@ -113,6 +113,27 @@ struct interp {
     uint8_t seen_light_on[INTERP_MAX_LIGHTS];
     gl_light seen_light[INTERP_MAX_LIGHTS];
 
+    /* The frame's accumulation-buffer passes (interp_accum.c): after the
+     * first glAccum(GL_ACCUM or GL_LOAD), what later passes draw is dropped
+     * back to mark until glAccum(GL_RETURN); each pass's first draw gives
+     * its projection and modelview, compared with the first pass's. */
+    struct interp_accum {
+        bool active;       /* passes after the first are being dropped */
+        bool want_draw;    /* the current pass has not drawn yet */
+        scene_mark mark;   /* the scene holding the first pass */
+        uint32_t painter;  /* ip->painter at the mark */
+        uint32_t passes;   /* accumulated so far */
+        double weight;     /* sum of the accumulated values */
+        bool odd_weights;  /* GL_MULT, GL_ADD, or unequal values */
+        bool have_first;
+        mat4 proj0, mv0;   /* the first pass's first draw */
+        mat4 proj, mv;     /* the current pass's first draw */
+        uint32_t n_jitter, n_lens, n_other; /* later passes by kind */
+        double max_jitter;  /* of the projection, in pixels */
+        double focus_min, focus_max; /* lens passes' focal distances */
+        double eye_sum[2], eye_sum2; /* their eyes' offsets (first pass's eye space) */
+    } accum;
+
     /* rayglFrameBegin */
     bool frame_begin;
     char frame_name[RGL_STRING_MAX + 1];
@@ -261,6 +282,14 @@ scene_look interp_current_look(interp *ip);
  * emptied by a reset, freed with the interpreter. */
 int interp_textures_copy(interp *dst, const interp *src);
 void interp_textures_free(interp *ip);
+
+/* Accumulation passes (interp_accum.c): interp_accum_begin_frame forgets
+ * the last frame's; interp_accum_draw is called at every draw's start;
+ * interp_accum_clear by a glClear of the colour buffer returns true when
+ * the clear only ends a pass (the scene keeps the first pass). */
+void interp_accum_begin_frame(interp *ip);
+void interp_accum_draw(interp *ip);
+bool interp_accum_clear(interp *ip);
 
 /* Evaluator state (interp_eval.c): copied with the context state (-1 on
  * allocation failure, the maps not copied then at their initial value),

@@ -229,9 +229,12 @@ void interp_lightmodel(interp *ip, const rgl_cmd *cmd)
             ip->st.a.lighting.two_side = v[0] != 0;
         break;
     case GL_LIGHT_MODEL_COLOR_CONTROL:
-        if (get_params(ip, cmd, 1, false, v) && v[0] != (float)GL_SINGLE_COLOR &&
-            v[0] != (float)GL_SEPARATE_SPECULAR_COLOR)
+        if (!get_params(ip, cmd, 1, false, v))
+            break;
+        if (v[0] != (float)GL_SINGLE_COLOR && v[0] != (float)GL_SEPARATE_SPECULAR_COLOR)
             interp_bad_enum(ip, "colour control", (uint32_t)v[0]);
+        else
+            ip->st.a.lighting.color_control = (GLenum)v[0];
         break;
     default:
         interp_bad_enum(ip, "light model parameter", pname);
@@ -281,7 +284,14 @@ void interp_fog(interp *ip, const rgl_cmd *cmd)
         for (int k = 0; k < 4; k++)
             ip->st.a.fog.color[k] = clamp01(v[k]);
         break;
-    default: break; /* colour index and fog coordinate source: no effect here */
+    case GL_FOG_COORD_SRC:
+        if (v[0] != (float)GL_FOG_COORD && v[0] != (float)GL_FRAGMENT_DEPTH) {
+            interp_bad_enum(ip, "fog coordinate source", (uint32_t)v[0]);
+            return;
+        }
+        ip->st.a.fog.coord_src = (GLenum)v[0];
+        break;
+    default: break; /* colour index: no effect here */
     }
 }
 

@@ -47,6 +47,21 @@ void interp_color(interp *ip, const rgl_cmd *cmd)
         interp_color_material_update(ip);
 }
 
+/* The current secondary colour and fog coordinate: state only; a draw
+ * that would use them is noted (draw_notes). */
+void interp_secondarycolor(interp *ip, const rgl_cmd *cmd)
+{
+    uint8_t type = cmd_value_type(cmd);
+    for (uint32_t k = 0; k < 3; k++)
+        ip->st.a.current.secondary[k] = (float)normalise(type, cmd_value(cmd, k));
+}
+
+void interp_fogcoord(interp *ip, const rgl_cmd *cmd)
+{
+    double v = cmd_value(cmd, 0);
+    ip->st.a.current.fog_coord = isfinite(v) ? (float)v : 0.0f;
+}
+
 void interp_normal(interp *ip, const rgl_cmd *cmd)
 {
     uint8_t type = cmd_value_type(cmd);
@@ -94,6 +109,24 @@ static void draw_notes(interp *ip)
         interp_note(ip, DIAG_NOTE_COLOR_MASK);
     if (!c[INTERP_CAP_DEPTH_TEST] || (a->depth.func != GL_LESS && a->depth.func != GL_LEQUAL))
         interp_note(ip, DIAG_NOTE_DEPTH);
+    /* Fog coordinates and secondary colours are recorded, not drawn yet:
+     * a frame that uses them says so. */
+    if (c[INTERP_CAP_FOG] && a->fog.coord_src == GL_FOG_COORD)
+        interp_note(ip, DIAG_NOTE_FOG_COORD);
+    if (c[INTERP_CAP_COLOR_SUM] && !c[INTERP_CAP_LIGHTING])
+        interp_note(ip, DIAG_NOTE_COLOR_SUM);
+    /* GL 1.x 3.9: with GL_SINGLE_COLOR the texture modulates the specular
+     * term too; POV-Ray adds the highlight after the texture, which is
+     * GL_SEPARATE_SPECULAR_COLOR. */
+    if (c[INTERP_CAP_LIGHTING] && a->lighting.color_control == GL_SINGLE_COLOR &&
+        (c[INTERP_CAP_TEXTURE_2D] || c[INTERP_CAP_TEXTURE_1D]) &&
+        a->texture.env_mode == GL_MODULATE) {
+        const float *sp = a->lighting.material[0].specular, *bp = a->lighting.material[1].specular;
+        bool cm_spec = c[INTERP_CAP_COLOR_MATERIAL] &&
+                       a->lighting.color_material_mode == GL_SPECULAR;
+        if (cm_spec || sp[0] > 0 || sp[1] > 0 || sp[2] > 0 || bp[0] > 0 || bp[1] > 0 || bp[2] > 0)
+            interp_note(ip, DIAG_NOTE_SINGLE_COLOR);
+    }
 }
 
 /* Without a depth test GL shows the later of two draws where they overlap;
@@ -294,6 +327,9 @@ static void begin_mode(interp *ip, GLenum mode)
     ip->prim_skip = true;
     if (!ip->scene)
         return;
+    interp_accum_draw(ip);
+    if (ip->accum.active)
+        return; /* a later accumulation pass: the scene holds the first */
     draw_notes(ip);
     interp_fix_camera(ip);
     if (!setup_transform(ip))

@@ -56,6 +56,7 @@ void interp_begin_frame(interp *ip)
     ip->shape_facets = 0;
     ip->pixels_mark = 0;
     unrec_clear(&ip->unrecorded);
+    interp_accum_begin_frame(ip);
     interp_bounds_begin_frame(ip);
     if (ip->scene)
         scene_reset(ip->scene);
@@ -159,6 +160,8 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
         interp_note(ip, DIAG_NOTE_SCISSOR); /* a partial clear: keep what is drawn */
         return;
     }
+    if (interp_accum_clear(ip))
+        return;
     /* Everything drawn so far is gone; the next draw fixes the camera anew. */
     scene_clear_geometry(ip->scene);
     ip->camera_fixed = false;

@@ -231,6 +231,7 @@ typedef struct slot {
     diag_log *log;
     char *frame_name;   /* rayglFrameBegin's, or NULL */
     int width, height;
+    int antialias_depth; /* the scene's, for the .ini */
     int write_errno;    /* writing the temporary .pov failed */
     const char *look_note; /* look_apply's, static */
     char *published;       /* "DIR/NAME" once written */
@@ -403,6 +404,7 @@ static void *worker(void *arg)
             s->look_note = look_apply(&j->o->look, sc);
         s->width = sc->camera.width;
         s->height = sc->camera.height;
+        s->antialias_depth = sc->antialias_depth;
         if (s->status == RGL_OK && j->o->outdir)
             write_temp(j, t, k, s, &ob);
         if (!heavy_leave(&w, t)) {
@@ -531,6 +533,7 @@ static void publish(const options *o, totals *tot, names *used, size_t k, slot *
     memset(&dims, 0, sizeof dims);
     dims.camera.width = s->width;
     dims.camera.height = s->height;
+    dims.antialias_depth = s->antialias_depth;
     outbuf ob;
     cleanup_lock();
     ini_id = cleanup_file(tmp_ini);

@@ -250,8 +250,9 @@ static void put_unlit_texture(outbuf *ob, const float c[4])
 
 /* ---- Camera, background, lights ----------------------------------------------------- */
 
-static void write_camera(outbuf *ob, const scene_camera *c)
+static void write_camera(outbuf *ob, const scene *s)
 {
+    const scene_camera *c = &s->camera;
     const double *v[4] = {c->location, c->right, c->up, c->direction};
     for (int i = 0; i < 4; i++)
         if (!finite3d(v[i]))
@@ -266,6 +267,16 @@ static void write_camera(outbuf *ob, const scene_camera *c)
     put_vec3d(ob, c->up);
     outbuf_puts(ob, "\n direction ");
     put_vec3d(ob, c->direction);
+    /* Accumulated passes through a lens (interp_accum.c). */
+    if (s->focal_blur && c->kind != SCENE_CAMERA_ORTHOGRAPHIC && isfinite(s->aperture) &&
+        s->aperture > 0 && finite3d(s->focal_point)) {
+        outbuf_puts(ob, "\n aperture ");
+        outbuf_f32(ob, (float)s->aperture);
+        outbuf_puts(ob, " blur_samples ");
+        outbuf_u64(ob, (uint64_t)(s->blur_samples > 0 ? s->blur_samples : 32));
+        outbuf_puts(ob, " focal_point ");
+        put_vec3d(ob, s->focal_point);
+    }
     outbuf_puts(ob, "\n}\n");
 }
 
@@ -1059,7 +1070,7 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
     }
     outbuf_puts(ob, "\n// Eye coordinates of the OpenGL frame: x right, y up, the camera looks"
                     " down -z.\n#version 3.7;\nglobal_settings{assumed_gamma 2.2}\n");
-    write_camera(ob, &s->camera);
+    write_camera(ob, s);
     outbuf_puts(ob, "background{");
     put_rgb(ob, s->background);
     /* Unlit surfaces: the pixel is the pigment (docs/mapping.md). Textures
@@ -1181,7 +1192,16 @@ int pov_write_ini(outbuf *ob, const scene *s, const char *dir, const char *pov_f
     outbuf_u64(ob, (uint64_t)s->camera.width);
     outbuf_puts(ob, "\nHeight=");
     outbuf_u64(ob, (uint64_t)s->camera.height);
-    outbuf_puts(ob, "\nAntialias=Off\nFile_Gamma=2.2\nOutput_File_Type=N\nDisplay=Off\n"
+    if (s->antialias_depth > 0) {
+        /* The frame's passes jittered the projection (interp_accum.c):
+         * every pixel that differs from a neighbour is supersampled. */
+        outbuf_puts(ob, "\nAntialias=On\nSampling_Method=1\nAntialias_Threshold=0\n"
+                        "Antialias_Depth=");
+        outbuf_u64(ob, (uint64_t)s->antialias_depth);
+    } else {
+        outbuf_puts(ob, "\nAntialias=Off");
+    }
+    outbuf_puts(ob, "\nFile_Gamma=2.2\nOutput_File_Type=N\nDisplay=Off\n"
                     "Verbose=Off\n");
     return ob->failed ? -1 : 0;
 }

@@ -53,6 +53,8 @@ void scene_reset(scene *s)
     memset(&s->fog, 0, sizeof s->fog);
     s->have_camera = false;
     s->have_view = false;
+    s->antialias_depth = 0;
+    s->focal_blur = false;
     s->failed = false;
     memset(s->background, 0, sizeof s->background);
     int vp[4] = {0, 0, 640, 480};
@@ -70,6 +72,33 @@ void scene_clear_geometry(scene *s)
     tr_free(s->overlay); /* a glClear erases the pixels drawn too */
     s->overlay = NULL;
     s->overlay_w = s->overlay_h = 0;
+    s->generation++;
+}
+
+void scene_mark_take(const scene *s, scene_mark *m)
+{
+    *m = (scene_mark){s->nverts,  s->ntris,     s->nmeshes,   s->nlines,     s->npoints,
+                      s->nsolids, s->ntextures, s->nprotos,   s->ninstances, s->nmaterials};
+}
+
+void scene_truncate(scene *s, const scene_mark *m)
+{
+#define CUT(f) if (s->f > m->f) s->f = m->f
+    CUT(nverts);
+    CUT(ntris);
+    CUT(nmeshes);
+    CUT(nlines);
+    CUT(npoints);
+    CUT(nsolids);
+    CUT(nprotos);
+    CUT(ninstances);
+    CUT(nmaterials);
+#undef CUT
+    for (size_t i = m->ntextures; i < s->ntextures; i++)
+        tr_free(s->textures[i].rgba);
+    if (s->ntextures > m->ntextures)
+        s->ntextures = m->ntextures;
+    s->mesh_floor = s->nmeshes; /* the kept pass's last mesh takes no more triangles */
     s->generation++;
 }
 

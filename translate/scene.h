@@ -271,9 +271,24 @@ typedef struct scene {
      * unlit, casting no shadow. NULL: none in this frame. */
     uint8_t *overlay;
     int overlay_w, overlay_h;
+    /* What the frame's accumulation-buffer passes add to the one pass the
+     * scene holds (interp_accum.c): POV-Ray's antialiasing at this depth
+     * (0: none), and focal blur around focal_point (eye space) through a
+     * lens of this diameter. */
+    int antialias_depth;
+    bool focal_blur;
+    double aperture, focal_point[3];
+    int blur_samples;
 
     bool failed; /* an allocation or limit failed; the scene is incomplete */
 } scene;
+
+/* The sizes of the geometry pools at one moment, to drop what is added
+ * after it (interp_accum.c keeps one pass of several). */
+typedef struct scene_mark {
+    size_t nverts, ntris, nmeshes, nlines, npoints, nsolids, ntextures, nprotos, ninstances,
+        nmaterials;
+} scene_mark;
 
 /* Empty scene with no storage. scene_finish frees it; scene_reset empties it
  * and keeps the storage for the next frame. */
@@ -283,6 +298,11 @@ void scene_reset(scene *s);
 
 /* Drops all geometry (glClear of the colour buffer erases what was drawn). */
 void scene_clear_geometry(scene *s);
+
+/* The pools' sizes now; scene_truncate drops everything added since mark
+ * (and counts as a clear for scene.generation). */
+void scene_mark_take(const scene *s, scene_mark *mark);
+void scene_truncate(scene *s, const scene_mark *mark);
 
 /* Makes room for n more vertices and returns where they go (the caller
  * fills them and then calls scene_commit_vertices), or NULL on failure. */

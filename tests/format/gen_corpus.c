@@ -7,7 +7,8 @@
  * this only to refresh them (and review the diff). eval-*.bin hold evaluator
  * sequences with valid maps (random blobs rarely have a map's size), so the
  * fuzzers start from meshes that draw; pixels.bin holds bitmaps and pixel
- * rectangles with resources of their size. The corpus also holds
+ * rectangles with resources of their size; accum-passes.bin accumulated
+ * passes. The corpus also holds
  * recorded-*.bin, traces written by libraygl for the image tests.
  */
 #include "testutil.h"
@@ -231,6 +232,34 @@ static int write_pixels(const char *dir)
     return rc;
 }
 
+/* ---- Accumulation: passes that jitter the projection, then GL_RETURN ------------- */
+
+static int write_accum(const char *dir)
+{
+    eval_len = 0;
+    EV(ClearAccum, 0, 0, 0, 0);
+    EV(Clear, 0x0200);
+    for (int i = 0; i < 3; i++) {
+        double d = (i - 1) * 0.004;
+        EV(Clear, 0x4100);
+        EV(MatrixMode, 0x1701);
+        eval_cmd(RGL_OP_LoadIdentity, NULL, 0, NULL, 0);
+        EV(Frustum, -1 + d, 1 + d, -0.75 + d, 0.75 + d, 1, 30);
+        EV(MatrixMode, 0x1700);
+        eval_cmd(RGL_OP_LoadIdentity, NULL, 0, NULL, 0);
+        EV(Translatef, i == 2 ? 0.05 : 0, 0, 0); /* the last pass moves: a lens or motion */
+        EV(Begin, 4);
+        EV(Vertex3f, -1, -1, -5);
+        EV(Vertex3f, 1, -1, -5);
+        EV(Vertex3f, 0, 1, -6);
+        eval_cmd(RGL_OP_End, NULL, 0, NULL, 0);
+        EV(Accum, i == 0 ? 0x0101 : 0x0100, 1.0 / 3);
+    }
+    EV(Accum, 0x0103, 0.5);
+    EV(Accum, 0x0102, 2);
+    return write_file(dir, "accum-passes.bin", seq, eval_len);
+}
+
 int main(int argc, char **argv)
 {
     rng r = {0x5eed5eed12345678ull};
@@ -254,5 +283,6 @@ int main(int argc, char **argv)
     }
     rc |= write_eval(argv[1]);
     rc |= write_pixels(argv[1]);
+    rc |= write_accum(argv[1]);
     return rc;
 }

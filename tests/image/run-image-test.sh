@@ -3,7 +3,7 @@
 #
 #   run-image-test.sh --name NAME --program PROG --raygl2pov R2P --povray POVRAY
 #                     --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]...
-#                     [--no-program-leak-check] [-- IMGCMP-OPTIONS...]
+#                     [--no-program-leak-check] [--ini-antialias] [-- IMGCMP-OPTIONS...]
 #
 # 1. PROG --trace DIR/NAME/NAME.raygl --png DIR/NAME/gl.png [--size WxH]
 #    draws one frame with OSMesa, records it and writes the GL image;
@@ -13,6 +13,9 @@
 #    names the size, the gamma and pov/frame-00000.png);
 # 4. IMGCMP [IMGCMP-OPTIONS] --diff DIR/NAME/diff.png gl.png pov/frame-00000.png
 #    prints the figures and decides.
+#
+# --ini-antialias renders with the .ini's antialiasing (raygl2pov turns it
+# on for a frame that accumulated jittered passes) instead of -A.
 #
 # --no-program-leak-check turns LeakSanitizer off for PROG only: under Xvfb,
 # Mesa's GLX driver is unloaded before the leak check runs, so its per-display
@@ -25,16 +28,17 @@
 set -u
 
 usage() {
-    echo "usage: $0 --name NAME --program PROG --raygl2pov R2P --povray POVRAY --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]... [--no-program-leak-check] [-- IMGCMP-OPTIONS...]" >&2
+    echo "usage: $0 --name NAME --program PROG --raygl2pov R2P --povray POVRAY --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]... [--no-program-leak-check] [--ini-antialias] [-- IMGCMP-OPTIONS...]" >&2
     exit 2
 }
 
-name= prog= r2p= povray= imgcmp= outdir= size= r2p_opts= program_leak_check=1
+name= prog= r2p= povray= imgcmp= outdir= size= r2p_opts= program_leak_check=1 pov_aa=-A
 while [ $# -gt 0 ]; do
     case $1 in
     --help) usage ;;
     --) shift; break ;;
     --no-program-leak-check) program_leak_check=0; shift; continue ;;
+    --ini-antialias) pov_aa=; shift; continue ;;
     --name|--program|--raygl2pov|--povray|--imgcmp|--outdir|--size|--r2p-opt)
         [ $# -ge 2 ] || usage
         case $1 in
@@ -131,13 +135,13 @@ nframes=$(ls "$dir/pov" | grep -c '^frame-[0-9]*\.pov$')
 [ "$nframes" -eq 1 ] || fail "the program drew one frame, raygl2pov wrote $nframes"
 
 # 3. The POV-Ray frame: no display, no antialiasing (3.7 rejects +A0).
-(cd "$dir" && "$povray" pov/frame-00000.ini -D -A) >"$dir/povray.log" 2>&1
+(cd "$dir" && "$povray" pov/frame-00000.ini -D $pov_aa) >"$dir/povray.log" 2>&1
 rc=$?
 # On a loaded machine POV-Ray may give up starting its worker threads: that
 # says nothing of the scene, so it gets one more try (as raygl-render does).
 if [ $rc -ne 0 ] && grep -q "Timed out waiting for worker thread startup" "$dir/povray.log"; then
     echo "note: povray timed out starting its threads; trying once more"
-    (cd "$dir" && "$povray" pov/frame-00000.ini -D -A) >"$dir/povray.log" 2>&1
+    (cd "$dir" && "$povray" pov/frame-00000.ini -D $pov_aa) >"$dir/povray.log" 2>&1
     rc=$?
 fi
 if [ $rc -ne 0 ]; then

@@ -121,7 +121,8 @@ int rgl_test_init(rgl_test *t, int argc, char **argv)
     }
     return 0;
 #else
-    t->ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
+    /* 16-bit accumulation channels: the accum_*.c programs use them. */
+    t->ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 16, NULL);
     if (!t->ctx) {
         fprintf(stderr, "%s: OSMesaCreateContextExt failed\n", t->name);
         goto fail_pixels;

@@ -38,10 +38,11 @@ typedef struct rgl_test {
 } rgl_test;
 
 /* Parses the command line, creates an OSMesa RGBA context with a 24-bit
- * depth buffer, makes it current on a buffer of the requested size (filled
- * with a sentinel pattern, so an image GL never drew into is detected) and
- * opens the trace with rayglRecordOpen(). Returns 0, or the exit status the
- * program should return (2 bad usage, 1 failure) after printing why. */
+ * depth buffer and a 16-bit accumulation buffer, makes it current on a
+ * buffer of the requested size (filled with a sentinel pattern, so an image
+ * GL never drew into is detected) and opens the trace with
+ * rayglRecordOpen(). Returns 0, or the exit status the program should
+ * return (2 bad usage, 1 failure) after printing why. */
 int rgl_test_init(rgl_test *t, int argc, char **argv);
 
 /* Ends the frame (rayglFrameEnd), waits for GL, reads the image, checks that

@@ -22,8 +22,8 @@ static void display(float angle)
     glEnd();
     glutSolidTorus(0.25, 1, 8, 16);
     glIndexi(0);
-    glAccum(GL_LOAD, 1);
-    glAccum(GL_RETURN, 1);
+    glLogicOp(GL_XOR);
+    glLogicOp(GL_COPY);
     if (glUseProgram)
         glUseProgram(0);
     (void)glGetError(); /* a query: not counted */

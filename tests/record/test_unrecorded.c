@@ -31,7 +31,7 @@ static long name_index(const char *name)
 static void test_list(void)
 {
     static const char *const counted[] = {
-        "glIndexMask", "glIndexi", "glActiveTexture", "glAccum", "glutStrokeCharacter",
+        "glIndexMask", "glIndexi", "glActiveTexture", "glLogicOp", "glutStrokeCharacter",
         "glPixelMapfv", "glRenderMode", "glutBitmapCharacter", "glutBitmapString", "glClipPlane", "glStencilFunc",
         "glTexImage3D", "glUseProgram", "glUniform4fv", "glActiveTextureARB", "glMultiTexCoord2f",
         "glPolygonStipple", "gluNurbsSurface", "gluTessVertex", "gluBuild1DMipmaps", "glutInit",
@@ -59,8 +59,9 @@ static void test_list(void)
         if (i > 0)
             CHECKM(strcmp(rgl_unrecorded_names[i - 1], n) < 0, "%s out of order", n);
     }
-    /* GL 2.1 has 551 entry points, GLU 1.3 about 50, freeglut over 100. */
-    CHECKM(rgl_unrecorded_total > 600, "%u entry points", rgl_unrecorded_total);
+    /* GL 2.1 has 551 entry points, GLU 1.3 about 50, freeglut over 100,
+     * ARB/EXT aliases besides; commands.def records about 400 of them. */
+    CHECKM(rgl_unrecorded_total > 400, "%u entry points", rgl_unrecorded_total);
 }
 
 static size_t stub_calls(const char *name)
@@ -74,8 +75,8 @@ static size_t stub_calls(const char *name)
 static void *other_thread(void *arg)
 {
     (void)arg;
-    rayglAccum(GL_ADD, 0.5f);
-    rayglAccum(GL_ADD, 0.5f);
+    rayglLogicOp(GL_XOR);
+    rayglLogicOp(GL_XOR);
     rayglVertex2f(0, 0);
     rayglFrameEnd();
     return NULL;
@@ -110,12 +111,12 @@ static void test_trace(const char *dir)
     CHECK(rayglRecordStatus() == RAYGL_IDLE && access(path, F_OK) != 0);
     CHECK(rgl_tls_stream != NULL);
     CHECK(rayglRecordOpen(path) == 0);
-    rayglAccum(GL_LOAD, 1.0f);
-    rayglAccum(GL_ACCUM, 0.5f);
-    rayglAccum(GL_RETURN, 1.0f);
+    rayglLogicOp(GL_XOR);
+    rayglLogicOp(GL_AND);
+    rayglLogicOp(GL_COPY);
     rayglIndexi(3);
     rayglVertex3f(1, 2, 3);
-    CHECK(stub_calls("glAccum") == 3 && stub_calls("glIndexi") == 1 &&
+    CHECK(stub_calls("glLogicOp") == 3 && stub_calls("glIndexi") == 1 &&
           stub_calls("glutInit") == 1 && stub_calls("glVertex3f") == 1);
     CHECK(rayglRenderMode(GL_RENDER) == 0); /* the stub's answer, passed back */
     rayglFrameEnd();
@@ -150,8 +151,8 @@ static void test_trace(const char *dir)
 
     /* Not recording: forwarded, not counted, nothing breaks. */
     stub_reset();
-    rayglAccum(GL_LOAD, 1.0f);
-    CHECK(stub_calls("glAccum") == 1);
+    rayglLogicOp(GL_COPY);
+    CHECK(stub_calls("glLogicOp") == 1);
 
     rgl_reader *r = trace_open(path);
     if (!r)
@@ -160,8 +161,8 @@ static void test_trace(const char *dir)
     static const char *const want0[] = {
         "glVertex3f(x=1, y=2, z=3)",
         "rayglFrameEnd()",
-        "@NotRecorded(name=\"glAccum\", count=3)",
         "@NotRecorded(name=\"glIndexi\", count=1)",
+        "@NotRecorded(name=\"glLogicOp\", count=3)",
         "@NotRecorded(name=\"glRenderMode\", count=1)",
         "@NotRecorded(name=\"glutInit\", count=1)",
     };
@@ -187,7 +188,7 @@ static void test_trace(const char *dir)
     static const char *const want3[] = {
         "glVertex2f(x=0, y=0)",
         "rayglFrameEnd()",
-        "@NotRecorded(name=\"glAccum\", count=2)",
+        "@NotRecorded(name=\"glLogicOp\", count=2)",
     };
     check_frame(r, 3, want3, sizeof want3 / sizeof want3[0]);
     rgl_reader_destroy(r);

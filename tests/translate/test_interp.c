@@ -1374,6 +1374,164 @@ static void test_pixels_notes(void)
     }
 }
 
+/* ---- Accumulation buffer ---------------------------------------------------- */
+
+/* One accumulated pass: a triangle seen through a frustum moved by
+ * (pdx, pdy) pixels of 320 x 240 and an eye moved by (ex, ey) around a
+ * focus at 5, the triangle itself moved by mx. */
+static void accum_pass(seq *s, double pdx, double pdy, double ex, double ey, double mx)
+{
+    const double top = 0.36397023426620234, right = top * 320 / 240;
+    double dx = -(pdx * 2 * right / 320 + ex / 5), dy = -(pdy * 2 * top / 240 + ey / 5);
+    CMD(s, Clear, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    CMD(s, MatrixMode, GL_PROJECTION);
+    CMD0(s, LoadIdentity);
+    CMD(s, Frustum, -right + dx, right + dx, -top + dy, top + dy, 1, 30);
+    CMD(s, MatrixMode, GL_MODELVIEW);
+    CMD0(s, LoadIdentity);
+    CMD(s, Translatef, -ex, -ey, 0);
+    CMD(s, Translatef, mx, 0, 0);
+    CMD(s, Begin, GL_TRIANGLES);
+    CMD(s, Vertex3f, -1, -1, -5);
+    CMD(s, Vertex3f, 1, -1, -5);
+    CMD(s, Vertex3f, 0, 1, -6);
+    CMD0(s, End);
+    CMD(s, Accum, GL_ACCUM, 0.25);
+}
+
+static void test_accum(void)
+{
+    static const double jit[4][2] = {{-0.375, -0.125}, {-0.125, 0.375}, {0.125, -0.375},
+                                     {0.375, 0.125}};
+    /* Jittered projection: one copy, antialiasing, no note. */
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 320, 240);
+    for (int i = 0; i < 4; i++)
+        accum_pass(&s, jit[i][0], jit[i][1], 0, 0, 0);
+    CMD(&s, Accum, GL_RETURN, 1);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 1);
+    CHECK_EQ_U(sc.antialias_depth, 2);
+    CHECK(!sc.focal_blur);
+    CHECK_EQ_U(count(DIAG_NOTE_ACCUM_PASSES) + count(DIAG_NOTE_ACCUM_WEIGHTS), 0);
+    CHECK_EQ_U(count(DIAG_NOTE_PROJECTION), 0);
+    interp_destroy(ip);
+
+    /* The eye around a focal point at 5: one copy, focal blur. */
+    ip = fresh();
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 320, 240);
+    for (int i = 0; i < 4; i++)
+        accum_pass(&s, 0, 0, 0.1 * jit[i][0], 0.1 * jit[i][1], 0);
+    CMD(&s, Accum, GL_RETURN, 1);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 1);
+    CHECK_EQ_U(sc.antialias_depth, 0);
+    CHECK(sc.focal_blur);
+    CHECK_NEAR(sc.focal_point[2], -5, 1e-3);
+    CHECK(sc.aperture > 0.1 && sc.aperture < 0.12); /* 2 sqrt(2) x the eyes' rms spread, 0.0395 */
+    CHECK_EQ_U(count(DIAG_NOTE_ACCUM_PASSES), 0);
+    interp_destroy(ip);
+
+    /* The geometry moves (motion blur): one copy, the first pass, noted;
+     * weights adding up to 1/2 are noted too. A draw after GL_RETURN adds. */
+    ip = fresh();
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 320, 240);
+    for (int i = 0; i < 2; i++)
+        accum_pass(&s, 0, 0, 0, 0, 0.1 * i);
+    CMD(&s, Accum, GL_RETURN, 1);
+    CMD(&s, Begin, GL_TRIANGLES);
+    CMD(&s, Vertex3f, -1, -1, -5);
+    CMD(&s, Vertex3f, 1, -1, -5);
+    CMD(&s, Vertex3f, 0, 1, -6);
+    CMD0(&s, End);
+    CMD(&s, Accum, 0x1234, 1);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 2);
+    CHECK(sc.nverts >= 1 && sc.verts[0].pos[0] == -1);
+    CHECK_EQ_U(sc.antialias_depth, 0);
+    CHECK(!sc.focal_blur);
+    CHECK_EQ_U(count(DIAG_NOTE_ACCUM_PASSES), 1);
+    CHECK_EQ_U(count(DIAG_NOTE_ACCUM_WEIGHTS), 1);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 1);
+    interp_destroy(ip);
+}
+
+/* ---- Fog coordinates, secondary colour, colour control: said when used --------- */
+
+static void tri(seq *s)
+{
+    CMD(s, Begin, GL_TRIANGLES);
+    CMD(s, Vertex3f, -1, -1, -5);
+    CMD(s, Vertex3f, 1, -1, -5);
+    CMD(s, Vertex3f, 0, 1, -5);
+    CMD0(s, End);
+}
+
+static void test_secondary_notes(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Enable, GL_FOG);
+    tri(&s);
+    CMD(&s, Fogi, GL_FOG_COORD_SRC, 0x1234);
+    CMD(&s, Fogi, GL_FOG_COORD_SRC, GL_FOG_COORD);
+    tri(&s);
+    CMD(&s, Disable, GL_FOG);
+    tri(&s);
+    CMD(&s, Enable, GL_COLOR_SUM);
+    tri(&s);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 1);
+    CHECK_EQ_U(count(DIAG_NOTE_FOG_COORD), 1);
+    CHECK_EQ_U(count(DIAG_NOTE_COLOR_SUM), 1);
+    CHECK(interp_state(ip)->a.fog.coord_src == GL_FOG_COORD);
+    interp_destroy(ip);
+
+    /* The current values, kept (GL 1.x 2.7: integers normalised). */
+    ip = fresh();
+    seq_init(&s);
+    CMD(&s, SecondaryColor3ub, 255, 51, 0);
+    CMD(&s, FogCoordfEXT, 3.5);
+    run(ip, &s);
+    CHECK_NEAR(interp_state(ip)->a.current.secondary[0], 1, 1e-6);
+    CHECK_NEAR(interp_state(ip)->a.current.secondary[1], 0.2, 1e-6);
+    CHECK_NEAR(interp_state(ip)->a.current.fog_coord, 3.5, 0);
+    seq_init(&s);
+    CMD(&s, SecondaryColor3fvEXT, 0.25, 0.5, 0.75);
+    CMD(&s, FogCoorddv, -2);
+    run(ip, &s);
+    CHECK_NEAR(interp_state(ip)->a.current.secondary[2], 0.75, 0);
+    CHECK_NEAR(interp_state(ip)->a.current.fog_coord, -2, 0);
+    interp_destroy(ip);
+
+    /* Lit and textured: GL_SINGLE_COLOR (the default) is noted where the
+     * material has a highlight, GL_SEPARATE_SPECULAR_COLOR is not. */
+    for (int sep = 0; sep < 2; sep++) {
+        ip = fresh();
+        seq_init(&s);
+        CMD(&s, Enable, GL_LIGHTING);
+        CMD(&s, Enable, GL_TEXTURE_2D);
+        if (sep)
+            CMD(&s, LightModeli, GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
+        tri(&s); /* the default material has no highlight */
+        run(ip, &s);
+        CHECK_EQ_U(count(DIAG_NOTE_SINGLE_COLOR), 0);
+        seq_init(&s);
+        CMD(&s, Materialf, GL_FRONT, GL_SHININESS, 20);
+        CMD(&s, Materialfv, GL_FRONT, GL_SPECULAR, 0.5, 0.5, 0.5, 1.0);
+        tri(&s);
+        run(ip, &s);
+        CHECK_EQ_U(count(DIAG_NOTE_SINGLE_COLOR), sep ? 0 : 1);
+        CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 0);
+        interp_destroy(ip);
+    }
+}
+
 /* Pixels drawn before any geometry do not choose the camera; the image
  * then takes the camera's viewport, the same window pixels. */
 static void test_pixels_first(void)
@@ -1437,6 +1595,8 @@ int main(void)
     test_draw_pixels();
     test_pixels_notes();
     test_pixels_first();
+    test_accum();
+    test_secondary_notes();
     scene_finish(&sc);
     return CHECK_RESULT("test_interp");
 }
