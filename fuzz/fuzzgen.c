@@ -73,8 +73,8 @@ static void *xrealloc(void *p, size_t size)
 
 static void buf_reserve(buf *b, size_t extra)
 {
-    if (b->cap - b->n >= extra)
-        return;
+    if (b->p && b->cap - b->n >= extra)
+        return; /* never NULL after this: pointer arithmetic on NULL is undefined */
     size_t cap = b->cap ? b->cap : 64;
     while (cap - b->n < extra)
         cap *= 2;
