@@ -231,14 +231,17 @@ static bool group_matches(const interp *ip, const list_group *g, size_t m0, size
             !mat_close(&grel[k], &rel[k]))
             return false;
     }
-    const scene_tri *ta = s->tris + g->t0, *tb = s->tris + t0;
+    /* indexed, not s->tris + t0: the arrays are NULL while the scene has no
+     * triangles or vertices, and NULL + 0 is undefined */
     uint32_t ba = (uint32_t)g->v0, bb = (uint32_t)v0;
     for (size_t i = 0; i < g->nt; i++) {
-        if (ta[i].v[0] - ba != tb[i].v[0] - bb || ta[i].v[1] - ba != tb[i].v[1] - bb ||
-            ta[i].v[2] - ba != tb[i].v[2] - bb || ta[i].provoking - ba != tb[i].provoking - bb)
+        const scene_tri *ta = &s->tris[g->t0 + i], *tb = &s->tris[t0 + i];
+        if (ta->v[0] - ba != tb->v[0] - bb || ta->v[1] - ba != tb->v[1] - bb ||
+            ta->v[2] - ba != tb->v[2] - bb || ta->provoking - ba != tb->provoking - bb)
             return false;
     }
-    return memcmp(s->verts + g->v0, s->verts + v0, g->nv * sizeof *s->verts) == 0;
+    return g->nv == 0 ||
+           memcmp(&s->verts[g->v0], &s->verts[v0], g->nv * sizeof *s->verts) == 0;
 }
 
 /* Turns group g's meshes into a prototype placed by the group's first call. */

@@ -863,7 +863,8 @@ int interp_textures_copy(interp *dst, const interp *src)
         tr_free(t);
         return -1;
     }
-    memcpy(t->objs, s->objs, s->n * sizeof *t->objs);
+    if (s->n) /* objs is NULL for an empty table: memcpy(NULL, NULL, 0) is undefined */
+        memcpy(t->objs, s->objs, s->n * sizeof *t->objs);
     for (size_t i = 0; i < t->n; i++)
         if (t->objs[i].img)
             t->objs[i].img->refs++;
