@@ -184,6 +184,12 @@ RAYGL_API void rayglMap2d(GLenum target, GLdouble u1, GLdouble u2, GLint ustride
                           GLdouble v1, GLdouble v2, GLint vstride, GLint vorder,
                           const GLdouble *points);
 
+/* Render modes: glRenderMode returns GL's answer; the buffers are GL's to
+ * write and never read by RayGL. */
+RAYGL_API GLint rayglRenderMode(GLenum mode);
+RAYGL_API void rayglSelectBuffer(GLsizei size, GLuint *buffer);
+RAYGL_API void rayglFeedbackBuffer(GLsizei size, GLenum type, GLfloat *buffer);
+
 RAYGL_API GLUquadric *raygluNewQuadric(void);
 RAYGL_API void raygluDeleteQuadric(GLUquadric *quad);
 RAYGL_API void raygluQuadricDrawStyle(GLUquadric *quad, GLenum draw);

@@ -103,6 +103,8 @@ void interp_default_state(gl_state *st)
         a->eval.grid_n[d][0] = a->eval.grid_n[d][1] = 1;
         a->eval.grid[d][0][1] = a->eval.grid[d][1][1] = 1;
     }
+    st->render_mode = GL_RENDER;
+    st->select_size = st->feedback_size = -1;
     a->lighting.shade_model = GL_SMOOTH;
     for (int f = 0; f < 2; f++) {
         gl_material *m = &a->lighting.material[f];
@@ -559,6 +561,8 @@ void interp_popattrib(interp *ip, const rgl_cmd *cmd)
         a->texture = s->texture;
     if (m & GL_EVAL_BIT)
         a->eval = s->eval;
+    if (m & GL_SCISSOR_BIT)
+        a->scissor = s->scissor;
     for (int i = 0; i < INTERP_CAP_COUNT; i++)
         if ((m & GL_ENABLE_BIT) || (m & cap_groups[i]))
             a->caps[i] = s->caps[i];

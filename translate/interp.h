@@ -50,6 +50,7 @@
 #define INTERP_MAX_LIST_NESTING 64 /* GL_MAX_LIST_NESTING (GL 1.x table 6.28) */
 #define INTERP_MAX_TEXTURE_SIZE 16384 /* Mesa's GL_MAX_TEXTURE_SIZE */
 #define INTERP_MAX_EVAL_ORDER 30 /* Mesa's GL_MAX_EVAL_ORDER */
+#define INTERP_MAX_NAME_STACK 64 /* Mesa's GL_MAX_NAME_STACK_DEPTH */
 
 /* The frame budget (docs/mapping.md, "Bounds"): what one frame may cost,
  * display-list bodies and state snapshots included, so that a few hundred
@@ -155,6 +156,10 @@ typedef struct gl_attribs {
         int32_t grid_n[2][2];    /* [dimension - 1][u, v]: glMapGrid's partitions */
         double grid[2][2][2];    /* [dimension - 1][u, v][start, end] */
     } eval; /* GL_EVAL_BIT (the maps themselves are not attributes) */
+    struct {
+        int32_t box[4]; /* x, y, width, height */
+        bool set;       /* false: the initial box, the whole window */
+    } scissor; /* GL_SCISSOR_BIT */
 } gl_attribs;
 
 typedef struct gl_attrib_entry {
@@ -172,6 +177,11 @@ typedef struct gl_state {
     gl_attrib_entry attrib_stack[INTERP_ATTRIB_DEPTH];
     int attrib_depth;
     uint32_t list_base; /* glListBase (issue 5) */
+    /* Render mode and name stack (interp_select.c; not attributes). */
+    GLenum render_mode;
+    int32_t select_size, feedback_size; /* -1: no buffer given */
+    uint32_t names[INTERP_MAX_NAME_STACK];
+    int nnames;
 } gl_state;
 
 typedef struct interp interp;

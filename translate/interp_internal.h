@@ -274,6 +274,12 @@ bool interp_object_to_eye(const interp *ip, const mat4 *mv, const mat4 *proj,
 void interp_painter_apply(const interp *ip, uint32_t painter, mat4 *to_eye);
 #define INTERP_PAINTER_MAX 100000 /* painter counts no further */
 
+/* Whether draws reach the picture: the render mode is GL_RENDER (else
+ * a note says what is left out); and the look.names value of the current
+ * name stack for a draw (interp_select.c). */
+bool interp_render_mode_draws(interp *ip);
+uint32_t interp_names_for_draw(interp *ip);
+
 /* Closes an open glBegin without drawing it (interp_prim.c). */
 void interp_abort_begin(interp *ip);
 

@@ -292,7 +292,7 @@ static void begin_mode(interp *ip, GLenum mode)
     ip->in_begin = true;
     ip->prim_mode = mode;
     ip->prim_skip = true;
-    if (!ip->scene)
+    if (!ip->scene || !interp_render_mode_draws(ip))
         return;
     draw_notes(ip);
     interp_fix_camera(ip);
@@ -835,6 +835,7 @@ scene_look interp_current_look(interp *ip)
     if (look.lit && look.material < 0)
         look.lit = 0;
     look.texture = interp_texture_for_draw(ip);
+    look.names = interp_names_for_draw(ip);
     return look;
 }
 

@@ -150,7 +150,7 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
         interp_bad_value(ip, "glClear mask has unknown bits");
         return;
     }
-    if (!(mask & GL_COLOR_BUFFER_BIT) || !ip->scene)
+    if (!(mask & GL_COLOR_BUFFER_BIT) || !ip->scene || ip->st.render_mode != GL_RENDER)
         return;
     const gl_attribs *a = &ip->st.a;
     if (a->caps[INTERP_CAP_SCISSOR_TEST]) {

@@ -392,6 +392,8 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
     if (nt == 0 || (to_eye && !mat4_finite(to_eye)))
         return 0;
     vd->words = words;
+    if (sc)
+        povwrite_names(ob, sc, look->names);
 
     /* Vertices of a run sit in one stretch of the pool. */
     uint32_t lo = UINT32_MAX, hi = 0;

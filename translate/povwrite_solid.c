@@ -155,10 +155,26 @@ void povwrite_solid_declares(outbuf *ob, const scene *s)
     outbuf_puts(ob, "}\n");
 }
 
+void povwrite_names(outbuf *ob, const scene *s, uint32_t names)
+{
+    uint32_t n;
+    const uint32_t *v = scene_names(s, names, &n);
+    if (!v)
+        return;
+    outbuf_puts(ob, "// names:");
+    for (uint32_t i = 0; i < n; i++) {
+        outbuf_putc(ob, ' ');
+        outbuf_u64(ob, v[i]);
+    }
+    outbuf_putc(ob, '\n');
+}
+
 void povwrite_solids(outbuf *ob, const scene *s, const povlight *pl)
 {
-    for (size_t i = 0; i < s->nsolids; i++)
+    for (size_t i = 0; i < s->nsolids; i++) {
+        povwrite_names(ob, s, s->solids[i].look.names);
         write_solid(ob, &s->solids[i], pl);
+    }
 }
 
 bool povwrite_solid_anchor(const scene *s, float out[3])

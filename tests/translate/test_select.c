@@ -1,0 +1,242 @@
+/* test_select.c: render modes and the name stack (interp_select.c), and
+ * the scissor box (interp_scissor.c).
+ *
+ * Geometry and clears in GL_SELECT or GL_FEEDBACK mode leave the scene
+ * as it was; the calls GL rejects are rejected; each mesh and solid drawn
+ * in GL_RENDER mode carries the name stack of its draw, and the writer
+ * names it in the SDL.
+ */
+#include <GL/gl.h>
+#include <string.h>
+
+#include "check.h"
+#include "interp.h"
+#include "interp_internal.h"
+#include "outbuf.h"
+#include "povwrite.h"
+#include "tracegen.h"
+
+static scene sc;
+static diag_log dlog;
+
+static interp *fresh(void)
+{
+    scene_reset(&sc);
+    diag_clear(&dlog);
+    interp *ip = interp_create(&sc, &dlog);
+    interp_begin_frame(ip);
+    return ip;
+}
+
+static void run(interp *ip, seq *s)
+{
+    rgl_error err;
+    CHECK(interp_run(ip, s->data, s->len, 0, &err) == RGL_OK);
+    seq_free(s);
+}
+
+static uint64_t count(diag_kind k) { return dlog.e[k].count; }
+
+static void triangle(seq *s)
+{
+    CMD(s, Begin, GL_TRIANGLES);
+    CMD(s, Vertex2f, 0, 0);
+    CMD(s, Vertex2f, 0.5f, 0);
+    CMD(s, Vertex2f, 0, 0.5f);
+    CMD0(s, End);
+}
+
+static bool names_are(uint32_t id, const uint32_t *want, uint32_t n)
+{
+    uint32_t got;
+    const uint32_t *v = scene_names(&sc, id, &got);
+    if (n == 0)
+        return v == NULL && got == 0;
+    return v && got == n && memcmp(v, want, n * sizeof *v) == 0;
+}
+
+static char sdl[1 << 16];
+static size_t nsdl;
+
+static int keep(void *user, const char *p, size_t n)
+{
+    (void)user;
+    if (nsdl + n >= sizeof sdl)
+        return -1;
+    memcpy(sdl + nsdl, p, n);
+    nsdl += n;
+    sdl[nsdl] = 0;
+    return 0;
+}
+
+/* A picking pass, then the real draw: only the real draw is in the scene,
+ * a clear in GL_SELECT mode clears nothing, and the camera is the real
+ * draw's (not the pick matrix's). */
+static void test_select_pass(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, ClearColor, 0, 0, 1, 1);
+    CMD(&s, Clear, GL_COLOR_BUFFER_BIT);
+    CMD(&s, SelectBuffer, 64);
+    CMD(&s, RenderMode, GL_SELECT, 0);
+    CMD0(&s, InitNames);
+    CMD(&s, PushName, 3);
+    CMD(&s, ClearColor, 1, 0, 0, 1);
+    CMD(&s, Clear, GL_COLOR_BUFFER_BIT);
+    CMD(&s, MatrixMode, GL_PROJECTION);
+    CMD(&s, Scalef, 50, 50, 1); /* a pick matrix */
+    CMD(&s, MatrixMode, GL_MODELVIEW);
+    triangle(&s);
+    CMD(&s, SolidSphere, 0.5, 8, 8);
+    CMD(&s, RenderMode, GL_RENDER, 1);
+    CMD(&s, MatrixMode, GL_PROJECTION);
+    CMD0(&s, LoadIdentity);
+    CMD(&s, MatrixMode, GL_MODELVIEW);
+    run(ip, &s);
+    CHECK_EQ_U(sc.nverts + sc.ntris + sc.nsolids + sc.nlines + sc.npoints, 0);
+    CHECK(sc.background[2] == 1 && sc.background[0] == 0);
+    CHECK_EQ_U(count(DIAG_NOTE_RENDER_MODE), 1);
+    /* Leaving GL_SELECT empties the stack. */
+    CHECK_EQ_U(interp_state(ip)->nnames, 0);
+
+    seq_init(&s);
+    triangle(&s);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 1);
+    CHECK(sc.have_camera && sc.camera.right[0] > 1.5); /* identity: 2 wide, not 2/50 */
+    CHECK_EQ_U(sc.meshes[0].look.names, 0);
+    /* GL_FEEDBACK draws nothing either. */
+    seq_init(&s);
+    CMD(&s, FeedbackBuffer, 100, GL_3D);
+    CMD(&s, RenderMode, GL_FEEDBACK, 0);
+    CMD(&s, PassThrough, 1.5f);
+    CMD(&s, Translatef, 1, 0, 0);
+    triangle(&s);
+    CMD(&s, RenderMode, GL_RENDER, 12);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 1);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_OPERATION) + count(DIAG_GL_INVALID_ENUM), 0);
+    interp_destroy(ip);
+}
+
+/* Names in the render pass label what is drawn; a change of the stack
+ * starts a new mesh, and the SDL says the names. */
+static void test_names(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Enable, GL_DEPTH_TEST); /* draws in one plane stay in one run */
+    CMD0(&s, InitNames);
+    CMD(&s, PushName, 1);
+    CMD(&s, PushName, 4);
+    triangle(&s);
+    triangle(&s); /* same names: the same mesh */
+    CMD(&s, LoadName, 5);
+    triangle(&s);
+    CMD0(&s, PopName);
+    CMD0(&s, PopName);
+    triangle(&s);
+    CMD0(&s, PopName); /* ignored outside GL_SELECT, as GL does */
+    CMD(&s, LoadName, 9);
+    CMD(&s, PushName, 7);
+    CMD(&s, SolidSphere, 0.25, 8, 8);
+    run(ip, &s);
+    interp_end_frame(ip);
+    CHECK_EQ_U(count(DIAG_GL_STACK_UNDERFLOW) + count(DIAG_GL_INVALID_OPERATION), 0);
+    CHECK_EQ_U(sc.nmeshes, 3);
+    CHECK_EQ_U(sc.ntris, 4);
+    static const uint32_t n14[] = {1, 4}, n15[] = {1, 5}, n7[] = {7};
+    if (sc.nmeshes == 3) {
+        CHECK(sc.meshes[0].tri_count == 2 && names_are(sc.meshes[0].look.names, n14, 2));
+        CHECK(names_are(sc.meshes[1].look.names, n15, 2));
+        CHECK(names_are(sc.meshes[2].look.names, NULL, 0));
+    }
+    CHECK_EQ_U(sc.nsolids, 1);
+    if (sc.nsolids == 1)
+        CHECK(names_are(sc.solids[0].look.names, n7, 1));
+
+    povwriter *w = povwriter_create();
+    outbuf ob;
+    nsdl = 0;
+    CHECK(w != NULL && outbuf_init(&ob, 1 << 12, keep, NULL) == 0);
+    CHECK(povwriter_scene(w, &ob, &sc, NULL) == 0);
+    CHECK(outbuf_flush(&ob) == 0);
+    const char *a = strstr(sdl, "// names: 1 4\n"), *b = strstr(sdl, "// names: 1 5\n");
+    const char *c = strstr(sdl, "// names: 7\n");
+    CHECK(a && b && c && a < b);
+    CHECK(a && strstr(a, "mesh2") != NULL);
+    CHECK(c && strncmp(c + strlen("// names: 7\n"), "sphere", 6) == 0);
+    outbuf_finish(&ob);
+    povwriter_destroy(w);
+    interp_destroy(ip);
+}
+
+/* What GL rejects: enums, a mode without its buffer, buffers changed in
+ * their own mode, stack limits in GL_SELECT mode, glScissor sizes. */
+static void test_rejected(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, RenderMode, GL_SELECT, 0);   /* no select buffer */
+    CMD(&s, RenderMode, GL_FEEDBACK, 0); /* no feedback buffer */
+    CMD(&s, SelectBuffer, 0);
+    CMD(&s, RenderMode, GL_SELECT, 0);   /* a buffer of size 0: none (Mesa) */
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_OPERATION), 3);
+    CHECK(interp_state(ip)->render_mode == GL_RENDER);
+
+    seq_init(&s);
+    CMD(&s, RenderMode, 0x1234, 0);
+    CMD(&s, FeedbackBuffer, 10, 0x1234);
+    CMD(&s, SelectBuffer, -1);
+    CMD(&s, Scissor, 0, 0, -1, 4);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 2);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_VALUE), 2);
+    CHECK(!interp_state(ip)->a.scissor.set);
+
+    diag_clear(&dlog);
+    seq_init(&s);
+    CMD(&s, SelectBuffer, 16);
+    CMD(&s, RenderMode, GL_SELECT, 0);
+    CMD(&s, SelectBuffer, 16);  /* in GL_SELECT mode */
+    CMD0(&s, PopName);          /* underflow */
+    CMD(&s, LoadName, 2);       /* empty stack */
+    for (int i = 0; i < INTERP_MAX_NAME_STACK + 1; i++)
+        CMD(&s, PushName, (uint32_t)i);
+    CMD(&s, Begin, GL_POINTS);
+    CMD(&s, PushName, 1);       /* not between glBegin and glEnd */
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_OPERATION), 3);
+    CHECK_EQ_U(count(DIAG_GL_STACK_UNDERFLOW), 1);
+    CHECK_EQ_U(count(DIAG_GL_STACK_OVERFLOW), 1);
+    CHECK_EQ_U(interp_state(ip)->nnames, INTERP_MAX_NAME_STACK);
+
+    /* glScissor is an attribute (GL_SCISSOR_BIT). */
+    seq_init(&s);
+    CMD(&s, RenderMode, GL_RENDER, 0);
+    CMD(&s, Scissor, 1, 2, 3, 4);
+    CMD(&s, PushAttrib, GL_SCISSOR_BIT);
+    CMD(&s, Scissor, 5, 6, 7, 8);
+    CMD0(&s, PopAttrib);
+    run(ip, &s);
+    const int32_t *box = interp_state(ip)->a.scissor.box;
+    CHECK(interp_state(ip)->a.scissor.set && box[0] == 1 && box[1] == 2 && box[2] == 3 &&
+          box[3] == 4);
+    interp_destroy(ip);
+}
+
+int main(void)
+{
+    scene_init(&sc);
+    test_select_pass();
+    test_names();
+    test_rejected();
+    scene_finish(&sc);
+    return CHECK_RESULT("test_select");
+}
