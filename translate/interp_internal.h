@@ -62,6 +62,14 @@ struct interp {
 #define INTERP_MISSING_KEPT 16
     uint64_t missing_hash[INTERP_MISSING_KEPT]; /* of the first parts' texts */
 
+    /* The frame's scissored clears since its last full one (interp_scissor.c). */
+#define INTERP_CLEAR_RECTS 64
+    struct interp_clear_rect {
+        int32_t box[4];
+        float color[4];
+    } clear_rects[INTERP_CLEAR_RECTS];
+    uint32_t nclear_rects;
+
     /* glBegin .. glEnd */
     bool in_begin;
     GLenum prim_mode;
@@ -279,6 +287,16 @@ void interp_painter_apply(const interp *ip, uint32_t painter, mat4 *to_eye);
  * name stack for a draw (interp_select.c). */
 bool interp_render_mode_draws(interp *ip);
 uint32_t interp_names_for_draw(interp *ip);
+
+/* The scissor test (interp_scissor.c). interp_scissor_cuts: it is on and
+ * its box leaves out part of viewport vp. interp_scissor_clear: a glClear
+ * of the colour buffer with the scissor test on; false when the box holds
+ * the whole viewport (the caller clears everything), else it keeps the box
+ * for interp_scissor_end_frame, which adds the boxes to the scene once the
+ * frame's camera is fixed. */
+bool interp_scissor_cuts(const interp *ip, const int32_t vp[4]);
+bool interp_scissor_clear(interp *ip);
+void interp_scissor_end_frame(interp *ip);
 
 /* Closes an open glBegin without drawing it (interp_prim.c). */
 void interp_abort_begin(interp *ip);

@@ -82,7 +82,7 @@ static void draw_notes(interp *ip)
         interp_note(ip, DIAG_NOTE_TEXTURE);
     if (c[INTERP_CAP_LINE_STIPPLE] || c[INTERP_CAP_POLYGON_STIPPLE])
         interp_note(ip, DIAG_NOTE_STIPPLE);
-    if (c[INTERP_CAP_SCISSOR_TEST])
+    if (interp_scissor_cuts(ip, a->viewport.rect))
         interp_note(ip, DIAG_NOTE_SCISSOR);
     if (c[INTERP_CAP_STENCIL_TEST])
         interp_note(ip, DIAG_NOTE_STENCIL);

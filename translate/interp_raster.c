@@ -54,6 +54,7 @@ void interp_begin_frame(interp *ip)
     ip->cleared = false;
     ip->painter = 0;
     ip->shape_facets = 0;
+    ip->nclear_rects = 0;
     unrec_clear(&ip->unrecorded);
     interp_bounds_begin_frame(ip);
     if (ip->scene)
@@ -73,6 +74,7 @@ void interp_end_frame(interp *ip)
     if (!s)
         return;
     interp_fix_camera(ip);
+    interp_scissor_end_frame(ip);
     if (!ip->cleared)
         for (int i = 0; i < 4; i++)
             s->background[i] = clamp01(ip->st.a.color_buffer.clear[i]);
@@ -153,12 +155,11 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
     if (!(mask & GL_COLOR_BUFFER_BIT) || !ip->scene || ip->st.render_mode != GL_RENDER)
         return;
     const gl_attribs *a = &ip->st.a;
-    if (a->caps[INTERP_CAP_SCISSOR_TEST]) {
-        interp_note(ip, DIAG_NOTE_SCISSOR); /* a partial clear: keep what is drawn */
-        return;
-    }
+    if (a->caps[INTERP_CAP_SCISSOR_TEST] && interp_scissor_clear(ip))
+        return; /* a partial clear: what is drawn stays */
     /* Everything drawn so far is gone; the next draw fixes the camera anew. */
     scene_clear_geometry(ip->scene);
+    ip->nclear_rects = 0;
     ip->camera_fixed = false;
     ip->cleared = true;
     ip->painter = 0;

@@ -231,12 +231,66 @@ static void test_rejected(void)
     interp_destroy(ip);
 }
 
+/* A scissored clear: a box of the clear colour behind what is drawn,
+ * through the frame's camera; a box that holds the viewport clears all;
+ * geometry scissored by a box that cuts the viewport is noted. */
+static void test_scissor_clear(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 200, 100);
+    CMD(&s, Enable, GL_SCISSOR_TEST);
+    CMD(&s, ClearColor, 1, 0, 0, 1);
+    CMD(&s, Clear, GL_COLOR_BUFFER_BIT);   /* unset box: the whole window */
+    CMD(&s, Scissor, -10, -10, 400, 300);
+    CMD(&s, ClearColor, 0, 1, 0, 1);
+    CMD(&s, Clear, GL_COLOR_BUFFER_BIT);   /* holds the viewport: all */
+    CMD(&s, Scissor, 50, 0, 100, 50);
+    CMD(&s, ClearColor, 0, 0, 1, 1);
+    CMD(&s, Clear, GL_COLOR_BUFFER_BIT);   /* a box */
+    CMD(&s, Scissor, 150, 50, 100, 100);   /* half outside the viewport */
+    CMD(&s, Clear, GL_COLOR_BUFFER_BIT);
+    run(ip, &s);
+    CHECK(sc.background[1] == 1 && sc.background[2] == 0);
+    CHECK_EQ_U(count(DIAG_NOTE_SCISSOR) + count(DIAG_NOTE_SCISSOR_CLEAR), 0);
+    CHECK_EQ_U(sc.ntris, 0); /* placed at the frame's end */
+    seq_init(&s);
+    CMD(&s, Disable, GL_SCISSOR_TEST);
+    triangle(&s);
+    CMD(&s, Enable, GL_SCISSOR_TEST);
+    triangle(&s); /* scissored: noted */
+    CMD(&s, Clear, GL_COLOR_BUFFER_BIT); /* after a draw: noted */
+    run(ip, &s);
+    interp_end_frame(ip);
+    CHECK_EQ_U(count(DIAG_NOTE_SCISSOR), 1);
+    CHECK_EQ_U(count(DIAG_NOTE_SCISSOR_CLEAR), 1);
+    CHECK_EQ_U(sc.nmeshes, 3); /* two draws (painter), the boxes */
+    CHECK_EQ_U(sc.ntris, 2 + 2 * 3);
+    if (sc.nmeshes == 3) {
+        const scene_mesh *m = &sc.meshes[2];
+        CHECK(m->in_eye && !m->look.lit && m->tri_count == 6);
+        /* Identity projection, viewport 200 x 100: window x 50 is NDC
+         * -0.5, y 0 is -1; z just inside the far plane (eye z = ndc z). */
+        const scene_vertex *v = &sc.verts[sc.tris[m->first_tri].v[0]];
+        CHECK_NEAR(v->pos[0], -0.5, 1e-6);
+        CHECK_NEAR(v->pos[1], -1, 1e-6);
+        CHECK(v->pos[2] > 0.99999 && v->pos[2] < 1);
+        CHECK(v->color[2] == 1 && v->color[0] == 0);
+        const scene_vertex *c = &sc.verts[sc.tris[m->first_tri + 2].v[2]];
+        CHECK_NEAR(c->pos[0], 1, 1e-6); /* x 150 .. 250 cut at 200 */
+        CHECK_NEAR(c->pos[1], 1, 1e-6);
+    }
+    interp_destroy(ip);
+}
+
 int main(void)
 {
     scene_init(&sc);
     test_select_pass();
     test_names();
     test_rejected();
+    test_scissor_clear();
     scene_finish(&sc);
     return CHECK_RESULT("test_select");
 }
