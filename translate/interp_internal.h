@@ -295,6 +295,10 @@ uint32_t interp_names_for_draw(interp *ip);
  * for interp_scissor_end_frame, which adds the boxes to the scene once the
  * frame's camera is fixed. */
 bool interp_scissor_cuts(const interp *ip, const int32_t vp[4]);
+/* With the camera fixed: whether the box leaves nothing of the picture
+ * (a draw then draws nothing); and look's scissor fields for a draw now. */
+bool interp_scissor_hides(const interp *ip);
+void interp_scissor_look(const interp *ip, scene_look *look);
 bool interp_scissor_clear(interp *ip);
 void interp_scissor_end_frame(interp *ip);
 

@@ -82,8 +82,8 @@ static void draw_notes(interp *ip)
         interp_note(ip, DIAG_NOTE_TEXTURE);
     if (c[INTERP_CAP_LINE_STIPPLE] || c[INTERP_CAP_POLYGON_STIPPLE])
         interp_note(ip, DIAG_NOTE_STIPPLE);
-    if (interp_scissor_cuts(ip, a->viewport.rect))
-        interp_note(ip, DIAG_NOTE_SCISSOR);
+    if (interp_scissor_cuts(ip, a->viewport.rect) && ip->prim_mode <= GL_LINE_STRIP)
+        interp_note(ip, DIAG_NOTE_SCISSOR); /* lines and points: drawn whole */
     if (c[INTERP_CAP_STENCIL_TEST])
         interp_note(ip, DIAG_NOTE_STENCIL);
     for (int i = 0; i < 6; i++)
@@ -296,7 +296,7 @@ static void begin_mode(interp *ip, GLenum mode)
         return;
     draw_notes(ip);
     interp_fix_camera(ip);
-    if (!setup_transform(ip))
+    if (interp_scissor_hides(ip) || !setup_transform(ip))
         return;
     ip->prim_skip = false;
     ip->prim_first = ip->scene->nverts;
@@ -836,6 +836,7 @@ scene_look interp_current_look(interp *ip)
         look.lit = 0;
     look.texture = interp_texture_for_draw(ip);
     look.names = interp_names_for_draw(ip);
+    interp_scissor_look(ip, &look);
     return look;
 }
 

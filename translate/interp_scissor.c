@@ -13,6 +13,11 @@
  * the frame's end, through the frame's camera (which the first draw may
  * fix after the clear). What was drawn before a scissored clear inside its
  * box stays (GL erases it): a note says so.
+ *
+ * Scissored triangles and solids carry the box (in the camera's image) in
+ * their look; the writer clips them to it exactly (clipped_by planes
+ * through the camera's rays along the box's edges). Lines and points are
+ * drawn whole, with a note.
  */
 #include "interp_internal.h"
 
@@ -42,6 +47,28 @@ bool interp_scissor_cuts(const interp *ip, const int32_t vp[4])
     return !((int64_t)b[0] <= vp[0] && (int64_t)b[1] <= vp[1] &&
              (int64_t)b[0] + b[2] >= (int64_t)vp[0] + vp[2] &&
              (int64_t)b[1] + b[3] >= (int64_t)vp[1] + vp[3]);
+}
+
+bool interp_scissor_hides(const interp *ip)
+{
+    if (!interp_scissor_cuts(ip, ip->cam_viewport))
+        return false;
+    const int32_t *b = ip->st.a.scissor.box, *vp = ip->cam_viewport;
+    return b[2] == 0 || b[3] == 0 || (int64_t)b[0] + b[2] <= vp[0] ||
+           (int64_t)b[1] + b[3] <= vp[1] || (int64_t)b[0] >= (int64_t)vp[0] + vp[2] ||
+           (int64_t)b[1] >= (int64_t)vp[1] + vp[3];
+}
+
+void interp_scissor_look(const interp *ip, scene_look *look)
+{
+    if (!interp_scissor_cuts(ip, ip->cam_viewport))
+        return;
+    const int32_t *b = ip->st.a.scissor.box;
+    look->scissored = 1;
+    look->scissor[0] = (int32_t)((int64_t)b[0] - ip->cam_viewport[0]);
+    look->scissor[1] = (int32_t)((int64_t)b[1] - ip->cam_viewport[1]);
+    look->scissor[2] = b[2];
+    look->scissor[3] = b[3];
 }
 
 bool interp_scissor_clear(interp *ip)

@@ -763,6 +763,8 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
     }
     if (to_eye)
         put_matrix(ob, to_eye);
+    if (sc && !w->in_proto)
+        povwrite_scissor(ob, sc, look); /* after the matrix: in eye space */
     if (w->mesh_no_shadow)
         outbuf_puts(ob, "no_shadow\n");
     outbuf_puts(ob, "}\n");

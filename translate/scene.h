@@ -58,10 +58,13 @@ typedef struct scene_look {
     uint8_t flat;      /* GL_FLAT: one colour per face, the provoking vertex's */
     uint8_t blend;     /* SCENE_BLEND_*: how the colour behind shows through */
     uint8_t fog;       /* GL_FOG was on */
+    uint8_t scissored, pad_[3]; /* the scissor test cut it to `scissor` */
     int32_t material;  /* index into scene.materials when lit, else -1 */
     int32_t texture;   /* index into scene.textures, -1 for none (issue 5) */
     uint32_t names;    /* the name stack (glPushName) it was drawn under: 1 +
                           its place in scene.names (scene_names), 0: empty */
+    int32_t scissor[4]; /* x, y, width, height in pixels of the camera's
+                           image (origin at its lower left), when scissored */
 } scene_look;
 
 /* A run of triangles sharing transform and look: one mesh2 in SDL. */

@@ -7,6 +7,7 @@
  * names it in the SDL.
  */
 #include <GL/gl.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "check.h"
@@ -233,7 +234,7 @@ static void test_rejected(void)
 
 /* A scissored clear: a box of the clear colour behind what is drawn,
  * through the frame's camera; a box that holds the viewport clears all;
- * geometry scissored by a box that cuts the viewport is noted. */
+ * triangles a box cuts carry it, lines are noted. */
 static void test_scissor_clear(void)
 {
     interp *ip = fresh();
@@ -259,7 +260,11 @@ static void test_scissor_clear(void)
     CMD(&s, Disable, GL_SCISSOR_TEST);
     triangle(&s);
     CMD(&s, Enable, GL_SCISSOR_TEST);
-    triangle(&s); /* scissored: noted */
+    triangle(&s); /* scissored: clipped by the writer */
+    CMD(&s, Begin, GL_LINES); /* scissored lines: drawn whole, noted */
+    CMD(&s, Vertex2f, 0, 0);
+    CMD(&s, Vertex2f, 1, 1);
+    CMD0(&s, End);
     CMD(&s, Clear, GL_COLOR_BUFFER_BIT); /* after a draw: noted */
     run(ip, &s);
     interp_end_frame(ip);
@@ -268,6 +273,10 @@ static void test_scissor_clear(void)
     CHECK_EQ_U(sc.nmeshes, 3); /* two draws (painter), the boxes */
     CHECK_EQ_U(sc.ntris, 2 + 2 * 3);
     if (sc.nmeshes == 3) {
+        const scene_look *l0 = &sc.meshes[0].look, *l1 = &sc.meshes[1].look;
+        CHECK(!l0->scissored && l1->scissored);
+        CHECK(l1->scissor[0] == 150 && l1->scissor[1] == 50 && l1->scissor[2] == 100 &&
+              l1->scissor[3] == 100);
         const scene_mesh *m = &sc.meshes[2];
         CHECK(m->in_eye && !m->look.lit && m->tri_count == 6);
         /* Identity projection, viewport 200 x 100: window x 50 is NDC
@@ -281,6 +290,22 @@ static void test_scissor_clear(void)
         CHECK_NEAR(c->pos[0], 1, 1e-6); /* x 150 .. 250 cut at 200 */
         CHECK_NEAR(c->pos[1], 1, 1e-6);
     }
+    /* The writer clips the scissored run to x > 0.5, y > 0 (the box from
+     * window 150, 50 in the identity camera's 200 x 100 image). */
+    povwriter *w = povwriter_create();
+    outbuf ob;
+    nsdl = 0;
+    CHECK(w != NULL && outbuf_init(&ob, 1 << 12, keep, NULL) == 0);
+    CHECK(povwriter_scene(w, &ob, &sc, NULL) == 0);
+    CHECK(outbuf_flush(&ob) == 0);
+    const char *clip = strstr(sdl, "clipped_by{plane{<-1,0,0>,-0.5}plane{<1,0,0>,1.5}"
+                                   "plane{<0,-1,0>,0}plane{<0,1,0>,2}}");
+    CHECK(clip != NULL);
+    if (!clip)
+        fprintf(stderr, "%s\n", sdl);
+    CHECK(clip && !strstr(clip + 1, "clipped_by{plane{<-1"));
+    outbuf_finish(&ob);
+    povwriter_destroy(w);
     interp_destroy(ip);
 }
 
