@@ -63,13 +63,12 @@ void interp_rendermode(interp *ip, const rgl_cmd *cmd)
         interp_bad_enum(ip, "render mode", mode);
         return;
     }
-    /* Mesa asks for a buffer of a size above 0 before the mode starts. */
+    /* Without a buffer of a size above 0 Mesa reports GL_INVALID_OPERATION
+     * and still enters the mode (checked with OSMesa): nothing is drawn. */
     if ((mode == GL_SELECT && st->select_size <= 0) ||
-        (mode == GL_FEEDBACK && st->feedback_size <= 0)) {
+        (mode == GL_FEEDBACK && st->feedback_size <= 0))
         interp_bad_op(ip, mode == GL_SELECT ? "GL_SELECT mode without glSelectBuffer"
                                             : "GL_FEEDBACK mode without glFeedbackBuffer");
-        return;
-    }
     if (st->render_mode == GL_SELECT)
         st->nnames = 0;
     st->render_mode = mode;

@@ -181,13 +181,20 @@ static void test_rejected(void)
 {
     interp *ip = fresh();
     seq s;
+    /* Without a buffer Mesa reports an error and enters the mode all the
+     * same (OSMesa: GL_RENDER_MODE reads GL_SELECT after it). */
     seq_init(&s);
     CMD(&s, RenderMode, GL_SELECT, 0);   /* no select buffer */
+    triangle(&s);
+    CMD(&s, RenderMode, GL_RENDER, 0);
     CMD(&s, RenderMode, GL_FEEDBACK, 0); /* no feedback buffer */
+    CMD(&s, RenderMode, GL_RENDER, 0);
     CMD(&s, SelectBuffer, 0);
     CMD(&s, RenderMode, GL_SELECT, 0);   /* a buffer of size 0: none (Mesa) */
+    CMD(&s, RenderMode, GL_RENDER, 0);
     run(ip, &s);
     CHECK_EQ_U(count(DIAG_GL_INVALID_OPERATION), 3);
+    CHECK_EQ_U(sc.ntris, 0);
     CHECK(interp_state(ip)->render_mode == GL_RENDER);
 
     seq_init(&s);
