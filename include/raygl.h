@@ -184,6 +184,11 @@ RAYGL_API void rayglMap2d(GLenum target, GLdouble u1, GLdouble u2, GLint ustride
                           GLdouble v1, GLdouble v2, GLint vstride, GLint vorder,
                           const GLdouble *points);
 
+/* glEnable / glDisable: the client arrays (GL_VERTEX_ARRAY, ...), which
+ * Mesa takes there as glEnableClientState does, are recorded as that. */
+RAYGL_API void rayglEnable(GLenum cap);
+RAYGL_API void rayglDisable(GLenum cap);
+
 /* Render modes: glRenderMode returns GL's answer; the buffers are GL's to
  * write and never read by RayGL. */
 RAYGL_API GLint rayglRenderMode(GLenum mode);

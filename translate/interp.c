@@ -492,6 +492,13 @@ static void set_cap(interp *ip, const rgl_cmd *cmd, bool on)
 {
     GLenum cap = arg_enum(cmd, 0);
     int i = interp_cap_index(cap);
+    /* Mesa's compatibility context takes the client arrays here, as
+     * glEnableClientState (checked with OSMesa); the recorder records them
+     * as that, and the draws' @ArrayData carry what they enable. */
+    if (i < 0 && (cap == GL_VERTEX_ARRAY || cap == GL_NORMAL_ARRAY || cap == GL_COLOR_ARRAY ||
+                  cap == GL_INDEX_ARRAY || cap == GL_TEXTURE_COORD_ARRAY ||
+                  cap == GL_EDGE_FLAG_ARRAY))
+        return;
     if (i < 0) {
         interp_bad_enum(ip, "capability", cap);
         return;

@@ -52,6 +52,15 @@
 #define INTERP_MAX_EVAL_ORDER 30 /* Mesa's GL_MAX_EVAL_ORDER */
 #define INTERP_MAX_NAME_STACK 64 /* Mesa's GL_MAX_NAME_STACK_DEPTH */
 
+/* Mesa's GL_MAX_CLIP_PLANES is 8; GL names the planes past 5 only as
+ * GL_CLIP_PLANE0 + i. */
+#ifndef GL_CLIP_PLANE6
+#define GL_CLIP_PLANE6 (GL_CLIP_PLANE0 + 6)
+#endif
+#ifndef GL_CLIP_PLANE7
+#define GL_CLIP_PLANE7 (GL_CLIP_PLANE0 + 7)
+#endif
+
 /* The frame budget (docs/mapping.md, "Bounds"): what one frame may cost,
  * display-list bodies and state snapshots included, so that a few hundred
  * bytes (a list that calls itself twice) cannot ask for unbounded time or

@@ -86,7 +86,7 @@ static void draw_notes(interp *ip)
         interp_note(ip, DIAG_NOTE_SCISSOR); /* lines and points: drawn whole */
     if (c[INTERP_CAP_STENCIL_TEST])
         interp_note(ip, DIAG_NOTE_STENCIL);
-    for (int i = 0; i < 6; i++)
+    for (int i = 0; i < 8; i++)
         if (c[INTERP_CAP_CLIP_PLANE0 + i])
             interp_note(ip, DIAG_NOTE_CLIP_PLANE);
     if (c[INTERP_CAP_COLOR_LOGIC_OP] || !a->color_buffer.mask[0] || !a->color_buffer.mask[1] ||

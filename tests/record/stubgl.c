@@ -425,3 +425,5 @@ void glFeedbackBuffer(GLsizei size, GLenum type, GLfloat *buffer)
     LOGV("glFeedbackBuffer", size, type);
     arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], buffer);
 }
+void glEnable(GLenum cap) { LOGV("glEnable", cap); }
+void glDisable(GLenum cap) { LOGV("glDisable", cap); }

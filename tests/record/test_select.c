@@ -5,7 +5,8 @@
  * it; the buffers are forwarded, their pointers never recorded nor read;
  * calls GL rejects for their enum or size, and calls inside glBegin/glEnd,
  * are forwarded unrecorded; none of the three goes into a display list
- * being compiled.
+ * being compiled. glEnable of a client array is recorded as
+ * glEnableClientState.
  */
 #include <stdio.h>
 #include <string.h>
@@ -52,7 +53,14 @@ void test_select(const char *dir)
     rayglSelectBuffer(4, sel);
     rayglPushName(9);
     rayglEndList();
-    CHECKM(stub_nlog == 20, "%zu calls forwarded", stub_nlog);
+    /* glEnable of a client array: forwarded as glEnable, recorded as
+     * glEnableClientState (Mesa takes it so); other caps as they are. */
+    rayglEnable(GL_VERTEX_ARRAY);
+    rayglDisable(GL_COLOR_ARRAY);
+    rayglEnable(GL_LIGHTING);
+    CHECKM(stub_nlog == 23, "%zu calls forwarded", stub_nlog);
+    CHECK(strcmp(stub_log[20].name, "glEnable") == 0 && stub_log[20].v[0] == GL_VERTEX_ARRAY);
+    CHECK(strcmp(stub_log[21].name, "glDisable") == 0 && stub_log[22].v[0] == GL_LIGHTING);
     stub_render_mode_result = 0;
     rayglFrameEnd();
     rayglRecordClose();
@@ -71,6 +79,10 @@ void test_select(const char *dir)
         CHECK(trace_cmds_count(&c, RGL_OP_PopName) == 1);
         CHECK(trace_cmds_count(&c, RGL_OP_PassThrough) == 1);
         CHECK(trace_cmds_count(&c, RGL_OP_Scissor) == 1);
+        CHECK(trace_cmds_count(&c, RGL_OP_EnableClientState) == 1);
+        CHECK(trace_cmds_count(&c, RGL_OP_DisableClientState) == 1);
+        CHECK(trace_cmds_count(&c, RGL_OP_Enable) == 1);
+        CHECK(trace_cmds_count(&c, RGL_OP_Disable) == 0);
         /* glRenderMode(GL_RENDER) carries GL's 5. */
         bool found = false;
         for (size_t i = 0; i < c.count; i++)

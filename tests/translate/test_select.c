@@ -225,9 +225,24 @@ static void test_rejected(void)
     CHECK_EQ_U(count(DIAG_GL_STACK_OVERFLOW), 1);
     CHECK_EQ_U(interp_state(ip)->nnames, INTERP_MAX_NAME_STACK);
 
-    /* glScissor is an attribute (GL_SCISSOR_BIT). */
+    /* What Mesa accepts in glEnable (checked with OSMesa): the client
+     * arrays (silently: the draws' @ArrayData say what they read), and 8
+     * clip planes; the ninth is an error. */
+    diag_clear(&dlog);
     seq_init(&s);
     CMD(&s, RenderMode, GL_RENDER, 0);
+    CMD(&s, Enable, GL_VERTEX_ARRAY);
+    CMD(&s, Enable, GL_NORMAL_ARRAY);
+    CMD(&s, Disable, GL_COLOR_ARRAY);
+    CMD(&s, Enable, GL_CLIP_PLANE0 + 6);
+    CMD(&s, Enable, GL_CLIP_PLANE0 + 7);
+    CMD(&s, Enable, GL_CLIP_PLANE0 + 8);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 1);
+    CHECK(interp_state(ip)->a.caps[INTERP_CAP_CLIP_PLANE7]);
+
+    /* glScissor is an attribute (GL_SCISSOR_BIT). */
+    seq_init(&s);
     CMD(&s, Scissor, 1, 2, 3, 4);
     CMD(&s, PushAttrib, GL_SCISSOR_BIT);
     CMD(&s, Scissor, 5, 6, 7, 8);
