@@ -148,6 +148,8 @@ void interp_default_state(gl_state *st)
     a->transform.matrix_mode = GL_MODELVIEW;
     a->color_buffer.blend_src = GL_ONE;
     a->color_buffer.blend_dst = GL_ZERO;
+    a->color_buffer.blend_equation = GL_FUNC_ADD;
+    a->color_buffer.logic_op = GL_COPY;
     a->color_buffer.alpha_func = GL_ALWAYS;
     for (int i = 0; i < 4; i++)
         a->color_buffer.mask[i] = true;

@@ -137,6 +137,7 @@ typedef struct gl_attribs {
     struct {
         float clear[4];
         GLenum blend_src, blend_dst, alpha_func;
+        GLenum blend_equation, logic_op;
         float alpha_ref;
         bool mask[4];
     } color_buffer; /* GL_COLOR_BUFFER_BIT */

@@ -89,7 +89,9 @@ static void draw_notes(interp *ip)
     for (int i = 0; i < 8; i++)
         if (c[INTERP_CAP_CLIP_PLANE0 + i])
             interp_note(ip, DIAG_NOTE_CLIP_PLANE);
-    if (c[INTERP_CAP_COLOR_LOGIC_OP] || !a->color_buffer.mask[0] || !a->color_buffer.mask[1] ||
+    if (c[INTERP_CAP_BLEND] && a->color_buffer.blend_equation != GL_FUNC_ADD)
+        interp_note(ip, DIAG_NOTE_BLEND_EQUATION);
+    if ((c[INTERP_CAP_COLOR_LOGIC_OP] && a->color_buffer.logic_op != GL_COPY) || !a->color_buffer.mask[0] || !a->color_buffer.mask[1] ||
         !a->color_buffer.mask[2])
         interp_note(ip, DIAG_NOTE_COLOR_MASK);
     if (!c[INTERP_CAP_DEPTH_TEST] || (a->depth.func != GL_LESS && a->depth.func != GL_LEQUAL))

@@ -273,6 +273,31 @@ void interp_blendfunc(interp *ip, const rgl_cmd *cmd)
     ip->st.a.color_buffer.blend_dst = d;
 }
 
+/* GL 1.4 (ARB_imaging in Mesa's compatibility context): the scene blends
+ * as GL_FUNC_ADD; the others are noted where a blended draw uses them. */
+void interp_blendequation(interp *ip, const rgl_cmd *cmd)
+{
+    GLenum m = arg_enum(cmd, 0);
+    if (m != GL_FUNC_ADD && m != GL_FUNC_SUBTRACT && m != GL_FUNC_REVERSE_SUBTRACT &&
+        m != GL_MIN && m != GL_MAX) {
+        interp_bad_enum(ip, "blend equation", m);
+        return;
+    }
+    ip->st.a.color_buffer.blend_equation = m;
+}
+
+/* The sixteen logic ops, GL_CLEAR .. GL_SET (GL 1.1 table 4.3); drawn with
+ * GL_COLOR_LOGIC_OP on, any of them is noted, as the colour mask is. */
+void interp_logicop(interp *ip, const rgl_cmd *cmd)
+{
+    GLenum op = arg_enum(cmd, 0);
+    if (op < GL_CLEAR || op > GL_SET) {
+        interp_bad_enum(ip, "logic op", op);
+        return;
+    }
+    ip->st.a.color_buffer.logic_op = op;
+}
+
 void interp_alphafunc(interp *ip, const rgl_cmd *cmd)
 {
     GLenum f = arg_enum(cmd, 0);

@@ -241,6 +241,31 @@ static void test_rejected(void)
     CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 1);
     CHECK(interp_state(ip)->a.caps[INTERP_CAP_CLIP_PLANE7]);
 
+    /* glBlendEquation and glLogicOp: kept, bad enums rejected, noted where
+     * a draw uses what the scene does not draw (GL_COPY is no change). */
+    diag_clear(&dlog);
+    seq_init(&s);
+    CMD(&s, BlendEquation, 0x1234);
+    CMD(&s, LogicOp, GL_SET + 1);
+    CMD(&s, Enable, GL_COLOR_LOGIC_OP);
+    CMD(&s, LogicOp, GL_COPY);
+    CMD(&s, Enable, GL_BLEND);
+    CMD(&s, Disable, GL_SCISSOR_TEST);
+    CMD(&s, Begin, GL_POINTS);
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 2);
+    CHECK_EQ_U(count(DIAG_NOTE_COLOR_MASK) + count(DIAG_NOTE_BLEND_EQUATION), 0);
+    seq_init(&s);
+    CMD(&s, BlendEquation, GL_MAX);
+    CMD(&s, LogicOp, GL_XOR);
+    CMD(&s, Begin, GL_POINTS);
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_NOTE_COLOR_MASK), 1);
+    CHECK_EQ_U(count(DIAG_NOTE_BLEND_EQUATION), 1);
+    CHECK(interp_state(ip)->a.color_buffer.blend_equation == GL_MAX);
+
     /* glScissor is an attribute (GL_SCISSOR_BIT). */
     seq_init(&s);
     CMD(&s, Scissor, 1, 2, 3, 4);
