@@ -192,6 +192,17 @@ RAYGL_API void rayglDrawPixels(GLsizei width, GLsizei height, GLenum format, GLe
                                const GLvoid *pixels);
 RAYGL_API void rayglCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type);
 
+/* glEnable / glDisable: the client arrays (GL_VERTEX_ARRAY, ...), which
+ * Mesa takes there as glEnableClientState does, are recorded as that. */
+RAYGL_API void rayglEnable(GLenum cap);
+RAYGL_API void rayglDisable(GLenum cap);
+
+/* Render modes: glRenderMode returns GL's answer; the buffers are GL's to
+ * write and never read by RayGL. */
+RAYGL_API GLint rayglRenderMode(GLenum mode);
+RAYGL_API void rayglSelectBuffer(GLsizei size, GLuint *buffer);
+RAYGL_API void rayglFeedbackBuffer(GLsizei size, GLenum type, GLfloat *buffer);
+
 RAYGL_API GLUquadric *raygluNewQuadric(void);
 RAYGL_API void raygluDeleteQuadric(GLUquadric *quad);
 RAYGL_API void raygluQuadricDrawStyle(GLUquadric *quad, GLenum draw);

@@ -559,6 +559,48 @@ static void client_state(GLenum array, bool enable)
         RECORD_NOW(s, enable ? RGL_OP_EnableClientState : RGL_OP_DisableClientState, "e", array);
 }
 
+/* glEnable / glDisable. A compatibility context (Mesa) takes the client
+ * arrays there too, as glEnableClientState does (checked with OSMesa: no
+ * error): recorded as that, so the draws' @ArrayData follow. Other caps
+ * are recorded as they are, into a list being compiled as GL compiles
+ * them. */
+static void record_cap(uint32_t op, GLenum cap)
+{
+    rgl_stream *s;
+    uint8_t *p = rgl_reserve(&s, 2 + RGL_WMAX_e);
+    if (p) {
+        p = rgl_put_opcode(p, op);
+        p = rgl_put_e(p, cap);
+        rgl_commit(s, p);
+    }
+}
+
+/* A client array enabled in a list being compiled (GL_COMPILE) takes
+ * effect at glCallList: recorded in the list as it is. */
+static bool cap_is_client_now(GLenum cap)
+{
+    const rgl_stream *s = rgl_tls_stream;
+    return array_slot(cap) >= 0 && !(s && s->compiling && s->list_mode == GL_COMPILE);
+}
+
+RGL_EXPORT void rayglEnable(GLenum cap)
+{
+    if (cap_is_client_now(cap))
+        client_state(cap, true);
+    else
+        record_cap(RGL_OP_Enable, cap);
+    glEnable(cap);
+}
+
+RGL_EXPORT void rayglDisable(GLenum cap)
+{
+    if (cap_is_client_now(cap))
+        client_state(cap, false);
+    else
+        record_cap(RGL_OP_Disable, cap);
+    glDisable(cap);
+}
+
 RGL_EXPORT void rayglEnableClientState(GLenum array)
 {
     client_state(array, true);

@@ -31,6 +31,7 @@
     X(NOTE_FOG, "approximated: the fog changed between fogged draws of a frame (the first fogged draw's fog is used)") \
     X(NOTE_BLEND, "approximated: blending with colour or destination-alpha factors, or of lit or textured surfaces, other than GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA is drawn as that one") \
     X(NOTE_BLEND_ADD, "approximated: additive blending (all of the colour behind kept) keeps 127/128 of it") \
+    X(NOTE_BLEND_EQUATION, "approximated: blend equations other than GL_FUNC_ADD (glBlendEquation) are drawn as GL_FUNC_ADD") \
     X(NOTE_ALPHA_TEST, "not translated yet: alpha test") \
     X(NOTE_TEXTURE, "approximated: texture environment GL_BLEND, GL_ADD or GL_COMBINE drawn as GL_MODULATE; 3D and cube-map textures not translated") \
     X(NOTE_TEX_SAMPLING, "approximated: textures are sampled with their magnification filter from level 0 (no mipmaps, no minification filter, mirrored repeat as repeat)") \
@@ -38,7 +39,8 @@
     X(NOTE_ARRAYS, "not translated yet: vertex arrays (draws skipped)") \
     X(NOTE_QUADRICS, "not translated yet: GLU quadrics (skipped)") \
     X(NOTE_STIPPLE, "not translated: line and polygon stipple (drawn solid)") \
-    X(NOTE_SCISSOR, "not translated: scissor test") \
+    X(NOTE_SCISSOR, "not translated: scissor test of geometry (drawn whole)") \
+    X(NOTE_SCISSOR_CLEAR, "approximated: a scissored clear does not erase what was drawn before it inside its box") \
     X(NOTE_CLIP_PLANE, "not translated: user clip planes") \
     X(NOTE_STENCIL, "not translated: stencil test") \
     X(NOTE_COLOR_MASK, "not translated: colour mask and logic op") \
@@ -48,6 +50,7 @@
     X(NOTE_PROJECTIVE_MODELVIEW, "approximated: projective modelview applied to the vertices") \
     X(NOTE_SPOT_SPECULAR, "approximated: a spot light whose specular colour differs from its diffuse colour makes highlights as if they were equal") \
     X(NOTE_NORMALS, "approximated: lit normals that are not unit length in eye space (GL_NORMALIZE off) are used normalised") \
+    X(NOTE_RENDER_MODE, "left out, as GL draws no pixel of it: geometry drawn in GL_SELECT or GL_FEEDBACK render mode") \
     X(NOTE_EVAL_INDEX, "not translated: colour-index evaluator maps (GL_MAP1_INDEX, GL_MAP2_INDEX)") \
     X(NOTE_PIXELS_DEPTH, "approximated: bitmaps and pixel rectangles show in front of the whole scene (drawn with the depth test on, or before later geometry)") \
     X(NOTE_RASTER_LIT, "approximated: the raster colour is the current colour unlit (glRasterPos with lighting on)") \

@@ -108,6 +108,8 @@ void interp_default_state(gl_state *st)
         a->eval.grid_n[d][0] = a->eval.grid_n[d][1] = 1;
         a->eval.grid[d][0][1] = a->eval.grid[d][1][1] = 1;
     }
+    st->render_mode = GL_RENDER;
+    st->select_size = st->feedback_size = -1;
     a->lighting.shade_model = GL_SMOOTH;
     for (int f = 0; f < 2; f++) {
         gl_material *m = &a->lighting.material[f];
@@ -151,6 +153,8 @@ void interp_default_state(gl_state *st)
     a->transform.matrix_mode = GL_MODELVIEW;
     a->color_buffer.blend_src = GL_ONE;
     a->color_buffer.blend_dst = GL_ZERO;
+    a->color_buffer.blend_equation = GL_FUNC_ADD;
+    a->color_buffer.logic_op = GL_COPY;
     a->color_buffer.alpha_func = GL_ALWAYS;
     for (int i = 0; i < 4; i++)
         a->color_buffer.mask[i] = true;
@@ -497,6 +501,13 @@ static void set_cap(interp *ip, const rgl_cmd *cmd, bool on)
 {
     GLenum cap = arg_enum(cmd, 0);
     int i = interp_cap_index(cap);
+    /* Mesa's compatibility context takes the client arrays here, as
+     * glEnableClientState (checked with OSMesa); the recorder records them
+     * as that, and the draws' @ArrayData carry what they enable. */
+    if (i < 0 && (cap == GL_VERTEX_ARRAY || cap == GL_NORMAL_ARRAY || cap == GL_COLOR_ARRAY ||
+                  cap == GL_INDEX_ARRAY || cap == GL_TEXTURE_COORD_ARRAY ||
+                  cap == GL_EDGE_FLAG_ARRAY))
+        return;
     if (i < 0) {
         interp_bad_enum(ip, "capability", cap);
         return;
@@ -568,6 +579,8 @@ void interp_popattrib(interp *ip, const rgl_cmd *cmd)
         a->eval = s->eval;
     if (m & GL_PIXEL_MODE_BIT)
         a->pixel = s->pixel;
+    if (m & GL_SCISSOR_BIT)
+        a->scissor = s->scissor;
     for (int i = 0; i < INTERP_CAP_COUNT; i++)
         if ((m & GL_ENABLE_BIT) || (m & cap_groups[i]))
             a->caps[i] = s->caps[i];

@@ -50,6 +50,16 @@
 #define INTERP_MAX_LIST_NESTING 64 /* GL_MAX_LIST_NESTING (GL 1.x table 6.28) */
 #define INTERP_MAX_TEXTURE_SIZE 16384 /* Mesa's GL_MAX_TEXTURE_SIZE */
 #define INTERP_MAX_EVAL_ORDER 30 /* Mesa's GL_MAX_EVAL_ORDER */
+#define INTERP_MAX_NAME_STACK 64 /* Mesa's GL_MAX_NAME_STACK_DEPTH */
+
+/* Mesa's GL_MAX_CLIP_PLANES is 8; GL names the planes past 5 only as
+ * GL_CLIP_PLANE0 + i. */
+#ifndef GL_CLIP_PLANE6
+#define GL_CLIP_PLANE6 (GL_CLIP_PLANE0 + 6)
+#endif
+#ifndef GL_CLIP_PLANE7
+#define GL_CLIP_PLANE7 (GL_CLIP_PLANE0 + 7)
+#endif
 
 /* The frame budget (docs/mapping.md, "Bounds"): what one frame may cost,
  * display-list bodies and state snapshots included, so that a few hundred
@@ -135,6 +145,7 @@ typedef struct gl_attribs {
     struct {
         float clear[4];
         GLenum blend_src, blend_dst, alpha_func;
+        GLenum blend_equation, logic_op;
         float alpha_ref;
         bool mask[4];
     } color_buffer; /* GL_COLOR_BUFFER_BIT */
@@ -170,6 +181,10 @@ typedef struct gl_attribs {
         uint32_t others;       /* other glPixelTransfer pnames set away from
                                   their defaults (not translated) */
     } pixel; /* GL_PIXEL_MODE_BIT */
+    struct {
+        int32_t box[4]; /* x, y, width, height */
+        bool set;       /* false: the initial box, the whole window */
+    } scissor; /* GL_SCISSOR_BIT */
 } gl_attribs;
 
 typedef struct gl_attrib_entry {
@@ -187,6 +202,11 @@ typedef struct gl_state {
     gl_attrib_entry attrib_stack[INTERP_ATTRIB_DEPTH];
     int attrib_depth;
     uint32_t list_base; /* glListBase (issue 5) */
+    /* Render mode and name stack (interp_select.c; not attributes). */
+    GLenum render_mode;
+    int32_t select_size, feedback_size; /* -1: no buffer given */
+    uint32_t names[INTERP_MAX_NAME_STACK];
+    int nnames;
 } gl_state;
 
 typedef struct interp interp;

@@ -66,6 +66,14 @@ struct interp {
 #define INTERP_MISSING_KEPT 16
     uint64_t missing_hash[INTERP_MISSING_KEPT]; /* of the first parts' texts */
 
+    /* The frame's scissored clears since its last full one (interp_scissor.c). */
+#define INTERP_CLEAR_RECTS 64
+    struct interp_clear_rect {
+        int32_t box[4];
+        float color[4];
+    } clear_rects[INTERP_CLEAR_RECTS];
+    uint32_t nclear_rects;
+
     /* glBegin .. glEnd */
     bool in_begin;
     GLenum prim_mode;
@@ -324,6 +332,26 @@ bool interp_object_to_eye(const interp *ip, const mat4 *mv, const mat4 *proj,
  * `painter` made without a depth test (interp_prim.c, painter_shift). */
 void interp_painter_apply(const interp *ip, uint32_t painter, mat4 *to_eye);
 #define INTERP_PAINTER_MAX 100000 /* painter counts no further */
+
+/* Whether draws reach the picture: the render mode is GL_RENDER (else
+ * a note says what is left out); and the look.names value of the current
+ * name stack for a draw (interp_select.c). */
+bool interp_render_mode_draws(interp *ip);
+uint32_t interp_names_for_draw(interp *ip);
+
+/* The scissor test (interp_scissor.c). interp_scissor_cuts: it is on and
+ * its box leaves out part of viewport vp. interp_scissor_clear: a glClear
+ * of the colour buffer with the scissor test on; false when the box holds
+ * the whole viewport (the caller clears everything), else it keeps the box
+ * for interp_scissor_end_frame, which adds the boxes to the scene once the
+ * frame's camera is fixed. */
+bool interp_scissor_cuts(const interp *ip, const int32_t vp[4]);
+/* With the camera fixed: whether the box leaves nothing of the picture
+ * (a draw then draws nothing); and look's scissor fields for a draw now. */
+bool interp_scissor_hides(const interp *ip);
+void interp_scissor_look(const interp *ip, scene_look *look);
+bool interp_scissor_clear(interp *ip);
+void interp_scissor_end_frame(interp *ip);
 
 /* Closes an open glBegin without drawing it (interp_prim.c). */
 void interp_abort_begin(interp *ip);

@@ -298,6 +298,10 @@ static void share_output(interp *ip, uint32_t body, const call_mark *mk)
         if (t->provoking < mk->v0 || t->provoking >= s->nverts)
             return;
     }
+    /* A scissor box lies in the picture, not in the list's space. */
+    for (size_t k = 0; k < nm; k++)
+        if (s->meshes[mk->m0 + k].look.scissored)
+            return;
     mat4 call, inv;
     if (!interp_object_to_eye(ip, &mk->mv, &mk->proj, mk->vp, &call) || !mat4_affine(&call) ||
         !mat4_invert(&call, &inv))

@@ -97,14 +97,16 @@ static void draw_notes(interp *ip)
         interp_note(ip, DIAG_NOTE_TEXTURE);
     if (c[INTERP_CAP_LINE_STIPPLE] || c[INTERP_CAP_POLYGON_STIPPLE])
         interp_note(ip, DIAG_NOTE_STIPPLE);
-    if (c[INTERP_CAP_SCISSOR_TEST])
-        interp_note(ip, DIAG_NOTE_SCISSOR);
+    if (interp_scissor_cuts(ip, a->viewport.rect) && ip->prim_mode <= GL_LINE_STRIP)
+        interp_note(ip, DIAG_NOTE_SCISSOR); /* lines and points: drawn whole */
     if (c[INTERP_CAP_STENCIL_TEST])
         interp_note(ip, DIAG_NOTE_STENCIL);
-    for (int i = 0; i < 6; i++)
+    for (int i = 0; i < 8; i++)
         if (c[INTERP_CAP_CLIP_PLANE0 + i])
             interp_note(ip, DIAG_NOTE_CLIP_PLANE);
-    if (c[INTERP_CAP_COLOR_LOGIC_OP] || !a->color_buffer.mask[0] || !a->color_buffer.mask[1] ||
+    if (c[INTERP_CAP_BLEND] && a->color_buffer.blend_equation != GL_FUNC_ADD)
+        interp_note(ip, DIAG_NOTE_BLEND_EQUATION);
+    if ((c[INTERP_CAP_COLOR_LOGIC_OP] && a->color_buffer.logic_op != GL_COPY) || !a->color_buffer.mask[0] || !a->color_buffer.mask[1] ||
         !a->color_buffer.mask[2])
         interp_note(ip, DIAG_NOTE_COLOR_MASK);
     if (!c[INTERP_CAP_DEPTH_TEST] || (a->depth.func != GL_LESS && a->depth.func != GL_LEQUAL))
@@ -325,14 +327,14 @@ static void begin_mode(interp *ip, GLenum mode)
     ip->in_begin = true;
     ip->prim_mode = mode;
     ip->prim_skip = true;
-    if (!ip->scene)
+    if (!ip->scene || !interp_render_mode_draws(ip))
         return;
     interp_accum_draw(ip);
     if (ip->accum.active)
         return; /* a later accumulation pass: the scene holds the first */
     draw_notes(ip);
     interp_fix_camera(ip);
-    if (!setup_transform(ip))
+    if (interp_scissor_hides(ip) || !setup_transform(ip))
         return;
     ip->prim_skip = false;
     ip->prim_first = ip->scene->nverts;
@@ -871,6 +873,8 @@ scene_look interp_current_look(interp *ip)
     if (look.lit && look.material < 0)
         look.lit = 0;
     look.texture = interp_texture_for_draw(ip);
+    look.names = interp_names_for_draw(ip);
+    interp_scissor_look(ip, &look);
     return look;
 }
 

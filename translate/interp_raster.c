@@ -55,6 +55,7 @@ void interp_begin_frame(interp *ip)
     ip->painter = 0;
     ip->shape_facets = 0;
     ip->pixels_mark = 0;
+    ip->nclear_rects = 0;
     unrec_clear(&ip->unrecorded);
     interp_accum_begin_frame(ip);
     interp_bounds_begin_frame(ip);
@@ -76,6 +77,7 @@ void interp_end_frame(interp *ip)
         return;
     interp_fix_camera(ip);
     interp_pixels_end_frame(ip);
+    interp_scissor_end_frame(ip);
     if (!ip->cleared)
         for (int i = 0; i < 4; i++)
             s->background[i] = clamp01(ip->st.a.color_buffer.clear[i]);
@@ -153,17 +155,16 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
         interp_bad_value(ip, "glClear mask has unknown bits");
         return;
     }
-    if (!(mask & GL_COLOR_BUFFER_BIT) || !ip->scene)
+    if (!(mask & GL_COLOR_BUFFER_BIT) || !ip->scene || ip->st.render_mode != GL_RENDER)
         return;
     const gl_attribs *a = &ip->st.a;
-    if (a->caps[INTERP_CAP_SCISSOR_TEST]) {
-        interp_note(ip, DIAG_NOTE_SCISSOR); /* a partial clear: keep what is drawn */
-        return;
-    }
+    if (a->caps[INTERP_CAP_SCISSOR_TEST] && interp_scissor_clear(ip))
+        return; /* a partial clear: what is drawn stays */
     if (interp_accum_clear(ip))
         return;
     /* Everything drawn so far is gone; the next draw fixes the camera anew. */
     scene_clear_geometry(ip->scene);
+    ip->nclear_rects = 0;
     ip->camera_fixed = false;
     ip->cleared = true;
     ip->painter = 0;
@@ -275,6 +276,31 @@ void interp_blendfunc(interp *ip, const rgl_cmd *cmd)
     }
     ip->st.a.color_buffer.blend_src = s;
     ip->st.a.color_buffer.blend_dst = d;
+}
+
+/* GL 1.4 (ARB_imaging in Mesa's compatibility context): the scene blends
+ * as GL_FUNC_ADD; the others are noted where a blended draw uses them. */
+void interp_blendequation(interp *ip, const rgl_cmd *cmd)
+{
+    GLenum m = arg_enum(cmd, 0);
+    if (m != GL_FUNC_ADD && m != GL_FUNC_SUBTRACT && m != GL_FUNC_REVERSE_SUBTRACT &&
+        m != GL_MIN && m != GL_MAX) {
+        interp_bad_enum(ip, "blend equation", m);
+        return;
+    }
+    ip->st.a.color_buffer.blend_equation = m;
+}
+
+/* The sixteen logic ops, GL_CLEAR .. GL_SET (GL 1.1 table 4.3); drawn with
+ * GL_COLOR_LOGIC_OP on, any of them is noted, as the colour mask is. */
+void interp_logicop(interp *ip, const rgl_cmd *cmd)
+{
+    GLenum op = arg_enum(cmd, 0);
+    if (op < GL_CLEAR || op > GL_SET) {
+        interp_bad_enum(ip, "logic op", op);
+        return;
+    }
+    ip->st.a.color_buffer.logic_op = op;
 }
 
 void interp_alphafunc(interp *ip, const rgl_cmd *cmd)

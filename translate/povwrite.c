@@ -403,6 +403,8 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
     if (nt == 0 || (to_eye && !mat4_finite(to_eye)))
         return 0;
     vd->words = words;
+    if (sc)
+        povwrite_names(ob, sc, look->names);
 
     /* Vertices of a run sit in one stretch of the pool. */
     uint32_t lo = UINT32_MAX, hi = 0;
@@ -772,6 +774,8 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
     }
     if (to_eye)
         put_matrix(ob, to_eye);
+    if (sc && !w->in_proto)
+        povwrite_scissor(ob, sc, look); /* after the matrix: in eye space */
     if (w->mesh_no_shadow)
         outbuf_puts(ob, "no_shadow\n");
     outbuf_puts(ob, "}\n");

@@ -37,7 +37,7 @@ static void put_matrix(outbuf *ob, const mat4 *to_eye)
     outbuf_putc(ob, '>');
 }
 
-static void write_solid(outbuf *ob, const scene_solid *so, const povlight *pl)
+static void write_solid(outbuf *ob, const scene *s, const scene_solid *so, const povlight *pl)
 {
     const double *p = so->params;
     if (!mat4_finite(&so->to_eye) || !mat4_affine(&so->to_eye))
@@ -118,6 +118,7 @@ static void write_solid(outbuf *ob, const scene_solid *so, const povlight *pl)
         outbuf_puts(ob, "}}");
     }
     put_matrix(ob, &so->to_eye);
+    povwrite_scissor(ob, s, &so->look);
     outbuf_puts(ob, "}\n");
 }
 
@@ -155,10 +156,79 @@ void povwrite_solid_declares(outbuf *ob, const scene *s)
     outbuf_puts(ob, "}\n");
 }
 
+void povwrite_scissor(outbuf *ob, const scene *s, const scene_look *look)
+{
+    const scene_camera *cam = &s->camera;
+    if (!look->scissored || cam->width <= 0 || cam->height <= 0)
+        return;
+    const int32_t *b = look->scissor;
+    /* Image coordinates in [-1/2, 1/2] (scene_camera) of the edges. */
+    double u[2] = {(double)b[0] / cam->width - 0.5, ((double)b[0] + b[2]) / cam->width - 0.5};
+    double v[2] = {(double)b[1] / cam->height - 0.5, ((double)b[1] + b[3]) / cam->height - 0.5};
+    double uc = (u[0] + u[1]) / 2, vc = (v[0] + v[1]) / 2;
+    bool persp = cam->kind != SCENE_CAMERA_ORTHOGRAPHIC;
+    double inside[3];
+    for (int k = 0; k < 3; k++)
+        inside[k] = cam->location[k] + cam->direction[k] + uc * cam->right[k] + vc * cam->up[k];
+    outbuf_puts(ob, "clipped_by{");
+    for (int e = 0; e < 4; e++) {
+        bool vertical = e < 2; /* left and right edges: a u; else a v */
+        double t = vertical ? u[e] : v[e - 2];
+        const double *along = vertical ? cam->right : cam->up;
+        const double *other = vertical ? cam->up : cam->right;
+        /* The plane holds the edge's rays: from the eye along direction +
+         * t along (perspective), or from location + t along, along
+         * direction (orthographic); and the other image axis. */
+        double p0[3], ray[3], n[3];
+        for (int k = 0; k < 3; k++) {
+            p0[k] = cam->location[k] + (persp ? 0 : t * along[k]);
+            ray[k] = cam->direction[k] + (persp ? t * along[k] : 0);
+        }
+        cross3(ray, other, n);
+        double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        if (!(len > 0) || !isfinite(len))
+            continue;
+        double d = 0, side = 0;
+        for (int k = 0; k < 3; k++) {
+            n[k] /= len;
+            d += n[k] * p0[k];
+        }
+        for (int k = 0; k < 3; k++)
+            side += n[k] * inside[k];
+        if (side > d) { /* POV-Ray keeps n.p < d */
+            for (int k = 0; k < 3; k++)
+                n[k] = -n[k];
+            d = -d;
+        }
+        outbuf_puts(ob, "plane{");
+        put_xyz(ob, n[0], n[1], n[2]);
+        outbuf_putc(ob, ',');
+        outbuf_f32(ob, (float)d);
+        outbuf_putc(ob, '}');
+    }
+    outbuf_puts(ob, "}\n");
+}
+
+void povwrite_names(outbuf *ob, const scene *s, uint32_t names)
+{
+    uint32_t n;
+    const uint32_t *v = scene_names(s, names, &n);
+    if (!v)
+        return;
+    outbuf_puts(ob, "// names:");
+    for (uint32_t i = 0; i < n; i++) {
+        outbuf_putc(ob, ' ');
+        outbuf_u64(ob, v[i]);
+    }
+    outbuf_putc(ob, '\n');
+}
+
 void povwrite_solids(outbuf *ob, const scene *s, const povlight *pl)
 {
-    for (size_t i = 0; i < s->nsolids; i++)
-        write_solid(ob, &s->solids[i], pl);
+    for (size_t i = 0; i < s->nsolids; i++) {
+        povwrite_names(ob, s, s->solids[i].look.names);
+        write_solid(ob, s, &s->solids[i], pl);
+    }
 }
 
 bool povwrite_solid_anchor(const scene *s, float out[3])

@@ -41,6 +41,7 @@ void scene_finish(scene *s)
     tr_free(s->instances);
     tr_free(s->materials);
     tr_free(s->overlay);
+    tr_free(s->names);
     memset(s, 0, sizeof *s);
 }
 
@@ -49,6 +50,7 @@ void scene_reset(scene *s)
     scene_clear_geometry(s);
     s->nlights = 0;
     s->nmaterials = 0;
+    s->nnames = s->names_last = 0;
     s->lights_fixed = false;
     memset(&s->fog, 0, sizeof s->fog);
     s->have_camera = false;
@@ -257,6 +259,43 @@ int32_t scene_material_index(scene *s, const scene_material *m)
         return -1;
     memcpy(n, m, sizeof *n);
     return (int32_t)(s->nmaterials - 1);
+}
+
+uint32_t scene_names_index(scene *s, const uint32_t *names, uint32_t n)
+{
+    if (n == 0 || s->failed)
+        return 0;
+    if (s->names_last) {
+        const uint32_t *l = s->names + s->names_last;
+        if (l[-1] == n && memcmp(l, names, n * sizeof *names) == 0)
+            return (uint32_t)s->names_last;
+    }
+    if (s->nnames + n + 1 > s->cap_names) {
+        size_t cap = s->cap_names ? 2 * s->cap_names : 256;
+        while (cap < s->nnames + n + 1)
+            cap *= 2;
+        uint32_t *p = cap <= UINT32_MAX / 2 ? tr_realloc(s->names, cap * sizeof *p) : NULL;
+        if (!p) {
+            s->failed = true;
+            return 0;
+        }
+        s->names = p;
+        s->cap_names = cap;
+    }
+    s->names[s->nnames] = n;
+    memcpy(s->names + s->nnames + 1, names, n * sizeof *names);
+    s->names_last = s->nnames + 1;
+    s->nnames += n + 1;
+    return (uint32_t)s->names_last;
+}
+
+const uint32_t *scene_names(const scene *s, uint32_t id, uint32_t *n)
+{
+    *n = 0;
+    if (id == 0 || id > s->nnames || s->names[id - 1] > s->nnames - id)
+        return NULL;
+    *n = s->names[id - 1];
+    return s->names + id;
 }
 
 /* ---- Cameras ---------------------------------------------------------------- */

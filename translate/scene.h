@@ -58,8 +58,13 @@ typedef struct scene_look {
     uint8_t flat;      /* GL_FLAT: one colour per face, the provoking vertex's */
     uint8_t blend;     /* SCENE_BLEND_*: how the colour behind shows through */
     uint8_t fog;       /* GL_FOG was on */
+    uint8_t scissored, pad_[3]; /* the scissor test cut it to `scissor` */
     int32_t material;  /* index into scene.materials when lit, else -1 */
     int32_t texture;   /* index into scene.textures, -1 for none (issue 5) */
+    uint32_t names;    /* the name stack (glPushName) it was drawn under: 1 +
+                          its place in scene.names (scene_names), 0: empty */
+    int32_t scissor[4]; /* x, y, width, height in pixels of the camera's
+                           image (origin at its lower left), when scissored */
 } scene_look;
 
 /* A run of triangles sharing transform and look: one mesh2 in SDL. */
@@ -258,6 +263,8 @@ typedef struct scene {
     size_t ntextures, cap_textures;
     scene_material *materials; /* lit runs refer to these by index */
     size_t nmaterials, cap_materials;
+    uint32_t *names; /* name stacks that looks refer to: a count, then the names */
+    size_t nnames, cap_names, names_last; /* names_last: 1 + where the last one starts */
     bool lights_fixed; /* lights hold the GL lights of the first lit draw */
     /* World -> eye: the modelview just after the frame's first gluLookAt
      * (raygl2pov's --camera-* and --light overrides are given in world
@@ -335,6 +342,15 @@ int32_t scene_add_texture(scene *s, const scene_texture *t);
 int32_t scene_material_index(scene *s, const scene_material *m);
 
 bool scene_look_equal(const scene_look *a, const scene_look *b);
+
+/* The look.names value of the name stack names[0..n-1] (bottom first):
+ * the last stack added when equal, else a new one; 0 for an empty stack
+ * or on failure (the scene is then failed). */
+uint32_t scene_names_index(scene *s, const uint32_t *names, uint32_t n);
+
+/* The names of look.names value id and their count in *n; NULL (and 0)
+ * for 0 or a value the scene does not hold. */
+const uint32_t *scene_names(const scene *s, uint32_t id, uint32_t *n);
 
 /* Camera from a GL projection matrix and viewport (x, y, width, height).
  * Handles any projection with a centre (perspective, off-axis frustum,

@@ -8,7 +8,8 @@
  * sequences with valid maps (random blobs rarely have a map's size), so the
  * fuzzers start from meshes that draw; pixels.bin holds bitmaps and pixel
  * rectangles with resources of their size; accum-passes.bin accumulated
- * passes. The corpus also holds
+ * passes; select-scissor.bin a picking pass, named draws and scissored
+ * clears and draws. The corpus also holds
  * recorded-*.bin, traces written by libraygl for the image tests.
  */
 #include "testutil.h"
@@ -260,6 +261,49 @@ static int write_accum(const char *dir)
     return write_file(dir, "accum-passes.bin", seq, eval_len);
 }
 
+/* ---- Render modes, names and the scissor box ------------------------------------ */
+
+/* A picking pass (its draws and clear left out), named draws in GL_RENDER
+ * mode, scissored clears and scissored geometry, through a perspective
+ * camera; random sequences rarely reach GL_SELECT with a buffer. */
+static int write_select(const char *dir)
+{
+    eval_len = 0;
+    EV(Viewport, 0, 0, 320, 240);
+    EV(Frustum, -1, 1, -0.75, 0.75, 1, 20);
+    EV(SelectBuffer, 64);
+    EV(RenderMode, 0x1C02, 0); /* GL_SELECT */
+    eval_cmd(RGL_OP_InitNames, NULL, 0, NULL, 0);
+    EV(PushName, 1);
+    EV(Clear, 0x4000);
+    EV(Rectf, -5, -5, 5, 5);
+    EV(RenderMode, 0x1C00, 1); /* GL_RENDER: one hit */
+    EV(FeedbackBuffer, 32, 0x0602); /* GL_3D_COLOR */
+    EV(RenderMode, 0x1C01, 0);
+    EV(PassThrough, 7);
+    EV(Rectf, -1, -1, 1, 1);
+    EV(RenderMode, 0x1C00, 9);
+    EV(PushName, 2);
+    EV(PushName, 3);
+    EV(Translatef, 0, 0, -5);
+    EV(Rectf, -1, -1, 1, 1);
+    EV(LoadName, 4);
+    EV(Enable, 0x0C11); /* GL_SCISSOR_TEST */
+    EV(Scissor, 40, 30, 100, 80);
+    EV(ClearColor, 1, 0.5, 0, 1);
+    EV(Clear, 0x4000);
+    EV(Rectf, -2, -2, 0, 0);
+    EV(SolidSphere, 1, 12, 8);
+    EV(Begin, 0x0001); /* GL_LINES */
+    EV(Vertex2f, 0, 0);
+    EV(Vertex2f, 1, 1);
+    eval_cmd(RGL_OP_End, NULL, 0, NULL, 0);
+    eval_cmd(RGL_OP_PopName, NULL, 0, NULL, 0);
+    EV(Scissor, 400, 0, 10, 10);
+    EV(Rectf, -1, -1, 1, 1);
+    return write_file(dir, "select-scissor.bin", seq, eval_len);
+}
+
 int main(int argc, char **argv)
 {
     rng r = {0x5eed5eed12345678ull};
@@ -284,5 +328,6 @@ int main(int argc, char **argv)
     rc |= write_eval(argv[1]);
     rc |= write_pixels(argv[1]);
     rc |= write_accum(argv[1]);
+    rc |= write_select(argv[1]);
     return rc;
 }

@@ -22,8 +22,8 @@ static void display(float angle)
     glEnd();
     glutSolidTorus(0.25, 1, 8, 16);
     glIndexi(0);
-    glLogicOp(GL_XOR);
-    glLogicOp(GL_COPY);
+    glIndexf(1);
+    glIndexf(2);
     if (glUseProgram)
         glUseProgram(0);
     (void)glGetError(); /* a query: not counted */

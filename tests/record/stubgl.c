@@ -425,3 +425,21 @@ void glMap2d(GLenum target, GLdouble u1, GLdouble u2, GLint ustride, GLint uorde
     LOGV("glMap2d", target, u1, u2, ustride, uorder, v1, v2, vstride, vorder);
     arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], points);
 }
+GLint stub_render_mode_result = 0;
+GLint glRenderMode(GLenum mode)
+{
+    LOGV("glRenderMode", mode);
+    return stub_render_mode_result;
+}
+void glSelectBuffer(GLsizei size, GLuint *buffer)
+{
+    LOGV("glSelectBuffer", size);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], buffer);
+}
+void glFeedbackBuffer(GLsizei size, GLenum type, GLfloat *buffer)
+{
+    LOGV("glFeedbackBuffer", size, type);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], buffer);
+}
+void glEnable(GLenum cap) { LOGV("glEnable", cap); }
+void glDisable(GLenum cap) { LOGV("glDisable", cap); }

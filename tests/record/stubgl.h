@@ -26,6 +26,7 @@ typedef struct stub_call {
 extern stub_call stub_log[STUB_LOG_MAX];
 extern size_t stub_nlog;     /* calls logged since stub_reset (may pass MAX) */
 extern int stub_glut_ready;  /* what glutGet(GLUT_INIT_STATE) returns */
+extern GLint stub_render_mode_result; /* what glRenderMode returns */
 
 void stub_reset(void);
 
