@@ -795,7 +795,7 @@ static int write_bands(povwriter *w, outbuf *ob)
 {
     scene_look look;
     memset(&look, 0, sizeof look);
-    look.material = look.texture = -1;
+    look.material = look.texture = look.texture1 = -1;
     for (size_t i = 0; i < w->nbverts; i++)
         if (w->bverts[i].color[3] < 1)
             look.blend = SCENE_BLEND_ALPHA;

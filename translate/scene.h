@@ -41,6 +41,7 @@ typedef struct scene_vertex {
     float normal[3];
     float color[4];
     float tex[2];
+    float tex1[2]; /* of the look's second texture (texture1) */
 } scene_vertex;
 
 /* A triangle: absolute vertex indices in the pool, front face first in GL's
@@ -60,6 +61,8 @@ typedef struct scene_look {
     uint8_t fog;       /* GL_FOG was on */
     int32_t material;  /* index into scene.materials when lit, else -1 */
     int32_t texture;   /* index into scene.textures, -1 for none (issue 5) */
+    int32_t texture1;  /* a second texture unit's, combined with the result of
+                          the first by its env_mode (GL 2.1 3.8.13), or -1 */
 } scene_look;
 
 /* A run of triangles sharing transform and look: one mesh2 in SDL. */
