@@ -105,6 +105,10 @@ struct interp {
         const uint8_t *data;
         size_t bytes;
     } arrays[5];
+    /* Texture coordinates of units 1.. (units[0] unused: arrays[3] is
+     * unit 0's): an @ArrayData of GL_TEXTURE_COORD_ARRAY fills the client
+     * active unit's. */
+    struct interp_array_data unit_tc[INTERP_TEX_UNITS];
 
     /* The GL lights and fog the frame's scene holds (those of its first lit
      * or fogged draw), to notice when a later draw uses others. */
