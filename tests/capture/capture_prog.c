@@ -29,7 +29,7 @@
  *   --unrecorded        each frame also makes calls RayGL passes through
  *                       unrecorded (glRasterPos2i, glPixelZoom, two
  *                       glutBitmapCharacter with --api glut,
- *                       glActiveTexture found with
+ *                       glBlendColor found with
  *                       glXGetProcAddressARB) and queries (glGetError,
  *                       glGetIntegerv, glIsEnabled)
  */
@@ -130,10 +130,11 @@ static void unrecorded_calls(void)
         glutBitmapCharacter(GLUT_BITMAP_8_BY_13, 'R');
         glutBitmapCharacter(GLUT_BITMAP_8_BY_13, 'G');
     }
-    void (*active)(GLenum) =
-        (void (*)(GLenum))glXGetProcAddressARB((const GLubyte *)"glActiveTexture");
-    if (active)
-        active(GL_TEXTURE0);
+    void (*blend_color)(GLfloat, GLfloat, GLfloat, GLfloat) =
+        (void (*)(GLfloat, GLfloat, GLfloat, GLfloat))glXGetProcAddressARB(
+            (const GLubyte *)"glBlendColor");
+    if (blend_color)
+        blend_color(0, 0, 0, 0);
     GLint v[4];
     glGetIntegerv(GL_VIEWPORT, v);
     (void)glIsEnabled(GL_LIGHTING);
