@@ -20,6 +20,7 @@
 void test_custom(const char *dir);
 void test_buffers(const char *dir);
 void test_eval(const char *dir);
+void test_multitex_arrays(const char *dir);
 void test_alloc_failures(const char *dir);
 void test_too_large(const char *dir);
 void test_unpack(const char *dir);
@@ -273,6 +274,7 @@ int main(void)
     test_custom(dir);
     test_buffers(dir);
     test_eval(dir);
+    test_multitex_arrays(dir);
     test_alloc_failures(dir);
     test_too_large(dir);
     test_unpack(dir);
