@@ -182,6 +182,7 @@ unrecorded)
     dump s.raygl | awk '/^frame / { if (n++ && last !~ /@Snapshot/) bad = 1 }
         /^  [0-9]/ { last = $0 } END { exit bad || last !~ /@Snapshot/ }' ||
         fail "@Snapshot is not each frame's last command"
+    ;;
 nurbs)
     record -o t.raygl -- "$prog" --api glx --nurbs >prog.log 2>&1 || { cat prog.log; fail "the program failed"; }
     expect t.raygl '^frame ' 3
