@@ -49,7 +49,7 @@
     X(NOTE_SPOT_SPECULAR, "approximated: a spot light whose specular colour differs from its diffuse colour makes highlights as if they were equal") \
     X(NOTE_NORMALS, "approximated: lit normals that are not unit length in eye space (GL_NORMALIZE off) are used normalised") \
     X(NOTE_EVAL_INDEX, "not translated: colour-index evaluator maps (GL_MAP1_INDEX, GL_MAP2_INDEX)") \
-    X(NOTE_MULTITEX, "approximated: texture units past the second enabled one not drawn; a unit after the first combined with one fragment colour (unlit, the first vertex's) unless both units use GL_MODULATE or the first replaces the colour")
+    X(NOTE_MULTITEX, "approximated: texture units past the second enabled one not drawn; a unit after the first combined with one fragment colour (unlit, the first vertex's) unless both units use GL_MODULATE or the first replaces the colour; two units blended are drawn opaque")
 
 typedef enum diag_kind {
 #define DIAG_ENUM_(name, text) DIAG_##name,

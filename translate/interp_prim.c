@@ -845,9 +845,10 @@ scene_look interp_current_look(interp *ip)
         const scene_texture *t1 = &ip->scene->textures[look.texture1];
         if (t1->colour_is_texel) /* the second unit's texel replaces the first's result */
             look.texture = -1;
-        else if (t0 && !(t0->env_mode == GL_MODULATE && t1->env_mode == GL_MODULATE) &&
-                 !t0->colour_is_texel && (look.lit || !look.flat))
-            interp_note(ip, DIAG_NOTE_MULTITEX);
+        else if ((t0 && !(t0->env_mode == GL_MODULATE && t1->env_mode == GL_MODULATE) &&
+                  !t0->colour_is_texel && (look.lit || !look.flat)) ||
+                 (t0 && look.blend != SCENE_BLEND_OPAQUE))
+            interp_note(ip, DIAG_NOTE_MULTITEX); /* see the note's text */
     }
     if (look.texture < 0 && look.texture1 >= 0) {
         /* An incomplete (or replaced) first unit passes its input on: the

@@ -1009,6 +1009,18 @@ static void test_multitex(void)
         CHECK_NEAR(sc.verts[5].tex1[0], 9.5, 1e-6);
         CHECK_NEAR(sc.verts[5].tex1[1], 10, 0);
     }
+
+    /* A third enabled unit is not drawn, and said so. */
+    CHECK_EQ_U(count(DIAG_NOTE_MULTITEX), 0);
+    seq_init(&s);
+    CMD(&s, ActiveTexture, GL_TEXTURE5);
+    CMD(&s, Enable, GL_TEXTURE_1D);
+    CMD(&s, Begin, GL_POINTS);
+    CMD(&s, Vertex2f, 0, 0);
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_NOTE_MULTITEX), 1);
+    CHECK(ip->draw_unit[0] == 0 && ip->draw_unit[1] == 1);
     interp_destroy(ip);
 }
 
