@@ -24,6 +24,8 @@
  *   interp_bounds.c  the frame's budget (a frame that would cost more is
  *                    cut) and the parts a damaged trace left out of it
  *   interp_eval.c    evaluators: maps, grids, glEvalCoord, glEvalMesh
+ *   interp_multitex.c texture units: glActiveTexture, glClientActiveTexture,
+ *                    glMultiTexCoord, the units a draw takes
  *
  * Not thread-safe; one interpreter per worker thread.
  */
