@@ -148,6 +148,10 @@ RAYGL_API void rayglEdgeFlagPointer(GLsizei stride, const GLvoid *ptr);
 RAYGL_API void rayglInterleavedArrays(GLenum format, GLsizei stride, const GLvoid *pointer);
 RAYGL_API void rayglEnableClientState(GLenum array);
 RAYGL_API void rayglDisableClientState(GLenum array);
+/* The unit whose texture-coordinate array the calls above change (GL 1.3,
+ * ARB_multitexture). */
+RAYGL_API void rayglClientActiveTexture(GLenum texture);
+RAYGL_API void rayglClientActiveTextureARB(GLenum texture);
 RAYGL_API void rayglMultiDrawArrays(GLenum mode, const GLint *first, const GLsizei *count,
                                     GLsizei drawcount);
 RAYGL_API void rayglMultiDrawElements(GLenum mode, const GLsizei *count, GLenum type,

@@ -215,6 +215,46 @@ static bool array_source(const rgl_client_array_state *a, int64_t first, int64_t
     return true;
 }
 
+/* The texture-coordinate array of unit u. */
+static const rgl_client_array_state *tc_array(const rgl_stream *s, uint32_t u)
+{
+    return u == s->client_unit ? &s->arrays[RGL_CA_TEXCOORD] : &s->tc_parked[u];
+}
+
+/* Records @ArrayData(array, ...) of a's elements [first, first+count). */
+static bool put_array(rgl_stream **sp, const rgl_client_array_state *a, GLenum array,
+                      int64_t first, int64_t count)
+{
+    rgl_stream *s = *sp;
+    size_t es = element_size(a);
+    size_t stride = a->stride ? (size_t)a->stride : es;
+    size_t bytes = (size_t)count * es;
+    uint8_t *p = rgl_reserve(&s, 4 * RGL_VARINT32_MAX + RGL_VARINT64_MAX + 2 + bytes);
+    *sp = s;
+    if (!p)
+        return false;
+    const uint8_t *src = NULL;
+    if (count > 0 && !array_source(a, first, count, &src))
+        return false; /* a buffer changed under us: the draw goes unrecorded */
+    p = rgl_put_opcode(p, RGL_OP_ArrayData);
+    p = rgl_put_e(p, array);
+    p = rgl_put_i(p, (int32_t)first);
+    p = rgl_put_i(p, a->size);
+    p = rgl_put_e(p, a->type);
+    p = rgl_put_varint(p, bytes);
+    if (count > 0 && stride == es) {
+        memcpy(p, src, bytes);
+        p += bytes;
+    } else if (count > 0) {
+        for (int64_t i = 0; i < count; i++, src += stride, p += es)
+            memcpy(p, src, es);
+    }
+    if (count > 0 && a->buffer)
+        rgl_buffer_release();
+    rgl_commit(s, p);
+    return true;
+}
+
 /* Records @ArrayData for the elements [first, first+count) of every enabled
  * array, packed. Returns false (nothing recorded) when an enabled array
  * has no pointer (GL would fault: the draw goes on unrecorded), or buffer
@@ -229,6 +269,11 @@ static bool record_arrays(uint32_t op, int64_t first, int64_t count)
     for (int k = 0; k < RGL_MAX_CLIENT_ARRAYS; k++)
         if (s->arrays[k].enabled && !s->arrays[k].pointer && !s->arrays[k].buffer)
             return false;
+    for (uint32_t u = 0; u < RGL_MAX_TEX_UNITS; u++) {
+        const rgl_client_array_state *a = tc_array(s, u);
+        if (a->enabled && !a->pointer && !a->buffer)
+            return false;
+    }
     if (first < 0 || count < 0 || first > INT32_MAX)
         return false;
     /* Check every buffer first: a draw is recorded whole or not at all. */
@@ -242,35 +287,40 @@ static bool record_arrays(uint32_t op, int64_t first, int64_t count)
             rgl_buffer_release();
         }
     }
-    for (int k = 0; k < RGL_MAX_CLIENT_ARRAYS; k++) {
-        const rgl_client_array_state *a = &s->arrays[k];
-        if (!a->enabled)
-            continue;
-        size_t es = element_size(a);
-        size_t stride = a->stride ? (size_t)a->stride : es;
-        size_t bytes = (size_t)count * es;
-        uint8_t *p = rgl_reserve(&s, 4 * RGL_VARINT32_MAX + RGL_VARINT64_MAX + 2 + bytes);
-        if (!p)
-            return false;
-        const uint8_t *src = NULL;
-        if (count > 0 && !array_source(a, first, count, &src))
-            return false; /* a buffer changed under us: the draw goes unrecorded */
-        p = rgl_put_opcode(p, RGL_OP_ArrayData);
-        p = rgl_put_e(p, array_enums[k]);
-        p = rgl_put_i(p, (int32_t)first);
-        p = rgl_put_i(p, a->size);
-        p = rgl_put_e(p, a->type);
-        p = rgl_put_varint(p, bytes);
-        if (count > 0 && stride == es) {
-            memcpy(p, src, bytes);
-            p += bytes;
-        } else if (count > 0) {
-            for (int64_t i = 0; i < count; i++, src += stride, p += es)
-                memcpy(p, src, es);
-        }
-        if (count > 0 && a->buffer)
+    for (uint32_t u = 0; u < RGL_MAX_TEX_UNITS; u++) {
+        const uint8_t *src;
+        const rgl_client_array_state *a = tc_array(s, u);
+        if (u != s->client_unit && a->enabled && a->buffer && count > 0) {
+            if (!array_source(a, first, count, &src)) {
+                rgl_note_skipped(op, RGL_PX_SKIP_DATA);
+                return false;
+            }
             rgl_buffer_release();
-        rgl_commit(s, p);
+        }
+    }
+    /* Texture coordinates of every unit: each @ArrayData of them belongs
+     * to the unit the last glClientActiveTexture record names. */
+    uint32_t rec_unit = s->client_unit;
+    for (int k = 0; k < RGL_MAX_CLIENT_ARRAYS; k++) {
+        if (k == RGL_CA_TEXCOORD) {
+            for (uint32_t u = 0; u < RGL_MAX_TEX_UNITS; u++) {
+                const rgl_client_array_state *a = tc_array(s, u);
+                if (!a->enabled)
+                    continue;
+                /* Beside the @ArrayData (a list body or the frame). */
+                if (u != rec_unit) {
+                    rgl_record(RGL_OP_ClientActiveTexture, "e", GL_TEXTURE0 + u);
+                    rec_unit = u;
+                }
+                if (!put_array(&s, a, GL_TEXTURE_COORD_ARRAY, first, count))
+                    break;
+            }
+            if (rec_unit != s->client_unit)
+                rgl_record(RGL_OP_ClientActiveTexture, "e", GL_TEXTURE0 + s->client_unit);
+            continue;
+        }
+        if (s->arrays[k].enabled && !put_array(&s, &s->arrays[k], array_enums[k], first, count))
+            return false;
     }
     return true;
 }
@@ -544,6 +594,39 @@ RGL_EXPORT void rayglEdgeFlagPointer(GLsizei stride, const GLvoid *ptr)
     if (stride >= 0)
         array_pointer(RGL_CA_EDGEFLAG, RGL_OP_EdgeFlagPointer, 1, GL_UNSIGNED_BYTE, stride, ptr);
     glEdgeFlagPointer(stride, ptr);
+}
+
+/* glClientActiveTexture: the texture-coordinate array calls change the
+ * unit it names; the others' arrays are parked. GL refuses a unit past
+ * its limit (GL_INVALID_ENUM): nothing recorded. */
+static void client_active_texture(uint32_t op, GLenum texture)
+{
+    if (texture < GL_TEXTURE0 || texture >= GL_TEXTURE0 + RGL_MAX_TEX_UNITS)
+        return;
+    rgl_stream *s;
+    bool rec = rgl_reserve(&s, 1) != NULL;
+    if (!rec && !(s = rgl_tls_stream))
+        return;
+    uint32_t u = texture - GL_TEXTURE0;
+    if (u != s->client_unit) {
+        s->tc_parked[s->client_unit] = s->arrays[RGL_CA_TEXCOORD];
+        s->arrays[RGL_CA_TEXCOORD] = s->tc_parked[u];
+        s->client_unit = u;
+    }
+    if (rec)
+        RECORD_NOW(s, op, "e", texture);
+}
+
+RGL_EXPORT void rayglClientActiveTexture(GLenum texture)
+{
+    client_active_texture(RGL_OP_ClientActiveTexture, texture);
+    glClientActiveTexture(texture);
+}
+
+RGL_EXPORT void rayglClientActiveTextureARB(GLenum texture)
+{
+    client_active_texture(RGL_OP_ClientActiveTextureARB, texture);
+    glClientActiveTextureARB(texture);
 }
 
 static void client_state(GLenum array, bool enable)

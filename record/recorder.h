@@ -32,6 +32,7 @@
 /* GL's own limits, mirrored where the recorder needs them. */
 #define RGL_MAX_CLIENT_ARRAYS 5 /* vertex, normal, color, texcoord, edge flag */
 #define RGL_MAX_EVAL_ORDER 30   /* Mesa's GL_MAX_EVAL_ORDER */
+#define RGL_MAX_TEX_UNITS 8     /* Mesa's GL_MAX_TEXTURE_COORDS of GL 2.1 */
 
 enum rgl_client_array { RGL_CA_VERTEX, RGL_CA_NORMAL, RGL_CA_COLOR, RGL_CA_TEXCOORD, RGL_CA_EDGEFLAG };
 
@@ -120,7 +121,11 @@ typedef struct rgl_stream {
      * frame, by id (unrecorded.h); written by the stream's thread only. */
     uint64_t *unrecorded;
 
-    rgl_client_array_state arrays[RGL_MAX_CLIENT_ARRAYS];
+    rgl_client_array_state arrays[RGL_MAX_CLIENT_ARRAYS]; /* texcoord: the client
+                                                             active unit's */
+    uint32_t client_unit; /* glClientActiveTexture */
+    rgl_client_array_state tc_parked[RGL_MAX_TEX_UNITS]; /* the other units' texcoord
+                                                            arrays (client_unit's: stale) */
     uint32_t array_buffer, element_buffer; /* buffer bindings (GL 1.5) */
     uint32_t unpack_buffer, pack_buffer;   /* pixel buffer bindings (GL 2.1) */
     uint32_t gl_caps; /* what the context has (entry_buffer.c), 0: not asked

@@ -34,6 +34,7 @@ static bool allowed_in_begin(const char *handler)
         "material",     "calllist",  "calllists", "arrayelement",   "resolvedmatrix",
         "arraydata",    "framebegin", "frameend", "swapbuffers",
         "snapshot",     "notrecorded", "evalcoord1", "evalcoord2", "evalpoint1", "evalpoint2",
+        "multitexcoord",
     };
     for (size_t i = 0; i < sizeof ok / sizeof ok[0]; i++)
         if (strcmp(handler, ok[i]) == 0)
@@ -181,6 +182,7 @@ void interp_default_state(gl_state *st)
     st->modelview[0] = mat4_identity();
     st->projection[0] = mat4_identity();
     st->texture[0] = mat4_identity();
+    interp_multitex_defaults(st);
 }
 
 /* ---- Life cycle ---------------------------------------------------------------- */

@@ -24,6 +24,8 @@
  *   interp_bounds.c  the frame's budget (a frame that would cost more is
  *                    cut) and the parts a damaged trace left out of it
  *   interp_eval.c    evaluators: maps, grids, glEvalCoord, glEvalMesh
+ *   interp_multitex.c texture units: glActiveTexture, glClientActiveTexture,
+ *                    glMultiTexCoord, the units a draw takes
  *
  * Not thread-safe; one interpreter per worker thread.
  */
@@ -46,6 +48,9 @@
 #define INTERP_TEXTURE_DEPTH 2
 #define INTERP_ATTRIB_DEPTH 16
 #define INTERP_MAX_LIGHTS 8
+/* Texture units (Mesa's GL_MAX_TEXTURE_UNITS); the scene draws the first
+ * two enabled ones (interp_multitex.c). */
+#define INTERP_TEX_UNITS 8
 #define INTERP_MAX_VIEWPORT 16384 /* Mesa's GL_MAX_VIEWPORT_DIMS */
 #define INTERP_MAX_LIST_NESTING 64 /* GL_MAX_LIST_NESTING (GL 1.x table 6.28) */
 #define INTERP_MAX_TEXTURE_SIZE 16384 /* Mesa's GL_MAX_TEXTURE_SIZE */
@@ -162,7 +167,7 @@ typedef struct gl_attribs {
     struct {
         GLenum perspective, point, line, polygon, fog;
     } hint; /* GL_HINT_BIT */
-    struct {
+    struct gl_texture_unit {
         GLenum env_mode;
         float env_color[4];
         uint32_t binding_1d, binding_2d;
@@ -187,6 +192,15 @@ typedef struct gl_attribs {
     } scissor; /* GL_SCISSOR_BIT */
 } gl_attribs;
 
+/* A texture unit's server state while another unit is active: gl_attribs
+ * and gl_state hold the active unit's in place (interp_multitex.c). */
+typedef struct gl_tex_unit_parked {
+    struct gl_texture_unit texture;
+    uint8_t caps[8]; /* INTERP_CAP_TEXTURE_1D .. INTERP_CAP_TEXTURE_GEN_Q */
+    mat4 matrix[INTERP_TEXTURE_DEPTH];
+    int depth;
+} gl_tex_unit_parked;
+
 typedef struct gl_attrib_entry {
     uint32_t mask;
     gl_attribs saved;
@@ -207,6 +221,9 @@ typedef struct gl_state {
     int32_t select_size, feedback_size; /* -1: no buffer given */
     uint32_t names[INTERP_MAX_NAME_STACK];
     int nnames;
+    uint32_t active_unit, client_unit; /* glActiveTexture, glClientActiveTexture */
+    gl_tex_unit_parked units[INTERP_TEX_UNITS]; /* the active unit's slot is stale */
+    float unit_texcoord[INTERP_TEX_UNITS][4]; /* current, units 1..; unit 0's is a.current */
 } gl_state;
 
 typedef struct interp interp;

@@ -47,6 +47,8 @@ void interp_arrays_forget(interp *ip)
 {
     for (int k = 0; k < ARR_COUNT; k++)
         ip->arrays[k].set = false;
+    for (int k = 0; k < INTERP_TEX_UNITS; k++)
+        ip->unit_tc[k].set = false;
 }
 
 /* @ArrayData(array, first, size, type, data). */
@@ -62,13 +64,15 @@ void interp_arraydata(interp *ip, const rgl_cmd *cmd)
         interp_bad_enum(ip, "client array", array);
         return;
     }
+    struct interp_array_data *a = &ip->arrays[slot];
+    if (slot == ARR_TEXCOORD && ip->st.client_unit > 0 && ip->st.client_unit < INTERP_TEX_UNITS)
+        a = &ip->unit_tc[ip->st.client_unit];
     if (!ts || size < 1 || size > 4 || first < 0 ||
         blob->count % ((size_t)size * ts) != 0) {
         interp_bad_value(ip, "@ArrayData with a bad size, type, first element or length");
-        ip->arrays[slot].set = false;
+        a->set = false;
         return;
     }
-    struct interp_array_data *a = &ip->arrays[slot];
     a->set = true;
     a->first = (int32_t)first;
     a->size = (int32_t)size;
@@ -142,6 +146,9 @@ static bool have_element(const interp *ip, uint32_t index)
     for (int k = 0; k < ARR_COUNT; k++)
         if (ip->arrays[k].set && !element(&ip->arrays[k], index))
             return false;
+    for (int k = 1; k < INTERP_TEX_UNITS; k++)
+        if (ip->unit_tc[k].set && !element(&ip->unit_tc[k], index))
+            return false;
     return true;
 }
 
@@ -153,12 +160,18 @@ static void array_element(interp *ip, uint32_t index)
     const uint8_t *p;
     if ((p = element(&arr[ARR_EDGEFLAG], index)))
         a->current.edge_flag = p[0] != 0;
+    static const float def[4] = {0, 0, 0, 1};
     if ((p = element(&arr[ARR_TEXCOORD], index))) {
-        static const float def[4] = {0, 0, 0, 1};
         for (int k = 0; k < 4; k++)
             a->current.texcoord[k] = k < arr[ARR_TEXCOORD].size
                                          ? (float)component(p, arr[ARR_TEXCOORD].type, k)
                                          : def[k];
+    }
+    for (int u = 1; u < INTERP_TEX_UNITS; u++) {
+        const struct interp_array_data *t = &ip->unit_tc[u];
+        if ((p = element(t, index)))
+            for (int k = 0; k < 4; k++)
+                ip->st.unit_texcoord[u][k] = k < t->size ? (float)component(p, t->type, k) : def[k];
     }
     if ((p = element(&arr[ARR_COLOR], index))) {
         GLenum t = arr[ARR_COLOR].type;

@@ -82,6 +82,8 @@ struct interp {
     mat4 prim_to_eye;   /* object -> camera eye space for this primitive */
     bool prim_in_eye;   /* prim_to_eye is applied to the vertices themselves */
     uint8_t prim_blend; /* SCENE_BLEND_* of the primitive */
+    int draw_unit[2];   /* the draw's first two enabled texture units, or -1 */
+    bool prim_tex_from1; /* the look's texture is draw_unit[1]'s (tex1 coordinates) */
     bool prim_blend_mapped; /* its vertex colours carry another blend function as transmit */
     mat4 prim_clip;     /* object -> clip space of the primitive's own projection */
     uint8_t *edge;      /* edge flag of each vertex of the primitive */
@@ -115,6 +117,10 @@ struct interp {
         const uint8_t *data;
         size_t bytes;
     } arrays[5];
+    /* Texture coordinates of units 1.. (units[0] unused: arrays[3] is
+     * unit 0's): an @ArrayData of GL_TEXTURE_COORD_ARRAY fills the client
+     * active unit's. */
+    struct interp_array_data unit_tc[INTERP_TEX_UNITS];
 
     /* The GL lights and fog the frame's scene holds (those of its first lit
      * or fogged draw), to notice when a later draw uses others. */
@@ -315,13 +321,33 @@ void interp_eval_surface(const double *pts, int uorder, int vorder, uint32_t k, 
                          double v, double *out, double *du, double *dv);
 
 /* The texture index (in the scene) that a draw with the current state
- * samples, or -1 (interp_texture.c). */
+ * samples, or -1 (interp_texture.c): its first enabled unit's. */
 int32_t interp_texture_for_draw(interp *ip);
+/* The same for texture unit k, or -1 when it is disabled or incomplete. */
+int32_t interp_texture_for_unit(interp *ip, int k);
+
+/* Texture units (interp_multitex.c). A unit's state as a draw reads it,
+ * wherever it is kept (pointers into ip->st, valid until the next
+ * command). */
+typedef struct interp_tex_unit {
+    const struct gl_texture_unit *texture;
+    const uint8_t *caps; /* INTERP_CAP_TEXTURE_1D .. _GEN_Q, from 0 */
+    const mat4 *matrix;  /* top of the unit's texture stack */
+    const float *texcoord; /* current coordinates */
+} interp_tex_unit;
+interp_tex_unit interp_unit(interp *ip, uint32_t k);
+/* Sets ip->draw_unit from the enables (notes a third enabled unit). */
+void interp_draw_units(interp *ip);
+/* Initial unit state, after the rest of st is (interp_default_state). */
+void interp_multitex_defaults(gl_state *st);
+/* Texture object `name` is deleted: parked units bound to it bind 0. */
+void interp_multitex_unbind(interp *ip, uint32_t name);
 
 /* The texture coordinates GL gives a vertex at object position obj (w = 1
  * after division) with normal nrm: texgen, then the texture matrix, then
  * division by q (interp_texture.c). */
-void interp_vertex_texcoord(interp *ip, const double obj[4], const float nrm[3], float out[2]);
+void interp_vertex_texcoord(interp *ip, int unit, const double obj[4], const float nrm[3],
+                            float out[2]);
 /* The object -> eye transform a draw with modelview mv, projection proj and
  * viewport vp gets (remapped into the frame's camera as a draw does, but
  * without the painter's shift). False when no such transform exists. */

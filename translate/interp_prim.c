@@ -339,6 +339,7 @@ static void begin_mode(interp *ip, GLenum mode)
     ip->prim_skip = false;
     ip->prim_first = ip->scene->nverts;
     ip->prim_blend = blend_mode(ip, mode);
+    interp_draw_units(ip);
 }
 
 void interp_begin(interp *ip, const rgl_cmd *cmd)
@@ -451,9 +452,12 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
     else if (ip->prim_blend == SCENE_BLEND_INVISIBLE)
         v->color[3] = 0;
     float q = a->current.texcoord[3];
-    if (a->caps[INTERP_CAP_TEXTURE_2D] || a->caps[INTERP_CAP_TEXTURE_1D]) {
+    v->tex1[0] = v->tex1[1] = 0;
+    if (ip->draw_unit[0] >= 0) {
         double obj[4] = {x, y, z, 1};
-        interp_vertex_texcoord(ip, obj, v->normal, v->tex);
+        interp_vertex_texcoord(ip, ip->draw_unit[0], obj, v->normal, v->tex);
+        if (ip->draw_unit[1] >= 0)
+            interp_vertex_texcoord(ip, ip->draw_unit[1], obj, v->normal, v->tex1);
     } else if (q == 1 || q == 0 || !isfinite(q)) {
         v->tex[0] = a->current.texcoord[0];
         v->tex[1] = a->current.texcoord[1];
@@ -872,7 +876,25 @@ scene_look interp_current_look(interp *ip)
     look.material = look.lit ? interp_lit_material(ip) : -1;
     if (look.lit && look.material < 0)
         look.lit = 0;
-    look.texture = interp_texture_for_draw(ip);
+    look.texture = interp_texture_for_unit(ip, ip->draw_unit[0]);
+    look.texture1 = interp_texture_for_unit(ip, ip->draw_unit[1]);
+    if (look.texture1 >= 0) {
+        const scene_texture *t0 = look.texture >= 0 ? &ip->scene->textures[look.texture] : NULL;
+        const scene_texture *t1 = &ip->scene->textures[look.texture1];
+        if (t1->colour_is_texel) /* the second unit's texel replaces the first's result */
+            look.texture = -1;
+        else if ((t0 && !(t0->env_mode == GL_MODULATE && t1->env_mode == GL_MODULATE) &&
+                  !t0->colour_is_texel && (look.lit || !look.flat)) ||
+                 (t0 && look.blend != SCENE_BLEND_OPAQUE))
+            interp_note(ip, DIAG_NOTE_MULTITEX); /* see the note's text */
+    }
+    if (look.texture < 0 && look.texture1 >= 0) {
+        /* An incomplete (or replaced) first unit passes its input on: the
+         * second unit draws alone, with its coordinates in tex. */
+        look.texture = look.texture1;
+        look.texture1 = -1;
+        ip->prim_tex_from1 = true;
+    }
     look.names = interp_names_for_draw(ip);
     interp_scissor_look(ip, &look);
     return look;
@@ -959,7 +981,13 @@ static void end_primitive(interp *ip)
         vertices_to_eye(ip, n);
         as.check_bad = true;
     }
+    ip->prim_tex_from1 = false;
     scene_look look = interp_current_look(ip);
+    if (ip->prim_tex_from1)
+        for (size_t i = 0; i < n; i++) {
+            scene_vertex *v = &s->verts[ip->prim_first + i];
+            memcpy(v->tex, v->tex1, sizeof v->tex);
+        }
     if (look.lit)
         check_normals(ip, n);
     mat4 id = mat4_identity();

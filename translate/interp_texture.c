@@ -50,12 +50,15 @@ struct interp_textures {
     namemap names; /* name -> index in objs */
     tex_obj zero[2];         /* object 0 of GL_TEXTURE_1D, GL_TEXTURE_2D */
     int32_t unpack[8];       /* glPixelStorei values, by pname - GL_UNPACK_SWAP_BYTES */
-    /* The last draw's scene texture, to skip rebuilding it per primitive. */
-    const tex_image *cached_img;
-    scene_texture cached;
-    int32_t cached_index;
-    const scene *cached_scene;
-    size_t cached_ntex;
+    /* The last draw's scene texture, to skip rebuilding it per primitive:
+     * one per drawn unit (a draw's first and second). */
+    struct tex_cache {
+        const tex_image *img;
+        scene_texture st;
+        int32_t index;
+        const scene *sc;
+        size_t ntex;
+    } cache[2];
     /* Sphere map: the modelview whose inverse transpose is in nrm_mat. */
     mat4 nrm_of, nrm_mat;
     bool nrm_ok;
@@ -91,7 +94,7 @@ static interp_textures *textures(interp *ip)
     t->zero[0].target = GL_TEXTURE_1D;
     t->zero[1].target = GL_TEXTURE_2D;
     t->unpack[GL_UNPACK_ALIGNMENT - GL_UNPACK_SWAP_BYTES] = 4;
-    t->cached_index = -1;
+    t->cache[0].index = t->cache[1].index = -1;
     ip->tex = t;
     return t;
 }
@@ -162,6 +165,7 @@ void interp_deletetextures(interp *ip, const rgl_cmd *cmd)
             ip->st.a.texture.binding_1d = 0;
         if (ip->st.a.texture.binding_2d == name)
             ip->st.a.texture.binding_2d = 0;
+        interp_multitex_unbind(ip, name);
     }
 }
 
@@ -854,9 +858,8 @@ int interp_textures_copy(interp *dst, const interp *src)
         tr_free(t);
         return -1;
     }
-    t->cached_img = NULL;
-    t->cached_index = -1;
-    t->cached_scene = NULL;
+    memset(t->cache, 0, sizeof t->cache);
+    t->cache[0].index = t->cache[1].index = -1;
     t->nrm_ok = false;
     if (s->n && tr_grow((void **)&t->objs, &t->cap, s->n, sizeof *t->objs) != 0) {
         namemap_finish(&t->names);
@@ -911,14 +914,15 @@ static bool complete(const tex_obj *o)
     return true;
 }
 
-/* The texture unit's enabled target: GL_TEXTURE_2D wins over 1D. */
-static tex_obj *draw_obj(interp *ip)
+#define UCAP(name) (INTERP_CAP_##name - INTERP_CAP_TEXTURE_1D)
+
+/* The unit's enabled target: GL_TEXTURE_2D wins over 1D. */
+static tex_obj *draw_obj(interp *ip, const interp_tex_unit *u)
 {
-    const uint8_t *c = ip->st.a.caps;
-    if (c[INTERP_CAP_TEXTURE_2D])
-        return bound_obj(ip, GL_TEXTURE_2D, false);
-    if (c[INTERP_CAP_TEXTURE_1D])
-        return bound_obj(ip, GL_TEXTURE_1D, false);
+    if (u->caps[UCAP(TEXTURE_2D)])
+        return get_obj(ip, GL_TEXTURE_2D, u->texture->binding_2d, false);
+    if (u->caps[UCAP(TEXTURE_1D)])
+        return get_obj(ip, GL_TEXTURE_1D, u->texture->binding_1d, false);
     return NULL;
 }
 
@@ -926,12 +930,18 @@ static bool clamps(GLenum wrap) { return wrap != GL_REPEAT && wrap != GL_MIRRORE
 
 int32_t interp_texture_for_draw(interp *ip)
 {
-    if (!ip->scene)
+    interp_draw_units(ip);
+    return ip->draw_unit[0] >= 0 ? interp_texture_for_unit(ip, ip->draw_unit[0]) : -1;
+}
+
+int32_t interp_texture_for_unit(interp *ip, int k)
+{
+    if (!ip->scene || k < 0 || k >= INTERP_TEX_UNITS)
         return -1;
-    const uint8_t *c = ip->st.a.caps;
-    if (!c[INTERP_CAP_TEXTURE_2D] && !c[INTERP_CAP_TEXTURE_1D])
+    interp_tex_unit u = interp_unit(ip, (uint32_t)k);
+    if (!u.caps[UCAP(TEXTURE_2D)] && !u.caps[UCAP(TEXTURE_1D)])
         return -1;
-    tex_obj *o = draw_obj(ip);
+    tex_obj *o = draw_obj(ip, &u);
     if (o && o->lost) {
         char what[DIAG_TEXT];
         snprintf(what, sizeof what, "texture %u (pixels #%u unreadable)", o->name, o->lost);
@@ -939,9 +949,11 @@ int32_t interp_texture_for_draw(interp *ip)
     }
     if (!o || !complete(o))
         return -1;
-    const gl_attribs *a = &ip->st.a;
-    GLenum env = a->texture.env_mode;
-    if (env != GL_MODULATE && env != GL_REPLACE && env != GL_DECAL) {
+    GLenum env = u.texture->env_mode;
+    /* A second unit's ADD and BLEND are combined (povwrite's multitexture
+     * pigment); a lone unit draws them as MODULATE. */
+    bool chained = ip->draw_unit[1] == k && (env == GL_ADD || env == GL_BLEND);
+    if (env != GL_MODULATE && env != GL_REPLACE && env != GL_DECAL && !chained) {
         interp_note(ip, DIAG_NOTE_TEXTURE);
         env = GL_MODULATE;
     }
@@ -961,7 +973,7 @@ int32_t interp_texture_for_draw(interp *ip)
                   (o->wrap_t == GL_CLAMP || o->wrap_t == GL_CLAMP_TO_BORDER);
     memcpy(st.border, o->border, sizeof st.border);
     st.env_mode = env;
-    memcpy(st.env_color, a->texture.env_color, sizeof st.env_color);
+    memcpy(st.env_color, u.texture->env_color, sizeof st.env_color);
     /* Table 3.22: REPLACE takes the texel's colour unless the texture has
      * only alpha; DECAL of RGB (and, undefined in GL, of the luminance
      * formats, which Mesa treats as RGB) takes it outright. */
@@ -969,14 +981,14 @@ int32_t interp_texture_for_draw(interp *ip)
     st.colour_is_texel = (env == GL_REPLACE && b != GL_ALPHA) ||
                          (env == GL_DECAL && b != GL_RGBA && b != GL_ALPHA);
 
-    interp_textures *t = ip->tex;
-    if (t->cached_img == o->img && t->cached_scene == ip->scene &&
-        t->cached_index >= 0 && (size_t)t->cached_index < ip->scene->ntextures &&
-        t->cached_ntex <= ip->scene->ntextures) {
-        const scene_texture *have = &ip->scene->textures[t->cached_index];
+    struct tex_cache *tc = &ip->tex->cache[ip->draw_unit[1] == k];
+    if (tc->img == o->img && tc->sc == ip->scene &&
+        tc->index >= 0 && (size_t)tc->index < ip->scene->ntextures &&
+        tc->ntex <= ip->scene->ntextures) {
+        const scene_texture *have = &ip->scene->textures[tc->index];
         st.rgba = have->rgba;
-        if (memcmp(&st, have, sizeof st) == 0 && memcmp(&st, &t->cached, sizeof st) == 0)
-            return t->cached_index;
+        if (memcmp(&st, have, sizeof st) == 0 && memcmp(&st, &tc->st, sizeof st) == 0)
+            return tc->index;
     }
     size_t n = (size_t)st.width * (size_t)st.height * 4;
     if (!interp_budget_texels(ip, n))
@@ -989,11 +1001,11 @@ int32_t interp_texture_for_draw(interp *ip)
     memcpy(st.rgba, o->img->rgba, n);
     int32_t idx = scene_add_texture(ip->scene, &st);
     if (idx >= 0) {
-        t->cached_img = o->img;
-        t->cached_scene = ip->scene;
-        t->cached_index = idx;
-        t->cached_ntex = ip->scene->ntextures;
-        t->cached = ip->scene->textures[idx];
+        tc->img = o->img;
+        tc->sc = ip->scene;
+        tc->index = idx;
+        tc->ntex = ip->scene->ntextures;
+        tc->st = ip->scene->textures[idx];
     }
     return idx;
 }
@@ -1012,14 +1024,15 @@ static bool normal_matrix(interp_textures *t, const mat4 *mv)
     return true;
 }
 
-void interp_vertex_texcoord(interp *ip, const double obj[4], const float nrm[3], float out[2])
+void interp_vertex_texcoord(interp *ip, int unit, const double obj[4], const float nrm[3],
+                            float out[2])
 {
-    const gl_attribs *a = &ip->st.a;
-    double tc[4] = {a->current.texcoord[0], a->current.texcoord[1], a->current.texcoord[2],
-                    a->current.texcoord[3]};
-    const uint8_t *caps = a->caps;
-    bool gen[4] = {caps[INTERP_CAP_TEXTURE_GEN_S], caps[INTERP_CAP_TEXTURE_GEN_T],
-                   caps[INTERP_CAP_TEXTURE_GEN_R], caps[INTERP_CAP_TEXTURE_GEN_Q]};
+    interp_tex_unit u = interp_unit(ip, (uint32_t)unit);
+    const struct gl_texture_unit *ts = u.texture;
+    double tc[4] = {u.texcoord[0], u.texcoord[1], u.texcoord[2], u.texcoord[3]};
+    const uint8_t *caps = ip->st.a.caps;
+    bool gen[4] = {u.caps[UCAP(TEXTURE_GEN_S)], u.caps[UCAP(TEXTURE_GEN_T)],
+                   u.caps[UCAP(TEXTURE_GEN_R)], u.caps[UCAP(TEXTURE_GEN_Q)]};
     if (gen[0] || gen[1] || gen[2] || gen[3]) {
         const mat4 *mv = interp_matrix(ip, INTERP_MV);
         double eye[4];
@@ -1029,10 +1042,9 @@ void interp_vertex_texcoord(interp *ip, const double obj[4], const float nrm[3],
         for (int c = 0; c < 4; c++) {
             if (!gen[c])
                 continue;
-            GLenum m = a->texture.gen_mode[c];
+            GLenum m = ts->gen_mode[c];
             if (m == GL_OBJECT_LINEAR || m == GL_EYE_LINEAR) {
-                const double *p = m == GL_OBJECT_LINEAR ? a->texture.obj_plane[c]
-                                                        : a->texture.eye_plane[c];
+                const double *p = m == GL_OBJECT_LINEAR ? ts->obj_plane[c] : ts->eye_plane[c];
                 const double *v = m == GL_OBJECT_LINEAR ? obj : eye;
                 tc[c] = p[0] * v[0] + p[1] * v[1] + p[2] * v[2] + p[3] * v[3];
                 continue;
@@ -1076,9 +1088,8 @@ void interp_vertex_texcoord(interp *ip, const double obj[4], const float nrm[3],
             }
         }
     }
-    const mat4 *tm = interp_matrix(ip, INTERP_TEX);
     double r[4];
-    mat4_apply(tm, tc, r);
+    mat4_apply(u.matrix, tc, r);
     double q = r[3];
     if (q == 0 || !isfinite(q))
         q = 1;

@@ -25,6 +25,7 @@
 #include "dedup.h"
 #include "povwrite_light.h"
 #include "povwrite_solid.h"
+#include "povwrite_multitex.h"
 #include "povwrite_texture.h"
 #include "talloc.h"
 
@@ -76,6 +77,7 @@ struct povwriter {
     double *eye;         /* per pool vertex of the mesh: its eye-space position */
     size_t cap_eye;
     povtex tex;          /* the frame's texture images */
+    unsigned mt_count;   /* the frame's multitexture functions, for their names */
     const float **vcorner; /* colour image: 3 corner colours per kept face */
     size_t cap_vcorner;
     float *vuv; /* colour image: 3 uv per kept face */
@@ -385,14 +387,26 @@ static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const
  * provoking vertex's normal at its three corners (GL lights the whole face
  * with it), so its corners are looked up per face. Colours are shared
  * separately, as texture_list entries. Returns -1 on memory failure. */
-static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
-                       const scene_tri *tris, size_t nt, const scene_look *look,
-                       const mat4 *to_eye)
+static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
+                            const scene_tri *tris, size_t nt, const scene_look *look,
+                            const mat4 *to_eye, const double *mt_map)
 {
     const scene *sc = w->light.s;
     const scene_texture *tx = look->texture >= 0 && sc && (size_t)look->texture < sc->ntextures
                                   ? &sc->textures[look->texture]
                                   : NULL;
+    /* A second unit (mt_map: its coordinates from the first's): the pair
+     * is one pigment, which the fragment colour multiplies (both
+     * GL_MODULATE) or which is the colour (povmt_texel). */
+    const scene_texture *tx0 = tx, *tx1 = NULL;
+    scene_texture txc;
+    if (tx && mt_map) {
+        tx1 = &sc->textures[look->texture1];
+        txc = *tx;
+        txc.env_mode = GL_MODULATE;
+        txc.colour_is_texel = povmt_texel(tx, tx1);
+        tx = &txc;
+    }
     bool normals = look->lit;
     bool flat_normals = look->lit && look->flat;
     bool vimage = !tx && colour_image_ok(w, verts, tris, nt, look);
@@ -442,15 +456,37 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
             }
         /* The texels' alpha: DECAL blends by it; under blending it is the
          * fragment's (MODULATE, and REPLACE of RGBA), POV-Ray's transmit. */
-        bool keep_alpha = (tx->env_mode == GL_DECAL && !tx->colour_is_texel) ||
+        bool keep_alpha = (tx0->env_mode == GL_DECAL && !tx0->colour_is_texel) ||
                           look->blend == SCENE_BLEND_ALPHA;
         img = povtex_map(&w->tex, sc, look->texture, uvlo, uvhi, keep_alpha, uv_scale, uv_off);
         if (img < 0)
             return -1;
     }
-    char pigment[POVTEX_PIGMENT_MAX] = "";
-    if (tx && povtex_pigment(&w->tex, (size_t)img, tx, pigment) == 0)
+    char pigment[POVMT_PIGMENT_MAX] = "";
+    if (tx && !tx1 && povtex_pigment(&w->tex, (size_t)img, tx, pigment) == 0)
         return -1;
+    if (tx1) {
+        float lo1[2] = {INFINITY, INFINITY}, hi1[2] = {-INFINITY, -INFINITY};
+        for (size_t i = 0; i < nt; i++)
+            for (int k = 0; k < 3; k++) {
+                const float *uv = verts[tris[i].v[k]].tex;
+                for (int a = 0; a < 2; a++) {
+                    double u1 = mt_map[3 * a] * uv[0] + mt_map[3 * a + 1] * uv[1] + mt_map[3 * a + 2];
+                    if (isfinite(u1)) {
+                        lo1[a] = (float)u1 < lo1[a] ? (float)u1 : lo1[a];
+                        hi1[a] = (float)u1 > hi1[a] ? (float)u1 : hi1[a];
+                    }
+                }
+            }
+        float s1[2], o1[2];
+        int img1 = povtex_map(&w->tex, sc, look->texture1, lo1, hi1, tx1->env_mode == GL_DECAL, s1, o1);
+        const scene_tri *t0 = &tris[0];
+        const float *cf = verts[look->flat ? t0->provoking : t0->v[0]].color;
+        if (img1 < 0 || povmt_pigment(ob, &w->tex, (size_t)img, (size_t)img1, tx0, tx1, uv_scale,
+                                      uv_off, s1, o1, mt_map, cf, w->mt_count++, pigment,
+                                      sizeof pigment) != 0)
+            return -1;
+    }
 
     /* Colours repeat in runs: remember the last one looked up. */
     uint32_t last_col[4] = {0}, last_ci = DEDUP_NONE;
@@ -782,6 +818,27 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
     return 0;
 }
 
+/* A mesh: with two texture units, one mesh2 per run of triangles whose
+ * second coordinates are one function of their first (povmt_run). */
+static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
+                       const scene_tri *tris, size_t nt, const scene_look *look,
+                       const mat4 *to_eye)
+{
+    const scene *sc = w->light.s;
+    if (look->texture < 0 || look->texture1 < 0 || !sc || (size_t)look->texture >= sc->ntextures ||
+        (size_t)look->texture1 >= sc->ntextures)
+        return write_mesh2_part(w, ob, verts, tris, nt, look, to_eye, NULL);
+    while (nt > 0) {
+        double map[6];
+        size_t run = povmt_run(verts, tris, nt, map);
+        if (write_mesh2_part(w, ob, verts, tris, run, look, to_eye, map) != 0)
+            return -1;
+        tris += run;
+        nt -= run;
+    }
+    return 0;
+}
+
 /* ---- Lines and points ---------------------------------------------------------------- */
 
 /* Appends a flat quad (corners in order, colours per corner) to the band
@@ -810,7 +867,7 @@ static int write_bands(povwriter *w, outbuf *ob)
 {
     scene_look look;
     memset(&look, 0, sizeof look);
-    look.material = look.texture = -1;
+    look.material = look.texture = look.texture1 = -1;
     for (size_t i = 0; i < w->nbverts; i++)
         if (w->bverts[i].color[3] < 1)
             look.blend = SCENE_BLEND_ALPHA;
@@ -1083,6 +1140,7 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
 
     povlight_begin(&w->light, s, info ? info->options : NULL);
     povtex_reset(&w->tex);
+    w->mt_count = 0;
     bool no_shadows = w->light.opt.no_shadows;
     if (write_protos(w, ob, s) != 0)
         return -1;

@@ -41,6 +41,7 @@ typedef struct scene_vertex {
     float normal[3];
     float color[4];
     float tex[2];
+    float tex1[2]; /* of the look's second texture (texture1) */
 } scene_vertex;
 
 /* A triangle: absolute vertex indices in the pool, front face first in GL's
@@ -65,6 +66,8 @@ typedef struct scene_look {
                           its place in scene.names (scene_names), 0: empty */
     int32_t scissor[4]; /* x, y, width, height in pixels of the camera's
                            image (origin at its lower left), when scissored */
+    int32_t texture1;  /* a second texture unit's, combined with the result of
+                          the first by its env_mode (GL 2.1 3.8.13), or -1 */
 } scene_look;
 
 /* A run of triangles sharing transform and look: one mesh2 in SDL. */

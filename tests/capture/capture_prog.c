@@ -28,7 +28,7 @@
  *   --ignore-term       ignore SIGTERM (raygl record --exit then kills)
  *   --unrecorded        each frame also makes calls RayGL passes through
  *                       unrecorded (glIndexi, glIndexMask,
- *                       glActiveTexture found with
+ *                       glBlendColor found with
  *                       glXGetProcAddressARB) and queries (glGetError,
  *                       glGetIntegerv, glIsEnabled); with --api glut
  *                       also bitmap text after the triangle
@@ -128,10 +128,11 @@ static void unrecorded_calls(void)
 {
     glIndexi(0);
     glIndexMask(~0u);
-    void (*active)(GLenum) =
-        (void (*)(GLenum))glXGetProcAddressARB((const GLubyte *)"glActiveTexture");
-    if (active)
-        active(GL_TEXTURE0);
+    void (*blend_color)(GLfloat, GLfloat, GLfloat, GLfloat) =
+        (void (*)(GLfloat, GLfloat, GLfloat, GLfloat))glXGetProcAddressARB(
+            (const GLubyte *)"glBlendColor");
+    if (blend_color)
+        blend_color(0, 0, 0, 0);
     GLint v[4];
     glGetIntegerv(GL_VIEWPORT, v);
     (void)glIsEnabled(GL_LIGHTING);

@@ -304,6 +304,43 @@ static int write_select(const char *dir)
     return write_file(dir, "select-scissor.bin", seq, eval_len);
 }
 
+/* ---- Multitexture: two units, their state, coordinates and arrays ---------------- */
+
+static int write_mtex(const char *dir)
+{
+    static const double quad[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+    static const double st1[8] = {0.1, 0, 1, 0.2, 0.9, 1, 0, 0.8};
+    eval_len = 0;
+    EV(Ortho, -1, 2, -1, 2, -1, 1);
+    EV(ActiveTexture, 0x84C1); /* GL_TEXTURE1 */
+    EV(Enable, 0x0DE1);        /* GL_TEXTURE_2D */
+    EV(TexEnvi, 0x2300, 0x2200, 0x0104); /* GL_ADD */
+    EV(TexGeni, 0x2000, 0x2500, 0x2401); /* s: GL_OBJECT_LINEAR */
+    EV(Enable, 0x0C60);
+    EV(MatrixMode, 0x1702);
+    EV(Rotatef, 30, 0, 0, 1);
+    EV(MatrixMode, 0x1700);
+    EV(ActiveTextureARB, 0x84C0);
+    EV(Enable, 0x0DE1);
+    EV(ActiveTexture, 0x84E0); /* GL_TEXTURE0 + 32: refused */
+    EV(Begin, 0x0007);
+    EV(MultiTexCoord2f, 0x84C1, 0, 1);
+    EV(MultiTexCoord4dvARB, 0x84C0, 1, 2, 3, 1);
+    EV(MultiTexCoord1s, 0x84C2, 3);
+    EV(Vertex2f, 0, 0);
+    EV(MultiTexCoord3iv, 0x84C1, 1, 0, 0);
+    EV(Vertex2f, 1, 0);
+    EV(Vertex2f, 1, 1);
+    EV(Vertex2f, 0, 1);
+    eval_cmd(RGL_OP_End, NULL, 0, NULL, 0);
+    EV(ClientActiveTexture, 0x84C1);
+    eval_cmd(RGL_OP_ArrayData, (const double[]){0x8078, 0, 2, 0x1406}, 4, st1, 8);
+    EV(ClientActiveTextureARB, 0x84C0);
+    eval_cmd(RGL_OP_ArrayData, (const double[]){0x8074, 0, 2, 0x1406}, 4, quad, 8);
+    EV(DrawArrays, 0x0007, 0, 4);
+    return write_file(dir, "mtex.bin", seq, eval_len);
+}
+
 int main(int argc, char **argv)
 {
     rng r = {0x5eed5eed12345678ull};
@@ -329,5 +366,6 @@ int main(int argc, char **argv)
     rc |= write_pixels(argv[1]);
     rc |= write_accum(argv[1]);
     rc |= write_select(argv[1]);
+    rc |= write_mtex(argv[1]);
     return rc;
 }

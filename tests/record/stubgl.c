@@ -199,6 +199,8 @@ void glInterleavedArrays(GLenum format, GLsizei stride, const GLvoid *pointer)
     arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], pointer);
 }
 void glEnableClientState(GLenum array) { LOGV("glEnableClientState", array); }
+void glClientActiveTexture(GLenum texture) { LOGV("glClientActiveTexture", texture); }
+void glClientActiveTextureARB(GLenum texture) { LOGV("glClientActiveTextureARB", texture); }
 void glDisableClientState(GLenum array) { LOGV("glDisableClientState", array); }
 
 static char quadrics[16];

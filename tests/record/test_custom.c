@@ -642,3 +642,58 @@ void test_raster(const char *dir)
         CHECK(res.size == 6 && res.data[0] == 10 && res.data[5] == 15);
     rgl_reader_destroy(r);
 }
+
+/* Texture-coordinate arrays per client unit: glClientActiveTexture is
+ * recorded and forwarded (a unit past GL's refused: forwarded only), each
+ * enabled unit's @ArrayData follows a glClientActiveTexture record naming
+ * it, and the program's client unit is named again after them. */
+void test_multitex_arrays(const char *dir)
+{
+    char path[128];
+    snprintf(path, sizeof path, "%s/multitex.raygl", dir);
+    CHECK(rayglRecordOpen(path) == 0);
+    static const float v[4] = {1, 2, 3, 4}, t0[4] = {5, 6, 7, 8}, t1[2] = {9, 10};
+    rayglVertexPointer(2, GL_FLOAT, 0, v);
+    rayglEnableClientState(GL_VERTEX_ARRAY);
+    rayglTexCoordPointer(2, GL_FLOAT, 0, t0);
+    rayglEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    rayglClientActiveTexture(GL_TEXTURE2);
+    rayglTexCoordPointer(1, GL_FLOAT, 0, t1);
+    rayglEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    stub_reset();
+    rayglClientActiveTextureARB(GL_TEXTURE0 + 40);
+    CHECK(stub_nlog == 1 && strcmp(stub_log[0].name, "glClientActiveTextureARB") == 0);
+    rayglDrawArrays(GL_POINTS, 0, 2);
+    rayglFrameEnd();
+    /* Back to the initial client state for the tests after this one. */
+    rayglDisableClientState(GL_TEXTURE_COORD_ARRAY);
+    rayglClientActiveTexture(GL_TEXTURE0);
+    rayglDisableClientState(GL_TEXTURE_COORD_ARRAY);
+    rayglDisableClientState(GL_VERTEX_ARRAY);
+    rayglRecordClose();
+
+    rgl_reader *r = trace_open(path);
+    if (!r)
+        return;
+    rgl_frame_info fi;
+    static const char *const f0[] = {
+        "glVertexPointer(size=2, type=GL_FLOAT, stride=0)",
+        "glEnableClientState(array=GL_VERTEX_ARRAY)",
+        "glTexCoordPointer(size=2, type=GL_FLOAT, stride=0)",
+        "glEnableClientState(array=GL_TEXTURE_COORD_ARRAY)",
+        "glClientActiveTexture(texture=GL_TEXTURE2)",
+        "glTexCoordPointer(size=1, type=GL_FLOAT, stride=0)",
+        "glEnableClientState(array=GL_TEXTURE_COORD_ARRAY)",
+        "@ArrayData(array=GL_VERTEX_ARRAY, first=0, size=2, type=GL_FLOAT, data=<16 bytes>)",
+        "glClientActiveTexture(texture=GL_TEXTURE0)",
+        "@ArrayData(array=GL_TEXTURE_COORD_ARRAY, first=0, size=2, type=GL_FLOAT, data=<16 bytes>)",
+        "glClientActiveTexture(texture=GL_TEXTURE2)",
+        "@ArrayData(array=GL_TEXTURE_COORD_ARRAY, first=0, size=1, type=GL_FLOAT, data=<8 bytes>)",
+        "glDrawArrays(mode=GL_POINTS, first=0, count=2)",
+        "rayglFrameEnd()",
+    };
+    trace_cmds c = trace_frame(r, 0, &fi);
+    expect_lines(&c, f0, sizeof f0 / sizeof f0[0], "multitexture frame");
+    trace_cmds_free(&c);
+    rgl_reader_destroy(r);
+}

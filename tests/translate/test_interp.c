@@ -925,6 +925,105 @@ static void test_skipped(void)
     interp_destroy(ip);
 }
 
+/* Texture units: state calls change the active unit's, glMultiTexCoord
+ * one unit's coordinates (glTexCoord unit 0's), a bad unit changes
+ * nothing, client arrays of texture coordinates belong to the client
+ * unit, and a draw gives vertices both enabled units' coordinates. */
+static void test_multitex(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, TexEnvi, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    CMD(&s, ActiveTexture, GL_TEXTURE1);
+    CMD(&s, TexEnvi, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);
+    CMD(&s, Enable, GL_TEXTURE_2D);
+    CMD(&s, Enable, GL_TEXTURE_GEN_S);
+    CMD(&s, TexGeni, GL_S, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR);
+    CMD(&s, MatrixMode, GL_TEXTURE);
+    CMD(&s, Translatef, 0.5, 0, 0);
+    CMD(&s, MatrixMode, GL_MODELVIEW);
+    CMD(&s, ActiveTexture, GL_TEXTURE0 + 40); /* refused: unit 1 stays active */
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 1);
+    CHECK_EQ_U(ip->st.active_unit, 1);
+    CHECK_EQ_U(ip->st.a.texture.env_mode, GL_ADD);
+    seq_init(&s);
+    CMD(&s, ActiveTextureARB, GL_TEXTURE0);
+    CMD(&s, MultiTexCoord2f, GL_TEXTURE1, 0.25, 0.75);
+    CMD(&s, MultiTexCoord3dvARB, GL_TEXTURE0, 1, 2, 3);
+    run(ip, &s);
+    CHECK_EQ_U(ip->st.active_unit, 0);
+    CHECK_EQ_U(ip->st.a.texture.env_mode, GL_REPLACE);
+    CHECK(!ip->st.a.caps[INTERP_CAP_TEXTURE_2D] && !ip->st.a.caps[INTERP_CAP_TEXTURE_GEN_S]);
+    CHECK_NEAR(interp_matrix(ip, INTERP_TEX)->m[12], 0, 0);
+    CHECK_EQ_U(ip->st.units[1].texture.env_mode, GL_ADD);
+    CHECK_EQ_U(ip->st.units[1].texture.gen_mode[0], GL_OBJECT_LINEAR);
+    CHECK_NEAR(ip->st.units[1].matrix[0].m[12], 0.5, 0);
+    CHECK_NEAR(ip->st.unit_texcoord[1][0], 0.25, 0);
+    CHECK_NEAR(ip->st.unit_texcoord[1][1], 0.75, 0);
+    CHECK_NEAR(ip->st.unit_texcoord[1][3], 1, 0);
+    CHECK_NEAR(ip->st.a.current.texcoord[2], 3, 0);
+
+    /* A draw: unit 1 (enabled, texgen s = x, then + 0.5) gives tex1 even
+     * with no texture bound (the look then has none). */
+    seq_init(&s);
+    CMD(&s, Enable, GL_TEXTURE_2D);
+    CMD(&s, Begin, GL_TRIANGLES);
+    CMD(&s, MultiTexCoord2f, GL_TEXTURE0, 0.1, 0.2);
+    CMD(&s, MultiTexCoord2f, GL_TEXTURE1, 0, 0.3);
+    CMD(&s, Vertex2f, 2, 0);
+    CMD(&s, Vertex2f, 3, 0);
+    CMD(&s, Vertex2f, 2, 1);
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(sc.nverts, 3);
+    if (sc.nverts == 3) {
+        CHECK_NEAR(sc.verts[0].tex[0], 0.1, 1e-6);
+        CHECK_NEAR(sc.verts[0].tex[1], 0.2, 1e-6);
+        CHECK_NEAR(sc.verts[1].tex1[0], 3.5, 1e-6); /* object x, then the unit's matrix */
+        CHECK_NEAR(sc.verts[1].tex1[1], 0.3, 1e-6);
+    }
+
+    /* Arrays: the @ArrayData after glClientActiveTexture(GL_TEXTURE1) is
+     * unit 1's; unit 0 keeps its own. */
+    seq_init(&s);
+    static const float st1[6] = {5, 6, 7, 8, 9, 10}, st0[6] = {1, 1, 2, 2, 3, 3};
+    static const float xy[6] = {0, 0, 1, 0, 0, 1};
+    CMD(&s, ActiveTexture, GL_TEXTURE1);
+    CMD(&s, Disable, GL_TEXTURE_GEN_S);
+    CMD(&s, ActiveTexture, GL_TEXTURE0);
+    CMD(&s, ClientActiveTexture, GL_TEXTURE1);
+    seq_cmd_bytes(&s, RGL_OP_ArrayData, st1, sizeof st1,
+                  (const double[]){GL_TEXTURE_COORD_ARRAY, 0, 2, GL_FLOAT}, 4);
+    CMD(&s, ClientActiveTextureARB, GL_TEXTURE0);
+    seq_cmd_bytes(&s, RGL_OP_ArrayData, st0, sizeof st0,
+                  (const double[]){GL_TEXTURE_COORD_ARRAY, 0, 2, GL_FLOAT}, 4);
+    seq_cmd_bytes(&s, RGL_OP_ArrayData, xy, sizeof xy,
+                  (const double[]){GL_VERTEX_ARRAY, 0, 2, GL_FLOAT}, 4);
+    CMD(&s, DrawArrays, GL_TRIANGLES, 0, 3);
+    run(ip, &s);
+    CHECK_EQ_U(sc.nverts, 6);
+    if (sc.nverts == 6) {
+        CHECK_NEAR(sc.verts[5].tex[0], 3, 0);
+        CHECK_NEAR(sc.verts[5].tex1[0], 9.5, 1e-6);
+        CHECK_NEAR(sc.verts[5].tex1[1], 10, 0);
+    }
+
+    /* A third enabled unit is not drawn, and said so. */
+    CHECK_EQ_U(count(DIAG_NOTE_MULTITEX), 0);
+    seq_init(&s);
+    CMD(&s, ActiveTexture, GL_TEXTURE5);
+    CMD(&s, Enable, GL_TEXTURE_1D);
+    CMD(&s, Begin, GL_POINTS);
+    CMD(&s, Vertex2f, 0, 0);
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_NOTE_MULTITEX), 1);
+    CHECK(ip->draw_unit[0] == 0 && ip->draw_unit[1] == 1);
+    interp_destroy(ip);
+}
+
 /* The teapot: the exact patches when unlit, freeglut's 3,136 triangles
  * (32 patches of 7 x 7 cells) when the exact form does not apply, and its
  * 5,760 wire segments (32 patches, 10 lines of 9 segments each way), 36 of
@@ -1597,6 +1696,7 @@ int main(void)
     test_pixels_first();
     test_accum();
     test_secondary_notes();
+    test_multitex();
     scene_finish(&sc);
     return CHECK_RESULT("test_interp");
 }

@@ -521,6 +521,112 @@ static void test_images(void)
     free_res();
 }
 
+/* The SDL a scene is written as, in buf. */
+static char sdl[1 << 16];
+static size_t sdl_len;
+static int keep(void *user, const char *p, size_t n)
+{
+    (void)user;
+    if (sdl_len + n < sizeof sdl) {
+        memcpy(sdl + sdl_len, p, n);
+        sdl_len += n;
+        sdl[sdl_len] = 0;
+    }
+    return 0;
+}
+
+static size_t occurrences(const char *hay, const char *needle)
+{
+    size_t n = 0;
+    for (const char *p = hay; (p = strstr(p, needle)); p++)
+        n++;
+    return n;
+}
+
+/* Two units: the look holds both textures, the writer one pigment
+ * combining them (a function per image), one mesh2 per run of triangles
+ * whose unit 1 coordinates follow one affine map of unit 0's; a unit 0
+ * whose texture is incomplete passes its input on: unit 1 alone, with its
+ * own coordinates. */
+static void test_multitex(void)
+{
+    const uint8_t px[16] = {0, 255, 0, 255, 0, 255, 0, 255, 255, 0, 0, 255, 255, 0, 0, 255};
+    uint32_t id = add_bytes(px, 16);
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 100, 100);
+    setup(&s, GL_TEXTURE_2D, 1);
+    CMD(&s, TexImage2D, GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, id);
+    CMD(&s, ActiveTexture, GL_TEXTURE1);
+    setup(&s, GL_TEXTURE_2D, 2);
+    CMD(&s, TexImage2D, GL_TEXTURE_2D, 0, GL_RGB, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, id);
+    CMD(&s, TexEnvi, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);
+    /* Two triangles of one primitive: unit 1's coordinates one map of
+     * unit 0's over the first, another over the second: two runs. */
+    static const float q[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    CMD(&s, Begin, GL_TRIANGLES);
+    for (int i = 0; i < 3; i++) {
+        CMD(&s, MultiTexCoord2f, GL_TEXTURE0, q[i][0] * 2, q[i][1] * 2);
+        CMD(&s, MultiTexCoord2f, GL_TEXTURE1, q[i][1], q[i][0]);
+        CMD(&s, Vertex2f, q[i][0], q[i][1]);
+    }
+    for (int i = 1; i < 4; i++) {
+        CMD(&s, MultiTexCoord2f, GL_TEXTURE0, q[i][0], q[i][1]);
+        CMD(&s, MultiTexCoord2f, GL_TEXTURE1, q[i][0] * 3, q[i][1]);
+        CMD(&s, Vertex2f, q[i][0], q[i][1]);
+    }
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(sc.nmeshes, 1);
+    if (sc.nmeshes) {
+        CHECK(sc.meshes[0].look.texture >= 0 && sc.meshes[0].look.texture1 >= 0);
+        CHECK(sc.meshes[0].look.texture != sc.meshes[0].look.texture1);
+        if (sc.meshes[0].look.texture1 >= 0)
+            CHECK_EQ_U(sc.textures[sc.meshes[0].look.texture1].env_mode, GL_ADD);
+    }
+    interp_end_frame(ip);
+    povwriter *w = povwriter_create();
+    outbuf ob;
+    sdl_len = 0;
+    CHECK(outbuf_init(&ob, 1 << 12, keep, NULL) == 0);
+    CHECK(povwriter_scene(w, &ob, &sc, NULL) == 0);
+    CHECK(outbuf_flush(&ob) == 0);
+    CHECK_EQ_U(occurrences(sdl, "mesh2{"), 2);
+    CHECK_EQ_U(occurrences(sdl, "#declare rgl_mt0a=function{pigment{image_map{"), 1);
+    CHECK_EQ_U(occurrences(sdl, "#declare rgl_mt1b=function{pigment{image_map{"), 1);
+    CHECK_EQ_U(occurrences(sdl, "uv_mapping average pigment_map{"), 2);
+    CHECK(strstr(sdl, "min(1,") != NULL); /* GL_ADD clamps */
+    CHECK(strstr(sdl, "nan") == NULL && strstr(sdl, "inf") == NULL);
+    interp_destroy(ip);
+
+    /* Unit 0 enabled with no texture: unit 1 alone, on its coordinates. */
+    ip = fresh();
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 100, 100);
+    CMD(&s, Enable, GL_TEXTURE_2D);
+    CMD(&s, ActiveTexture, GL_TEXTURE1);
+    setup(&s, GL_TEXTURE_2D, 2);
+    CMD(&s, TexImage2D, GL_TEXTURE_2D, 0, GL_RGB, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, id);
+    CMD(&s, Begin, GL_TRIANGLES);
+    for (int i = 0; i < 3; i++) {
+        CMD(&s, MultiTexCoord2f, GL_TEXTURE1, 0.5, q[i][1]);
+        CMD(&s, Vertex2f, q[i][0], q[i][1]);
+    }
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(sc.nmeshes, 1);
+    if (sc.nmeshes) {
+        CHECK(sc.meshes[0].look.texture >= 0 && sc.meshes[0].look.texture1 < 0);
+        CHECK_NEAR(sc.verts[2].tex[0], 0.5, 0);
+        CHECK_NEAR(sc.verts[2].tex[1], 1, 0);
+    }
+    interp_destroy(ip);
+    povwriter_destroy(w);
+    outbuf_finish(&ob);
+    free_res();
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -530,6 +636,7 @@ int main(void)
     test_copies_lists();
     test_texgen();
     test_images();
+    test_multitex();
     scene_finish(&sc);
     return CHECK_RESULT("test_textures");
 }
