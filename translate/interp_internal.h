@@ -158,6 +158,15 @@ struct interp {
 /* ---- Arguments -------------------------------------------------------------- */
 
 /* A scalar argument as double (any wire type). */
+/* An enum passed as a float or double (glFogf(GL_FOG_MODE, ...),
+ * glTexParameterf): the value when it is one a GLenum holds, else
+ * 0xffffffff, which no enum is (a C cast of a negative or too large value
+ * is undefined behaviour; found by fuzz_translate). */
+static inline GLenum interp_enum_of(double v)
+{
+    return v >= 0 && v <= 4294967295.0 ? (GLenum)v : 0xffffffffu;
+}
+
 static inline double arg_num(const rgl_arg *a)
 {
     switch (a->type) {

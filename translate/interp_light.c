@@ -232,9 +232,9 @@ void interp_lightmodel(interp *ip, const rgl_cmd *cmd)
         if (!get_params(ip, cmd, 1, false, v))
             break;
         if (v[0] != (float)GL_SINGLE_COLOR && v[0] != (float)GL_SEPARATE_SPECULAR_COLOR)
-            interp_bad_enum(ip, "colour control", (uint32_t)v[0]);
+            interp_bad_enum(ip, "colour control", interp_enum_of(v[0]));
         else
-            ip->st.a.lighting.color_control = (GLenum)v[0];
+            ip->st.a.lighting.color_control = interp_enum_of(v[0]);
         break;
     default:
         interp_bad_enum(ip, "light model parameter", pname);
@@ -263,7 +263,7 @@ void interp_fog(interp *ip, const rgl_cmd *cmd)
         return;
     switch (pname) {
     case GL_FOG_MODE: {
-        GLenum m = (GLenum)v[0];
+        GLenum m = interp_enum_of(v[0]);
         if (m != GL_LINEAR && m != GL_EXP && m != GL_EXP2) {
             interp_bad_enum(ip, "fog mode", m);
             return;
@@ -286,10 +286,10 @@ void interp_fog(interp *ip, const rgl_cmd *cmd)
         break;
     case GL_FOG_COORD_SRC:
         if (v[0] != (float)GL_FOG_COORD && v[0] != (float)GL_FRAGMENT_DEPTH) {
-            interp_bad_enum(ip, "fog coordinate source", (uint32_t)v[0]);
+            interp_bad_enum(ip, "fog coordinate source", interp_enum_of(v[0]));
             return;
         }
-        ip->st.a.fog.coord_src = (GLenum)v[0];
+        ip->st.a.fog.coord_src = interp_enum_of(v[0]);
         break;
     default: break; /* colour index: no effect here */
     }

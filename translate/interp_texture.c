@@ -702,7 +702,7 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
             interp_bad_enum(ip, "texture target", target);
         return;
     }
-    GLenum e = (GLenum)v;
+    GLenum e = interp_enum_of(v);
     switch (pname) {
     case GL_TEXTURE_WRAP_S: case GL_TEXTURE_WRAP_T:
         if (e != GL_REPEAT && e != GL_CLAMP && e != GL_CLAMP_TO_EDGE &&
@@ -768,7 +768,7 @@ void interp_texenv(interp *ip, const rgl_cmd *cmd)
     }
     if (pname == GL_TEXTURE_ENV_MODE) {
         double v = pa->kind == RGL_ARG_SCALAR ? arg_num(pa) : (pa->count ? pa->array[0] : 0);
-        GLenum m = (GLenum)v;
+        GLenum m = interp_enum_of(v);
         if (m != GL_MODULATE && m != GL_REPLACE && m != GL_DECAL && m != GL_BLEND &&
             m != GL_ADD && m != GL_COMBINE) {
             interp_bad_enum(ip, "texture environment mode", m);
@@ -801,7 +801,7 @@ void interp_texgen(interp *ip, const rgl_cmd *cmd)
     int c = (int)(coord - GL_S);
     if (pname == GL_TEXTURE_GEN_MODE) {
         double v = pa->kind == RGL_ARG_SCALAR ? arg_num(pa) : (pa->count ? pa->array[0] : 0);
-        GLenum m = (GLenum)v;
+        GLenum m = interp_enum_of(v);
         bool ok = m == GL_OBJECT_LINEAR || m == GL_EYE_LINEAR ||
                   (m == GL_SPHERE_MAP && c < 2) ||
                   ((m == GL_NORMAL_MAP || m == GL_REFLECTION_MAP) && c < 3);
