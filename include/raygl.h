@@ -223,6 +223,27 @@ RAYGL_API void raygluPartialDisk(GLUquadric *quad, GLdouble inner, GLdouble oute
 RAYGL_API GLint raygluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width,
                                      GLsizei height, GLenum format, GLenum type, const void *data);
 
+/* GLU NURBS: the calls recorded as such (GLU draws them at gluEndSurface
+ * and gluEndCurve; its own GL calls are not recorded). */
+RAYGL_API GLUnurbs *raygluNewNurbsRenderer(void);
+RAYGL_API void raygluDeleteNurbsRenderer(GLUnurbs *nurb);
+RAYGL_API void raygluNurbsProperty(GLUnurbs *nurb, GLenum property, GLfloat value);
+RAYGL_API void raygluLoadSamplingMatrices(GLUnurbs *nurb, const GLfloat *model,
+                                          const GLfloat *perspective, const GLint *view);
+RAYGL_API void raygluBeginSurface(GLUnurbs *nurb);
+RAYGL_API void raygluEndSurface(GLUnurbs *nurb);
+RAYGL_API void raygluNurbsSurface(GLUnurbs *nurb, GLint sKnotCount, GLfloat *sKnots,
+                                  GLint tKnotCount, GLfloat *tKnots, GLint sStride, GLint tStride,
+                                  GLfloat *control, GLint sOrder, GLint tOrder, GLenum type);
+RAYGL_API void raygluBeginCurve(GLUnurbs *nurb);
+RAYGL_API void raygluEndCurve(GLUnurbs *nurb);
+RAYGL_API void raygluNurbsCurve(GLUnurbs *nurb, GLint knotCount, GLfloat *knots, GLint stride,
+                                GLfloat *control, GLint order, GLenum type);
+RAYGL_API void raygluBeginTrim(GLUnurbs *nurb);
+RAYGL_API void raygluEndTrim(GLUnurbs *nurb);
+RAYGL_API void raygluPwlCurve(GLUnurbs *nurb, GLint count, GLfloat *data, GLint stride,
+                              GLenum type);
+
 RAYGL_API void rayglutSwapBuffers(void);
 
 #ifdef __cplusplus

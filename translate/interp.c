@@ -216,6 +216,7 @@ void interp_destroy(interp *ip)
     tr_free(ip->clipv);
     interp_textures_free(ip);
     interp_eval_free(ip);
+    interp_nurbs_free(ip);
     tr_free(ip);
 }
 
@@ -225,6 +226,7 @@ void interp_reset(interp *ip)
     memset(ip->quadrics, 0, sizeof ip->quadrics);
     interp_textures_free(ip);
     interp_eval_free(ip);
+    interp_nurbs_free(ip);
     ip->in_begin = false;
     ip->camera_fixed = false;
     ip->frame_begin = false;
@@ -242,6 +244,8 @@ void interp_copy_state(interp *dst, const interp *src)
     if (!interp_lists_copy(dst, src) && dst->scene)
         dst->scene->failed = true;
     if (interp_eval_copy(dst, src) != 0 && dst->scene)
+        dst->scene->failed = true;
+    if (interp_nurbs_copy(dst, src) != 0 && dst->scene)
         dst->scene->failed = true;
 }
 

@@ -29,12 +29,14 @@ typedef struct interp_quadric {
 
 typedef struct interp_textures interp_textures; /* interp_texture.c */
 struct interp_eval;                             /* interp_eval.c */
+struct interp_nurbs;                            /* interp_nurbs.c */
 
 struct interp {
     gl_state st;
     interp_quadric quadrics[INTERP_QUADRICS]; /* context state, like st */
     interp_textures *tex; /* texture objects and unpack state; NULL: none yet */
     struct interp_eval *eval; /* evaluator maps; NULL: all at their initial values */
+    struct interp_nurbs *nurbs; /* GLU NURBS objects and the open shape; NULL: none yet */
     scene *scene; /* NULL: state only */
     diag_log *log;
     uint8_t *begin_ok; /* by opcode: allowed between glBegin and glEnd */
@@ -329,6 +331,19 @@ void interp_eval_curve(const double *pts, int order, uint32_t k, double t, doubl
 void interp_eval_surface(const double *pts, int uorder, int vorder, uint32_t k, double u,
                          double v, double *out, double *du, double *dv);
 
+/* A NURBS curve of n points of k values each (packed), order 1..24, over
+ * n + order knots, at u (clamped to its domain [knots[order-1], knots[n]]),
+ * into out[k], and its derivative into der (may be NULL); the surface of
+ * un x vn points (u major) at (u, v), with partial derivatives into du and
+ * dv (both or neither NULL), k <= 4. Homogeneous points stay homogeneous.
+ * False when the sizes are invalid or every knot span is empty
+ * (interp_nurbs.c). */
+bool interp_nurbs_curve_at(const double *pts, uint32_t k, const double *knots, int n, int order,
+                           double u, double *out, double *der);
+bool interp_nurbs_surface_at(const double *pts, uint32_t k, const double *uknots, int un,
+                             int uorder, const double *vknots, int vn, int vorder, double u,
+                             double v, double *out, double *du, double *dv);
+
 /* The texture index (in the scene) that a draw with the current state
  * samples, or -1 (interp_texture.c): its first enabled unit's. */
 int32_t interp_texture_for_draw(interp *ip);
@@ -404,6 +419,11 @@ void interp_arrays_forget(interp *ip);
 
 /* Initial values (interp.c). */
 void interp_default_state(gl_state *st);
+
+/* GLU NURBS state's life cycle (interp_nurbs.c): copy returns -1 on
+ * allocation failure (dst then has the initial properties). */
+void interp_nurbs_free(interp *ip);
+int interp_nurbs_copy(interp *dst, const interp *src);
 
 /* Marks the colour glColor sets into the material with GL_COLOR_MATERIAL
  * (interp_light.c). */
