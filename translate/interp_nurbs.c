@@ -18,7 +18,8 @@
  *
  * Trims: the loops are polygons in the (u, v) domain; a grid cell is drawn
  * when its centre lies inside (winding number above 0: outer loops
- * counter-clockwise, holes clockwise, as GLU asks). The grid also gets a
+ * counter-clockwise, holes clockwise, as GLU asks; as GLU, a surface with
+ * trims but no outer loop draws nothing). The grid also gets a
  * line at every trim edge parallel to an axis, so axis-aligned trims cut
  * exactly; other trim edges cut along the grid (a note says so).
  *
@@ -42,6 +43,7 @@
 #define NURBS_CURVE_STEPS 32  /* steps per knot span of a curve or trim curve */
 #define NURBS_MAX_PIECES 16   /* pieces of one surface or curve kept */
 #define NURBS_MAX_TRIM (1u << 16) /* trim points of one surface */
+#define NURBS_MAX_GRID (1u << 18) /* grid points of one surface */
 /* Grid points of the frame's NURBS and evaluator meshes (interp_eval.c
  * counts its meshes in shape_facets too). */
 #define NURBS_FRAME_MAX_POINTS (1u << 21)
@@ -642,11 +644,98 @@ static bool piece_at(const nurbs_piece *p, double u, double v, double *out, doub
                                    p->n[1], p->order[1], u, v, out, du, dv);
 }
 
-/* A vertex of the shape at (u, v), as glEvalCoord issues it: the colour,
- * normal and texture coordinates of the other pieces reach the vertex only
- * (the current values are restored). */
-static void nurbs_vertex(interp *ip, const nurbs_roles *r, bool surface, double u, double v)
+/* A vertex of the shape: position (homogeneous), and the normal, colour
+ * and texture coordinates its pieces give it (has_*: else the current
+ * ones). */
+typedef struct nurbs_node {
+    double pos[4];
+    float normal[3], color[4], tex[4];
+    bool ok, has_normal, has_color, has_tex;
+} nurbs_node;
+
+/* The vertex at (u, v), as glEvalCoord computes it. */
+static nurbs_node node_at(const interp *ip, const nurbs_roles *r, bool surface, double u,
+                          double v)
 {
+    const gl_attribs *a = &ip->st.a;
+    nurbs_node n;
+    memset(&n, 0, sizeof n);
+    double val[4], du[4], dv[4];
+    if (r->color && piece_at(r->color, u, v, val, NULL, NULL)) {
+        n.has_color = true;
+        for (int c = 0; c < 4; c++)
+            n.color[c] = (float)val[c];
+    }
+    if (r->normal && piece_at(r->normal, u, v, val, NULL, NULL)) {
+        n.has_normal = true;
+        for (int c = 0; c < 3; c++)
+            n.normal[c] = (float)val[c];
+    }
+    if (r->tex && piece_at(r->tex, u, v, val, NULL, NULL)) {
+        static const float def[4] = {0, 0, 0, 1};
+        n.has_tex = true;
+        for (uint32_t c = 0; c < 4; c++)
+            n.tex[c] = c < r->tex->k ? (float)val[c] : def[c];
+    }
+    bool autonormal = surface && !r->normal && a->caps[INTERP_CAP_AUTO_NORMAL];
+    if (!piece_at(r->vertex, u, v, val, autonormal ? du : NULL, autonormal ? dv : NULL))
+        return n;
+    uint32_t k = r->vertex->k;
+    double w = k == 4 ? val[3] : 1;
+    if (autonormal) {
+        /* As GL_AUTO_NORMAL: dp/du x dp/dv of (x/w, y/w, z/w), here scaled
+         * by w^2 (the same direction). */
+        if (k == 4) {
+            for (int c = 0; c < 3; c++) {
+                du[c] = du[c] * w - du[3] * val[c];
+                dv[c] = dv[c] * w - dv[3] * val[c];
+            }
+        }
+        double nn[3] = {du[1] * dv[2] - du[2] * dv[1], du[2] * dv[0] - du[0] * dv[2],
+                        du[0] * dv[1] - du[1] * dv[0]};
+        double len = sqrt(nn[0] * nn[0] + nn[1] * nn[1] + nn[2] * nn[2]);
+        n.has_normal = true;
+        for (int c = 0; c < 3; c++)
+            n.normal[c] = (float)(len > 0 ? nn[c] / len : nn[c]);
+    }
+    n.pos[0] = val[0];
+    n.pos[1] = val[1];
+    n.pos[2] = val[2];
+    n.pos[3] = w;
+    n.ok = true;
+    return n;
+}
+
+/* The point at t of the straight segment from p to q, as GL's
+ * interpolation along a triangle's edge gives it. */
+static nurbs_node node_lerp(const nurbs_node *p, const nurbs_node *q, double t)
+{
+    nurbs_node n = *p;
+    n.ok = p->ok && q->ok;
+    double s = 1 - t;
+    for (int c = 0; c < 4; c++) {
+        double pc = p->pos[c] / p->pos[3], qc = q->pos[c] / q->pos[3];
+        n.pos[c] = s * pc + t * qc;
+        n.color[c] = (float)(s * p->color[c] + t * q->color[c]);
+        n.tex[c] = (float)(s * p->tex[c] + t * q->tex[c]);
+    }
+    double len = 0;
+    for (int c = 0; c < 3; c++) {
+        n.normal[c] = (float)(s * p->normal[c] + t * q->normal[c]);
+        len += (double)n.normal[c] * n.normal[c];
+    }
+    len = sqrt(len);
+    for (int c = 0; c < 3 && len > 0; c++)
+        n.normal[c] = (float)(n.normal[c] / len);
+    return n;
+}
+
+/* Issues the vertex as glEvalCoord does: its colour, normal and texture
+ * coordinates reach the vertex only (the current values are restored). */
+static void node_emit(interp *ip, const nurbs_node *n)
+{
+    if (!n->ok)
+        return;
     gl_attribs *a = &ip->st.a;
     float color[4], normal[3], texcoord[4];
     gl_material material[2];
@@ -654,47 +743,26 @@ static void nurbs_vertex(interp *ip, const nurbs_roles *r, bool surface, double 
     memcpy(normal, a->current.normal, sizeof normal);
     memcpy(texcoord, a->current.texcoord, sizeof texcoord);
     memcpy(material, a->lighting.material, sizeof material);
-
-    double val[4], du[4], dv[4];
-    if (r->color && piece_at(r->color, u, v, val, NULL, NULL)) {
-        for (int c = 0; c < 4; c++)
-            a->current.color[c] = (float)val[c];
+    if (n->has_color) {
+        memcpy(a->current.color, n->color, sizeof color);
         if (a->caps[INTERP_CAP_COLOR_MATERIAL])
             interp_color_material_update(ip);
     }
-    if (r->normal && piece_at(r->normal, u, v, val, NULL, NULL))
-        for (int c = 0; c < 3; c++)
-            a->current.normal[c] = (float)val[c];
-    if (r->tex && piece_at(r->tex, u, v, val, NULL, NULL)) {
-        static const float def[4] = {0, 0, 0, 1};
-        for (uint32_t c = 0; c < 4; c++)
-            a->current.texcoord[c] = c < r->tex->k ? (float)val[c] : def[c];
-    }
-    bool autonormal = surface && !r->normal && a->caps[INTERP_CAP_AUTO_NORMAL];
-    if (piece_at(r->vertex, u, v, val, autonormal ? du : NULL, autonormal ? dv : NULL)) {
-        uint32_t k = r->vertex->k;
-        double w = k == 4 ? val[3] : 1;
-        if (autonormal) {
-            /* As GL_AUTO_NORMAL: dp/du x dp/dv of (x/w, y/w, z/w), here
-             * scaled by w^2 (the same direction). */
-            if (k == 4) {
-                for (int c = 0; c < 3; c++) {
-                    du[c] = du[c] * w - du[3] * val[c];
-                    dv[c] = dv[c] * w - dv[3] * val[c];
-                }
-            }
-            double nn[3] = {du[1] * dv[2] - du[2] * dv[1], du[2] * dv[0] - du[0] * dv[2],
-                            du[0] * dv[1] - du[1] * dv[0]};
-            double len = sqrt(nn[0] * nn[0] + nn[1] * nn[1] + nn[2] * nn[2]);
-            for (int c = 0; c < 3; c++)
-                a->current.normal[c] = (float)(len > 0 ? nn[c] / len : nn[c]);
-        }
-        interp_add_vertex(ip, val[0], val[1], val[2], w);
-    }
+    if (n->has_normal)
+        memcpy(a->current.normal, n->normal, sizeof normal);
+    if (n->has_tex)
+        memcpy(a->current.texcoord, n->tex, sizeof texcoord);
+    interp_add_vertex(ip, n->pos[0], n->pos[1], n->pos[2], n->pos[3]);
     memcpy(a->current.color, color, sizeof color);
     memcpy(a->current.normal, normal, sizeof normal);
     memcpy(a->current.texcoord, texcoord, sizeof texcoord);
     memcpy(a->lighting.material, material, sizeof material);
+}
+
+static void nurbs_vertex(interp *ip, const nurbs_roles *r, bool surface, double u, double v)
+{
+    nurbs_node n = node_at(ip, r, surface, u, v);
+    node_emit(ip, &n);
 }
 
 static int cmp_double(const void *a, const void *b)
@@ -744,11 +812,10 @@ static size_t grid_axis(const nurbs_piece *p, int d, const nurbs_props *pr, cons
     return w;
 }
 
-/* Winding number of the trim loops around (u, v); with no loop counter-
- * clockwise (no outer boundary given), the domain's boundary counts as one. */
-static int winding(const struct interp_nurbs *nb, double u, double v, bool implicit_outer)
+/* Winding number of the trim loops around (u, v). */
+static int winding(const struct interp_nurbs *nb, double u, double v)
 {
-    int wn = implicit_outer ? 1 : 0;
+    int wn = 0;
     size_t start = 0;
     for (size_t l = 0; l < nb->nloops; l++) {
         size_t end = nb->loop_end[l];
@@ -765,16 +832,6 @@ static int winding(const struct interp_nurbs *nb, double u, double v, bool impli
         start = end;
     }
     return wn;
-}
-
-static double loop_area(const struct interp_nurbs *nb, size_t start, size_t end)
-{
-    double a = 0;
-    for (size_t i = start; i < end; i++) {
-        const double *p = nb->tp[i], *q = nb->tp[i + 1 < end ? i + 1 : start];
-        a += p[0] * q[1] - q[0] * p[1];
-    }
-    return a / 2;
 }
 
 /* Counts n grid points against the frame's allowance (with evaluator
@@ -829,6 +886,62 @@ static bool trims_oblique(const struct interp_nurbs *nb)
     return false;
 }
 
+/* Index of the grid line at x (within the merge tolerance), or -1. */
+static long grid_find(const double *g, size_t n, double x)
+{
+    double tol = 1e-9 * (g[n - 1] - g[0]);
+    size_t lo = 0, hi = n;
+    while (lo < hi) {
+        size_t mid = (lo + hi) / 2;
+        if (g[mid] < x - tol)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo < n && fabs(g[lo] - x) <= tol ? (long)lo : -1;
+}
+
+/* The grid's vertices, nodes[j * ng[0] + i] at (g[0][i], g[1][j]). A grid
+ * vertex on a trim edge (the edges parallel to an axis put grid lines
+ * there) lies on the straight segment between the surface points of the
+ * edge's ends, where GLU's triangles, which meet the trim only at its
+ * points, draw the cut. */
+static nurbs_node *grid_nodes(interp *ip, const struct interp_nurbs *nb, const nurbs_roles *r,
+                              double *const g[2], const size_t ng[2])
+{
+    nurbs_node *nodes = tr_realloc(NULL, ng[0] * ng[1] * sizeof *nodes);
+    if (!nodes)
+        return NULL;
+    for (size_t j = 0; j < ng[1]; j++)
+        for (size_t i = 0; i < ng[0]; i++)
+            nodes[j * ng[0] + i] = node_at(ip, r, true, g[0][i], g[1][j]);
+    size_t start = 0;
+    for (size_t l = 0; l < nb->nloops; start = nb->loop_end[l++]) {
+        size_t end = nb->loop_end[l];
+        for (size_t e = start; e < end; e++) {
+            const double *a = nb->tp[e], *b = nb->tp[e + 1 < end ? e + 1 : start];
+            int d = a[0] == b[0] ? 0 : a[1] == b[1] ? 1 : -1; /* the fixed coordinate */
+            if (d < 0 || a[1 - d] == b[1 - d])
+                continue;
+            long line = grid_find(g[d], ng[d], a[d]);
+            if (line < 0)
+                continue;
+            nurbs_node na = node_at(ip, r, true, a[0], a[1]), nbb = node_at(ip, r, true, b[0], b[1]);
+            double lo = a[1 - d] < b[1 - d] ? a[1 - d] : b[1 - d];
+            double hi = a[1 - d] < b[1 - d] ? b[1 - d] : a[1 - d];
+            for (size_t m = 0; m < ng[1 - d]; m++) {
+                double x = g[1 - d][m];
+                if (x <= lo || x >= hi)
+                    continue;
+                size_t i = d == 0 ? (size_t)line : m, j = d == 0 ? m : (size_t)line;
+                nodes[j * ng[0] + i] =
+                    node_lerp(&na, &nbb, (x - a[1 - d]) / (b[1 - d] - a[1 - d]));
+            }
+        }
+    }
+    return nodes;
+}
+
 static void draw_surface(interp *ip, struct interp_nurbs *nb, const nurbs_props *pr)
 {
     nurbs_roles r = roles_of(nb, true);
@@ -836,47 +949,51 @@ static void draw_surface(interp *ip, struct interp_nurbs *nb, const nurbs_props 
         return; /* GLU draws nothing without a vertex piece */
     double *ex[2], *g[2] = {NULL, NULL};
     size_t nex[2], ng[2] = {0, 0};
+    nurbs_node *nodes = NULL;
+    uint8_t *in = NULL;
     for (int d = 0; d < 2; d++) {
         nex[d] = trim_axis_values(nb, d, &ex[d]);
         ng[d] = grid_axis(r.vertex, d, pr, ex[d], nex[d], &g[d]);
         tr_free(ex[d]);
     }
-    if (ng[0] < 2 || ng[1] < 2 || !nurbs_budget(ip, (uint64_t)ng[0] * ng[1]))
+    if (ng[0] < 2 || ng[1] < 2)
         goto done;
-    bool implicit_outer = true;
-    for (size_t l = 0, start = 0; l < nb->nloops; start = nb->loop_end[l++])
-        if (loop_area(nb, start, nb->loop_end[l]) > 0)
-            implicit_outer = false;
+    if ((uint64_t)ng[0] * ng[1] > NURBS_MAX_GRID) {
+        interp_diag(ip, DIAG_LIMIT, "GLU NURBS surface of a %zu x %zu grid skipped: over %u "
+                                    "points", ng[0], ng[1], NURBS_MAX_GRID);
+        goto done;
+    }
+    if (!nurbs_budget(ip, (uint64_t)ng[0] * ng[1]))
+        goto done;
     if (nb->nloops && trims_oblique(nb))
         interp_note(ip, DIAG_NOTE_NURBS_TRIM);
 
     /* Which cells are drawn. */
     size_t cu = ng[0] - 1, cv = ng[1] - 1;
-    uint8_t *in = tr_realloc(NULL, cu * cv);
-    if (!in) {
+    in = tr_realloc(NULL, cu * cv);
+    nodes = in ? grid_nodes(ip, nb, &r, g, ng) : NULL;
+    if (!nodes) {
         if (ip->scene)
             ip->scene->failed = true;
         goto done;
     }
     for (size_t j = 0; j < cv; j++)
         for (size_t i = 0; i < cu; i++)
-            in[j * cu + i] = !nb->nloops ||
-                             winding(nb, (g[0][i] + g[0][i + 1]) / 2, (g[1][j] + g[1][j + 1]) / 2,
-                                     implicit_outer) > 0;
-
+            in[j * cu + i] = !nb->nloops || winding(nb, (g[0][i] + g[0][i + 1]) / 2,
+                                                    (g[1][j] + g[1][j + 1]) / 2) > 0;
+#define NODE(i, j) (&nodes[(j) * ng[0] + (i)])
     if (pr->display == GLU_FILL) {
         if (interp_prim_begin(ip, GL_TRIANGLES)) {
             for (size_t j = 0; j < cv; j++) {
                 for (size_t i = 0; i < cu; i++) {
                     if (!in[j * cu + i])
                         continue;
-                    double u0 = g[0][i], u1 = g[0][i + 1], v0 = g[1][j], v1 = g[1][j + 1];
-                    nurbs_vertex(ip, &r, true, u0, v0);
-                    nurbs_vertex(ip, &r, true, u1, v0);
-                    nurbs_vertex(ip, &r, true, u1, v1);
-                    nurbs_vertex(ip, &r, true, u0, v0);
-                    nurbs_vertex(ip, &r, true, u1, v1);
-                    nurbs_vertex(ip, &r, true, u0, v1);
+                    node_emit(ip, NODE(i, j));
+                    node_emit(ip, NODE(i + 1, j));
+                    node_emit(ip, NODE(i + 1, j + 1));
+                    node_emit(ip, NODE(i, j));
+                    node_emit(ip, NODE(i + 1, j + 1));
+                    node_emit(ip, NODE(i, j + 1));
                 }
             }
         }
@@ -890,58 +1007,46 @@ static void draw_surface(interp *ip, struct interp_nurbs *nb, const nurbs_props 
                 for (size_t i = 0; i < cu; i++) {
                     if (!in[j * cu + i])
                         continue;
-                    double u0 = g[0][i], u1 = g[0][i + 1], v0 = g[1][j], v1 = g[1][j + 1];
-                    nurbs_vertex(ip, &r, true, u0, v0);
-                    nurbs_vertex(ip, &r, true, u1, v0);
-                    nurbs_vertex(ip, &r, true, u0, v0);
-                    nurbs_vertex(ip, &r, true, u0, v1);
+                    node_emit(ip, NODE(i, j));
+                    node_emit(ip, NODE(i + 1, j));
+                    node_emit(ip, NODE(i, j));
+                    node_emit(ip, NODE(i, j + 1));
                     if (j + 1 == cv || !in[(j + 1) * cu + i]) {
-                        nurbs_vertex(ip, &r, true, u0, v1);
-                        nurbs_vertex(ip, &r, true, u1, v1);
+                        node_emit(ip, NODE(i, j + 1));
+                        node_emit(ip, NODE(i + 1, j + 1));
                     }
                     if (i + 1 == cu || !in[j * cu + i + 1]) {
-                        nurbs_vertex(ip, &r, true, u1, v0);
-                        nurbs_vertex(ip, &r, true, u1, v1);
+                        node_emit(ip, NODE(i + 1, j));
+                        node_emit(ip, NODE(i + 1, j + 1));
                     }
                 }
             }
         }
         interp_prim_end(ip);
-    } else {
-        /* GLU_OUTLINE_PATCH: the boundary of the patch, then each trim loop,
-         * mapped onto the surface. */
-        if (implicit_outer) {
-            for (int side = 0; side < 4; side++) {
-                int d = side & 1;
-                double fixed = side < 2 ? g[1 - d][0] : g[1 - d][ng[1 - d] - 1];
-                if (interp_prim_begin(ip, GL_LINE_STRIP))
-                    for (size_t i = 0; i < ng[d]; i++)
-                        nurbs_vertex(ip, &r, true, d ? fixed : g[0][i], d ? g[1][i] : fixed);
-                interp_prim_end(ip);
-            }
+    } else if (nb->nloops == 0) {
+        /* GLU_OUTLINE_PATCH of an untrimmed surface: its four edges. */
+        for (int side = 0; side < 4; side++) {
+            int d = side & 1; /* the axis the edge runs along */
+            size_t fixed = side < 2 ? 0 : ng[1 - d] - 1;
+            if (interp_prim_begin(ip, GL_LINE_STRIP))
+                for (size_t m = 0; m < ng[d]; m++)
+                    node_emit(ip, d ? NODE(fixed, m) : NODE(m, fixed));
+            interp_prim_end(ip);
         }
-        double step[2] = {(g[0][ng[0] - 1] - g[0][0]) / NURBS_SPAN_STEPS / 4,
-                          (g[1][ng[1] - 1] - g[1][0]) / NURBS_SPAN_STEPS / 4};
+    } else {
+        /* GLU_OUTLINE_PATCH of a trimmed surface: each trim loop, straight
+         * between its points on the surface. */
         for (size_t l = 0, start = 0; l < nb->nloops; start = nb->loop_end[l++]) {
-            size_t end = nb->loop_end[l];
-            if (!interp_prim_begin(ip, GL_LINE_LOOP)) {
-                interp_prim_end(ip);
-                continue;
-            }
-            for (size_t i = start; i < end; i++) {
-                const double *a = nb->tp[i], *b = nb->tp[i + 1 < end ? i + 1 : start];
-                double su = fabs(b[0] - a[0]) / step[0], sv = fabs(b[1] - a[1]) / step[1];
-                double m = ceil(su > sv ? su : sv);
-                int steps = m < 1 ? 1 : m > 256 ? 256 : (int)m;
-                for (int s = 0; s < steps; s++)
-                    nurbs_vertex(ip, &r, true, a[0] + (b[0] - a[0]) * s / steps,
-                                 a[1] + (b[1] - a[1]) * s / steps);
-            }
+            if (interp_prim_begin(ip, GL_LINE_LOOP))
+                for (size_t e = start; e < nb->loop_end[l]; e++)
+                    nurbs_vertex(ip, &r, true, nb->tp[e][0], nb->tp[e][1]);
             interp_prim_end(ip);
         }
     }
-    tr_free(in);
+#undef NODE
 done:
+    tr_free(nodes);
+    tr_free(in);
     tr_free(g[0]);
     tr_free(g[1]);
 }
