@@ -20,6 +20,7 @@
 void test_custom(const char *dir);
 void test_buffers(const char *dir);
 void test_eval(const char *dir);
+void test_nurbs_rec(const char *dir);
 void test_select(const char *dir);
 void test_multitex_arrays(const char *dir);
 void test_alloc_failures(const char *dir);
@@ -276,6 +277,7 @@ int main(void)
     test_custom(dir);
     test_buffers(dir);
     test_eval(dir);
+    test_nurbs_rec(dir);
     test_select(dir);
     test_multitex_arrays(dir);
     test_alloc_failures(dir);

@@ -34,7 +34,7 @@ static void test_list(void)
         "glIndexMask", "glIndexi", "glCreateProgram", "glBlendColor", "glutStrokeCharacter",
         "glPixelMapfv", "glutBitmapCharacter", "glutBitmapString", "glClipPlane", "glStencilFunc",
         "glTexImage3D", "glUseProgram", "glUniform4fv", "glBlendColorEXT", "glBlendEquationSeparate",
-        "glPolygonStipple", "gluNurbsSurface", "gluTessVertex", "gluBuild1DMipmaps", "glutInit",
+        "glPolygonStipple", "gluNurbsCallback", "gluTessVertex", "gluBuild1DMipmaps", "glutInit",
         "glutStrokeCharacter", "glutSolidTeacup", "glReadBuffer",
     };
     for (size_t i = 0; i < sizeof counted / sizeof counted[0]; i++)
@@ -45,7 +45,8 @@ static void test_list(void)
         "glReadPixels", "glAreTexturesResident", "gluErrorString", "gluProject",
         "gluGetTessProperty", "glutGet", "glutDeviceGet", "glutBitmapWidth",
         "glVertex3f", "glBegin", "glTexImage2D", "gluSphere", "glutSolidTeapot",
-        "glutSwapBuffers", "glFlush", "glMap1f", "glEvalMesh2", "glRasterPos2i",
+        "glutSwapBuffers", "glFlush", "glMap1f", "glEvalMesh2", "glRasterPos2i", "gluNurbsSurface",
+        "gluPwlCurve", "gluNewNurbsRenderer",
         "glWindowPos2f", "glBitmap", "glDrawPixels", "glCopyPixels", "glPixelZoom",
         "glPixelTransferf",
         "glActiveTexture", "glActiveTextureARB", "glClientActiveTexture", "glMultiTexCoord2f",
