@@ -9,7 +9,8 @@
  * fuzzers start from meshes that draw; pixels.bin holds bitmaps and pixel
  * rectangles with resources of their size; accum-passes.bin accumulated
  * passes; select-scissor.bin a picking pass, named draws and scissored
- * clears and draws. The corpus also holds
+ * clears and draws; nurbs.bin GLU NURBS surfaces (trimmed, outlined) and
+ * curves whose knots and points fit their sizes. The corpus also holds
  * recorded-*.bin, traces written by libraygl for the image tests.
  */
 #include "testutil.h"
@@ -341,6 +342,95 @@ static int write_mtex(const char *dir)
     return write_file(dir, "mtex.bin", seq, eval_len);
 }
 
+/* ---- GLU NURBS: knots and points that fit their sizes ----------------------------- */
+
+/* Appends command `op` with scalars v in row order and its blobs, in order,
+ * from the float arrays b[0..] of n[0..] values. */
+static void nurbs_cmd(uint32_t op, const double *v, size_t nv, const float *const *b,
+                      const size_t *n)
+{
+    static rgl_cmd cmd;
+    static uint8_t blob[3][1024];
+    if (rgl_cmd_init(&cmd, op) != RGL_OK)
+        return;
+    size_t used = 0, nb = 0;
+    for (uint32_t k = 0; k < cmd.nargs; k++) {
+        rgl_arg *a = &cmd.arg[k];
+        if (a->kind == RGL_ARG_BLOB) {
+            for (size_t i = 0; i < n[nb]; i++)
+                rgl_put_f(blob[nb] + 4 * i, b[nb][i]);
+            a->bytes = blob[nb];
+            a->count = (uint32_t)(4 * n[nb]);
+            nb++;
+        } else if (a->kind == RGL_ARG_ARRAY) {
+            static double arr[RGL_MAX_ARGS][16];
+            for (uint32_t c = 0; c < a->count; c++)
+                arr[k][c] = c % 5 == 0 ? 1 : 0;
+            a->array = arr[k];
+        } else if (a->type == RGL_T_f) {
+            a->v.f = used < nv ? v[used++] : 0;
+        } else if (a->type == RGL_T_i) {
+            a->v.i = used < nv ? (int64_t)v[used++] : 0;
+        } else {
+            a->v.u = used < nv ? (uint64_t)v[used++] : 0;
+        }
+    }
+    eval_len += rgl_cmd_encode(&cmd, seq + eval_len, sizeof seq - eval_len);
+}
+
+static int write_nurbs(const char *dir)
+{
+    static const float k4[8] = {0, 0, 0, 0, 1, 1, 1, 1}, k2[4] = {0, 0, 1, 1};
+    static const float kc[7] = {0, 0, 0, 0.5f, 1, 1, 1};
+    static const float outer[10] = {0, 0, 1, 0, 1, 1, 0, 1, 0, 0};
+    static const float hole[10] = {0.3f, 0.3f, 0.3f, 0.7f, 0.7f, 0.7f, 0.7f, 0.3f, 0.3f, 0.3f};
+    static const float hk[7] = {0, 0, 1, 2, 3, 4, 4};
+    float hill[48], col[16], curve[16];
+    for (int i = 0; i < 16; i++) {
+        hill[3 * i] = (float)(i / 4) - 1.5f;
+        hill[3 * i + 1] = (float)(i % 4) - 1.5f;
+        hill[3 * i + 2] = (i / 4 == 1 || i / 4 == 2) && (i % 4 == 1 || i % 4 == 2) ? 1.5f : -1;
+        col[i] = (float)(i % 5) * 0.25f;
+        curve[i] = i % 4 == 3 ? 1 + (float)(i / 8) : (float)i * 0.2f;
+    }
+    eval_len = 0;
+    EV(Ortho, -3, 3, -3, 3, -5, 5);
+    EV(Enable, 0x0D80); /* GL_AUTO_NORMAL */
+    EV(Enable, 0x0B50); /* GL_LIGHTING */
+    EV(NewNurbsRenderer, 1);
+    EV(NurbsProperty, 1, 100205, 100217); /* GLU_SAMPLING_METHOD, GLU_DOMAIN_DISTANCE */
+    EV(NurbsProperty, 1, 100206, 4);      /* GLU_U_STEP */
+    EV(BeginSurface, 1);
+    nurbs_cmd(RGL_OP_NurbsSurface, (const double[]){1, 8, 8, 12, 3, 4, 4, 0x0DB7}, 8,
+              (const float *const[]){k4, k4, hill}, (const size_t[]){8, 8, 48});
+    nurbs_cmd(RGL_OP_NurbsSurface, (const double[]){1, 4, 4, 8, 4, 2, 2, 0x0DB0}, 8,
+              (const float *const[]){k2, k2, col}, (const size_t[]){4, 4, 16});
+    EV(BeginTrim, 1);
+    nurbs_cmd(RGL_OP_PwlCurve, (const double[]){1, 5, 2, 100210}, 4,
+              (const float *const[]){outer}, (const size_t[]){10});
+    EV(EndTrim, 1);
+    EV(BeginTrim, 1);
+    nurbs_cmd(RGL_OP_NurbsCurve, (const double[]){1, 7, 2, 2, 100210}, 5,
+              (const float *const[]){hk, hole}, (const size_t[]){7, 10});
+    EV(EndTrim, 1);
+    EV(EndSurface, 1);
+    EV(NurbsProperty, 1, 100204, 100240); /* GLU_DISPLAY_MODE, GLU_OUTLINE_POLYGON */
+    EV(BeginSurface, 1);
+    nurbs_cmd(RGL_OP_NurbsSurface, (const double[]){1, 8, 8, 12, 3, 4, 4, 0x0DB7}, 8,
+              (const float *const[]){k4, k4, hill}, (const size_t[]){8, 8, 48});
+    EV(EndSurface, 1);
+    EV(BeginCurve, 1);
+    nurbs_cmd(RGL_OP_NurbsCurve, (const double[]){1, 7, 4, 3, 0x0D98}, 5,
+              (const float *const[]){kc, curve}, (const size_t[]){7, 16});
+    EV(EndCurve, 1);
+    nurbs_cmd(RGL_OP_LoadSamplingMatrices, (const double[]){1, 0, 0, 64, 64}, 5, NULL, NULL);
+    EV(NurbsProperty, 1, 100160, 100161); /* GLU_NURBS_MODE, GLU_NURBS_TESSELLATOR */
+    EV(BeginSurface, 1);
+    EV(EndSurface, 1);
+    EV(DeleteNurbsRenderer, 1);
+    return write_file(dir, "nurbs.bin", seq, eval_len);
+}
+
 int main(int argc, char **argv)
 {
     rng r = {0x5eed5eed12345678ull};
@@ -367,5 +457,6 @@ int main(int argc, char **argv)
     rc |= write_accum(argv[1]);
     rc |= write_select(argv[1]);
     rc |= write_mtex(argv[1]);
+    rc |= write_nurbs(argv[1]);
     return rc;
 }
