@@ -63,6 +63,7 @@
     X(NOTE_MULTITEX, "approximated: texture units past the second enabled one not drawn; a unit after the first combined with one fragment colour (unlit, the first vertex's) unless both units use GL_MODULATE or the first replaces the colour; two units blended are drawn opaque") \
     X(NOTE_NURBS_TRIM, "approximated: GLU NURBS trim edges not parallel to the parameter axes cut the surface along the translator's sampling grid (a staircase edge)") \
     X(NOTE_NURBS_OUTLINE, "approximated: GLU_OUTLINE_POLYGON draws the edges of the translator's tessellation of the NURBS surface, not of GLU's") \
+    X(NOTE_NURBS_SAMPLING, "approximated: GLU NURBS are evaluated at 16 or more steps per knot span, which can be finer than GLU samples them (GLU_PATH_LENGTH, GLU_PARAMETRIC_ERROR, or fewer GLU_DOMAIN_DISTANCE steps): silhouettes and shading can differ slightly") \
     X(NOTE_NURBS_TESSELLATOR, "translated as recorded: GLU NURBS in GLU_NURBS_TESSELLATOR mode are drawn by the program's own callbacks, whose GL calls are recorded")
 
 typedef enum diag_kind {

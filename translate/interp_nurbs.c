@@ -774,9 +774,10 @@ static int cmp_double(const void *a, const void *b)
 /* The grid lines along axis d of the vertex piece: NURBS_SPAN_STEPS (or
  * the domain-distance steps) per non-empty knot span, plus `extra` values
  * inside the domain; sorted, without repeats. Returns how many (0 on
- * failure), into *out (caller frees). */
+ * failure), into *out (caller frees); *finer becomes true when that is
+ * finer than GLU_DOMAIN_DISTANCE's steps (or the method is another). */
 static size_t grid_axis(const nurbs_piece *p, int d, const nurbs_props *pr, const double *extra,
-                        size_t nextra, double **out)
+                        size_t nextra, double **out, bool *finer)
 {
     const double *kn = p->knots[d];
     int n = p->n[d], order = p->order[d];
@@ -796,6 +797,8 @@ static size_t grid_axis(const nurbs_piece *p, int d, const nurbs_props *pr, cons
         int st = steps > NURBS_SPAN_STEPS ? (steps < NURBS_MAX_STEPS ? (int)steps
                                                                      : NURBS_MAX_STEPS)
                                           : NURBS_SPAN_STEPS;
+        if (st > steps)
+            *finer = true; /* GLU's own sampling is coarser, or depends on the view */
         for (int i = 0; i < st && m < NURBS_MAX_STEPS; i++)
             g[m++] = kn[s] + len * i / st;
     }
@@ -951,9 +954,10 @@ static void draw_surface(interp *ip, struct interp_nurbs *nb, const nurbs_props 
     size_t nex[2], ng[2] = {0, 0};
     nurbs_node *nodes = NULL;
     uint8_t *in = NULL;
+    bool finer = false;
     for (int d = 0; d < 2; d++) {
         nex[d] = trim_axis_values(nb, d, &ex[d]);
-        ng[d] = grid_axis(r.vertex, d, pr, ex[d], nex[d], &g[d]);
+        ng[d] = grid_axis(r.vertex, d, pr, ex[d], nex[d], &g[d], &finer);
         tr_free(ex[d]);
     }
     if (ng[0] < 2 || ng[1] < 2)
@@ -967,6 +971,8 @@ static void draw_surface(interp *ip, struct interp_nurbs *nb, const nurbs_props 
         goto done;
     if (nb->nloops && trims_oblique(nb))
         interp_note(ip, DIAG_NOTE_NURBS_TRIM);
+    if (finer)
+        interp_note(ip, DIAG_NOTE_NURBS_SAMPLING);
 
     /* Which cells are drawn. */
     size_t cu = ng[0] - 1, cv = ng[1] - 1;
@@ -1057,8 +1063,10 @@ static void draw_curve(interp *ip, struct interp_nurbs *nb, const nurbs_props *p
     if (!r.vertex)
         return;
     double *g = NULL;
-    nurbs_props p = *pr;
-    size_t ng = grid_axis(r.vertex, 0, &p, NULL, 0, &g);
+    bool finer = false;
+    size_t ng = grid_axis(r.vertex, 0, pr, NULL, 0, &g, &finer);
+    if (finer && ng >= 2)
+        interp_note(ip, DIAG_NOTE_NURBS_SAMPLING);
     if (ng >= 2 && nurbs_budget(ip, ng) && interp_prim_begin(ip, GL_LINE_STRIP))
         for (size_t i = 0; i < ng; i++)
             nurbs_vertex(ip, &r, false, g[i], 0);

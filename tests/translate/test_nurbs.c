@@ -225,6 +225,9 @@ static size_t surface_tris(int trims, GLenum display, GLenum mode)
 static void test_surface_counts(void)
 {
     CHECK_EQ_U(surface_tris(0, 0, 0), 16 * 16 * 2);
+    /* GLU_PATH_LENGTH (the default) samples by the view: a note says the
+     * grid may be finer than GLU's. */
+    CHECK(dlog.e[DIAG_NOTE_NURBS_SAMPLING].count == 1);
     /* A square hole of half the side takes a quarter of the cells. */
     CHECK_EQ_U(surface_tris(3, 0, 0), 16 * 16 * 2 - 8 * 8 * 2);
     CHECK_EQ_U(surface_tris(1, 0, 0), 16 * 16 * 2);
@@ -280,6 +283,21 @@ static void test_outlines(void)
     CMD(&s, EndCurve, NURB);
     run(ip, &s);
     CHECK_EQ_U(sc.nlines, 16);
+    interp_destroy(ip);
+
+    /* GLU_DOMAIN_DISTANCE at 40 steps a unit: GLU's own grid, no note. */
+    ip = fresh();
+    seq_init(&s);
+    CMD(&s, NewNurbsRenderer, NURB);
+    CMD(&s, NurbsProperty, NURB, GLU_SAMPLING_METHOD, GLU_DOMAIN_DISTANCE);
+    CMD(&s, NurbsProperty, NURB, GLU_U_STEP, 40);
+    CMD(&s, NurbsProperty, NURB, GLU_V_STEP, 40);
+    CMD(&s, BeginSurface, NURB);
+    flat_surface(&s);
+    CMD(&s, EndSurface, NURB);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 40 * 40 * 2);
+    CHECK(dlog.e[DIAG_NOTE_NURBS_SAMPLING].count == 0);
     interp_destroy(ip);
 }
 
