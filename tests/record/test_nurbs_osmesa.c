@@ -118,7 +118,7 @@ int main(void)
 
         c = trace_frame(r, 1, &fi);
         CHECK(c.clean);
-        CHECK(trace_cmds_find(&c, 0, "gluNurbsProperty(nurb=#1, property=0x18740, value=100161)") >= 0);
+        CHECK(trace_cmds_find(&c, 0, "gluNurbsProperty(nurb=#1, property=GLU_NURBS_MODE, value=100161)") >= 0);
         CHECK(trace_cmds_count(&c, RGL_OP_NurbsSurface) == 1);
         /* The callbacks' calls are the program's own. */
         CHECK(trace_cmds_count(&c, RGL_OP_Begin) > 0);
