@@ -106,10 +106,16 @@ static int find_span(const double *kn, int n, int order, double u)
                 return s;
         return -1;
     }
-    for (int s = hi; s >= lo; s--)
-        if (kn[s] <= u && u < kn[s + 1])
-            return s;
-    return -1;
+    /* The last s with kn[s] <= u; kn[s + 1] > u then (a hostile trace
+     * may give thousands of knots: a binary search). */
+    while (lo < hi) {
+        int mid = lo + (hi - lo + 1) / 2;
+        if (kn[mid] <= u)
+            lo = mid;
+        else
+            hi = mid - 1;
+    }
+    return lo;
 }
 
 /* The order non-zero basis functions at u, N[j] of point s - order + 1 + j,
@@ -815,26 +821,47 @@ static size_t grid_axis(const nurbs_piece *p, int d, const nurbs_props *pr, cons
     return w;
 }
 
-/* Winding number of the trim loops around (u, v). */
-static int winding(const struct interp_nurbs *nb, double u, double v)
+/* The winding numbers of the trim loops around the centres of one row of
+ * cells, at v, for centres cu[0..n) (ascending), into wn: a ray to +u
+ * crosses each edge at most once, an edge going up (v rising) counts +1 to
+ * the left of its crossing, one going down -1. One sort a row, so a hostile
+ * number of edges costs rows x edges, not cells x edges. */
+typedef struct crossing {
+    double u;
+    int d;
+} crossing;
+
+static int cmp_crossing(const void *a, const void *b)
 {
-    int wn = 0;
-    size_t start = 0;
-    for (size_t l = 0; l < nb->nloops; l++) {
+    double x = ((const crossing *)a)->u, y = ((const crossing *)b)->u;
+    return x < y ? -1 : x > y;
+}
+
+static void row_winding(const struct interp_nurbs *nb, double v, const double *cu, size_t n,
+                        crossing *cr, uint8_t *in)
+{
+    size_t m = 0, start = 0;
+    int total = 0;
+    for (size_t l = 0; l < nb->nloops; start = nb->loop_end[l++]) {
         size_t end = nb->loop_end[l];
         for (size_t i = start; i < end; i++) {
             const double *a = nb->tp[i], *b = nb->tp[i + 1 < end ? i + 1 : start];
-            double cross = (b[0] - a[0]) * (v - a[1]) - (u - a[0]) * (b[1] - a[1]);
-            if (a[1] <= v) {
-                if (b[1] > v && cross > 0)
-                    wn++;
-            } else if (b[1] <= v && cross < 0) {
-                wn--;
-            }
+            int d = a[1] <= v && b[1] > v ? 1 : b[1] <= v && a[1] > v ? -1 : 0;
+            if (!d)
+                continue;
+            cr[m].u = a[0] + (v - a[1]) * (b[0] - a[0]) / (b[1] - a[1]);
+            cr[m++].d = d;
+            total += d;
         }
-        start = end;
     }
-    return wn;
+    qsort(cr, m, sizeof *cr, cmp_crossing);
+    size_t p = 0;
+    int left = 0; /* crossings at or left of the centre */
+    for (size_t i = 0; i < n; i++) {
+        while (p < m && cr[p].u <= cu[i])
+            left += cr[p++].d;
+        in[i] = total - left > 0;
+    }
 }
 
 /* Counts n grid points against the frame's allowance (with evaluator
@@ -983,10 +1010,25 @@ static void draw_surface(interp *ip, struct interp_nurbs *nb, const nurbs_props 
             ip->scene->failed = true;
         goto done;
     }
-    for (size_t j = 0; j < cv; j++)
+    if (!nb->nloops) {
+        memset(in, 1, cu * cv);
+    } else {
+        double *centre = tr_realloc(NULL, cu * sizeof *centre);
+        crossing *cr = tr_realloc(NULL, (nb->ntp ? nb->ntp : 1) * sizeof *cr);
+        if (!centre || !cr) {
+            tr_free(centre);
+            tr_free(cr);
+            if (ip->scene)
+                ip->scene->failed = true;
+            goto done;
+        }
         for (size_t i = 0; i < cu; i++)
-            in[j * cu + i] = !nb->nloops || winding(nb, (g[0][i] + g[0][i + 1]) / 2,
-                                                    (g[1][j] + g[1][j + 1]) / 2) > 0;
+            centre[i] = (g[0][i] + g[0][i + 1]) / 2;
+        for (size_t j = 0; j < cv; j++)
+            row_winding(nb, (g[1][j] + g[1][j + 1]) / 2, centre, cu, cr, in + j * cu);
+        tr_free(centre);
+        tr_free(cr);
+    }
 #define NODE(i, j) (&nodes[(j) * ng[0] + (i)])
     if (pr->display == GLU_FILL) {
         if (interp_prim_begin(ip, GL_TRIANGLES)) {

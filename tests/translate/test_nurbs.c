@@ -43,7 +43,7 @@ static void nurbs_cmd(seq *s, uint32_t opcode, const double *v, size_t n,
                       const float *const *blobs, const size_t *nfloats)
 {
     static rgl_cmd cmd;
-    static uint8_t bytes[4][4096];
+    static uint8_t bytes[4][1 << 18];
     if (rgl_cmd_init(&cmd, opcode) != RGL_OK) {
         CHECK(!"known opcode");
         return;
@@ -68,8 +68,8 @@ static void nurbs_cmd(seq *s, uint32_t opcode, const double *v, size_t n,
         else
             a->v.u = (uint64_t)x;
     }
-    if (s->len + 70000 > s->cap) {
-        s->cap = s->len + 140000;
+    if (s->len + (1u << 20) > s->cap) {
+        s->cap = s->len + (2u << 20);
         s->data = realloc(s->data, s->cap);
     }
     size_t w = rgl_cmd_encode(&cmd, s->data + s->len, s->cap - s->len);
@@ -327,6 +327,35 @@ static void test_bad_input(void)
     interp_destroy(ip);
 }
 
+/* A trim of 20000 oblique edges over a 500 x 500 grid: bounded work (a
+ * scan per grid row, not a test per cell and edge). */
+static void test_large_trim(void)
+{
+    enum { N = 20000 };
+    static float circle[2 * (N + 1)];
+    for (int i = 0; i <= N; i++) {
+        double t = 2 * M_PI * (i % N) / N;
+        circle[2 * i] = (float)(0.5 + 0.45 * cos(t));
+        circle[2 * i + 1] = (float)(0.5 + 0.45 * sin(t));
+    }
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, NewNurbsRenderer, NURB);
+    CMD(&s, NurbsProperty, NURB, GLU_SAMPLING_METHOD, GLU_DOMAIN_DISTANCE);
+    CMD(&s, NurbsProperty, NURB, GLU_U_STEP, 500);
+    CMD(&s, NurbsProperty, NURB, GLU_V_STEP, 500);
+    CMD(&s, BeginSurface, NURB);
+    flat_surface(&s);
+    pwl(&s, circle, N + 1);
+    CMD(&s, EndSurface, NURB);
+    run(ip, &s);
+    /* About pi 0.45^2 of 500^2 cells, two triangles each. */
+    CHECK(sc.ntris > 2 * 150000 && sc.ntris < 2 * 170000);
+    CHECK(dlog.e[DIAG_NOTE_NURBS_TRIM].count == 1);
+    interp_destroy(ip);
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -336,6 +365,7 @@ int main(void)
     test_surface_counts();
     test_outlines();
     test_bad_input();
+    test_large_trim();
     scene_finish(&sc);
     return CHECK_RESULT("test_nurbs");
 }
