@@ -2,7 +2,8 @@
  * classic hill, a bicubic NURBS surface of 4 x 4 control points with knots
  * {0,0,0,0,1,1,1,1}, lit, GL_AUTO_NORMAL giving the normals; beside it a
  * rational biquadratic surface (GL_MAP2_VERTEX_4, weights 1 to 1.4) of two
- * knot spans each way with a GL_MAP2_COLOR_4 piece under colour material.
+ * knot spans each way with a GL_MAP2_COLOR_4 piece under colour material,
+ * compiled into a display list and drawn by glCallList.
  * GLU samples with GLU_DOMAIN_DISTANCE (24 steps a unit), so GL's mesh is
  * as fine as the translator's.
  */
@@ -79,14 +80,18 @@ static int draw(int w, int h)
     }
     glEnable(GL_COLOR_MATERIAL);
     glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
-    glPushMatrix();
-    glTranslatef(2.0f, 0.0f, -10.0f);
-    glRotatef(-55.0f, 1.0f, 0.0f, 0.0f);
-    glRotatef(-25.0f, 0.0f, 0.0f, 1.0f);
+    GLuint list = glGenLists(1);
+    glNewList(list, GL_COMPILE);
     gluBeginSurface(nurb);
     gluNurbsSurface(nurb, 7, rk, 7, rk, 4 * 4, 4, &rp[0][0][0], 3, 3, GL_MAP2_VERTEX_4);
     gluNurbsSurface(nurb, 7, rk, 7, rk, 4 * 4, 4, &col[0][0][0], 3, 3, GL_MAP2_COLOR_4);
     gluEndSurface(nurb);
+    glEndList();
+    glPushMatrix();
+    glTranslatef(2.0f, 0.0f, -10.0f);
+    glRotatef(-55.0f, 1.0f, 0.0f, 0.0f);
+    glRotatef(-25.0f, 0.0f, 0.0f, 1.0f);
+    glCallList(list);
     glPopMatrix();
     gluDeleteNurbsRenderer(nurb);
     return 0;
