@@ -61,10 +61,10 @@
     X(NOTE_SINGLE_COLOR, "approximated: lit textured surfaces with GL_SINGLE_COLOR get the highlight after the texture (as GL_SEPARATE_SPECULAR_COLOR), where GL modulates it by the texture") \
     X(NOTE_ACCUM_WEIGHTS, "approximated: accumulation weights that do not add up to one, GL_MULT or GL_ADD, are drawn as an average of the passes") \
     X(NOTE_MULTITEX, "approximated: texture units past the second enabled one not drawn; a unit after the first combined with one fragment colour (unlit, the first vertex's) unless both units use GL_MODULATE or the first replaces the colour; two units blended are drawn opaque") \
-    X(NOTE_NURBS_TRIM, "approximated: GLU NURBS trim edges not parallel to the parameter axes cut the surface along the translator's sampling grid (a staircase edge)") \
-    X(NOTE_NURBS_OUTLINE, "approximated: GLU_OUTLINE_POLYGON draws the edges of the translator's tessellation of the NURBS surface, not of GLU's") \
-    X(NOTE_NURBS_SAMPLING, "approximated: GLU NURBS are evaluated at 16 or more steps per knot span, which can be finer than GLU samples them (GLU_PATH_LENGTH, GLU_PARAMETRIC_ERROR, or fewer GLU_DOMAIN_DISTANCE steps): silhouettes and shading can differ slightly") \
-    X(NOTE_NURBS_TESSELLATOR, "translated as recorded: GLU NURBS in GLU_NURBS_TESSELLATOR mode are drawn by the program's own callbacks, whose GL calls are recorded")
+    X(NOTE_NURBS_TRIM, "approximated: GLU NURBS trim edges not along the u or v axis cut along the sampling grid") \
+    X(NOTE_NURBS_OUTLINE, "approximated: GLU_OUTLINE_POLYGON draws the translator's NURBS tessellation, not GLU's") \
+    X(NOTE_NURBS_SAMPLING, "approximated: GLU NURBS sampled at 16+ steps a knot span, finer than GLU may sample them") \
+    X(NOTE_NURBS_TESSELLATOR, "as recorded: GLU NURBS in GLU_NURBS_TESSELLATOR mode, drawn by the program's callbacks")
 
 typedef enum diag_kind {
 #define DIAG_ENUM_(name, text) DIAG_##name,
