@@ -777,13 +777,61 @@ static int cmp_double(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
-/* The grid lines along axis d of the vertex piece: NURBS_SPAN_STEPS (or
- * the domain-distance steps) per non-empty knot span, plus `extra` values
+/* The grid lines along axis d of the vertex piece: NURBS_SPAN_STEPS per
+ * non-empty knot span, or GLU's steps where more (GLU_DOMAIN_DISTANCE's;
+ * with the window positions xy (may be NULL) of the control points, the
+ * control polygon's pixels over GLU's tolerance), plus `extra` values
  * inside the domain; sorted, without repeats. Returns how many (0 on
  * failure), into *out (caller frees); *finer becomes true when that is
- * finer than GLU_DOMAIN_DISTANCE's steps (or the method is another). */
-static size_t grid_axis(const nurbs_piece *p, int d, const nurbs_props *pr, const double *extra,
-                        size_t nextra, double **out, bool *finer)
+ * finer than GLU's steps as far as they are known. */
+/* The window positions (x, y in pixels) of the vertex piece's control
+ * points under the current matrices and viewport, or NULL (a point behind
+ * the eye, or out of memory): what GLU_PATH_LENGTH measures. */
+static double *window_points(const interp *ip, const nurbs_piece *p)
+{
+    size_t n = (size_t)p->n[0] * (size_t)p->n[1];
+    mat4 w = interp_window_matrix(interp_matrix(ip, INTERP_PROJ), ip->st.a.viewport.rect);
+    mat4 m = mat4_mul(&w, interp_matrix(ip, INTERP_MV));
+    double *xy = tr_realloc(NULL, 2 * n * sizeof *xy);
+    if (!xy)
+        return NULL;
+    for (size_t i = 0; i < n; i++) {
+        const double *q = p->pts + i * p->k;
+        double in[4] = {q[0], q[1], q[2], p->k == 4 ? q[3] : 1}, out[4];
+        mat4_apply(&m, in, out);
+        if (!(out[3] > 0) || !isfinite(out[0]) || !isfinite(out[1])) {
+            tr_free(xy);
+            return NULL;
+        }
+        xy[2 * i] = out[0] / out[3];
+        xy[2 * i + 1] = out[1] / out[3];
+    }
+    return xy;
+}
+
+/* The longest window-space length, over the rows of points along axis d,
+ * of the control polygon of knot span s: the curve there is no longer, so
+ * len / tolerance steps keep each step within GLU_PATH_LENGTH's pixels. */
+static double span_pixels(const nurbs_piece *p, const double *xy, int d, int s)
+{
+    int other = p->n[1 - d], first = s - p->order[d] + 1;
+    double best = 0;
+    for (int r = 0; r < other; r++) {
+        double len = 0;
+        for (int i = first; i < s; i++) {
+            size_t a = d == 0 ? (size_t)i * (size_t)p->n[1] + (size_t)r
+                              : (size_t)r * (size_t)p->n[1] + (size_t)i;
+            size_t b = d == 0 ? a + (size_t)p->n[1] : a + 1;
+            len += hypot(xy[2 * b] - xy[2 * a], xy[2 * b + 1] - xy[2 * a + 1]);
+        }
+        if (len > best)
+            best = len;
+    }
+    return best;
+}
+
+static size_t grid_axis(const nurbs_piece *p, int d, const nurbs_props *pr, const double *xy,
+                        const double *extra, size_t nextra, double **out, bool *finer)
 {
     const double *kn = p->knots[d];
     int n = p->n[d], order = p->order[d];
@@ -799,7 +847,12 @@ static size_t grid_axis(const nurbs_piece *p, int d, const nurbs_props *pr, cons
         double len = kn[s + 1] - kn[s];
         if (len <= 0)
             continue;
-        double steps = ceil(per_unit * len);
+        /* GLU's steps: by domain distance, or (the other methods, which
+         * measure on screen) at most the control polygon's pixels over
+         * the tolerance; without window positions, unknown (0). */
+        double steps = per_unit > 0 ? ceil(per_unit * len)
+                       : xy         ? ceil(span_pixels(p, xy, d, s) / pr->tolerance)
+                                    : 0;
         int st = steps > NURBS_SPAN_STEPS ? (steps < NURBS_MAX_STEPS ? (int)steps
                                                                      : NURBS_MAX_STEPS)
                                           : NURBS_SPAN_STEPS;
@@ -982,11 +1035,13 @@ static void draw_surface(interp *ip, struct interp_nurbs *nb, const nurbs_props 
     nurbs_node *nodes = NULL;
     uint8_t *in = NULL;
     bool finer = false;
+    double *xy = pr->method == GLU_DOMAIN_DISTANCE ? NULL : window_points(ip, r.vertex);
     for (int d = 0; d < 2; d++) {
         nex[d] = trim_axis_values(nb, d, &ex[d]);
-        ng[d] = grid_axis(r.vertex, d, pr, ex[d], nex[d], &g[d], &finer);
+        ng[d] = grid_axis(r.vertex, d, pr, xy, ex[d], nex[d], &g[d], &finer);
         tr_free(ex[d]);
     }
+    tr_free(xy);
     if (ng[0] < 2 || ng[1] < 2)
         goto done;
     if ((uint64_t)ng[0] * ng[1] > NURBS_MAX_GRID) {
@@ -1106,7 +1161,9 @@ static void draw_curve(interp *ip, struct interp_nurbs *nb, const nurbs_props *p
         return;
     double *g = NULL;
     bool finer = false;
-    size_t ng = grid_axis(r.vertex, 0, pr, NULL, 0, &g, &finer);
+    double *xy = pr->method == GLU_DOMAIN_DISTANCE ? NULL : window_points(ip, r.vertex);
+    size_t ng = grid_axis(r.vertex, 0, pr, xy, NULL, 0, &g, &finer);
+    tr_free(xy);
     if (finer && ng >= 2)
         interp_note(ip, DIAG_NOTE_NURBS_SAMPLING);
     if (ng >= 2 && nurbs_budget(ip, ng) && interp_prim_begin(ip, GL_LINE_STRIP))

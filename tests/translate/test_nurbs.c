@@ -299,6 +299,21 @@ static void test_outlines(void)
     CHECK_EQ_U(sc.ntris, 40 * 40 * 2);
     CHECK(dlog.e[DIAG_NOTE_NURBS_SAMPLING].count == 0);
     interp_destroy(ip);
+
+    /* GLU_PATH_LENGTH of 10 pixels, the unit square 500 pixels wide in a
+     * 1000 x 1000 viewport: at least 50 steps each way, as GLU takes. */
+    ip = fresh();
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 1000, 1000);
+    CMD(&s, NewNurbsRenderer, NURB);
+    CMD(&s, NurbsProperty, NURB, GLU_SAMPLING_TOLERANCE, 10);
+    CMD(&s, BeginSurface, NURB);
+    flat_surface(&s);
+    CMD(&s, EndSurface, NURB);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 50 * 50 * 2);
+    CHECK(dlog.e[DIAG_NOTE_NURBS_SAMPLING].count == 0);
+    interp_destroy(ip);
 }
 
 static void test_bad_input(void)
