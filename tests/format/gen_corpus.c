@@ -11,7 +11,7 @@
  * passes; select-scissor.bin a picking pass, named draws and scissored
  * clears and draws; nurbs.bin GLU NURBS surfaces (trimmed, outlined) and
  * curves whose knots and points fit their sizes. The corpus also holds
- * recorded-*.bin, traces written by libraygl for the image tests.
+ * recorded-*.bin, traces written by libraygl for the image tests (recorded-nurbs-trim.bin: nurbs_trim's).
  */
 #include "testutil.h"
 
