@@ -10,9 +10,10 @@
  * the current normal. Here the pieces are evaluated directly (Cox-de Boor
  * basis functions, homogeneous for the rational types) at the nodes of a
  * grid over the parameter domain: every knot span cut in NURBS_SPAN_STEPS
- * or more steps (GLU_DOMAIN_DISTANCE: its steps per unit, if finer), which
- * is at least as fine as GLU's default GLU_PATH_LENGTH of 50 pixels for
- * shapes up to the window's size; the ray tracer smooths with the normals.
+ * or GLU's steps, whichever are more (GLU_DOMAIN_DISTANCE's; for the
+ * methods that measure on screen, GLU_PATH_LENGTH the default, a bound from
+ * the span's control polygon in window space), so at least as fine as
+ * GLU's; the ray tracer smooths with the normals.
  * The vertices go through interp_add_vertex like glEvalCoord's, so
  * lighting, colour material, textures and culling follow.
  *
@@ -483,8 +484,6 @@ static bool trim_add(interp *ip, struct interp_nurbs *nb, double u, double v)
     nb->ntp++;
     return true;
 }
-
-void interp_nurbsend(interp *ip, const rgl_cmd *cmd);
 
 void interp_pwlcurve(interp *ip, const rgl_cmd *cmd)
 {
