@@ -316,6 +316,41 @@ static void test_outlines(void)
     interp_destroy(ip);
 }
 
+/* A GL_MAP2_NORMAL piece gives the normals (GL_AUTO_NORMAL would give
+ * (0, 0, 1) for the flat square); GL_AUTO_NORMAL alone gives du x dv. */
+static void test_normals(void)
+{
+    static const float kn[4] = {0, 0, 1, 1};
+    static const float nrm[12] = {0.6f, 0, 0.8f, 0.6f, 0, 0.8f, 0.6f, 0, 0.8f, 0.6f, 0, 0.8f};
+    const float *blobs[3] = {kn, kn, nrm};
+    size_t n[3] = {4, 4, 12};
+    const double v[] = {NURB, 4, 4, 6, 3, 2, 2, GL_MAP2_NORMAL};
+    for (int with_piece = 0; with_piece < 2; with_piece++) {
+        interp *ip = fresh();
+        seq s;
+        seq_init(&s);
+        CMD(&s, Enable, GL_LIGHTING);
+        CMD(&s, Enable, GL_AUTO_NORMAL);
+        CMD(&s, Normal3f, 0, 1, 0);
+        CMD(&s, NewNurbsRenderer, NURB);
+        CMD(&s, BeginSurface, NURB);
+        flat_surface(&s);
+        if (with_piece)
+            nurbs_cmd(&s, RGL_OP_NurbsSurface, v, 8, blobs, n);
+        CMD(&s, EndSurface, NURB);
+        run(ip, &s);
+        CHECK(sc.nverts > 0);
+        for (size_t i = 0; i < sc.nverts; i++) {
+            CHECK_NEAR(sc.verts[i].normal[0], with_piece ? 0.6 : 0, 1e-6);
+            CHECK_NEAR(sc.verts[i].normal[1], 0, 1e-6);
+            CHECK_NEAR(sc.verts[i].normal[2], with_piece ? 0.8 : 1, 1e-6);
+        }
+        /* The current normal is left as glNormal3f set it. */
+        CHECK_NEAR(ip->st.a.current.normal[1], 1, 0);
+        interp_destroy(ip);
+    }
+}
+
 static void test_bad_input(void)
 {
     interp *ip = fresh();
@@ -379,6 +414,7 @@ int main(void)
     test_curves();
     test_surface_counts();
     test_outlines();
+    test_normals();
     test_bad_input();
     test_large_trim();
     scene_finish(&sc);
