@@ -62,7 +62,7 @@
     X(NOTE_ACCUM_WEIGHTS, "approximated: accumulation weights that do not add up to one, GL_MULT or GL_ADD, are drawn as an average of the passes") \
     X(NOTE_MULTITEX, "approximated: texture units past the second enabled one not drawn; a unit after the first combined with one fragment colour (unlit, the first vertex's) unless both units use GL_MODULATE or the first replaces the colour; two units blended are drawn opaque") \
     X(NOTE_NURBS_TRIM, "approximated: GLU NURBS trim edges not along the u or v axis cut along the sampling grid") \
-    X(NOTE_NURBS_OUTLINE, "approximated: GLU_OUTLINE_POLYGON draws the translator's NURBS tessellation, not GLU's") \
+    X(NOTE_NURBS_OUTLINE, "approximated: GLU_OUTLINE_POLYGON of trimmed NURBS: the translator's grid, not GLU's triangles") \
     X(NOTE_NURBS_SAMPLING, "approximated: GLU NURBS sampled at 16+ steps a knot span, finer than GLU may sample them") \
     X(NOTE_NURBS_TESSELLATOR, "as recorded: GLU NURBS in GLU_NURBS_TESSELLATOR mode, drawn by the program's callbacks")
 

@@ -9,11 +9,11 @@
  * normal GL_AUTO_NORMAL gives (du x dv) when the program enabled it, else
  * the current normal. Here the pieces are evaluated directly (Cox-de Boor
  * basis functions, homogeneous for the rational types) at the nodes of a
- * grid over the parameter domain: every knot span cut in NURBS_SPAN_STEPS
- * or GLU's steps, whichever are more (GLU_DOMAIN_DISTANCE's; for the
- * methods that measure on screen, GLU_PATH_LENGTH the default, a bound from
- * the span's control polygon in window space), so at least as fine as
- * GLU's; the ray tracer smooths with the normals.
+ * grid over the parameter domain: every knot span cut in GLU_DOMAIN_DISTANCE's
+ * steps (GLU's own grid), or for the methods that measure on screen
+ * (GLU_PATH_LENGTH, the default) in NURBS_SPAN_STEPS or a bound on GLU's
+ * steps from the span's control polygon in window space, whichever are
+ * more: at least as fine as GLU's; the ray tracer smooths with normals.
  * The vertices go through interp_add_vertex like glEvalCoord's, so
  * lighting, colour material, textures and culling follow.
  *
@@ -776,10 +776,10 @@ static int cmp_double(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
-/* The grid lines along axis d of the vertex piece: NURBS_SPAN_STEPS per
- * non-empty knot span, or GLU's steps where more (GLU_DOMAIN_DISTANCE's;
- * with the window positions xy (may be NULL) of the control points, the
- * control polygon's pixels over GLU's tolerance), plus `extra` values
+/* The grid lines along axis d of the vertex piece: per non-empty knot
+ * span, GLU_DOMAIN_DISTANCE's steps; else NURBS_SPAN_STEPS, or more where
+ * the window positions xy (may be NULL) of the control points give a
+ * control polygon of more pixels over GLU's tolerance; plus `extra` values
  * inside the domain; sorted, without repeats. Returns how many (0 on
  * failure), into *out (caller frees); *finer becomes true when that is
  * finer than GLU's steps as far as they are known. */
@@ -852,9 +852,11 @@ static size_t grid_axis(const nurbs_piece *p, int d, const nurbs_props *pr, cons
         double steps = per_unit > 0 ? ceil(per_unit * len)
                        : xy         ? ceil(span_pixels(p, xy, d, s) / pr->tolerance)
                                     : 0;
-        int st = steps > NURBS_SPAN_STEPS ? (steps < NURBS_MAX_STEPS ? (int)steps
-                                                                     : NURBS_MAX_STEPS)
-                                          : NURBS_SPAN_STEPS;
+        /* GLU_DOMAIN_DISTANCE's steps are known: exactly those (GLU's own
+         * grid, which GLU_OUTLINE_POLYGON shows); else at least 16. */
+        double want = per_unit > 0 ? (steps > 1 ? steps : 1)
+                                   : (steps > NURBS_SPAN_STEPS ? steps : NURBS_SPAN_STEPS);
+        int st = want < NURBS_MAX_STEPS ? (int)want : NURBS_MAX_STEPS;
         if (st > steps)
             *finer = true; /* GLU's own sampling is coarser, or depends on the view */
         for (int i = 0; i < st && m < NURBS_MAX_STEPS; i++)
@@ -1101,7 +1103,10 @@ static void draw_surface(interp *ip, struct interp_nurbs *nb, const nurbs_props 
         }
         interp_prim_end(ip);
     } else if (pr->display == GLU_OUTLINE_POLYGON) {
-        interp_note(ip, DIAG_NOTE_NURBS_OUTLINE);
+        /* Untrimmed, GLU outlines its sampling grid; near trims, its own
+         * triangles. */
+        if (nb->nloops)
+            interp_note(ip, DIAG_NOTE_NURBS_OUTLINE);
         /* Each drawn cell's edges, once: its lower and left ones, and its
          * upper and right ones where no drawn cell continues. */
         if (interp_prim_begin(ip, GL_LINES)) {
