@@ -1,7 +1,8 @@
-/* nurbs_outline.c: GLU NURBS surfaces in GLU_OUTLINE_POLYGON display mode
- * (OSMesa), unlit: the hill's patch boundary, then a trimmed surface whose
- * outline is its trim loops (an outer pwl square and a square hole),
- * mapped onto the surface.
+/* nurbs_outline_polygon.c: GLU NURBS surfaces in GLU_OUTLINE_POLYGON
+ * display mode (OSMesa), unlit, untrimmed: the hill and a biquadratic of
+ * two knot spans each way. GLU outlines an untrimmed surface as the lines
+ * of its sampling grid, which with GLU_DOMAIN_DISTANCE is the translator's
+ * too; near trims GLU outlines triangles of its own (noted, not tested).
  */
 #include "harness.h"
 
