@@ -53,6 +53,10 @@ typedef struct nurbs_props {
     uint32_t id; /* 0: free slot */
     GLenum display, method, mode;
     double tolerance, ustep, vstep;
+    bool own_matrices; /* GLU_AUTO_LOAD_MATRIX false: sample with these */
+    bool have_matrices; /* gluLoadSamplingMatrices was called */
+    mat4 model, proj;
+    int32_t view[4];
 } nurbs_props;
 
 /* One gluNurbsSurface or gluNurbsCurve: n[d] points along axis d (n[1] =
@@ -83,7 +87,12 @@ struct interp_nurbs {
 };
 
 static const nurbs_props props_default = {
-    0, GLU_FILL, GLU_PATH_LENGTH, GLU_NURBS_RENDERER, 50.0, 100.0, 100.0,
+    .display = GLU_FILL,
+    .method = GLU_PATH_LENGTH,
+    .mode = GLU_NURBS_RENDERER,
+    .tolerance = 50.0,
+    .ustep = 100.0,
+    .vstep = 100.0,
 };
 
 /* ---- Basis functions -------------------------------------------------------------- */
@@ -361,9 +370,11 @@ void interp_nurbsproperty(interp *ip, const rgl_cmd *cmd)
             goto bad;
         *(prop == GLU_U_STEP ? &p->ustep : &p->vstep) = v;
         break;
-    case GLU_CULLING:
     case GLU_AUTO_LOAD_MATRIX:
-        break; /* change how GLU samples or skips what is off screen, not the picture */
+        p->own_matrices = v == 0;
+        break;
+    case GLU_CULLING:
+        break; /* skips what is off screen: not the picture */
     default:
         interp_diag(ip, DIAG_IGNORED, "gluNurbsProperty: unknown property %u ignored", prop);
         return;
@@ -374,9 +385,31 @@ bad:
                 prop);
 }
 
-/* Sampling matrices only steer GLU's step sizes; the grid here does not
- * depend on them. */
-void interp_loadsampling(interp *ip, const rgl_cmd *cmd) { (void)ip, (void)cmd; }
+/* The matrices and viewport GLU_PATH_LENGTH measures with while
+ * GLU_AUTO_LOAD_MATRIX is false (GLU 1.3 7.6): they steer the grid's
+ * density only. */
+void interp_loadsampling(interp *ip, const rgl_cmd *cmd)
+{
+    nurbs_props *p = props_slot(ip, nurbs_handle(cmd), true);
+    if (!p)
+        return;
+    mat4 model, proj;
+    for (uint32_t i = 0; i < 16; i++) {
+        model.m[i] = rgl_arg_f(&cmd->arg[1], i);
+        proj.m[i] = rgl_arg_f(&cmd->arg[2], i);
+        if (!isfinite(model.m[i]) || !isfinite(proj.m[i])) {
+            interp_diag(ip, DIAG_BAD_NUMBER, "sampling matrix not finite");
+            return;
+        }
+    }
+    p->model = model;
+    p->proj = proj;
+    for (int i = 0; i < 4; i++) {
+        int64_t x = rgl_arg_i(&cmd->arg[3 + i], 0);
+        p->view[i] = x < -(1 << 24) ? -(1 << 24) : x > (1 << 24) ? (1 << 24) : (int32_t)x;
+    }
+    p->have_matrices = true;
+}
 
 void interp_nurbsbegin(interp *ip, const rgl_cmd *cmd)
 {
@@ -784,13 +817,16 @@ static int cmp_double(const void *a, const void *b)
  * failure), into *out (caller frees); *finer becomes true when that is
  * finer than GLU's steps as far as they are known. */
 /* The window positions (x, y in pixels) of the vertex piece's control
- * points under the current matrices and viewport, or NULL (a point behind
- * the eye, or out of memory): what GLU_PATH_LENGTH measures. */
-static double *window_points(const interp *ip, const nurbs_piece *p)
+ * points under the current matrices and viewport (or the object's
+ * sampling matrices), or NULL (a point behind the eye, or out of memory):
+ * what GLU_PATH_LENGTH measures. */
+static double *window_points(const interp *ip, const nurbs_piece *p, const nurbs_props *pr)
 {
     size_t n = (size_t)p->n[0] * (size_t)p->n[1];
-    mat4 w = interp_window_matrix(interp_matrix(ip, INTERP_PROJ), ip->st.a.viewport.rect);
-    mat4 m = mat4_mul(&w, interp_matrix(ip, INTERP_MV));
+    bool own = pr->own_matrices && pr->have_matrices;
+    mat4 w = own ? interp_window_matrix(&pr->proj, pr->view)
+                 : interp_window_matrix(interp_matrix(ip, INTERP_PROJ), ip->st.a.viewport.rect);
+    mat4 m = mat4_mul(&w, own ? &pr->model : interp_matrix(ip, INTERP_MV));
     double *xy = tr_realloc(NULL, 2 * n * sizeof *xy);
     if (!xy)
         return NULL;
@@ -1036,7 +1072,7 @@ static void draw_surface(interp *ip, struct interp_nurbs *nb, const nurbs_props 
     nurbs_node *nodes = NULL;
     uint8_t *in = NULL;
     bool finer = false;
-    double *xy = pr->method == GLU_DOMAIN_DISTANCE ? NULL : window_points(ip, r.vertex);
+    double *xy = pr->method == GLU_DOMAIN_DISTANCE ? NULL : window_points(ip, r.vertex, pr);
     for (int d = 0; d < 2; d++) {
         nex[d] = trim_axis_values(nb, d, &ex[d]);
         ng[d] = grid_axis(r.vertex, d, pr, xy, ex[d], nex[d], &g[d], &finer);
@@ -1165,7 +1201,7 @@ static void draw_curve(interp *ip, struct interp_nurbs *nb, const nurbs_props *p
         return;
     double *g = NULL;
     bool finer = false;
-    double *xy = pr->method == GLU_DOMAIN_DISTANCE ? NULL : window_points(ip, r.vertex);
+    double *xy = pr->method == GLU_DOMAIN_DISTANCE ? NULL : window_points(ip, r.vertex, pr);
     size_t ng = grid_axis(r.vertex, 0, pr, xy, NULL, 0, &g, &finer);
     tr_free(xy);
     if (finer && ng >= 2)

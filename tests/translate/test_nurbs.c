@@ -316,6 +316,27 @@ static void test_outlines(void)
     CHECK_EQ_U(sc.ntris, 50 * 50 * 2);
     CHECK(dlog.e[DIAG_NOTE_NURBS_SAMPLING].count == 0);
     interp_destroy(ip);
+
+    /* The same viewport given by gluLoadSamplingMatrices: used while
+     * GLU_AUTO_LOAD_MATRIX is false, not after it is true again. */
+    for (int autoload = 0; autoload < 2; autoload++) {
+        ip = fresh();
+        seq_init(&s);
+        CMD(&s, Viewport, 0, 0, 100, 100); /* the square: 50 pixels, 5 steps */
+        CMD(&s, NewNurbsRenderer, NURB);
+        CMD(&s, NurbsProperty, NURB, GLU_SAMPLING_TOLERANCE, 10);
+        CMD(&s, NurbsProperty, NURB, GLU_AUTO_LOAD_MATRIX, 0);
+        CMD(&s, LoadSamplingMatrices, NURB, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 1, 0,
+            0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 1000, 1000);
+        if (autoload)
+            CMD(&s, NurbsProperty, NURB, GLU_AUTO_LOAD_MATRIX, 1);
+        CMD(&s, BeginSurface, NURB);
+        flat_surface(&s);
+        CMD(&s, EndSurface, NURB);
+        run(ip, &s);
+        CHECK_EQ_U(sc.ntris, autoload ? 16 * 16 * 2 : 50 * 50 * 2);
+        interp_destroy(ip);
+    }
 }
 
 /* A GL_MAP2_NORMAL piece gives the normals (GL_AUTO_NORMAL would give
