@@ -27,7 +27,7 @@
     X(IGNORED, "ignored call") \
     X(BAD_NUMBER, "NaN or infinite value") \
     X(LIMIT, "limit exceeded") \
-    X(NOTE_LIGHTING, "approximated: the lights changed between lit draws of a frame (the first lit draw's lights light the whole frame)") \
+    X(NOTE_LIGHTING, "approximated: the lights changed between lit draws of a frame more than 256 times (later draws are lit by the 256th set of lights)") \
     X(NOTE_FOG, "approximated: the fog changed between fogged draws of a frame (the first fogged draw's fog is used)") \
     X(NOTE_BLEND, "approximated: blending with colour or destination-alpha factors, or of lit or textured surfaces, other than GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA is drawn as that one") \
     X(NOTE_BLEND_ADD, "approximated: additive blending (all of the colour behind kept) keeps 127/128 of it") \
@@ -60,7 +60,8 @@
     X(NOTE_COLOR_SUM, "not translated yet: the secondary colour of unlit surfaces (GL_COLOR_SUM): not added") \
     X(NOTE_SINGLE_COLOR, "approximated: lit textured surfaces with GL_SINGLE_COLOR get the highlight after the texture (as GL_SEPARATE_SPECULAR_COLOR), where GL modulates it by the texture") \
     X(NOTE_ACCUM_WEIGHTS, "approximated: accumulation weights that do not add up to one, GL_MULT or GL_ADD, are drawn as an average of the passes") \
-    X(NOTE_MULTITEX, "approximated: texture units past the second enabled one not drawn; a unit after the first combined with one fragment colour (unlit, the first vertex's) unless both units use GL_MODULATE or the first replaces the colour; two units blended are drawn opaque")
+    X(NOTE_MULTITEX, "approximated: texture units past the second enabled one not drawn; a unit after the first combined with one fragment colour (unlit, the first vertex's) unless both units use GL_MODULATE or the first replaces the colour; two units blended are drawn opaque") \
+    X(NOTE_SHADOW_HIGHLIGHT, "approximated with shadows: highlights of lights whose specular is not one multiple of their diffuse colour")
 
 typedef enum diag_kind {
 #define DIAG_ENUM_(name, text) DIAG_##name,

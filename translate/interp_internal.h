@@ -126,6 +126,7 @@ struct interp {
      * or fogged draw), to notice when a later draw uses others. */
     uint8_t seen_light_on[INTERP_MAX_LIGHTS];
     gl_light seen_light[INTERP_MAX_LIGHTS];
+    uint32_t seen_set; /* their light set (interp_lightset.c) */
 
     /* The frame's accumulation-buffer passes (interp_accum.c): after the
      * first glAccum(GL_ACCUM or GL_LOAD), what later passes draw is dropped
@@ -420,6 +421,10 @@ void interp_fix_fog(interp *ip);
  * normal n, for the front (back = false) or back material, from the
  * current state; colour is the vertex colour for GL_COLOR_MATERIAL.
  * For lines and points, which the scene draws unlit (interp_light.c). */
+/* The light set of the GL lights enabled now, added to the scene when the
+ * frame has not had it yet (interp_lightset.c). */
+uint32_t interp_lightset_current(interp *ip);
+
 void interp_lit_color(const interp *ip, const double p[3], const double n[3], bool back,
                       const float colour[4], float out[4]);
 
