@@ -1,0 +1,228 @@
+/* test_lights.c: light sets (interp_lightset.c) and how the writer lights
+ * them (povwrite_light.c): one set per distinct group of lights in a frame,
+ * light_group only with more than one, one shadow-casting light per GL light
+ * with shadows and the exact split with --no-shadows, and the highlight
+ * multiple of a set.
+ */
+#include <GL/gl.h>
+#include <string.h>
+
+#include "check.h"
+#include "interp.h"
+#include "interp_internal.h"
+#include "outbuf.h"
+#include "povwrite.h"
+#include "scene.h"
+#include "tracegen.h"
+
+static scene sc;
+static diag_log dlog;
+static char sdl[1 << 16];
+static size_t sdl_len;
+
+static interp *fresh(void)
+{
+    scene_reset(&sc);
+    diag_clear(&dlog);
+    interp *ip = interp_create(&sc, &dlog);
+    interp_begin_frame(ip);
+    return ip;
+}
+
+static void run(interp *ip, seq *s)
+{
+    rgl_error err;
+    CHECK(interp_run(ip, s->data, s->len, 0, &err) == RGL_OK);
+    seq_free(s);
+}
+
+static uint64_t count(diag_kind k) { return dlog.e[k].count; }
+
+static int keep(void *user, const char *p, size_t n)
+{
+    (void)user;
+    if (sdl_len + n < sizeof sdl) {
+        memcpy(sdl + sdl_len, p, n);
+        sdl_len += n;
+        sdl[sdl_len] = 0;
+    }
+    return 0;
+}
+
+static size_t occurrences(const char *hay, const char *needle)
+{
+    size_t n = 0;
+    for (const char *p = strstr(hay, needle); p; p = strstr(p + 1, needle))
+        n++;
+    return n;
+}
+
+static void write_scene(bool no_shadows)
+{
+    povwriter *w = povwriter_create();
+    outbuf ob;
+    pov_options opt = {no_shadows, 0, 0};
+    pov_frame_info info;
+    memset(&info, 0, sizeof info);
+    info.options = &opt;
+    sdl_len = 0;
+    sdl[0] = 0;
+    CHECK(outbuf_init(&ob, 1 << 12, keep, NULL) == 0);
+    CHECK(povwriter_scene(w, &ob, &sc, &info) == 0);
+    CHECK(outbuf_flush(&ob) == 0);
+    outbuf_finish(&ob);
+    povwriter_destroy(w);
+}
+
+static void tri(seq *s, float z)
+{
+    CMD(s, Begin, GL_TRIANGLES);
+    CMD(s, Vertex3f, 0, 0, z);
+    CMD(s, Vertex3f, 1, 0, z);
+    CMD(s, Vertex3f, 0, 1, z);
+    CMD0(s, End);
+}
+
+/* A, B, A: two sets, the third draw back in the first; the writer puts each
+ * set's objects in a light_group with its lights. */
+static void test_sets(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Enable, GL_LIGHTING);
+    CMD(&s, Enable, GL_LIGHT0);
+    tri(&s, -2);
+    CMD(&s, Lightfv, GL_LIGHT0, GL_DIFFUSE, 1, 0, 0, 1); /* recoloured */
+    tri(&s, -3);
+    CMD(&s, Lightfv, GL_LIGHT0, GL_DIFFUSE, 1, 1, 1, 1); /* back */
+    tri(&s, -4);
+    run(ip, &s);
+    interp_end_frame(ip);
+    CHECK_EQ_U(sc.nlightsets, 2);
+    CHECK_EQ_U(sc.nlights, 2);
+    CHECK_EQ_U(sc.nmeshes, 3);
+    if (sc.nmeshes == 3) {
+        CHECK(sc.materials[sc.meshes[0].look.material].lightset == 0);
+        CHECK(sc.materials[sc.meshes[1].look.material].lightset == 1);
+        CHECK(sc.materials[sc.meshes[2].look.material].lightset == 0);
+    }
+    CHECK_EQ_U(count(DIAG_NOTE_LIGHTING), 0);
+    CHECK_EQ_U(count(DIAG_NOTE_SHADOW_HIGHLIGHT), 1); /* red diffuse, white specular */
+    write_scene(true);
+    CHECK_EQ_U(occurrences(sdl, "light_group{"), 2);
+    CHECK_EQ_U(occurrences(sdl, "global_lights on}"), 2);
+    /* --no-shadows: LIGHT0 white (one light of ls = ld), then red with
+     * white specular: ls and a shadowless ld - ls. */
+    CHECK_EQ_U(occurrences(sdl, "light_source{"), 3);
+    CHECK_EQ_U(occurrences(sdl, "shadowless"), 1);
+    interp_destroy(ip);
+}
+
+/* One set: no light_group. With shadows, a light whose specular differs
+ * from its diffuse is one shadow-casting light of its diffuse colour, and
+ * the finish's specular is the set's multiple of the material's. */
+static void test_one_set_shadows(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Enable, GL_LIGHTING);
+    CMD(&s, Enable, GL_LIGHT1);
+    CMD(&s, Lightfv, GL_LIGHT1, GL_DIFFUSE, 0.5, 0.5, 0.5, 1);
+    CMD(&s, Lightfv, GL_LIGHT1, GL_SPECULAR, 0.25, 0.25, 0.25, 1);
+    CMD(&s, Materialfv, GL_FRONT, GL_SPECULAR, 0.8, 0.8, 0.8, 1);
+    tri(&s, -2);
+    tri(&s, -3);
+    run(ip, &s);
+    interp_end_frame(ip);
+    CHECK_EQ_U(sc.nlightsets, 1);
+    CHECK_EQ_U(count(DIAG_NOTE_SHADOW_HIGHLIGHT), 0); /* 0.25 = 0.5 x 0.5: exact */
+    write_scene(false);
+    CHECK_EQ_U(occurrences(sdl, "light_group{"), 0);
+    CHECK_EQ_U(occurrences(sdl, "light_source{"), 1);
+    CHECK_EQ_U(occurrences(sdl, "shadowless"), 0);
+    CHECK(strstr(sdl, "rgb<0.5,0.5,0.5>") != NULL);
+    CHECK(strstr(sdl, "specular 0.4 ") != NULL); /* 0.8 x 0.5 */
+    write_scene(true);
+    CHECK_EQ_U(occurrences(sdl, "light_source{"), 2);
+    CHECK_EQ_U(occurrences(sdl, "shadowless"), 1);
+    CHECK(strstr(sdl, "specular 0.8 ") != NULL);
+    interp_destroy(ip);
+}
+
+/* A set whose draws a glClear erased is not written: the one set left is
+ * written as a frame of one set. */
+static void test_cleared_set(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Enable, GL_LIGHTING);
+    CMD(&s, Enable, GL_LIGHT0);
+    tri(&s, -2);
+    CMD(&s, Clear, GL_COLOR_BUFFER_BIT);
+    CMD(&s, Disable, GL_LIGHT0);
+    CMD(&s, Enable, GL_LIGHT2);
+    tri(&s, -3);
+    run(ip, &s);
+    interp_end_frame(ip);
+    CHECK_EQ_U(sc.nlightsets, 2);
+    write_scene(true);
+    CHECK_EQ_U(occurrences(sdl, "light_group{"), 0);
+    /* LIGHT2's default: black diffuse and specular, so no light at all */
+    CHECK_EQ_U(occurrences(sdl, "light_source{"), 0);
+    interp_destroy(ip);
+}
+
+/* A trace that changes its lights at every draw: at most
+ * SCENE_MAX_LIGHTSETS sets, then a note. */
+static void test_set_cap(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Enable, GL_LIGHTING);
+    CMD(&s, Enable, GL_LIGHT0);
+    for (int i = 0; i < SCENE_MAX_LIGHTSETS + 10; i++) {
+        CMD(&s, Lightf, GL_LIGHT0, GL_CONSTANT_ATTENUATION, 1.0 + i);
+        tri(&s, -2);
+    }
+    run(ip, &s);
+    interp_end_frame(ip);
+    CHECK_EQ_U(sc.nlightsets, SCENE_MAX_LIGHTSETS);
+    CHECK_EQ_U(sc.nlights, SCENE_MAX_LIGHTSETS);
+    CHECK_EQ_U(count(DIAG_NOTE_LIGHTING), 1); /* a note is said once a frame */
+    interp_destroy(ip);
+}
+
+/* The highlight multiple: least squares over the channels; exact only when
+ * every light's specular is that multiple of its diffuse. */
+static void test_ratio(void)
+{
+    scene_light l[2];
+    memset(l, 0, sizeof l);
+    for (int k = 0; k < 3; k++) {
+        l[0].color[k] = 1, l[0].specular[k] = 1;
+        l[1].color[k] = 0.5f, l[1].specular[k] = 0;
+    }
+    double r;
+    CHECK(scene_lights_specular_ratio(l, 1, &r));
+    CHECK_NEAR(r, 1, 1e-12);
+    CHECK(!scene_lights_specular_ratio(l, 2, &r));
+    CHECK_NEAR(r, 3.0 / 3.75, 1e-12);
+    CHECK(scene_lights_specular_ratio(l + 1, 1, &r));
+    CHECK_NEAR(r, 0, 0);
+}
+
+int main(void)
+{
+    scene_init(&sc);
+    test_sets();
+    test_one_set_shadows();
+    test_cleared_set();
+    test_set_cap();
+    test_ratio();
+    scene_finish(&sc);
+    return CHECK_RESULT("test_lights");
+}
