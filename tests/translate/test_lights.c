@@ -215,6 +215,67 @@ static void test_ratio(void)
     CHECK_NEAR(r, 0, 0);
 }
 
+/* After glDrawArrays the current colour, normal and the materials colour
+ * material tracks are those from before the draw (Mesa); glArrayElement
+ * keeps the element's. */
+static void test_array_current(void)
+{
+    interp *ip = fresh();
+    static const float pos[3][2] = {{0, 0}, {1, 0}, {0, 1}};
+    static const float col[3][4] = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0.1f, 0.2f, 0.3f, 1}};
+    static const float nrm[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}};
+    seq s;
+    seq_init(&s);
+    CMD(&s, Enable, GL_LIGHTING);
+    CMD(&s, Color3f, 0.9, 0.6, 0.2);
+    CMD(&s, Normal3f, 0, 0, 1);
+    CMD(&s, ColorMaterial, GL_FRONT, GL_AMBIENT_AND_DIFFUSE);
+    CMD(&s, Enable, GL_COLOR_MATERIAL);
+    for (int pass = 0; pass < 2; pass++) {
+        seq_cmd_bytes(&s, RGL_OP_ArrayData, pos, sizeof pos,
+                      (const double[]){GL_VERTEX_ARRAY, 0, 2, GL_FLOAT}, 4);
+        seq_cmd_bytes(&s, RGL_OP_ArrayData, col, sizeof col,
+                      (const double[]){GL_COLOR_ARRAY, 0, 4, GL_FLOAT}, 4);
+        seq_cmd_bytes(&s, RGL_OP_ArrayData, nrm, sizeof nrm,
+                      (const double[]){GL_NORMAL_ARRAY, 0, 3, GL_FLOAT}, 4);
+        if (pass == 0)
+            CMD(&s, DrawArrays, GL_TRIANGLES, 0, 3);
+        else
+            CMD(&s, ArrayElement, 2);
+    }
+    run(ip, &s);
+    const gl_attribs *a = &interp_state(ip)->a;
+    CHECK_EQ_U(sc.nverts, 3);
+    if (sc.nverts == 3)
+        CHECK_NEAR(sc.verts[2].color[2], 0.3, 1e-6); /* each vertex its element's */
+    /* after the glArrayElement: the element's */
+    CHECK_NEAR(a->current.color[0], 0.1, 1e-6);
+    CHECK_NEAR(a->current.normal[0], 1, 0);
+    interp_destroy(ip);
+
+    ip = fresh();
+    seq_init(&s);
+    CMD(&s, Enable, GL_LIGHTING);
+    CMD(&s, Color3f, 0.9, 0.6, 0.2);
+    CMD(&s, Normal3f, 0, 0, 1);
+    CMD(&s, ColorMaterial, GL_FRONT, GL_AMBIENT_AND_DIFFUSE);
+    CMD(&s, Enable, GL_COLOR_MATERIAL);
+    seq_cmd_bytes(&s, RGL_OP_ArrayData, pos, sizeof pos,
+                  (const double[]){GL_VERTEX_ARRAY, 0, 2, GL_FLOAT}, 4);
+    seq_cmd_bytes(&s, RGL_OP_ArrayData, col, sizeof col,
+                  (const double[]){GL_COLOR_ARRAY, 0, 4, GL_FLOAT}, 4);
+    seq_cmd_bytes(&s, RGL_OP_ArrayData, nrm, sizeof nrm,
+                  (const double[]){GL_NORMAL_ARRAY, 0, 3, GL_FLOAT}, 4);
+    CMD(&s, DrawArrays, GL_TRIANGLES, 0, 3);
+    run(ip, &s);
+    a = &interp_state(ip)->a;
+    CHECK_NEAR(a->current.color[0], 0.9, 1e-6);
+    CHECK_NEAR(a->current.color[2], 0.2, 1e-6);
+    CHECK_NEAR(a->current.normal[2], 1, 0);
+    CHECK_NEAR(a->lighting.material[0].ambient[1], 0.6, 1e-6);
+    interp_destroy(ip);
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -223,6 +284,7 @@ int main(void)
     test_cleared_set();
     test_set_cap();
     test_ratio();
+    test_array_current();
     scene_finish(&sc);
     return CHECK_RESULT("test_lights");
 }
