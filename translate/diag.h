@@ -61,6 +61,7 @@
     X(NOTE_SINGLE_COLOR, "approximated: lit textured surfaces with GL_SINGLE_COLOR get the highlight after the texture (as GL_SEPARATE_SPECULAR_COLOR), where GL modulates it by the texture") \
     X(NOTE_ACCUM_WEIGHTS, "approximated: accumulation weights that do not add up to one, GL_MULT or GL_ADD, are drawn as an average of the passes") \
     X(NOTE_MULTITEX, "approximated: texture units past the second enabled one not drawn; a unit after the first combined with one fragment colour (unlit, the first vertex's) unless both units use GL_MODULATE or the first replaces the colour; two units blended are drawn opaque") \
+    X(NOTE_MATERIAL_VERTEX, "approximated: glMaterial between the vertices of a primitive varying the shininess or two colours: drawn with the last vertex's material") \
     X(NOTE_SHADOW_HIGHLIGHT, "approximated with shadows: highlights of lights whose specular is not one multiple of their diffuse colour")
 
 typedef enum diag_kind {

@@ -128,6 +128,16 @@ struct interp {
     gl_light seen_light[INTERP_MAX_LIGHTS];
     uint32_t seen_set; /* their light set (interp_lightset.c) */
 
+    /* glMaterial between the vertices of the open primitive
+     * (interp_vmaterial.c): each vertex's material once one changed, and
+     * the terms its vertex colours carry at glEnd. */
+    struct interp_vmat {
+        bool changed;
+        gl_material (*mats)[2];
+        size_t n, cap;
+        uint8_t cm_extra[2];
+    } vmat;
+
     /* The frame's accumulation-buffer passes (interp_accum.c): after the
      * first glAccum(GL_ACCUM or GL_LOAD), what later passes draw is dropped
      * back to mark until glAccum(GL_RETURN); each pass's first draw gives
@@ -421,6 +431,18 @@ void interp_fix_fog(interp *ip);
  * normal n, for the front (back = false) or back material, from the
  * current state; colour is the vertex colour for GL_COLOR_MATERIAL.
  * For lines and points, which the scene draws unlit (interp_light.c). */
+/* glMaterial between vertices (interp_vmaterial.c): _begin at glBegin,
+ * _before_change in glMaterial before it changes the material, _vertex
+ * after each vertex is added to the pool, _end at glEnd of a filled primitive of n
+ * vertices before its look is made (true: the material was swapped, saved
+ * in `saved`, to be put back by _restore after the look). */
+void interp_vmat_begin(interp *ip);
+void interp_vmat_before_change(interp *ip);
+void interp_vmat_vertex(interp *ip);
+bool interp_vmat_end(interp *ip, uint32_t n, gl_material saved[2]);
+void interp_vmat_restore(interp *ip, const gl_material saved[2]);
+uint8_t interp_cm_bits(GLenum mode);
+
 /* The light set of the GL lights enabled now, added to the scene when the
  * frame has not had it yet (interp_lightset.c). */
 uint32_t interp_lightset_current(interp *ip);

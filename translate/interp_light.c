@@ -97,6 +97,7 @@ void interp_material(interp *ip, const rgl_cmd *cmd)
         interp_bad_value(ip, "shininess outside [0, 128]");
         return;
     }
+    interp_vmat_before_change(ip);
     for (int f = 0; f < 2; f++) {
         if (!(faces & (1 << f)))
             continue;
@@ -309,6 +310,8 @@ static uint8_t cm_bits(GLenum mode)
     }
 }
 
+uint8_t interp_cm_bits(GLenum mode) { return cm_bits(mode); }
+
 static bool light_on(const gl_attribs *a, int i)
 {
     return a->caps[INTERP_CAP_LIGHT0 + i] != 0;
@@ -348,6 +351,18 @@ int32_t interp_lit_material(interp *ip)
             if (bits & SCENE_CM_EMISSION)
                 memset(m.emission[f], 0, sizeof m.emission[f]);
         }
+    }
+    for (int f = 0; f < 2; f++) { /* terms glMaterial varied between vertices */
+        uint8_t x = ip->vmat.cm_extra[f];
+        m.color_material[f] |= x;
+        if (x & SCENE_CM_AMBIENT)
+            memset(m.ambient[f], 0, sizeof m.ambient[f]);
+        if (x & SCENE_CM_DIFFUSE)
+            memset(m.diffuse[f], 0, sizeof m.diffuse[f]);
+        if (x & SCENE_CM_SPECULAR)
+            memset(m.specular[f], 0, sizeof m.specular[f]);
+        if (x & SCENE_CM_EMISSION)
+            memset(m.emission[f], 0, sizeof m.emission[f]);
     }
     memcpy(m.model_ambient, a->lighting.model_ambient, sizeof m.model_ambient);
     m.two_sided = two;

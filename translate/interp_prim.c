@@ -327,6 +327,7 @@ static void begin_mode(interp *ip, GLenum mode)
     ip->in_begin = true;
     ip->prim_mode = mode;
     ip->prim_skip = true;
+    interp_vmat_begin(ip);
     if (!ip->scene || !interp_render_mode_draws(ip))
         return;
     interp_accum_draw(ip);
@@ -467,6 +468,7 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
     }
     ip->edge[k] = a->current.edge_flag;
     scene_commit_vertices(s, 1);
+    interp_vmat_vertex(ip);
 }
 
 void interp_vertex(interp *ip, const rgl_cmd *cmd)
@@ -982,7 +984,11 @@ static void end_primitive(interp *ip)
         as.check_bad = true;
     }
     ip->prim_tex_from1 = false;
+    gl_material vmat_saved[2];
+    bool vmat = interp_vmat_end(ip, n, vmat_saved);
     scene_look look = interp_current_look(ip);
+    if (vmat)
+        interp_vmat_restore(ip, vmat_saved);
     if (ip->prim_tex_from1)
         for (size_t i = 0; i < n; i++) {
             scene_vertex *v = &s->verts[ip->prim_first + i];

@@ -276,6 +276,52 @@ static void test_array_current(void)
     interp_destroy(ip);
 }
 
+/* glMaterial between vertices: the varying term rides on the vertex
+ * colours as colour material would; a change after the last vertex lights
+ * nothing; two varying colours are noted. */
+static void test_vertex_material(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Enable, GL_LIGHTING);
+    CMD(&s, Enable, GL_LIGHT0);
+    CMD(&s, Begin, GL_TRIANGLES);
+    CMD(&s, Materialfv, GL_FRONT, GL_EMISSION, 0.5, 0, 0, 1);
+    CMD(&s, Vertex3f, 0, 0, -2);
+    CMD(&s, Materialfv, GL_FRONT, GL_EMISSION, 0, 0.5, 0, 1);
+    CMD(&s, Vertex3f, 1, 0, -2);
+    CMD(&s, Vertex3f, 0, 1, -2);
+    CMD(&s, Materialfv, GL_FRONT, GL_DIFFUSE, 0, 0, 1, 1); /* after the last vertex */
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(sc.nmaterials, 1);
+    CHECK_EQ_U(sc.nverts, 3);
+    if (sc.nmaterials == 1 && sc.nverts == 3) {
+        const scene_material *m = &sc.materials[0];
+        CHECK(m->color_material[0] == SCENE_CM_EMISSION && m->color_material[1] == SCENE_CM_EMISSION);
+        CHECK_NEAR(m->diffuse[0][0], 0.8, 1e-6); /* GL's default, not the late blue */
+        CHECK_NEAR(sc.verts[0].color[0], 0.5, 1e-6);
+        CHECK_NEAR(sc.verts[1].color[1], 0.5, 1e-6);
+        CHECK_NEAR(sc.verts[2].color[1], 0.5, 1e-6);
+    }
+    /* The state after glEnd is GL's: the late blue holds. */
+    CHECK_NEAR(interp_state(ip)->a.lighting.material[0].diffuse[2], 1, 0);
+    CHECK_EQ_U(count(DIAG_NOTE_MATERIAL_VERTEX), 0);
+    seq_init(&s);
+    CMD(&s, Begin, GL_TRIANGLES);
+    CMD(&s, Materialfv, GL_FRONT, GL_DIFFUSE, 1, 0, 0, 1);
+    CMD(&s, Vertex3f, 0, 0, -2);
+    CMD(&s, Materialfv, GL_FRONT, GL_AMBIENT, 0, 1, 0, 1);
+    CMD(&s, Materialfv, GL_FRONT, GL_DIFFUSE, 0, 0, 1, 1);
+    CMD(&s, Vertex3f, 1, 0, -2);
+    CMD(&s, Vertex3f, 0, 1, -2);
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_NOTE_MATERIAL_VERTEX), 1);
+    interp_destroy(ip);
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -285,6 +331,7 @@ int main(void)
     test_set_cap();
     test_ratio();
     test_array_current();
+    test_vertex_material();
     scene_finish(&sc);
     return CHECK_RESULT("test_lights");
 }
