@@ -127,6 +127,7 @@ struct interp {
     uint8_t seen_light_on[INTERP_MAX_LIGHTS];
     gl_light seen_light[INTERP_MAX_LIGHTS];
     uint32_t seen_set; /* their light set (interp_lightset.c) */
+    bool vertex_lighting; /* interp_set_vertex_lighting */
 
     /* glMaterial between the vertices of the open primitive
      * (interp_vmaterial.c): each vertex's material once one changed, and
@@ -442,6 +443,10 @@ void interp_vmat_vertex(interp *ip);
 bool interp_vmat_end(interp *ip, uint32_t n, gl_material saved[2]);
 void interp_vmat_restore(interp *ip, const gl_material saved[2]);
 uint8_t interp_cm_bits(GLenum mode);
+
+/* Whether the open filled primitive is lit per vertex here
+ * (interp_gouraud.c): vertex lighting on, lighting on, one-sided. */
+bool interp_vertex_lit(const interp *ip);
 
 /* The light set of the GL lights enabled now, added to the scene when the
  * frame has not had it yet (interp_lightset.c). */

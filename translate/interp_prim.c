@@ -441,7 +441,7 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
     if (!a->caps[INTERP_CAP_LIGHTING]) {
         for (int i = 0; i < 4; i++)
             v->color[i] = clamp01(a->current.color[i]);
-    } else if (ip->prim_mode <= GL_LINE_STRIP) {
+    } else if (ip->prim_mode <= GL_LINE_STRIP || interp_vertex_lit(ip)) {
         lit_line_colour(ip, x, y, z, v->color);
     } else {
         interp_surface_colour(ip, v->color);
@@ -871,7 +871,7 @@ scene_look interp_current_look(interp *ip)
 {
     scene_look look;
     memset(&look, 0, sizeof look);
-    look.lit = ip->st.a.caps[INTERP_CAP_LIGHTING];
+    look.lit = ip->st.a.caps[INTERP_CAP_LIGHTING] && !interp_vertex_lit(ip);
     look.flat = ip->st.a.lighting.shade_model == GL_FLAT;
     look.blend = ip->prim_blend;
     look.fog = ip->st.a.caps[INTERP_CAP_FOG];

@@ -2,7 +2,8 @@
  * per-pixel lighting part: a large floor quad (four vertices) under a point
  * light close above it, whose highlight and falloff GL interpolates from
  * the corners, and a sphere of 8 x 6 facets with smooth normals. Included
- * by lights_gouraud_local.c (local viewer) and lights_gouraud_infinite.c.
+ * by lights_gouraud_local.c (local viewer), lights_gouraud_infinite.c and
+ * lights_gouraud_vertex.c (local viewer, translated with --vertex-lighting).
  */
 #ifndef RGL_TEST_LIGHTS_GOURAUD_H
 #define RGL_TEST_LIGHTS_GOURAUD_H
@@ -17,10 +18,14 @@ static inline void gouraud_scene(int w, int h, int local)
     glLightfv(GL_LIGHT0, GL_POSITION, pos);
     glEnable(GL_LIGHT0);
     lit_material(0.6f, 0.65f, 0.7f, 0.6f, 20.0f);
-    glBegin(GL_QUADS);
+    /* two triangles, so that the diagonal is the program's, not a quad
+     * split's */
+    glBegin(GL_TRIANGLES);
     glNormal3f(0, 1, 0);
     glVertex3f(-4.0f, -1.0f, -2.5f);
     glVertex3f(4.0f, -1.0f, -2.5f);
+    glVertex3f(4.0f, -1.0f, -9.0f);
+    glVertex3f(-4.0f, -1.0f, -2.5f);
     glVertex3f(4.0f, -1.0f, -9.0f);
     glVertex3f(-4.0f, -1.0f, -9.0f);
     glEnd();

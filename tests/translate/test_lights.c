@@ -322,6 +322,32 @@ static void test_vertex_material(void)
     interp_destroy(ip);
 }
 
+/* --vertex-lighting: a lit triangle drawn unlit in GL's lit colours;
+ * two-sided lighting keeps POV-Ray's. LIGHT0 along -z onto the normal
+ * (0, 0, 1): e + a Ga + d (N.L) = 0.2 x 0.2 + 0.8 = 0.84 per channel. */
+static void test_vertex_lighting(void)
+{
+    interp *ip = fresh();
+    interp_set_vertex_lighting(ip, true);
+    seq s;
+    seq_init(&s);
+    CMD(&s, Enable, GL_LIGHTING);
+    CMD(&s, Enable, GL_LIGHT0);
+    CMD(&s, Normal3f, 0, 0, 1);
+    tri(&s, -2);
+    CMD(&s, LightModeli, GL_LIGHT_MODEL_TWO_SIDE, 1);
+    tri(&s, -3);
+    run(ip, &s);
+    CHECK_EQ_U(sc.nmeshes, 2);
+    if (sc.nmeshes == 2) {
+        CHECK(!sc.meshes[0].look.lit && sc.meshes[0].look.material < 0);
+        CHECK(sc.meshes[1].look.lit);
+    }
+    if (sc.nverts >= 3)
+        CHECK_NEAR(sc.verts[0].color[0], 0.84, 1e-6);
+    interp_destroy(ip);
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -332,6 +358,7 @@ int main(void)
     test_ratio();
     test_array_current();
     test_vertex_material();
+    test_vertex_lighting();
     scene_finish(&sc);
     return CHECK_RESULT("test_lights");
 }
