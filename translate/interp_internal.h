@@ -452,6 +452,10 @@ bool interp_vertex_lit(const interp *ip);
  * frame has not had it yet (interp_lightset.c). */
 uint32_t interp_lightset_current(interp *ip);
 
+/* Notes a lit, textured draw under a set whose highlights only the
+ * per-channel form makes exact (not open to textures). */
+void interp_lightset_textured(interp *ip, const scene_look *look);
+
 void interp_lit_color(const interp *ip, const double p[3], const double n[3], bool back,
                       const float colour[4], float out[4]);
 

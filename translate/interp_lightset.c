@@ -54,19 +54,32 @@ static size_t set_range(const scene *s, uint32_t k, size_t *n)
 }
 
 /* Notes what a set's lights cost the default (shadowed) render: a set
- * whose specular colours are not one multiple of their diffuse colours
- * gets highlights of one fitted multiple (povwrite_light.c), and a spot
- * whose specular differs from its diffuse is approximated with
- * --no-shadows. */
+ * whose specular colours are neither one multiple of their diffuse colours
+ * nor one multiple per channel gets highlights of one fitted multiple
+ * (povwrite_light.c), and a spot whose specular differs from its diffuse
+ * is approximated with --no-shadows. */
 static void note_set(interp *ip, const scene_light *l, size_t n)
 {
-    double ratio;
-    if (!scene_lights_specular_ratio(l, n, &ratio))
+    double ratio, t[3];
+    if (!scene_lights_specular_ratio(l, n, &ratio) && !scene_lights_specular_channels(l, n, t))
         interp_note(ip, DIAG_NOTE_SHADOW_HIGHLIGHT);
     for (size_t i = 0; i < n; i++)
         if (l[i].kind == SCENE_LIGHT_SPOT &&
             memcmp(l[i].color, l[i].specular, sizeof l[i].color) != 0)
             interp_note(ip, DIAG_NOTE_SPOT_SPECULAR);
+}
+
+void interp_lightset_textured(interp *ip, const scene_look *look)
+{
+    const scene *s = ip->scene;
+    if (!look->lit || look->texture < 0 || look->material < 0 ||
+        (size_t)look->material >= s->nmaterials)
+        return;
+    size_t n, first = set_range(s, s->materials[look->material].lightset, &n);
+    double ratio;
+    /* The per-channel form scales the pigment, which a texture replaces. */
+    if (!scene_lights_specular_ratio(s->lights + first, n, &ratio))
+        interp_note(ip, DIAG_NOTE_SHADOW_HIGHLIGHT);
 }
 
 uint32_t interp_lightset_current(interp *ip)

@@ -899,6 +899,7 @@ scene_look interp_current_look(interp *ip)
     }
     look.names = interp_names_for_draw(ip);
     interp_scissor_look(ip, &look);
+    interp_lightset_textured(ip, &look);
     return look;
 }
 

@@ -217,12 +217,16 @@ static int32_t material_set(const scene *s, const scene_look *look)
 static void begin_sets(povlight *pl, const scene *s)
 {
     size_t nused = 0;
+    uint8_t textured[SCENE_MAX_LIGHTSETS];
+    memset(textured, 0, sizeof textured);
     for (size_t i = 0; i < s->nmeshes + s->nsolids; i++) {
         const scene_look *look = i < s->nmeshes ? &s->meshes[i].look
                                                 : &s->solids[i - s->nmeshes].look;
         if (i < s->nmeshes && s->meshes[i].tri_count == 0)
             continue;
         int32_t k = material_set(s, look);
+        if (k >= 0 && look->texture >= 0)
+            textured[k] = 1;
         if (k >= 0 && !pl->used[k]) {
             pl->used[k] = 1;
             nused++;
@@ -238,8 +242,10 @@ static void begin_sets(povlight *pl, const scene *s)
                s->lights[first + n].set == k)
             n++;
         double r = 1; /* no GL light: the user's (--light) keep the material's */
-        if (n > 0)
-            scene_lights_specular_ratio(s->lights + first, n, &r);
+        double t[3];
+        if (n > 0 && !scene_lights_specular_ratio(s->lights + first, n, &r) && !textured[k] &&
+            scene_lights_specular_channels(s->lights + first, n, t))
+            memcpy(pl->set_channel[k], t, sizeof t);
         pl->set_ratio[k] = r;
     }
 }
@@ -350,8 +356,13 @@ static void texture_body(const povlight *pl, outbuf *ob, const scene_look *look,
     double p[3], amb[3], em[3];
     bool in_set = m->lightset < SCENE_MAX_LIGHTSETS && m->lightset < s->nlightsets;
     const float *la = in_set ? pl->set_ambient[m->lightset] : pl->light_ambient;
+    const double *chan = in_set && !pl->opt.no_shadows && pl->set_channel[m->lightset][0] > 0
+                             ? pl->set_channel[m->lightset]
+                             : NULL;
     for (int k = 0; k < 3; k++) {
-        p[k] = pigment ? 1 : kd[k] > MIN_PIGMENT ? kd[k] : MIN_PIGMENT;
+        /* Per-channel form: lights of colour ls = t ld, so kd ld = (kd / t) ls. */
+        double kdk = chan && !pigment ? kd[k] / chan[k] : kd[k];
+        p[k] = pigment ? 1 : kdk > MIN_PIGMENT ? kdk : MIN_PIGMENT;
         amb[k] = ka[k] * ((double)m->model_ambient[k] + la[k]) / p[k];
         em[k] = ke[k] / p[k];
     }
@@ -385,7 +396,7 @@ static void texture_body(const povlight *pl, outbuf *ob, const scene_look *look,
     double spec = ((double)ks[0] + ks[1] + ks[2]) / 3 * (1 - t);
     /* With shadows each light is one light of its diffuse colour
      * (povlight_lights): the highlight is the set's multiple of it. */
-    if (!pl->opt.no_shadows && in_set)
+    if (!pl->opt.no_shadows && in_set && !chan)
         spec *= pl->set_ratio[m->lightset];
     if (spec > 0) {
         double sh = m->shininess[f];
@@ -669,7 +680,10 @@ static void put_gl_light(const povlight *pl, outbuf *ob, const scene_light *l)
         dif[k] = l->color[k];
     }
     if (!pl->opt.no_shadows && nonzero3(dif)) {
-        put_light(pl, ob, l, dif, false);
+        if (l->set < SCENE_MAX_LIGHTSETS && pl->set_channel[l->set][0] > 0)
+            put_light(pl, ob, l, spec, false); /* the per-channel form: ls */
+        else
+            put_light(pl, ob, l, dif, false);
         return;
     }
     if (l->kind == SCENE_LIGHT_SPOT && nonzero3(rest)) {

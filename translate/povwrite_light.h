@@ -30,6 +30,10 @@ typedef struct povlight {
     uint8_t used[SCENE_MAX_LIGHTSETS];
     float set_ambient[SCENE_MAX_LIGHTSETS][3];
     double set_ratio[SCENE_MAX_LIGHTSETS];
+    /* With shadows, a set whose lights' specular is one multiple of their
+     * diffuse per channel (channel[k] > 0; none textured): lights of their
+     * specular colour, pigments scaled by 1 / channel. */
+    double set_channel[SCENE_MAX_LIGHTSETS][3];
 } povlight;
 
 #define POVLIGHT_ALL (-2)

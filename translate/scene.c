@@ -534,3 +534,27 @@ bool scene_lights_specular_ratio(const scene_light *l, size_t n, double *ratio)
                 return false;
     return true;
 }
+
+bool scene_lights_specular_channels(const scene_light *l, size_t n, double t[3])
+{
+    for (int k = 0; k < 3; k++) {
+        t[k] = -1;
+        for (size_t i = 0; i < n; i++) {
+            double d = l[i].color[k], sp = l[i].specular[k];
+            if (d == 0) {
+                if (sp != 0)
+                    return false;
+                continue;
+            }
+            double r = sp / d;
+            if (t[k] < 0)
+                t[k] = r;
+            else if (fabs(r - t[k]) > 1e-6 * (1 + t[k]))
+                return false;
+        }
+        if (!(t[k] > 0) || !isfinite(t[k]))
+            return false;
+    }
+    return true;
+}
+

@@ -361,6 +361,11 @@ bool scene_look_equal(const scene_look *a, const scene_look *b);
  * times its diffuse colour. */
 bool scene_lights_specular_ratio(const scene_light *l, size_t n, double *ratio);
 
+/* Per channel k, the one ratio t[k] > 0 of every light's specular to its
+ * diffuse (lights without diffuse in a channel have no specular there);
+ * false when the lights disagree, or a channel has no specular. */
+bool scene_lights_specular_channels(const scene_light *l, size_t n, double t[3]);
+
 /* The look.names value of the name stack names[0..n-1] (bottom first):
  * the last stack added when equal, else a new one; 0 for an empty stack
  * or on failure (the scene is then failed). */

@@ -151,6 +151,39 @@ static void test_one_set_shadows(void)
     interp_destroy(ip);
 }
 
+/* With shadows, a light whose specular is a multiple of its diffuse per
+ * channel: a light of its specular colour, the pigment the diffuse
+ * material divided by those multiples, the specular unscaled: exact, so
+ * no note. */
+static void test_channels(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Enable, GL_LIGHTING);
+    CMD(&s, Enable, GL_LIGHT0);
+    CMD(&s, Lightfv, GL_LIGHT0, GL_DIFFUSE, 0.5, 0.25, 1, 1);
+    CMD(&s, Lightfv, GL_LIGHT0, GL_SPECULAR, 0.25, 0.25, 0.25, 1);
+    CMD(&s, Materialfv, GL_FRONT, GL_SPECULAR, 0.5, 0.5, 0.5, 1);
+    tri(&s, -2);
+    run(ip, &s);
+    interp_end_frame(ip);
+    CHECK_EQ_U(count(DIAG_NOTE_SHADOW_HIGHLIGHT), 0);
+    write_scene(false);
+    CHECK_EQ_U(occurrences(sdl, "light_source{"), 1);
+    CHECK(strstr(sdl, "rgb<0.25,0.25,0.25>") != NULL);
+    CHECK(strstr(sdl, "pigment{rgb<1.6,0.8,3.2>}") != NULL); /* 0.8 / (0.5, 1, 0.25) */
+    CHECK(strstr(sdl, "specular 0.5 ") != NULL);
+    write_scene(true); /* --no-shadows: the split, the material's own pigment */
+    CHECK(strstr(sdl, "pigment{rgb<0.8,0.8,0.8>}") != NULL);
+    interp_destroy(ip);
+    double t[3];
+    scene_light l;
+    memset(&l, 0, sizeof l);
+    l.color[0] = 1, l.specular[0] = 1; /* green and blue: no specular */
+    CHECK(!scene_lights_specular_channels(&l, 1, t));
+}
+
 /* A set whose draws a glClear erased is not written: the one set left is
  * written as a frame of one set. */
 static void test_cleared_set(void)
@@ -353,6 +386,7 @@ int main(void)
     scene_init(&sc);
     test_sets();
     test_one_set_shadows();
+    test_channels();
     test_cleared_set();
     test_set_cap();
     test_ratio();
