@@ -7,13 +7,18 @@
  *   P A ambient_light + P E + sum_j fade_j spot_j C_j (D P (N.L) + S (N.H)^(1/r)),
  * its specular belonging to the surface and its light having one colour.
  * So P = d (at least 1e-3 per channel), A = a (Ga + sum la_i) / P with
- * ambient_light 1, E = e / P, D = 1, S = mean(k), r = 1 / s; and each GL
- * light becomes up to two POV-Ray lights at its place: one of colour ls
- * (diffuse and highlights) and a shadowless one of colour ld - ls (POV-Ray
- * gives shadowless lights no highlights), so a light without specular
- * makes none. Shadowless lights ignore a spotlight's cone, so a spot whose
- * specular colour differs from its diffuse is one light of its diffuse
- * colour (approximate). Attenuation maps onto fade_distance/fade_power (exact when
+ * ambient_light 1, E = e / P, D = 1, S = mean(k), r = 1 / s; and with
+ * --no-shadows each GL light becomes up to two POV-Ray lights at its
+ * place: one of colour ls (diffuse and highlights) and a shadowless one of
+ * colour ld - ls (POV-Ray gives shadowless lights no highlights), so a
+ * light without specular makes none. Shadowless lights ignore a
+ * spotlight's cone, so a spot whose specular colour differs from its
+ * diffuse is one light of its diffuse colour (approximate). With shadows a
+ * shadow must take the whole light: each GL light is one shadow-casting
+ * light, of colour ld with S scaled by the light set's specular multiple,
+ * or of colour ls with P = d / t where the multiple t is per channel (see
+ * put_gl_light). The lights of each light set light only its objects
+ * (light_group, povwrite.c). Attenuation maps onto fade_distance/fade_power (exact when
  * one of GL's linear and quadratic terms is zero), spots onto spotlight
  * with radius = falloff = cutoff and tightness = exponent (exact).
  */
