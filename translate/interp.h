@@ -26,6 +26,9 @@
  *   interp_eval.c    evaluators: maps, grids, glEvalCoord, glEvalMesh
  *   interp_multitex.c texture units: glActiveTexture, glClientActiveTexture,
  *                    glMultiTexCoord, the units a draw takes
+ *   interp_lightset.c the frame's light sets (each lit draw's lights)
+ *   interp_vmaterial.c glMaterial between the vertices of a primitive
+ *   interp_gouraud.c per-vertex lighting on request (--vertex-lighting)
  *
  * Not thread-safe; one interpreter per worker thread.
  */

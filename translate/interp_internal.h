@@ -421,8 +421,9 @@ void interp_default_state(gl_state *st);
  * (interp_light.c). */
 void interp_color_material_update(interp *ip);
 
-/* The scene material index of the current lighting state, fixing the
- * frame's lights at its first lit draw (interp_light.c); -1 on failure. */
+/* The scene material index of the current lighting state, with the light
+ * set of the lights enabled now (interp_light.c, interp_lightset.c); -1 on
+ * failure. */
 int32_t interp_lit_material(interp *ip);
 
 /* Fixes the frame's fog at its first fogged draw (interp_light.c). */
