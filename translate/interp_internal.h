@@ -127,6 +127,16 @@ struct interp {
     uint8_t seen_light_on[INTERP_MAX_LIGHTS];
     gl_light seen_light[INTERP_MAX_LIGHTS];
     uint32_t seen_set; /* their light set (interp_lightset.c) */
+    /* The scene's light sets: where each starts and its size, its hash,
+     * and a table from hash to 1 + set (0: an empty slot; at most half
+     * full, so a probe always ends). */
+    struct interp_lsets {
+        uint32_t count;
+        uint32_t first[SCENE_MAX_LIGHTSETS];
+        uint8_t n[SCENE_MAX_LIGHTSETS];
+        uint64_t hash[SCENE_MAX_LIGHTSETS];
+        int16_t slot[2 * SCENE_MAX_LIGHTSETS];
+    } lsets;
     bool vertex_lighting; /* interp_set_vertex_lighting */
 
     /* glMaterial between the vertices of the open primitive

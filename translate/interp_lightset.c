@@ -40,18 +40,26 @@ static void make_light(const gl_light *g, uint32_t set, scene_light *l)
     l->set = set;
 }
 
-/* Where set k starts in s->lights and how many lights it has. */
-static size_t set_range(const scene *s, uint32_t k, size_t *n)
+/* Where set k starts in s->lights and how many lights it has: kept when
+ * the set is made, so that a trace switching between many sets costs one
+ * lookup per draw (interp_internal.h, lsets). */
+static size_t set_range(const interp *ip, uint32_t k, size_t *n)
 {
-    size_t first = 0;
-    while (first < s->nlights && (s->lights[first].aimed || s->lights[first].set != k))
-        first++;
-    size_t e = first;
-    while (e < s->nlights && !s->lights[e].aimed && s->lights[e].set == k)
-        e++;
-    *n = e - first;
-    return first;
+    *n = ip->lsets.n[k];
+    return ip->lsets.first[k];
 }
+
+/* FNV-1a over the candidate lights (made with set 0). */
+static uint64_t hash_lights(const scene_light *l, size_t n)
+{
+    const unsigned char *p = (const unsigned char *)l;
+    uint64_t h = 14695981039346656037ull;
+    for (size_t i = 0; i < n * sizeof *l; i++)
+        h = (h ^ p[i]) * 1099511628211ull;
+    return h ^ n;
+}
+
+#define SLOTS (sizeof ((interp *)0)->lsets.slot / sizeof ((interp *)0)->lsets.slot[0])
 
 /* Notes what a set's lights cost the default (shadowed) render: a set
  * whose specular colours are neither one multiple of their diffuse colours
@@ -75,7 +83,10 @@ void interp_lightset_textured(interp *ip, const scene_look *look)
     if (!look->lit || look->texture < 0 || look->material < 0 ||
         (size_t)look->material >= s->nmaterials)
         return;
-    size_t n, first = set_range(s, s->materials[look->material].lightset, &n);
+    uint32_t k = s->materials[look->material].lightset;
+    if (k >= ip->lsets.count)
+        return;
+    size_t n, first = set_range(ip, k, &n);
     double ratio;
     /* The per-channel form scales the pigment, which a texture replaces. */
     if (!scene_lights_specular_ratio(s->lights + first, n, &ratio))
@@ -104,24 +115,32 @@ uint32_t interp_lightset_current(interp *ip)
         if (ip->seen_light_on[i])
             make_light(&a->lighting.light[i], 0, &cand[n++]);
     }
+    if (ip->lsets.count > s->nlightsets) { /* a new frame's scene */
+        ip->lsets.count = 0;
+        memset(ip->lsets.slot, 0, sizeof ip->lsets.slot);
+    }
     /* The same lights as an earlier draw of the frame: its set. */
-    for (uint32_t k = 0; k < s->nlightsets; k++) {
-        size_t m, first = set_range(s, k, &m);
-        bool same = m == n;
+    uint64_t h = hash_lights(cand, n);
+    size_t at = (size_t)(h % SLOTS);
+    for (; ip->lsets.slot[at] > 0; at = (at + 1) % SLOTS) {
+        uint32_t k = (uint32_t)ip->lsets.slot[at] - 1;
+        size_t m, first = set_range(ip, k, &m);
+        bool same = ip->lsets.hash[k] == h && m == n;
         for (size_t i = 0; i < n && same; i++) {
-            cand[i].set = k;
-            same = memcmp(&cand[i], &s->lights[first + i], sizeof cand[i]) == 0;
+            scene_light c = cand[i];
+            c.set = k;
+            same = memcmp(&c, &s->lights[first + i], sizeof c) == 0;
         }
         if (same) {
             s->lights_fixed = true;
             return ip->seen_set = k;
         }
     }
-    if (s->nlightsets >= SCENE_MAX_LIGHTSETS) {
+    if (s->nlightsets >= SCENE_MAX_LIGHTSETS || s->nlightsets != ip->lsets.count) {
         /* Against a trace that changes its lights at every draw: later
          * sets are lit by the last one kept. */
         interp_note(ip, DIAG_NOTE_LIGHTING);
-        return ip->seen_set = s->nlightsets - 1;
+        return ip->seen_set = s->nlightsets ? s->nlightsets - 1 : 0;
     }
     uint32_t k = s->nlightsets;
     size_t first = s->nlights;
@@ -132,7 +151,11 @@ uint32_t interp_lightset_current(interp *ip)
         cand[i].set = k;
         *l = cand[i];
     }
-    s->nlightsets++;
+    ip->lsets.first[k] = (uint32_t)first;
+    ip->lsets.n[k] = (uint8_t)(s->nlights - first);
+    ip->lsets.hash[k] = h;
+    ip->lsets.slot[at] = (int16_t)(k + 1);
+    ip->lsets.count = ++s->nlightsets;
     s->lights_fixed = true;
     note_set(ip, s->lights + first, s->nlights - first);
     return ip->seen_set = k;

@@ -221,11 +221,27 @@ static void test_set_cap(void)
         CMD(&s, Lightf, GL_LIGHT0, GL_CONSTANT_ATTENUATION, 1.0 + i);
         tri(&s, -2);
     }
+    /* Back to the fourth set's lights: found again, not noted. */
+    CMD(&s, Lightf, GL_LIGHT0, GL_CONSTANT_ATTENUATION, 4.0);
+    tri(&s, -3);
     run(ip, &s);
     interp_end_frame(ip);
     CHECK_EQ_U(sc.nlightsets, SCENE_MAX_LIGHTSETS);
     CHECK_EQ_U(sc.nlights, SCENE_MAX_LIGHTSETS);
+    if (sc.nmeshes > 0) {
+        const scene_mesh *m = &sc.meshes[sc.nmeshes - 1];
+        CHECK(m->look.material >= 0 && sc.materials[m->look.material].lightset == 3);
+    }
     CHECK_EQ_U(count(DIAG_NOTE_LIGHTING), 1); /* a note is said once a frame */
+    /* The next frame starts with no sets. */
+    scene_reset(&sc);
+    interp_begin_frame(ip);
+    seq_init(&s);
+    CMD(&s, Lightf, GL_LIGHT0, GL_CONSTANT_ATTENUATION, 2.0);
+    tri(&s, -2);
+    run(ip, &s);
+    CHECK_EQ_U(sc.nlightsets, 1);
+    CHECK_EQ_U(sc.nlights, 1);
     interp_destroy(ip);
 }
 
