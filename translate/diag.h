@@ -48,7 +48,7 @@
     X(NOTE_PROJECTION, "approximated: geometry drawn with another projection or viewport is remapped into the frame's camera") \
     X(NOTE_CAMERA, "approximated: projection matrix is not a camera POV-Ray can express (default camera used)") \
     X(NOTE_PROJECTIVE_MODELVIEW, "approximated: projective modelview applied to the vertices") \
-    X(NOTE_SPOT_SPECULAR, "approximated: a spot light whose specular colour differs from its diffuse colour makes highlights as if they were equal") \
+    X(NOTE_SPOT_SPECULAR, "approximated with --no-shadows: a spot light whose specular colour differs from its diffuse colour makes highlights as if they were equal") \
     X(NOTE_NORMALS, "approximated: lit normals that are not unit length in eye space (GL_NORMALIZE off) are used normalised") \
     X(NOTE_RENDER_MODE, "left out, as GL draws no pixel of it: geometry drawn in GL_SELECT or GL_FEEDBACK render mode") \
     X(NOTE_EVAL_INDEX, "not translated: colour-index evaluator maps (GL_MAP1_INDEX, GL_MAP2_INDEX)") \
@@ -62,6 +62,7 @@
     X(NOTE_ACCUM_WEIGHTS, "approximated: accumulation weights that do not add up to one, GL_MULT or GL_ADD, are drawn as an average of the passes") \
     X(NOTE_MULTITEX, "approximated: texture units past the second enabled one not drawn; a unit after the first combined with one fragment colour (unlit, the first vertex's) unless both units use GL_MODULATE or the first replaces the colour; two units blended are drawn opaque") \
     X(NOTE_MATERIAL_VERTEX, "approximated: glMaterial between the vertices of a primitive varying the shininess or two colours: drawn with the last vertex's material") \
+    X(NOTE_GOURAUD, "approximated: lit faces large against their distance to a point light or local viewer, lit per pixel where OpenGL lights their corners (see --vertex-lighting)") \
     X(NOTE_SHADOW_HIGHLIGHT, "approximated with shadows: highlights of lights whose specular is not one multiple of their diffuse colour")
 
 typedef enum diag_kind {

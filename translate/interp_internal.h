@@ -459,6 +459,12 @@ uint8_t interp_cm_bits(GLenum mode);
  * (interp_gouraud.c): vertex lighting on, lighting on, one-sided. */
 bool interp_vertex_lit(const interp *ip);
 
+/* Notes a lit primitive (its triangles from first_tri on) with a face
+ * large against its distance to a positional light or, with a local
+ * viewer, to the eye: lit per pixel, it differs from GL's per-vertex
+ * lighting (interp_gouraud.c). */
+void interp_gouraud_check(interp *ip, size_t first_tri);
+
 /* The light set of the GL lights enabled now, added to the scene when the
  * frame has not had it yet (interp_lightset.c). */
 uint32_t interp_lightset_current(interp *ip);

@@ -999,10 +999,13 @@ static void end_primitive(interp *ip)
         check_normals(ip, n);
     mat4 id = mat4_identity();
     as.mesh = scene_mesh_for(s, ip->prim_in_eye ? &id : &ip->prim_to_eye, ip->prim_in_eye, &look);
+    size_t first_tri = s->ntris;
     if (!as.facing && !as.check_bad && a->polygon.mode[0] == GL_FILL)
         assemble_filled(&as, mode, n);
     else
         assemble_polygons(&as, mode, n);
+    if (look.lit)
+        interp_gouraud_check(ip, first_tri);
 }
 
 void interp_end(interp *ip, const rgl_cmd *cmd)

@@ -397,6 +397,30 @@ static void test_vertex_lighting(void)
     interp_destroy(ip);
 }
 
+/* A face large against its distance to a point light is noted (lit per
+ * pixel, not at its corners); not under a directional light, nor with
+ * --vertex-lighting. */
+static void test_gouraud_note(void)
+{
+    for (int c = 0; c < 3; c++) {
+        interp *ip = fresh();
+        interp_set_vertex_lighting(ip, c == 2);
+        seq s;
+        seq_init(&s);
+        CMD(&s, Enable, GL_LIGHTING);
+        CMD(&s, Enable, GL_LIGHT0);
+        CMD(&s, Lightfv, GL_LIGHT0, GL_POSITION, 0, 0, -1, c == 1 ? 0 : 1);
+        CMD(&s, Begin, GL_TRIANGLES);
+        CMD(&s, Vertex3f, -2, -2, -2);
+        CMD(&s, Vertex3f, 2, -2, -2);
+        CMD(&s, Vertex3f, 0, 2, -2);
+        CMD0(&s, End);
+        run(ip, &s);
+        CHECK_EQ_U(count(DIAG_NOTE_GOURAUD), c == 0 ? 1 : 0);
+        interp_destroy(ip);
+    }
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -409,6 +433,7 @@ int main(void)
     test_array_current();
     test_vertex_material();
     test_vertex_lighting();
+    test_gouraud_note();
     scene_finish(&sc);
     return CHECK_RESULT("test_lights");
 }
