@@ -27,7 +27,7 @@
     X(IGNORED, "ignored call") \
     X(BAD_NUMBER, "NaN or infinite value") \
     X(LIMIT, "limit exceeded") \
-    X(NOTE_LIGHTING, "approximated: the lights changed between lit draws of a frame (the first lit draw's lights light the whole frame)") \
+    X(NOTE_LIGHTING, "approximated: the lights changed between lit draws of a frame more than 256 times (later draws are lit by the 256th set of lights)") \
     X(NOTE_FOG, "approximated: the fog changed between fogged draws of a frame (the first fogged draw's fog is used)") \
     X(NOTE_BLEND, "approximated: blending with colour or destination-alpha factors, or of lit or textured surfaces, other than GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA is drawn as that one") \
     X(NOTE_BLEND_ADD, "approximated: additive blending (all of the colour behind kept) keeps 127/128 of it") \
@@ -48,7 +48,7 @@
     X(NOTE_PROJECTION, "approximated: geometry drawn with another projection or viewport is remapped into the frame's camera") \
     X(NOTE_CAMERA, "approximated: projection matrix is not a camera POV-Ray can express (default camera used)") \
     X(NOTE_PROJECTIVE_MODELVIEW, "approximated: projective modelview applied to the vertices") \
-    X(NOTE_SPOT_SPECULAR, "approximated: a spot light whose specular colour differs from its diffuse colour makes highlights as if they were equal") \
+    X(NOTE_SPOT_SPECULAR, "approximated with --no-shadows: a spot light whose specular colour differs from its diffuse colour makes highlights as if they were equal") \
     X(NOTE_NORMALS, "approximated: lit normals that are not unit length in eye space (GL_NORMALIZE off) are used normalised") \
     X(NOTE_RENDER_MODE, "left out, as GL draws no pixel of it: geometry drawn in GL_SELECT or GL_FEEDBACK render mode") \
     X(NOTE_EVAL_INDEX, "not translated: colour-index evaluator maps (GL_MAP1_INDEX, GL_MAP2_INDEX)") \
@@ -64,7 +64,10 @@
     X(NOTE_NURBS_TRIM, "approximated: GLU NURBS trim edges not along the u or v axis cut along the sampling grid") \
     X(NOTE_NURBS_OUTLINE, "approximated: GLU_OUTLINE_POLYGON of trimmed NURBS: the translator's grid, not GLU's triangles") \
     X(NOTE_NURBS_SAMPLING, "approximated: GLU NURBS sampled at 16+ steps a knot span, finer than GLU may sample them") \
-    X(NOTE_NURBS_TESSELLATOR, "as recorded: GLU NURBS in GLU_NURBS_TESSELLATOR mode, drawn by the program's callbacks")
+    X(NOTE_NURBS_TESSELLATOR, "as recorded: GLU NURBS in GLU_NURBS_TESSELLATOR mode, drawn by the program's callbacks") \
+    X(NOTE_MATERIAL_VERTEX, "approximated: glMaterial between the vertices of a primitive varying the shininess or two colours: drawn with the last vertex's material") \
+    X(NOTE_GOURAUD, "approximated: lit faces large against their distance to a point light or local viewer, lit per pixel where OpenGL lights their corners (see --vertex-lighting)") \
+    X(NOTE_SHADOW_HIGHLIGHT, "approximated with shadows: highlights of lights whose specular is not one multiple of their diffuse colour")
 
 typedef enum diag_kind {
 #define DIAG_ENUM_(name, text) DIAG_##name,

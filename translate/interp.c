@@ -213,6 +213,7 @@ void interp_destroy(interp *ip)
     unrec_finish(&ip->unrecorded);
     tr_free(ip->begin_ok);
     tr_free(ip->edge);
+    tr_free(ip->vmat.mats);
     tr_free(ip->clipv);
     interp_textures_free(ip);
     interp_eval_free(ip);

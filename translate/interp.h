@@ -26,6 +26,9 @@
  *   interp_eval.c    evaluators: maps, grids, glEvalCoord, glEvalMesh
  *   interp_multitex.c texture units: glActiveTexture, glClientActiveTexture,
  *                    glMultiTexCoord, the units a draw takes
+ *   interp_lightset.c the frame's light sets (each lit draw's lights)
+ *   interp_vmaterial.c glMaterial between the vertices of a primitive
+ *   interp_gouraud.c per-vertex lighting on request (--vertex-lighting)
  *
  * Not thread-safe; one interpreter per worker thread.
  */
@@ -238,6 +241,11 @@ interp *interp_create(scene *out, diag_log *log);
  * frames ip runs from now on: the fuzz targets run on a small budget, so
  * an input that would cut a frame at the full budget costs them little. */
 void interp_set_budget_shift(interp *ip, unsigned shift);
+
+/* On: lit surfaces take GL's lit colour at each vertex, interpolated and
+ * drawn unlit, as OpenGL shades them (raygl2pov --vertex-lighting,
+ * interp_gouraud.c); off (the default): POV-Ray lights each pixel. */
+void interp_set_vertex_lighting(interp *ip, bool on);
 void interp_destroy(interp *ip);
 
 /* Back to GL's initial state; the scene and log stay attached. */

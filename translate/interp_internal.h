@@ -128,6 +128,28 @@ struct interp {
      * or fogged draw), to notice when a later draw uses others. */
     uint8_t seen_light_on[INTERP_MAX_LIGHTS];
     gl_light seen_light[INTERP_MAX_LIGHTS];
+    uint32_t seen_set; /* their light set (interp_lightset.c) */
+    /* The scene's light sets: where each starts and its size, its hash,
+     * and a table from hash to 1 + set (0: an empty slot; at most half
+     * full, so a probe always ends). */
+    struct interp_lsets {
+        uint32_t count;
+        uint32_t first[SCENE_MAX_LIGHTSETS];
+        uint8_t n[SCENE_MAX_LIGHTSETS];
+        uint64_t hash[SCENE_MAX_LIGHTSETS];
+        int16_t slot[2 * SCENE_MAX_LIGHTSETS];
+    } lsets;
+    bool vertex_lighting; /* interp_set_vertex_lighting */
+
+    /* glMaterial between the vertices of the open primitive
+     * (interp_vmaterial.c): each vertex's material once one changed, and
+     * the terms its vertex colours carry at glEnd. */
+    struct interp_vmat {
+        bool changed;
+        gl_material (*mats)[2];
+        size_t n, cap;
+        uint8_t cm_extra[2];
+    } vmat;
 
     /* The frame's accumulation-buffer passes (interp_accum.c): after the
      * first glAccum(GL_ACCUM or GL_LOAD), what later passes draw is dropped
@@ -429,8 +451,9 @@ int interp_nurbs_copy(interp *dst, const interp *src);
  * (interp_light.c). */
 void interp_color_material_update(interp *ip);
 
-/* The scene material index of the current lighting state, fixing the
- * frame's lights at its first lit draw (interp_light.c); -1 on failure. */
+/* The scene material index of the current lighting state, with the light
+ * set of the lights enabled now (interp_light.c, interp_lightset.c); -1 on
+ * failure. */
 int32_t interp_lit_material(interp *ip);
 
 /* Fixes the frame's fog at its first fogged draw (interp_light.c). */
@@ -440,6 +463,36 @@ void interp_fix_fog(interp *ip);
  * normal n, for the front (back = false) or back material, from the
  * current state; colour is the vertex colour for GL_COLOR_MATERIAL.
  * For lines and points, which the scene draws unlit (interp_light.c). */
+/* glMaterial between vertices (interp_vmaterial.c): _begin at glBegin,
+ * _before_change in glMaterial before it changes the material, _vertex
+ * after each vertex is added to the pool, _end at glEnd of a filled primitive of n
+ * vertices before its look is made (true: the material was swapped, saved
+ * in `saved`, to be put back by _restore after the look). */
+void interp_vmat_begin(interp *ip);
+void interp_vmat_before_change(interp *ip);
+void interp_vmat_vertex(interp *ip);
+bool interp_vmat_end(interp *ip, uint32_t n, gl_material saved[2]);
+void interp_vmat_restore(interp *ip, const gl_material saved[2]);
+uint8_t interp_cm_bits(GLenum mode);
+
+/* Whether the open filled primitive is lit per vertex here
+ * (interp_gouraud.c): vertex lighting on, lighting on, one-sided. */
+bool interp_vertex_lit(const interp *ip);
+
+/* Notes a lit primitive (its triangles from first_tri on) with a face
+ * large against its distance to a positional light or, with a local
+ * viewer, to the eye: lit per pixel, it differs from GL's per-vertex
+ * lighting (interp_gouraud.c). */
+void interp_gouraud_check(interp *ip, size_t first_tri);
+
+/* The light set of the GL lights enabled now, added to the scene when the
+ * frame has not had it yet (interp_lightset.c). */
+uint32_t interp_lightset_current(interp *ip);
+
+/* Notes a lit, textured draw under a set whose highlights only the
+ * per-channel form makes exact (not open to textures). */
+void interp_lightset_textured(interp *ip, const scene_look *look);
+
 void interp_lit_color(const interp *ip, const double p[3], const double n[3], bool back,
                       const float colour[4], float out[4]);
 

@@ -327,6 +327,7 @@ static void begin_mode(interp *ip, GLenum mode)
     ip->in_begin = true;
     ip->prim_mode = mode;
     ip->prim_skip = true;
+    interp_vmat_begin(ip);
     if (!ip->scene || !interp_render_mode_draws(ip))
         return;
     interp_accum_draw(ip);
@@ -440,7 +441,7 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
     if (!a->caps[INTERP_CAP_LIGHTING]) {
         for (int i = 0; i < 4; i++)
             v->color[i] = clamp01(a->current.color[i]);
-    } else if (ip->prim_mode <= GL_LINE_STRIP) {
+    } else if (ip->prim_mode <= GL_LINE_STRIP || interp_vertex_lit(ip)) {
         lit_line_colour(ip, x, y, z, v->color);
     } else {
         interp_surface_colour(ip, v->color);
@@ -467,6 +468,7 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
     }
     ip->edge[k] = a->current.edge_flag;
     scene_commit_vertices(s, 1);
+    interp_vmat_vertex(ip);
 }
 
 void interp_vertex(interp *ip, const rgl_cmd *cmd)
@@ -869,7 +871,7 @@ scene_look interp_current_look(interp *ip)
 {
     scene_look look;
     memset(&look, 0, sizeof look);
-    look.lit = ip->st.a.caps[INTERP_CAP_LIGHTING];
+    look.lit = ip->st.a.caps[INTERP_CAP_LIGHTING] && !interp_vertex_lit(ip);
     look.flat = ip->st.a.lighting.shade_model == GL_FLAT;
     look.blend = ip->prim_blend;
     look.fog = ip->st.a.caps[INTERP_CAP_FOG];
@@ -897,6 +899,7 @@ scene_look interp_current_look(interp *ip)
     }
     look.names = interp_names_for_draw(ip);
     interp_scissor_look(ip, &look);
+    interp_lightset_textured(ip, &look);
     return look;
 }
 
@@ -982,7 +985,11 @@ static void end_primitive(interp *ip)
         as.check_bad = true;
     }
     ip->prim_tex_from1 = false;
+    gl_material vmat_saved[2];
+    bool vmat = interp_vmat_end(ip, n, vmat_saved);
     scene_look look = interp_current_look(ip);
+    if (vmat)
+        interp_vmat_restore(ip, vmat_saved);
     if (ip->prim_tex_from1)
         for (size_t i = 0; i < n; i++) {
             scene_vertex *v = &s->verts[ip->prim_first + i];
@@ -992,10 +999,13 @@ static void end_primitive(interp *ip)
         check_normals(ip, n);
     mat4 id = mat4_identity();
     as.mesh = scene_mesh_for(s, ip->prim_in_eye ? &id : &ip->prim_to_eye, ip->prim_in_eye, &look);
+    size_t first_tri = s->ntris;
     if (!as.facing && !as.check_bad && a->polygon.mode[0] == GL_FILL)
         assemble_filled(&as, mode, n);
     else
         assemble_polygons(&as, mode, n);
+    if (look.lit)
+        interp_gouraud_check(ip, first_tri);
 }
 
 void interp_end(interp *ip, const rgl_cmd *cmd)
