@@ -29,6 +29,7 @@
  * the pieces of an open surface or curve are not.
  */
 #include "interp_internal.h"
+#include "numfmt.h"
 
 #include <GL/glu.h>
 #include <stdlib.h>
@@ -380,9 +381,12 @@ void interp_nurbsproperty(interp *ip, const rgl_cmd *cmd)
         return;
     }
     return;
-bad:
-    interp_diag(ip, DIAG_IGNORED, "gluNurbsProperty: bad value %g for property %u ignored", v,
+bad: {
+    char num[NUMFMT_F32_ROOM + 1];
+    num[numfmt_f32(num, v)] = '\0';
+    interp_diag(ip, DIAG_IGNORED, "gluNurbsProperty: bad value %s for property %u ignored", num,
                 prop);
+}
 }
 
 /* The matrices and viewport GLU_PATH_LENGTH measures with while
