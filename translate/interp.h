@@ -128,6 +128,7 @@ typedef struct gl_attribs {
         float model_ambient[4];
         bool local_viewer, two_side;
         GLenum color_control; /* GL_LIGHT_MODEL_COLOR_CONTROL */
+        GLenum provoking;     /* glProvokingVertex */
     } lighting; /* GL_LIGHTING_BIT */
     struct {
         GLenum front_face, cull_mode;
@@ -139,6 +140,9 @@ typedef struct gl_attribs {
     } line; /* GL_LINE_BIT */
     struct {
         float size;
+        /* glPointParameter (GL 1.4 3.3): the derived size's clamp, the
+         * size below which points fade, the distance attenuation. */
+        float size_min, size_max, fade_threshold, atten[3];
     } point; /* GL_POINT_BIT */
     struct {
         int32_t rect[4]; /* x, y, width, height */

@@ -222,6 +222,21 @@ void interp_diag(interp *ip, diag_kind kind, const char *fmt, ...);
 /* Logs a NOTE_* kind once per frame (the CLI then says it once per run). */
 void interp_note(interp *ip, diag_kind kind);
 
+/* glTexImage1D/2D's effect on the bound texture, pixels from resource id
+ * (0: undefined contents), and glTexSubImage1D/2D's (dims 1 or 2): for
+ * the copies of interp_texcopy.c (interp_texture.c). */
+void interp_tex_image(interp *ip, GLenum target, int32_t level, int32_t internal, int64_t w,
+                      int64_t h, int32_t border, GLenum format, GLenum type, uint32_t id);
+void interp_tex_subimage(interp *ip, int dims, GLenum target, int64_t level, int64_t x0,
+                         int64_t y0, int64_t w, int64_t h, GLenum format, GLenum type,
+                         uint32_t id);
+
+/* Point parameters (interp_point.c): whether any is away from GL's
+ * default, and the derived size of a point at eye-space position eye
+ * (GL 1.4 3.3), *fade its alpha factor. */
+bool interp_point_params_set(const gl_attribs *a);
+double interp_point_size(const gl_attribs *a, const double eye[3], double *fade);
+
 /* GL errors for the current command; the caller then returns (skips it). */
 void interp_bad_enum(interp *ip, const char *what, uint32_t value);
 void interp_bad_value(interp *ip, const char *fmt_detail);

@@ -542,14 +542,24 @@ static tex_image *image_own(interp *ip, tex_obj *o)
 
 void interp_texsubimage2d(interp *ip, const rgl_cmd *cmd)
 {
+    interp_tex_subimage(ip, 2, arg_enum(cmd, 0), cmd->arg[1].v.i, cmd->arg[2].v.i,
+                        cmd->arg[3].v.i, cmd->arg[4].v.i, cmd->arg[5].v.i, arg_enum(cmd, 6),
+                        arg_enum(cmd, 7), (uint32_t)cmd->arg[8].v.u);
+}
+
+void interp_tex_image(interp *ip, GLenum target, int32_t level, int32_t internal, int64_t w,
+                      int64_t h, int32_t border, GLenum format, GLenum type, uint32_t id)
+{
+    tex_image_set(ip, target, level, internal, w, h, border, format, type, id);
+}
+
+void interp_tex_subimage(interp *ip, int dims, GLenum target, int64_t level, int64_t x0,
+                         int64_t y0, int64_t w, int64_t h, GLenum format, GLenum type,
+                         uint32_t id)
+{
     if (interp_reject_in_begin(ip))
         return;
-    GLenum target = arg_enum(cmd, 0);
-    int64_t level = cmd->arg[1].v.i, x0 = cmd->arg[2].v.i, y0 = cmd->arg[3].v.i;
-    int64_t w = cmd->arg[4].v.i, h = cmd->arg[5].v.i;
-    GLenum format = arg_enum(cmd, 6), type = arg_enum(cmd, 7);
-    uint32_t id = (uint32_t)cmd->arg[8].v.u;
-    if (target != GL_TEXTURE_2D) {
+    if (target != (dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D)) {
         interp_bad_enum(ip, "texture target", target);
         return;
     }
@@ -560,11 +570,11 @@ void interp_texsubimage2d(interp *ip, const rgl_cmd *cmd)
     if (level != 0)
         return; /* other levels are not translated */
     if (!o || !o->img) {
-        interp_bad_op(ip, "glTexSubImage2D on a texture with no level 0");
+        interp_bad_op(ip, "texture sub-image on a texture with no level 0");
         return;
     }
     if (x0 < 0 || y0 < 0 || x0 + w > o->img->width || y0 + h > o->img->height) {
-        interp_bad_value(ip, "glTexSubImage2D region outside the texture");
+        interp_bad_value(ip, "texture sub-image region outside the texture");
         return;
     }
     if (w == 0 || h == 0 || !id)
