@@ -2,7 +2,7 @@
  * provoking vertex (glProvokingVertex, GL 3.2 2.19).
  *
  * A point's size follows its distance from the eye as GL derives it:
- * size * sqrt(1 / (a + b d + c d^2)), clamped to [GL_POINT_SIZE_MIN,
+ * size * sqrt(1 / (a + b d + c d^2)), d = |z_eye|, clamped to [GL_POINT_SIZE_MIN,
  * GL_POINT_SIZE_MAX]; interp_prim.c's add_point asks interp_point_size for
  * each point. GL fades points below GL_POINT_FADE_THRESHOLD_SIZE only when
  * multisampling, which a POV-Ray scene does not have: the threshold is
@@ -19,7 +19,9 @@ bool interp_point_params_set(const gl_attribs *a)
 
 double interp_point_size(const gl_attribs *a, const double eye[3], double *fade)
 {
-    double d = sqrt(eye[0] * eye[0] + eye[1] * eye[1] + eye[2] * eye[2]);
+    /* The spec's d is the distance to the eye; Mesa (the reference the
+     * tests hold the translation to) takes |z_eye|, as most GLs do. */
+    double d = fabs(eye[2]);
     double den = a->point.atten[0] + a->point.atten[1] * d + a->point.atten[2] * d * d;
     double size = a->point.size;
     if (den > 0 && isfinite(den))

@@ -509,8 +509,9 @@ typedef struct assembly {
 } assembly;
 
 /* The provoking vertex of a primitive whose last and first vertices are
- * `last` and `first` (GL 3.2 table 2.12; Mesa's quads follow the
- * convention too). */
+ * `last` and `first` (GL 3.2 table 2.12). Quads and quad strips keep the
+ * last vertex: Mesa's GL_QUADS_FOLLOW_PROVOKING_VERTEX_CONVENTION is
+ * false (EXT_provoking_vertex allows either). */
 static uint32_t pv(const assembly *as, uint32_t last, uint32_t first)
 {
     return as->first ? first : last;
@@ -761,13 +762,13 @@ static void assemble_polygons(assembly *as, GLenum mode, uint32_t n)
     case GL_QUADS:
         for (uint32_t i = 0; i + 4 <= n; i += 4) {
             t[0] = i, t[1] = i + 1, t[2] = i + 2, t[3] = i + 3;
-            emit_polygon(as, t, 4, pv(as, i + 3, i), true);
+            emit_polygon(as, t, 4, i + 3, true);
         }
         break;
     case GL_QUAD_STRIP:
         for (uint32_t i = 0; i + 4 <= n; i += 2) {
             t[0] = i, t[1] = i + 1, t[2] = i + 3, t[3] = i + 2;
-            emit_polygon(as, t, 4, pv(as, i + 3, i), false);
+            emit_polygon(as, t, 4, i + 3, false);
         }
         break;
     case GL_POLYGON:
@@ -810,14 +811,14 @@ static void assemble_filled(assembly *as, GLenum mode, uint32_t n)
         break;
     case GL_QUADS:
         for (uint32_t i = 0; i + 4 <= n; i += 4) {
-            fill_tri(as, i, i + 1, i + 2, pv(as, i + 3, i));
-            fill_tri(as, i, i + 2, i + 3, pv(as, i + 3, i));
+            fill_tri(as, i, i + 1, i + 2, i + 3);
+            fill_tri(as, i, i + 2, i + 3, i + 3);
         }
         break;
     case GL_QUAD_STRIP:
         for (uint32_t i = 0; i + 4 <= n; i += 2) {
-            fill_tri(as, i, i + 1, i + 3, pv(as, i + 3, i));
-            fill_tri(as, i, i + 3, i + 2, pv(as, i + 3, i));
+            fill_tri(as, i, i + 1, i + 3, i + 3);
+            fill_tri(as, i, i + 3, i + 2, i + 3);
         }
         break;
     case GL_POLYGON:
