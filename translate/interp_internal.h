@@ -231,6 +231,20 @@ void interp_tex_subimage(interp *ip, int dims, GLenum target, int64_t level, int
                          int64_t y0, int64_t w, int64_t h, GLenum format, GLenum type,
                          uint32_t id);
 
+/* Whether unit k draws a rectangle texture: GL_TEXTURE_RECTANGLE is
+ * enabled (a cap kept for unit 0 alone) and neither 3D nor cube map is
+ * (interp_texture.c). */
+bool interp_texture_rect_on(const interp *ip, uint32_t k);
+
+/* Whether wrap is one of EXT_texture_mirror_clamp's modes (interp_texture.c). */
+bool interp_mirror_clamp(GLenum wrap);
+
+/* Packed pixel types (interp_texpacked.c): the components of one packed
+ * pixel of `type` and its *bytes, 0 for a type that is not packed; the
+ * components of the pixel at p, in [0, 1], in component order. */
+int interp_packed_layout(GLenum type, size_t *bytes);
+void interp_packed_decode(const uint8_t *p, GLenum type, float out[4]);
+
 /* Point parameters (interp_point.c): whether any is away from GL's
  * default, and the derived size of a point at eye-space position eye
  * (GL 1.4 3.3), *fade its alpha factor. */

@@ -122,7 +122,8 @@ void interp_draw_units(interp *ip)
     ip->draw_unit[0] = ip->draw_unit[1] = -1;
     for (uint32_t k = 0; k < INTERP_TEX_UNITS; k++) {
         interp_tex_unit u = interp_unit(ip, k);
-        if (!u.caps[INTERP_CAP_TEXTURE_1D - UNIT_CAP0] && !u.caps[INTERP_CAP_TEXTURE_2D - UNIT_CAP0])
+        if (!u.caps[INTERP_CAP_TEXTURE_1D - UNIT_CAP0] && !u.caps[INTERP_CAP_TEXTURE_2D - UNIT_CAP0] &&
+            !interp_texture_rect_on(ip, k))
             continue;
         if (n == 2) {
             interp_note(ip, DIAG_NOTE_MULTITEX);
