@@ -32,6 +32,16 @@ static bool copy_ok(interp *ip, int64_t w, int64_t h, int64_t level, int64_t bor
     return true;
 }
 
+/* The targets GL copies into for dims 1 or 2 (no proxies: GL 2.1 3.8.2). */
+static bool copy_target_ok(interp *ip, GLenum target, int dims)
+{
+    bool ok = dims == 1 ? target == GL_TEXTURE_1D
+                        : target == GL_TEXTURE_2D || target == GL_TEXTURE_RECTANGLE;
+    if (!ok)
+        interp_bad_enum(ip, "texture copy target", target);
+    return ok;
+}
+
 /* A copy's pixels that the recorder could not read: the texture drawn
  * from them is missing, and the frame says so. */
 static void copy_unread(interp *ip, const char *call, int64_t w, int64_t h)
@@ -48,6 +58,8 @@ void interp_copyteximage1d(interp *ip, const rgl_cmd *cmd)
 {
     int64_t level = cmd->arg[1].v.i, w = cmd->arg[5].v.i, border = cmd->arg[6].v.i;
     uint32_t id = (uint32_t)cmd->arg[7].v.u;
+    if (!copy_target_ok(ip, arg_enum(cmd, 0), 1))
+        return;
     if (!copy_ok(ip, w, 1, level, border))
         return;
     if (!id)
@@ -61,6 +73,8 @@ void interp_copyteximage2d(interp *ip, const rgl_cmd *cmd)
     int64_t level = cmd->arg[1].v.i, w = cmd->arg[5].v.i, h = cmd->arg[6].v.i;
     int64_t border = cmd->arg[7].v.i;
     uint32_t id = (uint32_t)cmd->arg[8].v.u;
+    if (!copy_target_ok(ip, arg_enum(cmd, 0), 2))
+        return;
     if (!copy_ok(ip, w, h, level, border))
         return;
     if (!id)
@@ -73,6 +87,8 @@ void interp_copytexsubimage1d(interp *ip, const rgl_cmd *cmd)
 {
     int64_t level = cmd->arg[1].v.i, w = cmd->arg[5].v.i;
     uint32_t id = (uint32_t)cmd->arg[6].v.u;
+    if (!copy_target_ok(ip, arg_enum(cmd, 0), 1))
+        return;
     if (!copy_ok(ip, w, 1, level, 0))
         return;
     if (!id)
@@ -85,6 +101,8 @@ void interp_copytexsubimage2d(interp *ip, const rgl_cmd *cmd)
 {
     int64_t level = cmd->arg[1].v.i, w = cmd->arg[6].v.i, h = cmd->arg[7].v.i;
     uint32_t id = (uint32_t)cmd->arg[8].v.u;
+    if (!copy_target_ok(ip, arg_enum(cmd, 0), 2))
+        return;
     if (!copy_ok(ip, w, h, level, 0))
         return;
     if (!id)
