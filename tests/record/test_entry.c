@@ -43,7 +43,8 @@ static uint32_t mix(uint32_t op, const char *name, uint32_t k)
     return h ^ (h >> 15);
 }
 
-/* The parameter name each handler's *v rows take: one with 4 values. */
+/* The parameter name each handler's *v rows take: one with 4 values (3
+ * for glPointParameter, whose largest is GL_POINT_DISTANCE_ATTENUATION). */
 static uint32_t pname_for(const char *handler)
 {
     if (!strcmp(handler, "light")) return GL_DIFFUSE;
@@ -52,6 +53,7 @@ static uint32_t pname_for(const char *handler)
     if (!strcmp(handler, "fog")) return GL_FOG_COLOR;
     if (!strcmp(handler, "texenv")) return GL_TEXTURE_ENV_COLOR;
     if (!strcmp(handler, "texgen")) return GL_OBJECT_PLANE;
+    if (!strcmp(handler, "pointparameter")) return GL_POINT_DISTANCE_ATTENUATION;
     return GL_AMBIENT;
 }
 
