@@ -264,7 +264,7 @@ bool interp_reject_in_begin(interp *ip);
 
 /* Pixels in client formats (interp_texture.c). interp_pixel_bytes: the
  * tightly packed size of w x h pixels of format/type, 0 for a pair not
- * translated (packed types, index, depth and stencil formats) or too many
+ * translated (index, depth and stencil formats) or too many
  * pixels. interp_pixels_float: n such pixels as GL's RGBA floats before
  * pixel transfer (GL 2.1 3.6.4). interp_pixels_fetch: the bytes of pixel
  * resource id, exactly `need` of them (counted in the frame's budget), or
