@@ -48,7 +48,8 @@ static void test_list(void)
         "glutSwapBuffers", "glFlush", "glMap1f", "glEvalMesh2", "glRasterPos2i",
         "glWindowPos2f", "glBitmap", "glDrawPixels", "glCopyPixels", "glPixelZoom",
         "glPixelTransferf", "glCopyTexImage2D", "glCopyTexSubImage3D", "glTexImage3D",
-        "glPointParameterfv", "glProvokingVertex",
+        "glPointParameterfv", "glProvokingVertex", "glPointParameterfARB",
+        "glPointParameterfvEXT",
         "glActiveTexture", "glActiveTextureARB", "glClientActiveTexture", "glMultiTexCoord2f",
         "glMultiTexCoord4dvARB", "glLogicOp", "glAccum", "glSecondaryColor3f", "glRenderMode",
     };

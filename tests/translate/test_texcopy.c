@@ -429,6 +429,14 @@ static void test_provoking(void)
     run(ip, &s);
     CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 1);
     CHECK_EQ_U(ip->st.a.lighting.provoking, GL_FIRST_VERTEX_CONVENTION);
+    seq_init(&s);
+    CMD(&s, ProvokingVertexEXT, GL_LAST_VERTEX_CONVENTION);
+    CMD(&s, PointParameterfvARB, GL_POINT_DISTANCE_ATTENUATION, 1, 2, 3);
+    CMD(&s, PointParameterfEXT, GL_POINT_SIZE_MIN, 4);
+    run(ip, &s);
+    CHECK_EQ_U(ip->st.a.lighting.provoking, GL_LAST_VERTEX_CONVENTION);
+    CHECK_NEAR(ip->st.a.point.atten[2], 3, 0);
+    CHECK_NEAR(ip->st.a.point.size_min, 4, 0);
     interp_destroy(ip);
 }
 
