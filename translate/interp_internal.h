@@ -236,6 +236,17 @@ void interp_tex_subimage(interp *ip, int dims, GLenum target, int64_t level, int
  * (interp_texture.c). */
 bool interp_texture_rect_on(const interp *ip, uint32_t k);
 
+/* Forgets the r coordinates seen (interp_texture.c): a new primitive
+ * starts, whose r decides which slice of a 3D texture it shows. */
+void interp_texture_r_reset(interp *ip);
+
+/* glTexImage3D's effect on the bound 3D texture (interp_texture.c). */
+void interp_tex_image3d(interp *ip, int32_t level, int32_t internal, int64_t w, int64_t h,
+                        int64_t d, int32_t border, GLenum format, GLenum type, uint32_t id);
+void interp_tex_subimage3d(interp *ip, int64_t level, int64_t x0, int64_t y0, int64_t z0,
+                           int64_t w, int64_t h, int64_t d, GLenum format, GLenum type,
+                           uint32_t id);
+
 /* Whether wrap is one of EXT_texture_mirror_clamp's modes (interp_texture.c). */
 bool interp_mirror_clamp(GLenum wrap);
 

@@ -119,11 +119,12 @@ interp_tex_unit interp_unit(interp *ip, uint32_t k)
 void interp_draw_units(interp *ip)
 {
     int n = 0;
+    interp_texture_r_reset(ip); /* a new primitive: its own r range */
     ip->draw_unit[0] = ip->draw_unit[1] = -1;
     for (uint32_t k = 0; k < INTERP_TEX_UNITS; k++) {
         interp_tex_unit u = interp_unit(ip, k);
         if (!u.caps[INTERP_CAP_TEXTURE_1D - UNIT_CAP0] && !u.caps[INTERP_CAP_TEXTURE_2D - UNIT_CAP0] &&
-            !interp_texture_rect_on(ip, k))
+            !u.caps[INTERP_CAP_TEXTURE_3D - UNIT_CAP0] && !interp_texture_rect_on(ip, k))
             continue;
         if (n == 2) {
             interp_note(ip, DIAG_NOTE_MULTITEX);

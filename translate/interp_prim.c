@@ -93,7 +93,7 @@ static void draw_notes(interp *ip)
         interp_fix_fog(ip);
     if (c[INTERP_CAP_ALPHA_TEST])
         interp_note(ip, DIAG_NOTE_ALPHA_TEST);
-    if (c[INTERP_CAP_TEXTURE_3D] || c[INTERP_CAP_TEXTURE_CUBE_MAP])
+    if (c[INTERP_CAP_TEXTURE_CUBE_MAP]) /* 3D: interp_texture.c's slices */
         interp_note(ip, DIAG_NOTE_TEXTURE);
     if (c[INTERP_CAP_LINE_STIPPLE] || c[INTERP_CAP_POLYGON_STIPPLE])
         interp_note(ip, DIAG_NOTE_STIPPLE);

@@ -11,8 +11,9 @@
  * copy compiled into a list only, a depth copy) defines the image's size
  * with undefined contents, and the frame says the texture is missing.
  *
- * 3D textures are checked as GL checks them and otherwise not translated:
- * a draw with GL_TEXTURE_3D enabled gets the texture note (interp_prim.c).
+ * 3D textures keep their level 0, changed by glTexSubImage3D and
+ * glCopyTexSubImage3D (one image of it); interp_texture.c draws the slice
+ * a primitive's r picks.
  */
 #include <stdio.h>
 
@@ -132,20 +133,33 @@ static bool size3d_ok(interp *ip, int64_t w, int64_t h, int64_t d, int64_t level
 
 void interp_copytexsubimage3d(interp *ip, const rgl_cmd *cmd)
 {
+    int64_t w = cmd->arg[7].v.i, h = cmd->arg[8].v.i;
+    uint32_t id = (uint32_t)cmd->arg[9].v.u;
     if (interp_reject_in_begin(ip) || !target3d_ok(ip, arg_enum(cmd, 0), false) ||
-        !size3d_ok(ip, cmd->arg[7].v.i, cmd->arg[8].v.i, 1, cmd->arg[1].v.i))
+        !size3d_ok(ip, w, h, 1, cmd->arg[1].v.i))
         return;
-    /* The 3D texture it changes is not drawn (see the file comment). */
+    if (!id)
+        copy_unread(ip, "glCopyTexSubImage3D", w, h);
+    interp_tex_subimage3d(ip, cmd->arg[1].v.i, cmd->arg[2].v.i, cmd->arg[3].v.i,
+                          cmd->arg[4].v.i, w, h, 1, GL_RGBA, GL_UNSIGNED_BYTE, id);
 }
 
 void interp_teximage3d(interp *ip, const rgl_cmd *cmd)
 {
-    if (interp_reject_in_begin(ip) || !target3d_ok(ip, arg_enum(cmd, 0), true) ||
+    GLenum target = arg_enum(cmd, 0);
+    if (interp_reject_in_begin(ip) || !target3d_ok(ip, target, true) ||
         !size3d_ok(ip, cmd->arg[3].v.i, cmd->arg[4].v.i, cmd->arg[5].v.i, cmd->arg[1].v.i))
         return;
     int64_t border = cmd->arg[6].v.i;
-    if (border != 0 && border != 1)
+    if (border != 0 && border != 1) {
         interp_bad_value(ip, "3D texture border");
+        return;
+    }
+    if (target == GL_PROXY_TEXTURE_3D)
+        return;
+    interp_tex_image3d(ip, (int32_t)cmd->arg[1].v.i, (int32_t)cmd->arg[2].v.i, cmd->arg[3].v.i,
+                       cmd->arg[4].v.i, cmd->arg[5].v.i, (int32_t)border, arg_enum(cmd, 7),
+                       arg_enum(cmd, 8), (uint32_t)cmd->arg[9].v.u);
 }
 
 void interp_texsubimage3d(interp *ip, const rgl_cmd *cmd)
@@ -153,4 +167,7 @@ void interp_texsubimage3d(interp *ip, const rgl_cmd *cmd)
     if (interp_reject_in_begin(ip) || !target3d_ok(ip, arg_enum(cmd, 0), false) ||
         !size3d_ok(ip, cmd->arg[5].v.i, cmd->arg[6].v.i, cmd->arg[7].v.i, cmd->arg[1].v.i))
         return;
+    interp_tex_subimage3d(ip, cmd->arg[1].v.i, cmd->arg[2].v.i, cmd->arg[3].v.i,
+                          cmd->arg[4].v.i, cmd->arg[5].v.i, cmd->arg[6].v.i, cmd->arg[7].v.i,
+                          arg_enum(cmd, 8), arg_enum(cmd, 9), (uint32_t)cmd->arg[10].v.u);
 }

@@ -39,6 +39,9 @@ typedef struct tex_obj {
     tex_image *img;       /* level 0, or NULL */
     uint32_t levels;      /* bit k: level k defined with the size GL expects */
     GLenum wrap_s, wrap_t, min_filter, mag_filter;
+    GLenum wrap_r;   /* GL_TEXTURE_WRAP_R (3D) */
+    int depth3;      /* a 3D texture's images: img holds them one above the
+                        other (height = rows x depth3); 0 for 1D and 2D */
     float border[4]; /* GL_TEXTURE_BORDER_COLOR */
     GLenum depth_mode; /* GL_DEPTH_TEXTURE_MODE */
     bool depth;        /* level 0 has a depth internal format: drawn as depth_mode */
@@ -50,7 +53,7 @@ struct interp_textures {
     tex_obj *objs; /* named objects, unordered */
     size_t n, cap;
     namemap names; /* name -> index in objs */
-    tex_obj zero[3];         /* object 0 of GL_TEXTURE_1D, GL_TEXTURE_2D, rectangle */
+    tex_obj zero[4];         /* object 0 of GL_TEXTURE_1D, GL_TEXTURE_2D, rectangle, 3D */
     int32_t unpack[8];       /* glPixelStorei values, by pname - GL_UNPACK_SWAP_BYTES */
     /* The last draw's scene texture, to skip rebuilding it per primitive:
      * one per drawn unit (a draw's first and second). */
@@ -61,6 +64,9 @@ struct interp_textures {
         const scene *sc;
         size_t ntex;
     } cache[2];
+    /* The range of r over the primitive being drawn, per unit: a 3D
+     * texture is drawn as a slice where it is constant. */
+    double r_min[INTERP_TEX_UNITS], r_max[INTERP_TEX_UNITS];
     /* Sphere map: the modelview whose inverse transpose is in nrm_mat. */
     mat4 nrm_of, nrm_mat;
     bool nrm_ok;
@@ -72,7 +78,7 @@ static void obj_defaults(tex_obj *o, uint32_t name)
 {
     memset(o, 0, sizeof *o);
     o->name = name;
-    o->wrap_s = o->wrap_t = GL_REPEAT;
+    o->wrap_s = o->wrap_t = o->wrap_r = GL_REPEAT;
     o->min_filter = GL_NEAREST_MIPMAP_LINEAR;
     o->mag_filter = GL_LINEAR;
     o->depth_mode = GL_LUMINANCE;
@@ -94,6 +100,20 @@ static void image_release(tex_image *img)
         tr_free(img);
 }
 
+static void r_reset(interp_textures *t)
+{
+    for (int k = 0; k < INTERP_TEX_UNITS; k++) {
+        t->r_min[k] = INFINITY;
+        t->r_max[k] = -INFINITY;
+    }
+}
+
+void interp_texture_r_reset(interp *ip)
+{
+    if (ip->tex)
+        r_reset(ip->tex);
+}
+
 static interp_textures *textures(interp *ip)
 {
     if (ip->tex)
@@ -108,6 +128,8 @@ static interp_textures *textures(interp *ip)
     t->zero[1].target = GL_TEXTURE_2D;
     t->zero[2].target = GL_TEXTURE_RECTANGLE;
     obj_rect_defaults(&t->zero[2]);
+    t->zero[3].target = GL_TEXTURE_3D;
+    r_reset(t);
     t->unpack[GL_UNPACK_ALIGNMENT - GL_UNPACK_SWAP_BYTES] = 4;
     t->cache[0].index = t->cache[1].index = -1;
     ip->tex = t;
@@ -127,7 +149,10 @@ static tex_obj *get_obj(interp *ip, GLenum target, uint32_t name, bool create)
     if (!t)
         return NULL;
     if (name == 0)
-        return &t->zero[target == GL_TEXTURE_1D ? 0 : target == GL_TEXTURE_RECTANGLE ? 2 : 1];
+        return &t->zero[target == GL_TEXTURE_1D          ? 0
+                        : target == GL_TEXTURE_RECTANGLE ? 2
+                        : target == GL_TEXTURE_3D        ? 3
+                                                         : 1];
     tex_obj *o = find_obj(t, name);
     if (o || !create)
         return o;
@@ -150,6 +175,8 @@ static tex_obj *bound_obj(interp *ip, GLenum target, bool create)
         return get_obj(ip, target, ip->st.a.texture.binding_2d, create);
     if (target == GL_TEXTURE_RECTANGLE)
         return get_obj(ip, target, ip->st.a.texture.binding_rect, create);
+    if (target == GL_TEXTURE_3D)
+        return get_obj(ip, target, ip->st.a.texture.binding_3d, create);
     return NULL;
 }
 
@@ -186,6 +213,8 @@ void interp_deletetextures(interp *ip, const rgl_cmd *cmd)
             ip->st.a.texture.binding_2d = 0;
         if (ip->st.a.texture.binding_rect == name)
             ip->st.a.texture.binding_rect = 0;
+        if (ip->st.a.texture.binding_3d == name)
+            ip->st.a.texture.binding_3d = 0;
         interp_multitex_unbind(ip, name);
     }
 }
@@ -196,8 +225,9 @@ void interp_bindtexture(interp *ip, const rgl_cmd *cmd)
         return;
     GLenum target = arg_enum(cmd, 0);
     uint32_t name = (uint32_t)cmd->arg[1].v.u;
-    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_RECTANGLE) {
-        if (target != GL_TEXTURE_3D && target != GL_TEXTURE_CUBE_MAP)
+    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_RECTANGLE &&
+        target != GL_TEXTURE_3D) {
+        if (target != GL_TEXTURE_CUBE_MAP)
             interp_bad_enum(ip, "texture target", target);
         return;
     }
@@ -216,6 +246,8 @@ void interp_bindtexture(interp *ip, const rgl_cmd *cmd)
         ip->st.a.texture.binding_1d = name;
     else if (target == GL_TEXTURE_RECTANGLE)
         ip->st.a.texture.binding_rect = name;
+    else if (target == GL_TEXTURE_3D)
+        ip->st.a.texture.binding_3d = name;
     else
         ip->st.a.texture.binding_2d = name;
 }
@@ -667,6 +699,117 @@ void interp_tex_subimage(interp *ip, int dims, GLenum target, int64_t level, int
     img->hash = image_hash(img);
 }
 
+void interp_tex_image3d(interp *ip, int32_t level, int32_t internal, int64_t w, int64_t h,
+                        int64_t d, int32_t border, GLenum format, GLenum type, uint32_t id)
+{
+    GLenum base = base_format(internal);
+    if (!base || base == GL_DEPTH_COMPONENT) {
+        interp_bad_value(ip, "3D texture internal format");
+        return;
+    }
+    size_t bytes;
+    if (!check_image(ip, format, type, w, h, &bytes))
+        return;
+    if (d < 0 || d > INTERP_MAX_TEXTURE_SIZE || (uint64_t)w * (uint64_t)h * (uint64_t)d >
+                                                   TEX_MAX_TEXELS) {
+        interp_bad_value(ip, "3D texture depth");
+        return;
+    }
+    bytes *= (size_t)d;
+    tex_obj *o = bound_obj(ip, GL_TEXTURE_3D, true);
+    if (!o) {
+        if (ip->scene)
+            ip->scene->failed = true;
+        return;
+    }
+    if (level > 0) {
+        bool fits = o->img && w - 2 * border == level_size(o->img->width, level) &&
+                    h - 2 * border == level_size(o->img->height / o->depth3, level) &&
+                    d - 2 * border == level_size(o->depth3, level);
+        if (fits)
+            o->levels |= 1u << level;
+        else
+            o->levels &= ~(1u << level);
+        return;
+    }
+    image_release(o->img);
+    o->img = NULL;
+    o->levels = 0;
+    o->lost = 0;
+    o->depth = false;
+    o->base_format = base;
+    o->depth3 = 0;
+    int64_t iw = w - 2 * border, ih = h - 2 * border, id3 = d - 2 * border;
+    if (iw <= 0 || ih <= 0 || id3 <= 0 || !id)
+        return;
+    const uint8_t *px = interp_pixels_fetch(ip, id, bytes, &o->lost);
+    if (!px || !interp_budget_texels(ip, (uint64_t)iw * (uint64_t)ih * (uint64_t)id3 * 4))
+        return;
+    tex_image *img = tr_realloc(NULL, sizeof *img + (size_t)(iw * ih * id3) * 4);
+    if (!img) {
+        if (ip->scene)
+            ip->scene->failed = true;
+        return;
+    }
+    img->refs = 1;
+    img->width = (int)iw;
+    img->height = (int)(ih * id3);
+    size_t ps = pixel_bytes(format, type, true);
+    for (int64_t z = 0; z < id3; z++)
+        for (int64_t y = 0; y < ih; y++)
+            convert_pixels(img->rgba + ((size_t)(z * ih + y) * (size_t)iw) * 4,
+                           px + (((size_t)(z + border) * (size_t)h + (size_t)(y + border)) *
+                                     (size_t)w +
+                                 (size_t)border) *
+                                    ps,
+                           (size_t)iw, format, type, base);
+    img->hash = image_hash(img);
+    o->img = img;
+    o->levels = 1;
+    o->depth3 = (int)id3;
+}
+
+void interp_tex_subimage3d(interp *ip, int64_t level, int64_t x0, int64_t y0, int64_t z0,
+                           int64_t w, int64_t h, int64_t d, GLenum format, GLenum type,
+                           uint32_t id)
+{
+    size_t bytes;
+    if (!check_image(ip, format, type, w, h, &bytes))
+        return;
+    tex_obj *o = bound_obj(ip, GL_TEXTURE_3D, false);
+    if (level != 0)
+        return; /* other levels are not translated */
+    if (!o || !o->img || !o->depth3) {
+        interp_bad_op(ip, "3D texture sub-image on a texture with no level 0");
+        return;
+    }
+    int th = o->img->height / o->depth3;
+    if (x0 < 0 || y0 < 0 || z0 < 0 || d < 0 || x0 + w > o->img->width || y0 + h > th ||
+        z0 + d > o->depth3) {
+        interp_bad_value(ip, "3D texture sub-image region outside the texture");
+        return;
+    }
+    if (o->depth != (format == GL_DEPTH_COMPONENT)) {
+        interp_bad_op(ip, "depth pixels and a colour texture, or the reverse");
+        return;
+    }
+    if (w == 0 || h == 0 || d == 0 || !id)
+        return;
+    const uint8_t *px = interp_pixels_fetch(ip, id, bytes * (size_t)d, &o->lost);
+    tex_image *img = px ? image_own(ip, o) : NULL;
+    if (!img)
+        return;
+    size_t ps = pixel_bytes(format, type, true);
+    for (int64_t z = 0; z < d; z++)
+        for (int64_t y = 0; y < h; y++)
+            convert_pixels(img->rgba +
+                               ((size_t)((z0 + z) * th + y0 + y) * (size_t)img->width +
+                                (size_t)x0) * 4,
+                           px + ((size_t)(z * h + y) * (size_t)w) * ps, (size_t)w, format, type,
+                           o->base_format);
+    img->hash = image_hash(img);
+}
+
 /* gluBuild2DMipmaps: level 0 is the image scaled to powers of two no
  * larger than GL's limit (GLU 1.3 3.1, a box filter as gluScaleImage's),
  * and the chain is complete. */
@@ -813,14 +956,14 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
     const rgl_arg *pa = &cmd->arg[2];
     double v = pa->kind == RGL_ARG_SCALAR ? arg_num(pa) : (pa->count ? pa->array[0] : 0);
     bool rect = target == GL_TEXTURE_RECTANGLE;
-    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && !rect) {
-        if (target != GL_TEXTURE_3D && target != GL_TEXTURE_CUBE_MAP)
+    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && !rect && target != GL_TEXTURE_3D) {
+        if (target != GL_TEXTURE_CUBE_MAP)
             interp_bad_enum(ip, "texture target", target);
         return;
     }
     GLenum e = interp_enum_of(v);
     switch (pname) {
-    case GL_TEXTURE_WRAP_S: case GL_TEXTURE_WRAP_T: {
+    case GL_TEXTURE_WRAP_S: case GL_TEXTURE_WRAP_T: case GL_TEXTURE_WRAP_R: {
         bool clamp = e == GL_CLAMP || e == GL_CLAMP_TO_EDGE || e == GL_CLAMP_TO_BORDER;
         bool other = e == GL_REPEAT || e == GL_MIRRORED_REPEAT || interp_mirror_clamp(e);
         /* ARB_texture_rectangle: the clamping modes alone. */
@@ -887,6 +1030,8 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
         }
     } else if (pname == GL_DEPTH_TEXTURE_MODE) {
         tex_depth_mode(ip, o, e);
+    } else if (pname == GL_TEXTURE_WRAP_R) {
+        o->wrap_r = e;
     } else if (pname == GL_TEXTURE_WRAP_S)
         o->wrap_s = e;
     else if (pname == GL_TEXTURE_WRAP_T)
@@ -1078,8 +1223,8 @@ static bool complete(const tex_obj *o)
         return false;
     if (!mipmap_filter(o->min_filter))
         return true;
-    int top = 0;
-    while ((o->img->width >> top) > 1 || (o->img->height >> top) > 1)
+    int top = 0, h = o->depth3 ? o->img->height / o->depth3 : o->img->height;
+    while ((o->img->width >> top) > 1 || (h >> top) > 1 || (o->depth3 >> top) > 1)
         top++;
     for (int k = 0; k <= top && k < 32; k++)
         if (!(o->levels & (1u << k)))
@@ -1099,6 +1244,8 @@ bool interp_texture_rect_on(const interp *ip, uint32_t k)
 /* The unit's enabled target: a rectangle wins over 2D, 2D over 1D. */
 static tex_obj *draw_obj(interp *ip, const interp_tex_unit *u, uint32_t k)
 {
+    if (u->caps[UCAP(TEXTURE_3D)] && !u->caps[UCAP(TEXTURE_CUBE_MAP)])
+        return get_obj(ip, GL_TEXTURE_3D, u->texture->binding_3d, false);
     if (interp_texture_rect_on(ip, k)) {
         /* Unit 0's binding: the active unit's, or unit 0's parked state. */
         uint32_t name = ip->st.active_unit == 0 ? ip->st.a.texture.binding_rect
@@ -1129,6 +1276,72 @@ static void mirror_fill(uint8_t *out, const tex_image *img, bool ms, bool mt)
     }
 }
 
+/* Texel index i of n along a coordinate, wrapped as GL wraps it (GL 2.1
+ * 3.8.7); the clamping modes all clamp to the edge texels here. */
+static int wrap_index(int64_t i, int n, GLenum wrap)
+{
+    if (wrap == GL_REPEAT) {
+        i %= n;
+        return (int)(i < 0 ? i + n : i);
+    }
+    if (wrap == GL_MIRRORED_REPEAT) {
+        int64_t p = i % (2 * (int64_t)n);
+        if (p < 0)
+            p += 2 * (int64_t)n;
+        return (int)(p < n ? p : 2 * (int64_t)n - 1 - p);
+    }
+    if (interp_mirror_clamp(wrap) && i < 0)
+        i = -1 - i;
+    return (int)(i < 0 ? 0 : i >= n ? n - 1 : i);
+}
+
+/* The 2D image a 3D texture shows on a primitive over which r is
+ * constant: the slice GL_NEAREST picks, or GL_LINEAR's blend of the two
+ * around r (GL 2.1 3.8.8, with the magnification filter, as the s and t
+ * sampling here). NULL, with a note, when r varies (or is unknown: a GLU
+ * or GLUT solid). The caller frees it. */
+static tex_image *tex3d_slice(interp *ip, const tex_obj *o, int k)
+{
+    interp_textures *t = ip->tex;
+    double lo = t->r_min[k], hi = t->r_max[k];
+    if (!(lo <= hi) || hi - lo > 1e-6 || !isfinite(lo)) {
+        interp_diag(ip, DIAG_IGNORED,
+                    "3D texture %u drawn untextured: its r coordinate varies over a primitive",
+                    o->name);
+        interp_note(ip, DIAG_NOTE_TEX_3D);
+        return NULL;
+    }
+    int d = o->depth3, w = o->img->width, h = o->img->height / d;
+    double z = fmin(fmax(lo * d, -1e9), 1e9);
+    int64_t k0;
+    float f = 0;
+    if (o->mag_filter == GL_LINEAR) {
+        double fl = floor(z - 0.5);
+        k0 = (int64_t)fl;
+        f = (float)(z - 0.5 - fl);
+    } else {
+        k0 = (int64_t)floor(z);
+    }
+    int s0 = wrap_index(k0, d, o->wrap_r), s1 = wrap_index(k0 + 1, d, o->wrap_r);
+    size_t n = (size_t)w * (size_t)h * 4;
+    if (!interp_budget_texels(ip, n))
+        return NULL;
+    tex_image *img = tr_realloc(NULL, sizeof *img + n);
+    if (!img) {
+        ip->scene->failed = true;
+        return NULL;
+    }
+    img->refs = 1;
+    img->width = w;
+    img->height = h;
+    const uint8_t *a = o->img->rgba + (size_t)s0 * n, *b = o->img->rgba + (size_t)s1 * n;
+    for (size_t i = 0; i < n; i++)
+        img->rgba[i] = (uint8_t)(a[i] + f * ((float)b[i] - (float)a[i]) + 0.5f);
+    img->hash = image_hash(img);
+    interp_note(ip, DIAG_NOTE_TEX_3D);
+    return img;
+}
+
 int32_t interp_texture_for_draw(interp *ip)
 {
     interp_draw_units(ip);
@@ -1140,7 +1353,7 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     if (!ip->scene || k < 0 || k >= INTERP_TEX_UNITS)
         return -1;
     interp_tex_unit u = interp_unit(ip, (uint32_t)k);
-    if (!u.caps[UCAP(TEXTURE_2D)] && !u.caps[UCAP(TEXTURE_1D)] &&
+    if (!u.caps[UCAP(TEXTURE_2D)] && !u.caps[UCAP(TEXTURE_1D)] && !u.caps[UCAP(TEXTURE_3D)] &&
         !interp_texture_rect_on(ip, (uint32_t)k))
         return -1;
     tex_obj *o = draw_obj(ip, &u, (uint32_t)k);
@@ -1151,6 +1364,12 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     }
     if (!o || !complete(o))
         return -1;
+    /* A 3D texture: the slice its r picks, when r is constant. */
+    tex_image *slice = NULL;
+    if (o->depth3 && !(slice = tex3d_slice(ip, o, k)))
+        return -1;
+    const tex_image *im = slice ? slice : o->img;
+    int32_t idx = -1;
     GLenum env = u.texture->env_mode;
     /* A second unit's ADD and BLEND are combined (povwrite's multitexture
      * pigment); a lone unit draws them as MODULATE. */
@@ -1170,9 +1389,9 @@ int32_t interp_texture_for_unit(interp *ip, int k)
         interp_note(ip, DIAG_NOTE_TEX_MIRROR_CLAMP);
     scene_texture st;
     memset(&st, 0, sizeof st);
-    st.width = o->img->width * (ms ? 2 : 1);
-    st.height = o->img->height * (mt ? 2 : 1);
-    st.hash = o->img->hash ^ (ms ? 0x9e3779b97f4a7c15ull : 0) ^ (mt ? 0xc2b2ae3d27d4eb4full : 0);
+    st.width = im->width * (ms ? 2 : 1);
+    st.height = im->height * (mt ? 2 : 1);
+    st.hash = im->hash ^ (ms ? 0x9e3779b97f4a7c15ull : 0) ^ (mt ? 0xc2b2ae3d27d4eb4full : 0);
     st.repeat_s = !clamps(o->wrap_s) && !ms;
     st.repeat_t = o->target == GL_TEXTURE_1D || (!clamps(o->wrap_t) && !mt);
     st.linear = o->mag_filter == GL_LINEAR;
@@ -1192,7 +1411,7 @@ int32_t interp_texture_for_unit(interp *ip, int k)
                          (env == GL_DECAL && b != GL_RGBA && b != GL_ALPHA);
 
     struct tex_cache *tc = &ip->tex->cache[ip->draw_unit[1] == k];
-    if (tc->img == o->img && tc->sc == ip->scene &&
+    if (!slice && tc->img == o->img && tc->sc == ip->scene &&
         tc->index >= 0 && (size_t)tc->index < ip->scene->ntextures &&
         tc->ntex <= ip->scene->ntextures) {
         const scene_texture *have = &ip->scene->textures[tc->index];
@@ -1202,24 +1421,26 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     }
     size_t n = (size_t)st.width * (size_t)st.height * 4;
     if (!interp_budget_texels(ip, n))
-        return -1;
+        goto out;
     st.rgba = tr_realloc(NULL, n);
     if (!st.rgba) {
         ip->scene->failed = true;
-        return -1;
+        goto out;
     }
     if (ms || mt)
-        mirror_fill(st.rgba, o->img, ms, mt);
+        mirror_fill(st.rgba, im, ms, mt);
     else
-        memcpy(st.rgba, o->img->rgba, n);
-    int32_t idx = scene_add_texture(ip->scene, &st);
-    if (idx >= 0) {
+        memcpy(st.rgba, im->rgba, n);
+    idx = scene_add_texture(ip->scene, &st);
+    if (idx >= 0 && !slice) {
         tc->img = o->img;
         tc->sc = ip->scene;
         tc->index = idx;
         tc->ntex = ip->scene->ntextures;
         tc->st = ip->scene->textures[idx];
     }
+out:
+    tr_free(slice);
     return idx;
 }
 
@@ -1330,5 +1551,11 @@ void interp_vertex_texcoord(interp *ip, int unit, const double obj[4], const flo
         q = 1;
     out[0] = (float)(r[0] / q);
     out[1] = (float)(r[1] / q);
+    if (u.caps[UCAP(TEXTURE_3D)] && ip->tex && unit >= 0 && unit < INTERP_TEX_UNITS) {
+        double rq = r[2] / q;
+        interp_textures *t = ip->tex;
+        t->r_min[unit] = fmin(t->r_min[unit], rq);
+        t->r_max[unit] = fmax(t->r_max[unit], rq);
+    }
     texcoord_fit(ip, &u, unit, out);
 }

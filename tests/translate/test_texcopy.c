@@ -179,27 +179,72 @@ static void test_copy(void)
 
 static void test_3d(void)
 {
-    const uint8_t vox[2 * 2 * 2 * 3] = {0};
-    uint32_t id = add_bytes(vox, sizeof vox);
+    /* 1 x 1 x 4 RGB: one texel per slice, red 0, 60, 120, 180. */
+    const uint8_t vox[4 * 3] = {0, 1, 2, 60, 1, 2, 120, 1, 2, 180, 1, 2};
+    const uint8_t sub[3] = {250, 9, 9};
+    uint32_t id = add_bytes(vox, sizeof vox), sid = add_bytes(sub, sizeof sub);
     interp *ip = fresh();
     seq s;
     seq_init(&s);
-    CMD(&s, BindTexture, GL_TEXTURE_3D, 4);
-    CMD(&s, TexImage3D, GL_TEXTURE_3D, 0, GL_RGB, 2, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, id);
-    CMD(&s, TexSubImage3D, GL_TEXTURE_3D, 0, 0, 0, 1, 2, 2, 1, GL_RGB, GL_UNSIGNED_BYTE, id);
-    CMD(&s, CopyTexSubImage3D, GL_TEXTURE_3D, 0, 0, 0, 1, 0, 0, 2, 2, 0);
-    CMD(&s, TexParameteri, GL_TEXTURE_3D, GL_TEXTURE_WRAP_R, GL_CLAMP);
-    CMD(&s, Enable, GL_TEXTURE_3D);
-    triangle(&s, 1, 1);
+    setup(&s, GL_TEXTURE_3D, 4);
+    CMD(&s, TexImage3D, GL_TEXTURE_3D, 0, GL_RGB, 1, 1, 4, 0, GL_RGB, GL_UNSIGNED_BYTE, id);
+    CMD(&s, TexParameteri, GL_TEXTURE_3D, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+    CMD(&s, TexCoord3f, 0, 0, 0.6); /* nearest: slice floor(0.6 * 4) = 2 */
+    CMD(&s, Rectf, 0, 0, 1, 1);
     run(ip, &s);
     CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM) + count(DIAG_GL_INVALID_VALUE), 0);
-    CHECK_EQ_U(count(DIAG_NOTE_TEXTURE), 1); /* drawn untextured, and said */
+    CHECK_EQ_U(count(DIAG_NOTE_TEX_3D), 1);
+    check_texel(drawn(), 0, 0, 120, 1, 2, 255);
+
+    /* Linear: r = 0.5 lies halfway between slices 1 and 2. */
+    seq_init(&s);
+    CMD(&s, TexParameteri, GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    CMD(&s, TexParameteri, GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    CMD(&s, TexCoord3f, 0, 0, 0.5);
+    CMD(&s, Rectf, 0, 0, 1, 1);
+    /* Clamped past the last slice; repeat wraps to the first. */
+    CMD(&s, TexCoord3f, 0, 0, 7);
+    CMD(&s, Rectf, 0, 0, 1, 1);
+    run(ip, &s);
+    CHECK(sc.nmeshes >= 2);
+    if (sc.nmeshes >= 2)
+        check_texel(&sc.textures[sc.meshes[sc.nmeshes - 2].look.texture], 0, 0, 90, 1, 2, 255);
+    check_texel(drawn(), 0, 0, 180, 1, 2, 255);
+    seq_init(&s);
+    CMD(&s, TexParameteri, GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    CMD(&s, TexParameteri, GL_TEXTURE_3D, GL_TEXTURE_WRAP_R, GL_REPEAT);
+    CMD(&s, TexCoord3f, 0, 0, 1.1); /* slice 4 -> 0 */
+    CMD(&s, Rectf, 0, 0, 1, 1);
+    /* A sub-image changes slice 3, a copied one (RGBA) slice 1. */
+    CMD(&s, TexSubImage3D, GL_TEXTURE_3D, 0, 0, 0, 3, 1, 1, 1, GL_RGB, GL_UNSIGNED_BYTE, sid);
+    CMD(&s, TexCoord3f, 0, 0, 0.9);
+    CMD(&s, Rectf, 0, 0, 1, 1);
+    run(ip, &s);
+    if (sc.nmeshes >= 2)
+        check_texel(&sc.textures[sc.meshes[sc.nmeshes - 2].look.texture], 0, 0, 0, 1, 2, 255);
+    check_texel(drawn(), 0, 0, 250, 9, 9, 255);
+
+    /* r varying over a primitive: untextured, and said. */
+    uint64_t ignored = count(DIAG_IGNORED);
+    seq_init(&s);
+    CMD(&s, Begin, GL_TRIANGLES);
+    CMD(&s, TexCoord3f, 0, 0, 0);
+    CMD(&s, Vertex2f, 0, 0);
+    CMD(&s, TexCoord3f, 0, 0, 1);
+    CMD(&s, Vertex2f, 1, 0);
+    CMD(&s, Vertex2f, 0, 1);
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_IGNORED), ignored + 1);
+    CHECK(sc.nmeshes && sc.meshes[sc.nmeshes - 1].look.texture < 0);
+
     seq_init(&s);
     CMD(&s, TexImage3D, GL_TEXTURE_2D, 0, GL_RGB, 2, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, id);
     CMD(&s, TexImage3D, GL_TEXTURE_3D, 0, GL_RGB, 2, -2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, id);
+    CMD(&s, TexSubImage3D, GL_TEXTURE_3D, 0, 0, 0, 4, 1, 1, 1, GL_RGB, GL_UNSIGNED_BYTE, sid);
     run(ip, &s);
     CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 1);
-    CHECK_EQ_U(count(DIAG_GL_INVALID_VALUE), 1);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_VALUE), 2);
     interp_destroy(ip);
     free_res();
 }
