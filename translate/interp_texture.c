@@ -18,19 +18,13 @@
 #include <string.h>
 
 #include "interp_internal.h"
+#include "interp_teximage.h"
 #include "namemap.h"
 #include "talloc.h"
 
 /* Pixels above this per image are refused (an error value, not an attempt
  * to allocate what a hostile trace asks for). 16384 x 16384 RGBA is 1 GiB. */
 #define TEX_MAX_TEXELS (1u << 26)
-
-typedef struct tex_image {
-    unsigned refs;
-    int width, height;
-    uint64_t hash; /* of width, height and texels */
-    uint8_t rgba[]; /* bottom row first */
-} tex_image;
 
 typedef struct tex_obj {
     uint32_t name;
@@ -451,6 +445,8 @@ static uint64_t image_hash(const tex_image *img)
         h = (h ^ img->rgba[i]) * 0x100000001b3ull;
     return h;
 }
+
+uint64_t interp_tex_image_hash(const tex_image *img) { return image_hash(img); }
 
 /* The texel bytes of pixel resource `id` holding exactly `need` bytes, or
  * NULL after a diagnostic; *lost is set to id when the trace's damage is
@@ -1261,45 +1257,9 @@ static tex_obj *draw_obj(interp *ip, const interp_tex_unit *u, uint32_t k)
 
 static bool clamps(GLenum wrap) { return wrap != GL_REPEAT && wrap != GL_MIRRORED_REPEAT; }
 
-/* The image mirrored once along s (ms) and t (mt), the mirror image first:
- * out is (ms ? 2 : 1) x (mt ? 2 : 1) times the image. */
-static void mirror_fill(uint8_t *out, const tex_image *img, bool ms, bool mt)
-{
-    size_t w = (size_t)img->width, h = (size_t)img->height;
-    size_t ow = w * (ms ? 2 : 1), oh = h * (mt ? 2 : 1);
-    for (size_t y = 0; y < oh; y++) {
-        size_t sy = mt ? (y < h ? h - 1 - y : y - h) : y;
-        for (size_t x = 0; x < ow; x++) {
-            size_t sx = ms ? (x < w ? w - 1 - x : x - w) : x;
-            memcpy(out + (y * ow + x) * 4, img->rgba + (sy * w + sx) * 4, 4);
-        }
-    }
-}
-
-/* Texel index i of n along a coordinate, wrapped as GL wraps it (GL 2.1
- * 3.8.7); the clamping modes all clamp to the edge texels here. */
-static int wrap_index(int64_t i, int n, GLenum wrap)
-{
-    if (wrap == GL_REPEAT) {
-        i %= n;
-        return (int)(i < 0 ? i + n : i);
-    }
-    if (wrap == GL_MIRRORED_REPEAT) {
-        int64_t p = i % (2 * (int64_t)n);
-        if (p < 0)
-            p += 2 * (int64_t)n;
-        return (int)(p < n ? p : 2 * (int64_t)n - 1 - p);
-    }
-    if (interp_mirror_clamp(wrap) && i < 0)
-        i = -1 - i;
-    return (int)(i < 0 ? 0 : i >= n ? n - 1 : i);
-}
-
 /* The 2D image a 3D texture shows on a primitive over which r is
- * constant: the slice GL_NEAREST picks, or GL_LINEAR's blend of the two
- * around r (GL 2.1 3.8.8, with the magnification filter, as the s and t
- * sampling here). NULL, with a note, when r varies (or is unknown: a GLU
- * or GLUT solid). The caller frees it. */
+ * constant (interp_tex_slice); NULL, with a note, when r varies (or is
+ * unknown: a GLU or GLUT solid). The caller frees it. */
 static tex_image *tex3d_slice(interp *ip, const tex_obj *o, int k)
 {
     interp_textures *t = ip->tex;
@@ -1311,33 +1271,14 @@ static tex_image *tex3d_slice(interp *ip, const tex_obj *o, int k)
         interp_note(ip, DIAG_NOTE_TEX_3D);
         return NULL;
     }
-    int d = o->depth3, w = o->img->width, h = o->img->height / d;
-    double z = fmin(fmax(lo * d, -1e9), 1e9);
-    int64_t k0;
-    float f = 0;
-    if (o->mag_filter == GL_LINEAR) {
-        double fl = floor(z - 0.5);
-        k0 = (int64_t)fl;
-        f = (float)(z - 0.5 - fl);
-    } else {
-        k0 = (int64_t)floor(z);
-    }
-    int s0 = wrap_index(k0, d, o->wrap_r), s1 = wrap_index(k0 + 1, d, o->wrap_r);
-    size_t n = (size_t)w * (size_t)h * 4;
+    size_t n = (size_t)o->img->width * (size_t)(o->img->height / o->depth3) * 4;
     if (!interp_budget_texels(ip, n))
         return NULL;
-    tex_image *img = tr_realloc(NULL, sizeof *img + n);
+    tex_image *img = interp_tex_slice(o->img, o->depth3, lo, o->mag_filter == GL_LINEAR, o->wrap_r);
     if (!img) {
         ip->scene->failed = true;
         return NULL;
     }
-    img->refs = 1;
-    img->width = w;
-    img->height = h;
-    const uint8_t *a = o->img->rgba + (size_t)s0 * n, *b = o->img->rgba + (size_t)s1 * n;
-    for (size_t i = 0; i < n; i++)
-        img->rgba[i] = (uint8_t)(a[i] + f * ((float)b[i] - (float)a[i]) + 0.5f);
-    img->hash = image_hash(img);
     interp_note(ip, DIAG_NOTE_TEX_3D);
     return img;
 }
@@ -1428,7 +1369,7 @@ int32_t interp_texture_for_unit(interp *ip, int k)
         goto out;
     }
     if (ms || mt)
-        mirror_fill(st.rgba, im, ms, mt);
+        interp_tex_mirror_fill(st.rgba, im, ms, mt);
     else
         memcpy(st.rgba, im->rgba, n);
     idx = scene_add_texture(ip->scene, &st);
