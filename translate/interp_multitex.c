@@ -142,5 +142,9 @@ void interp_multitex_unbind(interp *ip, uint32_t name)
             t->binding_1d = 0;
         if (t->binding_2d == name)
             t->binding_2d = 0;
+        if (t->binding_rect == name)
+            t->binding_rect = 0;
+        if (t->binding_3d == name)
+            t->binding_3d = 0;
     }
 }

@@ -33,11 +33,14 @@ static bool copy_ok(interp *ip, int64_t w, int64_t h, int64_t level, int64_t bor
     return true;
 }
 
-/* The targets GL copies into for dims 1 or 2 (no proxies: GL 2.1 3.8.2). */
+/* The targets GL copies into for dims 1 or 2 (no proxies: GL 2.1 3.8.2);
+ * cube-map faces go on to interp_tex_image as glTexImage2D's do. */
 static bool copy_target_ok(interp *ip, GLenum target, int dims)
 {
+    bool face = target >= GL_TEXTURE_CUBE_MAP_POSITIVE_X &&
+                target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z;
     bool ok = dims == 1 ? target == GL_TEXTURE_1D
-                        : target == GL_TEXTURE_2D || target == GL_TEXTURE_RECTANGLE;
+                        : target == GL_TEXTURE_2D || target == GL_TEXTURE_RECTANGLE || face;
     if (!ok)
         interp_bad_enum(ip, "texture copy target", target);
     return ok;
