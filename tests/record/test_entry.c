@@ -27,6 +27,7 @@ void test_too_large(const char *dir);
 void test_unpack(const char *dir);
 void test_pixel_rules(const char *dir);
 void test_raster(const char *dir);
+void test_texcopy_nocontext(const char *dir);
 void test_pbo(const char *dir);
 void test_live_bindings(const char *dir);
 void test_reopen(const char *dir);
@@ -285,6 +286,7 @@ int main(void)
     test_unpack(dir);
     test_pixel_rules(dir);
     test_raster(dir);
+    test_texcopy_nocontext(dir);
     test_pbo(dir);
     test_live_bindings(dir);
     test_reopen(dir);
