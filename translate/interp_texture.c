@@ -1404,10 +1404,6 @@ static bool normal_matrix(interp_textures *t, const mat4 *mv)
  * clamp's [-1, 1] lands on the doubled image of interp_texture_for_unit. */
 static void texcoord_fit(interp *ip, const interp_tex_unit *u, int unit, float out[2])
 {
-    const uint8_t *c = ip->st.a.caps;
-    if (!c[INTERP_CAP_TEXTURE_RECTANGLE] && !c[INTERP_CAP_TEXTURE_2D] && !c[INTERP_CAP_TEXTURE_1D] &&
-        unit == (int)ip->st.active_unit)
-        return;
     tex_obj *o = draw_obj(ip, u, (uint32_t)unit);
     if (!o || !o->img)
         return;
