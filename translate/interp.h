@@ -203,6 +203,7 @@ typedef struct gl_attribs {
 typedef struct gl_tex_unit_parked {
     struct gl_texture_unit texture;
     uint8_t caps[8]; /* INTERP_CAP_TEXTURE_1D .. INTERP_CAP_TEXTURE_GEN_Q */
+    uint8_t rect;    /* INTERP_CAP_TEXTURE_RECTANGLE */
     mat4 matrix[INTERP_TEXTURE_DEPTH];
     int depth;
 } gl_tex_unit_parked;

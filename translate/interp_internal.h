@@ -231,9 +231,8 @@ void interp_tex_subimage(interp *ip, int dims, GLenum target, int64_t level, int
                          int64_t y0, int64_t w, int64_t h, GLenum format, GLenum type,
                          uint32_t id);
 
-/* Whether unit k draws a rectangle texture: GL_TEXTURE_RECTANGLE is
- * enabled (a cap kept for unit 0 alone) and neither 3D nor cube map is
- * (interp_texture.c). */
+/* Whether unit k draws a rectangle texture: its GL_TEXTURE_RECTANGLE is
+ * enabled and neither 3D nor cube map is (interp_texture.c). */
 bool interp_texture_rect_on(const interp *ip, uint32_t k);
 
 /* Forgets the r coordinates seen (interp_texture.c): a new primitive

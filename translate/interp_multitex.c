@@ -38,6 +38,7 @@ static void park(gl_state *st, uint32_t k)
     gl_tex_unit_parked *u = &st->units[k];
     u->texture = st->a.texture;
     memcpy(u->caps, &st->a.caps[UNIT_CAP0], UNIT_NCAPS);
+    u->rect = st->a.caps[INTERP_CAP_TEXTURE_RECTANGLE];
     memcpy(u->matrix, st->texture, sizeof u->matrix);
     u->depth = st->depth[INTERP_TEX];
 }
@@ -47,6 +48,7 @@ static void unpark(gl_state *st, uint32_t k)
     const gl_tex_unit_parked *u = &st->units[k];
     st->a.texture = u->texture;
     memcpy(&st->a.caps[UNIT_CAP0], u->caps, UNIT_NCAPS);
+    st->a.caps[INTERP_CAP_TEXTURE_RECTANGLE] = u->rect;
     memcpy(st->texture, u->matrix, sizeof u->matrix);
     st->depth[INTERP_TEX] = u->depth;
 }

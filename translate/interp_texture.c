@@ -1232,9 +1232,13 @@ static bool complete(const tex_obj *o)
 
 bool interp_texture_rect_on(const interp *ip, uint32_t k)
 {
-    const uint8_t *c = ip->st.a.caps;
-    return k == 0 && c[INTERP_CAP_TEXTURE_RECTANGLE] && !c[INTERP_CAP_TEXTURE_3D] &&
-           !c[INTERP_CAP_TEXTURE_CUBE_MAP];
+    if (k >= INTERP_TEX_UNITS)
+        return false;
+    const gl_state *st = &ip->st;
+    bool active = k == st->active_unit;
+    const uint8_t *c = active ? &st->a.caps[INTERP_CAP_TEXTURE_1D] : st->units[k].caps;
+    bool rect = active ? st->a.caps[INTERP_CAP_TEXTURE_RECTANGLE] : st->units[k].rect;
+    return rect && !c[UCAP(TEXTURE_3D)] && !c[UCAP(TEXTURE_CUBE_MAP)];
 }
 
 /* The unit's enabled target: a rectangle wins over 2D, 2D over 1D. */
@@ -1242,12 +1246,8 @@ static tex_obj *draw_obj(interp *ip, const interp_tex_unit *u, uint32_t k)
 {
     if (u->caps[UCAP(TEXTURE_3D)] && !u->caps[UCAP(TEXTURE_CUBE_MAP)])
         return get_obj(ip, GL_TEXTURE_3D, u->texture->binding_3d, false);
-    if (interp_texture_rect_on(ip, k)) {
-        /* Unit 0's binding: the active unit's, or unit 0's parked state. */
-        uint32_t name = ip->st.active_unit == 0 ? ip->st.a.texture.binding_rect
-                                                : u->texture->binding_rect;
-        return get_obj(ip, GL_TEXTURE_RECTANGLE, name, false);
-    }
+    if (interp_texture_rect_on(ip, k))
+        return get_obj(ip, GL_TEXTURE_RECTANGLE, u->texture->binding_rect, false);
     if (u->caps[UCAP(TEXTURE_2D)])
         return get_obj(ip, GL_TEXTURE_2D, u->texture->binding_2d, false);
     if (u->caps[UCAP(TEXTURE_1D)])

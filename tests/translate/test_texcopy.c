@@ -379,6 +379,29 @@ static void test_rect(void)
     run(ip, &s);
     CHECK_EQ_U(count(DIAG_GL_INVALID_OPERATION), 1);
     interp_destroy(ip);
+
+    /* Per unit: enabled on unit 1 only, drawn from unit 1's coordinates. */
+    ip = fresh();
+    seq_init(&s);
+    CMD(&s, ActiveTexture, GL_TEXTURE1);
+    setup(&s, GL_TEXTURE_RECTANGLE, 7);
+    CMD(&s, TexImage2D, GL_TEXTURE_RECTANGLE, 0, GL_RGB, 4, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, id);
+    CMD(&s, ActiveTexture, GL_TEXTURE0);
+    CMD(&s, Begin, GL_TRIANGLES);
+    CMD(&s, MultiTexCoord2f, GL_TEXTURE1, 2, 1);
+    CMD(&s, Vertex2f, 0, 0);
+    CMD(&s, Vertex2f, 1, 0);
+    CMD(&s, Vertex2f, 0, 1);
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK(interp_texture_rect_on(ip, 1) && !interp_texture_rect_on(ip, 0));
+    t = drawn();
+    CHECK(t && t->width == 4 && t->height == 2);
+    if (sc.nverts >= 1) {
+        CHECK_NEAR(sc.verts[sc.nverts - 1].tex[0], 0.5, 1e-6);
+        CHECK_NEAR(sc.verts[sc.nverts - 1].tex[1], 0.5, 1e-6);
+    }
+    interp_destroy(ip);
     free_res();
 }
 
