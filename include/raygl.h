@@ -196,6 +196,27 @@ RAYGL_API void rayglDrawPixels(GLsizei width, GLsizei height, GLenum format, GLe
                                const GLvoid *pixels);
 RAYGL_API void rayglCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type);
 
+/* Texture copies, their framebuffer rectangle read back at the call; 3D
+ * textures, their pixels read as glTexImage2D's (unpack image height and
+ * skipped images included). */
+RAYGL_API void rayglCopyTexImage1D(GLenum target, GLint level, GLenum internalformat, GLint x,
+                                   GLint y, GLsizei width, GLint border);
+RAYGL_API void rayglCopyTexImage2D(GLenum target, GLint level, GLenum internalformat, GLint x,
+                                   GLint y, GLsizei width, GLsizei height, GLint border);
+RAYGL_API void rayglCopyTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLint x, GLint y,
+                                      GLsizei width);
+RAYGL_API void rayglCopyTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                      GLint x, GLint y, GLsizei width, GLsizei height);
+RAYGL_API void rayglCopyTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                      GLint zoffset, GLint x, GLint y, GLsizei width,
+                                      GLsizei height);
+RAYGL_API void rayglTexImage3D(GLenum target, GLint level, GLint internalFormat, GLsizei width,
+                               GLsizei height, GLsizei depth, GLint border, GLenum format,
+                               GLenum type, const GLvoid *pixels);
+RAYGL_API void rayglTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                  GLint zoffset, GLsizei width, GLsizei height, GLsizei depth,
+                                  GLenum format, GLenum type, const GLvoid *pixels);
+
 /* glEnable / glDisable: the client arrays (GL_VERTEX_ARRAY, ...), which
  * Mesa takes there as glEnableClientState does, are recorded as that. */
 RAYGL_API void rayglEnable(GLenum cap);

@@ -33,7 +33,7 @@
     X(NOTE_BLEND_ADD, "approximated: additive blending (all of the colour behind kept) keeps 127/128 of it") \
     X(NOTE_BLEND_EQUATION, "approximated: blend equations other than GL_FUNC_ADD (glBlendEquation) are drawn as GL_FUNC_ADD") \
     X(NOTE_ALPHA_TEST, "not translated yet: alpha test") \
-    X(NOTE_TEXTURE, "approximated: texture environment GL_BLEND, GL_ADD or GL_COMBINE drawn as GL_MODULATE; 3D and cube-map textures not translated") \
+    X(NOTE_TEXTURE, "approximated: texture environment GL_BLEND, GL_ADD or GL_COMBINE drawn as GL_MODULATE; cube-map textures not translated") \
     X(NOTE_TEX_SAMPLING, "approximated: textures are sampled with their magnification filter from level 0 (no mipmaps, no minification filter, mirrored repeat as repeat)") \
     X(NOTE_LISTS, "not translated yet: display lists (calls skipped)") \
     X(NOTE_ARRAYS, "not translated yet: vertex arrays (draws skipped)") \
@@ -67,7 +67,12 @@
     X(NOTE_NURBS_TESSELLATOR, "as recorded: GLU NURBS in GLU_NURBS_TESSELLATOR mode, drawn by the program's callbacks") \
     X(NOTE_MATERIAL_VERTEX, "approximated: glMaterial between the vertices of a primitive varying the shininess or two colours: drawn with the last vertex's material") \
     X(NOTE_GOURAUD, "approximated: lit faces large against their distance to a point light or local viewer, lit per pixel where OpenGL lights their corners (see --vertex-lighting)") \
-    X(NOTE_SHADOW_HIGHLIGHT, "approximated with shadows: highlights of lights whose specular is not one multiple of their diffuse colour")
+    X(NOTE_SHADOW_HIGHLIGHT, "approximated with shadows: highlights of lights whose specular is not one multiple of their diffuse colour") \
+    X(NOTE_POINT_FADE, "not translated: the point fade threshold (GL_POINT_FADE_THRESHOLD_SIZE; GL fades points only when multisampling)") \
+    X(NOTE_TEX_MIRROR_CLAMP, "approximated: mirror-clamp texture wraps (GL_MIRROR_CLAMP_EXT and its kin) drawn as the image mirrored once, then clamped to its edge texels") \
+    X(NOTE_TEX_LOD_BIAS, "not translated: texture level-of-detail bias (GL_TEXTURE_LOD_BIAS; textures are drawn from level 0)") \
+    X(NOTE_POINT_SPRITE, "not translated: point sprites (GL_POINT_SPRITE, GL_COORD_REPLACE): points drawn untextured") \
+    X(NOTE_TEX_3D, "approximated: 3D textures drawn as the slice (GL_NEAREST) or the blend of two slices (GL_LINEAR) that r picks where r is constant over a primitive; untextured where it varies")
 
 typedef enum diag_kind {
 #define DIAG_ENUM_(name, text) DIAG_##name,

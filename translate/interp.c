@@ -145,6 +145,10 @@ void interp_default_state(gl_state *st)
     a->polygon.mode[0] = a->polygon.mode[1] = GL_FILL;
     a->line.width = 1;
     a->point.size = 1;
+    a->point.size_max = 1024; /* Mesa's largest point, interp_pointsize's limit */
+    a->point.fade_threshold = 1;
+    a->point.atten[0] = 1;
+    a->lighting.provoking = GL_LAST_VERTEX_CONVENTION;
     /* The window size is unknown here; the recorder's snapshot (or the
      * program) sets the viewport. */
     a->viewport.rect[2] = 640;

@@ -131,6 +131,7 @@ typedef struct gl_attribs {
         float model_ambient[4];
         bool local_viewer, two_side;
         GLenum color_control; /* GL_LIGHT_MODEL_COLOR_CONTROL */
+        GLenum provoking;     /* glProvokingVertex */
     } lighting; /* GL_LIGHTING_BIT */
     struct {
         GLenum front_face, cull_mode;
@@ -142,6 +143,9 @@ typedef struct gl_attribs {
     } line; /* GL_LINE_BIT */
     struct {
         float size;
+        /* glPointParameter (GL 1.4 3.3): the derived size's clamp, the
+         * size below which points fade, the distance attenuation. */
+        float size_min, size_max, fade_threshold, atten[3];
     } point; /* GL_POINT_BIT */
     struct {
         int32_t rect[4]; /* x, y, width, height */
@@ -174,6 +178,8 @@ typedef struct gl_attribs {
         GLenum env_mode;
         float env_color[4];
         uint32_t binding_1d, binding_2d;
+        uint32_t binding_rect;    /* GL_TEXTURE_RECTANGLE(_ARB, _NV) */
+        uint32_t binding_3d;
         GLenum gen_mode[4];       /* s, t, r, q: GL_EYE_LINEAR, ... */
         double obj_plane[4][4];   /* GL_OBJECT_PLANE */
         double eye_plane[4][4];   /* GL_EYE_PLANE, times the inverse modelview
@@ -200,6 +206,7 @@ typedef struct gl_attribs {
 typedef struct gl_tex_unit_parked {
     struct gl_texture_unit texture;
     uint8_t caps[8]; /* INTERP_CAP_TEXTURE_1D .. INTERP_CAP_TEXTURE_GEN_Q */
+    uint8_t rect;    /* INTERP_CAP_TEXTURE_RECTANGLE */
     mat4 matrix[INTERP_TEXTURE_DEPTH];
     int depth;
 } gl_tex_unit_parked;

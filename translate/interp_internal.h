@@ -246,6 +246,45 @@ void interp_diag(interp *ip, diag_kind kind, const char *fmt, ...);
 /* Logs a NOTE_* kind once per frame (the CLI then says it once per run). */
 void interp_note(interp *ip, diag_kind kind);
 
+/* glTexImage1D/2D's effect on the bound texture, pixels from resource id
+ * (0: undefined contents), and glTexSubImage1D/2D's (dims 1 or 2): for
+ * the copies of interp_texcopy.c (interp_texture.c). */
+void interp_tex_image(interp *ip, GLenum target, int32_t level, int32_t internal, int64_t w,
+                      int64_t h, int32_t border, GLenum format, GLenum type, uint32_t id);
+void interp_tex_subimage(interp *ip, int dims, GLenum target, int64_t level, int64_t x0,
+                         int64_t y0, int64_t w, int64_t h, GLenum format, GLenum type,
+                         uint32_t id);
+
+/* Whether unit k draws a rectangle texture: its GL_TEXTURE_RECTANGLE is
+ * enabled and neither 3D nor cube map is (interp_texture.c). */
+bool interp_texture_rect_on(const interp *ip, uint32_t k);
+
+/* Forgets the r coordinates seen (interp_texture.c): a new primitive
+ * starts, whose r decides which slice of a 3D texture it shows. */
+void interp_texture_r_reset(interp *ip);
+
+/* glTexImage3D's effect on the bound 3D texture (interp_texture.c). */
+void interp_tex_image3d(interp *ip, int32_t level, int32_t internal, int64_t w, int64_t h,
+                        int64_t d, int32_t border, GLenum format, GLenum type, uint32_t id);
+void interp_tex_subimage3d(interp *ip, int64_t level, int64_t x0, int64_t y0, int64_t z0,
+                           int64_t w, int64_t h, int64_t d, GLenum format, GLenum type,
+                           uint32_t id);
+
+/* Whether wrap is one of EXT_texture_mirror_clamp's modes (interp_texture.c). */
+bool interp_mirror_clamp(GLenum wrap);
+
+/* Packed pixel types (interp_texpacked.c): the components of one packed
+ * pixel of `type` and its *bytes, 0 for a type that is not packed; the
+ * components of the pixel at p, in [0, 1], in component order. */
+int interp_packed_layout(GLenum type, size_t *bytes);
+void interp_packed_decode(const uint8_t *p, GLenum type, float out[4]);
+
+/* Point parameters (interp_point.c): whether any is away from GL's
+ * default, and the derived size of a point at eye-space position eye
+ * (GL 1.4 3.3), *fade its alpha factor. */
+bool interp_point_params_set(const gl_attribs *a);
+double interp_point_size(const gl_attribs *a, const double eye[3], double *fade);
+
 /* GL errors for the current command; the caller then returns (skips it). */
 void interp_bad_enum(interp *ip, const char *what, uint32_t value);
 void interp_bad_value(interp *ip, const char *fmt_detail);
@@ -259,7 +298,7 @@ bool interp_reject_in_begin(interp *ip);
 
 /* Pixels in client formats (interp_texture.c). interp_pixel_bytes: the
  * tightly packed size of w x h pixels of format/type, 0 for a pair not
- * translated (packed types, index, depth and stencil formats) or too many
+ * translated (index, depth and stencil formats) or too many
  * pixels. interp_pixels_float: n such pixels as GL's RGBA floats before
  * pixel transfer (GL 2.1 3.6.4). interp_pixels_fetch: the bytes of pixel
  * resource id, exactly `need` of them (counted in the frame's budget), or

@@ -459,6 +459,45 @@ void glCopyPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type)
     LOGV("glCopyPixels", x, y, w, h, type);
 }
 
+/* ---- Texture copies and 3D textures (record/entry_texcopy.c) ----------------------- */
+
+void glCopyTexImage1D(GLenum target, GLint level, GLenum internal, GLint x, GLint y, GLsizei w,
+                      GLint border)
+{
+    LOGV("glCopyTexImage1D", target, level, internal, x, y, w, border);
+}
+void glCopyTexImage2D(GLenum target, GLint level, GLenum internal, GLint x, GLint y, GLsizei w,
+                      GLsizei h, GLint border)
+{
+    LOGV("glCopyTexImage2D", target, level, internal, x, y, w, h, border);
+}
+void glCopyTexSubImage1D(GLenum target, GLint level, GLint xo, GLint x, GLint y, GLsizei w)
+{
+    LOGV("glCopyTexSubImage1D", target, level, xo, x, y, w);
+}
+void glCopyTexSubImage2D(GLenum target, GLint level, GLint xo, GLint yo, GLint x, GLint y,
+                         GLsizei w, GLsizei h)
+{
+    LOGV("glCopyTexSubImage2D", target, level, xo, yo, x, y, w, h);
+}
+void glCopyTexSubImage3D(GLenum target, GLint level, GLint xo, GLint yo, GLint zo, GLint x,
+                         GLint y, GLsizei w, GLsizei h)
+{
+    LOGV("glCopyTexSubImage3D", target, level, xo, yo, zo, x, y, w, h);
+}
+void glTexImage3D(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei h, GLsizei d,
+                  GLint border, GLenum format, GLenum type, const GLvoid *pixels)
+{
+    LOGV("glTexImage3D", target, level, internal, w, h, d, border, format, type);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], pixels);
+}
+void glTexSubImage3D(GLenum target, GLint level, GLint xo, GLint yo, GLint zo, GLsizei w,
+                     GLsizei h, GLsizei d, GLenum format, GLenum type, const GLvoid *pixels)
+{
+    LOGV("glTexSubImage3D", target, level, xo, yo, zo, w, h, d, format, type);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], pixels);
+}
+
 /* ---- Evaluator maps ---------------------------------------------------------------- */
 
 void glMap1f(GLenum target, GLfloat u1, GLfloat u2, GLint stride, GLint order,

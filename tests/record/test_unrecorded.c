@@ -33,7 +33,7 @@ static void test_list(void)
     static const char *const counted[] = {
         "glIndexMask", "glIndexi", "glCreateProgram", "glBlendColor", "glutStrokeCharacter",
         "glPixelMapfv", "glutBitmapCharacter", "glutBitmapString", "glClipPlane", "glStencilFunc",
-        "glTexImage3D", "glUseProgram", "glUniform4fv", "glBlendColorEXT", "glBlendEquationSeparate",
+        "glTexImage3DEXT", "glUseProgram", "glUniform4fv", "glBlendColorEXT", "glBlendEquationSeparate",
         "glPolygonStipple", "gluNurbsCallback", "gluTessVertex", "gluBuild1DMipmaps", "glutInit",
         "glutStrokeCharacter", "glutSolidTeacup", "glReadBuffer",
     };
@@ -48,7 +48,9 @@ static void test_list(void)
         "glutSwapBuffers", "glFlush", "glMap1f", "glEvalMesh2", "glRasterPos2i", "gluNurbsSurface",
         "gluPwlCurve", "gluNewNurbsRenderer",
         "glWindowPos2f", "glBitmap", "glDrawPixels", "glCopyPixels", "glPixelZoom",
-        "glPixelTransferf",
+        "glPixelTransferf", "glCopyTexImage2D", "glCopyTexSubImage3D", "glTexImage3D",
+        "glPointParameterfv", "glProvokingVertex", "glPointParameterfARB",
+        "glPointParameterfvEXT",
         "glActiveTexture", "glActiveTextureARB", "glClientActiveTexture", "glMultiTexCoord2f",
         "glMultiTexCoord4dvARB", "glLogicOp", "glAccum", "glSecondaryColor3f", "glRenderMode",
     };
