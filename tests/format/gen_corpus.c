@@ -435,6 +435,8 @@ static int write_nurbs(const char *dir)
     EV(EndSurface, 1);
     EV(DeleteNurbsRenderer, 1);
     return write_file(dir, "nurbs.bin", seq, eval_len);
+}
+
 /* ---- Texture copies, 3D, rectangle, packed, depth, points, provoking vertex ------- */
 
 static int write_texcopy(const char *dir)
