@@ -105,6 +105,7 @@ struct interp {
     interp_resource_fn res_fn;
     void *res_ctx;
     int list_depth;
+    bool list_ce;        /* running a GL_COMPILE_AND_EXECUTE body as it is defined */
     uint32_t list_calls; /* this frame's, against a hostile trace's recursion */
     struct interp_groups *groups;
 

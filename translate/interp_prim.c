@@ -4,7 +4,9 @@
  * Vertices go straight into the scene's vertex pool as they arrive, with
  * the current normal, colour and texture coordinates (GL 1.x 2.7). At
  * glEnd the primitive is assembled as GL does (2.6.1): strips alternate
- * their winding, quads split (0,1,2)(0,2,3), quad strips take vertices
+ * their winding, quads split (0,1,2)(0,2,3), or (0,1,3)(1,2,3) when
+ * called from a display list (as Mesa compiles quads in a list:
+ * tests/programs/proj_quad_split.c), quad strips take vertices
  * (2i, 2i+1, 2i+3, 2i+2), polygons are fans; incomplete primitives are
  * dropped; the provoking vertex (flat shading) is the last vertex of each
  * triangle, quad or segment and the first of a polygon (table 2.2).
@@ -503,6 +505,7 @@ typedef struct assembly {
     bool flat;
     float line_width, point_size;
     bool line_smooth, point_smooth;
+    bool list_quads; /* quads split along v1-v3, as Mesa compiles them in a list */
     scene_mesh *mesh;
 } assembly;
 
@@ -744,7 +747,10 @@ static void assemble_polygons(assembly *as, GLenum mode, uint32_t n)
         break;
     case GL_QUADS:
         for (uint32_t i = 0; i + 4 <= n; i += 4) {
-            t[0] = i, t[1] = i + 1, t[2] = i + 2, t[3] = i + 3;
+            /* The fan starts at v1 for the v1-v3 diagonal: same edges. */
+            uint32_t f = as->list_quads ? 1 : 0;
+            for (uint32_t k = 0; k < 4; k++)
+                t[k] = i + (k + f) % 4;
             emit_polygon(as, t, 4, i + 3, true);
         }
         break;
@@ -794,8 +800,13 @@ static void assemble_filled(assembly *as, GLenum mode, uint32_t n)
         break;
     case GL_QUADS:
         for (uint32_t i = 0; i + 4 <= n; i += 4) {
-            fill_tri(as, i, i + 1, i + 2, i + 3);
-            fill_tri(as, i, i + 2, i + 3, i + 3);
+            if (as->list_quads) {
+                fill_tri(as, i, i + 1, i + 3, i + 3);
+                fill_tri(as, i + 1, i + 2, i + 3, i + 3);
+            } else {
+                fill_tri(as, i, i + 1, i + 2, i + 3);
+                fill_tri(as, i, i + 2, i + 3, i + 3);
+            }
         }
         break;
     case GL_QUAD_STRIP:
@@ -955,6 +966,7 @@ static void end_primitive(interp *ip)
     as.point_smooth = a->caps[INTERP_CAP_POINT_SMOOTH];
     as.line_width = raster_width(a->line.width, as.line_smooth);
     as.point_size = raster_width(a->point.size, as.point_smooth);
+    as.list_quads = ip->list_depth > (ip->list_ce ? 1 : 0);
     for (uint32_t i = 0; i < n && !as.check_bad; i++)
         if (!vertex_ok(&s->verts[as.base + i]))
             as.check_bad = true;
