@@ -13,7 +13,12 @@
 #include <stdint.h>
 
 #define DIAG_KEEP 3   /* messages kept per kind and log */
-#define DIAG_TEXT 192 /* longest message kept, with its NUL */
+/* Longest message kept, with its NUL: every note whole after a prefix
+ * (diag.c checks it at compile time). A longer message, which only a
+ * hostile trace's text can make, is not kept cut: it is left out whole and
+ * counted in `dropped`. */
+#define DIAG_TEXT 512
+#define DIAG_PREFIX 192 /* "frame N, label, cmd N (glName) @0xN", with its NUL */
 
 /* Kinds. The GL_* ones are calls GL rejects (and the interpreter skips);
  * the NOTE_* ones are said once per run: state that is not translated (yet)
@@ -73,6 +78,7 @@ typedef enum diag_kind {
 
 typedef struct diag_entry {
     uint64_t count;
+    uint64_t dropped; /* counted, but too long to keep whole */
     uint32_t kept;
     char text[DIAG_KEEP][DIAG_TEXT];
 } diag_entry;
@@ -91,12 +97,17 @@ const char *diag_kind_name(diag_kind kind);
 bool diag_is_note(diag_kind kind);
 
 /* Counts one diagnostic of `kind`; keeps "prefix: message" when fewer than
- * DIAG_KEEP are kept. The message is formatted only then. Never formats
+ * DIAG_KEEP are kept and it fits whole in DIAG_TEXT (otherwise it is
+ * counted in `dropped`, never kept cut). The message is formatted only
+ * then. Never formats
  * floating-point numbers (their text would depend on the locale). */
 #if defined(__GNUC__)
 __attribute__((format(printf, 4, 5)))
 #endif
 void diag_add(diag_log *log, diag_kind kind, const char *prefix, const char *fmt, ...);
+
+/* Counts one diagnostic of `kind` whose message did not fit whole. */
+void diag_drop(diag_log *log, diag_kind kind);
 
 /* Adds every count and kept message of src to dst (dst first). */
 void diag_merge(diag_log *dst, const diag_log *src);
