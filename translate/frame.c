@@ -9,6 +9,7 @@
  */
 #include "frame.h"
 
+#include "frame_front.h"
 #include "pngout.h"
 #include "povwrite_texture.h"
 
@@ -201,6 +202,75 @@ static interp *carried_state(translator *t, uint32_t stream, size_t i, size_t *b
     return c->ip;
 }
 
+/* The first frame whose drawing frame i shows: i itself, or for a
+ * single-buffered frame (ended by glFlush or glFinish) that does not clear
+ * the colour buffer, the earliest of the stream's directly preceding
+ * single-buffered frames back to the last one that clears it or starts
+ * from a snapshot (frame_front.c). *capped: the chain went on past
+ * FRONT_MAX_FRAMES. */
+static size_t front_first(translator *t, size_t i, const rgl_frame_info *fi, bool *capped)
+{
+    *capped = false;
+    front_scan fs = front_scan_frame(fi);
+    if (!fs.flushed || fs.clears_color || !(fi->flags & RGL_FRAME_STATE_CARRIED))
+        return i;
+    size_t first = i;
+    uint32_t number = fi->number;
+    for (size_t k = i; k-- > 0;) {
+        if (i - k > FRONT_MAX_FRAMES) {
+            *capped = true;
+            break;
+        }
+        rgl_frame_info e;
+        rgl_error err;
+        if (get_frame(t, k, &e, &err) != RGL_OK)
+            break;
+        if (e.stream != fi->stream)
+            continue;
+        front_scan es = front_scan_frame(&e);
+        if (e.number + 1 != number || !es.flushed)
+            break; /* a lost frame, or one that showed another buffer */
+        first = k;
+        number = e.number;
+        if (es.clears_color || !(e.flags & RGL_FRAME_STATE_CARRIED))
+            break;
+    }
+    return first;
+}
+
+/* Replays the drawing of the stream's frames [first, i) into ip's scene,
+ * as the front buffer still shows it. Their calls' errors were said when
+ * those frames were translated; their notes hold for this frame too. */
+static void front_replay(translator *t, interp *ip, size_t first, size_t i, uint32_t stream,
+                         diag_log *log)
+{
+    diag_log *tmp = log ? tr_realloc(NULL, sizeof *tmp) : NULL;
+    if (tmp)
+        diag_clear(tmp);
+    interp_attach(ip, &t->scene, tmp);
+    for (size_t k = first; k < i; k++) {
+        rgl_frame_info e;
+        rgl_error err;
+        if (get_frame(t, k, &e, &err) != RGL_OK || e.stream != stream)
+            continue;
+        bool whole = !e.state || run_snapshot(t, ip, e.state, &err) == RGL_OK;
+        whole &= interp_run(ip, e.commands, e.commands_size, e.commands_offset, &err) == RGL_OK;
+        if (!whole) {
+            char what[64];
+            snprintf(what, sizeof what, "the drawing of frame %zu (damaged)", k);
+            interp_missing(ip, what);
+        }
+    }
+    interp_attach(ip, &t->scene, log);
+    if (tmp) {
+        interp_clear_notes(ip);
+        for (int k = DIAG_FIRST_NOTE; k < DIAG_COUNT; k++)
+            if (tmp->e[k].count)
+                interp_frame_note(ip, (diag_kind)k);
+        tr_free(tmp);
+    }
+}
+
 rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result *out)
 {
     interp *ip = t->ip;
@@ -214,8 +284,15 @@ rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result
     interp_reset(ip);
     size_t bad = 0;
     int64_t last = -1;
-    if (fi->flags & RGL_FRAME_STATE_CARRIED) {
-        interp *src = carried_state(t, fi->stream, i, &bad, &last);
+    bool capped = false;
+    size_t first = front_first(t, i, fi, &capped);
+    rgl_frame_info f0 = *fi; /* the first frame shown: its state starts the replay */
+    if (first < i && get_frame(t, first, &f0, &out->error) != RGL_OK) {
+        first = i;
+        f0 = *fi;
+    }
+    if (f0.flags & RGL_FRAME_STATE_CARRIED) {
+        interp *src = carried_state(t, fi->stream, first, &bad, &last);
         if (!src) {
             out->status = RGL_E_NOMEM;
             return out->status;
@@ -223,21 +300,27 @@ rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result
         interp_copy_state(ip, src);
     }
     interp_begin_frame(ip);
-    if (fi->flags & RGL_FRAME_STATE_CARRIED) {
+    if (first < i) {
+        interp_set_frame(ip, i, NULL);
+        front_replay(t, ip, first, i, fi->stream, log);
+        if (capped)
+            interp_frame_note(ip, DIAG_NOTE_FRONT_BUFFER);
+    }
+    if (f0.flags & RGL_FRAME_STATE_CARRIED) {
         /* The state comes from the stream's earlier frames: one cut short
          * by damage, or lost to it (a gap in the numbers), leaves this
          * frame without what that one set. */
         char what[DIAG_TEXT] = "";
         if (bad)
             snprintf(what, sizeof what, "the state carried from frame %zu (damaged)", bad - 1);
-        else if (fi->number == last + 2)
+        else if (f0.number == last + 2)
             snprintf(what, sizeof what,
                      "the state carried from stream %u's frame %lld (lost to damage)",
-                     fi->stream, (long long)(last + 1));
-        else if (fi->number != last + 1)
+                     f0.stream, (long long)(last + 1));
+        else if (f0.number != last + 1)
             snprintf(what, sizeof what,
                      "the state carried from stream %u's frames %lld-%lld (lost to damage)",
-                     fi->stream, (long long)(last + 1), (long long)fi->number - 1);
+                     f0.stream, (long long)(last + 1), (long long)f0.number - 1);
         if (what[0])
             interp_missing(ip, what);
     }

@@ -467,6 +467,10 @@ void interp_diag(interp *ip, diag_kind kind, const char *fmt, ...)
     diag_add(ip->log, kind, prefix, "%s", msg);
 }
 
+void interp_clear_notes(interp *ip) { ip->notes_seen = 0; }
+
+void interp_frame_note(interp *ip, diag_kind kind) { interp_note(ip, kind); }
+
 void interp_note(interp *ip, diag_kind kind)
 {
     uint64_t bit = 1ull << (kind - DIAG_FIRST_NOTE);

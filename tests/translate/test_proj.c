@@ -1,13 +1,15 @@
 /* test_proj.c: issue 14's projections, depth and draw order, and notes.
  *
  * Notes kept whole (never cut mid-word, a message too long to keep left
- * out whole and counted).
+ * out whole and counted); single-buffered frames show the front buffer.
  */
 #include <GL/gl.h>
 #include <string.h>
 
 #include "check.h"
 #include "diag.h"
+#include "frame_front.h"
+#include "frame.h"
 #include "interp.h"
 #include "interp_internal.h"
 #include "scenes.h"
@@ -73,11 +75,109 @@ static void test_long_message_dropped(void)
     interp_destroy(ip);
 }
 
+/* One triangle at x offset dx. */
+static void tri(seq *s, double dx)
+{
+    CMD(s, Begin, GL_TRIANGLES);
+    CMD(s, Vertex2f, dx, 0);
+    CMD(s, Vertex2f, dx + 0.2, 0);
+    CMD(s, Vertex2f, dx, 0.2);
+    CMD0(s, End);
+}
+
+static size_t tris_of(translator *tr, size_t i)
+{
+    frame_result res;
+    if (translator_build(tr, i, NULL, &res) != RGL_OK)
+        return (size_t)-1;
+    return translator_scene(tr)->ntris;
+}
+
+/* A frame ended by glFlush shows what the front buffer holds: the drawing
+ * of earlier single-buffered frames since the last colour clear. */
+static void test_front_buffer(void)
+{
+    seq f[7];
+    for (int k = 0; k < 7; k++)
+        seq_init(&f[k]);
+    CMD(&f[0], Clear, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    tri(&f[0], 0);
+    CMD0(&f[0], Flush);
+    tri(&f[1], 0.3);
+    CMD0(&f[1], Flush);
+    CMD(&f[2], Clear, GL_DEPTH_BUFFER_BIT); /* not the colour: the drawing stays */
+    CMD0(&f[2], Finish);
+    CMD0(&f[2], FrameEnd);                  /* rayglFrameEnd after it still counts */
+    tri(&f[3], -0.3);                       /* a swap-ended frame: no flush */
+    CMD0(&f[4], Flush);                     /* after it: only this frame's own */
+    CMD(&f[5], Clear, GL_COLOR_BUFFER_BIT);
+    tri(&f[5], 0.5);
+    CMD0(&f[5], Flush);
+    tri(&f[6], 0.6);
+    CMD0(&f[6], Flush);
+    trace t;
+    trace_init(&t);
+    for (uint32_t k = 0; k < 7; k++)
+        trace_frame(&t, 0, k, k ? RGL_FRAME_STATE_CARRIED : 0, 0, &f[k]);
+    trace_finish(&t);
+    rgl_reader *r;
+    CHECK(rgl_reader_open_memory(t.data, t.size, &r, NULL) == RGL_OK);
+    translator *tr = translator_create(r, NULL);
+    CHECK(tr != NULL);
+    static const size_t expect[7] = {1, 2, 2, 1, 0, 1, 2};
+    for (size_t i = 0; tr && i < 7; i++)
+        CHECK_EQ_U(tris_of(tr, i), expect[i]);
+    /* Out of order (a worker asked for an earlier frame): the same. */
+    for (size_t i = 7; tr && i-- > 0;)
+        CHECK_EQ_U(tris_of(tr, i), expect[i]);
+    translator_destroy(tr);
+    rgl_reader_destroy(r);
+    trace_free(&t);
+    for (int k = 0; k < 7; k++)
+        seq_free(&f[k]);
+}
+
+/* A chain of flushes with no clear replays at most FRONT_MAX_FRAMES
+ * earlier frames, with a note. */
+static void test_front_buffer_capped(void)
+{
+    enum { N = FRONT_MAX_FRAMES + 10 };
+    seq f;
+    seq_init(&f);
+    tri(&f, 0);
+    CMD0(&f, Flush);
+    trace t;
+    trace_init(&t);
+    for (uint32_t k = 0; k < N; k++)
+        trace_frame(&t, 0, k, k ? RGL_FRAME_STATE_CARRIED : 0, 0, &f);
+    trace_finish(&t);
+    rgl_reader *r;
+    CHECK(rgl_reader_open_memory(t.data, t.size, &r, NULL) == RGL_OK);
+    translator *tr = translator_create(r, NULL);
+    diag_clear(&dlog);
+    frame_result res;
+    CHECK(tr && translator_build(tr, N - 1, &dlog, &res) == RGL_OK);
+    if (tr)
+        CHECK_EQ_U(translator_scene(tr)->ntris, FRONT_MAX_FRAMES + 1);
+    CHECK_EQ_U(dlog.e[DIAG_NOTE_FRONT_BUFFER].count, 1);
+    diag_clear(&dlog);
+    CHECK(tr && translator_build(tr, 5, &dlog, &res) == RGL_OK);
+    if (tr)
+        CHECK_EQ_U(translator_scene(tr)->ntris, 6);
+    CHECK_EQ_U(dlog.e[DIAG_NOTE_FRONT_BUFFER].count, 0);
+    translator_destroy(tr);
+    rgl_reader_destroy(r);
+    trace_free(&t);
+    seq_free(&f);
+}
+
 int main(void)
 {
     scene_init(&sc);
     test_notes_whole();
     test_long_message_dropped();
+    test_front_buffer();
+    test_front_buffer_capped();
     scene_finish(&sc);
     return CHECK_RESULT("test_proj");
 }
