@@ -205,14 +205,15 @@ static interp *carried_state(translator *t, uint32_t stream, size_t i, size_t *b
 /* The first frame whose drawing frame i shows: i itself, or for a
  * single-buffered frame (ended by glFlush or glFinish) that does not clear
  * the colour buffer, the earliest of the stream's directly preceding
- * single-buffered frames back to the last one that clears it or starts
- * from a snapshot (frame_front.c). *capped: the chain went on past
+ * single-buffered frames back to the last one that clears it
+ * (frame_front.c). A frame with a state snapshot restores GL's state, not
+ * the front buffer: the chain goes on through it. *capped: the chain went on past
  * FRONT_MAX_FRAMES. */
 static size_t front_first(translator *t, size_t i, const rgl_frame_info *fi, bool *capped)
 {
     *capped = false;
     front_scan fs = front_scan_frame(fi);
-    if (!fs.flushed || fs.clears_color || !(fi->flags & RGL_FRAME_STATE_CARRIED))
+    if (!fs.flushed || fs.clears_color)
         return i;
     size_t first = i;
     uint32_t number = fi->number;
@@ -232,7 +233,7 @@ static size_t front_first(translator *t, size_t i, const rgl_frame_info *fi, boo
             break; /* a lost frame, or one that showed another buffer */
         first = k;
         number = e.number;
-        if (es.clears_color || !(e.flags & RGL_FRAME_STATE_CARRIED))
+        if (es.clears_color)
             break;
     }
     return first;

@@ -117,8 +117,16 @@ static void test_front_buffer(void)
     CMD0(&f[6], Flush);
     trace t;
     trace_init(&t);
+    /* Frame 2 starts from a snapshot (a live-context recording writes one
+     * per frame): that restores the state, not the front buffer. */
+    seq snap;
+    seq_init(&snap);
+    CMD(&snap, ShadeModel, GL_FLAT);
+    uint32_t sid = trace_snapshot(&t, &snap);
     for (uint32_t k = 0; k < 7; k++)
-        trace_frame(&t, 0, k, k ? RGL_FRAME_STATE_CARRIED : 0, 0, &f[k]);
+        trace_frame(&t, 0, k, k == 2 ? 0 : k ? RGL_FRAME_STATE_CARRIED : 0, k == 2 ? sid : 0,
+                    &f[k]);
+    seq_free(&snap);
     trace_finish(&t);
     rgl_reader *r;
     CHECK(rgl_reader_open_memory(t.data, t.size, &r, NULL) == RGL_OK);
