@@ -272,15 +272,14 @@ static void front_replay(translator *t, interp *ip, size_t first, size_t i, uint
     }
 }
 
-rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result *out)
+/* One translation of frame i into the scene; preset: the camera to use
+ * (NULL: the first draw's). False when it stopped before the frame's
+ * commands (out->status says why). */
+static bool build_pass(translator *t, size_t i, diag_log *log, frame_result *out,
+                             const mat4 *preset, const int32_t *preset_vp)
 {
     interp *ip = t->ip;
-    memset(out, 0, sizeof *out);
-    out->status = get_frame(t, i, &out->info, &out->error);
-    if (out->status != RGL_OK)
-        return out->status;
     const rgl_frame_info *fi = &out->info;
-
     interp_attach(ip, &t->scene, log);
     interp_reset(ip);
     size_t bad = 0;
@@ -296,11 +295,13 @@ rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result
         interp *src = carried_state(t, fi->stream, first, &bad, &last);
         if (!src) {
             out->status = RGL_E_NOMEM;
-            return out->status;
+            return false;
         }
         interp_copy_state(ip, src);
     }
     interp_begin_frame(ip);
+    if (preset)
+        interp_proj_preset(ip, preset, preset_vp);
     if (first < i) {
         interp_set_frame(ip, i, NULL);
         front_replay(t, ip, first, i, fi->stream, log);
@@ -331,12 +332,34 @@ rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result
         interp_set_frame(ip, i, label);
         out->status = run_snapshot(t, ip, fi->state, &out->error);
         if (out->status != RGL_OK)
-            return out->status;
+            return false;
     }
     interp_set_frame(ip, i, NULL);
     out->status = interp_run(ip, fi->commands, fi->commands_size, fi->commands_offset,
                              &out->error);
     interp_end_frame(ip);
+    return true;
+}
+
+rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result *out)
+{
+    interp *ip = t->ip;
+    memset(out, 0, sizeof *out);
+    out->status = get_frame(t, i, &out->info, &out->error);
+    if (out->status != RGL_OK)
+        return out->status;
+    if (!build_pass(t, i, log, out, NULL, NULL))
+        return out->status;
+    /* A frame of several projections whose first draw was not the 3D
+     * scene's: once more with the 3D scene's camera (interp_proj.c). */
+    mat4 proj;
+    int32_t vp[4];
+    if (out->status == RGL_OK && !t->scene.failed && interp_proj_choice(ip, &proj, vp)) {
+        if (log)
+            diag_clear(log);
+        if (!build_pass(t, i, log, out, &proj, vp))
+            return out->status;
+    }
     out->unrecorded = interp_unrecorded(ip);
     const char *cut = interp_frame_cut(ip);
     if (cut)

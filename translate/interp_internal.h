@@ -30,6 +30,15 @@ typedef struct interp_quadric {
 typedef struct interp_textures interp_textures; /* interp_texture.c */
 struct interp_eval;                             /* interp_eval.c */
 
+/* One projection and viewport used in a frame, and its draws' weight. */
+#define INTERP_PROJ_VOTES 8
+typedef struct interp_proj_vote_t {
+    mat4 proj;
+    int32_t vp[4];
+    uint64_t score;
+    bool solid; /* some draw was depth-tested or lit */
+} interp_proj_vote_t;
+
 struct interp {
     gl_state st;
     interp_quadric quadrics[INTERP_QUADRICS]; /* context state, like st */
@@ -97,6 +106,16 @@ struct interp {
     int32_t cam_viewport[4];
     mat4 cam_from_ndc; /* inverse of (viewport-scaled) camera projection */
     bool cam_from_ndc_ok;
+
+    /* Several projections in a frame (interp_proj.c): the votes for the
+     * camera, the preset one of a second translation, and whether only
+     * background-layer draws were made since the last colour clear. */
+    interp_proj_vote_t votes[INTERP_PROJ_VOTES];
+    int nvotes;
+    bool cam_preset;
+    mat4 cam_preset_proj;
+    int32_t cam_preset_vp[4];
+    bool back_open;
 
     /* Display lists (interp_list.c). The table is context state that
      * interp_copy_state carries; the groups are the frame's list calls
@@ -283,6 +302,18 @@ int interp_cap_index(GLenum cap);
 
 /* Fixes the frame's camera if no draw has yet (interp_raster.c). */
 void interp_fix_camera(interp *ip);
+
+/* Several projections in one frame (interp_proj.c). begin_frame forgets
+ * the votes and the preset; clear notes a glClear of the whole colour
+ * buffer; vote counts a draw with the current projection; own_draw notes
+ * a draw with the camera's projection; layer rewrites a remapped draw's
+ * window matrix w to put a draw made without the depth test in its
+ * screen-space layer. */
+void interp_proj_begin_frame(interp *ip);
+void interp_proj_clear(interp *ip);
+void interp_proj_own_draw(interp *ip);
+void interp_proj_vote(interp *ip, GLenum mode);
+void interp_proj_layer(interp *ip, mat4 *w);
 
 /* The viewport-scaled projection of the current state: clip -> window-ish. */
 mat4 interp_window_matrix(const mat4 *proj, const int32_t vp[4]);

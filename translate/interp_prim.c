@@ -213,13 +213,22 @@ static bool setup_transform(interp *ip)
         bool same_vp = memcmp(vp, ip->cam_viewport, sizeof ip->cam_viewport) == 0;
         if (!same_vp || !mat4_equal_f32(proj, &ip->cam_proj)) {
             /* Drawn with another projection or viewport: map its window
-             * position into the camera's eye space. */
-            interp_note(ip, DIAG_NOTE_PROJECTION);
+             * position into the camera's eye space. Window x, y and depth
+             * are GL's, so colours and depth order are exact; lighting,
+             * fog and depth-tested textures are seen from the camera. */
+            const uint8_t *c = ip->st.a.caps;
+            if ((c[INTERP_CAP_LIGHTING] && ip->prim_mode > GL_LINE_STRIP) || c[INTERP_CAP_FOG] ||
+                ((c[INTERP_CAP_TEXTURE_2D] || c[INTERP_CAP_TEXTURE_1D]) &&
+                 c[INTERP_CAP_DEPTH_TEST]))
+                interp_note(ip, DIAG_NOTE_PROJECTION);
             if (!ip->cam_from_ndc_ok)
                 return false;
             mat4 w = interp_window_matrix(proj, vp);
+            interp_proj_layer(ip, &w);
             mat4 remap = mat4_mul(&ip->cam_from_ndc, &w);
             to_eye = mat4_mul(&remap, mv);
+        } else {
+            interp_proj_own_draw(ip);
         }
     }
     if (!mat4_finite(&to_eye) || !mat4_finite(&ip->prim_clip)) {
@@ -335,6 +344,7 @@ static void begin_mode(interp *ip, GLenum mode)
     if (ip->accum.active)
         return; /* a later accumulation pass: the scene holds the first */
     draw_notes(ip);
+    interp_proj_vote(ip, mode);
     interp_fix_camera(ip);
     if (interp_scissor_hides(ip) || !setup_transform(ip))
         return;
