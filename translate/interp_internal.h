@@ -314,6 +314,9 @@ void interp_proj_clear(interp *ip);
 void interp_proj_own_draw(interp *ip);
 void interp_proj_vote(interp *ip, GLenum mode);
 void interp_proj_layer(interp *ip, mat4 *w);
+/* At the frame's end: an orthographic camera and its near plane step back
+ * by the painter's reach (interp_proj.c). */
+void interp_proj_end_frame(interp *ip);
 
 /* The viewport-scaled projection of the current state: clip -> window-ish. */
 mat4 interp_window_matrix(const mat4 *proj, const int32_t vp[4]);
@@ -398,6 +401,10 @@ bool interp_object_to_eye(const interp *ip, const mat4 *mv, const mat4 *proj,
 /* Moves to_eye toward the camera by the painter's shift of draw number
  * `painter` made without a depth test (interp_prim.c, painter_shift). */
 void interp_painter_apply(const interp *ip, uint32_t painter, mat4 *to_eye);
+/* How far the painter's shift has moved draws toward an orthographic
+ * camera so far, plus one step (0 for a perspective camera): the near
+ * plane lets that much through (interp_prim.c). */
+double interp_painter_reach(const interp *ip);
 #define INTERP_PAINTER_MAX 100000 /* painter counts no further */
 
 /* Whether draws reach the picture: the render mode is GL_RENDER (else

@@ -137,34 +137,44 @@ static void draw_notes(interp *ip)
  * a ray tracer shows the nearer. For draws in one plane (the common case:
  * 2D drawings) the tie is broken toward draw order by moving each draw
  * made without a depth test a little closer to the camera than the one
- * before: by a factor 1 - k 1e-6 about the eye (perspective), which leaves
- * every image position unchanged, or by k 1e-6 of the near-far distance
- * along the view direction (orthographic). k counts such draws since the
- * frame's start or last clear. Surfaces truly apart stay in depth order
- * (docs/mapping.md, "What a ray tracer does differently"). */
-#define PAINTER_STEP 1e-6
+ * before. POV-Ray does not tell apart two surfaces closer than about 2e-4
+ * along a ray (measured: a translucent triangle 1e-4 in front of another
+ * hides it, 3e-4 shows both, at distances 0.01 to 10^4), so the steps are
+ * at least that at the scene's scale: PAINTER_ORTHO eye units along the
+ * view direction (orthographic: the camera and its near plane move back by
+ * the frame's whole shift, interp_proj.c), or a factor 1 - k
+ * PAINTER_PERSP about the eye (perspective: image positions unchanged;
+ * k stops at PAINTER_PERSP_MAX, half way to the eye). k counts such draws
+ * since the frame's start or last clear. Surfaces truly apart stay in
+ * depth order (docs/mapping.md, "What a ray tracer does differently" and
+ * "Projections, depth and draw order"). */
+#define PAINTER_ORTHO 1e-3
+#define PAINTER_PERSP 5e-5
+#define PAINTER_PERSP_MAX 10000
 #define PAINTER_MAX INTERP_PAINTER_MAX
+
+double interp_painter_reach(const interp *ip)
+{
+    return ip->scene && ip->scene->camera.kind == SCENE_CAMERA_ORTHOGRAPHIC
+               ? (ip->painter + 1) * PAINTER_ORTHO
+               : 0;
+}
 
 void interp_painter_apply(const interp *ip, uint32_t painter, mat4 *to_eye)
 {
     const scene_camera *cam = &ip->scene->camera;
-    double k = painter * PAINTER_STEP;
     mat4 s = mat4_identity();
     if (cam->kind == SCENE_CAMERA_ORTHOGRAPHIC) {
-        double range = 1;
-        if (cam->has_clip) /* the planes are unit-normal and face each other */
-            range = fabs(cam->clip[0][3] + cam->clip[1][3]);
-        if (!(range > 0) || !isfinite(range))
-            range = 1;
+        double k = painter * PAINTER_ORTHO;
         double dl = sqrt(cam->direction[0] * cam->direction[0] +
                          cam->direction[1] * cam->direction[1] +
                          cam->direction[2] * cam->direction[2]);
         if (!(dl > 0))
             return;
         for (int i = 0; i < 3; i++)
-            s.m[12 + i] = -cam->direction[i] / dl * k * range;
+            s.m[12 + i] = -cam->direction[i] / dl * k;
     } else {
-        double f = 1 - k;
+        double f = 1 - (painter < PAINTER_PERSP_MAX ? painter : PAINTER_PERSP_MAX) * PAINTER_PERSP;
         for (int i = 0; i < 3; i++) {
             s.m[i * 5] = f;
             s.m[12 + i] = cam->location[i] * (1 - f);
@@ -628,8 +638,8 @@ static void add_point(assembly *as, uint32_t i, uint32_t colour_from)
         return;
     for (int k = 0; k < 2 && cam->has_clip; k++)
         if (cam->clip[k][0] * p[0] + cam->clip[k][1] * p[1] + cam->clip[k][2] * p[2] +
-                cam->clip[k][3] < 0)
-            return;
+                cam->clip[k][3] + (k == 0 ? interp_painter_reach(as->ip) : 0) < 0)
+            return; /* the near plane (0) lets the painter's shift through */
     image_axes(cam, r, u);
     scene_point *pt = scene_add_point(as->s);
     if (!pt)

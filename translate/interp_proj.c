@@ -144,3 +144,25 @@ void interp_proj_layer(interp *ip, mat4 *w)
     for (int k = 0; k < 4; k++)
         w->m[4 * k + 2] = z * w->m[4 * k + 3];
 }
+
+void interp_proj_end_frame(interp *ip)
+{
+    scene *s = ip->scene;
+    if (!s || !s->have_camera || s->camera.kind != SCENE_CAMERA_ORTHOGRAPHIC)
+        return;
+    /* The painter's shift moves draws toward an orthographic camera, which
+     * sits on GL's near plane: the near plane lets the shift through and
+     * the camera steps back past it, as a ray starting on a surface does
+     * not see it (with zNear = 0 every draw sits on the camera). */
+    scene_camera *cam = &s->camera;
+    double reach = interp_painter_reach(ip);
+    double dl = sqrt(cam->direction[0] * cam->direction[0] +
+                     cam->direction[1] * cam->direction[1] +
+                     cam->direction[2] * cam->direction[2]);
+    if (!(dl > 0) || !isfinite(dl))
+        return;
+    for (int k = 0; k < 3; k++)
+        cam->location[k] -= cam->direction[k] / dl * 2 * reach;
+    if (cam->has_clip)
+        cam->clip[0][3] += reach;
+}

@@ -81,6 +81,7 @@ void interp_end_frame(interp *ip)
     if (!s)
         return;
     interp_fix_camera(ip);
+    interp_proj_end_frame(ip);
     interp_pixels_end_frame(ip);
     interp_scissor_end_frame(ip);
     if (!ip->cleared)

@@ -1,15 +1,44 @@
 /* proj_coplanar.c: draw order in one plane (issue 14). Translucent
- * triangles overlapping in one plane (the later one blends over the
- * earlier), then a wireframe grid and an outline in glOrtho with zNear = 0
- * and the depth test off (drawn in order, on the near plane).
+ * triangles overlapping in one plane, one draw each (the later one blends
+ * over the earlier: POV-Ray must tell the draw-order offsets apart), then
+ * a wireframe grid and an outline in glOrtho with zNear = 0 and the depth
+ * test off (drawn in order, on the near plane, where the camera is).
+ * Frame 1: translucent rectangles in one plane in perspective.
  */
 #include "real.h"
 
 #include <raygl/gl.h>
 
+/* Frame 1: the same in perspective, 6 units from the eye. */
+static void draw_perspective(int w, int h)
+{
+    glViewport(0, 0, w, h);
+    glClearColor(0.9f, 0.9f, 0.85f, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    gluPerspective(50, (double)w / h, 1, 100);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glTranslatef(0.0013f, 0.0017f, -6);
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    static const float col[3][4] = {{1, 0, 0, 0.6f}, {0, 0, 1, 0.5f}, {0, 0.8f, 0, 0.4f}};
+    for (int t = 0; t < 3; t++) {
+        glColor4fv(col[t]);
+        glRectf(-2.0f + 0.9f * (float)t, -1.5f + 0.5f * (float)t, 0.2f + 0.9f * (float)t,
+                0.7f + 0.5f * (float)t);
+    }
+    glDisable(GL_BLEND);
+}
+
 static void draw(int frame, int w, int h)
 {
-    (void)frame;
+    if (frame == 1) {
+        draw_perspective(w, h);
+        return;
+    }
     glViewport(0, 0, w, h);
     glClearColor(0.9f, 0.9f, 0.85f, 1);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -22,20 +51,18 @@ static void draw(int frame, int w, int h)
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glBegin(GL_TRIANGLES);
-    glColor4f(1, 0, 0, 0.6f);
-    glVertex2f(20, 20);
-    glVertex2f(200, 30);
-    glVertex2f(90, 200);
-    glColor4f(0, 0, 1, 0.5f);
-    glVertex2f(120, 40);
-    glVertex2f(300, 60);
-    glVertex2f(180, 220);
-    glColor4f(0, 0.8f, 0, 0.4f);
-    glVertex2f(60, 100);
-    glVertex2f(260, 120);
-    glVertex2f(150, 230);
-    glEnd();
+    /* One draw each: GL blends each over the ones before. */
+    static const float tri[3][3][2] = {{{20, 20}, {200, 30}, {90, 200}},
+                                       {{120, 40}, {300, 60}, {180, 220}},
+                                       {{60, 100}, {260, 120}, {150, 230}}};
+    static const float col[3][4] = {{1, 0, 0, 0.6f}, {0, 0, 1, 0.5f}, {0, 0.8f, 0, 0.4f}};
+    for (int t = 0; t < 3; t++) {
+        glColor4fv(col[t]);
+        glBegin(GL_TRIANGLES);
+        for (int k = 0; k < 3; k++)
+            glVertex2fv(tri[t][k]);
+        glEnd();
+    }
     glDisable(GL_BLEND);
     glColor3f(0.1f, 0.1f, 0.1f);
     glBegin(GL_LINES);
@@ -53,4 +80,4 @@ static void draw(int frame, int w, int h)
     glEnd();
 }
 
-RGL_REAL_MAIN(draw, 1)
+RGL_REAL_MAIN(draw, 2)

@@ -742,7 +742,8 @@ static void test_painter(void)
     if (sc.nmeshes == 3) {
         double z0 = sc.meshes[0].to_eye.m[14], z1 = sc.meshes[1].to_eye.m[14],
                z2 = sc.meshes[2].to_eye.m[14];
-        CHECK(z0 > -5 && z1 > z0 && z1 - z0 < 1e-4); /* nearer, by a hair */
+        /* nearer, by more than POV-Ray's ~2e-4 tolerance, still close */
+        CHECK(z0 > -5 && z1 - z0 > 2e-4 && z1 - z0 < 1e-3);
         CHECK(z2 == -5);                               /* depth-tested: as is */
         /* Scaled about the eye: x/z (the image position) is unchanged. */
         double x0 = sc.meshes[0].to_eye.m[0] * 0.5 + sc.meshes[0].to_eye.m[12];
