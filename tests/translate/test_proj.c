@@ -1,7 +1,9 @@
 /* test_proj.c: issue 14's projections, depth and draw order, and notes.
  *
  * Notes kept whole (never cut mid-word, a message too long to keep left
- * out whole and counted); single-buffered frames show the front buffer.
+ * out whole and counted); single-buffered frames show the front buffer;
+ * the camera of a frame of several projections and the layers of the
+ * others.
  */
 #include <GL/gl.h>
 #include <string.h>
@@ -179,6 +181,134 @@ static void test_front_buffer_capped(void)
     seq_free(&f);
 }
 
+static const scene *build_one(seq *f, translator **trp, rgl_reader **rp, trace *t)
+{
+    trace_init(t);
+    trace_frame(t, 0, 0, 0, 0, f);
+    trace_finish(t);
+    CHECK(rgl_reader_open_memory(t->data, t->size, rp, NULL) == RGL_OK);
+    *trp = translator_create(*rp, NULL);
+    frame_result res;
+    diag_clear(&dlog);
+    if (!*trp || translator_build(*trp, 0, &dlog, &res) != RGL_OK)
+        return NULL;
+    return translator_scene(*trp);
+}
+
+/* Eye-space z of a mesh's point (x, y, 0) in object space; for a mesh
+ * whose vertices are in eye space, of its first vertex. */
+static double mesh_z(const scene *s, size_t m, double x, double y)
+{
+    const scene_mesh *sm = &s->meshes[m];
+    if (sm->in_eye)
+        return s->verts[s->tris[sm->first_tri].v[0]].pos[2];
+    const mat4 *e = &sm->to_eye;
+    return (e->m[2] * x + e->m[6] * y + e->m[14]) / (e->m[3] * x + e->m[7] * y + e->m[15]);
+}
+
+static void ortho_unit(seq *s)
+{
+    CMD(s, MatrixMode, GL_PROJECTION);
+    CMD0(s, LoadIdentity);
+    CMD(s, Ortho, 0, 1, 0, 1, -1, 1);
+    CMD(s, MatrixMode, GL_MODELVIEW);
+    CMD0(s, LoadIdentity);
+}
+
+/* A background in glOrtho (depth test off), the scene in perspective, a
+ * HUD in glOrtho last: the camera is the perspective one, the background
+ * sits just before the far plane, the HUD just behind the near plane. */
+static void test_projection_layers(void)
+{
+    seq f;
+    seq_init(&f);
+    CMD(&f, Viewport, 0, 0, 200, 100);
+    CMD(&f, Clear, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    ortho_unit(&f);
+    CMD(&f, Rectf, 0, 0, 1, 1);
+    CMD(&f, MatrixMode, GL_PROJECTION);
+    CMD0(&f, LoadIdentity);
+    CMD(&f, Frustum, -1, 1, -0.5, 0.5, 1, 11);
+    CMD(&f, MatrixMode, GL_MODELVIEW);
+    CMD0(&f, LoadIdentity);
+    CMD(&f, Enable, GL_DEPTH_TEST);
+    CMD(&f, Translatef, 0, 0, -5);
+    tri(&f, 0);
+    CMD(&f, Disable, GL_DEPTH_TEST);
+    ortho_unit(&f);
+    CMD(&f, Rectf, 0.4, 0.4, 0.6, 0.6);
+    translator *tr;
+    rgl_reader *r;
+    trace t;
+    const scene *s = build_one(&f, &tr, &r, &t);
+    CHECK(s != NULL);
+    if (s) {
+        CHECK(s->camera.kind == SCENE_CAMERA_PERSPECTIVE);
+        CHECK_EQ_U(s->nmeshes, 3);
+    }
+    if (s && s->nmeshes == 3) {
+        /* near 1, far 11: layers at 0.1% and 99.9% of the way */
+        CHECK_NEAR(mesh_z(s, 0, 0.5, 0.5), -(1 + 0.999 * 10), 0.02);
+        CHECK_NEAR(mesh_z(s, 1, 0.1, 0.1), -5, 1e-9);
+        CHECK_NEAR(mesh_z(s, 2, 0.5, 0.5), -(1 + 0.001 * 10), 0.002);
+    }
+    /* Only the lit/3D draw's projection is noted nowhere: unlit layers are exact. */
+    CHECK_EQ_U(dlog.e[DIAG_NOTE_PROJECTION].count, 0);
+    translator_destroy(tr);
+    rgl_reader_destroy(r);
+    trace_free(&t);
+    seq_free(&f);
+
+    /* Only 2D draws in two projections: the first draw's camera stays. */
+    seq g;
+    seq_init(&g);
+    CMD(&g, Viewport, 0, 0, 200, 100);
+    ortho_unit(&g);
+    CMD(&g, Rectf, 0, 0, 1, 1);
+    CMD(&g, MatrixMode, GL_PROJECTION);
+    CMD0(&g, LoadIdentity);
+    CMD(&g, Frustum, -1, 1, -0.5, 0.5, 1, 11);
+    CMD(&g, MatrixMode, GL_MODELVIEW);
+    CMD0(&g, LoadIdentity);
+    CMD(&g, Translatef, 0, 0, -5);
+    tri(&g, 0);
+    s = build_one(&g, &tr, &r, &t);
+    CHECK(s && s->camera.kind == SCENE_CAMERA_ORTHOGRAPHIC);
+    translator_destroy(tr);
+    rgl_reader_destroy(r);
+    trace_free(&t);
+    seq_free(&g);
+}
+
+/* glOrtho with zNear = 0: the camera steps back past the draws moved
+ * toward it, and the near plane lets them through. */
+static void test_ortho_near_zero(void)
+{
+    seq f;
+    seq_init(&f);
+    CMD(&f, Viewport, 0, 0, 200, 100);
+    CMD(&f, MatrixMode, GL_PROJECTION);
+    CMD(&f, Ortho, 0, 2, 0, 1, 0, 1);
+    CMD(&f, MatrixMode, GL_MODELVIEW);
+    for (int k = 0; k < 3; k++)
+        CMD(&f, Rectf, 0.1 * k, 0.1, 0.5, 0.5);
+    translator *tr;
+    rgl_reader *r;
+    trace t;
+    const scene *s = build_one(&f, &tr, &r, &t);
+    CHECK(s && s->camera.kind == SCENE_CAMERA_ORTHOGRAPHIC && s->nmeshes == 3);
+    if (s && s->nmeshes == 3) {
+        double z0 = mesh_z(s, 0, 0.3, 0.3), z2 = mesh_z(s, 2, 0.3, 0.3);
+        CHECK(z2 - z0 > 4e-4);                     /* apart more than POV-Ray's tolerance */
+        CHECK(s->camera.location[2] > z2);         /* the camera behind them all */
+        CHECK(s->camera.clip[0][3] + s->camera.clip[0][2] * z2 >= 0); /* inside the near plane */
+    }
+    translator_destroy(tr);
+    rgl_reader_destroy(r);
+    trace_free(&t);
+    seq_free(&f);
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -186,6 +316,8 @@ int main(void)
     test_long_message_dropped();
     test_front_buffer();
     test_front_buffer_capped();
+    test_projection_layers();
+    test_ortho_near_zero();
     scene_finish(&sc);
     return CHECK_RESULT("test_proj");
 }
