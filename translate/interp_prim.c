@@ -5,8 +5,9 @@
  * the current normal, colour and texture coordinates (GL 1.x 2.7). At
  * glEnd the primitive is assembled as GL does (2.6.1): strips alternate
  * their winding, quads split (0,1,2)(0,2,3), or (0,1,3)(1,2,3) when
- * called from a display list (as Mesa compiles quads in a list:
- * tests/programs/proj_quad_split.c), quad strips take vertices
+ * called from a display list or when a vertex of the draw lies outside the
+ * view volume (as Mesa does: tests/programs/proj_quad_split.c), quad
+ * strips take vertices
  * (2i, 2i+1, 2i+3, 2i+2), polygons are fans; incomplete primitives are
  * dropped; the provoking vertex (flat shading) is the last vertex of each
  * triangle, quad or segment and the first of a polygon (table 2.2).
@@ -525,7 +526,7 @@ typedef struct assembly {
     bool flat;
     float line_width, point_size;
     bool line_smooth, point_smooth;
-    bool list_quads; /* quads split along v1-v3, as Mesa compiles them in a list */
+    bool list_quads; /* quads split along v1-v3, as Mesa does in a list or when clipping */
     scene_mesh *mesh;
 } assembly;
 
@@ -652,6 +653,23 @@ static void add_point(assembly *as, uint32_t i, uint32_t colour_from)
     }
     pt->round = as->point_smooth;
     memcpy(pt->color, as->s->verts[colour_from].color, sizeof pt->color);
+}
+
+/* Whether a vertex of the primitive lies outside the view volume. Mesa
+ * (llvmpipe) then draws the whole draw through its clipper, which splits
+ * quads (v0,v1,v3)(v1,v2,v3) (docs/mapping.md "Quad and polygon
+ * decomposition"; tests/programs/proj_quad_split.c). */
+static bool crosses_view_volume(const interp *ip, uint32_t n)
+{
+    const mat4 *m = &ip->prim_clip;
+    const scene_vertex *v = ip->scene->verts + ip->prim_first;
+    for (uint32_t i = 0; i < n; i++) {
+        double in[4] = {v[i].pos[0], v[i].pos[1], v[i].pos[2], 1}, c[4];
+        mat4_apply(m, in, c);
+        if (!(c[3] > 0) || fabs(c[0]) > c[3] || fabs(c[1]) > c[3] || fabs(c[2]) > c[3])
+            return true;
+    }
+    return false;
 }
 
 /* Clip-space x, y, w of every vertex of the primitive, for facing. */
@@ -1009,6 +1027,8 @@ static void end_primitive(interp *ip)
         s->failed = true;
         return;
     }
+    if (mode == GL_QUADS && !as.list_quads)
+        as.list_quads = crosses_view_volume(ip, n);
     if (ip->prim_in_eye) {
         vertices_to_eye(ip, n);
         as.check_bad = true;

@@ -2,12 +2,14 @@
  *
  * Each quad has white corners v0, v2 and dark corners v1, v3, so the split
  * diagonal shows as a white or a dark ridge. Mesa splits a quad drawn
- * immediately along v0-v2, and one called from a display list along v1-v3
+ * immediately along v0-v2, and one called from a display list or clipped
+ * along v1-v3
  * (it compiles the list's quads into triangles (v0,v1,v3)(v1,v2,v3)); a
  * GL_COMPILE_AND_EXECUTE list runs as immediate calls while it is defined.
  * Covers: glBegin quads, quads from glCallList, from glDrawArrays in a
- * list, from GL_COMPILE_AND_EXECUTE, and a quad strip and a polygon in a
- * list (those split as drawn immediately).
+ * list, from GL_COMPILE_AND_EXECUTE, a quad strip and a polygon in a list
+ * (those split as drawn immediately), and a quad crossing the window's
+ * edge (Mesa's clipper splits it along v1-v3).
  */
 #include "harness.h"
 
@@ -66,9 +68,13 @@ static int draw(int w, int h)
 
     glNewList(l + 3, GL_COMPILE);
     quad(GL_QUAD_STRIP, 112, 14);
-    quad(GL_POLYGON, 216, 14);
+    quad(GL_POLYGON, 204, 14);
     glEndList();
     glCallList(l + 3);
+
+    /* Partly outside the view volume: Mesa clips it, and its clipper
+     * splits quads along v1-v3 too. */
+    quad(GL_QUADS, 296, 14);
     return 0;
 }
 
