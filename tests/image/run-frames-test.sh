@@ -54,6 +54,20 @@ fail() {
     echo "frames $name: FAIL: $*"
     exit 1
 }
+# The steps run in the test's directory: relative paths (as meson passes
+# them) become absolute; a bare name is left to PATH.
+absolute() {
+    case $1 in
+    /*) printf '%s\n' "$1" ;;
+    */*) printf '%s/%s\n' "$PWD" "$1" ;;
+    *) printf '%s\n' "$1" ;;
+    esac
+}
+prog=$(absolute "$prog")
+r2p=$(absolute "$r2p")
+povray=$(absolute "$povray")
+imgcmp=$(absolute "$imgcmp")
+outdir=$(absolute "$outdir")
 dir=$outdir/$name
 rm -rf "$dir" && mkdir -p "$dir/pov" || fail "cannot create $dir"
 echo "frames $name: $dir"
