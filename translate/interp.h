@@ -263,9 +263,9 @@ void interp_frame_note(interp *ip, diag_kind kind);
 /* The camera a frame using several projections should have: true, with
  * its projection and viewport, when it is not the one the frame's first
  * draw fixed (then translate the frame again with it preset, after
- * interp_begin_frame) (interp_proj.c). */
-bool interp_proj_choice(const interp *ip, mat4 *proj, int32_t vp[4]);
-void interp_proj_preset(interp *ip, const mat4 *proj, const int32_t vp[4]);
+ * interp_begin_frame, passing back_cleared on) (interp_proj.c). */
+bool interp_proj_choice(const interp *ip, mat4 *proj, int32_t vp[4], bool *back_cleared);
+void interp_proj_preset(interp *ip, const mat4 *proj, const int32_t vp[4], bool back_cleared);
 
 /* Forgets which notes the frame logged, so each is logged again once. */
 void interp_clear_notes(interp *ip);

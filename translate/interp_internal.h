@@ -37,6 +37,8 @@ typedef struct interp_proj_vote_t {
     int32_t vp[4];
     uint64_t score;
     bool solid; /* some draw was depth-tested or lit */
+    bool depth_drawn;
+    uint32_t first_seq, first_depth_seq; /* draw_seq of its first (depth-tested) draw */
 } interp_proj_vote_t;
 
 struct interp {
@@ -116,6 +118,12 @@ struct interp {
     mat4 cam_preset_proj;
     int32_t cam_preset_vp[4];
     bool back_open;
+    bool own_drawn; /* a draw with the camera's projection since the colour clear */
+    uint32_t draw_seq;                       /* draws since then */
+    uint32_t clear_seq[INTERP_PROJ_VOTES];   /* draw_seq at each depth clear */
+    int nclear_seq;
+    bool preset_back_cleared; /* the first translation found a background
+                                 drawn with the depth test, then cleared */
 
     /* Display lists (interp_list.c). The table is context state that
      * interp_copy_state carries; the groups are the frame's list calls
@@ -305,13 +313,15 @@ void interp_fix_camera(interp *ip);
 
 /* Several projections in one frame (interp_proj.c). begin_frame forgets
  * the votes and the preset; clear notes a glClear of the whole colour
- * buffer; vote counts a draw with the current projection; own_draw notes
- * a draw with the camera's projection; layer rewrites a remapped draw's
+ * buffer; depth_clear a glClear of the depth buffer; vote counts a draw
+ * with the current projection; own_draw notes a draw with the camera's
+ * projection; layer rewrites a remapped draw's
  * window matrix w to put a draw made without the depth test in its
  * screen-space layer. */
 void interp_proj_begin_frame(interp *ip);
 void interp_proj_clear(interp *ip);
 void interp_proj_own_draw(interp *ip);
+void interp_proj_depth_clear(interp *ip);
 void interp_proj_vote(interp *ip, GLenum mode);
 void interp_proj_layer(interp *ip, mat4 *w);
 /* At the frame's end: an orthographic camera and its near plane step back

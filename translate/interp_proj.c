@@ -16,7 +16,10 @@
  * what is drawn after. While nothing but such draws was made since the
  * frame's start or the last colour clear, it is a background (placed just
  * in front of the far plane); after other draws, an overlay (a HUD: just
- * behind the near plane). Draw order within a layer is the painter's
+ * behind the near plane). A depth-tested draw of another projection made
+ * before any draw of the camera's and followed by a depth clear is a
+ * background too (the first translation sees the clear, the second
+ * places it). Draw order within a layer is the painter's
  * (docs/mapping.md "Projections, depth and draw order").
  */
 #include "interp_internal.h"
@@ -34,16 +37,32 @@ void interp_proj_begin_frame(interp *ip)
 {
     ip->nvotes = 0;
     ip->cam_preset = false;
+    ip->preset_back_cleared = false;
     ip->back_open = true;
+    ip->own_drawn = false;
+    ip->draw_seq = 0;
+    ip->nclear_seq = 0;
 }
 
 void interp_proj_clear(interp *ip)
 {
     ip->nvotes = 0; /* the scene starts over: so does the choice */
     ip->back_open = true;
+    ip->own_drawn = false;
+    ip->nclear_seq = 0;
 }
 
-void interp_proj_own_draw(interp *ip) { ip->back_open = false; }
+void interp_proj_depth_clear(interp *ip)
+{
+    if (ip->nclear_seq < INTERP_PROJ_VOTES)
+        ip->clear_seq[ip->nclear_seq++] = ip->draw_seq;
+}
+
+void interp_proj_own_draw(interp *ip)
+{
+    ip->back_open = false;
+    ip->own_drawn = true;
+}
 
 void interp_proj_vote(interp *ip, GLenum mode)
 {
@@ -64,14 +83,22 @@ void interp_proj_vote(interp *ip, GLenum mode)
         memset(v, 0, sizeof *v);
         v->proj = *proj;
         memcpy(v->vp, vp, sizeof v->vp);
+        v->first_seq = ip->draw_seq;
     }
+    if (depth && !v->depth_drawn) {
+        v->depth_drawn = true;
+        v->first_depth_seq = ip->draw_seq;
+    }
+    if (ip->draw_seq < UINT32_MAX)
+        ip->draw_seq++;
     v->solid |= depth || lit;
     uint64_t w = 1 + (depth ? 2 : 0) + (lit ? 4 : 0);
     v->score = v->score + w < v->score ? UINT64_MAX : v->score + w;
 }
 
-bool interp_proj_choice(const interp *ip, mat4 *proj, int32_t vp[4])
+bool interp_proj_choice(const interp *ip, mat4 *proj, int32_t vp[4], bool *back_cleared)
 {
+    *back_cleared = false;
     if (ip->frame_begin || !ip->camera_fixed)
         return false;
     int best = -1;
@@ -93,14 +120,25 @@ bool interp_proj_choice(const interp *ip, mat4 *proj, int32_t vp[4])
     const interp_proj_vote_t *b = &ip->votes[best];
     if (memcmp(b->vp, ip->cam_viewport, sizeof b->vp) == 0 && mat4_equal_f32(&b->proj, &ip->cam_proj))
         return false;
+    /* A depth-tested draw of another projection, then a depth clear, both
+     * before the camera's first draw: that draw is a background. */
+    for (int i = 0; i < ip->nvotes; i++) {
+        const interp_proj_vote_t *e = &ip->votes[i];
+        if (i == best || !e->depth_drawn || e->first_depth_seq >= b->first_seq)
+            continue;
+        for (int k = 0; k < ip->nclear_seq; k++)
+            if (ip->clear_seq[k] > e->first_depth_seq && ip->clear_seq[k] <= b->first_seq)
+                *back_cleared = true;
+    }
     *proj = b->proj;
     memcpy(vp, b->vp, sizeof b->vp);
     return true;
 }
 
-void interp_proj_preset(interp *ip, const mat4 *proj, const int32_t vp[4])
+void interp_proj_preset(interp *ip, const mat4 *proj, const int32_t vp[4], bool back_cleared)
 {
     ip->cam_preset = true;
+    ip->preset_back_cleared = back_cleared;
     ip->cam_preset_proj = *proj;
     memcpy(ip->cam_preset_vp, vp, sizeof ip->cam_preset_vp);
 }
@@ -133,9 +171,13 @@ static bool layer_depth(const interp *ip, double t, double *z)
 void interp_proj_layer(interp *ip, mat4 *w)
 {
     const gl_attribs *a = &ip->st.a;
-    if (a->caps[INTERP_CAP_DEPTH_TEST] || !ip->cam_from_ndc_ok) {
-        ip->back_open = false;
-        return; /* GL tests and writes its depth: keep it */
+    if (!ip->cam_from_ndc_ok)
+        return;
+    if (a->caps[INTERP_CAP_DEPTH_TEST]) {
+        if (!(ip->preset_back_cleared && !ip->own_drawn)) {
+            ip->back_open = false;
+            return; /* GL tests and writes its depth: keep it */
+        }
     }
     double z;
     if (!layer_depth(ip, ip->back_open ? LAYER_BACK : LAYER_FRONT, &z))

@@ -161,6 +161,9 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
         interp_bad_value(ip, "glClear mask has unknown bits");
         return;
     }
+    if ((mask & GL_DEPTH_BUFFER_BIT) && !(mask & GL_COLOR_BUFFER_BIT) &&
+        ip->st.render_mode == GL_RENDER)
+        interp_proj_depth_clear(ip);
     if (!(mask & GL_COLOR_BUFFER_BIT) || !ip->scene || ip->st.render_mode != GL_RENDER)
         return;
     const gl_attribs *a = &ip->st.a;

@@ -1,7 +1,8 @@
 /* proj_background.c: a full-window background in another projection
  * (issue 14): a gradient quad drawn in glOrtho with the depth test off,
- * then a lit sphere and torus with gluPerspective. Animated: the objects
- * turn over three frames.
+ * then a lit sphere and a cone with gluPerspective. Animated: the cone
+ * turns over four frames; in the last the background is drawn with the
+ * depth test on and the depth buffer cleared after it.
  */
 #include "real.h"
 
@@ -13,8 +14,13 @@ static void draw(int frame, int w, int h)
     glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
-    /* The background: unit square in glOrtho, no depth test, no lighting. */
-    glDisable(GL_DEPTH_TEST);
+    /* The background: unit square in glOrtho, no depth test, no lighting
+     * (frame 3: drawn with the depth test, then the depth buffer cleared,
+     * as some programs do). */
+    if (frame == 3)
+        glEnable(GL_DEPTH_TEST);
+    else
+        glDisable(GL_DEPTH_TEST);
     glDisable(GL_LIGHTING);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -30,6 +36,9 @@ static void draw(int frame, int w, int h)
     glVertex2f(1, 1);
     glVertex2f(0, 1);
     glEnd();
+
+    if (frame == 3)
+        glClear(GL_DEPTH_BUFFER_BIT);
 
     /* The scene. */
     glEnable(GL_DEPTH_TEST);
@@ -63,4 +72,4 @@ static void draw(int frame, int w, int h)
     gluDeleteQuadric(q);
 }
 
-RGL_REAL_MAIN(draw, 3)
+RGL_REAL_MAIN(draw, 4)

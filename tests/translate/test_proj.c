@@ -259,6 +259,40 @@ static void test_projection_layers(void)
     trace_free(&t);
     seq_free(&f);
 
+    /* The background drawn with the depth test, then the depth buffer
+     * cleared: a background all the same. Without the clear it keeps
+     * its depth (GL's depth buffer hides the scene behind it). */
+    for (int clear = 0; clear < 2; clear++) {
+        seq b;
+        seq_init(&b);
+        CMD(&b, Viewport, 0, 0, 200, 100);
+        CMD(&b, Enable, GL_DEPTH_TEST);
+        ortho_unit(&b);
+        CMD(&b, Rectf, 0, 0, 1, 1);
+        if (clear)
+            CMD(&b, Clear, GL_DEPTH_BUFFER_BIT);
+        CMD(&b, MatrixMode, GL_PROJECTION);
+        CMD0(&b, LoadIdentity);
+        CMD(&b, Frustum, -1, 1, -0.5, 0.5, 1, 11);
+        CMD(&b, MatrixMode, GL_MODELVIEW);
+        CMD0(&b, LoadIdentity);
+        CMD(&b, Translatef, 0, 0, -5);
+        tri(&b, 0);
+        s = build_one(&b, &tr, &r, &t);
+        CHECK(s && s->camera.kind == SCENE_CAMERA_PERSPECTIVE && s->nmeshes == 2);
+        if (s && s->nmeshes == 2) {
+            double z = mesh_z(s, 0, 0.5, 0.5);
+            if (clear)
+                CHECK_NEAR(z, -(1 + 0.999 * 10), 0.02);
+            else
+                CHECK(z > -5 && z < -1.5); /* GL's window depth 0: about 1.83 */
+        }
+        translator_destroy(tr);
+        rgl_reader_destroy(r);
+        trace_free(&t);
+        seq_free(&b);
+    }
+
     /* Only 2D draws in two projections: the first draw's camera stays. */
     seq g;
     seq_init(&g);
