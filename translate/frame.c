@@ -207,8 +207,8 @@ static interp *carried_state(translator *t, uint32_t stream, size_t i, size_t *b
  * the colour buffer, the earliest of the stream's directly preceding
  * single-buffered frames back to the last one that clears it
  * (frame_front.c). A frame with a state snapshot restores GL's state, not
- * the front buffer: the chain goes on through it. *capped: the chain went on past
- * FRONT_MAX_FRAMES. */
+ * the front buffer: the chain goes on through it. *capped: the chain went
+ * on past FRONT_MAX_FRAMES. */
 static size_t front_first(translator *t, size_t i, const rgl_frame_info *fi, bool *capped)
 {
     *capped = false;

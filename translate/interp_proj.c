@@ -118,7 +118,8 @@ bool interp_proj_choice(const interp *ip, mat4 *proj, int32_t vp[4], bool *back_
     if (best < 0)
         return false;
     const interp_proj_vote_t *b = &ip->votes[best];
-    if (memcmp(b->vp, ip->cam_viewport, sizeof b->vp) == 0 && mat4_equal_f32(&b->proj, &ip->cam_proj))
+    if (memcmp(b->vp, ip->cam_viewport, sizeof b->vp) == 0 &&
+        mat4_equal_f32(&b->proj, &ip->cam_proj))
         return false;
     /* A depth-tested draw of another projection, then a depth clear, both
      * before the camera's first draw: that draw is a background. */

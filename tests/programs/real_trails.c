@@ -25,7 +25,8 @@ static void draw(int frame, int w, int h)
     glBegin(GL_TRIANGLE_FAN);
     glColor3f(1, 1, 1);
     glVertex3f(0, 1, 0);
-    const float b[5][2] = {{-0.8f, 0.8f}, {0.8f, 0.8f}, {0.8f, -0.8f}, {-0.8f, -0.8f}, {-0.8f, 0.8f}};
+    const float b[5][2] = {
+        {-0.8f, 0.8f}, {0.8f, 0.8f}, {0.8f, -0.8f}, {-0.8f, -0.8f}, {-0.8f, 0.8f}};
     for (int i = 0; i < 5; i++) {
         glColor3f(0.3f * (float)(i % 4), 0.4f + 0.15f * (float)frame, 1 - 0.2f * (float)(i % 4));
         glVertex3f(b[i][0], -0.8f, b[i][1]);
