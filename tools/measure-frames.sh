@@ -22,7 +22,8 @@ out=${2:-$build/measure}
 povray=$(command -v povray) || { echo "$0: povray: not found" >&2; exit 1; }
 mkdir -p "$out" || exit 1
 build=$(cd "$build" && pwd) && out=$(cd "$out" && pwd) || exit 1
-progs=$(ls "$build/tests/image" | sed -n 's/^framestest_\([A-Za-z0-9_]*\)$/\1/p' | sort)
+progs=$(find "$build/tests/image" -maxdepth 1 -type f -name 'framestest_*' |
+    sed -n 's|.*/framestest_\([A-Za-z0-9_]*\)$|\1|p' | sort)
 [ -n "$progs" ] || { echo "$0: $build/tests/image: no framestest_* programs (ninja first)" >&2; exit 1; }
 total=0 pass=0 silent=0 broken=0
 for p in $progs; do

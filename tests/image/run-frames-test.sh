@@ -22,7 +22,7 @@ usage() {
     echo "usage: $0 --name NAME --program PROG --raygl2pov R2P --povray POVRAY --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]... [-- IMGCMP-OPTIONS...]" >&2
     exit 2
 }
-name= prog= r2p= povray= imgcmp= outdir= size= r2p_opts=
+name='' prog='' r2p='' povray='' imgcmp='' outdir='' size='' r2p_opts=''
 while [ $# -gt 0 ]; do
     case $1 in
     --) shift; break ;;
@@ -46,8 +46,10 @@ while [ $# -gt 0 ]; do
     *) echo "$0: unknown argument $1" >&2; usage ;;
     esac
 done
-[ -n "$name" ] && [ -n "$prog" ] && [ -n "$r2p" ] && [ -n "$povray" ] && [ -n "$imgcmp" ] &&
-    [ -n "$outdir" ] || usage
+if [ -z "$name" ] || [ -z "$prog" ] || [ -z "$r2p" ] || [ -z "$povray" ] || [ -z "$imgcmp" ] ||
+    [ -z "$outdir" ]; then
+    usage
+fi
 case $name in *[!A-Za-z0-9_-]*) echo "$0: --name '$name': letters, digits, '_' and '-' only" >&2; exit 2 ;; esac
 
 fail() {
@@ -69,7 +71,9 @@ povray=$(absolute "$povray")
 imgcmp=$(absolute "$imgcmp")
 outdir=$(absolute "$outdir")
 dir=$outdir/$name
-rm -rf "$dir" && mkdir -p "$dir/pov" || fail "cannot create $dir"
+if ! rm -rf "$dir" || ! mkdir -p "$dir/pov"; then
+    fail "cannot create $dir"
+fi
 echo "frames $name: $dir"
 
 if [ -n "$size" ]; then
@@ -79,7 +83,10 @@ else
 fi
 rc=$?
 [ $rc -eq 0 ] || { sed -n '1,20p' "$dir/program.log"; fail "the program exited with $rc"; }
-nframes=$(ls "$dir" | grep -c '^gl-[0-9]*\.png$')
+nframes=0
+for png in "$dir"/gl-[0-9]*.png; do
+    [ -f "$png" ] && nframes=$((nframes + 1))
+done
 [ "$nframes" -gt 0 ] || fail "the program wrote no frame"
 
 pass=0
@@ -98,8 +105,10 @@ while [ $n -lt "$nframes" ]; do
         (cd "$dir" && "$povray" "pov/frame-$f.ini" -D -A) >"$dir/povray-$f.log" 2>&1
         rc=$?
     fi
-    [ $rc -eq 0 ] && [ -s "$dir/pov/frame-$f.png" ] ||
-        { sed -n '1,20p' "$dir/povray-$f.log"; fail "povray exited with $rc on frame $n"; }
+    if [ $rc -ne 0 ] || [ ! -s "$dir/pov/frame-$f.png" ]; then
+        sed -n '1,20p' "$dir/povray-$f.log"
+        fail "povray exited with $rc on frame $n"
+    fi
     "$imgcmp" "$@" --diff "$dir/diff-$f.png" "$dir/gl-$f.png" "$dir/pov/frame-$f.png" \
         >"$dir/imgcmp-$f.log" 2>&1
     rc=$?
