@@ -327,6 +327,11 @@ void interp_proj_layer(interp *ip, mat4 *w);
 /* At the frame's end: an orthographic camera and its near plane step back
  * by the painter's reach (interp_proj.c). */
 void interp_proj_end_frame(interp *ip);
+/* Gives each triangle or quad after the first of a draw made without the
+ * depth test (GL_TRIANGLES, GL_QUADS: n pool vertices from prim_first, in
+ * object space) a painter's step of its own, so that the later of two
+ * overlapping in one plane shows (interp_proj.c). */
+void interp_proj_painter_prims(interp *ip, GLenum mode, uint32_t n);
 
 /* The viewport-scaled projection of the current state: clip -> window-ish. */
 mat4 interp_window_matrix(const mat4 *proj, const int32_t vp[4]);

@@ -1029,6 +1029,7 @@ static void end_primitive(interp *ip)
     }
     if (mode == GL_QUADS && !as.list_quads)
         as.list_quads = crosses_view_volume(ip, n);
+    interp_proj_painter_prims(ip, mode, n);
     if (ip->prim_in_eye) {
         vertices_to_eye(ip, n);
         as.check_bad = true;

@@ -16,7 +16,9 @@
  * what is drawn after. While nothing but such draws was made since the
  * frame's start or the last colour clear, it is a background (placed just
  * in front of the far plane); after other draws, an overlay (a HUD: just
- * behind the near plane). A depth-tested draw of another projection made
+ * behind the near plane). Overlapping triangles and quads of one draw made
+ * without the depth test each get a step of their own, in order. A
+ * depth-tested draw of another projection made
  * before any draw of the camera's and followed by a depth clear is a
  * background too (the first translation sees the clear, the second
  * places it). Draw order within a layer is the painter's
@@ -208,4 +210,45 @@ void interp_proj_end_frame(interp *ip)
         cam->location[k] -= cam->direction[k] / dl * 2 * reach;
     if (cam->has_clip)
         cam->clip[0][3] += reach;
+}
+
+void interp_proj_painter_prims(interp *ip, GLenum mode, uint32_t n)
+{
+    const gl_attribs *a = &ip->st.a;
+    if (mode != GL_TRIANGLES && mode != GL_QUADS)
+        return; /* strips and fans share vertices; their parts rarely overlap */
+    if (a->caps[INTERP_CAP_DEPTH_TEST] && (a->depth.func == GL_LESS || a->depth.func == GL_LEQUAL))
+        return;
+    uint32_t per = mode == GL_TRIANGLES ? 3 : 4, np = n / per;
+    if (np < 2 || !ip->scene)
+        return;
+    /* Primitive j of the draw gets the painter's shift of draw k + j:
+     * object -> eye with shift k, back out of shift k, into k + j, and
+     * back to object space, where the pool's vertices are. */
+    mat4 from_eye, s0 = mat4_identity(), s0inv;
+    interp_painter_apply(ip, ip->painter, &s0);
+    if (!mat4_invert(&ip->prim_to_eye, &from_eye) || !mat4_invert(&s0, &s0inv))
+        return;
+    scene_vertex *v = ip->scene->verts + ip->prim_first;
+    for (uint32_t j = 1; j < np; j++) {
+        uint32_t k = ip->painter + j < INTERP_PAINTER_MAX ? ip->painter + j : INTERP_PAINTER_MAX;
+        mat4 m = mat4_identity();
+        interp_painter_apply(ip, k, &m);
+        m = mat4_mul(&m, &s0inv);
+        m = mat4_mul(&m, &ip->prim_to_eye);
+        m = mat4_mul(&from_eye, &m);
+        for (uint32_t i = j * per; i < (j + 1) * per; i++) {
+            double in[4] = {v[i].pos[0], v[i].pos[1], v[i].pos[2], 1}, o[4];
+            mat4_apply(&m, in, o);
+            if (!(o[3] != 0))
+                continue;
+            for (int c = 0; c < 3; c++) {
+                double p = o[c] / o[3];
+                if (isfinite(p))
+                    v[i].pos[c] = (float)p;
+            }
+        }
+    }
+    uint32_t k = ip->painter + np - 1;
+    ip->painter = k < INTERP_PAINTER_MAX && k >= ip->painter ? k : INTERP_PAINTER_MAX;
 }

@@ -3,7 +3,8 @@
  * over the earlier: POV-Ray must tell the draw-order offsets apart), then
  * a wireframe grid and an outline in glOrtho with zNear = 0 and the depth
  * test off (drawn in order, on the near plane, where the camera is).
- * Frame 1: translucent rectangles in one plane in perspective.
+ * Frame 1: translucent rectangles in one plane in perspective. Frame 2:
+ * translucent triangles and quads overlapping within one draw each.
  */
 #include "real.h"
 
@@ -33,10 +34,52 @@ static void draw_perspective(int w, int h)
     glDisable(GL_BLEND);
 }
 
+/* Frame 2: translucent triangles and quads overlapping within one draw
+ * each (a particle system's batch). */
+static void draw_batch(int w, int h)
+{
+    glViewport(0, 0, w, h);
+    glClearColor(0.2f, 0.2f, 0.25f, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    gluOrtho2D(0, 320, 0, 240);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glTranslatef(0.21f, 0.43f, 0);
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glBegin(GL_TRIANGLES);
+    for (int t = 0; t < 4; t++) {
+        glColor4f(t % 2 ? 1.0f : 0.2f, 0.3f * (float)t, t % 2 ? 0.1f : 1.0f, 0.6f);
+        float x = 20.0f + 35.0f * (float)t;
+        glVertex2f(x, 20);
+        glVertex2f(x + 110, 30);
+        glVertex2f(x + 40, 140);
+    }
+    glEnd();
+    glBegin(GL_QUADS);
+    for (int q = 0; q < 4; q++) {
+        glColor4f(0.9f, 0.9f - 0.2f * (float)q, 0.2f * (float)q, 0.5f);
+        float x = 150.0f + 30.0f * (float)q, y = 90.0f + 25.0f * (float)q;
+        glVertex2f(x, y);
+        glVertex2f(x + 80, y);
+        glVertex2f(x + 80, y + 70);
+        glVertex2f(x, y + 70);
+    }
+    glEnd();
+    glDisable(GL_BLEND);
+}
+
 static void draw(int frame, int w, int h)
 {
     if (frame == 1) {
         draw_perspective(w, h);
+        return;
+    }
+    if (frame == 2) {
+        draw_batch(w, h);
         return;
     }
     glViewport(0, 0, w, h);
@@ -80,4 +123,4 @@ static void draw(int frame, int w, int h)
     glEnd();
 }
 
-RGL_REAL_MAIN(draw, 2)
+RGL_REAL_MAIN(draw, 3)
