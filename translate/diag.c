@@ -11,6 +11,12 @@ static const char *const kind_names[DIAG_COUNT] = {
 #undef DIAG_NAME_
 };
 
+/* Every note fits whole after the longest prefix and ": ". */
+#define DIAG_FITS_(name, text) \
+    _Static_assert(sizeof(text) + DIAG_PREFIX + 2 <= DIAG_TEXT, "DIAG_TEXT too short for " #name);
+DIAG_KINDS(DIAG_FITS_)
+#undef DIAG_FITS_
+
 void diag_clear(diag_log *log) { memset(log, 0, sizeof *log); }
 
 const char *diag_kind_name(diag_kind kind)
@@ -28,14 +34,29 @@ void diag_add(diag_log *log, diag_kind kind, const char *prefix, const char *fmt
     e->count++;
     if (e->kept >= DIAG_KEEP)
         return;
-    char *t = e->text[e->kept++];
+    char *t = e->text[e->kept];
     int n = snprintf(t, DIAG_TEXT, "%s%s", prefix ? prefix : "", prefix && *prefix ? ": " : "");
-    if (n < 0 || n >= DIAG_TEXT)
+    int m = -1;
+    if (n >= 0 && n < DIAG_TEXT) {
+        va_list ap;
+        va_start(ap, fmt);
+        m = vsnprintf(t + n, DIAG_TEXT - (size_t)n, fmt, ap);
+        va_end(ap);
+    }
+    if (m < 0 || m >= DIAG_TEXT - n) {
+        e->dropped++; /* whole or not at all */
+        t[0] = '\0';
         return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(t + n, DIAG_TEXT - (size_t)n, fmt, ap);
-    va_end(ap);
+    }
+    e->kept++;
+}
+
+void diag_drop(diag_log *log, diag_kind kind)
+{
+    if (!log || (unsigned)kind >= DIAG_COUNT)
+        return;
+    log->e[kind].count++;
+    log->e[kind].dropped++;
 }
 
 void diag_merge(diag_log *dst, const diag_log *src)
@@ -44,6 +65,7 @@ void diag_merge(diag_log *dst, const diag_log *src)
         diag_entry *d = &dst->e[k];
         const diag_entry *s = &src->e[k];
         d->count += s->count;
+        d->dropped += s->dropped;
         for (uint32_t i = 0; i < s->kept && d->kept < DIAG_KEEP; i++)
             memcpy(d->text[d->kept++], s->text[i], DIAG_TEXT);
     }

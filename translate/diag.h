@@ -13,7 +13,12 @@
 #include <stdint.h>
 
 #define DIAG_KEEP 3   /* messages kept per kind and log */
-#define DIAG_TEXT 192 /* longest message kept, with its NUL */
+/* Longest message kept, with its NUL: every note whole after a prefix
+ * (diag.c checks it at compile time). A longer message, which only a
+ * hostile trace's text can make, is not kept cut: it is left out whole and
+ * counted in `dropped`. */
+#define DIAG_TEXT 512
+#define DIAG_PREFIX 192 /* "frame N, label, cmd N (glName) @0xN", with its NUL */
 
 /* Kinds. The GL_* ones are calls GL rejects (and the interpreter skips);
  * the NOTE_* ones are said once per run: state that is not translated (yet)
@@ -44,8 +49,8 @@
     X(NOTE_CLIP_PLANE, "not translated: user clip planes") \
     X(NOTE_STENCIL, "not translated: stencil test") \
     X(NOTE_COLOR_MASK, "not translated: colour mask and logic op") \
-    X(NOTE_DEPTH, "approximated: depth test off or not GL_LESS (draws in one plane show in draw order, others nearest first)") \
-    X(NOTE_PROJECTION, "approximated: geometry drawn with another projection or viewport is remapped into the frame's camera") \
+    X(NOTE_DEPTH, "approximated: depth test off or not GL_LESS (draws in one plane show in draw order, others nearest first; where parts of one strip or fan overlap in one plane, either may show)") \
+    X(NOTE_PROJECTION, "approximated: lit, fogged or depth-tested textured geometry drawn with another projection or viewport than the frame's camera is lit, fogged and textured as seen from that camera") \
     X(NOTE_CAMERA, "approximated: projection matrix is not a camera POV-Ray can express (default camera used)") \
     X(NOTE_PROJECTIVE_MODELVIEW, "approximated: projective modelview applied to the vertices") \
     X(NOTE_SPOT_SPECULAR, "approximated with --no-shadows: a spot light whose specular colour differs from its diffuse colour makes highlights as if they were equal") \
@@ -72,7 +77,8 @@
     X(NOTE_TEX_MIRROR_CLAMP, "approximated: mirror-clamp texture wraps (GL_MIRROR_CLAMP_EXT and its kin) drawn as the image mirrored once, then clamped to its edge texels") \
     X(NOTE_TEX_LOD_BIAS, "not translated: texture level-of-detail bias (GL_TEXTURE_LOD_BIAS; textures are drawn from level 0)") \
     X(NOTE_POINT_SPRITE, "not translated: point sprites (GL_POINT_SPRITE, GL_COORD_REPLACE): points drawn untextured") \
-    X(NOTE_TEX_3D, "approximated: 3D textures drawn as the slice (GL_NEAREST) or the blend of two slices (GL_LINEAR) that r picks where r is constant over a primitive; untextured where it varies")
+    X(NOTE_TEX_3D, "approximated: 3D textures drawn as the slice (GL_NEAREST) or the blend of two slices (GL_LINEAR) that r picks where r is constant over a primitive; untextured where it varies") \
+    X(NOTE_FRONT_BUFFER, "approximated: a single-buffered frame shows the drawing of at most 64 earlier frames since the last colour clear (the front buffer holds all of it)")
 
 typedef enum diag_kind {
 #define DIAG_ENUM_(name, text) DIAG_##name,
@@ -85,6 +91,7 @@ typedef enum diag_kind {
 
 typedef struct diag_entry {
     uint64_t count;
+    uint64_t dropped; /* counted, but too long to keep whole */
     uint32_t kept;
     char text[DIAG_KEEP][DIAG_TEXT];
 } diag_entry;
@@ -103,12 +110,17 @@ const char *diag_kind_name(diag_kind kind);
 bool diag_is_note(diag_kind kind);
 
 /* Counts one diagnostic of `kind`; keeps "prefix: message" when fewer than
- * DIAG_KEEP are kept. The message is formatted only then. Never formats
+ * DIAG_KEEP are kept and it fits whole in DIAG_TEXT (otherwise it is
+ * counted in `dropped`, never kept cut). The message is formatted only
+ * then. Never formats
  * floating-point numbers (their text would depend on the locale). */
 #if defined(__GNUC__)
 __attribute__((format(printf, 4, 5)))
 #endif
 void diag_add(diag_log *log, diag_kind kind, const char *prefix, const char *fmt, ...);
+
+/* Counts one diagnostic of `kind` whose message did not fit whole. */
+void diag_drop(diag_log *log, diag_kind kind);
 
 /* Adds every count and kept message of src to dst (dst first). */
 void diag_merge(diag_log *dst, const diag_log *src);

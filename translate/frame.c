@@ -9,6 +9,7 @@
  */
 #include "frame.h"
 
+#include "frame_front.h"
 #include "pngout.h"
 #include "povwrite_texture.h"
 
@@ -206,43 +207,127 @@ static interp *carried_state(translator *t, uint32_t stream, size_t i, size_t *b
     return c->ip;
 }
 
-rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result *out)
+/* The first frame whose drawing frame i shows: i itself, or for a
+ * single-buffered frame (ended by glFlush or glFinish) that does not clear
+ * the colour buffer, the earliest of the stream's directly preceding
+ * single-buffered frames back to the last one that clears it
+ * (frame_front.c). A frame with a state snapshot restores GL's state, not
+ * the front buffer: the chain goes on through it. *capped: the chain went
+ * on past FRONT_MAX_FRAMES. */
+static size_t front_first(translator *t, size_t i, const rgl_frame_info *fi, bool *capped)
+{
+    *capped = false;
+    front_scan fs = front_scan_frame(fi);
+    if (!fs.flushed || fs.clears_color)
+        return i;
+    size_t first = i;
+    uint32_t number = fi->number;
+    for (size_t k = i; k-- > 0;) {
+        if (i - k > FRONT_MAX_FRAMES) {
+            *capped = true;
+            break;
+        }
+        rgl_frame_info e;
+        rgl_error err;
+        if (get_frame(t, k, &e, &err) != RGL_OK)
+            break;
+        if (e.stream != fi->stream)
+            continue;
+        front_scan es = front_scan_frame(&e);
+        if (e.number + 1 != number || !es.flushed)
+            break; /* a lost frame, or one that showed another buffer */
+        first = k;
+        number = e.number;
+        if (es.clears_color)
+            break;
+    }
+    return first;
+}
+
+/* Replays the drawing of the stream's frames [first, i) into ip's scene,
+ * as the front buffer still shows it. Their calls' errors were said when
+ * those frames were translated; their notes hold for this frame too. */
+static void front_replay(translator *t, interp *ip, size_t first, size_t i, uint32_t stream,
+                         diag_log *log)
+{
+    diag_log *tmp = log ? tr_realloc(NULL, sizeof *tmp) : NULL;
+    if (tmp)
+        diag_clear(tmp);
+    interp_attach(ip, &t->scene, tmp);
+    for (size_t k = first; k < i; k++) {
+        rgl_frame_info e;
+        rgl_error err;
+        if (get_frame(t, k, &e, &err) != RGL_OK || e.stream != stream)
+            continue;
+        bool whole = !e.state || run_snapshot(t, ip, e.state, &err) == RGL_OK;
+        whole &= interp_run(ip, e.commands, e.commands_size, e.commands_offset, &err) == RGL_OK;
+        if (!whole) {
+            char what[64];
+            snprintf(what, sizeof what, "the drawing of frame %zu (damaged)", k);
+            interp_missing(ip, what);
+        }
+    }
+    interp_attach(ip, &t->scene, log);
+    if (tmp) {
+        interp_clear_notes(ip);
+        for (int k = DIAG_FIRST_NOTE; k < DIAG_COUNT; k++)
+            if (tmp->e[k].count)
+                interp_frame_note(ip, (diag_kind)k);
+        tr_free(tmp);
+    }
+}
+
+/* One translation of frame i into the scene; preset: the camera to use
+ * (NULL: the first draw's). False when it stopped before the frame's
+ * commands (out->status says why). */
+static bool build_pass(translator *t, size_t i, diag_log *log, frame_result *out,
+                       const mat4 *preset, const int32_t *preset_vp, bool back_cleared)
 {
     interp *ip = t->ip;
-    memset(out, 0, sizeof *out);
-    out->status = get_frame(t, i, &out->info, &out->error);
-    if (out->status != RGL_OK)
-        return out->status;
     const rgl_frame_info *fi = &out->info;
-
     interp_attach(ip, &t->scene, log);
     interp_reset(ip);
     size_t bad = 0;
     int64_t last = -1;
-    if (fi->flags & RGL_FRAME_STATE_CARRIED) {
-        interp *src = carried_state(t, fi->stream, i, &bad, &last);
+    bool capped = false;
+    size_t first = front_first(t, i, fi, &capped);
+    rgl_frame_info f0 = *fi; /* the first frame shown: its state starts the replay */
+    if (first < i && get_frame(t, first, &f0, &out->error) != RGL_OK) {
+        first = i;
+        f0 = *fi;
+    }
+    if (f0.flags & RGL_FRAME_STATE_CARRIED) {
+        interp *src = carried_state(t, fi->stream, first, &bad, &last);
         if (!src) {
             out->status = RGL_E_NOMEM;
-            return out->status;
+            return false;
         }
         interp_copy_state(ip, src);
     }
     interp_begin_frame(ip);
-    if (fi->flags & RGL_FRAME_STATE_CARRIED) {
+    if (preset)
+        interp_proj_preset(ip, preset, preset_vp, back_cleared);
+    if (first < i) {
+        interp_set_frame(ip, i, NULL);
+        front_replay(t, ip, first, i, fi->stream, log);
+        if (capped)
+            interp_frame_note(ip, DIAG_NOTE_FRONT_BUFFER);
+    }
+    if (f0.flags & RGL_FRAME_STATE_CARRIED) {
         /* The state comes from the stream's earlier frames: one cut short
          * by damage, or lost to it (a gap in the numbers), leaves this
          * frame without what that one set. */
         char what[DIAG_TEXT] = "";
         if (bad)
             snprintf(what, sizeof what, "the state carried from frame %zu (damaged)", bad - 1);
-        else if (fi->number == last + 2)
+        else if (f0.number == last + 2)
             snprintf(what, sizeof what,
                      "the state carried from stream %u's frame %lld (lost to damage)",
-                     fi->stream, (long long)(last + 1));
-        else if (fi->number != last + 1)
+                     f0.stream, (long long)(last + 1));
+        else if (f0.number != last + 1)
             snprintf(what, sizeof what,
                      "the state carried from stream %u's frames %lld-%lld (lost to damage)",
-                     fi->stream, (long long)(last + 1), (long long)fi->number - 1);
+                     f0.stream, (long long)(last + 1), (long long)f0.number - 1);
         if (what[0])
             interp_missing(ip, what);
     }
@@ -252,12 +337,36 @@ rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result
         interp_set_frame(ip, i, label);
         out->status = run_snapshot(t, ip, fi->state, &out->error);
         if (out->status != RGL_OK)
-            return out->status;
+            return false;
     }
     interp_set_frame(ip, i, NULL);
     out->status = interp_run(ip, fi->commands, fi->commands_size, fi->commands_offset,
                              &out->error);
     interp_end_frame(ip);
+    return true;
+}
+
+rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result *out)
+{
+    interp *ip = t->ip;
+    memset(out, 0, sizeof *out);
+    out->status = get_frame(t, i, &out->info, &out->error);
+    if (out->status != RGL_OK)
+        return out->status;
+    if (!build_pass(t, i, log, out, NULL, NULL, false))
+        return out->status;
+    /* A frame of several projections whose first draw was not the 3D
+     * scene's: once more with the 3D scene's camera (interp_proj.c). */
+    mat4 proj;
+    int32_t vp[4];
+    bool back_cleared;
+    if (out->status == RGL_OK && !t->scene.failed &&
+        interp_proj_choice(ip, &proj, vp, &back_cleared)) {
+        if (log)
+            diag_clear(log);
+        if (!build_pass(t, i, log, out, &proj, vp, back_cleared))
+            return out->status;
+    }
     out->unrecorded = interp_unrecorded(ip);
     const char *cut = interp_frame_cut(ip);
     if (cut)

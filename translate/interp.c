@@ -463,14 +463,22 @@ void interp_diag(interp *ip, diag_kind kind, const char *fmt, ...)
         e->count++; /* nothing more to keep: skip the formatting */
         return;
     }
-    char prefix[96], msg[DIAG_TEXT];
+    char prefix[DIAG_PREFIX], msg[DIAG_TEXT];
     va_list ap;
     make_prefix(ip, prefix, sizeof prefix);
     va_start(ap, fmt);
-    vsnprintf(msg, sizeof msg, fmt, ap);
+    int n = vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
+    if (n < 0 || (size_t)n >= sizeof msg) {
+        diag_drop(ip->log, kind); /* never a message cut short */
+        return;
+    }
     diag_add(ip->log, kind, prefix, "%s", msg);
 }
+
+void interp_clear_notes(interp *ip) { ip->notes_seen = 0; }
+
+void interp_frame_note(interp *ip, diag_kind kind) { interp_note(ip, kind); }
 
 void interp_note(interp *ip, diag_kind kind)
 {
@@ -478,7 +486,7 @@ void interp_note(interp *ip, diag_kind kind)
     if (!ip->log || (ip->notes_seen & bit))
         return;
     ip->notes_seen |= bit;
-    char prefix[96];
+    char prefix[DIAG_PREFIX];
     make_prefix(ip, prefix, sizeof prefix);
     diag_add(ip->log, kind, prefix, "%s", diag_kind_name(kind));
 }

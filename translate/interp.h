@@ -272,6 +272,19 @@ void interp_set_resources(interp *ip, interp_resource_fn fn, void *ctx);
 /* Attaches a scene (or NULL) and a log (or NULL). */
 void interp_attach(interp *ip, scene *out, diag_log *log);
 
+/* Logs note `kind` once for the frame (the frame's own notes, frame.c). */
+void interp_frame_note(interp *ip, diag_kind kind);
+
+/* The camera a frame using several projections should have: true, with
+ * its projection and viewport, when it is not the one the frame's first
+ * draw fixed (then translate the frame again with it preset, after
+ * interp_begin_frame, passing back_cleared on) (interp_proj.c). */
+bool interp_proj_choice(const interp *ip, mat4 *proj, int32_t vp[4], bool *back_cleared);
+void interp_proj_preset(interp *ip, const mat4 *proj, const int32_t vp[4], bool back_cleared);
+
+/* Forgets which notes the frame logged, so each is logged again once. */
+void interp_clear_notes(interp *ip);
+
 /* Names the frame for diagnostics: "frame 12" and, while a snapshot
  * resource is replayed, "snapshot #3". label may be NULL. */
 void interp_set_frame(interp *ip, uint64_t frame_index, const char *label);

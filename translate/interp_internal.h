@@ -31,6 +31,17 @@ typedef struct interp_textures interp_textures; /* interp_texture.c */
 struct interp_eval;                             /* interp_eval.c */
 struct interp_nurbs;                            /* interp_nurbs.c */
 
+/* One projection and viewport used in a frame, and its draws' weight. */
+#define INTERP_PROJ_VOTES 8
+typedef struct interp_proj_vote_t {
+    mat4 proj;
+    int32_t vp[4];
+    uint64_t score;
+    bool solid; /* some draw was depth-tested or lit */
+    bool depth_drawn;
+    uint32_t first_seq, first_depth_seq; /* draw_seq of its first (depth-tested) draw */
+} interp_proj_vote_t;
+
 struct interp {
     gl_state st;
     interp_quadric quadrics[INTERP_QUADRICS]; /* context state, like st */
@@ -100,6 +111,22 @@ struct interp {
     mat4 cam_from_ndc; /* inverse of (viewport-scaled) camera projection */
     bool cam_from_ndc_ok;
 
+    /* Several projections in a frame (interp_proj.c): the votes for the
+     * camera, the preset one of a second translation, and whether only
+     * background-layer draws were made since the last colour clear. */
+    interp_proj_vote_t votes[INTERP_PROJ_VOTES];
+    int nvotes;
+    bool cam_preset;
+    mat4 cam_preset_proj;
+    int32_t cam_preset_vp[4];
+    bool back_open;
+    bool own_drawn; /* a draw with the camera's projection since the colour clear */
+    uint32_t draw_seq;                       /* draws since then */
+    uint32_t clear_seq[INTERP_PROJ_VOTES];   /* draw_seq at each depth clear */
+    int nclear_seq;
+    bool preset_back_cleared; /* the first translation found a background
+                                 drawn with the depth test, then cleared */
+
     /* Display lists (interp_list.c). The table is context state that
      * interp_copy_state carries; the groups are the frame's list calls
      * whose output may be shared. */
@@ -107,6 +134,7 @@ struct interp {
     interp_resource_fn res_fn;
     void *res_ctx;
     int list_depth;
+    bool list_ce;        /* running a GL_COMPILE_AND_EXECUTE body as it is defined */
     uint32_t list_calls; /* this frame's, against a hostile trace's recursion */
     struct interp_groups *groups;
 
@@ -346,6 +374,28 @@ int interp_cap_index(GLenum cap);
 /* Fixes the frame's camera if no draw has yet (interp_raster.c). */
 void interp_fix_camera(interp *ip);
 
+/* Several projections in one frame (interp_proj.c). begin_frame forgets
+ * the votes and the preset; clear notes a glClear of the whole colour
+ * buffer; depth_clear a glClear of the depth buffer; vote counts a draw
+ * with the current projection; own_draw notes a draw with the camera's
+ * projection; layer rewrites a remapped draw's
+ * window matrix w to put a draw made without the depth test in its
+ * screen-space layer. */
+void interp_proj_begin_frame(interp *ip);
+void interp_proj_clear(interp *ip);
+void interp_proj_own_draw(interp *ip);
+void interp_proj_depth_clear(interp *ip);
+void interp_proj_vote(interp *ip, GLenum mode);
+void interp_proj_layer(interp *ip, mat4 *w);
+/* At the frame's end: an orthographic camera and its near plane step back
+ * by the painter's reach (interp_proj.c). */
+void interp_proj_end_frame(interp *ip);
+/* Gives each triangle or quad after the first of a draw made without the
+ * depth test (GL_TRIANGLES, GL_QUADS: n pool vertices from prim_first, in
+ * object space) a painter's step of its own, so that the later of two
+ * overlapping in one plane shows (interp_proj.c). */
+void interp_proj_painter_prims(interp *ip, GLenum mode, uint32_t n);
+
 /* The viewport-scaled projection of the current state: clip -> window-ish. */
 mat4 interp_window_matrix(const mat4 *proj, const int32_t vp[4]);
 
@@ -442,6 +492,10 @@ bool interp_object_to_eye(const interp *ip, const mat4 *mv, const mat4 *proj,
 /* Moves to_eye toward the camera by the painter's shift of draw number
  * `painter` made without a depth test (interp_prim.c, painter_shift). */
 void interp_painter_apply(const interp *ip, uint32_t painter, mat4 *to_eye);
+/* How far the painter's shift has moved draws toward an orthographic
+ * camera so far, plus one step (0 for a perspective camera): the near
+ * plane lets that much through (interp_prim.c). */
+double interp_painter_reach(const interp *ip);
 #define INTERP_PAINTER_MAX 100000 /* painter counts no further */
 
 /* Whether draws reach the picture: the render mode is GL_RENDER (else

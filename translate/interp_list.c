@@ -534,8 +534,13 @@ void interp_newlist(interp *ip, const rgl_cmd *cmd)
             ip->scene->failed = true;
         return;
     }
-    if (mode == GL_COMPILE_AND_EXECUTE)
+    if (mode == GL_COMPILE_AND_EXECUTE) {
+        /* GL runs this body as immediate calls, not as a compiled list
+         * (which matters to how quads split: interp_prim.c). */
+        ip->list_ce = true;
         call_list(ip, name);
+        ip->list_ce = false;
+    }
 }
 
 void interp_deletelists(interp *ip, const rgl_cmd *cmd)

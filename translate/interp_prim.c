@@ -4,7 +4,10 @@
  * Vertices go straight into the scene's vertex pool as they arrive, with
  * the current normal, colour and texture coordinates (GL 1.x 2.7). At
  * glEnd the primitive is assembled as GL does (2.6.1): strips alternate
- * their winding, quads split (0,1,2)(0,2,3), quad strips take vertices
+ * their winding, quads split (0,1,2)(0,2,3), or (0,1,3)(1,2,3) when
+ * called from a display list or when a vertex of the draw lies outside the
+ * view volume (as Mesa does: tests/programs/proj_quad_split.c), quad
+ * strips take vertices
  * (2i, 2i+1, 2i+3, 2i+2), polygons are fans; incomplete primitives are
  * dropped; the provoking vertex (flat shading) is the last vertex of each
  * triangle, quad or segment and the first of a polygon (table 2.2).
@@ -135,34 +138,44 @@ static void draw_notes(interp *ip)
  * a ray tracer shows the nearer. For draws in one plane (the common case:
  * 2D drawings) the tie is broken toward draw order by moving each draw
  * made without a depth test a little closer to the camera than the one
- * before: by a factor 1 - k 1e-6 about the eye (perspective), which leaves
- * every image position unchanged, or by k 1e-6 of the near-far distance
- * along the view direction (orthographic). k counts such draws since the
- * frame's start or last clear. Surfaces truly apart stay in depth order
- * (docs/mapping.md, "What a ray tracer does differently"). */
-#define PAINTER_STEP 1e-6
+ * before. POV-Ray does not tell apart two surfaces closer than about 2e-4
+ * along a ray (measured: a translucent triangle 1e-4 in front of another
+ * hides it, 3e-4 shows both, at distances 0.01 to 10^4), so the steps are
+ * at least that at the scene's scale: PAINTER_ORTHO eye units along the
+ * view direction (orthographic: the camera and its near plane move back by
+ * the frame's whole shift, interp_proj.c), or a factor 1 - k
+ * PAINTER_PERSP about the eye (perspective: image positions unchanged;
+ * k stops at PAINTER_PERSP_MAX, half way to the eye). k counts such draws
+ * since the frame's start or last clear. Surfaces truly apart stay in
+ * depth order (docs/mapping.md, "What a ray tracer does differently" and
+ * "Projections, depth and draw order"). */
+#define PAINTER_ORTHO 1e-3
+#define PAINTER_PERSP 5e-5
+#define PAINTER_PERSP_MAX 10000
 #define PAINTER_MAX INTERP_PAINTER_MAX
+
+double interp_painter_reach(const interp *ip)
+{
+    return ip->scene && ip->scene->camera.kind == SCENE_CAMERA_ORTHOGRAPHIC
+               ? (ip->painter + 1) * PAINTER_ORTHO
+               : 0;
+}
 
 void interp_painter_apply(const interp *ip, uint32_t painter, mat4 *to_eye)
 {
     const scene_camera *cam = &ip->scene->camera;
-    double k = painter * PAINTER_STEP;
     mat4 s = mat4_identity();
     if (cam->kind == SCENE_CAMERA_ORTHOGRAPHIC) {
-        double range = 1;
-        if (cam->has_clip) /* the planes are unit-normal and face each other */
-            range = fabs(cam->clip[0][3] + cam->clip[1][3]);
-        if (!(range > 0) || !isfinite(range))
-            range = 1;
+        double k = painter * PAINTER_ORTHO;
         double dl = sqrt(cam->direction[0] * cam->direction[0] +
                          cam->direction[1] * cam->direction[1] +
                          cam->direction[2] * cam->direction[2]);
         if (!(dl > 0))
             return;
         for (int i = 0; i < 3; i++)
-            s.m[12 + i] = -cam->direction[i] / dl * k * range;
+            s.m[12 + i] = -cam->direction[i] / dl * k;
     } else {
-        double f = 1 - k;
+        double f = 1 - (painter < PAINTER_PERSP_MAX ? painter : PAINTER_PERSP_MAX) * PAINTER_PERSP;
         for (int i = 0; i < 3; i++) {
             s.m[i * 5] = f;
             s.m[12 + i] = cam->location[i] * (1 - f);
@@ -211,13 +224,22 @@ static bool setup_transform(interp *ip)
         bool same_vp = memcmp(vp, ip->cam_viewport, sizeof ip->cam_viewport) == 0;
         if (!same_vp || !mat4_equal_f32(proj, &ip->cam_proj)) {
             /* Drawn with another projection or viewport: map its window
-             * position into the camera's eye space. */
-            interp_note(ip, DIAG_NOTE_PROJECTION);
+             * position into the camera's eye space. Window x, y and depth
+             * are GL's, so colours and depth order are exact; lighting,
+             * fog and depth-tested textures are seen from the camera. */
+            const uint8_t *c = ip->st.a.caps;
+            if ((c[INTERP_CAP_LIGHTING] && ip->prim_mode > GL_LINE_STRIP) || c[INTERP_CAP_FOG] ||
+                ((c[INTERP_CAP_TEXTURE_2D] || c[INTERP_CAP_TEXTURE_1D]) &&
+                 c[INTERP_CAP_DEPTH_TEST]))
+                interp_note(ip, DIAG_NOTE_PROJECTION);
             if (!ip->cam_from_ndc_ok)
                 return false;
             mat4 w = interp_window_matrix(proj, vp);
+            interp_proj_layer(ip, &w);
             mat4 remap = mat4_mul(&ip->cam_from_ndc, &w);
             to_eye = mat4_mul(&remap, mv);
+        } else {
+            interp_proj_own_draw(ip);
         }
     }
     if (!mat4_finite(&to_eye) || !mat4_finite(&ip->prim_clip)) {
@@ -334,6 +356,7 @@ static void begin_mode(interp *ip, GLenum mode)
     if (ip->accum.active)
         return; /* a later accumulation pass: the scene holds the first */
     draw_notes(ip);
+    interp_proj_vote(ip, mode);
     interp_fix_camera(ip);
     if (interp_scissor_hides(ip) || !setup_transform(ip))
         return;
@@ -507,6 +530,7 @@ typedef struct assembly {
     float line_width, point_size;
     bool line_smooth, point_smooth;
     bool point_params; /* glPointParameter away from its defaults */
+    bool list_quads; /* quads split along v1-v3, as Mesa does in a list or when clipping */
     scene_mesh *mesh;
 } assembly;
 
@@ -628,8 +652,8 @@ static void add_point(assembly *as, uint32_t i, uint32_t colour_from)
         return;
     for (int k = 0; k < 2 && cam->has_clip; k++)
         if (cam->clip[k][0] * p[0] + cam->clip[k][1] * p[1] + cam->clip[k][2] * p[2] +
-                cam->clip[k][3] < 0)
-            return;
+                cam->clip[k][3] + (k == 0 ? interp_painter_reach(as->ip) : 0) < 0)
+            return; /* the near plane (0) lets the painter's shift through */
     image_axes(cam, r, u);
     scene_point *pt = scene_add_point(as->s);
     if (!pt)
@@ -648,6 +672,23 @@ static void add_point(assembly *as, uint32_t i, uint32_t colour_from)
     pt->round = as->point_smooth;
     memcpy(pt->color, as->s->verts[colour_from].color, sizeof pt->color);
     pt->color[3] *= (float)fade;
+}
+
+/* Whether a vertex of the primitive lies outside the view volume. Mesa
+ * (llvmpipe) then draws the whole draw through its clipper, which splits
+ * quads (v0,v1,v3)(v1,v2,v3) (docs/mapping.md "Quad and polygon
+ * decomposition"; tests/programs/proj_quad_split.c). */
+static bool crosses_view_volume(const interp *ip, uint32_t n)
+{
+    const mat4 *m = &ip->prim_clip;
+    const scene_vertex *v = ip->scene->verts + ip->prim_first;
+    for (uint32_t i = 0; i < n; i++) {
+        double in[4] = {v[i].pos[0], v[i].pos[1], v[i].pos[2], 1}, c[4];
+        mat4_apply(m, in, c);
+        if (!(c[3] > 0) || fabs(c[0]) > c[3] || fabs(c[1]) > c[3] || fabs(c[2]) > c[3])
+            return true;
+    }
+    return false;
 }
 
 /* Clip-space x, y, w of every vertex of the primitive, for facing. */
@@ -763,7 +804,10 @@ static void assemble_polygons(assembly *as, GLenum mode, uint32_t n)
         break;
     case GL_QUADS:
         for (uint32_t i = 0; i + 4 <= n; i += 4) {
-            t[0] = i, t[1] = i + 1, t[2] = i + 2, t[3] = i + 3;
+            /* The fan starts at v1 for the v1-v3 diagonal: same edges. */
+            uint32_t f = as->list_quads ? 1 : 0;
+            for (uint32_t k = 0; k < 4; k++)
+                t[k] = i + (k + f) % 4;
             emit_polygon(as, t, 4, i + 3, true);
         }
         break;
@@ -813,8 +857,13 @@ static void assemble_filled(assembly *as, GLenum mode, uint32_t n)
         break;
     case GL_QUADS:
         for (uint32_t i = 0; i + 4 <= n; i += 4) {
-            fill_tri(as, i, i + 1, i + 2, i + 3);
-            fill_tri(as, i, i + 2, i + 3, i + 3);
+            if (as->list_quads) {
+                fill_tri(as, i, i + 1, i + 3, i + 3);
+                fill_tri(as, i + 1, i + 2, i + 3, i + 3);
+            } else {
+                fill_tri(as, i, i + 1, i + 2, i + 3);
+                fill_tri(as, i, i + 2, i + 3, i + 3);
+            }
         }
         break;
     case GL_QUAD_STRIP:
@@ -977,6 +1026,7 @@ static void end_primitive(interp *ip)
     as.line_width = raster_width(a->line.width, as.line_smooth);
     as.point_size = raster_width(a->point.size, as.point_smooth);
     as.point_params = interp_point_params_set(a);
+    as.list_quads = ip->list_depth > (ip->list_ce ? 1 : 0);
     for (uint32_t i = 0; i < n && !as.check_bad; i++)
         if (!vertex_ok(&s->verts[as.base + i]))
             as.check_bad = true;
@@ -999,6 +1049,9 @@ static void end_primitive(interp *ip)
         s->failed = true;
         return;
     }
+    if (mode == GL_QUADS && !as.list_quads)
+        as.list_quads = crosses_view_volume(ip, n);
+    interp_proj_painter_prims(ip, mode, n);
     if (ip->prim_in_eye) {
         vertices_to_eye(ip, n);
         as.check_bad = true;

@@ -3,7 +3,8 @@
  * rayglFrameBegin/End), and the frame's camera.
  *
  * The camera is fixed by the frame's first draw: the projection and
- * viewport current then (or rayglFrameBegin's look-at camera). Draws made
+ * viewport current then (or rayglFrameBegin's look-at camera, or the 3D
+ * scene's projection preset by interp_proj.c). Draws made
  * later with another projection or viewport are remapped into it (see
  * setup_transform in interp_prim.c). A glClear of the colour buffer erases
  * what was drawn before it, as in GL, and sets the background.
@@ -22,8 +23,11 @@ void interp_fix_camera(interp *ip)
     ip->camera_fixed = true;
     s->have_camera = true;
     const gl_attribs *a = &ip->st.a;
-    const mat4 *proj = interp_matrix(ip, INTERP_PROJ);
-    memcpy(ip->cam_viewport, a->viewport.rect, sizeof ip->cam_viewport);
+    /* A second translation of a frame of several projections: the 3D
+     * scene's camera, chosen by the first (interp_proj.c). */
+    const mat4 *proj = ip->cam_preset ? &ip->cam_preset_proj : interp_matrix(ip, INTERP_PROJ);
+    memcpy(ip->cam_viewport, ip->cam_preset ? ip->cam_preset_vp : a->viewport.rect,
+           sizeof ip->cam_viewport);
     ip->cam_proj = *proj;
 
     if (ip->frame_begin) {
@@ -56,6 +60,7 @@ void interp_begin_frame(interp *ip)
     ip->shape_facets = 0;
     ip->pixels_mark = 0;
     ip->nclear_rects = 0;
+    interp_proj_begin_frame(ip);
     unrec_clear(&ip->unrecorded);
     interp_accum_begin_frame(ip);
     interp_bounds_begin_frame(ip);
@@ -76,6 +81,7 @@ void interp_end_frame(interp *ip)
     if (!s)
         return;
     interp_fix_camera(ip);
+    interp_proj_end_frame(ip);
     interp_pixels_end_frame(ip);
     interp_scissor_end_frame(ip);
     if (!ip->cleared)
@@ -155,6 +161,9 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
         interp_bad_value(ip, "glClear mask has unknown bits");
         return;
     }
+    if ((mask & GL_DEPTH_BUFFER_BIT) && !(mask & GL_COLOR_BUFFER_BIT) &&
+        ip->st.render_mode == GL_RENDER)
+        interp_proj_depth_clear(ip);
     if (!(mask & GL_COLOR_BUFFER_BIT) || !ip->scene || ip->st.render_mode != GL_RENDER)
         return;
     const gl_attribs *a = &ip->st.a;
@@ -162,6 +171,7 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
         return; /* a partial clear: what is drawn stays */
     if (interp_accum_clear(ip))
         return;
+    interp_proj_clear(ip);
     /* Everything drawn so far is gone; the next draw fixes the camera anew. */
     scene_clear_geometry(ip->scene);
     ip->nclear_rects = 0;

@@ -458,6 +458,7 @@ static void print_diags(const options *o, totals *tot, const diag_log *log)
     for (int k = 0; k < DIAG_COUNT; k++) {
         const diag_entry *e = &log->e[k];
         tot->log.e[k].count += e->count;
+        tot->log.e[k].dropped += e->dropped;
         for (uint32_t m = 0; m < e->kept; m++) {
             bool note = diag_is_note((diag_kind)k);
             if ((note && tot->printed[k] >= 1) || (!note && tot->printed[k] >= DIAG_KEEP))
@@ -622,6 +623,11 @@ static void print_summary(const options *o, const totals *tot)
             say(o, "%" PRIu64 " calls skipped in all (%s), %" PRIu64 " shown", n,
                 diag_kind_name((diag_kind)k), tot->printed[k]);
     }
+    for (int k = 0; k < DIAG_COUNT; k++)
+        if (tot->log.e[k].dropped)
+            say(o, "%" PRIu64 " message%s (%s) left out whole: longer than %d characters",
+                tot->log.e[k].dropped, tot->log.e[k].dropped > 1 ? "s" : "",
+                diag_kind_name((diag_kind)k), DIAG_TEXT - 1);
 }
 
 /* ---- --dump ---------------------------------------------------------------------------- */

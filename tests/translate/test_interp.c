@@ -309,7 +309,9 @@ static void test_assembly(void)
     expect_tris(ip, GL_TRIANGLE_STRIP, 5, strip, 3);
     static const tri3 fan[] = {{0, 1, 2, 2}, {0, 2, 3, 3}, {0, 3, 4, 4}};
     expect_tris(ip, GL_TRIANGLE_FAN, 5, fan, 3);
-    static const tri3 quads[] = {{0, 1, 2, 3}, {0, 2, 3, 3}, {4, 5, 6, 7}, {4, 6, 7, 7}};
+    /* Some of these vertices lie outside the view volume: Mesa's clipper
+     * then splits quads along v1-v3 (docs/mapping.md). */
+    static const tri3 quads[] = {{0, 1, 3, 3}, {1, 2, 3, 3}, {4, 5, 7, 7}, {5, 6, 7, 7}};
     expect_tris(ip, GL_QUADS, 9, quads, 4);
     static const tri3 qstrip[] = {{0, 1, 3, 3}, {0, 3, 2, 3}, {2, 3, 5, 5}, {2, 5, 4, 5}};
     expect_tris(ip, GL_QUAD_STRIP, 7, qstrip, 4);
@@ -744,7 +746,8 @@ static void test_painter(void)
     if (sc.nmeshes == 3) {
         double z0 = sc.meshes[0].to_eye.m[14], z1 = sc.meshes[1].to_eye.m[14],
                z2 = sc.meshes[2].to_eye.m[14];
-        CHECK(z0 > -5 && z1 > z0 && z1 - z0 < 1e-4); /* nearer, by a hair */
+        /* nearer, by more than POV-Ray's ~2e-4 tolerance, still close */
+        CHECK(z0 > -5 && z1 - z0 > 2e-4 && z1 - z0 < 1e-3);
         CHECK(z2 == -5);                               /* depth-tested: as is */
         /* Scaled about the eye: x/z (the image position) is unchanged. */
         double x0 = sc.meshes[0].to_eye.m[0] * 0.5 + sc.meshes[0].to_eye.m[12];

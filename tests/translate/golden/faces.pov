@@ -3,7 +3,7 @@
 #version 3.7;
 global_settings{assumed_gamma 2.2}
 camera{orthographic
- location <100,50,1>
+ location <100,50,1.01>
  right <200,0,0>
  up <0,100,0>
  direction <0,0,-1>
@@ -11,7 +11,7 @@ camera{orthographic
 background{rgb<0,0,0.2>}
 #default{finish{ambient 0 diffuse 0 emission 1}}
 union{
-sphere{<10,10,2e-6>,0}
+sphere{<10,10,0.001>,0}
 mesh2{
 vertex_vectors{3,
 <10,10,0>,
@@ -20,7 +20,7 @@ vertex_vectors{3,
 face_indices{1,
 <0,2,1>}
 texture{pigment{rgb<0,1,0>}}
-matrix<1,0,0,0,1,0,0,0,1,0,0,2e-6>
+matrix<1,0,0,0,1,0,0,0,1,0,0,0.001>
 }
 mesh2{
 vertex_vectors{4,
@@ -32,22 +32,22 @@ face_indices{2,
 <0,2,1>,
 <0,3,2>}
 texture{pigment{rgb<0.5,0.25,1>}}
-matrix<1,0,0,0,1,0,0,0,1,0,0,6e-6>
+matrix<1,0,0,0,1,0,0,0,1,0,0,0.004>
 }
 mesh2{
 vertex_vectors{12,
-<110,9.5,4e-6>,
-<110,10.5,4e-6>,
-<150,10.5,4e-6>,
-<150,9.5,4e-6>,
-<150,49.5,4e-6>,
-<150,50.5,4e-6>,
-<110,50.5,4e-6>,
-<110,49.5,4e-6>,
-<109.5,50,4e-6>,
-<110.5,50,4e-6>,
-<110.5,10,4e-6>,
-<109.5,10,4e-6>}
+<110,9.5,0.003>,
+<110,10.5,0.003>,
+<150,10.5,0.003>,
+<150,9.5,0.003>,
+<150,49.5,0.003>,
+<150,50.5,0.003>,
+<110,50.5,0.003>,
+<110,49.5,0.003>,
+<109.5,50,0.003>,
+<110.5,50,0.003>,
+<110.5,10,0.003>,
+<109.5,10,0.003>}
 face_indices{6,
 <0,2,1>,
 <0,3,2>,
@@ -57,5 +57,5 @@ face_indices{6,
 <8,11,10>}
 texture{pigment{rgb<1,1,1>}}
 }
-clipped_by{plane{<0,0,1>,1}plane{<0,0,-1>,1}}
+clipped_by{plane{<0,0,1>,1.005}plane{<0,0,-1>,1}}
 }

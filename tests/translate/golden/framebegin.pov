@@ -12,18 +12,18 @@ camera{perspective
 background{rgb<0,0,0>}
 #default{finish{ambient 0 diffuse 0 emission 1}}
 union{
-sphere{<-9.99996,-9.99995,10.00004>,0}
+sphere{<-9.998,-9.9975,10.002>,0}
 mesh2{
 vertex_vectors{4,
 <-10,-10,10>,
 <10,-10,10>,
-<10,10,10>,
-<-10,10,10>}
+<-10,10,10>,
+<10,10,10>}
 face_indices{2,
 <0,2,1>,
-<0,3,2>}
+<1,2,3>}
 texture{pigment{rgb<0.2,0.4,0.9>}}
-matrix<0.999999,0,0,0,0.999999,0,0,0,0.999999,0.00003,0.00004,0.00005>
+matrix<0.99995,0,0,0,0.99995,0,0,0,0.99995,0.0015,0.002,0.0025>
 }
 }
 light_source{<100,100,100> rgb<1,1,1> parallel point_at<0,0,0>}

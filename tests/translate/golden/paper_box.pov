@@ -3,7 +3,7 @@
 #version 3.7;
 global_settings{assumed_gamma 2.2}
 camera{orthographic
- location <45,45,100>
+ location <45,45,100.002>
  right <66.666664,0,0>
  up <0,50,0>
  direction <0,0,-1>
@@ -39,5 +39,5 @@ face_indices{6,
 <8,11,10>,2}
 matrix<0.853553,-0.146447,0.5,-0.146447,0.853553,0.5,-0.5,-0.5,0.707107,45,45,45>
 }
-clipped_by{plane{<0,0,1>,100}plane{<0,0,-1>,100}}
+clipped_by{plane{<0,0,1>,100.001}plane{<0,0,-1>,100}}
 }

@@ -1,0 +1,130 @@
+#!/bin/sh
+# run-frames-test.sh: every frame of a multi-frame program (real.h), GL frame
+# against POV-Ray frame.
+#
+#   run-frames-test.sh --name NAME --program PROG --raygl2pov R2P --povray POVRAY
+#                      --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]...
+#                      [-- IMGCMP-OPTIONS...]
+#
+# 1. PROG --trace DIR/NAME/NAME.raygl --png-dir DIR/NAME [--size WxH] draws
+#    the frames with OSMesa (DIR/NAME/gl-NNNNN.png);
+# 2. for each frame N: R2P NAME.raygl -o pov --frames N [OPT...], so that
+#    the notes said are that frame's (raygl2pov says each note once a run);
+# 3. POVRAY pov/frame-NNNNN.ini -D -A;
+# 4. IMGCMP [IMGCMP-OPTIONS] gl-NNNNN.png pov/frame-NNNNN.png.
+#
+# Prints one line per frame:
+#   frame N: PASS|FAIL within W silhouette S note yes|no
+# then "frames NAME: P of T pass". Exit 0 when every frame passes, 1
+# otherwise or when a step fails, 2 on bad usage.
+set -u
+usage() {
+    echo "usage: $0 --name NAME --program PROG --raygl2pov R2P --povray POVRAY --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]... [-- IMGCMP-OPTIONS...]" >&2
+    exit 2
+}
+name='' prog='' r2p='' povray='' imgcmp='' outdir='' size='' r2p_opts=''
+while [ $# -gt 0 ]; do
+    case $1 in
+    --) shift; break ;;
+    --name|--program|--raygl2pov|--povray|--imgcmp|--outdir|--size|--r2p-opt)
+        [ $# -ge 2 ] || usage
+        case $1 in
+        --name) name=$2 ;;
+        --program) prog=$2 ;;
+        --raygl2pov) r2p=$2 ;;
+        --povray) povray=$2 ;;
+        --imgcmp) imgcmp=$2 ;;
+        --outdir) outdir=$2 ;;
+        --size) size=$2 ;;
+        --r2p-opt)
+            case $2 in
+            *[!A-Za-z0-9.=-]*) echo "$0: --r2p-opt '$2': letters, digits, '.', '=' and '-' only" >&2; exit 2 ;;
+            esac
+            r2p_opts="$r2p_opts $2" ;;
+        esac
+        shift 2 ;;
+    *) echo "$0: unknown argument $1" >&2; usage ;;
+    esac
+done
+if [ -z "$name" ] || [ -z "$prog" ] || [ -z "$r2p" ] || [ -z "$povray" ] || [ -z "$imgcmp" ] ||
+    [ -z "$outdir" ]; then
+    usage
+fi
+case $name in *[!A-Za-z0-9_-]*) echo "$0: --name '$name': letters, digits, '_' and '-' only" >&2; exit 2 ;; esac
+
+fail() {
+    echo "frames $name: FAIL: $*"
+    exit 1
+}
+# The steps run in the test's directory: relative paths (as meson passes
+# them) become absolute; a bare name is left to PATH.
+absolute() {
+    case $1 in
+    /*) printf '%s\n' "$1" ;;
+    */*) printf '%s/%s\n' "$PWD" "$1" ;;
+    *) printf '%s\n' "$1" ;;
+    esac
+}
+prog=$(absolute "$prog")
+r2p=$(absolute "$r2p")
+povray=$(absolute "$povray")
+imgcmp=$(absolute "$imgcmp")
+outdir=$(absolute "$outdir")
+dir=$outdir/$name
+if ! rm -rf "$dir" || ! mkdir -p "$dir/pov"; then
+    fail "cannot create $dir"
+fi
+echo "frames $name: $dir"
+
+if [ -n "$size" ]; then
+    "$prog" --trace "$dir/$name.raygl" --png-dir "$dir" --size "$size" >"$dir/program.log" 2>&1
+else
+    "$prog" --trace "$dir/$name.raygl" --png-dir "$dir" >"$dir/program.log" 2>&1
+fi
+rc=$?
+[ $rc -eq 0 ] || { sed -n '1,20p' "$dir/program.log"; fail "the program exited with $rc"; }
+nframes=0
+for png in "$dir"/gl-[0-9]*.png; do
+    [ -f "$png" ] && nframes=$((nframes + 1))
+done
+[ "$nframes" -gt 0 ] || fail "the program wrote no frame"
+
+pass=0
+n=0
+while [ $n -lt "$nframes" ]; do
+    f=$(printf '%05d' $n)
+    # shellcheck disable=SC2086 # r2p_opts: words checked above, split on purpose
+    (cd "$dir" && "$r2p" "$name.raygl" -o pov --frames $n $r2p_opts) >"$dir/raygl2pov-$f.log" 2>&1
+    rc=$?
+    [ $rc -eq 0 ] || { sed -n '1,20p' "$dir/raygl2pov-$f.log"; fail "raygl2pov exited with $rc on frame $n"; }
+    note=no
+    grep -q 'approximated\|not translated\|left out' "$dir/raygl2pov-$f.log" && note=yes
+    (cd "$dir" && "$povray" "pov/frame-$f.ini" -D -A) >"$dir/povray-$f.log" 2>&1
+    rc=$?
+    if [ $rc -ne 0 ] && grep -q "Timed out waiting for worker thread startup" "$dir/povray-$f.log"; then
+        (cd "$dir" && "$povray" "pov/frame-$f.ini" -D -A) >"$dir/povray-$f.log" 2>&1
+        rc=$?
+    fi
+    if [ $rc -ne 0 ] || [ ! -s "$dir/pov/frame-$f.png" ]; then
+        sed -n '1,20p' "$dir/povray-$f.log"
+        fail "povray exited with $rc on frame $n"
+    fi
+    "$imgcmp" "$@" --diff "$dir/diff-$f.png" "$dir/gl-$f.png" "$dir/pov/frame-$f.png" \
+        >"$dir/imgcmp-$f.log" 2>&1
+    rc=$?
+    within=$(sed -n 's/^within [0-9]*\/255: \([0-9.]*\).*/\1/p' "$dir/imgcmp-$f.log")
+    sil=$(sed -n 's/^silhouette: \([0-9.]*\).*/\1/p' "$dir/imgcmp-$f.log")
+    if [ $rc -eq 0 ]; then
+        verdict=PASS
+        pass=$((pass + 1))
+    else
+        verdict=FAIL
+    fi
+    echo "frame $n: $verdict within ${within:-?} silhouette ${sil:-?} note $note"
+    if [ $verdict = FAIL ] && [ $note = yes ]; then
+        grep 'approximated\|not translated\|left out' "$dir/raygl2pov-$f.log" | sed 's/^/    /'
+    fi
+    n=$((n + 1))
+done
+echo "frames $name: $pass of $nframes pass"
+[ $pass -eq "$nframes" ]

@@ -1,0 +1,254 @@
+/* interp_proj.c: the frame's camera when a frame uses several projections,
+ * and the screen-space layers of the others.
+ *
+ * A frame may draw a full-window background in glOrtho, then the 3D scene
+ * with gluPerspective, then a HUD in window pixels. The camera is the 3D
+ * scene's projection: every draw votes for its projection and viewport,
+ * weighted by how much it is a 3D draw (depth-tested, lit); the choice
+ * prefers a perspective projection with 3D draws, then the most votes.
+ * When the first draw fixed another camera, frame.c translates the frame
+ * again with the chosen one preset.
+ *
+ * The other projections' draws are remapped into the camera through the
+ * window (interp_prim.c), keeping GL's window depth, so depth-tested ones
+ * meet the scene as in GL's depth buffer. One made with the depth test off
+ * writes no depth: it covers what was drawn before it and is covered by
+ * what is drawn after. While nothing but such draws was made since the
+ * frame's start or the last colour clear, it is a background (placed just
+ * in front of the far plane); after other draws, an overlay (a HUD: just
+ * behind the near plane). Overlapping triangles and quads of one draw made
+ * without the depth test each get a step of their own, in order. A
+ * depth-tested draw of another projection made
+ * before any draw of the camera's and followed by a depth clear is a
+ * background too (the first translation sees the clear, the second
+ * places it). Draw order within a layer is the painter's
+ * (docs/mapping.md "Projections, depth and draw order").
+ */
+#include "interp_internal.h"
+
+#include <string.h>
+
+/* Where the layers sit between the camera's near (0) and far (1) planes,
+ * measured along the view axis in eye space. */
+#define LAYER_FRONT 0.001
+#define LAYER_BACK 0.999
+
+static bool is_perspective(const mat4 *p) { return p->m[3] != 0 || p->m[7] != 0 || p->m[11] != 0; }
+
+void interp_proj_begin_frame(interp *ip)
+{
+    ip->nvotes = 0;
+    ip->cam_preset = false;
+    ip->preset_back_cleared = false;
+    ip->back_open = true;
+    ip->own_drawn = false;
+    ip->draw_seq = 0;
+    ip->nclear_seq = 0;
+}
+
+void interp_proj_clear(interp *ip)
+{
+    ip->nvotes = 0; /* the scene starts over: so does the choice */
+    ip->back_open = true;
+    ip->own_drawn = false;
+    ip->nclear_seq = 0;
+}
+
+void interp_proj_depth_clear(interp *ip)
+{
+    if (ip->nclear_seq < INTERP_PROJ_VOTES)
+        ip->clear_seq[ip->nclear_seq++] = ip->draw_seq;
+}
+
+void interp_proj_own_draw(interp *ip)
+{
+    ip->back_open = false;
+    ip->own_drawn = true;
+}
+
+void interp_proj_vote(interp *ip, GLenum mode)
+{
+    const gl_attribs *a = &ip->st.a;
+    const mat4 *proj = interp_matrix(ip, INTERP_PROJ);
+    const int32_t *vp = a->viewport.rect;
+    bool depth = a->caps[INTERP_CAP_DEPTH_TEST];
+    bool lit = a->caps[INTERP_CAP_LIGHTING] && mode > GL_LINE_STRIP;
+    interp_proj_vote_t *v = NULL;
+    for (int i = 0; i < ip->nvotes && !v; i++)
+        if (memcmp(ip->votes[i].vp, vp, sizeof ip->votes[i].vp) == 0 &&
+            mat4_equal_f32(&ip->votes[i].proj, proj))
+            v = &ip->votes[i];
+    if (!v) {
+        if (ip->nvotes >= INTERP_PROJ_VOTES)
+            return; /* a frame of many projections: the first ones choose */
+        v = &ip->votes[ip->nvotes++];
+        memset(v, 0, sizeof *v);
+        v->proj = *proj;
+        memcpy(v->vp, vp, sizeof v->vp);
+        v->first_seq = ip->draw_seq;
+    }
+    if (depth && !v->depth_drawn) {
+        v->depth_drawn = true;
+        v->first_depth_seq = ip->draw_seq;
+    }
+    if (ip->draw_seq < UINT32_MAX)
+        ip->draw_seq++;
+    v->solid |= depth || lit;
+    uint64_t w = 1 + (depth ? 2 : 0) + (lit ? 4 : 0);
+    v->score = v->score + w < v->score ? UINT64_MAX : v->score + w;
+}
+
+bool interp_proj_choice(const interp *ip, mat4 *proj, int32_t vp[4], bool *back_cleared)
+{
+    *back_cleared = false;
+    if (ip->frame_begin || !ip->camera_fixed)
+        return false;
+    int best = -1;
+    for (int i = 0; i < ip->nvotes; i++) {
+        const interp_proj_vote_t *v = &ip->votes[i];
+        if (!v->solid || !mat4_finite(&v->proj))
+            continue;
+        if (best < 0) {
+            best = i;
+            continue;
+        }
+        const interp_proj_vote_t *b = &ip->votes[best];
+        bool pv = is_perspective(&v->proj), pb = is_perspective(&b->proj);
+        if ((pv && !pb) || (pv == pb && v->score > b->score))
+            best = i;
+    }
+    if (best < 0)
+        return false;
+    const interp_proj_vote_t *b = &ip->votes[best];
+    if (memcmp(b->vp, ip->cam_viewport, sizeof b->vp) == 0 &&
+        mat4_equal_f32(&b->proj, &ip->cam_proj))
+        return false;
+    /* A depth-tested draw of another projection, then a depth clear, both
+     * before the camera's first draw: that draw is a background. */
+    for (int i = 0; i < ip->nvotes; i++) {
+        const interp_proj_vote_t *e = &ip->votes[i];
+        if (i == best || !e->depth_drawn || e->first_depth_seq >= b->first_seq)
+            continue;
+        for (int k = 0; k < ip->nclear_seq; k++)
+            if (ip->clear_seq[k] > e->first_depth_seq && ip->clear_seq[k] <= b->first_seq)
+                *back_cleared = true;
+    }
+    *proj = b->proj;
+    memcpy(vp, b->vp, sizeof b->vp);
+    return true;
+}
+
+void interp_proj_preset(interp *ip, const mat4 *proj, const int32_t vp[4], bool back_cleared)
+{
+    ip->cam_preset = true;
+    ip->preset_back_cleared = back_cleared;
+    ip->cam_preset_proj = *proj;
+    memcpy(ip->cam_preset_vp, vp, sizeof ip->cam_preset_vp);
+}
+
+/* The NDC depth of the point a fraction t from the near to the far plane
+ * on the camera's central ray. */
+static bool layer_depth(const interp *ip, double t, double *z)
+{
+    const int32_t *vp = ip->cam_viewport;
+    double c[2] = {vp[0] + vp[2] / 2.0, vp[1] + vp[3] / 2.0}, e[2][4];
+    for (int k = 0; k < 2; k++) {
+        double in[4] = {c[0], c[1], k ? 1 : -1, 1};
+        mat4_apply(&ip->cam_from_ndc, in, e[k]);
+        if (!(e[k][3] != 0) || !isfinite(e[k][3]))
+            return false;
+        for (int j = 0; j < 3; j++)
+            e[k][j] /= e[k][3];
+    }
+    double p[4] = {0, 0, 0, 1}, o[4];
+    for (int j = 0; j < 3; j++)
+        p[j] = e[0][j] + t * (e[1][j] - e[0][j]);
+    mat4 w = interp_window_matrix(&ip->cam_proj, ip->cam_viewport);
+    mat4_apply(&w, p, o);
+    if (!(o[3] != 0) || !isfinite(o[2] / o[3]))
+        return false;
+    *z = o[2] / o[3];
+    return true;
+}
+
+void interp_proj_layer(interp *ip, mat4 *w)
+{
+    const gl_attribs *a = &ip->st.a;
+    if (!ip->cam_from_ndc_ok)
+        return;
+    if (a->caps[INTERP_CAP_DEPTH_TEST]) {
+        if (!(ip->preset_back_cleared && !ip->own_drawn)) {
+            ip->back_open = false;
+            return; /* GL tests and writes its depth: keep it */
+        }
+    }
+    double z;
+    if (!layer_depth(ip, ip->back_open ? LAYER_BACK : LAYER_FRONT, &z))
+        return;
+    /* z_ndc = z for every point: the z row becomes z times the w row. */
+    for (int k = 0; k < 4; k++)
+        w->m[4 * k + 2] = z * w->m[4 * k + 3];
+}
+
+void interp_proj_end_frame(interp *ip)
+{
+    scene *s = ip->scene;
+    if (!s || !s->have_camera || s->camera.kind != SCENE_CAMERA_ORTHOGRAPHIC)
+        return;
+    /* The painter's shift moves draws toward an orthographic camera, which
+     * sits on GL's near plane: the near plane lets the shift through and
+     * the camera steps back past it, as a ray starting on a surface does
+     * not see it (with zNear = 0 every draw sits on the camera). */
+    scene_camera *cam = &s->camera;
+    double reach = interp_painter_reach(ip);
+    double dl = sqrt(cam->direction[0] * cam->direction[0] +
+                     cam->direction[1] * cam->direction[1] +
+                     cam->direction[2] * cam->direction[2]);
+    if (!(dl > 0) || !isfinite(dl))
+        return;
+    for (int k = 0; k < 3; k++)
+        cam->location[k] -= cam->direction[k] / dl * 2 * reach;
+    if (cam->has_clip)
+        cam->clip[0][3] += reach;
+}
+
+void interp_proj_painter_prims(interp *ip, GLenum mode, uint32_t n)
+{
+    const gl_attribs *a = &ip->st.a;
+    if (mode != GL_TRIANGLES && mode != GL_QUADS)
+        return; /* strips and fans share vertices; their parts rarely overlap */
+    if (a->caps[INTERP_CAP_DEPTH_TEST] && (a->depth.func == GL_LESS || a->depth.func == GL_LEQUAL))
+        return;
+    uint32_t per = mode == GL_TRIANGLES ? 3 : 4, np = n / per;
+    if (np < 2 || !ip->scene)
+        return;
+    /* Primitive j of the draw gets the painter's shift of draw k + j:
+     * object -> eye with shift k, back out of shift k, into k + j, and
+     * back to object space, where the pool's vertices are. */
+    mat4 from_eye, s0 = mat4_identity(), s0inv;
+    interp_painter_apply(ip, ip->painter, &s0);
+    if (!mat4_invert(&ip->prim_to_eye, &from_eye) || !mat4_invert(&s0, &s0inv))
+        return;
+    scene_vertex *v = ip->scene->verts + ip->prim_first;
+    for (uint32_t j = 1; j < np; j++) {
+        uint32_t k = ip->painter + j < INTERP_PAINTER_MAX ? ip->painter + j : INTERP_PAINTER_MAX;
+        mat4 m = mat4_identity();
+        interp_painter_apply(ip, k, &m);
+        m = mat4_mul(&m, &s0inv);
+        m = mat4_mul(&m, &ip->prim_to_eye);
+        m = mat4_mul(&from_eye, &m);
+        for (uint32_t i = j * per; i < (j + 1) * per; i++) {
+            double in[4] = {v[i].pos[0], v[i].pos[1], v[i].pos[2], 1}, o[4];
+            mat4_apply(&m, in, o);
+            if (!(o[3] != 0))
+                continue;
+            for (int c = 0; c < 3; c++) {
+                double p = o[c] / o[3];
+                if (isfinite(p))
+                    v[i].pos[c] = (float)p;
+            }
+        }
+    }
+    uint32_t k = ip->painter + np - 1;
+    ip->painter = k < INTERP_PAINTER_MAX && k >= ip->painter ? k : INTERP_PAINTER_MAX;
+}
