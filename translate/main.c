@@ -31,6 +31,7 @@
 #include "diag.h"
 #include "format.h"
 #include "frame.h"
+#include "gltfwrite.h"
 #include "look.h"
 #include "naming.h"
 #include "outbuf.h"
@@ -62,7 +63,9 @@ static void print_help(void)
           "Translate a RayGL trace into POV-Ray 3.7 scenes that reproduce the OpenGL\n"
           "frames: DIR/frame-00000.pov and DIR/frame-00000.ini for the first frame, and\n"
           "so on (a frame started by rayglFrameBegin(\"name.pov\", ...) is written as\n"
-          "DIR/name.pov). Render a frame with:  povray DIR/frame-00000.ini\n",
+          "DIR/name.pov). Render a frame with:  povray DIR/frame-00000.ini\n"
+          "With --format gltf (or run as raygl2gltf): one binary glTF 2.0 file per\n"
+          "frame instead, DIR/frame-00000.glb.\n",
           stdout);
     opt_print_help(stdout, false);
     fputs("\n"
@@ -71,10 +74,41 @@ static void print_help(void)
           stdout);
 }
 
+/* The options that only a POV-Ray scene can use, or NULL. */
+static const char *pov_only_option(const options *o)
+{
+    if (render_wanted(&o->render))
+        return "--render (and --video, --slurm, --sshloginfile)";
+    if (o->look.nincludes)
+        return "--include";
+    if (o->look.nlights)
+        return "--light";
+    if (o->look.antialias)
+        return "--antialias";
+    if (o->look.quality)
+        return "--quality";
+    if (o->look.radiosity)
+        return "--radiosity";
+    if (o->pov.no_shadows)
+        return "--no-shadows";
+    if (o->pov.reflection != 0)
+        return "--reflection";
+    if (o->pov.area_lights)
+        return "--area-lights";
+    return NULL;
+}
+
+/* The scene files' suffix. */
+static const char *scene_ext(const options *o) { return o->gltf ? ".glb" : ".pov"; }
+
 static void parse_args(int argc, char **argv, options *o)
 {
     opt_err err;
     opt_init(o);
+    /* raygl2gltf: the same program, glTF by default. */
+    const char *base = argc > 0 && argv[0] ? strrchr(argv[0], '/') : NULL;
+    base = base ? base + 1 : argc > 0 && argv[0] ? argv[0] : "";
+    o->gltf = strcmp(base, "raygl2gltf") == 0;
     if (!opt_parse_args(o, argc, argv, &err))
         usage_error(err.msg);
     if (o->help) {
@@ -88,13 +122,18 @@ static void parse_args(int argc, char **argv, options *o)
     }
     if (!opt_finish_parse(o, &err))
         usage_error(err.msg);
+    const char *pov_only = o->gltf ? pov_only_option(o) : NULL;
+    if (pov_only) {
+        snprintf(err.msg, sizeof err.msg, "%s: POV-Ray only, not with --format gltf", pov_only);
+        usage_error(err.msg);
+    }
     if (render_wanted(&o->render) && !o->outdir)
         usage_error("rendering needs an output folder (-o DIR)");
     if (o->render.video && !o->render.render && !o->render.sshloginfile)
         o->render.render = true; /* a video needs the PNGs */
     if (render_wanted(&o->render) && render_check_tools(&o->render, PROG) != 0)
         exit(EXIT_INPUT);
-    if (o->outdir && !pov_ini_path_ok(o->outdir)) {
+    if (o->outdir && !o->gltf && !pov_ini_path_ok(o->outdir)) {
         snprintf(err.msg, sizeof err.msg,
                  "output folder '%.200s': a double quote or control character cannot be "
                  "written into POV-Ray's .ini", o->outdir);
@@ -294,7 +333,7 @@ static void finish_slot(job *j, slot *s)
 /* Writes the scene to the slot's temporary file. */
 static void write_temp(job *j, translator *t, size_t k, slot *s, outbuf *ob)
 {
-    char *path = temp_path(j->o->outdir, k, ".pov");
+    char *path = temp_path(j->o->outdir, k, scene_ext(j->o));
     if (!path) {
         s->write_errno = ENOMEM;
         return;
@@ -322,15 +361,23 @@ static void write_temp(job *j, translator *t, size_t k, slot *s, outbuf *ob)
     ob->failed = false;
     ob->user = &fd;
     errno = 0;
-    int rc = translator_write_pov(t, ob, &info);
-    if (rc == 0)
-        rc = look_write_scene(ob, &j->o->look, translator_scene(t),
-                              (const char *const *)j->includes, j->o->look.nincludes);
-    if (rc == 0)
-        rc = outbuf_flush(ob);
-    errno = 0;
-    if (rc == 0)
-        rc = translator_write_images(t, j->o->outdir);
+    int rc;
+    if (j->o->gltf) {
+        gltf_frame_info gi = {j->o->trace, s->frame, s->frame_name, s->incomplete};
+        rc = gltf_write(ob, translator_scene(t), &gi, NULL);
+        if (rc == 0)
+            rc = outbuf_flush(ob);
+    } else {
+        rc = translator_write_pov(t, ob, &info);
+        if (rc == 0)
+            rc = look_write_scene(ob, &j->o->look, translator_scene(t),
+                                  (const char *const *)j->includes, j->o->look.nincludes);
+        if (rc == 0)
+            rc = outbuf_flush(ob);
+        errno = 0;
+        if (rc == 0)
+            rc = translator_write_images(t, j->o->outdir);
+    }
     int e = errno ? errno : ENOMEM;
     if (close(fd) != 0 && rc == 0) {
         rc = -1;
@@ -498,6 +545,29 @@ static int place(const char *tmp, const char *fin)
     return rename(tmp, fin);
 }
 
+/* Renames slot k's temporary .glb into place as STEM.glb. */
+static void publish_glb(const options *o, totals *tot, size_t k, slot *s, const char *stem)
+{
+    char glb[NAME_MAX_STEM + 64];
+    snprintf(glb, sizeof glb, "%s.glb", stem);
+    char *tmp = temp_path(o->outdir, k, ".glb"), *fin = join_path(o->outdir, glb);
+    if (!tmp || !fin) {
+        say(o, "frame %zu: out of memory", s->frame);
+        tot->status = EXIT_INPUT;
+    } else if (place(tmp, fin) != 0) {
+        say(o, "%s: cannot write: %s", fin, strerror(errno));
+        unlink(tmp);
+        tot->status = EXIT_INPUT;
+    } else {
+        tot->written++;
+        s->published = join_path(o->outdir, stem);
+    }
+    cleanup_drop(s->tmp_id);
+    s->tmp_id = -1;
+    tr_free(tmp);
+    tr_free(fin);
+}
+
 /* Writes the .ini of slot k and renames both files into place. */
 static void publish(const options *o, totals *tot, names *used, size_t k, slot *s)
 {
@@ -514,10 +584,14 @@ static void publish(const options *o, totals *tot, names *used, size_t k, slot *
         for (int n = 2; name_used(used, stem); n++)
             snprintf(stem, sizeof stem, "%s-%05zu-%d", base, s->frame, n);
         if (!o->quiet)
-            say(o, "frame %zu: %s.pov is taken by an earlier frame; writing %s.pov", s->frame,
-                base, stem);
+            say(o, "frame %zu: %s%s is taken by an earlier frame; writing %s%s", s->frame,
+                base, scene_ext(o), stem, scene_ext(o));
     }
     name_add(used, stem);
+    if (o->gltf) {
+        publish_glb(o, tot, k, s, stem);
+        return;
+    }
 
     char pov[sizeof stem + 8], ini[sizeof stem + 8], png[sizeof stem + 8];
     snprintf(pov, sizeof pov, "%s.pov", stem);
@@ -868,7 +942,7 @@ int main(int argc, char **argv)
                 say_decode_error(&o, where, &s->error);
             tot.status = EXIT_INPUT;
         } else if (s->write_errno) {
-            char *tmp = temp_path(o.outdir, k, ".pov");
+            char *tmp = temp_path(o.outdir, k, scene_ext(&o));
             fprintf(stderr, "%s" PROG ": %s: cannot write: %s\n", progress_shown ? "\r\033[K" : "",
                     tmp ? tmp : o.outdir, strerror(s->write_errno));
             progress_shown = false;
@@ -882,7 +956,7 @@ int main(int argc, char **argv)
             say_incomplete(&o, &tot, s);
         }
         if (fatal && s->status == RGL_OK && !s->write_errno) {
-            char *tmp = temp_path(o.outdir, k, ".pov");
+            char *tmp = temp_path(o.outdir, k, scene_ext(&o));
             if (tmp)
                 unlink(tmp);
             tr_free(tmp);

@@ -225,6 +225,15 @@ bool opt_set_settings(options *o, const char *v, const opt_ctx *ctx, opt_err *er
     return opt_parse_file(o, path, err);
 }
 
+bool opt_set_format(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
+{
+    if (strcmp(v, "pov") == 0 || strcmp(v, "gltf") == 0) {
+        o->gltf = v[0] == 'g';
+        return true;
+    }
+    return opt_fail(err, "%s '%.100s': expected pov or gltf", ctx->option, v);
+}
+
 bool opt_set_dump(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
 {
     return opt_bool(v, &o->dump, ctx, err);

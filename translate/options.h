@@ -45,6 +45,7 @@ typedef struct options {
     bool dump, quiet, help, version;
     pov_options pov; /* shadows, reflection, area lights (options_light.c) */
     bool vertex_lighting; /* --vertex-lighting (interp_gouraud.c) */
+    bool gltf;            /* --format gltf: .glb files (gltfwrite.h) */
     const char *name_pattern; /* NULL: frame-NNNNN, or rayglFrameBegin's name */
     look_settings look;       /* look.h */
     render_settings render;   /* render.h */

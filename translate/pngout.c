@@ -116,3 +116,29 @@ done:
     tr_free(tmp);
     return rc;
 }
+
+int pngout_encode(const uint8_t *rgba, int w, int h, bool alpha, uint8_t **out, size_t *n)
+{
+    *out = NULL;
+    *n = 0;
+    if (w <= 0 || h <= 0) {
+        errno = EINVAL;
+        return -1;
+    }
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    if (!f)
+        return -1;
+    int rc = write_png(f, rgba, w, h, alpha);
+    if (fclose(f) != 0)
+        rc = -1;
+    if (rc != 0) {
+        free(buf); /* open_memstream's own malloc */
+        errno = ENOMEM;
+        return -1;
+    }
+    *out = (uint8_t *)buf;
+    *n = len;
+    return 0;
+}

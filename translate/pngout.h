@@ -3,6 +3,7 @@
 #define RGL_PNGOUT_H
 
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 
 /* Writes w x h RGBA texels (bottom row first, as GL holds them) as
@@ -13,5 +14,9 @@
  * -1 with errno set. */
 int pngout_place(const char *dir, const char *name, const uint8_t *rgba, int w, int h,
                  bool alpha);
+
+/* The same PNG bytes in memory (a .glb embeds its images): *out is
+ * malloc'd (free() it), *n its size. Returns 0, or -1 with errno set. */
+int pngout_encode(const uint8_t *rgba, int w, int h, bool alpha, uint8_t **out, size_t *n);
 
 #endif

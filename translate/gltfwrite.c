@@ -1,0 +1,1240 @@
+/* gltfwrite.c: scene model -> binary glTF 2.0 (gltfwrite.h).
+ *
+ * The JSON is built in memory outbufs, one per top-level array, and the
+ * binary chunk in a byte buffer; gltf_write then joins them into the GLB
+ * container. Every accessor has its own buffer view (all 4-byte data, so
+ * alignment holds by construction). Meshes are baked into eye space (node
+ * matrices in glTF must be TRS, GL's modelview need not be); a display-list
+ * prototype is written once in its own space and placed by one node per
+ * call when the call's matrix is TRS, baked otherwise.
+ */
+#include "gltfwrite.h"
+
+#include <GL/gl.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gltfwrite_solid.h"
+#include "pngout.h"
+#include "talloc.h"
+
+#define GLTF_PI 3.14159265358979323846
+
+enum { GL_ARRAY = 34962, GL_ELEMENTS = 34963, T_FLOAT = 5126, T_UINT = 5125 };
+
+typedef struct bytes {
+    uint8_t *p;
+    size_t n, cap;
+} bytes;
+
+typedef struct list {
+    outbuf ob; /* ",{...}" items */
+    size_t count;
+} list;
+
+typedef struct writer {
+    const scene *s;
+    bool failed;
+    bytes bin;
+    list accessors, views, meshes, nodes, materials, textures, images, samplers, lights,
+        cameras;
+    char **mat_json; /* materials written, to share equal ones */
+    size_t cap_mat_json;
+    int32_t *tex_index; /* scene texture -> glTF texture, -1 until written */
+    uint32_t *remap, *stamp, gen;
+    /* one primitive's vertices */
+    float *pos, *nrm, *col, *uv;
+    size_t nv, cap_v;
+    uint32_t *idx;
+    size_t ni, cap_i;
+    uint32_t *scene_nodes;
+    size_t nscene_nodes, cap_scene_nodes;
+    bool used_unlit, used_specular, used_lights;
+    outbuf notes;
+    size_t nnotes;
+    gltf_stats st;
+} writer;
+
+/* ---- small helpers ----------------------------------------------------------------- */
+
+static void *grow(writer *w, void *p, size_t *cap, size_t need, size_t elem)
+{
+    if (need <= *cap)
+        return p;
+    void *q = p;
+    if (tr_grow(&q, cap, need, elem) != 0) {
+        w->failed = true;
+        return NULL;
+    }
+    return q;
+}
+
+static float fin(double v) { return isfinite(v) && fabs(v) < 3e38 ? (float)v : 0.0f; }
+static double clamp01(double v) { return v > 0 ? (v < 1 ? v : 1) : 0; }
+
+static void num(outbuf *ob, double v) { outbuf_f32(ob, fin(v)); }
+
+static void nums(outbuf *ob, const double *v, int n)
+{
+    outbuf_putc(ob, '[');
+    for (int i = 0; i < n; i++) {
+        if (i)
+            outbuf_putc(ob, ',');
+        num(ob, v[i]);
+    }
+    outbuf_putc(ob, ']');
+}
+
+/* A JSON string: quotes, backslashes, control and non-ASCII bytes escaped
+ * (the trace's names are not known to be UTF-8). */
+static void jstr(outbuf *ob, const char *s)
+{
+    static const char hex[] = "0123456789abcdef";
+    outbuf_putc(ob, '"');
+    for (; s && *s; s++) {
+        unsigned char c = (unsigned char)*s;
+        if (c == '"' || c == '\\') {
+            outbuf_putc(ob, '\\');
+            outbuf_putc(ob, (char)c);
+        } else if (c < 0x20 || c >= 0x7f) {
+            char e[6] = {'\\', 'u', '0', '0', hex[c >> 4], hex[c & 15]};
+            outbuf_write(ob, e, 6);
+        } else {
+            outbuf_putc(ob, (char)c);
+        }
+    }
+    outbuf_putc(ob, '"');
+}
+
+/* Starts an item of l; returns its index. */
+static size_t item(list *l)
+{
+    if (l->count)
+        outbuf_putc(&l->ob, ',');
+    return l->count++;
+}
+
+static void note(writer *w, const char *text)
+{
+    if (w->nnotes++)
+        outbuf_putc(&w->notes, ',');
+    jstr(&w->notes, text);
+}
+
+/* Appends n bytes to the binary chunk (4-aligned); a buffer view over them.
+ * Returns the view's index. */
+static size_t add_view(writer *w, const void *data, size_t n, int target)
+{
+    size_t off = w->bin.n, pad = (4 - n % 4) % 4;
+    uint8_t *p = grow(w, w->bin.p, &w->bin.cap, off + n + pad, 1);
+    if (p) {
+        w->bin.p = p;
+        memcpy(p + off, data, n);
+        memset(p + off + n, 0, pad);
+        w->bin.n = off + n + pad;
+    }
+    size_t k = item(&w->views);
+    outbuf *o = &w->views.ob;
+    outbuf_puts(o, "{\"buffer\":0,\"byteOffset\":");
+    outbuf_u64(o, off);
+    outbuf_puts(o, ",\"byteLength\":");
+    outbuf_u64(o, n);
+    if (target) {
+        outbuf_puts(o, ",\"target\":");
+        outbuf_u64(o, (uint64_t)target);
+    }
+    outbuf_putc(o, '}');
+    return k;
+}
+
+/* An accessor of count elements of comps floats (or uint32 indices). */
+static size_t add_accessor(writer *w, const void *data, size_t count, int comps, bool indices,
+                           bool bounds)
+{
+    static const char *const type[] = {"", "SCALAR", "VEC2", "VEC3", "VEC4"};
+    size_t view = add_view(w, data, count * (size_t)comps * 4, indices ? GL_ELEMENTS : GL_ARRAY);
+    size_t k = item(&w->accessors);
+    outbuf *o = &w->accessors.ob;
+    outbuf_puts(o, "{\"bufferView\":");
+    outbuf_u64(o, view);
+    outbuf_puts(o, ",\"componentType\":");
+    outbuf_u64(o, indices ? T_UINT : T_FLOAT);
+    outbuf_puts(o, ",\"count\":");
+    outbuf_u64(o, count);
+    outbuf_puts(o, ",\"type\":\"");
+    outbuf_puts(o, type[comps]);
+    outbuf_putc(o, '"');
+    if (bounds && !indices) {
+        /* Exact float bounds: the validator compares them with the data. */
+        const float *f = data;
+        double lo[4], hi[4];
+        for (int c = 0; c < comps; c++)
+            lo[c] = hi[c] = count ? f[c] : 0;
+        for (size_t i = 0; i < count; i++)
+            for (int c = 0; c < comps; c++) {
+                double v = f[i * (size_t)comps + (size_t)c];
+                lo[c] = v < lo[c] ? v : lo[c];
+                hi[c] = v > hi[c] ? v : hi[c];
+            }
+        outbuf_puts(o, ",\"min\":");
+        nums(o, lo, comps);
+        outbuf_puts(o, ",\"max\":");
+        nums(o, hi, comps);
+    }
+    outbuf_putc(o, '}');
+    w->st.accessors++;
+    return k;
+}
+
+/* ---- materials and textures ------------------------------------------------------------ */
+
+static int32_t texture_index(writer *w, int32_t t)
+{
+    const scene *s = w->s;
+    if (t < 0 || (size_t)t >= s->ntextures)
+        return -1;
+    if (w->tex_index[t] >= 0)
+        return w->tex_index[t];
+    const scene_texture *tx = &s->textures[t];
+    bool alpha = false;
+    for (size_t i = 0; tx->rgba && i < (size_t)tx->width * (size_t)tx->height; i++)
+        alpha = alpha || tx->rgba[i * 4 + 3] != 255;
+    uint8_t *png = NULL;
+    size_t n = 0;
+    if (!tx->rgba || pngout_encode(tx->rgba, tx->width, tx->height, alpha, &png, &n) != 0) {
+        w->failed = true;
+        return -1;
+    }
+    size_t view = add_view(w, png, n, 0);
+    free(png);
+    size_t img = item(&w->images);
+    outbuf_puts(&w->images.ob, "{\"mimeType\":\"image/png\",\"bufferView\":");
+    outbuf_u64(&w->images.ob, view);
+    outbuf_putc(&w->images.ob, '}');
+    w->st.images++;
+    /* GL_CLAMP's border colour has no glTF counterpart: clamped to the edge. */
+    size_t smp = item(&w->samplers);
+    outbuf *o = &w->samplers.ob;
+    outbuf_puts(o, "{\"magFilter\":");
+    outbuf_u64(o, tx->linear ? GL_LINEAR : GL_NEAREST);
+    outbuf_puts(o, ",\"minFilter\":");
+    outbuf_u64(o, tx->linear ? GL_LINEAR : GL_NEAREST);
+    outbuf_puts(o, ",\"wrapS\":");
+    outbuf_u64(o, tx->repeat_s ? GL_REPEAT : GL_CLAMP_TO_EDGE);
+    outbuf_puts(o, ",\"wrapT\":");
+    outbuf_u64(o, tx->repeat_t ? GL_REPEAT : GL_CLAMP_TO_EDGE);
+    outbuf_putc(o, '}');
+    if ((!tx->repeat_s && tx->border_s) || (!tx->repeat_t && tx->border_t))
+        note(w, "GL_CLAMP's border colour: clamped to the edge texel");
+    size_t k = item(&w->textures);
+    outbuf_puts(&w->textures.ob, "{\"sampler\":");
+    outbuf_u64(&w->textures.ob, smp);
+    outbuf_puts(&w->textures.ob, ",\"source\":");
+    outbuf_u64(&w->textures.ob, img);
+    outbuf_putc(&w->textures.ob, '}');
+    w->tex_index[t] = (int32_t)k;
+    return (int32_t)k;
+}
+
+/* GL's Blinn-Phong exponent as a GGX roughness: alpha^2 = 2 / (n + 2)
+ * (the usual fit of the two lobes' widths), roughness = sqrt(alpha). */
+static double roughness_of(double shininess)
+{
+    double n = shininess > 0 ? shininess : 0;
+    return sqrt(sqrt(2.0 / (n + 2.0)));
+}
+
+/* The material of a look, shared when equal; vertex_color: COLOR_0 carries
+ * the base colour. Returns its index, or -1 (no memory). */
+static int32_t material_index(writer *w, const scene_look *look, bool lines, bool *vertex_color)
+{
+    const scene *s = w->s;
+    outbuf m;
+    if (outbuf_init(&m, 512, NULL, NULL) != 0) {
+        w->failed = true;
+        return -1;
+    }
+    const scene_material *mat = look->lit && !lines && look->material >= 0 &&
+                                        (size_t)look->material < s->nmaterials
+                                    ? &s->materials[look->material]
+                                    : NULL;
+    const scene_texture *tx = look->texture >= 0 && (size_t)look->texture < s->ntextures
+                                  ? &s->textures[look->texture]
+                                  : NULL;
+    int32_t tex = tx && !lines ? texture_index(w, look->texture) : -1;
+    double base[4] = {1, 1, 1, 1};
+    *vertex_color = true;
+    if (mat && !(mat->color_material[0] & SCENE_CM_DIFFUSE)) {
+        for (int c = 0; c < 4; c++)
+            base[c] = clamp01(mat->diffuse[0][c]);
+        *vertex_color = false;
+    }
+    if (tex >= 0 && tx->colour_is_texel)
+        *vertex_color = false; /* GL_REPLACE / GL_DECAL: the texel alone */
+    outbuf_puts(&m, "{\"pbrMetallicRoughness\":{\"baseColorFactor\":");
+    nums(&m, base, 4);
+    if (tex >= 0) {
+        outbuf_puts(&m, ",\"baseColorTexture\":{\"index\":");
+        outbuf_u64(&m, (uint64_t)tex);
+        outbuf_putc(&m, '}');
+    }
+    outbuf_puts(&m, ",\"metallicFactor\":0");
+    double spec[3] = {0, 0, 0};
+    if (mat) {
+        for (int c = 0; c < 3; c++)
+            spec[c] = clamp01(mat->specular[0][c]);
+        outbuf_puts(&m, ",\"roughnessFactor\":");
+        num(&m, roughness_of(mat->shininess[0]));
+    }
+    outbuf_putc(&m, '}');
+    if (mat) {
+        /* GL's ambient terms are a constant colour added to the surface's,
+         * as emission is: both go to emissive (clamped to glTF's [0, 1]). */
+        double em[3];
+        for (int c = 0; c < 3; c++) {
+            double amb = mat->model_ambient[c];
+            for (size_t i = 0; i < s->nlights; i++)
+                if (s->lights[i].aimed || s->lights[i].set == mat->lightset)
+                    amb += s->lights[i].ambient[c];
+            double ma = mat->color_material[0] & SCENE_CM_AMBIENT ? 0 : mat->ambient[0][c];
+            em[c] = clamp01(mat->emission[0][c] + amb * ma);
+        }
+        if (em[0] > 0 || em[1] > 0 || em[2] > 0) {
+            outbuf_puts(&m, ",\"emissiveFactor\":");
+            nums(&m, em, 3);
+        }
+    }
+    if (look->blend == SCENE_BLEND_ALPHA)
+        outbuf_puts(&m, ",\"alphaMode\":\"BLEND\"");
+    /* GL drew both sides (culled faces never reach the scene). */
+    outbuf_puts(&m, ",\"doubleSided\":true");
+    if (!mat) {
+        outbuf_puts(&m, ",\"extensions\":{\"KHR_materials_unlit\":{}}");
+        w->used_unlit = true;
+    } else {
+        /* No specular in GL: no specular lobe (glTF's default F0 = 0.04
+         * would add highlights GL never drew). */
+        double f = spec[0] > spec[1] ? spec[0] : spec[1];
+        f = f > spec[2] ? f : spec[2];
+        outbuf_puts(&m, ",\"extensions\":{\"KHR_materials_specular\":{\"specularFactor\":");
+        num(&m, f > 0 ? 1 : 0);
+        if (f > 0) {
+            outbuf_puts(&m, ",\"specularColorFactor\":");
+            nums(&m, spec, 3);
+        }
+        outbuf_puts(&m, "}}");
+        w->used_specular = true;
+    }
+    outbuf_putc(&m, '}');
+    outbuf_putc(&m, '\0');
+    if (m.failed) {
+        w->failed = true;
+        outbuf_finish(&m);
+        return -1;
+    }
+    for (size_t i = 0; i < w->materials.count; i++)
+        if (strcmp(w->mat_json[i], m.buf) == 0) {
+            outbuf_finish(&m);
+            return (int32_t)i;
+        }
+    char **mj = grow(w, w->mat_json, &w->cap_mat_json, w->materials.count + 1, sizeof *mj);
+    if (!mj) {
+        outbuf_finish(&m);
+        return -1;
+    }
+    w->mat_json = mj;
+    size_t k = item(&w->materials);
+    outbuf_puts(&w->materials.ob, m.buf);
+    mj[k] = m.buf; /* owned now */
+    w->st.materials++;
+    return (int32_t)k;
+}
+
+/* ---- primitives ------------------------------------------------------------------ */
+
+static bool reserve_v(writer *w, size_t n)
+{
+    size_t need = w->nv + n, c = w->cap_v;
+    if (need <= c)
+        return true;
+    size_t c1 = c, c2 = c, c3 = c, c4 = c;
+    float *p = grow(w, w->pos, &c1, need, 3 * sizeof(float));
+    if (p)
+        w->pos = p;
+    float *q = p ? grow(w, w->nrm, &c2, need, 3 * sizeof(float)) : NULL;
+    if (q)
+        w->nrm = q;
+    float *r = q ? grow(w, w->col, &c3, need, 4 * sizeof(float)) : NULL;
+    if (r)
+        w->col = r;
+    float *u = r ? grow(w, w->uv, &c4, need, 2 * sizeof(float)) : NULL;
+    if (u)
+        w->uv = u;
+    if (!u)
+        return false;
+    w->cap_v = c1 < c2 ? c1 : c2;
+    w->cap_v = w->cap_v < c3 ? w->cap_v : c3;
+    w->cap_v = w->cap_v < c4 ? w->cap_v : c4;
+    return true;
+}
+
+static bool add_index(writer *w, uint32_t i)
+{
+    uint32_t *p = grow(w, w->idx, &w->cap_i, w->ni + 1, sizeof *p);
+    if (!p)
+        return false;
+    w->idx = p;
+    p[w->ni++] = i;
+    return true;
+}
+
+/* The normal matrix (inverse transpose of m's 3x3); false when singular. */
+static bool normal_matrix(const mat4 *m, double n[3][3])
+{
+    double a[3][3];
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++)
+            a[r][c] = m->m[c * 4 + r];
+    double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+                 a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                 a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+    if (!(fabs(det) > 1e-300) || !isfinite(det))
+        return false;
+    /* cofactor matrix / det = inverse transpose */
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++) {
+            int r1 = (r + 1) % 3, r2 = (r + 2) % 3, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+            n[r][c] = (a[r1][c1] * a[r2][c2] - a[r1][c2] * a[r2][c1]) / det;
+        }
+    return true;
+}
+
+/* Appends one vertex to the primitive: position through m (NULL: as is),
+ * normal through nm, made unit length (glTF requires it). */
+static void push_vertex(writer *w, const double p[3], const double nrm[3], const float col[4],
+                        const float uv[2], const mat4 *m, double nm[3][3])
+{
+    size_t k = w->nv++;
+    double q[3] = {p[0], p[1], p[2]}, n[3] = {nrm[0], nrm[1], nrm[2]};
+    if (m) {
+        double in[4] = {p[0], p[1], p[2], 1}, out[4];
+        mat4_apply(m, in, out);
+        double ww = out[3] != 0 && isfinite(out[3]) ? out[3] : 1;
+        for (int c = 0; c < 3; c++)
+            q[c] = out[c] / ww;
+        if (nm)
+            for (int r = 0; r < 3; r++)
+                n[r] = nm[r][0] * nrm[0] + nm[r][1] * nrm[1] + nm[r][2] * nrm[2];
+    }
+    double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (!(len > 1e-12) || !isfinite(len)) {
+        n[0] = n[1] = 0;
+        n[2] = len = 1;
+    }
+    float nf[3];
+    double nl = 0;
+    for (int c = 0; c < 3; c++) {
+        w->pos[k * 3 + (size_t)c] = fin(q[c]);
+        nf[c] = (float)(n[c] / len);
+        nl += (double)nf[c] * nf[c];
+    }
+    nl = sqrt(nl);
+    for (int c = 0; c < 3; c++)
+        w->nrm[k * 3 + (size_t)c] = (float)(nf[c] / nl);
+    for (int c = 0; c < 4; c++)
+        w->col[k * 4 + (size_t)c] = (float)clamp01(col[c]);
+    /* GL's t runs up from the image's bottom row, glTF's v down from its top. */
+    w->uv[k * 2] = fin(uv[0]);
+    w->uv[k * 2 + 1] = fin(1.0 - (double)uv[1]);
+}
+
+static bool finite3(const float p[3]) { return isfinite(p[0]) && isfinite(p[1]) && isfinite(p[2]); }
+
+/* Writes the current vertices and indices as a primitive of mode into pj
+ * (one JSON object), then empties them. */
+static void flush_prim(writer *w, outbuf *pj, int mode, int32_t material, bool vertex_color,
+                       bool normals, bool uvs)
+{
+    if (w->nv == 0)
+        return;
+    size_t pa = add_accessor(w, w->pos, w->nv, 3, false, true);
+    size_t na = normals ? add_accessor(w, w->nrm, w->nv, 3, false, false) : 0;
+    size_t ca = vertex_color ? add_accessor(w, w->col, w->nv, 4, false, false) : 0;
+    size_t ta = uvs ? add_accessor(w, w->uv, w->nv, 2, false, false) : 0;
+    size_t ia = w->ni ? add_accessor(w, w->idx, w->ni, 1, true, false) : 0;
+    if (pj->len > 1)
+        outbuf_putc(pj, ',');
+    outbuf_puts(pj, "{\"attributes\":{\"POSITION\":");
+    outbuf_u64(pj, pa);
+    if (normals) {
+        outbuf_puts(pj, ",\"NORMAL\":");
+        outbuf_u64(pj, na);
+    }
+    if (vertex_color) {
+        outbuf_puts(pj, ",\"COLOR_0\":");
+        outbuf_u64(pj, ca);
+    }
+    if (uvs) {
+        outbuf_puts(pj, ",\"TEXCOORD_0\":");
+        outbuf_u64(pj, ta);
+    }
+    outbuf_putc(pj, '}');
+    if (w->ni) {
+        outbuf_puts(pj, ",\"indices\":");
+        outbuf_u64(pj, ia);
+    }
+    if (material >= 0) {
+        outbuf_puts(pj, ",\"material\":");
+        outbuf_u64(pj, (uint64_t)material);
+    }
+    outbuf_puts(pj, ",\"mode\":");
+    outbuf_u64(pj, (uint64_t)mode);
+    outbuf_putc(pj, '}');
+    w->nv = w->ni = 0;
+}
+
+/* One scene_mesh as a triangle primitive into pj, baked through m (NULL:
+ * its vertices as they are). */
+static void mesh_prim(writer *w, outbuf *pj, const scene_mesh *me, const mat4 *m)
+{
+    const scene *s = w->s;
+    if (me->look.blend == SCENE_BLEND_INVISIBLE || me->tri_count == 0)
+        return;
+    bool vcol;
+    int32_t mat = material_index(w, &me->look, false, &vcol);
+    bool uvs = me->look.texture >= 0 && (size_t)me->look.texture < s->ntextures;
+    double nm[3][3];
+    bool have_nm = m && normal_matrix(m, nm);
+    if (++w->gen == 0) {
+        memset(w->stamp, 0, s->nverts * sizeof *w->stamp);
+        w->gen = 1;
+    }
+    for (size_t t = me->first_tri; t < me->first_tri + me->tri_count && t < s->ntris; t++) {
+        const scene_tri *tr = &s->tris[t];
+        bool ok = tr->provoking < s->nverts;
+        for (int c = 0; c < 3 && ok; c++)
+            ok = tr->v[c] < s->nverts && finite3(s->verts[tr->v[c]].pos);
+        if (!ok || !reserve_v(w, 3))
+            continue;
+        const scene_vertex *pv = &s->verts[tr->provoking];
+        for (int c = 0; c < 3; c++) {
+            uint32_t g = tr->v[c];
+            const scene_vertex *v = &s->verts[g];
+            if (!me->look.flat && w->stamp[g] == w->gen) {
+                add_index(w, w->remap[g]);
+                continue;
+            }
+            double p[3] = {v->pos[0], v->pos[1], v->pos[2]};
+            /* GL_FLAT: the provoking vertex's colour (and, lit, its normal)
+             * for the whole face, so the face's vertices are its own. */
+            const scene_vertex *cv = me->look.flat ? pv : v;
+            double n[3] = {cv->normal[0], cv->normal[1], cv->normal[2]};
+            uint32_t k = (uint32_t)w->nv;
+            push_vertex(w, p, n, cv->color, v->tex, m, have_nm ? nm : NULL);
+            add_index(w, k);
+            if (!me->look.flat) {
+                w->stamp[g] = w->gen;
+                w->remap[g] = k;
+            }
+        }
+    }
+    flush_prim(w, pj, 4, mat, vcol, true, uvs);
+}
+
+/* ---- nodes ----------------------------------------------------------------------- */
+
+static size_t add_mesh(writer *w, outbuf *pj)
+{
+    size_t k = item(&w->meshes);
+    outbuf_puts(&w->meshes.ob, "{\"primitives\":[");
+    outbuf_write(&w->meshes.ob, pj->buf + 1, pj->len - 1);
+    outbuf_puts(&w->meshes.ob, "]}");
+    w->st.meshes++;
+    return k;
+}
+
+static void scene_node(writer *w, size_t node)
+{
+    uint32_t *p = grow(w, w->scene_nodes, &w->cap_scene_nodes, w->nscene_nodes + 1, sizeof *p);
+    if (p) {
+        w->scene_nodes = p;
+        p[w->nscene_nodes++] = (uint32_t)node;
+    }
+}
+
+/* A node; mesh, camera, light < 0 for none; matrix NULL for identity. */
+static size_t add_node(writer *w, long mesh, long camera, long light, const double *matrix,
+                       const double *rot, const double *trans, const char *name)
+{
+    size_t k = item(&w->nodes);
+    outbuf *o = &w->nodes.ob;
+    outbuf_putc(o, '{');
+    bool first = true;
+#define SEP() (first ? (void)(first = false) : outbuf_putc(o, ','))
+    if (name) {
+        SEP();
+        outbuf_puts(o, "\"name\":");
+        jstr(o, name);
+    }
+    if (mesh >= 0) {
+        SEP();
+        outbuf_puts(o, "\"mesh\":");
+        outbuf_u64(o, (uint64_t)mesh);
+    }
+    if (camera >= 0) {
+        SEP();
+        outbuf_puts(o, "\"camera\":");
+        outbuf_u64(o, (uint64_t)camera);
+    }
+    if (matrix) {
+        SEP();
+        outbuf_puts(o, "\"matrix\":");
+        nums(o, matrix, 16);
+    }
+    if (rot) {
+        SEP();
+        outbuf_puts(o, "\"rotation\":");
+        nums(o, rot, 4);
+    }
+    if (trans) {
+        SEP();
+        outbuf_puts(o, "\"translation\":");
+        nums(o, trans, 3);
+    }
+    if (light >= 0) {
+        SEP();
+        outbuf_puts(o, "\"extensions\":{\"KHR_lights_punctual\":{\"light\":");
+        outbuf_u64(o, (uint64_t)light);
+        outbuf_puts(o, "}}");
+    }
+#undef SEP
+    outbuf_putc(o, '}');
+    w->st.nodes++;
+    scene_node(w, k);
+    return k;
+}
+
+/* Whether m is a glTF node matrix: affine, and its 3x3 a rotation times a
+ * positive or negative scale along its own axes (columns orthogonal). */
+static bool trs_ok(const mat4 *m)
+{
+    const double *a = m->m;
+    if (!mat4_finite(m) || a[3] != 0 || a[7] != 0 || a[11] != 0 || a[15] != 1)
+        return false;
+    double len[3];
+    for (int i = 0; i < 3; i++) {
+        const double *c = a + i * 4;
+        len[i] = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+        if (!(len[i] > 1e-6) || len[i] > 1e15)
+            return false;
+    }
+    for (int i = 0; i < 3; i++)
+        for (int j = i + 1; j < 3; j++) {
+            const double *c = a + i * 4, *d = a + j * 4;
+            if (fabs(c[0] * d[0] + c[1] * d[1] + c[2] * d[2]) > 1e-5 * len[i] * len[j])
+                return false;
+        }
+    return true;
+}
+
+/* A unit quaternion (x, y, z, w) turning -z to fwd and +y toward up. */
+static void orient(const double fwd_in[3], const double up_in[3], double q[4])
+{
+    double f[3] = {fwd_in[0], fwd_in[1], fwd_in[2]}, u[3] = {up_in[0], up_in[1], up_in[2]};
+    double fl = len3(f);
+    if (!(fl > 0) || !isfinite(fl)) {
+        f[0] = f[1] = 0;
+        f[2] = -1;
+        fl = 1;
+    }
+    for (int c = 0; c < 3; c++)
+        f[c] /= fl;
+    double back[3] = {-f[0], -f[1], -f[2]};
+    double d = dot3(u, back);
+    for (int c = 0; c < 3; c++)
+        u[c] -= d * back[c];
+    double ul = len3(u);
+    if (!(ul > 1e-9) || !isfinite(ul)) {
+        /* any up perpendicular to fwd */
+        double t[3] = {fabs(f[0]) < 0.9 ? 1 : 0, fabs(f[0]) < 0.9 ? 0 : 1, 0};
+        cross3(back, t, u);
+        cross3(u, back, u);
+        ul = len3(u);
+    }
+    for (int c = 0; c < 3; c++)
+        u[c] /= ul;
+    double r[3];
+    cross3(u, back, r);
+    /* columns r, u, back: the rotation matrix -> quaternion */
+    double m00 = r[0], m11 = u[1], m22 = back[2], tr = m00 + m11 + m22;
+    if (tr > 0) {
+        double sq = sqrt(tr + 1) * 2;
+        q[3] = sq / 4;
+        q[0] = (u[2] - back[1]) / sq;
+        q[1] = (back[0] - r[2]) / sq;
+        q[2] = (r[1] - u[0]) / sq;
+    } else if (m00 > m11 && m00 > m22) {
+        double sq = sqrt(1 + m00 - m11 - m22) * 2;
+        q[3] = (u[2] - back[1]) / sq;
+        q[0] = sq / 4;
+        q[1] = (u[0] + r[1]) / sq;
+        q[2] = (back[0] + r[2]) / sq;
+    } else if (m11 > m22) {
+        double sq = sqrt(1 + m11 - m00 - m22) * 2;
+        q[3] = (back[0] - r[2]) / sq;
+        q[0] = (u[0] + r[1]) / sq;
+        q[1] = sq / 4;
+        q[2] = (back[1] + u[2]) / sq;
+    } else {
+        double sq = sqrt(1 + m22 - m00 - m11) * 2;
+        q[3] = (r[1] - u[0]) / sq;
+        q[0] = (back[0] + r[2]) / sq;
+        q[1] = (back[1] + u[2]) / sq;
+        q[2] = sq / 4;
+    }
+    double ql = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    for (int c = 0; c < 4; c++)
+        q[c] = (double)(float)(q[c] / ql);
+}
+
+/* ---- the camera ---------------------------------------------------------------------- */
+
+static void write_camera(writer *w)
+{
+    const scene_camera *cam = &w->s->camera;
+    double r[3], u[3], fwd[3];
+    for (int c = 0; c < 3; c++) {
+        r[c] = cam->right[c];
+        u[c] = cam->up[c];
+    }
+    double rl = len3(r), ul = len3(u);
+    cross3(u, r, fwd); /* up x right: forward in a right-handed frame */
+    double fl = len3(fwd);
+    if (!(rl > 0) || !(ul > 0) || !(fl > 0) || !isfinite(rl * ul * fl)) {
+        note(w, "camera: degenerate; a default camera written");
+        r[0] = u[1] = 1;
+        r[1] = r[2] = u[0] = u[2] = 0;
+        fwd[0] = fwd[1] = 0;
+        fwd[2] = -1;
+        rl = ul = fl = 1;
+    }
+    for (int c = 0; c < 3; c++)
+        fwd[c] /= fl;
+    double focal = dot3(cam->direction, fwd);
+    /* near and far: where the clip planes cut the axis from location */
+    double znear = 0, zfar = 0;
+    for (int i = 0; cam->has_clip && i < 2; i++) {
+        const double *a = cam->clip[i];
+        double af = dot3(a, fwd), t = -(dot3(a, cam->location) + a[3]) / af;
+        if (!isfinite(t) || af == 0)
+            continue;
+        if (af > 0)
+            znear = t;
+        else
+            zfar = t;
+    }
+    outbuf *o = &w->cameras.ob;
+    item(&w->cameras);
+    if (cam->kind == SCENE_CAMERA_ORTHOGRAPHIC) {
+        if (!(zfar > znear)) {
+            znear = 0;
+            zfar = 1e4;
+        }
+        if (znear < 0) {
+            note(w, "camera: the near plane lies behind the eye; the camera moved back to it");
+        }
+        outbuf_puts(o, "{\"type\":\"orthographic\",\"orthographic\":{\"xmag\":");
+        num(o, rl / 2);
+        outbuf_puts(o, ",\"ymag\":");
+        num(o, ul / 2);
+        outbuf_puts(o, ",\"znear\":0,\"zfar\":");
+        num(o, zfar - znear);
+        outbuf_puts(o, "}}");
+    } else {
+        if (!(focal > 0))
+            focal = 1;
+        if (!(znear > 0))
+            znear = focal * 1e-3;
+        double yfov = 2 * atan(ul / 2 / focal);
+        outbuf_puts(o, "{\"type\":\"perspective\",\"perspective\":{\"aspectRatio\":");
+        num(o, rl / ul);
+        outbuf_puts(o, ",\"yfov\":");
+        num(o, yfov);
+        outbuf_puts(o, ",\"znear\":");
+        num(o, znear);
+        if (zfar > znear) {
+            outbuf_puts(o, ",\"zfar\":");
+            num(o, zfar);
+        }
+        outbuf_puts(o, "}}");
+        double off[3];
+        for (int c = 0; c < 3; c++)
+            off[c] = cam->direction[c] - focal * fwd[c];
+        if (len3(off) > 1e-6 * focal)
+            note(w, "camera: an off-axis frustum; glTF's is centred (the image is shifted)");
+    }
+    double q[4], t[3];
+    orient(fwd, u, q);
+    for (int c = 0; c < 3; c++)
+        t[c] = cam->location[c] + (cam->kind == SCENE_CAMERA_ORTHOGRAPHIC ? znear * fwd[c] : 0);
+    bool moved = t[0] != 0 || t[1] != 0 || t[2] != 0;
+    bool turned = q[0] != 0 || q[1] != 0 || q[2] != 0;
+    add_node(w, -1, 0, -1, NULL, turned ? q : NULL, moved ? t : NULL, "camera");
+}
+
+/* ---- lights ----------------------------------------------------------------------------- */
+
+/* The distance at which a point light's fitted falloff matches GL's: from
+ * the light to the centre of the scene's vertices (1 when none). */
+static double light_ref_distance(const scene *s, const double pos[3])
+{
+    double c[3] = {0, 0, 0};
+    size_t n = 0;
+    for (size_t i = 0; i < s->nmeshes; i++) {
+        const scene_mesh *me = &s->meshes[i];
+        if (me->proto || me->tri_count == 0 || me->first_tri >= s->ntris)
+            continue;
+        const scene_tri *t = &s->tris[me->first_tri];
+        if (t->v[0] >= s->nverts)
+            continue;
+        const float *p = s->verts[t->v[0]].pos;
+        double in[4] = {p[0], p[1], p[2], 1}, out[4];
+        mat4_apply(&me->to_eye, in, out);
+        if (!(out[3] != 0) || !isfinite(out[0] + out[1] + out[2] + out[3]))
+            continue;
+        for (int k = 0; k < 3; k++)
+            c[k] += out[k] / out[3];
+        n++;
+    }
+    if (!n)
+        return 1;
+    double d[3];
+    for (int k = 0; k < 3; k++)
+        d[k] = c[k] / (double)n - pos[k];
+    double l = len3(d);
+    return l > 1e-6 && isfinite(l) ? l : 1;
+}
+
+static void write_lights(writer *w)
+{
+    const scene *s = w->s;
+    bool other_sets = false, attenuated = false;
+    for (size_t i = 0; i < s->nlights; i++) {
+        const scene_light *l = &s->lights[i];
+        if (!l->aimed && l->set != 0) {
+            other_sets = true;
+            continue; /* glTF lights light everything: the first set only */
+        }
+        double col[3], mx = 0;
+        for (int c = 0; c < 3; c++) {
+            col[c] = l->color[c] > 0 && isfinite(l->color[c]) ? l->color[c] : 0;
+            mx = col[c] > mx ? col[c] : mx;
+        }
+        if (!(mx > 0))
+            continue;
+        for (int c = 0; c < 3; c++)
+            col[c] /= mx;
+        /* A spec-following viewer's Lambert term is colour * intensity *
+         * cos / pi times the base colour: pi makes GL's diffuse. */
+        double inten = mx * GLTF_PI;
+        bool directional = l->kind == SCENE_LIGHT_PARALLEL;
+        double pos[3] = {0, 0, 0}, fwd[3] = {0, 0, -1}, up[3] = {0, 1, 0};
+        if (directional) {
+            if (l->aimed)
+                for (int c = 0; c < 3; c++)
+                    fwd[c] = l->point_at[c] - l->position[c];
+            else
+                for (int c = 0; c < 3; c++)
+                    fwd[c] = -l->direction[c];
+        } else {
+            for (int c = 0; c < 3; c++) {
+                pos[c] = l->position[c];
+                if (l->kind == SCENE_LIGHT_SPOT)
+                    fwd[c] = l->direction[c];
+            }
+            /* glTF's falloff is 1/d^2, GL's 1/(kc + kl d + kq d^2): equal at
+             * the distance of the scene's centre. */
+            double d = light_ref_distance(s, pos);
+            double att = l->attenuation[0] + l->attenuation[1] * d + l->attenuation[2] * d * d;
+            if (!(att > 1e-9) || !isfinite(att))
+                att = 1;
+            inten *= d * d / att;
+            attenuated = true;
+        }
+        if (fabs(fwd[0]) < 1e-9 && fabs(fwd[2]) < 1e-9)
+            up[1] = 0, up[2] = 1;
+        size_t k = item(&w->lights);
+        outbuf *o = &w->lights.ob;
+        outbuf_puts(o, "{\"type\":\"");
+        outbuf_puts(o, directional ? "directional" : l->kind == SCENE_LIGHT_SPOT ? "spot" : "point");
+        outbuf_puts(o, "\",\"color\":");
+        nums(o, col, 3);
+        outbuf_puts(o, ",\"intensity\":");
+        num(o, inten);
+        if (l->kind == SCENE_LIGHT_SPOT) {
+            double outer = l->spot_cutoff * GLTF_PI / 180, e = l->spot_exponent;
+            if (!(outer > 0) || outer > GLTF_PI / 2)
+                outer = GLTF_PI / 2;
+            /* GL's cos^e falls to half at acos(2^(-1/e)): glTF's ramp from
+             * inner to outer is centred there (a hard edge for e = 0). */
+            double inner = outer * 0.95;
+            if (e > 0) {
+                double half = acos(pow(0.5, 1 / e));
+                inner = 2 * half - outer;
+                if (inner > outer * 0.95)
+                    inner = outer * 0.95;
+                if (inner < 0)
+                    inner = 0;
+            }
+            outbuf_puts(o, ",\"spot\":{\"innerConeAngle\":");
+            num(o, inner);
+            outbuf_puts(o, ",\"outerConeAngle\":");
+            num(o, outer);
+            outbuf_putc(o, '}');
+        }
+        outbuf_putc(o, '}');
+        double q[4];
+        orient(fwd, up, q);
+        bool turned = q[0] != 0 || q[1] != 0 || q[2] != 0;
+        bool moved = pos[0] != 0 || pos[1] != 0 || pos[2] != 0;
+        add_node(w, -1, -1, (long)k, NULL, turned ? q : NULL, moved ? pos : NULL, NULL);
+        w->used_lights = true;
+        w->st.lights++;
+    }
+    if (other_sets)
+        note(w, "lights: draws under other GL lights; only the first draw's lights written");
+    if (attenuated)
+        note(w, "lights: GL's attenuation fitted as 1/d^2 at the scene's centre");
+}
+
+/* ---- lines and points ---------------------------------------------------------------- */
+
+static void write_lines_points(writer *w)
+{
+    const scene *s = w->s;
+    outbuf pj;
+    if (outbuf_init(&pj, 256, NULL, NULL) != 0) {
+        w->failed = true;
+        return;
+    }
+    outbuf_putc(&pj, '[');
+    scene_look look;
+    memset(&look, 0, sizeof look);
+    look.material = look.texture = look.texture1 = -1;
+    bool vc;
+    static const double zero[3] = {0, 0, 1};
+    static const float nouv[2] = {0, 0};
+    if (s->nlines) {
+        int32_t mat = material_index(w, &look, true, &vc);
+        for (size_t i = 0; i < s->nlines; i++) {
+            const scene_line *l = &s->lines[i];
+            if (!finite3(l->p[0]) || !finite3(l->p[1]) || !reserve_v(w, 2))
+                continue;
+            for (int e = 0; e < 2; e++) {
+                double p[3] = {l->p[e][0], l->p[e][1], l->p[e][2]};
+                push_vertex(w, p, zero, l->color[e], nouv, NULL, NULL);
+            }
+        }
+        flush_prim(w, &pj, 1, mat, true, false, false);
+    }
+    if (s->npoints) {
+        int32_t mat = material_index(w, &look, true, &vc);
+        for (size_t i = 0; i < s->npoints; i++) {
+            const scene_point *pt = &s->points[i];
+            if (!finite3(pt->p) || !reserve_v(w, 1))
+                continue;
+            double p[3] = {pt->p[0], pt->p[1], pt->p[2]};
+            push_vertex(w, p, zero, pt->color, nouv, NULL, NULL);
+        }
+        flush_prim(w, &pj, 0, mat, true, false, false);
+    }
+    if (pj.len > 1) {
+        add_node(w, (long)add_mesh(w, &pj), -1, -1, NULL, NULL, NULL, "lines and points");
+        note(w, "lines and points: glTF draws them one pixel wide");
+    }
+    outbuf_finish(&pj);
+}
+
+/* ---- the meshes ------------------------------------------------------------------------ */
+
+static void write_meshes(writer *w)
+{
+    const scene *s = w->s;
+    outbuf pj;
+    if (outbuf_init(&pj, 256, NULL, NULL) != 0) {
+        w->failed = true;
+        return;
+    }
+    /* Drawn as themselves: one glTF mesh, baked into eye space. */
+    outbuf_putc(&pj, '[');
+    for (size_t i = 0; i < s->nmeshes && !w->failed; i++) {
+        const scene_mesh *me = &s->meshes[i];
+        if (!me->proto)
+            mesh_prim(w, &pj, me, me->in_eye ? NULL : &me->to_eye);
+    }
+    for (size_t i = 0; i < s->nsolids && !w->failed; i++)
+        gltf_solid_prim(w, &pj, &s->solids[i]);
+    if (pj.len > 1)
+        add_node(w, (long)add_mesh(w, &pj), -1, -1, NULL, NULL, NULL, "scene");
+
+    /* Prototypes: one mesh in prototype space, one node per call. */
+    for (size_t k = 0; k < s->nprotos && !w->failed; k++) {
+        const scene_proto *pr = &s->protos[k];
+        long mesh = -1;
+        for (size_t i = 0; i < s->ninstances && !w->failed; i++) {
+            const scene_instance *in = &s->instances[i];
+            if (in->proto != k)
+                continue;
+            bool trs = trs_ok(&in->to_eye);
+            if (trs && mesh >= 0) {
+                add_node(w, mesh, -1, -1, in->to_eye.m, NULL, NULL, NULL);
+                w->st.instance_nodes++;
+                continue;
+            }
+            pj.len = 0;
+            outbuf_putc(&pj, '[');
+            for (size_t m = pr->first_mesh; m < pr->first_mesh + pr->nmeshes && m < s->nmeshes;
+                 m++) {
+                const scene_mesh *me = &s->meshes[m];
+                mat4 full = trs ? me->to_eye : mat4_mul(&in->to_eye, &me->to_eye);
+                mesh_prim(w, &pj, me, me->in_eye ? NULL : &full);
+            }
+            if (pj.len <= 1)
+                break; /* nothing visible in it */
+            long mk = (long)add_mesh(w, &pj);
+            if (trs) {
+                mesh = mk;
+                add_node(w, mesh, -1, -1, in->to_eye.m, NULL, NULL, NULL);
+                w->st.instance_nodes++;
+            } else {
+                add_node(w, mk, -1, -1, NULL, NULL, NULL, NULL);
+            }
+        }
+    }
+    outbuf_finish(&pj);
+}
+
+/* ---- the file ------------------------------------------------------------------------- */
+
+static void put_list(outbuf *j, const char *name, const list *l, bool *first)
+{
+    if (!l->count)
+        return;
+    if (!*first)
+        outbuf_putc(j, ',');
+    *first = false;
+    outbuf_putc(j, '"');
+    outbuf_puts(j, name);
+    outbuf_puts(j, "\":[");
+    outbuf_write(j, l->ob.buf, l->ob.len);
+    outbuf_putc(j, ']');
+}
+
+static void put_u32le(uint8_t *p, uint32_t v)
+{
+    p[0] = (uint8_t)v;
+    p[1] = (uint8_t)(v >> 8);
+    p[2] = (uint8_t)(v >> 16);
+    p[3] = (uint8_t)(v >> 24);
+}
+
+static void write_extras(writer *w, outbuf *j, const gltf_frame_info *info)
+{
+    const scene *s = w->s;
+    outbuf_puts(j, ",\"extras\":{\"background\":");
+    double bg[4];
+    for (int c = 0; c < 4; c++)
+        bg[c] = clamp01(s->background[c]);
+    nums(j, bg, 4);
+    if (s->fog.on) {
+        outbuf_puts(j, ",\"fog\":{\"mode\":");
+        jstr(j, s->fog.mode == GL_EXP ? "exp" : s->fog.mode == GL_EXP2 ? "exp2" : "linear");
+        double f[3] = {s->fog.density, s->fog.start, s->fog.end}, fc[4];
+        for (int c = 0; c < 4; c++)
+            fc[c] = clamp01(s->fog.color[c]);
+        outbuf_puts(j, ",\"density\":");
+        num(j, f[0]);
+        outbuf_puts(j, ",\"start\":");
+        num(j, f[1]);
+        outbuf_puts(j, ",\"end\":");
+        num(j, f[2]);
+        outbuf_puts(j, ",\"color\":");
+        nums(j, fc, 4);
+        outbuf_putc(j, '}');
+        note(w, "fog: glTF has none (kept in extras.fog)");
+    }
+    if (s->overlay)
+        note(w, "bitmaps and pixel rectangles: not written");
+    if (s->focal_blur || s->antialias_depth)
+        note(w, "accumulation-buffer effects: not written");
+    if (info && info->frame_name) {
+        outbuf_puts(j, ",\"frameName\":");
+        jstr(j, info->frame_name);
+    }
+    if (info && info->incomplete) {
+        outbuf_puts(j, ",\"incomplete\":");
+        jstr(j, info->incomplete);
+    }
+    outbuf_puts(j, ",\"notes\":[");
+    outbuf_write(j, w->notes.buf, w->notes.len);
+    outbuf_puts(j, "]}");
+}
+
+static int assemble(writer *w, outbuf *ob, const gltf_frame_info *info)
+{
+    outbuf j;
+    if (outbuf_init(&j, 4096, NULL, NULL) != 0)
+        return -1;
+    outbuf_puts(&j, "{\"asset\":{\"version\":\"2.0\",\"generator\":\"raygl2pov\"");
+    if (info && info->source) {
+        outbuf_puts(&j, ",\"extras\":{\"source\":");
+        jstr(&j, info->source);
+        outbuf_puts(&j, ",\"frame\":");
+        outbuf_u64(&j, info->frame_index);
+        outbuf_putc(&j, '}');
+    }
+    outbuf_putc(&j, '}');
+    if (w->used_unlit || w->used_specular || w->used_lights) {
+        outbuf_puts(&j, ",\"extensionsUsed\":[");
+        bool first = true;
+        const char *ext[] = {w->used_lights ? "KHR_lights_punctual" : NULL,
+                             w->used_specular ? "KHR_materials_specular" : NULL,
+                             w->used_unlit ? "KHR_materials_unlit" : NULL};
+        for (int i = 0; i < 3; i++)
+            if (ext[i]) {
+                if (!first)
+                    outbuf_putc(&j, ',');
+                first = false;
+                jstr(&j, ext[i]);
+            }
+        outbuf_putc(&j, ']');
+    }
+    if (w->used_lights) {
+        outbuf_puts(&j, ",\"extensions\":{\"KHR_lights_punctual\":{\"lights\":[");
+        outbuf_write(&j, w->lights.ob.buf, w->lights.ob.len);
+        outbuf_puts(&j, "]}}");
+    }
+    outbuf_puts(&j, ",\"scene\":0,\"scenes\":[{\"name\":\"frame\",\"nodes\":[");
+    for (size_t i = 0; i < w->nscene_nodes; i++) {
+        if (i)
+            outbuf_putc(&j, ',');
+        outbuf_u64(&j, w->scene_nodes[i]);
+    }
+    outbuf_puts(&j, "]}],");
+    bool first = true;
+    put_list(&j, "nodes", &w->nodes, &first);
+    put_list(&j, "cameras", &w->cameras, &first);
+    put_list(&j, "meshes", &w->meshes, &first);
+    put_list(&j, "materials", &w->materials, &first);
+    put_list(&j, "textures", &w->textures, &first);
+    put_list(&j, "images", &w->images, &first);
+    put_list(&j, "samplers", &w->samplers, &first);
+    put_list(&j, "accessors", &w->accessors, &first);
+    put_list(&j, "bufferViews", &w->views, &first);
+    if (w->bin.n) {
+        outbuf_puts(&j, ",\"buffers\":[{\"byteLength\":");
+        outbuf_u64(&j, w->bin.n);
+        outbuf_puts(&j, "}]");
+    }
+    write_extras(w, &j, info);
+    outbuf_putc(&j, '}');
+    while (j.len % 4)
+        outbuf_putc(&j, ' ');
+    int rc = -1;
+    uint64_t total = 12 + 8 + (uint64_t)j.len + (w->bin.n ? 8 + (uint64_t)w->bin.n : 0);
+    if (!j.failed && !w->failed && total <= UINT32_MAX) {
+        uint8_t h[20];
+        memcpy(h, "glTF", 4);
+        put_u32le(h + 4, 2);
+        put_u32le(h + 8, (uint32_t)total);
+        put_u32le(h + 12, (uint32_t)j.len);
+        put_u32le(h + 16, 0x4E4F534Au); /* JSON */
+        outbuf_write(ob, (const char *)h, 20);
+        outbuf_write(ob, j.buf, j.len);
+        if (w->bin.n) {
+            put_u32le(h, (uint32_t)w->bin.n);
+            put_u32le(h + 4, 0x004E4942u); /* BIN */
+            outbuf_write(ob, (const char *)h, 8);
+            outbuf_write(ob, (const char *)w->bin.p, w->bin.n);
+        }
+        rc = ob->failed ? -1 : 0;
+    }
+    outbuf_finish(&j);
+    return rc;
+}
+
+int gltf_write(outbuf *ob, const scene *s, const gltf_frame_info *info, gltf_stats *stats)
+{
+    writer *w = tr_realloc(NULL, sizeof *w);
+    if (!w)
+        return -1;
+    memset(w, 0, sizeof *w);
+    w->s = s;
+    list *lists[] = {&w->accessors, &w->views, &w->meshes, &w->nodes, &w->materials,
+                     &w->textures, &w->images, &w->samplers, &w->lights, &w->cameras};
+    bool ok = outbuf_init(&w->notes, 256, NULL, NULL) == 0;
+    for (size_t i = 0; i < sizeof lists / sizeof lists[0]; i++)
+        ok = outbuf_init(&lists[i]->ob, 256, NULL, NULL) == 0 && ok;
+    size_t nv = s->nverts ? s->nverts : 1, nt = s->ntextures ? s->ntextures : 1;
+    w->remap = ok ? tr_realloc(NULL, nv * sizeof *w->remap) : NULL;
+    w->stamp = w->remap ? tr_realloc(NULL, nv * sizeof *w->stamp) : NULL;
+    w->tex_index = w->stamp ? tr_realloc(NULL, nt * sizeof *w->tex_index) : NULL;
+    int rc = -1;
+    if (w->tex_index) {
+        memset(w->stamp, 0, nv * sizeof *w->stamp);
+        for (size_t i = 0; i < nt; i++)
+            w->tex_index[i] = -1;
+        write_camera(w);
+        write_lights(w);
+        write_meshes(w);
+        write_lines_points(w);
+        for (size_t i = 0; i < sizeof lists / sizeof lists[0]; i++)
+            w->failed = w->failed || lists[i]->ob.failed;
+        if (!w->failed && !w->notes.failed)
+            rc = assemble(w, ob, info);
+    }
+    if (stats)
+        *stats = w->st;
+    for (size_t i = 0; i < sizeof lists / sizeof lists[0]; i++)
+        outbuf_finish(&lists[i]->ob);
+    outbuf_finish(&w->notes);
+    for (size_t i = 0; i < w->materials.count && w->mat_json; i++)
+        tr_free(w->mat_json[i]);
+    tr_free(w->mat_json);
+    tr_free(w->remap);
+    tr_free(w->stamp);
+    tr_free(w->tex_index);
+    tr_free(w->pos);
+    tr_free(w->nrm);
+    tr_free(w->col);
+    tr_free(w->uv);
+    tr_free(w->idx);
+    tr_free(w->bin.p);
+    tr_free(w->scene_nodes);
+    tr_free(w);
+    return rc;
+}
+
+/* For gltfwrite_solid.c: the primitive machinery, through narrow calls. */
+bool gltf_solid_reserve(writer *w, size_t n) { return reserve_v(w, n); }
+size_t gltf_solid_count(const writer *w) { return w->nv; }
+void gltf_solid_vertex(writer *w, const double p[3], const double n[3], const float col[4],
+                       const mat4 *m)
+{
+    static const float uv[2] = {0, 0};
+    double nm[3][3];
+    push_vertex(w, p, n, col, uv, m, normal_matrix(m, nm) ? nm : NULL);
+}
+void gltf_solid_index(writer *w, uint32_t i) { add_index(w, i); }
+void gltf_solid_flush(writer *w, outbuf *pj, const scene_look *look)
+{
+    bool vc;
+    if (look->blend == SCENE_BLEND_INVISIBLE) {
+        w->nv = w->ni = 0;
+        return;
+    }
+    int32_t mat = material_index(w, look, false, &vc);
+    flush_prim(w, pj, 4, mat, vc, true, false);
+}
