@@ -7,11 +7,23 @@ set -eu
 PACKAGES="gcc pkg-config meson ninja-build python3 khronos-api libgl-dev libglu1-mesa-dev freeglut3-dev
 libosmesa6-dev libpng-dev zlib1g-dev povray xvfb xauth locales slurm-wlm munge parallel ffmpeg
 libegl-dev libx11-dev mesa-utils xscreensaver-gl man-db groff-base binutils
-build-essential debhelper dpkg-dev fakeroot lintian"
+build-essential debhelper dpkg-dev fakeroot lintian nodejs"
+# Debian's npm, unless a nodejs that bundles its own (and conflicts with
+# Debian's npm package) is installed already.
+command -v npm >/dev/null 2>&1 || PACKAGES="$PACKAGES npm"
+# The glTF tests' validator (npm package gltf-validator, pinned in
+# tools/node/package-lock.json), installed into tools/node/node_modules.
+node_tools() {
+    dir="$(dirname "$0")/node"
+    [ -d "$dir/node_modules/gltf-validator" ] && return 0
+    command -v npm >/dev/null 2>&1 || return 0
+    (cd "$dir" && npm ci --no-audit --no-fund --loglevel=error)
+}
 # shellcheck disable=SC2086
 if status=$(dpkg-query -W -f '${db:Status-Abbrev}\n' $PACKAGES 2>/dev/null) &&
     ! printf '%s\n' "$status" | grep -qv '^ii'; then
     echo "deps: all $(echo $PACKAGES | wc -w) packages are installed"
+    node_tools
     exit 0
 fi
 SUDO=""
@@ -20,3 +32,4 @@ export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -q
 # shellcheck disable=SC2086
 $SUDO apt-get install -y -q --no-install-recommends $PACKAGES
+node_tools
