@@ -19,8 +19,8 @@ lib=$root/$libdir
 meson install -C "$build" --no-rebuild --destdir "$dest" >"$t/install.log" 2>&1 ||
     { cat "$t/install.log"; fail "meson install --destdir failed"; }
 
-for f in bin/raygl bin/raygl2pov bin/raygl-render bin/raygl-compare \
-    include/raygl.h include/raygl/gl.h include/raygl/cmdtable.h \
+for f in bin/raygl bin/raygl2pov bin/raygl2gltf bin/raygl-render bin/raygl-compare \
+    share/man/man1/raygl2gltf.1 include/raygl.h include/raygl/gl.h include/raygl/cmdtable.h \
     "$libdir/libraygl.so" "$libdir/libraygl.so.0" "$libdir/pkgconfig/raygl.pc" \
     "$libdir/raygl/libraygl-preload.so" \
     share/man/man1/raygl.1 share/man/man1/raygl2pov.1 share/man/man1/raygl-render.1 \
@@ -78,9 +78,11 @@ ldd "$t/app" | grep -q "libraygl.so.0 => $lib/" || fail "the program did not loa
 command -v raygl2pov | grep -qx "$root/bin/raygl2pov" || fail "raygl2pov on PATH is not the installed one"
 raygl2pov "$t/app.raygl" --dump >"$t/dump.txt" 2>&1 || { cat "$t/dump.txt"; fail "installed raygl2pov --dump failed"; }
 grep -q 'glClearColor' "$t/dump.txt" || { cat "$t/dump.txt"; fail "glClearColor not in the trace"; }
+raygl2gltf -q "$t/app.raygl" -o "$t/glb" 2>&1 && ls "$t/glb"/*.glb >/dev/null 2>&1 ||
+    fail "installed raygl2gltf wrote no .glb"
 raygl --version >/dev/null || fail "installed raygl --version failed"
 if command -v man >/dev/null; then
-    for m in raygl raygl2pov raygl-render raygl-compare; do
+    for m in raygl raygl2pov raygl2gltf raygl-render raygl-compare; do
         # raygl-render.1 is a .so link: man -w names the page it sources.
         man -w $m | grep -q "^$root/share/man/man1/" || fail "MANPATH: man -w $m gives $(man -w $m)"
     done
