@@ -7,7 +7,10 @@
  * STATE_CARRIED frame 1. Every frame is decoded, interpreted and written
  * as SDL to memory, then the SDL is checked: printable text, balanced
  * braces and angle brackets, no nan or inf, no directive but #version and
- * #declare and #default. A failed check aborts (a crash for the fuzzer).
+ * #declare and #default. Each frame is also written as glTF (gltfwrite.c)
+ * and the GLB checked: its header, chunk lengths and a JSON chunk of
+ * printable text with balanced brackets. A failed check aborts (a crash
+ * for the fuzzer).
  *
  * Built as a libFuzzer binary with -Dfuzz=true and CC=clang; the replay
  * driver (replay.c) runs it over the corpus and every kept crasher in each
@@ -20,6 +23,7 @@
 #include "diag.h"
 #include "format.h"
 #include "frame.h"
+#include "gltfwrite.h"
 #include "outbuf.h"
 #include "povwrite.h"
 
@@ -79,6 +83,45 @@ static void check_sdl(const char *t, size_t len)
     check(braces == 0 && angles == 0, "unbalanced at the end", t, len);
 }
 
+static uint32_t le32(const unsigned char *p)
+{
+    return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
+}
+
+/* The GLB invariants: see the file comment. */
+static void check_glb(const char *t, size_t len)
+{
+    const unsigned char *b = (const unsigned char *)t;
+    check(len >= 20 && memcmp(b, "glTF", 4) == 0 && le32(b + 4) == 2 && le32(b + 8) == len,
+          "GLB header", t, len < 20 ? len : 20);
+    uint32_t jl = le32(b + 12);
+    check(jl % 4 == 0 && 20 + (size_t)jl <= len && le32(b + 16) == 0x4E4F534Au, "JSON chunk",
+          t, 20);
+    size_t rest = len - 20 - jl;
+    check(rest == 0 || (rest >= 8 && le32(b + 20 + jl) == rest - 8 &&
+                        le32(b + 24 + jl) == 0x004E4942u),
+          "BIN chunk", t, 20);
+    const char *j = t + 20;
+    long depth = 0;
+    int in_str = 0;
+    for (uint32_t i = 0; i < jl; i++) {
+        unsigned char c = (unsigned char)j[i];
+        check(c >= 0x20 && c < 0x7f, "JSON: non-printable byte", j, jl);
+        if (in_str) {
+            if (c == '\\')
+                i++;
+            else if (c == '"')
+                in_str = 0;
+            continue;
+        }
+        in_str = c == '"';
+        depth += c == '{' || c == '[';
+        depth -= c == '}' || c == ']';
+        check(depth >= 0, "JSON: unbalanced", j, jl);
+    }
+    check(depth == 0 && !in_str, "JSON: unbalanced at the end", j, jl);
+}
+
 static void translate_all(rgl_reader *r)
 {
     translator *t = translator_create(r, NULL);
@@ -105,6 +148,11 @@ static void translate_all(rgl_reader *r)
         ob.failed = false;
         if (translator_write_pov(t, &ob, &info) == 0)
             check_sdl(ob.buf, ob.len);
+        ob.len = 0;
+        ob.failed = false;
+        gltf_frame_info gi = {"fuzz.raygl", i, res.frame_name, NULL};
+        if (gltf_write(&ob, translator_scene(t), &gi, NULL) == 0)
+            check_glb(ob.buf, ob.len);
         ob.len = 0;
         if (pov_write_ini(&ob, translator_scene(t), "out dir", "frame.pov", "frame.png") == 0)
             check(memchr(ob.buf, 0, ob.len) == NULL, "NUL in ini", ob.buf, ob.len);
