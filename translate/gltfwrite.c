@@ -22,6 +22,8 @@
 
 #define GLTF_PI 3.14159265358979323846
 
+#define GLTF_MAX_NOTES 32
+
 enum { GL_ARRAY = 34962, GL_ELEMENTS = 34963, T_FLOAT = 5126, T_UINT = 5125 };
 
 typedef struct bytes {
@@ -54,6 +56,7 @@ typedef struct writer {
     bool used_unlit, used_specular, used_lights;
     outbuf notes;
     size_t nnotes;
+    const char *note_seen[GLTF_MAX_NOTES];
     gltf_stats st;
 } writer;
 
@@ -116,8 +119,15 @@ static size_t item(list *l)
     return l->count++;
 }
 
+/* A note for extras.notes, once each (text is a static string). */
 static void note(writer *w, const char *text)
 {
+    for (size_t i = 0; i < w->nnotes && i < GLTF_MAX_NOTES; i++)
+        if (w->note_seen[i] == text)
+            return;
+    if (w->nnotes >= GLTF_MAX_NOTES)
+        return;
+    w->note_seen[w->nnotes] = text;
     if (w->nnotes++)
         outbuf_putc(&w->notes, ',');
     jstr(&w->notes, text);
@@ -264,6 +274,10 @@ static int32_t material_index(writer *w, const scene_look *look, bool lines, boo
                                   ? &s->textures[look->texture]
                                   : NULL;
     int32_t tex = tx && !lines ? texture_index(w, look->texture) : -1;
+    if (tex >= 0 && tx->env_mode == GL_BLEND)
+        note(w, "GL_BLEND texture environment: written as GL_MODULATE");
+    if (look->texture1 >= 0 && !lines)
+        note(w, "a second texture unit: not written (glTF has one base colour texture)");
     double base[4] = {1, 1, 1, 1};
     *vertex_color = true;
     if (mat && !(mat->color_material[0] & SCENE_CM_DIFFUSE)) {

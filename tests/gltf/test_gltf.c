@@ -319,8 +319,8 @@ static void test_materials_lights(void)
     CHECK(strstr(j, "KHR_lights_punctual") != NULL);
     CHECK_EQ_U(st.lights, 2);
     CHECK_NEAR(jnum(j, "intensity", 0), 0.5 * PI, 1e-5);
-    double d2 = 0.25 * (16 + 121) / 1; /* centre of first vertices (0,0,-5), (0,0,-6) */
-    (void)d2;
+    /* the first vertices' centre (0, 0, -5.5) lies 46.25^(1/2) from the spot */
+    CHECK_NEAR(jnum(j, "intensity", 1), PI * 46.25 / 2, 1e-4);
     CHECK_NEAR(jnum(j, "outerConeAngle", 0), 30 * PI / 180, 1e-6);
     double half = acos(pow(0.5, 0.1));
     CHECK_NEAR(jnum(j, "innerConeAngle", 0), 2 * half - 30 * PI / 180, 1e-6);
