@@ -808,7 +808,8 @@ static double light_ref_distance(const scene *s, const double pos[3])
     size_t n = 0;
     for (size_t i = 0; i < s->nmeshes; i++) {
         const scene_mesh *me = &s->meshes[i];
-        if (me->proto || me->tri_count == 0 || me->first_tri >= s->ntris)
+        if (me->proto || me->tri_count == 0 || me->first_tri >= s->ntris ||
+            me->look.blend == SCENE_BLEND_INVISIBLE)
             continue;
         const scene_tri *t = &s->tris[me->first_tri];
         if (t->v[0] >= s->nverts)
