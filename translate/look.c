@@ -695,3 +695,39 @@ int look_copy_includes(const look_settings *l, const char *dir, char ***names, c
     *names = v;
     return 0;
 }
+
+int look_add_lights(const look_settings *l, scene *s)
+{
+    mat4 view, inv;
+    bool world = override_view(l, s, &view, &inv);
+    for (size_t i = 0; i < l->nlights; i++) {
+        const look_light *L = &l->lights[i];
+        scene_light *sl = scene_add_light(s);
+        if (!sl)
+            return -1;
+        memset(sl, 0, sizeof *sl);
+        double at[3], to[3];
+        if (world) {
+            xform(&view, L->at, 1, at);
+            xform(&view, L->to, 1, to);
+        } else {
+            memcpy(at, L->at, sizeof at);
+            memcpy(to, L->to, sizeof to);
+        }
+        /* An area light as a point at its centre: a writer without area
+         * lights keeps its brightness and place. */
+        sl->kind = L->kind == LOOK_LIGHT_PARALLEL ? SCENE_LIGHT_PARALLEL
+                   : L->kind == LOOK_LIGHT_SPOT   ? SCENE_LIGHT_SPOT
+                                                  : SCENE_LIGHT_POINT;
+        sl->aimed = true; /* lights everything, as POV-Ray's added lights do */
+        for (int k = 0; k < 3; k++) {
+            sl->position[k] = at[k];
+            sl->point_at[k] = to[k];
+            sl->direction[k] = to[k] - at[k];
+            sl->color[k] = (float)L->color[k];
+        }
+        sl->spot_cutoff = (float)(L->kind == LOOK_LIGHT_SPOT ? L->falloff : 180);
+        sl->attenuation[0] = 1; /* POV-Ray's lights do not fade */
+    }
+    return 0;
+}

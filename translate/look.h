@@ -64,6 +64,11 @@ const char *look_apply(const look_settings *l, scene *s);
 int look_write_scene(outbuf *ob, const look_settings *l, const scene *s,
                      const char *const *include_names, size_t ninclude);
 
+/* The added lights (--light) as scene lights in eye space, for a writer
+ * that reads only the scene model (the glTF writer); the POV-Ray output
+ * writes them with look_write_scene instead. Returns 0 or -1 (memory). */
+int look_add_lights(const look_settings *l, scene *s);
+
 /* INI lines appended after pov_write_ini's: antialiasing, quality. */
 int look_write_ini(outbuf *ob, const look_settings *l);
 

@@ -81,8 +81,6 @@ static const char *pov_only_option(const options *o)
         return "--render (and --video, --slurm, --sshloginfile)";
     if (o->look.nincludes)
         return "--include";
-    if (o->look.nlights)
-        return "--light";
     if (o->look.antialias)
         return "--antialias";
     if (o->look.quality)
@@ -451,6 +449,8 @@ static void *worker(void *arg)
         scene *sc = translator_scene_edit(t);
         if (s->status == RGL_OK)
             s->look_note = look_apply(&j->o->look, sc);
+        if (s->status == RGL_OK && j->o->gltf && look_add_lights(&j->o->look, sc) != 0)
+            s->status = RGL_E_NOMEM;
         s->width = sc->camera.width;
         s->height = sc->camera.height;
         s->antialias_depth = sc->antialias_depth;

@@ -70,15 +70,24 @@ expect_rc 0 "--camera-fov"
 cmp -s cam/frame-00000.glb glb/frame-00000.glb && fail "--camera-fov changed nothing" ||
     ok "--camera-fov changes the camera"
 
+# ---- --light adds lights; --no-gl-lights drops the frame's
+run "$good" -q --format gltf -o lights --frames 0 --no-gl-lights --light 'spot at=1,2,3 to=0,0,-5' \
+    --light 'parallel at=0,1,0'
+expect_rc 0 "--light with --format gltf"
+grep -a -q '"lights":\[{"type":"spot".*{"type":"directional"' lights/frame-00000.glb &&
+    ok "--light: a spot and a directional light" || fail "--light: lights not in the file"
+run "$good" -q --format gltf -o nolights --frames 0 --no-gl-lights
+grep -a -q 'KHR_lights_punctual' nolights/frame-00000.glb && fail "--no-gl-lights kept lights" ||
+    ok "--no-gl-lights: no lights"
+
 # ---- bad usage: exit 2, one line
 run "$good" --format obj -o bad
 expect_rc 2 "--format obj"
 one_line "format 'obj': expected pov or gltf"
-for opt in "--render" "--include s.conf" "--light point at=1,2,3" "--antialias" "--quality 3" \
+for opt in "--render" "--include s.conf" "--antialias" "--quality 3" \
     "--radiosity" "--no-shadows" "--reflection 0.5" "--area-lights 4"; do
     # shellcheck disable=SC2086
     set -- $opt
-    [ "$1" = "--light" ] && set -- --light "point at=1,2,3"
     run "$good" --format gltf -o bad "$@"
     expect_rc 2 "$1 with --format gltf"
     one_line "$1.*POV-Ray only, not with --format gltf"
@@ -105,7 +114,8 @@ grep -q "cannot write" "$work/err" || fail "full-disk message: $(cat "$work/err"
 
 # ---- hostile names stay inside the folder
 [ -z "$(find "$work" -name '*.glb' ! -path "$work/glb/*" ! -path "$work/again/*" \
-    ! -path "$work/sel/*" ! -path "$work/alias/*" ! -path "$work/conf/*" ! -path "$work/cam/*")" ] &&
+    ! -path "$work/sel/*" ! -path "$work/alias/*" ! -path "$work/conf/*" ! -path "$work/cam/*" \
+    ! -path "$work/lights/*" ! -path "$work/nolights/*")" ] &&
     ok "no .glb outside the output folders" || fail "a .glb escaped its folder"
 
 echo "$failed failed"
