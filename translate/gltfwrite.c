@@ -320,8 +320,18 @@ static int32_t material_index(writer *w, const scene_look *look, bool lines, boo
             nums(&m, em, 3);
         }
     }
-    if (look->blend == SCENE_BLEND_ALPHA)
+    if (look->blend == SCENE_BLEND_ALPHA) {
         outbuf_puts(&m, ",\"alphaMode\":\"BLEND\"");
+        if (look->alpha_test != SCENE_ALPHA_OFF)
+            note(w, "the alpha test of a blended draw: not written (glTF has one alpha mode)");
+    } else if (look->alpha_test == SCENE_ALPHA_ABOVE) {
+        /* glTF keeps alpha >= cutoff: GL_GEQUAL exactly, GL_GREATER but
+         * for alpha equal to the reference */
+        outbuf_puts(&m, ",\"alphaMode\":\"MASK\",\"alphaCutoff\":");
+        num(&m, clamp01(look->alpha_ref));
+    } else if (look->alpha_test == SCENE_ALPHA_OTHER) {
+        note(w, "alpha test other than GL_GREATER/GL_GEQUAL: not written");
+    }
     /* GL drew both sides (culled faces never reach the scene). */
     outbuf_puts(&m, ",\"doubleSided\":true");
     if (!mat) {
@@ -514,7 +524,8 @@ static void flush_prim(writer *w, outbuf *pj, int mode, int32_t material, bool v
 static void mesh_prim(writer *w, outbuf *pj, const scene_mesh *me, const mat4 *m)
 {
     const scene *s = w->s;
-    if (me->look.blend == SCENE_BLEND_INVISIBLE || me->tri_count == 0)
+    if (me->look.blend == SCENE_BLEND_INVISIBLE || me->look.alpha_test == SCENE_ALPHA_NEVER ||
+        me->tri_count == 0)
         return;
     bool vcol;
     int32_t mat = material_index(w, &me->look, false, &vcol);
@@ -809,7 +820,7 @@ static double light_ref_distance(const scene *s, const double pos[3])
     for (size_t i = 0; i < s->nmeshes; i++) {
         const scene_mesh *me = &s->meshes[i];
         if (me->proto || me->tri_count == 0 || me->first_tri >= s->ntris ||
-            me->look.blend == SCENE_BLEND_INVISIBLE)
+            me->look.blend == SCENE_BLEND_INVISIBLE || me->look.alpha_test == SCENE_ALPHA_NEVER)
             continue;
         const scene_tri *t = &s->tris[me->first_tri];
         if (t->v[0] >= s->nverts)
@@ -1246,7 +1257,7 @@ void gltf_solid_index(writer *w, uint32_t i) { add_index(w, i); }
 void gltf_solid_flush(writer *w, outbuf *pj, const scene_look *look)
 {
     bool vc;
-    if (look->blend == SCENE_BLEND_INVISIBLE) {
+    if (look->blend == SCENE_BLEND_INVISIBLE || look->alpha_test == SCENE_ALPHA_NEVER) {
         w->nv = w->ni = 0;
         return;
     }

@@ -941,6 +941,15 @@ scene_look interp_current_look(interp *ip)
     look.flat = ip->st.a.lighting.shade_model == GL_FLAT;
     look.blend = ip->prim_blend;
     look.fog = ip->st.a.caps[INTERP_CAP_FOG];
+    if (ip->st.a.caps[INTERP_CAP_ALPHA_TEST]) {
+        GLenum f = ip->st.a.color_buffer.alpha_func;
+        look.alpha_test = f == GL_GREATER || f == GL_GEQUAL ? SCENE_ALPHA_ABOVE
+                          : f == GL_NEVER                   ? SCENE_ALPHA_NEVER
+                          : f == GL_ALWAYS                  ? SCENE_ALPHA_OFF
+                                                            : SCENE_ALPHA_OTHER;
+        if (look.alpha_test == SCENE_ALPHA_ABOVE)
+            look.alpha_ref = ip->st.a.color_buffer.alpha_ref;
+    }
     look.material = look.lit ? interp_lit_material(ip) : -1;
     if (look.lit && look.material < 0)
         look.lit = 0;

@@ -59,7 +59,9 @@ typedef struct scene_look {
     uint8_t flat;      /* GL_FLAT: one colour per face, the provoking vertex's */
     uint8_t blend;     /* SCENE_BLEND_*: how the colour behind shows through */
     uint8_t fog;       /* GL_FOG was on */
-    uint8_t scissored, pad_[3]; /* the scissor test cut it to `scissor` */
+    uint8_t scissored;  /* the scissor test cut it to `scissor` */
+    uint8_t alpha_test; /* SCENE_ALPHA_*: GL_ALPHA_TEST's function */
+    uint8_t pad_[2];
     int32_t material;  /* index into scene.materials when lit, else -1 */
     int32_t texture;   /* index into scene.textures, -1 for none (issue 5) */
     uint32_t names;    /* the name stack (glPushName) it was drawn under: 1 +
@@ -68,7 +70,16 @@ typedef struct scene_look {
                            image (origin at its lower left), when scissored */
     int32_t texture1;  /* a second texture unit's, combined with the result of
                           the first by its env_mode (GL 2.1 3.8.13), or -1 */
+    float alpha_ref;   /* the alpha test's reference, for SCENE_ALPHA_ABOVE */
 } scene_look;
+
+/* The alpha test of a look (glAlphaFunc with GL_ALPHA_TEST on). */
+enum {
+    SCENE_ALPHA_OFF = 0,   /* off, or GL_ALWAYS */
+    SCENE_ALPHA_ABOVE = 1, /* GL_GREATER, GL_GEQUAL: fragments from alpha_ref up */
+    SCENE_ALPHA_NEVER = 2, /* GL_NEVER: nothing drawn */
+    SCENE_ALPHA_OTHER = 3, /* GL_LESS, GL_LEQUAL, GL_EQUAL, GL_NOTEQUAL */
+};
 
 /* A run of triangles sharing transform and look: one mesh2 in SDL. */
 typedef struct scene_mesh {

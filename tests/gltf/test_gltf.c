@@ -11,7 +11,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <GL/gl.h>
+
 #include "../translate/check.h"
+#include "../translate/scenes.h"
+#include "format.h"
+#include "frame.h"
 #include "gltfwrite.h"
 #include "mat4.h"
 #include "scene.h"
@@ -275,6 +280,14 @@ static void test_materials_lights(void)
     l2.blend = SCENE_BLEND_ALPHA;
     mat4 m2 = mat4_translate(0, 0, -6);
     triangle(&s, &m2, &l2);
+    scene_look l4 = unlit();
+    l4.alpha_test = SCENE_ALPHA_ABOVE;
+    l4.alpha_ref = 0.25f;
+    mat4 m4 = mat4_translate(0, 0, -5.5);
+    triangle(&s, &m4, &l4);
+    scene_look l5 = unlit();
+    l5.alpha_test = SCENE_ALPHA_NEVER;
+    triangle(&s, &m4, &l5);
     scene_look l3 = unlit();
     l3.blend = SCENE_BLEND_INVISIBLE;
     mat4 m3 = mat4_translate(0, 0, -7);
@@ -297,9 +310,11 @@ static void test_materials_lights(void)
     sp->attenuation[0] = 2;
     gltf_stats st;
     char *j = write_glb(&s, "materials_lights", &st, NULL);
-    CHECK_EQ_U(st.materials, 2);
+    CHECK_EQ_U(st.materials, 3);
     CHECK_EQ_U(st.meshes, 1);
-    CHECK(count(j, "\"mode\":4") == 2); /* the invisible one dropped */
+    CHECK(count(j, "\"mode\":4") == 3); /* the invisible ones dropped */
+    /* the alpha test GL_GREATER 0.25 */
+    CHECK(strstr(j, "\"alphaMode\":\"MASK\",\"alphaCutoff\":0.25") != NULL);
     /* lit: diffuse as base colour, (2 / (n + 2))^(1/4) roughness, specular */
     CHECK_NEAR(jarr(j, "baseColorFactor", 0), 0.7, 1e-6);
     CHECK_NEAR(jarr(j, "baseColorFactor", 1), 0.25, 1e-6);
@@ -311,9 +326,9 @@ static void test_materials_lights(void)
      * lights have no ambient) */
     CHECK_NEAR(jarr(j, "emissiveFactor", 0), 0.04, 1e-6);
     CHECK(count(j, "\"alphaMode\":\"BLEND\"") == 1);
-    CHECK(count(j, "\"doubleSided\":true") == 2);
-    /* colour material: COLOR_0 on the second primitive only */
-    CHECK(count(j, "COLOR_0") == 1);
+    CHECK(count(j, "\"doubleSided\":true") == 3);
+    /* colour material: COLOR_0 on the second primitive (and the unlit one) */
+    CHECK(count(j, "COLOR_0") == 2);
     /* lights: pi x GL's diffuse for the directional light; the spot's
      * constant attenuation 2 over the fitted 1/d^2 at the scene's centre */
     CHECK(strstr(j, "KHR_lights_punctual") != NULL);
@@ -425,6 +440,43 @@ static void test_determinism_and_failures(void)
     scene_finish(&s);
 }
 
+/* Through the interpreter: the paper's box, then with the alpha test on. */
+static void test_from_trace(void)
+{
+    seq q;
+    seq_init(&q);
+    scene_paper_box(&q);
+    CMD(&q, Enable, GL_ALPHA_TEST);
+    CMD(&q, AlphaFunc, GL_GEQUAL, 0.5);
+    CMD(&q, Begin, GL_TRIANGLES);
+    CMD(&q, Color4f, 1, 1, 1, 0.75);
+    CMD(&q, Vertex3f, 0, 0, 0);
+    CMD(&q, Vertex3f, 1, 0, 0);
+    CMD(&q, Vertex3f, 0, 1, 0);
+    CMD0(&q, End);
+    trace t;
+    trace_init(&t);
+    trace_frame(&t, 0, 0, 0, 0, &q);
+    trace_finish(&t);
+    rgl_reader *r = NULL;
+    CHECK(rgl_reader_open_memory(t.data, t.size, &r, NULL) == RGL_OK);
+    translator *tr = r ? translator_create(r, NULL) : NULL;
+    frame_result res;
+    if (tr && translator_build(tr, 0, NULL, &res) == RGL_OK) {
+        char *j = write_glb(translator_scene(tr), "paper_box_alpha", NULL, NULL);
+        CHECK(strstr(j, "\"type\":\"orthographic\"") != NULL);
+        CHECK_EQ_U(count(j, "\"alphaMode\":\"MASK\",\"alphaCutoff\":0.5"), 1);
+        CHECK_EQ_U(count(j, "\"mode\":4"), 2);
+        free(j);
+    } else {
+        CHECK(!"the paper's box translated");
+    }
+    translator_destroy(tr);
+    rgl_reader_destroy(r);
+    trace_free(&t);
+    seq_free(&q);
+}
+
 int main(int argc, char **argv)
 {
     outdir = argc > 1 ? argv[1] : NULL;
@@ -433,5 +485,6 @@ int main(int argc, char **argv)
     test_materials_lights();
     test_solids_lines_textures();
     test_determinism_and_failures();
+    test_from_trace();
     return CHECK_RESULT("test_gltf");
 }
