@@ -726,6 +726,8 @@ static void orient(const double fwd_in[3], const double up_in[3], double q[4])
 
 /* ---- the camera ---------------------------------------------------------------------- */
 
+static double light_ref_distance(const scene *s, const double pos[3]);
+
 static void write_camera(writer *w)
 {
     const scene_camera *cam = &w->s->camera;
@@ -748,6 +750,9 @@ static void write_camera(writer *w)
     for (int c = 0; c < 3; c++)
         fwd[c] /= fl;
     double focal = dot3(cam->direction, fwd);
+    if (focal < 0) /* right x up along the view: a left-handed projection */
+        note(w, "camera: a mirrored projection; glTF's camera is right-handed, it looks "
+                "from the other side (same framing, depth order reversed)");
     /* near and far: where the clip planes cut the axis from location */
     double znear = 0, zfar = 0;
     for (int i = 0; cam->has_clip && i < 2; i++) {
@@ -767,9 +772,6 @@ static void write_camera(writer *w)
             znear = 0;
             zfar = 1e4;
         }
-        if (znear < 0) {
-            note(w, "camera: the near plane lies behind the eye; the camera moved back to it");
-        }
         outbuf_puts(o, "{\"type\":\"orthographic\",\"orthographic\":{\"xmag\":");
         num(o, rl / 2);
         outbuf_puts(o, ",\"ymag\":");
@@ -779,9 +781,9 @@ static void write_camera(writer *w)
         outbuf_puts(o, "}}");
     } else {
         if (!(focal > 0))
-            focal = 1;
-        if (!(znear > 0))
-            znear = focal * 1e-3;
+            focal = -focal > 0 ? -focal : 1;
+        if (!(znear > 0)) /* no near plane (rayglFrameBegin): 1/100 of the scene's distance */
+            znear = light_ref_distance(w->s, cam->location) * 0.01;
         double yfov = 2 * atan(ul / 2 / focal);
         outbuf_puts(o, "{\"type\":\"perspective\",\"perspective\":{\"aspectRatio\":");
         num(o, rl / ul);
