@@ -1076,6 +1076,12 @@ static void write_extras(writer *w, outbuf *j, const gltf_frame_info *info)
     for (int c = 0; c < 4; c++)
         bg[c] = clamp01(s->background[c]);
     nums(j, bg, 4);
+    /* glTF cameras have no pixel size: the GL viewport's (or --width/--height) */
+    outbuf_puts(j, ",\"imageSize\":[");
+    outbuf_i64(j, s->camera.width);
+    outbuf_putc(j, ',');
+    outbuf_i64(j, s->camera.height);
+    outbuf_putc(j, ']');
     if (s->fog.on) {
         outbuf_puts(j, ",\"fog\":{\"mode\":");
         jstr(j, s->fog.mode == GL_EXP ? "exp" : s->fog.mode == GL_EXP2 ? "exp2" : "linear");

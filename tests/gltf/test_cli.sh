@@ -70,6 +70,11 @@ expect_rc 0 "--camera-fov"
 cmp -s cam/frame-00000.glb glb/frame-00000.glb && fail "--camera-fov changed nothing" ||
     ok "--camera-fov changes the camera"
 
+run "$good" -q --format gltf -o size --frames 0 --width 800 --height 200
+expect_rc 0 "--width --height"
+grep -a -q '"aspectRatio":4,' size/frame-00000.glb && grep -a -q '"imageSize":\[800,200\]' size/frame-00000.glb &&
+    ok "--width 800 --height 200: aspect 4, imageSize in extras" || fail "--width/--height not in the file"
+
 # ---- --light adds lights; --no-gl-lights drops the frame's
 run "$good" -q --format gltf -o lights --frames 0 --no-gl-lights --light 'spot at=1,2,3 to=0,0,-5' \
     --light 'parallel at=0,1,0'
@@ -115,7 +120,7 @@ grep -q "cannot write" "$work/err" || fail "full-disk message: $(cat "$work/err"
 # ---- hostile names stay inside the folder
 [ -z "$(find "$work" -name '*.glb' ! -path "$work/glb/*" ! -path "$work/again/*" \
     ! -path "$work/sel/*" ! -path "$work/alias/*" ! -path "$work/conf/*" ! -path "$work/cam/*" \
-    ! -path "$work/lights/*" ! -path "$work/nolights/*")" ] &&
+    ! -path "$work/lights/*" ! -path "$work/nolights/*" ! -path "$work/size/*")" ] &&
     ok "no .glb outside the output folders" || fail "a .glb escaped its folder"
 
 echo "$failed failed"
