@@ -266,13 +266,16 @@ static int32_t material_index(writer *w, const scene_look *look, bool lines, boo
         w->failed = true;
         return -1;
     }
-    const scene_material *mat = look->lit && !lines && look->material >= 0 &&
-                                        (size_t)look->material < s->nmaterials
-                                    ? &s->materials[look->material]
-                                    : NULL;
     const scene_texture *tx = look->texture >= 0 && (size_t)look->texture < s->ntextures
                                   ? &s->textures[look->texture]
                                   : NULL;
+    /* GL_REPLACE (or DECAL) of a colour texture discards the lit colour:
+     * the surface shows the texel, unlit. */
+    const scene_material *mat = look->lit && !lines && look->material >= 0 &&
+                                        (size_t)look->material < s->nmaterials &&
+                                        !(tx && tx->colour_is_texel)
+                                    ? &s->materials[look->material]
+                                    : NULL;
     int32_t tex = tx && !lines ? texture_index(w, look->texture) : -1;
     if (tex >= 0 && tx->env_mode == GL_BLEND)
         note(w, "GL_BLEND texture environment: written as GL_MODULATE");

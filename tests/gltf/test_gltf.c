@@ -388,12 +388,27 @@ static void test_solids_lines_textures(void)
     CHECK(l.texture == 0);
     mat4 m = mat4_translate(0, 2, -8);
     triangle(&s, &m, &l);
+    /* lit, GL_REPLACE: the texel alone, unlit */
+    t.rgba = tr_realloc(NULL, 16);
+    memset(t.rgba, 200, 16);
+    t.env_mode = 0x1E01; /* GL_REPLACE */
+    t.colour_is_texel = true;
+    t.hash = 2;
+    scene_look lr = unlit();
+    lr.texture = scene_add_texture(&s, &t);
+    lr.lit = 1;
+    lr.material = material(&s, 0.5f, 0.5f, 0.5f, 0, 0, 0);
+    mat4 mr = mat4_translate(2, 2, -8);
+    triangle(&s, &mr, &lr);
     gltf_stats st;
     char *j = write_glb(&s, "solids_lines_textures", &st, NULL);
     CHECK(count(j, "\"mode\":1") == 1);
     CHECK(count(j, "\"mode\":0") == 1);
-    CHECK(count(j, "\"mode\":4") == 1 + SCENE_SOLID_TEAPOT + 1);
-    CHECK_EQ_U(st.images, 1);
+    CHECK(count(j, "\"mode\":4") == 2 + SCENE_SOLID_TEAPOT + 1);
+    CHECK_EQ_U(st.images, 2);
+    CHECK(count(j, "KHR_materials_specular") == 0); /* the lit GL_REPLACE draw is unlit */
+    CHECK(count(j, "\"baseColorTexture\":{\"index\":1},\"metallicFactor\":0},\"doubleSided\":true,"
+                   "\"extensions\":{\"KHR_materials_unlit\":{}}") == 1);
     CHECK(strstr(j, "\"mimeType\":\"image/png\"") != NULL);
     CHECK(strstr(j, "\"wrapS\":10497,\"wrapT\":33071") != NULL);
     CHECK(strstr(j, "\"magFilter\":9729") != NULL);
