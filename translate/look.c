@@ -727,6 +727,11 @@ int look_add_lights(const look_settings *l, scene *s)
             sl->color[k] = (float)L->color[k];
         }
         sl->spot_cutoff = (float)(L->kind == LOOK_LIGHT_SPOT ? L->falloff : 180);
+        /* POV-Ray's full-intensity radius as GL's exponent whose falloff is
+         * half way down midway between radius and falloff */
+        double mid = (L->radius + L->falloff) / 2 * 3.14159265358979323846 / 180;
+        if (L->kind == LOOK_LIGHT_SPOT && L->radius < L->falloff && mid > 0 && cos(mid) > 0)
+            sl->spot_exponent = (float)(log(0.5) / log(cos(mid)));
         sl->attenuation[0] = 1; /* POV-Ray's lights do not fade */
     }
     return 0;

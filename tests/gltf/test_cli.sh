@@ -76,11 +76,14 @@ grep -a -q '"aspectRatio":4,' size/frame-00000.glb && grep -a -q '"imageSize":\[
     ok "--width 800 --height 200: aspect 4, imageSize in extras" || fail "--width/--height not in the file"
 
 # ---- --light adds lights; --no-gl-lights drops the frame's
-run "$good" -q --format gltf -o lights --frames 0 --no-gl-lights --light 'spot at=1,2,3 to=0,0,-5' \
+run "$good" -q --format gltf -o lights --frames 0 --no-gl-lights \
+    --light 'spot at=1,2,3 to=0,0,-5 radius=20 falloff=40' \
     --light 'parallel at=0,1,0'
 expect_rc 0 "--light with --format gltf"
 grep -a -q '"lights":\[{"type":"spot".*{"type":"directional"' lights/frame-00000.glb &&
     ok "--light: a spot and a directional light" || fail "--light: lights not in the file"
+grep -a -q '"spot":{"innerConeAngle":0.34906[0-9]*,"outerConeAngle":0.6981317}' lights/frame-00000.glb &&
+    ok "--light spot: radius 20, falloff 40 as the cones" || fail "--light spot cones: $(grep -a -o '"spot":{[^}]*}' lights/frame-00000.glb)"
 run "$good" -q --format gltf -o nolights --frames 0 --no-gl-lights
 grep -a -q 'KHR_lights_punctual' nolights/frame-00000.glb && fail "--no-gl-lights kept lights" ||
     ok "--no-gl-lights: no lights"
