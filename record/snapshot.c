@@ -382,6 +382,7 @@ bool rgl_snapshot_take(rgl_stream *s, rgl_buf *out)
     snap_texenv(out);
     rgl_emit(out, RGL_OP_ListBase, "e", (uint32_t)get_i(GL_LIST_BASE));
     snap_textures(s, out);
+    rgl_quadrics_snapshot(out);
     snap_lists(s, out);
     snap_matrices(out, mode);
     return true;

@@ -427,9 +427,15 @@ static void call_list(interp *ip, uint32_t name)
     }
     const rgl_cmd *outer = ip->cmd;
     rgl_error err;
+    /* GLU quadric calls are client state, done at compile time and never
+     * stored in a list: the recorder writes a compiled shape's quadric
+     * state into the body before it, for the body alone. */
+    interp_quadric quadrics[INTERP_QUADRICS];
+    memcpy(quadrics, ip->quadrics, sizeof quadrics);
     ip->list_depth++;
     rgl_status st = interp_run(ip, data, size, offset, &err);
     ip->list_depth--;
+    memcpy(ip->quadrics, quadrics, sizeof quadrics);
     ip->cmd = outer;
     if (st != RGL_OK) {
         interp_diag(ip, DIAG_IGNORED,

@@ -1,0 +1,85 @@
+/* test_shapes.c: issue 14's shapes in the interpreter.
+ *
+ * Quadric state and display lists: GLU quadric calls are client state,
+ * done at compile time and never stored in a list, so a quadric state
+ * command in a list body (the recorder writes a compiled shape's state
+ * there) holds for the body alone; the quadric outside keeps its own.
+ */
+#include <GL/gl.h>
+#include <GL/glu.h>
+#include <string.h>
+
+#include "check.h"
+#include "interp.h"
+#include "tracegen.h"
+
+static scene sc;
+static diag_log dlog;
+static seq body;
+
+static rgl_status fetch(void *ctx, uint32_t id, rgl_resource *out, rgl_error *err)
+{
+    (void)ctx;
+    if (id != 1) {
+        err->status = RGL_E_RESOURCE;
+        return RGL_E_RESOURCE;
+    }
+    memset(out, 0, sizeof *out);
+    out->id = id;
+    out->kind = RGL_RES_COMMANDS;
+    out->data = body.data;
+    out->size = body.len;
+    return RGL_OK;
+}
+
+static interp *fresh(void)
+{
+    scene_reset(&sc);
+    diag_clear(&dlog);
+    interp *ip = interp_create(&sc, &dlog);
+    interp_set_resources(ip, fetch, NULL);
+    interp_begin_frame(ip);
+    return ip;
+}
+
+static void run(interp *ip, seq *s)
+{
+    rgl_error err;
+    CHECK(interp_run(ip, s->data, s->len, 0, &err) == RGL_OK);
+    seq_free(s);
+}
+
+static void test_quadric_state_in_list(void)
+{
+    interp *ip = fresh();
+    seq_init(&body);
+    CMD(&body, QuadricDrawStyle, 1, GLU_LINE);
+    CMD(&body, Disk, 1, 0.25, 1.0, 8, 2);
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 64, 64);
+    CMD(&s, NewQuadric, 1);
+    CMD(&s, NewList, 1, GL_COMPILE, 1);
+    CMD0(&s, EndList);
+    CMD(&s, Translatef, 0, 0, -5);
+    CMD(&s, CallList, 1);
+    run(ip, &s);
+    size_t lines = sc.nlines;
+    CHECK(lines > 0);           /* the body's GLU_LINE disk */
+    CHECK_EQ_U(sc.nsolids, 0);
+    seq_init(&s);
+    CMD(&s, Disk, 1, 0.25, 1.0, 8, 2); /* the quadric's own style: GLU_FILL */
+    run(ip, &s);
+    CHECK_EQ_U(sc.nlines, lines);
+    CHECK_EQ_U(sc.nsolids, 1); /* a full filled disk is an exact disc */
+    interp_destroy(ip);
+    seq_free(&body);
+}
+
+int main(void)
+{
+    scene_init(&sc);
+    test_quadric_state_in_list();
+    scene_finish(&sc);
+    return CHECK_RESULT("test_shapes");
+}
