@@ -374,6 +374,13 @@ void interp_painter_apply(const interp *ip, uint32_t painter, mat4 *to_eye);
 bool interp_render_mode_draws(interp *ip);
 uint32_t interp_names_for_draw(interp *ip);
 
+/* glPolygonOffset (interp_offset.c). interp_offset_active: polygons drawn
+ * now are offset (their shapes are drawn as GL's facets);
+ * interp_offset_apply: moves a polygon draw's to_eye along the camera's
+ * rays by its offset (a note when it does). */
+bool interp_offset_active(const interp *ip);
+void interp_offset_apply(interp *ip, mat4 *to_eye);
+
 /* The scissor test (interp_scissor.c). interp_scissor_cuts: it is on and
  * its box leaves out part of viewport vp. interp_scissor_clear: a glClear
  * of the colour buffer with the scissor test on; false when the box holds

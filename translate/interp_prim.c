@@ -225,6 +225,7 @@ static bool setup_transform(interp *ip)
         return false;
     }
     painter_shift(ip, &to_eye);
+    interp_offset_apply(ip, &to_eye);
     ip->prim_to_eye = to_eye;
     ip->prim_in_eye = false;
     if (!mat4_affine(&to_eye)) {
