@@ -8,13 +8,23 @@
  * glPolygonOffset: an offset polygon draw moves one pixel along the
  * camera's rays (away for a positive offset), an offset shape is drawn as
  * GL's facets, lines are not moved, and a note says so.
+ *
+ * The teapot mesh: its patches share their seam vertices (no two vertices
+ * nearly equal), nothing is left just off the axis, the normals are unit,
+ * and the writer declares RGL_Teapot as that mesh.
  */
 #include <GL/gl.h>
 #include <GL/glu.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "check.h"
 #include "interp.h"
+#include "outbuf.h"
+#include "povwrite_solid.h"
+#include "teapot_mesh.h"
 #include "tracegen.h"
 
 static scene sc;
@@ -143,11 +153,108 @@ static void test_polygon_offset(void)
     interp_destroy(ip);
 }
 
+static int cmp_x(const void *a, const void *b)
+{
+    float x = (*(const float(*)[3])a)[0], y = (*(const float(*)[3])b)[0];
+    return x < y ? -1 : x > y;
+}
+
+/* Edge (a, b) with a < b, for counting how many triangles use it. */
+static int cmp_edge(const void *a, const void *b)
+{
+    const uint32_t *x = a, *y = b;
+    return x[0] != y[0] ? (x[0] < y[0] ? -1 : 1) : x[1] != y[1] ? (x[1] < y[1] ? -1 : 1) : 0;
+}
+
+static void test_teapot_mesh(void)
+{
+    teapot_mesh m;
+    int built = teapot_mesh_build(&m, 32);
+    CHECK(built == 0);
+    if (built != 0)
+        return;
+    CHECK(m.nverts > 30000 && m.nverts < 32 * 33 * 33);
+    CHECK(m.ntris > 60000 && m.ntris <= 32 * 32 * 32 * 2);
+    /* Seams shared: no two vertices within 1e-5 (sorted by x, then the
+     * neighbours within that x). */
+    float (*v)[3] = malloc(m.nverts * sizeof *v);
+    size_t near = 0, off_axis = 0, not_unit = 0;
+    CHECK(v != NULL);
+    if (v) {
+        memcpy(v, m.pos, m.nverts * sizeof *v);
+        qsort(v, m.nverts, sizeof *v, cmp_x);
+        for (size_t i = 0; i < m.nverts; i++)
+            for (size_t j = i + 1; j < m.nverts && v[j][0] - v[i][0] < 1e-5f; j++)
+                if (fabsf(v[j][1] - v[i][1]) < 1e-5f && fabsf(v[j][2] - v[i][2]) < 1e-5f)
+                    near++;
+        free(v);
+    }
+    for (size_t i = 0; i < m.nverts; i++) {
+        double r = hypot(m.pos[i][0], m.pos[i][2]);
+        if (r > 0 && r < 0.0025)
+            off_axis++;
+        double l = sqrt((double)m.normal[i][0] * m.normal[i][0] +
+                        (double)m.normal[i][1] * m.normal[i][1] +
+                        (double)m.normal[i][2] * m.normal[i][2]);
+        if (fabs(l - 1) > 1e-5)
+            not_unit++;
+    }
+    CHECK_EQ_U(near, 0);
+    CHECK_EQ_U(off_axis, 0);
+    CHECK_EQ_U(not_unit, 0);
+    /* Edges used by one triangle only lie on the teapot's open rims (the
+     * body's and the lid's, the spout's tip, the handle's ends): with
+     * unshared seams each patch's whole border would be open. */
+    uint32_t (*e)[2] = malloc(m.ntris * 3 * sizeof *e);
+    CHECK(e != NULL);
+    if (e) {
+        size_t n = 0;
+        for (size_t t = 0; t < m.ntris; t++)
+            for (int k = 0; k < 3; k++) {
+                uint32_t a = m.tri[t][k], b = m.tri[t][(k + 1) % 3];
+                e[n][0] = a < b ? a : b;
+                e[n][1] = a < b ? b : a;
+                n++;
+            }
+        qsort(e, n, sizeof *e, cmp_edge);
+        size_t open = 0;
+        for (size_t i = 0; i < n;) {
+            size_t j = i + 1;
+            while (j < n && cmp_edge(e[i], e[j]) == 0)
+                j++;
+            open += j - i == 1;
+            i = j;
+        }
+        CHECK(open > 0 && open < 1000);
+        printf("teapot mesh: %zu vertices, %zu triangles, %zu open edges\n", m.nverts, m.ntris,
+               open);
+        free(e);
+    }
+    teapot_mesh_free(&m);
+
+    scene_reset(&sc);
+    scene_solid *so = scene_add_solid(&sc);
+    CHECK(so != NULL);
+    if (so)
+        so->kind = SCENE_SOLID_TEAPOT;
+    outbuf ob;
+    int ok = outbuf_init(&ob, 1 << 24, NULL, NULL);
+    CHECK(ok == 0);
+    if (ok == 0) {
+        povwrite_solid_declares(&ob, &sc);
+        outbuf_putc(&ob, '\0');
+        CHECK(ob.len > 0 && strstr(ob.buf, "#declare RGL_Teapot=mesh2{") != NULL);
+        CHECK(strstr(ob.buf, "bicubic_patch") == NULL);
+        outbuf_finish(&ob);
+    }
+}
+
 int main(void)
 {
     scene_init(&sc);
     test_quadric_state_in_list();
     test_polygon_offset();
+    test_teapot_mesh();
     scene_finish(&sc);
     return CHECK_RESULT("test_shapes");
 }
