@@ -144,6 +144,25 @@ static void snap_enables(rgl_buf *b)
         rgl_emit(b, RGL_OP_Disable, "e", GL_DITHER);
 }
 
+/* User clip planes: GL keeps them in eye space, and the snapshot is
+ * replayed under an identity modelview, so the eye-space equation goes in
+ * as it is; with the enables. Only the planes GL has (querying past
+ * GL_MAX_CLIP_PLANES would raise an error). */
+static void snap_clip_planes(rgl_buf *b)
+{
+    GLint max = 0;
+    glGetIntegerv(GL_MAX_CLIP_PLANES, &max);
+    for (GLint i = 0; i < max && i < 8; i++) {
+        GLenum plane = (GLenum)(GL_CLIP_PLANE0 + i);
+        GLdouble eq[4] = {0, 0, 0, 0};
+        glGetClipPlane(plane, eq);
+        if (eq[0] != 0 || eq[1] != 0 || eq[2] != 0 || eq[3] != 0)
+            rgl_emit(b, RGL_OP_ClipPlane, "edddd", plane, eq[0], eq[1], eq[2], eq[3]);
+        if (glIsEnabled(plane))
+            rgl_emit(b, RGL_OP_Enable, "e", plane);
+    }
+}
+
 /* Evaluators: the grids, and every map that is not GL's initial one (order
  * 1, domain [0, 1], the initial point), read back with glGetMap. GL_COEFF
  * gives glMap2's points u major, as the record packs them (Mesa; the order
@@ -373,6 +392,7 @@ bool rgl_snapshot_take(rgl_stream *s, rgl_buf *out)
     rgl_emit(out, RGL_OP_MatrixMode, "e", GL_MODELVIEW);
     rgl_emit(out, RGL_OP_LoadIdentity, "");
     snap_lights_eye(out);
+    snap_clip_planes(out);
     snap_lights(out);
     snap_current(out);
     snap_materials(out);

@@ -146,6 +146,7 @@ typedef struct gl_attribs {
     } viewport; /* GL_VIEWPORT_BIT */
     struct {
         GLenum matrix_mode;
+        double clip_plane[8][4]; /* eye space, at the glClipPlane call */
     } transform; /* GL_TRANSFORM_BIT */
     struct {
         float clear[4];

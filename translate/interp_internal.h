@@ -374,6 +374,21 @@ void interp_painter_apply(const interp *ip, uint32_t painter, mat4 *to_eye);
 bool interp_render_mode_draws(interp *ip);
 uint32_t interp_names_for_draw(interp *ip);
 
+/* User clip planes (interp_clip.c). interp_clip_look: the id of the
+ * enabled planes' set in the scene (scene_clip_index), 0 for none.
+ * interp_clip_segment: clips eye-space segment p0-p1 by the enabled planes,
+ * moving the ends and setting *t0, *t1 to their places along the original
+ * (0 and 1 when whole); false when nothing is left. interp_clip_point:
+ * whether an eye-space point is kept. */
+uint32_t interp_clip_look(interp *ip);
+bool interp_clip_segment(const interp *ip, double p0[3], double p1[3], double *t0, double *t1);
+bool interp_clip_point(const interp *ip, const double p[3]);
+
+/* The colour and depth masks (interp_masks.c): true when a draw changes
+ * no colour (every colour channel masked) and is left out, with a note
+ * when it writes depth; notes a partial colour mask. */
+bool interp_masks_hide(interp *ip);
+
 /* glPolygonOffset (interp_offset.c). interp_offset_active: polygons drawn
  * now are offset (their shapes are drawn as GL's facets);
  * interp_offset_apply: moves a polygon draw's to_eye along the camera's

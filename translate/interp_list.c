@@ -298,10 +298,11 @@ static void share_output(interp *ip, uint32_t body, const call_mark *mk)
         if (t->provoking < mk->v0 || t->provoking >= s->nverts)
             return;
     }
-    /* A scissor box lies in the picture, not in the list's space. */
+    /* A scissor box lies in the picture, not in the list's space; so do
+     * user clip planes, in eye space. */
     for (size_t k = 0; k < nm; k++)
-        if (s->meshes[mk->m0 + k].look.scissored)
-            return;
+        if (s->meshes[mk->m0 + k].look.scissored || s->meshes[mk->m0 + k].look.clip)
+            return; /* user clip planes too: in eye space */
     mat4 call, inv;
     if (!interp_object_to_eye(ip, &mk->mv, &mk->proj, mk->vp, &call) || !mat4_affine(&call) ||
         !mat4_invert(&call, &inv))

@@ -101,14 +101,10 @@ static void draw_notes(interp *ip)
         interp_note(ip, DIAG_NOTE_SCISSOR); /* lines and points: drawn whole */
     if (c[INTERP_CAP_STENCIL_TEST])
         interp_note(ip, DIAG_NOTE_STENCIL);
-    for (int i = 0; i < 8; i++)
-        if (c[INTERP_CAP_CLIP_PLANE0 + i])
-            interp_note(ip, DIAG_NOTE_CLIP_PLANE);
     if (c[INTERP_CAP_BLEND] && a->color_buffer.blend_equation != GL_FUNC_ADD)
         interp_note(ip, DIAG_NOTE_BLEND_EQUATION);
-    if ((c[INTERP_CAP_COLOR_LOGIC_OP] && a->color_buffer.logic_op != GL_COPY) || !a->color_buffer.mask[0] || !a->color_buffer.mask[1] ||
-        !a->color_buffer.mask[2])
-        interp_note(ip, DIAG_NOTE_COLOR_MASK);
+    if (c[INTERP_CAP_COLOR_LOGIC_OP] && a->color_buffer.logic_op != GL_COPY)
+        interp_note(ip, DIAG_NOTE_COLOR_MASK); /* the masks: interp_masks.c */
     if (!c[INTERP_CAP_DEPTH_TEST] || (a->depth.func != GL_LESS && a->depth.func != GL_LEQUAL))
         interp_note(ip, DIAG_NOTE_DEPTH);
     /* Fog coordinates and secondary colours are recorded, not drawn yet:
@@ -335,7 +331,7 @@ static void begin_mode(interp *ip, GLenum mode)
         return; /* a later accumulation pass: the scene holds the first */
     draw_notes(ip);
     interp_fix_camera(ip);
-    if (interp_scissor_hides(ip) || !setup_transform(ip))
+    if (interp_scissor_hides(ip) || interp_masks_hide(ip) || !setup_transform(ip))
         return;
     ip->prim_skip = false;
     ip->prim_first = ip->scene->nverts;
@@ -564,8 +560,9 @@ static void add_segment(assembly *as, uint32_t i0, uint32_t i1, uint32_t provoki
     interp *ip = as->ip;
     const scene_vertex *v0 = &as->s->verts[i0], *v1 = &as->s->verts[i1];
     const scene_camera *cam = &as->s->camera;
-    double p[2][3], px[2], py[2], w0[2], w1[2];
-    if (!eye_pos(ip, v0, p[0]) || !eye_pos(ip, v1, p[1]))
+    double p[2][3], px[2], py[2], w0[2], w1[2], t[2];
+    if (!eye_pos(ip, v0, p[0]) || !eye_pos(ip, v1, p[1]) ||
+        !interp_clip_segment(ip, p[0], p[1], &t[0], &t[1]))
         return;
     if (!scene_camera_pixel_size(cam, p[0], &px[0], &py[0]) ||
         !scene_camera_pixel_size(cam, p[1], &px[1], &py[1]) ||
@@ -597,8 +594,9 @@ static void add_segment(assembly *as, uint32_t i0, uint32_t i1, uint32_t provoki
         }
     const scene_vertex *c0 = as->flat ? &as->s->verts[provoking] : v0;
     const scene_vertex *c1 = as->flat ? &as->s->verts[provoking] : v1;
-    memcpy(l->color[0], c0->color, sizeof l->color[0]);
-    memcpy(l->color[1], c1->color, sizeof l->color[1]);
+    for (int e = 0; e < 2; e++) /* cut by a clip plane: the colour there */
+        for (int k = 0; k < 4; k++)
+            l->color[e][k] = (float)(c0->color[k] + (c1->color[k] - c0->color[k]) * t[e]);
 }
 
 /* GL's aliased point: a square of size x size pixels centred on the
@@ -609,8 +607,8 @@ static void add_point(assembly *as, uint32_t i, uint32_t colour_from)
 {
     double p[3], px, py, r[3], u[3], w[2];
     const scene_camera *cam = &as->s->camera;
-    if (!eye_pos(as->ip, &as->s->verts[i], p) || !scene_camera_pixel_size(cam, p, &px, &py) ||
-        !scene_camera_project(cam, p, w))
+    if (!eye_pos(as->ip, &as->s->verts[i], p) || !interp_clip_point(as->ip, p) ||
+        !scene_camera_pixel_size(cam, p, &px, &py) || !scene_camera_project(cam, p, w))
         return;
     if (fabs(w[0]) > cam->width * 0.5 || fabs(w[1]) > cam->height * 0.5)
         return;
@@ -898,6 +896,7 @@ scene_look interp_current_look(interp *ip)
     }
     look.names = interp_names_for_draw(ip);
     interp_scissor_look(ip, &look);
+    look.clip = interp_clip_look(ip);
     return look;
 }
 

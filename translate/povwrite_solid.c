@@ -10,6 +10,7 @@
 
 #include <math.h>
 
+#include "povwrite_clip.h"
 #include "teapot.h"
 #include "teapot_mesh.h"
 
@@ -120,6 +121,7 @@ static void write_solid(outbuf *ob, const scene *s, const scene_solid *so, const
     }
     put_matrix(ob, &so->to_eye);
     povwrite_scissor(ob, s, &so->look);
+    povwrite_clip(ob, s, &so->look);
     outbuf_puts(ob, "}\n");
 }
 

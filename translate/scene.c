@@ -42,6 +42,7 @@ void scene_finish(scene *s)
     tr_free(s->materials);
     tr_free(s->overlay);
     tr_free(s->names);
+    tr_free(s->clips);
     memset(s, 0, sizeof *s);
 }
 
@@ -51,6 +52,7 @@ void scene_reset(scene *s)
     s->nlights = 0;
     s->nmaterials = 0;
     s->nnames = s->names_last = 0;
+    s->nclips = s->clips_last = 0;
     s->lights_fixed = false;
     memset(&s->fog, 0, sizeof s->fog);
     s->have_camera = false;

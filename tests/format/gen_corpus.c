@@ -341,6 +341,36 @@ static int write_mtex(const char *dir)
     return write_file(dir, "mtex.bin", seq, eval_len);
 }
 
+/* ---- Shapes and per-fragment tests: clip planes, offsets, masks, quadrics -------- */
+
+static int write_shapes(const char *dir)
+{
+    eval_len = 0;
+    EV(Translatef, 1, 0, -5);
+    EV(ClipPlane, 0x3000, 1, 0, 0, 0.5); /* GL_CLIP_PLANE0 */
+    EV(ClipPlane, 0x3007, 0, -1, 0, 1);
+    EV(ClipPlane, 0x3008, 0, 0, 1, 0); /* past the eighth: rejected */
+    EV(Enable, 0x3000);
+    EV(Enable, 0x3007);
+    EV(Enable, 0x8037); /* GL_POLYGON_OFFSET_FILL */
+    EV(PolygonOffset, 1, 1);
+    EV(NewQuadric, 1);
+    EV(QuadricDrawStyle, 1, 100012); /* GLU_LINE */
+    EV(Sphere, 1, 1, 8, 4);
+    EV(SolidTeapot, 1);
+    EV(Begin, 0x0001); /* GL_LINES */
+    EV(Vertex2f, -2, 0);
+    EV(Vertex2f, 2, 1);
+    eval_cmd(RGL_OP_End, NULL, 0, NULL, 0);
+    EV(Begin, 0x0000); /* GL_POINTS */
+    EV(Vertex2f, -0.75, 0);
+    EV(Vertex2f, 0.75, 0);
+    eval_cmd(RGL_OP_End, NULL, 0, NULL, 0);
+    EV(ColorMask, 0, 0, 0, 0);
+    EV(Rectf, -1, -1, 1, 1);
+    return write_file(dir, "shapes.bin", seq, eval_len);
+}
+
 int main(int argc, char **argv)
 {
     rng r = {0x5eed5eed12345678ull};
@@ -367,5 +397,6 @@ int main(int argc, char **argv)
     rc |= write_accum(argv[1]);
     rc |= write_select(argv[1]);
     rc |= write_mtex(argv[1]);
+    rc |= write_shapes(argv[1]);
     return rc;
 }

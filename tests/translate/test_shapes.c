@@ -9,6 +9,14 @@
  * camera's rays (away for a positive offset), an offset shape is drawn as
  * GL's facets, lines are not moved, and a note says so.
  *
+ * User clip planes: glClipPlane's plane in eye space as of its call,
+ * triangles and solids carrying the enabled set in their look (written as
+ * clipped_by planes after the matrix), lines cut with their colour
+ * interpolated, points kept or dropped by their centre.
+ *
+ * Colour masks: a draw with every colour channel masked is left out (a
+ * note when it writes depth); a partial mask is drawn, with a note.
+ *
  * The teapot mesh: its patches share their seam vertices (no two vertices
  * nearly equal), nothing is left just off the axis, the normals are unit,
  * and the writer declares RGL_Teapot as that mesh.
@@ -23,6 +31,7 @@
 #include "check.h"
 #include "interp.h"
 #include "outbuf.h"
+#include "povwrite_clip.h"
 #include "povwrite_solid.h"
 #include "teapot_mesh.h"
 #include "tracegen.h"
@@ -249,12 +258,138 @@ static void test_teapot_mesh(void)
     }
 }
 
+static void test_clip_planes(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 100, 100);
+    CMD(&s, MatrixMode, GL_PROJECTION);
+    CMD(&s, Frustum, -1, 1, -1, 1, 1, 100);
+    CMD(&s, MatrixMode, GL_MODELVIEW);
+    CMD(&s, Enable, GL_DEPTH_TEST);
+    CMD(&s, Translatef, 1, 0, -10);
+    /* x >= 0 in this space: x_eye >= 1 in eye space. */
+    CMD(&s, ClipPlane, GL_CLIP_PLANE2, 1, 0, 0, 0);
+    CMD(&s, ClipPlane, GL_CLIP_PLANE0 + 8, 1, 0, 0, 0); /* past Mesa's 8 */
+    CMD0(&s, LoadIdentity); /* does not move the plane */
+    CMD(&s, Translatef, 0, 0, -10);
+    CMD(&s, Begin, GL_TRIANGLES); /* not clipped yet */
+    CMD(&s, Vertex2f, 0, 0);
+    CMD(&s, Vertex2f, 1, 0);
+    CMD(&s, Vertex2f, 0, 1);
+    CMD0(&s, End);
+    CMD(&s, Enable, GL_CLIP_PLANE2);
+    CMD(&s, Begin, GL_TRIANGLES);
+    CMD(&s, Vertex2f, 0, 0);
+    CMD(&s, Vertex2f, 1, 0);
+    CMD(&s, Vertex2f, 0, 1);
+    CMD0(&s, End);
+    CMD(&s, Begin, GL_LINES);
+    CMD(&s, Color3f, 0, 0, 0);
+    CMD(&s, Vertex2f, 0, 0.5);
+    CMD(&s, Color3f, 1, 1, 1);
+    CMD(&s, Vertex2f, 2, 0.5); /* cut at its middle: colour 0.5 there */
+    CMD(&s, Vertex2f, -1, 0);  /* wholly clipped */
+    CMD(&s, Vertex2f, 0.5, 0);
+    CMD0(&s, End);
+    CMD(&s, Begin, GL_POINTS);
+    CMD(&s, Vertex2f, 0.9, 0); /* dropped */
+    CMD(&s, Vertex2f, 1.1, 0); /* kept */
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(dlog.e[DIAG_GL_INVALID_ENUM].count, 1);
+    CHECK(sc.nmeshes == 2);
+    if (sc.nmeshes == 2) {
+        CHECK_EQ_U(sc.meshes[0].look.clip, 0);
+        uint32_t n = 0;
+        const double(*p)[4] = scene_clip_set(&sc, sc.meshes[1].look.clip, &n);
+        CHECK(p != NULL && n == 1);
+        if (p && n == 1) {
+            CHECK_NEAR(p[0][0], 1, 1e-12);
+            CHECK_NEAR(p[0][1], 0, 1e-12);
+            CHECK_NEAR(p[0][2], 0, 1e-12);
+            CHECK_NEAR(p[0][3], -1, 1e-12);
+        }
+    }
+    CHECK(sc.nlines == 1);
+    if (sc.nlines == 1) {
+        CHECK_NEAR(sc.lines[0].p[0][0], 1, 1e-6);
+        CHECK_NEAR(sc.lines[0].p[1][0], 2, 1e-6);
+        CHECK_NEAR(sc.lines[0].color[0][0], 0.5, 1e-6);
+        CHECK_NEAR(sc.lines[0].color[1][0], 1, 1e-6);
+    }
+    CHECK(sc.npoints == 1);
+    if (sc.npoints == 1)
+        CHECK_NEAR(sc.points[0].p[0], 1.1, 1e-6);
+    CHECK_EQ_U(dlog.e[DIAG_NOTE_CLIP_PLANE].count, 0);
+
+    outbuf ob;
+    int ok = outbuf_init(&ob, 1 << 20, NULL, NULL);
+    CHECK(ok == 0);
+    if (ok == 0 && sc.nmeshes == 2) {
+        povwrite_clip(&ob, &sc, &sc.meshes[1].look);
+        outbuf_putc(&ob, '\0');
+        CHECK(strcmp(ob.buf, "clipped_by{plane{<-1,0,0>,-1}}\n") == 0);
+        if (check_failures)
+            printf("%s", ob.buf);
+    }
+    if (ok == 0)
+        outbuf_finish(&ob);
+    interp_destroy(ip);
+}
+
+static void tri(seq *s)
+{
+    CMD(s, Begin, GL_TRIANGLES);
+    CMD(s, Vertex3f, 0, 0, -5);
+    CMD(s, Vertex3f, 1, 0, -5);
+    CMD(s, Vertex3f, 0, 1, -5);
+    CMD0(s, End);
+}
+
+static void test_color_mask(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 100, 100);
+    CMD(&s, MatrixMode, GL_PROJECTION);
+    CMD(&s, Frustum, -1, 1, -1, 1, 1, 100);
+    CMD(&s, MatrixMode, GL_MODELVIEW);
+    CMD(&s, ColorMask, 0, 0, 0, 0);
+    CMD(&s, DepthMask, 0);
+    tri(&s); /* a stencil-only pass: nothing, no note */
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 0);
+    CHECK_EQ_U(dlog.e[DIAG_NOTE_DEPTH_ONLY].count, 0);
+    seq_init(&s);
+    CMD(&s, Enable, GL_DEPTH_TEST);
+    CMD(&s, DepthMask, 1);
+    tri(&s); /* a depth-only pass: nothing, and a note */
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 0);
+    CHECK_EQ_U(dlog.e[DIAG_NOTE_DEPTH_ONLY].count, 1);
+    CHECK_EQ_U(dlog.e[DIAG_NOTE_COLOR_MASK].count, 0);
+    seq_init(&s);
+    CMD(&s, ColorMask, 1, 0, 1, 1);
+    tri(&s); /* drawn whole, noted */
+    CMD(&s, ColorMask, 1, 1, 1, 0);
+    tri(&s); /* alpha alone masked: drawn */
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 2);
+    CHECK_EQ_U(dlog.e[DIAG_NOTE_COLOR_MASK].count, 1);
+    interp_destroy(ip);
+}
+
 int main(void)
 {
     scene_init(&sc);
     test_quadric_state_in_list();
     test_polygon_offset();
     test_teapot_mesh();
+    test_clip_planes();
+    test_color_mask();
     scene_finish(&sc);
     return CHECK_RESULT("test_shapes");
 }
