@@ -1,4 +1,5 @@
-/* test_shapes_quadric.c: GLU quadric state and display lists (issue 14).
+/* test_shapes_quadric.c: GLU quadric state and display lists, and user
+ * clip planes in the snapshot (issue 14).
  * GLU draws a shape compiled into a list with the quadric's state of
  * compile time, and a quadric call made while a list is compiled is done at
  * once, never stored: the recorder writes quadric calls into the frame, a
@@ -95,6 +96,42 @@ static void test_lists(const char *path)
     rgl_reader_destroy(r);
 }
 
+/* A clip plane set under a modelview: the next frame's snapshot holds it
+ * in eye space (GL's, read back), with its enable. */
+static void test_clip_snapshot(const char *path)
+{
+    CHECK(rayglRecordOpen(path) == 0);
+    rayglMatrixMode(GL_MODELVIEW);
+    rayglLoadIdentity();
+    rayglTranslatef(0, 0, -5);
+    const GLdouble eq[4] = {0, 0, 1, 0}; /* z >= 0 here: z_eye >= -5 */
+    rayglClipPlane(GL_CLIP_PLANE1, eq);
+    rayglEnable(GL_CLIP_PLANE1);
+    rayglutSwapBuffers();
+    rayglLoadIdentity();
+    rayglutSwapBuffers();
+    rayglRecordClose();
+    rgl_reader *r = trace_open(path);
+    if (!r)
+        return;
+    rgl_frame_info fi;
+    trace_cmds f0 = trace_frame(r, 0, &fi);
+    CHECK(trace_cmds_find(&f0, 0, "glClipPlane(plane=GL_CLIP_PLANE1, equation=[0, 0, 1, 0])") >= 0);
+    trace_cmds_free(&f0);
+    trace_cmds f1 = trace_frame(r, 1, &fi);
+    trace_cmds_free(&f1);
+    if (CHECK(fi.state != 0)) {
+        trace_cmds snap = trace_resource_cmds(r, fi.state);
+        CHECK(trace_cmds_find(&snap, 0, "glClipPlane(plane=GL_CLIP_PLANE1, equation=[0, 0, 1, 5])") >= 0);
+        CHECK(trace_cmds_find(&snap, 0, "glEnable(cap=GL_CLIP_PLANE1)") >= 0);
+        CHECK(trace_cmds_find(&snap, 0, "glClipPlane(plane=GL_CLIP_PLANE0,") < 0);
+        if (check_failures)
+            trace_cmds_print(&snap, "snapshot");
+        trace_cmds_free(&snap);
+    }
+    rgl_reader_destroy(r);
+}
+
 int main(void)
 {
     OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 16, 0, 0, NULL);
@@ -103,13 +140,16 @@ int main(void)
     char dir[] = "/tmp/raygl-shapes-XXXXXX";
     if (!CHECK(mkdtemp(dir) != NULL))
         return check_exit();
-    char p[64];
+    char p[64], p2[64];
     snprintf(p, sizeof p, "%s/quadric.raygl", dir);
+    snprintf(p2, sizeof p2, "%s/clip.raygl", dir);
     test_lists(p);
+    test_clip_snapshot(p2);
     glFinish();
     OSMesaDestroyContext(ctx);
     if (!check_failures) {
         unlink(p);
+        unlink(p2);
         rmdir(dir);
     }
     return check_exit();
