@@ -38,7 +38,7 @@
     X(NOTE_LISTS, "not translated yet: display lists (calls skipped)") \
     X(NOTE_ARRAYS, "not translated yet: vertex arrays (draws skipped)") \
     X(NOTE_QUADRICS, "not translated yet: GLU quadrics (skipped)") \
-    X(NOTE_STIPPLE, "not translated: line and polygon stipple (drawn solid)") \
+    X(NOTE_STIPPLE, "not translated: polygon stipple (drawn solid)") \
     X(NOTE_SCISSOR, "not translated: scissor test of geometry (drawn whole)") \
     X(NOTE_SCISSOR_CLEAR, "approximated: a scissored clear does not erase what was drawn before it inside its box") \
     X(NOTE_CLIP_PLANE, "not translated: user clip planes") \

@@ -159,6 +159,8 @@ void interp_default_state(gl_state *st)
     a->color_buffer.alpha_func = GL_ALWAYS;
     for (int i = 0; i < 4; i++)
         a->color_buffer.mask[i] = true;
+    a->line.stipple_factor = 1;
+    a->line.stipple_pattern = 0xffff;
     a->depth.func = GL_LESS;
     a->depth.mask = true;
     a->depth.clear = 1;

@@ -136,6 +136,8 @@ typedef struct gl_attribs {
     } polygon; /* GL_POLYGON_BIT */
     struct {
         float width;
+        int32_t stipple_factor;    /* glLineStipple, clamped to [1, 256] */
+        uint16_t stipple_pattern; /* bit 0 first */
     } line; /* GL_LINE_BIT */
     struct {
         float size;

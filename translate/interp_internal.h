@@ -389,6 +389,16 @@ bool interp_clip_point(const interp *ip, const double p[3]);
  * when it writes depth; notes a partial colour mask. */
 bool interp_masks_hide(interp *ip);
 
+/* Line stipple (interp_stipple.c). interp_stipple_on: lines drawn now are
+ * stippled. interp_stipple_dashes: the dashes of eye-space segment p0-p1
+ * (w0-w1 in the window, scene_camera_project's), as [from, to] fractions of the
+ * segment in eye space (at most max), GL's counter starting at *counter
+ * and advanced past the segment. */
+bool interp_stipple_on(const interp *ip);
+size_t interp_stipple_dashes(const interp *ip, const scene_camera *cam, const double p0[3],
+                             const double p1[3], const double w0[2], const double w1[2],
+                             uint64_t *counter, double (*dash)[2], size_t max);
+
 /* glPolygonOffset (interp_offset.c). interp_offset_active: polygons drawn
  * now are offset (their shapes are drawn as GL's facets);
  * interp_offset_apply: moves a polygon draw's to_eye along the camera's

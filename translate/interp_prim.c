@@ -95,8 +95,8 @@ static void draw_notes(interp *ip)
         interp_note(ip, DIAG_NOTE_ALPHA_TEST);
     if (c[INTERP_CAP_TEXTURE_3D] || c[INTERP_CAP_TEXTURE_CUBE_MAP])
         interp_note(ip, DIAG_NOTE_TEXTURE);
-    if (c[INTERP_CAP_LINE_STIPPLE] || c[INTERP_CAP_POLYGON_STIPPLE])
-        interp_note(ip, DIAG_NOTE_STIPPLE);
+    if (c[INTERP_CAP_POLYGON_STIPPLE] && ip->prim_mode > GL_LINE_STRIP)
+        interp_note(ip, DIAG_NOTE_STIPPLE); /* line stipple: interp_stipple.c */
     if (interp_scissor_cuts(ip, a->viewport.rect) && ip->prim_mode <= GL_LINE_STRIP)
         interp_note(ip, DIAG_NOTE_SCISSOR); /* lines and points: drawn whole */
     if (c[INTERP_CAP_STENCIL_TEST])
@@ -500,6 +500,8 @@ typedef struct assembly {
     bool flat;
     float line_width, point_size;
     bool line_smooth, point_smooth;
+    bool stipple;       /* glLineStipple applies (interp_stipple.c) */
+    uint64_t stipple_s; /* GL's stipple counter */
     scene_mesh *mesh;
 } assembly;
 
@@ -560,13 +562,11 @@ static void add_segment(assembly *as, uint32_t i0, uint32_t i1, uint32_t provoki
     interp *ip = as->ip;
     const scene_vertex *v0 = &as->s->verts[i0], *v1 = &as->s->verts[i1];
     const scene_camera *cam = &as->s->camera;
-    double p[2][3], px[2], py[2], w0[2], w1[2], t[2];
+    double p[2][3], w0[2], w1[2], t[2];
     if (!eye_pos(ip, v0, p[0]) || !eye_pos(ip, v1, p[1]) ||
         !interp_clip_segment(ip, p[0], p[1], &t[0], &t[1]))
         return;
-    if (!scene_camera_pixel_size(cam, p[0], &px[0], &py[0]) ||
-        !scene_camera_pixel_size(cam, p[1], &px[1], &py[1]) ||
-        !scene_camera_project(cam, p[0], w0) || !scene_camera_project(cam, p[1], w1))
+    if (!scene_camera_project(cam, p[0], w0) || !scene_camera_project(cam, p[1], w1))
         return;
     double dx = w1[0] - w0[0], dy = w1[1] - w0[1], len = hypot(dx, dy);
     if (!(len > 1e-6))
@@ -582,21 +582,39 @@ static void add_segment(assembly *as, uint32_t i0, uint32_t i1, uint32_t provoki
         ox = as->line_width * 0.5;
         oy = 0;
     }
+    /* Stippled: the dashes GL draws (interp_stipple.c); else the whole. */
+    double dash[1024][2] = {{0, 1}};
+    size_t ndash = 1;
+    if (as->stipple)
+        ndash = interp_stipple_dashes(ip, cam, p[0], p[1], w0, w1, &as->stipple_s, dash,
+                                      sizeof dash / sizeof dash[0]);
     double r[3], u[3];
     image_axes(cam, r, u);
-    scene_line *l = scene_add_line(as->s);
-    if (!l)
-        return;
-    for (int e = 0; e < 2; e++)
-        for (int k = 0; k < 3; k++) {
-            l->p[e][k] = (float)p[e][k];
-            l->half[e][k] = (float)(ox * px[e] * r[k] + oy * py[e] * u[k]);
-        }
     const scene_vertex *c0 = as->flat ? &as->s->verts[provoking] : v0;
     const scene_vertex *c1 = as->flat ? &as->s->verts[provoking] : v1;
-    for (int e = 0; e < 2; e++) /* cut by a clip plane: the colour there */
-        for (int k = 0; k < 4; k++)
-            l->color[e][k] = (float)(c0->color[k] + (c1->color[k] - c0->color[k]) * t[e]);
+    for (size_t d = 0; d < ndash; d++) {
+        double q[2][3], px[2], py[2];
+        for (int e = 0; e < 2; e++)
+            for (int k = 0; k < 3; k++)
+                q[e][k] = p[0][k] + (p[1][k] - p[0][k]) * dash[d][e];
+        if (!scene_camera_pixel_size(cam, q[0], &px[0], &py[0]) ||
+            !scene_camera_pixel_size(cam, q[1], &px[1], &py[1]))
+            continue;
+        scene_line *l = scene_add_line(as->s);
+        if (!l)
+            return;
+        for (int e = 0; e < 2; e++)
+            for (int k = 0; k < 3; k++) {
+                l->p[e][k] = (float)q[e][k];
+                l->half[e][k] = (float)(ox * px[e] * r[k] + oy * py[e] * u[k]);
+            }
+        /* cut by a clip plane or the stipple: the colour there */
+        for (int e = 0; e < 2; e++) {
+            double te = t[0] + (t[1] - t[0]) * dash[d][e];
+            for (int k = 0; k < 4; k++)
+                l->color[e][k] = (float)(c0->color[k] + (c1->color[k] - c0->color[k]) * te);
+        }
+    }
 }
 
 /* GL's aliased point: a square of size x size pixels centred on the
@@ -822,8 +840,10 @@ static void assemble_lines(assembly *as, GLenum mode, uint32_t n)
                 add_point(as, b + i, b + i);
         break;
     case GL_LINES:
-        for (uint32_t i = 0; i + 2 <= n; i += 2)
+        for (uint32_t i = 0; i + 2 <= n; i += 2) {
+            as->stipple_s = 0; /* GL restarts the stipple per segment */
             add_segment(as, b + i, b + i + 1, b + i + 1);
+        }
         break;
     case GL_LINE_STRIP:
     case GL_LINE_LOOP:
@@ -952,6 +972,7 @@ static void end_primitive(interp *ip)
     as.flat = a->lighting.shade_model == GL_FLAT;
     as.swap = a->polygon.front_face == GL_CW;
     as.line_smooth = a->caps[INTERP_CAP_LINE_SMOOTH];
+    as.stipple = interp_stipple_on(ip);
     as.point_smooth = a->caps[INTERP_CAP_POINT_SMOOTH];
     as.line_width = raster_width(a->line.width, as.line_smooth);
     as.point_size = raster_width(a->point.size, as.point_smooth);

@@ -358,9 +358,12 @@ static int write_shapes(const char *dir)
     EV(QuadricDrawStyle, 1, 100012); /* GLU_LINE */
     EV(Sphere, 1, 1, 8, 4);
     EV(SolidTeapot, 1);
-    EV(Begin, 0x0001); /* GL_LINES */
+    EV(Enable, 0x0B24); /* GL_LINE_STIPPLE */
+    EV(LineStipple, 3, 0x1C47);
+    EV(Begin, 0x0003); /* GL_LINE_STRIP */
     EV(Vertex2f, -2, 0);
     EV(Vertex2f, 2, 1);
+    EV(Vertex2f, 0, -3);
     eval_cmd(RGL_OP_End, NULL, 0, NULL, 0);
     EV(Begin, 0x0000); /* GL_POINTS */
     EV(Vertex2f, -0.75, 0);

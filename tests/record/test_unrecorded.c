@@ -32,7 +32,7 @@ static void test_list(void)
 {
     static const char *const counted[] = {
         "glIndexMask", "glIndexi", "glCreateProgram", "glBlendColor", "glutStrokeCharacter",
-        "glPixelMapfv", "glutBitmapCharacter", "glutBitmapString", "glLineStipple", "glStencilFunc",
+        "glPixelMapfv", "glutBitmapCharacter", "glutBitmapString", "glStencilOp", "glStencilFunc",
         "glTexImage3D", "glUseProgram", "glUniform4fv", "glBlendColorEXT", "glBlendEquationSeparate",
         "glPolygonStipple", "gluNurbsSurface", "gluTessVertex", "gluBuild1DMipmaps", "glutInit",
         "glutStrokeCharacter", "glutSolidTeacup", "glReadBuffer",

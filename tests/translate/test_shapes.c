@@ -17,6 +17,9 @@
  * Colour masks: a draw with every colour channel masked is left out (a
  * note when it writes depth); a partial mask is drawn, with a note.
  *
+ * Line stipple: dashes cut in window space, the counter restarting per
+ * GL_LINES segment, counted from where a line enters the window.
+ *
  * The teapot mesh: its patches share their seam vertices (no two vertices
  * nearly equal), nothing is left just off the axis, the normals are unit,
  * and the writer declares RGL_Teapot as that mesh.
@@ -382,6 +385,52 @@ static void test_color_mask(void)
     interp_destroy(ip);
 }
 
+static void test_line_stipple(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 100, 100);
+    CMD(&s, MatrixMode, GL_PROJECTION);
+    CMD(&s, Ortho, 0, 100, 0, 100, -1, 1);
+    CMD(&s, MatrixMode, GL_MODELVIEW);
+    CMD(&s, Enable, GL_LINE_STIPPLE);
+    CMD(&s, LineStipple, 1, 0x00FF); /* 8 on, 8 off */
+    CMD(&s, Begin, GL_LINES);
+    CMD(&s, Vertex2f, 10, 50.5);
+    CMD(&s, Vertex2f, 42, 50.5); /* 32 fragments: dashes 0-8, 16-24 */
+    CMD(&s, Vertex2f, 10, 60.5);
+    CMD(&s, Vertex2f, 14, 60.5); /* restarts: one dash 0-4 */
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK(sc.nlines == 3);
+    if (sc.nlines == 3) {
+        /* eye x = window x under this ortho */
+        CHECK_NEAR(sc.lines[0].p[0][0], 10, 1e-4);
+        CHECK_NEAR(sc.lines[0].p[1][0], 18, 1e-4);
+        CHECK_NEAR(sc.lines[1].p[0][0], 26, 1e-4);
+        CHECK_NEAR(sc.lines[1].p[1][0], 34, 1e-4);
+        CHECK_NEAR(sc.lines[2].p[0][0], 10, 1e-4);
+        CHECK_NEAR(sc.lines[2].p[1][0], 14, 1e-4);
+    }
+    size_t before = sc.nlines;
+    seq_init(&s);
+    CMD(&s, LineStipple, 1000, 0x0001); /* factor clamped to 256: all on */
+    CMD(&s, Begin, GL_LINE_STRIP);
+    CMD(&s, Vertex2f, 0, 20.5);
+    CMD(&s, Vertex2f, 300, 20.5); /* counted from the window: 100 on */
+    CMD(&s, Vertex2f, 300, 30.5);
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(sc.nlines - before, 1);
+    if (sc.nlines - before == 1) {
+        CHECK_NEAR(sc.lines[before].p[0][0], 0, 1e-4);
+        CHECK_NEAR(sc.lines[before].p[1][0], 100, 1e-4);
+    }
+    CHECK_EQ_U(dlog.e[DIAG_NOTE_STIPPLE].count, 0);
+    interp_destroy(ip);
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -390,6 +439,7 @@ int main(void)
     test_teapot_mesh();
     test_clip_planes();
     test_color_mask();
+    test_line_stipple();
     scene_finish(&sc);
     return CHECK_RESULT("test_shapes");
 }
