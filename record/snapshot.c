@@ -163,6 +163,24 @@ static void snap_clip_planes(rgl_buf *b)
     }
 }
 
+/* The stencil state, and its enable. */
+static void snap_stencil(rgl_buf *b)
+{
+    GLint v[8] = {GL_ALWAYS, 0, -1, GL_KEEP, GL_KEEP, GL_KEEP, -1, 0};
+    static const GLenum q[8] = {GL_STENCIL_FUNC, GL_STENCIL_REF, GL_STENCIL_VALUE_MASK,
+                                GL_STENCIL_FAIL, GL_STENCIL_PASS_DEPTH_FAIL,
+                                GL_STENCIL_PASS_DEPTH_PASS, GL_STENCIL_WRITEMASK,
+                                GL_STENCIL_CLEAR_VALUE};
+    for (int k = 0; k < 8; k++)
+        glGetIntegerv(q[k], &v[k]);
+    rgl_emit(b, RGL_OP_StencilFunc, "eie", (uint32_t)v[0], v[1], (uint32_t)v[2]);
+    rgl_emit(b, RGL_OP_StencilOp, "eee", (uint32_t)v[3], (uint32_t)v[4], (uint32_t)v[5]);
+    rgl_emit(b, RGL_OP_StencilMask, "e", (uint32_t)v[6]);
+    rgl_emit(b, RGL_OP_ClearStencil, "i", v[7]);
+    if (glIsEnabled(GL_STENCIL_TEST))
+        rgl_emit(b, RGL_OP_Enable, "e", GL_STENCIL_TEST);
+}
+
 /* Evaluators: the grids, and every map that is not GL's initial one (order
  * 1, domain [0, 1], the initial point), read back with glGetMap. GL_COEFF
  * gives glMap2's points u major, as the record packs them (Mesa; the order
@@ -393,6 +411,7 @@ bool rgl_snapshot_take(rgl_stream *s, rgl_buf *out)
     rgl_emit(out, RGL_OP_LoadIdentity, "");
     snap_lights_eye(out);
     snap_clip_planes(out);
+    snap_stencil(out);
     snap_lights(out);
     snap_current(out);
     snap_materials(out);

@@ -42,7 +42,7 @@
     X(NOTE_SCISSOR, "not translated: scissor test of geometry (drawn whole)") \
     X(NOTE_SCISSOR_CLEAR, "approximated: a scissored clear does not erase what was drawn before it inside its box") \
     X(NOTE_CLIP_PLANE, "not translated: user clip planes") \
-    X(NOTE_STENCIL, "not translated: stencil test") \
+    X(NOTE_STENCIL, "approximated: stencil buffer contents the scene does not follow (values other than one written over the cleared buffer by filled triangles; glStencilOp fail and zfail operations): drawn as if the test passed") \
     X(NOTE_COLOR_MASK, "not translated: colour mask and logic op") \
     X(NOTE_DEPTH, "approximated: depth test off or not GL_LESS (draws in one plane show in draw order, others nearest first)") \
     X(NOTE_PROJECTION, "approximated: geometry drawn with another projection or viewport is remapped into the frame's camera") \

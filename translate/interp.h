@@ -140,6 +140,11 @@ typedef struct gl_attribs {
         uint16_t stipple_pattern; /* bit 0 first */
     } line; /* GL_LINE_BIT */
     struct {
+        GLenum func, fail, zfail, zpass;
+        int32_t ref, clear;
+        uint32_t value_mask, write_mask;
+    } stencil; /* GL_STENCIL_BUFFER_BIT */
+    struct {
         float size;
     } point; /* GL_POINT_BIT */
     struct {

@@ -33,6 +33,15 @@ struct interp_eval;                             /* interp_eval.c */
 struct interp {
     gl_state st;
     interp_quadric quadrics[INTERP_QUADRICS]; /* context state, like st */
+    struct {
+        size_t first;   /* scene.stencil_tris of the buffer's content */
+        int32_t value;  /* written there */
+        int32_t cleared; /* the clear value there */
+        bool written, mixed; /* something / values the scene cannot hold */
+        bool write, only; /* this draw writes the stencil; and no colour */
+        uint8_t clip;     /* this draw kept 1 inside, 2 outside the region */
+        size_t n;         /* the region's triangles at this draw */
+    } stencil; /* interp_stencil.c */
     interp_textures *tex; /* texture objects and unpack state; NULL: none yet */
     struct interp_eval *eval; /* evaluator maps; NULL: all at their initial values */
     scene *scene; /* NULL: state only */
@@ -383,6 +392,18 @@ uint32_t interp_names_for_draw(interp *ip);
 uint32_t interp_clip_look(interp *ip);
 bool interp_clip_segment(const interp *ip, double p0[3], double p1[3], double *t0, double *t1);
 bool interp_clip_point(const interp *ip, const double p[3]);
+
+/* The stencil test (interp_stencil.c). interp_stencil_draw: at a draw's
+ * start, sets ip->stencil.write/clip and returns false when the test
+ * hides the whole draw; interp_stencil_writes: draws now write the
+ * stencil buffer; interp_stencil_look: the region a drawn look is kept
+ * to; interp_stencil_tri: a triangle (eye space) a writing draw covers;
+ * interp_stencil_clear: glClear of the stencil buffer. */
+bool interp_stencil_draw(interp *ip);
+bool interp_stencil_writes(const interp *ip);
+void interp_stencil_look(interp *ip, scene_look *look);
+void interp_stencil_tri(interp *ip, double p[3][3]);
+void interp_stencil_clear(interp *ip);
 
 /* The colour and depth masks (interp_masks.c): true when a draw changes
  * no colour (every colour channel masked) and is left out, with a note

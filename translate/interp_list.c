@@ -301,7 +301,8 @@ static void share_output(interp *ip, uint32_t body, const call_mark *mk)
     /* A scissor box lies in the picture, not in the list's space; so do
      * user clip planes, in eye space. */
     for (size_t k = 0; k < nm; k++)
-        if (s->meshes[mk->m0 + k].look.scissored || s->meshes[mk->m0 + k].look.clip)
+        if (s->meshes[mk->m0 + k].look.scissored || s->meshes[mk->m0 + k].look.clip ||
+            s->meshes[mk->m0 + k].look.stencil_n)
             return; /* user clip planes too: in eye space */
     mat4 call, inv;
     if (!interp_object_to_eye(ip, &mk->mv, &mk->proj, mk->vp, &call) || !mat4_affine(&call) ||

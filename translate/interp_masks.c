@@ -19,6 +19,10 @@ bool interp_masks_hide(interp *ip)
         interp_note(ip, DIAG_NOTE_COLOR_MASK);
         return false;
     }
+    if (ip->stencil.write) { /* a stencil pass: kept for its region */
+        ip->stencil.only = true;
+        return false;
+    }
     if (a->caps[INTERP_CAP_DEPTH_TEST] && a->depth.mask)
         interp_note(ip, DIAG_NOTE_DEPTH_ONLY);
     return true;

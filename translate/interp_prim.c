@@ -99,8 +99,6 @@ static void draw_notes(interp *ip)
         interp_note(ip, DIAG_NOTE_STIPPLE); /* line stipple: interp_stipple.c */
     if (interp_scissor_cuts(ip, a->viewport.rect) && ip->prim_mode <= GL_LINE_STRIP)
         interp_note(ip, DIAG_NOTE_SCISSOR); /* lines and points: drawn whole */
-    if (c[INTERP_CAP_STENCIL_TEST])
-        interp_note(ip, DIAG_NOTE_STENCIL);
     if (c[INTERP_CAP_BLEND] && a->color_buffer.blend_equation != GL_FUNC_ADD)
         interp_note(ip, DIAG_NOTE_BLEND_EQUATION);
     if (c[INTERP_CAP_COLOR_LOGIC_OP] && a->color_buffer.logic_op != GL_COPY)
@@ -331,7 +329,8 @@ static void begin_mode(interp *ip, GLenum mode)
         return; /* a later accumulation pass: the scene holds the first */
     draw_notes(ip);
     interp_fix_camera(ip);
-    if (interp_scissor_hides(ip) || interp_masks_hide(ip) || !setup_transform(ip))
+    if (interp_scissor_hides(ip) || !interp_stencil_draw(ip) || interp_masks_hide(ip) ||
+        !setup_transform(ip))
         return;
     ip->prim_skip = false;
     ip->prim_first = ip->scene->nverts;
@@ -563,6 +562,8 @@ static void add_segment(assembly *as, uint32_t i0, uint32_t i1, uint32_t provoki
     const scene_vertex *v0 = &as->s->verts[i0], *v1 = &as->s->verts[i1];
     const scene_camera *cam = &as->s->camera;
     double p[2][3], w0[2], w1[2], t[2];
+    if (ip->stencil.only)
+        return; /* into the stencil buffer alone (not followed: a note) */
     if (!eye_pos(ip, v0, p[0]) || !eye_pos(ip, v1, p[1]) ||
         !interp_clip_segment(ip, p[0], p[1], &t[0], &t[1]))
         return;
@@ -625,6 +626,8 @@ static void add_point(assembly *as, uint32_t i, uint32_t colour_from)
 {
     double p[3], px, py, r[3], u[3], w[2];
     const scene_camera *cam = &as->s->camera;
+    if (as->ip->stencil.only)
+        return;
     if (!eye_pos(as->ip, &as->s->verts[i], p) || !interp_clip_point(as->ip, p) ||
         !scene_camera_pixel_size(cam, p, &px, &py) || !scene_camera_project(cam, p, w))
         return;
@@ -692,7 +695,14 @@ static bool is_ccw(const interp *ip, const uint32_t *idx, int n)
 
 static void fill_tri(assembly *as, uint32_t a, uint32_t b, uint32_t c, uint32_t provoking)
 {
-    if (!as->mesh)
+    if (as->ip->stencil.write) { /* its window region, for later stencil tests */
+        double p[3][3];
+        const scene_vertex *v = as->s->verts + as->base;
+        if (eye_pos(as->ip, &v[a], p[0]) && eye_pos(as->ip, &v[b], p[1]) &&
+            eye_pos(as->ip, &v[c], p[2]))
+            interp_stencil_tri(as->ip, p);
+    }
+    if (!as->mesh || as->ip->stencil.only)
         return;
     if (as->swap)
         scene_add_tri(as->s, as->base + a, as->base + c, as->base + b, as->base + provoking);
@@ -917,6 +927,7 @@ scene_look interp_current_look(interp *ip)
     look.names = interp_names_for_draw(ip);
     interp_scissor_look(ip, &look);
     look.clip = interp_clip_look(ip);
+    interp_stencil_look(ip, &look);
     return look;
 }
 

@@ -814,6 +814,7 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     if (sc && !w->in_proto) {
         povwrite_scissor(ob, sc, look); /* after the matrix: in eye space */
         povwrite_clip(ob, sc, look);
+        povwrite_stencil(ob, sc, look);
     }
     if (w->mesh_no_shadow)
         outbuf_puts(ob, "no_shadow\n");

@@ -122,6 +122,7 @@ static void write_solid(outbuf *ob, const scene *s, const scene_solid *so, const
     put_matrix(ob, &so->to_eye);
     povwrite_scissor(ob, s, &so->look);
     povwrite_clip(ob, s, &so->look);
+    povwrite_stencil(ob, s, &so->look);
     outbuf_puts(ob, "}\n");
 }
 

@@ -70,6 +70,10 @@ typedef struct scene_look {
                           the first by its env_mode (GL 2.1 3.8.13), or -1 */
     uint32_t clip;     /* its user clip planes: 1 + their set's place in
                           scene.clips (scene_clip_index), 0: none */
+    uint32_t stencil_first, stencil_n; /* the stencil test keeps it to the
+                          window region of scene.stencil_tris [first, first +
+                          n) (or outside it, stencil_out); n 0: none */
+    uint8_t stencil_out, pad2_[3];
 } scene_look;
 
 /* A run of triangles sharing transform and look: one mesh2 in SDL. */
@@ -268,6 +272,9 @@ typedef struct scene {
     size_t ntextures, cap_textures;
     scene_material *materials; /* lit runs refer to these by index */
     size_t nmaterials, cap_materials;
+    double (*stencil_tris)[9]; /* eye-space triangles drawn into the stencil
+                                  buffer (interp_stencil.c) */
+    size_t nstencil, cap_stencil;
     double (*clips)[4]; /* user clip plane sets that looks refer to: a row
                            {count}, then that many eye-space planes */
     size_t nclips, cap_clips, clips_last;

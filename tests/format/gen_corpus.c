@@ -369,8 +369,19 @@ static int write_shapes(const char *dir)
     EV(Vertex2f, -0.75, 0);
     EV(Vertex2f, 0.75, 0);
     eval_cmd(RGL_OP_End, NULL, 0, NULL, 0);
+    EV(ClearStencil, 0);
+    EV(Clear, 0x0400); /* GL_STENCIL_BUFFER_BIT */
+    EV(Enable, 0x0B90); /* GL_STENCIL_TEST */
+    EV(StencilFunc, 0x0207, 1, 255); /* GL_ALWAYS */
+    EV(StencilOp, 0x1E00, 0x1E00, 0x1E01); /* GL_KEEP, GL_KEEP, GL_REPLACE */
+    EV(StencilMask, 255);
     EV(ColorMask, 0, 0, 0, 0);
     EV(Rectf, -1, -1, 1, 1);
+    EV(ColorMask, 1, 1, 1, 1);
+    EV(StencilFunc, 0x0202, 1, 255); /* GL_EQUAL */
+    EV(Rectf, -2, -2, 2, 2);
+    EV(StencilFunc, 0x0205, 1, 255); /* GL_NOTEQUAL */
+    EV(SolidSphere, 1, 12, 8);
     return write_file(dir, "shapes.bin", seq, eval_len);
 }
 

@@ -20,6 +20,12 @@
  * Line stipple: dashes cut in window space, the counter restarting per
  * GL_LINES segment, counted from where a line enters the window.
  *
+ * The stencil test: a stencil-only pass (colour masked) keeps its
+ * triangles as the region and draws nothing; GL_EQUAL keeps a draw inside
+ * it, GL_NOTEQUAL outside, a test no value passes hides it; the writer
+ * clips by the region's cones of rays; a second value over the region is
+ * noted.
+ *
  * The teapot mesh: its patches share their seam vertices (no two vertices
  * nearly equal), nothing is left just off the axis, the normals are unit,
  * and the writer declares RGL_Teapot as that mesh.
@@ -431,6 +437,61 @@ static void test_line_stipple(void)
     interp_destroy(ip);
 }
 
+static void test_stencil(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 100, 100);
+    CMD(&s, MatrixMode, GL_PROJECTION);
+    CMD(&s, Frustum, -1, 1, -1, 1, 1, 100);
+    CMD(&s, MatrixMode, GL_MODELVIEW);
+    CMD(&s, Clear, GL_STENCIL_BUFFER_BIT);
+    CMD(&s, Enable, GL_STENCIL_TEST);
+    CMD(&s, StencilFunc, GL_ALWAYS, 1, 255);
+    CMD(&s, StencilOp, GL_KEEP, GL_KEEP, GL_REPLACE);
+    CMD(&s, ColorMask, 0, 0, 0, 0);
+    tri(&s); /* the region: one triangle, nothing drawn */
+    CMD(&s, ColorMask, 1, 1, 1, 1);
+    CMD(&s, StencilOp, GL_KEEP, GL_KEEP, GL_KEEP);
+    CMD(&s, StencilFunc, GL_EQUAL, 1, 255);
+    tri(&s); /* inside */
+    CMD(&s, StencilFunc, GL_NOTEQUAL, 1, 255);
+    CMD(&s, Color3f, 1, 0, 0);
+    tri(&s); /* outside */
+    CMD(&s, StencilFunc, GL_EQUAL, 2, 255);
+    tri(&s); /* passes nowhere: hidden */
+    run(ip, &s);
+    CHECK_EQ_U(sc.nstencil, 1);
+    CHECK_EQ_U(sc.ntris, 2);
+    CHECK_EQ_U(sc.nmeshes, 2);
+    if (sc.nmeshes == 2) {
+        CHECK_EQ_U(sc.meshes[0].look.stencil_n, 1);
+        CHECK_EQ_U(sc.meshes[0].look.stencil_out, 0);
+        CHECK_EQ_U(sc.meshes[1].look.stencil_n, 1);
+        CHECK_EQ_U(sc.meshes[1].look.stencil_out, 1);
+        outbuf ob;
+        int ok = outbuf_init(&ob, 1 << 20, NULL, NULL);
+        CHECK(ok == 0);
+        if (ok == 0) {
+            povwrite_stencil(&ob, &sc, &sc.meshes[1].look);
+            outbuf_putc(&ob, '\0');
+            CHECK(strncmp(ob.buf, "clipped_by{union{intersection{plane{", 36) == 0);
+            CHECK(strstr(ob.buf, " inverse}}") != NULL);
+            outbuf_finish(&ob);
+        }
+    }
+    CHECK_EQ_U(dlog.e[DIAG_NOTE_STENCIL].count, 0);
+    /* Another value written over the region: not followed, noted. */
+    seq_init(&s);
+    CMD(&s, StencilFunc, GL_ALWAYS, 3, 255);
+    CMD(&s, StencilOp, GL_KEEP, GL_KEEP, GL_REPLACE);
+    tri(&s);
+    run(ip, &s);
+    CHECK_EQ_U(dlog.e[DIAG_NOTE_STENCIL].count, 1);
+    interp_destroy(ip);
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -440,6 +501,7 @@ int main(void)
     test_clip_planes();
     test_color_mask();
     test_line_stipple();
+    test_stencil();
     scene_finish(&sc);
     return CHECK_RESULT("test_shapes");
 }
