@@ -11,14 +11,19 @@
  * region's cone of rays from the eye, which holds exactly the pixels
  * whose centres the triangles cover, as GL's stencil does); only outside,
  * to the rest; nowhere, it is left out. Writes of other values over the
- * region, lines and points written into it, and fail/zfail operations are
- * not followed: a note says so.
+ * region, lines and points written into it, fail/zfail operations and
+ * regions of more than STENCIL_REGION_MAX triangles are not followed (the
+ * draw is drawn as if the test passed): a note says so.
  */
 #include "interp_internal.h"
 
 #include "talloc.h"
 
 #define STENCIL_MAX 255u /* 8 stencil bits, as Mesa's default visuals */
+
+/* Triangles a region may have for draws to be clipped by it: each clipped
+ * object is written with one cone per triangle. */
+#define STENCIL_REGION_MAX 1024
 
 static bool is_func(GLenum f) { return f >= GL_NEVER && f <= GL_ALWAYS; }
 
@@ -139,6 +144,11 @@ bool interp_stencil_draw(interp *ip)
         pass_in = pass_out = true; /* drawn where GL may not */
     }
     ip->stencil.n = ip->scene->nstencil - ip->stencil.first;
+    if (ip->stencil.n > STENCIL_REGION_MAX && pass_in != pass_out) {
+        /* every clipped object would carry the region's cones */
+        interp_note(ip, DIAG_NOTE_STENCIL);
+        pass_in = pass_out = true;
+    }
     if (pass_in && !pass_out)
         ip->stencil.clip = 1;
     else if (!pass_in && pass_out)
