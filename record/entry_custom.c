@@ -1110,49 +1110,132 @@ RGL_EXPORT void rayglDeleteLists(GLuint list, GLsizei range)
 
 /* GLU quadric objects are process-wide pointers; the trace names them by
  * small ids. A quadric made by plain gluNewQuadric gets an id when first
- * seen. */
+ * seen. The table also keeps each quadric's state (GLU has no query for
+ * it): a shape compiled into a display list is drawn by GLU with the state
+ * of compile time, so the body carries that state (docs/format.md 3.2), and
+ * the frame-start snapshot re-creates the quadrics with theirs. */
+typedef struct quad_entry {
+    const GLUquadric *q;
+    uint32_t id;
+    uint32_t draw, normals, orientation, texture;
+} quad_entry;
+
 static struct {
     pthread_mutex_t mu;
-    struct quad_entry { const GLUquadric *q; uint32_t id; } *v;
+    quad_entry *v;
     size_t n, cap;
     uint32_t next;
 } quads = {.mu = PTHREAD_MUTEX_INITIALIZER};
+
+/* The entry of q, added with GLU's initial state when new; NULL when out
+ * of memory. Called with quads.mu held. */
+static quad_entry *quad_find(const GLUquadric *q)
+{
+    for (size_t i = 0; i < quads.n; i++)
+        if (quads.v[i].q == q)
+            return &quads.v[i];
+    if (quads.n == quads.cap) {
+        size_t cap = quads.cap ? 2 * quads.cap : 8;
+        quad_entry *v = rgl_realloc(quads.v, cap * sizeof *v);
+        if (!v)
+            return NULL;
+        quads.v = v;
+        quads.cap = cap;
+    }
+    quads.v[quads.n] = (quad_entry){q, ++quads.next, GLU_FILL, GLU_SMOOTH, GLU_OUTSIDE, 0};
+    return &quads.v[quads.n++];
+}
 
 static uint32_t quad_id(const GLUquadric *q, bool forget)
 {
     uint32_t id = 0;
     pthread_mutex_lock(&quads.mu);
-    for (size_t i = 0; i < quads.n; i++) {
-        if (quads.v[i].q == q) {
-            id = quads.v[i].id;
-            if (forget)
+    if (forget) {
+        for (size_t i = 0; i < quads.n; i++)
+            if (quads.v[i].q == q) {
+                id = quads.v[i].id;
                 quads.v[i] = quads.v[--quads.n];
-            goto out;
-        }
+                break;
+            }
+    } else {
+        quad_entry *e = quad_find(q);
+        id = e ? e->id : 0;
     }
-    if (forget)
-        goto out;
-    if (quads.n == quads.cap) {
-        size_t cap = quads.cap ? 2 * quads.cap : 8;
-        struct quad_entry *v = rgl_realloc(quads.v, cap * sizeof *v);
-        if (!v)
-            goto out;
-        quads.v = v;
-        quads.cap = cap;
-    }
-    id = ++quads.next;
-    quads.v[quads.n++] = (struct quad_entry){q, id};
-out:
     pthread_mutex_unlock(&quads.mu);
     return id;
 }
 
+/* Keeps what GLU accepts (an invalid value leaves the quadric unchanged). */
+static void quad_track(const GLUquadric *q, uint32_t op, uint32_t v)
+{
+    pthread_mutex_lock(&quads.mu);
+    quad_entry *e = quad_find(q);
+    if (e) {
+        if (op == RGL_OP_QuadricDrawStyle &&
+            (v == GLU_FILL || v == GLU_LINE || v == GLU_SILHOUETTE || v == GLU_POINT))
+            e->draw = v;
+        else if (op == RGL_OP_QuadricNormals && (v == GLU_NONE || v == GLU_FLAT || v == GLU_SMOOTH))
+            e->normals = v;
+        else if (op == RGL_OP_QuadricOrientation && (v == GLU_OUTSIDE || v == GLU_INSIDE))
+            e->orientation = v;
+        else if (op == RGL_OP_QuadricTexture)
+            e->texture = v != 0;
+    }
+    pthread_mutex_unlock(&quads.mu);
+}
+
+/* Writes the state of quadric e as its state commands into b (b NULL: the
+ * calling thread's stream). Called with quads.mu held. */
+static void quad_emit_state(rgl_buf *b, const quad_entry *e)
+{
+    if (b) {
+        rgl_emit(b, RGL_OP_QuadricDrawStyle, "ee", e->id, e->draw);
+        rgl_emit(b, RGL_OP_QuadricNormals, "ee", e->id, e->normals);
+        rgl_emit(b, RGL_OP_QuadricOrientation, "ee", e->id, e->orientation);
+        rgl_emit(b, RGL_OP_QuadricTexture, "eo", e->id, (int)e->texture);
+    } else {
+        rgl_record(RGL_OP_QuadricDrawStyle, "ee", e->id, e->draw);
+        rgl_record(RGL_OP_QuadricNormals, "ee", e->id, e->normals);
+        rgl_record(RGL_OP_QuadricOrientation, "ee", e->id, e->orientation);
+        rgl_record(RGL_OP_QuadricTexture, "eo", e->id, (int)e->texture);
+    }
+}
+
+void rgl_quadrics_snapshot(rgl_buf *b)
+{
+    pthread_mutex_lock(&quads.mu);
+    for (size_t i = 0; i < quads.n; i++) {
+        rgl_emit(b, RGL_OP_NewQuadric, "e", quads.v[i].id);
+        quad_emit_state(b, &quads.v[i]);
+    }
+    pthread_mutex_unlock(&quads.mu);
+}
+
+/* Before a shape drawn into a list being compiled: the quadric's state
+ * now, into the body. Returns the quadric's id (0: none). */
+static uint32_t quad_shape(rgl_stream *s, const GLUquadric *q)
+{
+    if (!s->compiling)
+        return quad_id(q, false);
+    uint32_t id = 0;
+    pthread_mutex_lock(&quads.mu);
+    quad_entry *e = quad_find(q);
+    if (e) {
+        id = e->id;
+        quad_emit_state(NULL, e);
+    }
+    pthread_mutex_unlock(&quads.mu);
+    return id;
+}
+
+/* The quadric calls are GLU client state, done at once even while a list
+ * is compiled: recorded into the frame, never into a list body. */
 RGL_EXPORT GLUquadric *raygluNewQuadric(void)
 {
     GLUquadric *q = gluNewQuadric();
     rgl_stream *s;
     if (q && rgl_reserve(&s, 1))
-        rgl_record(RGL_OP_NewQuadric, "e", quad_id(q, false));
+        RECORD_NOW(s, RGL_OP_NewQuadric, "e", quad_id(q, false));
     return q;
 }
 
@@ -1160,7 +1243,9 @@ RGL_EXPORT void raygluDeleteQuadric(GLUquadric *quad)
 {
     rgl_stream *s;
     if (quad && rgl_reserve(&s, 1))
-        rgl_record(RGL_OP_DeleteQuadric, "e", quad_id(quad, true));
+        RECORD_NOW(s, RGL_OP_DeleteQuadric, "e", quad_id(quad, true));
+    else if (quad)
+        quad_id(quad, true);
     gluDeleteQuadric(quad);
 }
 
@@ -1168,8 +1253,11 @@ RGL_EXPORT void raygluDeleteQuadric(GLUquadric *quad)
 static void quadric_state(uint32_t op, const GLUquadric *quad, GLenum value)
 {
     rgl_stream *s;
-    if (quad && rgl_reserve(&s, 1))
-        rgl_record(op, "ee", quad_id(quad, false), value);
+    if (!quad)
+        return;
+    quad_track(quad, op, value);
+    if (rgl_reserve(&s, 1))
+        RECORD_NOW(s, op, "ee", quad_id(quad, false), value);
 }
 
 RGL_EXPORT void raygluQuadricDrawStyle(GLUquadric *quad, GLenum draw)
@@ -1193,8 +1281,11 @@ RGL_EXPORT void raygluQuadricOrientation(GLUquadric *quad, GLenum orientation)
 RGL_EXPORT void raygluQuadricTexture(GLUquadric *quad, GLboolean texture)
 {
     rgl_stream *s;
-    if (quad && rgl_reserve(&s, 1))
-        rgl_record(RGL_OP_QuadricTexture, "eo", quad_id(quad, false), (int)texture);
+    if (quad) {
+        quad_track(quad, RGL_OP_QuadricTexture, texture);
+        if (rgl_reserve(&s, 1))
+            RECORD_NOW(s, RGL_OP_QuadricTexture, "eo", quad_id(quad, false), (int)texture);
+    }
     gluQuadricTexture(quad, texture);
 }
 
@@ -1206,7 +1297,7 @@ RGL_EXPORT void raygluSphere(GLUquadric *quad, GLdouble radius, GLint slices, GL
         rgl_resolve_matrices();
         rgl_stream *s;
         if (rgl_reserve(&s, 1))
-            rgl_record(RGL_OP_Sphere, "edii", quad_id(quad, false), radius, slices, stacks);
+            rgl_record(RGL_OP_Sphere, "edii", quad_shape(s, quad), radius, slices, stacks);
     }
     gluSphere(quad, radius, slices, stacks);
 }
@@ -1218,7 +1309,7 @@ RGL_EXPORT void raygluCylinder(GLUquadric *quad, GLdouble base, GLdouble top, GL
         rgl_resolve_matrices();
         rgl_stream *s;
         if (rgl_reserve(&s, 1))
-            rgl_record(RGL_OP_Cylinder, "edddii", quad_id(quad, false), base, top, height, slices,
+            rgl_record(RGL_OP_Cylinder, "edddii", quad_shape(s, quad), base, top, height, slices,
                        stacks);
     }
     gluCylinder(quad, base, top, height, slices, stacks);
@@ -1231,7 +1322,7 @@ RGL_EXPORT void raygluDisk(GLUquadric *quad, GLdouble inner, GLdouble outer, GLi
         rgl_resolve_matrices();
         rgl_stream *s;
         if (rgl_reserve(&s, 1))
-            rgl_record(RGL_OP_Disk, "eddii", quad_id(quad, false), inner, outer, slices, loops);
+            rgl_record(RGL_OP_Disk, "eddii", quad_shape(s, quad), inner, outer, slices, loops);
     }
     gluDisk(quad, inner, outer, slices, loops);
 }
@@ -1243,7 +1334,7 @@ RGL_EXPORT void raygluPartialDisk(GLUquadric *quad, GLdouble inner, GLdouble out
         rgl_resolve_matrices();
         rgl_stream *s;
         if (rgl_reserve(&s, 1))
-            rgl_record(RGL_OP_PartialDisk, "eddiidd", quad_id(quad, false), inner, outer, slices,
+            rgl_record(RGL_OP_PartialDisk, "eddiidd", quad_shape(s, quad), inner, outer, slices,
                        loops, start, sweep);
     }
     gluPartialDisk(quad, inner, outer, slices, loops, start, sweep);

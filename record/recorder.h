@@ -313,6 +313,10 @@ bool rgl_buffer_live(void);
 bool rgl_buffer_gather(uint32_t target, uint32_t name, bool live, uint64_t offset,
                        uint64_t stride, size_t row, size_t rows, uint8_t *out);
 
+/* GLU quadrics (entry_custom.c): every live quadric as NewQuadric and its
+ * state commands, into b (the frame-start snapshot). */
+void rgl_quadrics_snapshot(rgl_buf *b);
+
 /* Records a call GL executes at once even while a list is compiled
  * (client state, list names, buffer objects): into the frame, never into
  * the list body. */

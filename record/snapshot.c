@@ -144,6 +144,43 @@ static void snap_enables(rgl_buf *b)
         rgl_emit(b, RGL_OP_Disable, "e", GL_DITHER);
 }
 
+/* User clip planes: GL keeps them in eye space, and the snapshot is
+ * replayed under an identity modelview, so the eye-space equation goes in
+ * as it is; with the enables. Only the planes GL has (querying past
+ * GL_MAX_CLIP_PLANES would raise an error). */
+static void snap_clip_planes(rgl_buf *b)
+{
+    GLint max = 0;
+    glGetIntegerv(GL_MAX_CLIP_PLANES, &max);
+    for (GLint i = 0; i < max && i < 8; i++) {
+        GLenum plane = (GLenum)(GL_CLIP_PLANE0 + i);
+        GLdouble eq[4] = {0, 0, 0, 0};
+        glGetClipPlane(plane, eq);
+        if (eq[0] != 0 || eq[1] != 0 || eq[2] != 0 || eq[3] != 0)
+            rgl_emit(b, RGL_OP_ClipPlane, "edddd", plane, eq[0], eq[1], eq[2], eq[3]);
+        if (glIsEnabled(plane))
+            rgl_emit(b, RGL_OP_Enable, "e", plane);
+    }
+}
+
+/* The stencil state, and its enable. */
+static void snap_stencil(rgl_buf *b)
+{
+    GLint v[8] = {GL_ALWAYS, 0, -1, GL_KEEP, GL_KEEP, GL_KEEP, -1, 0};
+    static const GLenum q[8] = {GL_STENCIL_FUNC, GL_STENCIL_REF, GL_STENCIL_VALUE_MASK,
+                                GL_STENCIL_FAIL, GL_STENCIL_PASS_DEPTH_FAIL,
+                                GL_STENCIL_PASS_DEPTH_PASS, GL_STENCIL_WRITEMASK,
+                                GL_STENCIL_CLEAR_VALUE};
+    for (int k = 0; k < 8; k++)
+        glGetIntegerv(q[k], &v[k]);
+    rgl_emit(b, RGL_OP_StencilFunc, "eie", (uint32_t)v[0], v[1], (uint32_t)v[2]);
+    rgl_emit(b, RGL_OP_StencilOp, "eee", (uint32_t)v[3], (uint32_t)v[4], (uint32_t)v[5]);
+    rgl_emit(b, RGL_OP_StencilMask, "e", (uint32_t)v[6]);
+    rgl_emit(b, RGL_OP_ClearStencil, "i", v[7]);
+    if (glIsEnabled(GL_STENCIL_TEST))
+        rgl_emit(b, RGL_OP_Enable, "e", GL_STENCIL_TEST);
+}
+
 /* Evaluators: the grids, and every map that is not GL's initial one (order
  * 1, domain [0, 1], the initial point), read back with glGetMap. GL_COEFF
  * gives glMap2's points u major, as the record packs them (Mesa; the order
@@ -373,6 +410,8 @@ bool rgl_snapshot_take(rgl_stream *s, rgl_buf *out)
     rgl_emit(out, RGL_OP_MatrixMode, "e", GL_MODELVIEW);
     rgl_emit(out, RGL_OP_LoadIdentity, "");
     snap_lights_eye(out);
+    snap_clip_planes(out);
+    snap_stencil(out);
     snap_lights(out);
     snap_current(out);
     snap_materials(out);
@@ -382,6 +421,7 @@ bool rgl_snapshot_take(rgl_stream *s, rgl_buf *out)
     snap_texenv(out);
     rgl_emit(out, RGL_OP_ListBase, "e", (uint32_t)get_i(GL_LIST_BASE));
     snap_textures(s, out);
+    rgl_quadrics_snapshot(out);
     snap_lists(s, out);
     snap_matrices(out, mode);
     return true;

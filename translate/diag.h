@@ -43,11 +43,11 @@
     X(NOTE_LISTS, "not translated yet: display lists (calls skipped)") \
     X(NOTE_ARRAYS, "not translated yet: vertex arrays (draws skipped)") \
     X(NOTE_QUADRICS, "not translated yet: GLU quadrics (skipped)") \
-    X(NOTE_STIPPLE, "not translated: line and polygon stipple (drawn solid)") \
+    X(NOTE_STIPPLE, "not translated: polygon stipple (drawn solid)") \
     X(NOTE_SCISSOR, "not translated: scissor test of geometry (drawn whole)") \
     X(NOTE_SCISSOR_CLEAR, "approximated: a scissored clear does not erase what was drawn before it inside its box") \
     X(NOTE_CLIP_PLANE, "not translated: user clip planes") \
-    X(NOTE_STENCIL, "not translated: stencil test") \
+    X(NOTE_STENCIL, "approximated: stencil buffer contents the scene does not follow (values other than one written over the cleared buffer by filled triangles; glStencilOp fail and zfail operations): drawn as if the test passed") \
     X(NOTE_COLOR_MASK, "not translated: colour mask and logic op") \
     X(NOTE_DEPTH, "approximated: depth test off or not GL_LESS (draws in one plane show in draw order, others nearest first; where parts of one strip or fan overlap in one plane, either may show)") \
     X(NOTE_PROJECTION, "approximated: lit, fogged or depth-tested textured geometry drawn with another projection or viewport than the frame's camera is lit, fogged and textured as seen from that camera") \
@@ -78,7 +78,9 @@
     X(NOTE_TEX_LOD_BIAS, "not translated: texture level-of-detail bias (GL_TEXTURE_LOD_BIAS; textures are drawn from level 0)") \
     X(NOTE_POINT_SPRITE, "not translated: point sprites (GL_POINT_SPRITE, GL_COORD_REPLACE): points drawn untextured") \
     X(NOTE_TEX_3D, "approximated: 3D textures drawn as the slice (GL_NEAREST) or the blend of two slices (GL_LINEAR) that r picks where r is constant over a primitive; untextured where it varies") \
-    X(NOTE_FRONT_BUFFER, "approximated: a single-buffered frame shows the drawing of at most 64 earlier frames since the last colour clear (the front buffer holds all of it)")
+    X(NOTE_FRONT_BUFFER, "approximated: a single-buffered frame shows the drawing of at most 64 earlier frames since the last colour clear (the front buffer holds all of it)") \
+    X(NOTE_POLYGON_OFFSET, "approximated: glPolygonOffset moves an offset polygon one pixel's width along the camera's rays (away from the eye for a positive offset), not by GL's window-depth offset; offset GLU and GLUT shapes are drawn as GL's facets") \
+    X(NOTE_DEPTH_ONLY, "approximated: draws with every colour channel masked (glColorMask) are left out, but they wrote depth, which hides in GL what is drawn behind them later")
 
 typedef enum diag_kind {
 #define DIAG_ENUM_(name, text) DIAG_##name,

@@ -163,6 +163,11 @@ void interp_default_state(gl_state *st)
     a->color_buffer.alpha_func = GL_ALWAYS;
     for (int i = 0; i < 4; i++)
         a->color_buffer.mask[i] = true;
+    a->stencil.func = GL_ALWAYS;
+    a->stencil.fail = a->stencil.zfail = a->stencil.zpass = GL_KEEP;
+    a->stencil.value_mask = a->stencil.write_mask = 0xffffffffu;
+    a->line.stipple_factor = 1;
+    a->line.stipple_pattern = 0xffff;
     a->depth.func = GL_LESS;
     a->depth.mask = true;
     a->depth.clear = 1;

@@ -140,7 +140,14 @@ typedef struct gl_attribs {
     } polygon; /* GL_POLYGON_BIT */
     struct {
         float width;
+        int32_t stipple_factor;    /* glLineStipple, clamped to [1, 256] */
+        uint16_t stipple_pattern; /* bit 0 first */
     } line; /* GL_LINE_BIT */
+    struct {
+        GLenum func, fail, zfail, zpass;
+        int32_t ref, clear;
+        uint32_t value_mask, write_mask;
+    } stencil; /* GL_STENCIL_BUFFER_BIT */
     struct {
         float size;
         /* glPointParameter (GL 1.4 3.3): the derived size's clamp, the
@@ -153,6 +160,7 @@ typedef struct gl_attribs {
     } viewport; /* GL_VIEWPORT_BIT */
     struct {
         GLenum matrix_mode;
+        double clip_plane[8][4]; /* eye space, at the glClipPlane call */
     } transform; /* GL_TRANSFORM_BIT */
     struct {
         float clear[4];

@@ -45,6 +45,15 @@ typedef struct interp_proj_vote_t {
 struct interp {
     gl_state st;
     interp_quadric quadrics[INTERP_QUADRICS]; /* context state, like st */
+    struct {
+        size_t first;   /* scene.stencil_tris of the buffer's content */
+        int32_t value;  /* written there */
+        int32_t cleared; /* the clear value there */
+        bool written, mixed; /* something / values the scene cannot hold */
+        bool write, only; /* this draw writes the stencil; and no colour */
+        uint8_t clip;     /* this draw kept 1 inside, 2 outside the region */
+        size_t n;         /* the region's triangles at this draw */
+    } stencil; /* interp_stencil.c */
     interp_textures *tex; /* texture objects and unpack state; NULL: none yet */
     struct interp_eval *eval; /* evaluator maps; NULL: all at their initial values */
     struct interp_nurbs *nurbs; /* GLU NURBS objects and the open shape; NULL: none yet */
@@ -503,6 +512,50 @@ double interp_painter_reach(const interp *ip);
  * name stack for a draw (interp_select.c). */
 bool interp_render_mode_draws(interp *ip);
 uint32_t interp_names_for_draw(interp *ip);
+
+/* User clip planes (interp_clip.c). interp_clip_look: the id of the
+ * enabled planes' set in the scene (scene_clip_index), 0 for none.
+ * interp_clip_segment: clips eye-space segment p0-p1 by the enabled planes,
+ * moving the ends and setting *t0, *t1 to their places along the original
+ * (0 and 1 when whole); false when nothing is left. interp_clip_point:
+ * whether an eye-space point is kept. */
+uint32_t interp_clip_look(interp *ip);
+bool interp_clip_segment(const interp *ip, double p0[3], double p1[3], double *t0, double *t1);
+bool interp_clip_point(const interp *ip, const double p[3]);
+
+/* The stencil test (interp_stencil.c). interp_stencil_draw: at a draw's
+ * start, sets ip->stencil.write/clip and returns false when the test
+ * hides the whole draw; interp_stencil_writes: draws now write the
+ * stencil buffer; interp_stencil_look: the region a drawn look is kept
+ * to; interp_stencil_tri: a triangle (eye space) a writing draw covers;
+ * interp_stencil_clear: glClear of the stencil buffer. */
+bool interp_stencil_draw(interp *ip);
+bool interp_stencil_writes(const interp *ip);
+void interp_stencil_look(interp *ip, scene_look *look);
+void interp_stencil_tri(interp *ip, double p[3][3]);
+void interp_stencil_clear(interp *ip);
+
+/* The colour and depth masks (interp_masks.c): true when a draw changes
+ * no colour (every colour channel masked) and is left out, with a note
+ * when it writes depth; notes a partial colour mask. */
+bool interp_masks_hide(interp *ip);
+
+/* Line stipple (interp_stipple.c). interp_stipple_on: lines drawn now are
+ * stippled. interp_stipple_dashes: the dashes of eye-space segment p0-p1
+ * (w0-w1 in the window, scene_camera_project's), as [from, to] fractions of the
+ * segment in eye space (at most max), GL's counter starting at *counter
+ * and advanced past the segment. */
+bool interp_stipple_on(const interp *ip);
+size_t interp_stipple_dashes(const interp *ip, const scene_camera *cam, const double p0[3],
+                             const double p1[3], const double w0[2], const double w1[2],
+                             uint64_t *counter, double (*dash)[2], size_t max);
+
+/* glPolygonOffset (interp_offset.c). interp_offset_active: polygons drawn
+ * now are offset (their shapes are drawn as GL's facets);
+ * interp_offset_apply: moves a polygon draw's to_eye along the camera's
+ * rays by its offset (a note when it does). */
+bool interp_offset_active(const interp *ip);
+void interp_offset_apply(interp *ip, mat4 *to_eye);
 
 /* The scissor test (interp_scissor.c). interp_scissor_cuts: it is on and
  * its box leaves out part of viewport vp. interp_scissor_clear: a glClear

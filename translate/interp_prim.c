@@ -98,20 +98,14 @@ static void draw_notes(interp *ip)
         interp_note(ip, DIAG_NOTE_ALPHA_TEST);
     if (c[INTERP_CAP_TEXTURE_CUBE_MAP]) /* 3D: interp_texture.c's slices */
         interp_note(ip, DIAG_NOTE_TEXTURE);
-    if (c[INTERP_CAP_LINE_STIPPLE] || c[INTERP_CAP_POLYGON_STIPPLE])
-        interp_note(ip, DIAG_NOTE_STIPPLE);
+    if (c[INTERP_CAP_POLYGON_STIPPLE] && ip->prim_mode > GL_LINE_STRIP)
+        interp_note(ip, DIAG_NOTE_STIPPLE); /* line stipple: interp_stipple.c */
     if (interp_scissor_cuts(ip, a->viewport.rect) && ip->prim_mode <= GL_LINE_STRIP)
         interp_note(ip, DIAG_NOTE_SCISSOR); /* lines and points: drawn whole */
-    if (c[INTERP_CAP_STENCIL_TEST])
-        interp_note(ip, DIAG_NOTE_STENCIL);
-    for (int i = 0; i < 8; i++)
-        if (c[INTERP_CAP_CLIP_PLANE0 + i])
-            interp_note(ip, DIAG_NOTE_CLIP_PLANE);
     if (c[INTERP_CAP_BLEND] && a->color_buffer.blend_equation != GL_FUNC_ADD)
         interp_note(ip, DIAG_NOTE_BLEND_EQUATION);
-    if ((c[INTERP_CAP_COLOR_LOGIC_OP] && a->color_buffer.logic_op != GL_COPY) || !a->color_buffer.mask[0] || !a->color_buffer.mask[1] ||
-        !a->color_buffer.mask[2])
-        interp_note(ip, DIAG_NOTE_COLOR_MASK);
+    if (c[INTERP_CAP_COLOR_LOGIC_OP] && a->color_buffer.logic_op != GL_COPY)
+        interp_note(ip, DIAG_NOTE_COLOR_MASK); /* the masks: interp_masks.c */
     if (!c[INTERP_CAP_DEPTH_TEST] || (a->depth.func != GL_LESS && a->depth.func != GL_LEQUAL))
         interp_note(ip, DIAG_NOTE_DEPTH);
     /* Fog coordinates and secondary colours are recorded, not drawn yet:
@@ -247,6 +241,7 @@ static bool setup_transform(interp *ip)
         return false;
     }
     painter_shift(ip, &to_eye);
+    interp_offset_apply(ip, &to_eye);
     ip->prim_to_eye = to_eye;
     ip->prim_in_eye = false;
     if (!mat4_affine(&to_eye)) {
@@ -358,7 +353,8 @@ static void begin_mode(interp *ip, GLenum mode)
     draw_notes(ip);
     interp_proj_vote(ip, mode);
     interp_fix_camera(ip);
-    if (interp_scissor_hides(ip) || !setup_transform(ip))
+    if (interp_scissor_hides(ip) || !interp_stencil_draw(ip) || interp_masks_hide(ip) ||
+        !setup_transform(ip))
         return;
     ip->prim_skip = false;
     ip->prim_first = ip->scene->nverts;
@@ -531,6 +527,8 @@ typedef struct assembly {
     bool line_smooth, point_smooth;
     bool point_params; /* glPointParameter away from its defaults */
     bool list_quads; /* quads split along v1-v3, as Mesa does in a list or when clipping */
+    bool stipple;       /* glLineStipple applies (interp_stipple.c) */
+    uint64_t stipple_s; /* GL's stipple counter */
     scene_mesh *mesh;
 } assembly;
 
@@ -600,12 +598,13 @@ static void add_segment(assembly *as, uint32_t i0, uint32_t i1, uint32_t provoki
     interp *ip = as->ip;
     const scene_vertex *v0 = &as->s->verts[i0], *v1 = &as->s->verts[i1];
     const scene_camera *cam = &as->s->camera;
-    double p[2][3], px[2], py[2], w0[2], w1[2];
-    if (!eye_pos(ip, v0, p[0]) || !eye_pos(ip, v1, p[1]))
+    double p[2][3], w0[2], w1[2], t[2];
+    if (ip->stencil.only)
+        return; /* into the stencil buffer alone (not followed: a note) */
+    if (!eye_pos(ip, v0, p[0]) || !eye_pos(ip, v1, p[1]) ||
+        !interp_clip_segment(ip, p[0], p[1], &t[0], &t[1]))
         return;
-    if (!scene_camera_pixel_size(cam, p[0], &px[0], &py[0]) ||
-        !scene_camera_pixel_size(cam, p[1], &px[1], &py[1]) ||
-        !scene_camera_project(cam, p[0], w0) || !scene_camera_project(cam, p[1], w1))
+    if (!scene_camera_project(cam, p[0], w0) || !scene_camera_project(cam, p[1], w1))
         return;
     double dx = w1[0] - w0[0], dy = w1[1] - w0[1], len = hypot(dx, dy);
     if (!(len > 1e-6))
@@ -621,20 +620,39 @@ static void add_segment(assembly *as, uint32_t i0, uint32_t i1, uint32_t provoki
         ox = as->line_width * 0.5;
         oy = 0;
     }
+    /* Stippled: the dashes GL draws (interp_stipple.c); else the whole. */
+    double dash[1024][2] = {{0, 1}};
+    size_t ndash = 1;
+    if (as->stipple)
+        ndash = interp_stipple_dashes(ip, cam, p[0], p[1], w0, w1, &as->stipple_s, dash,
+                                      sizeof dash / sizeof dash[0]);
     double r[3], u[3];
     image_axes(cam, r, u);
-    scene_line *l = scene_add_line(as->s);
-    if (!l)
-        return;
-    for (int e = 0; e < 2; e++)
-        for (int k = 0; k < 3; k++) {
-            l->p[e][k] = (float)p[e][k];
-            l->half[e][k] = (float)(ox * px[e] * r[k] + oy * py[e] * u[k]);
-        }
     const scene_vertex *c0 = as->flat ? &as->s->verts[provoking] : v0;
     const scene_vertex *c1 = as->flat ? &as->s->verts[provoking] : v1;
-    memcpy(l->color[0], c0->color, sizeof l->color[0]);
-    memcpy(l->color[1], c1->color, sizeof l->color[1]);
+    for (size_t d = 0; d < ndash; d++) {
+        double q[2][3], px[2], py[2];
+        for (int e = 0; e < 2; e++)
+            for (int k = 0; k < 3; k++)
+                q[e][k] = p[0][k] + (p[1][k] - p[0][k]) * dash[d][e];
+        if (!scene_camera_pixel_size(cam, q[0], &px[0], &py[0]) ||
+            !scene_camera_pixel_size(cam, q[1], &px[1], &py[1]))
+            continue;
+        scene_line *l = scene_add_line(as->s);
+        if (!l)
+            return;
+        for (int e = 0; e < 2; e++)
+            for (int k = 0; k < 3; k++) {
+                l->p[e][k] = (float)q[e][k];
+                l->half[e][k] = (float)(ox * px[e] * r[k] + oy * py[e] * u[k]);
+            }
+        /* cut by a clip plane or the stipple: the colour there */
+        for (int e = 0; e < 2; e++) {
+            double te = t[0] + (t[1] - t[0]) * dash[d][e];
+            for (int k = 0; k < 4; k++)
+                l->color[e][k] = (float)(c0->color[k] + (c1->color[k] - c0->color[k]) * te);
+        }
+    }
 }
 
 /* GL's aliased point: a square of size x size pixels centred on the
@@ -645,8 +663,10 @@ static void add_point(assembly *as, uint32_t i, uint32_t colour_from)
 {
     double p[3], px, py, r[3], u[3], w[2];
     const scene_camera *cam = &as->s->camera;
-    if (!eye_pos(as->ip, &as->s->verts[i], p) || !scene_camera_pixel_size(cam, p, &px, &py) ||
-        !scene_camera_project(cam, p, w))
+    if (as->ip->stencil.only)
+        return;
+    if (!eye_pos(as->ip, &as->s->verts[i], p) || !interp_clip_point(as->ip, p) ||
+        !scene_camera_pixel_size(cam, p, &px, &py) || !scene_camera_project(cam, p, w))
         return;
     if (fabs(w[0]) > cam->width * 0.5 || fabs(w[1]) > cam->height * 0.5)
         return;
@@ -735,7 +755,14 @@ static bool is_ccw(const interp *ip, const uint32_t *idx, int n)
 
 static void fill_tri(assembly *as, uint32_t a, uint32_t b, uint32_t c, uint32_t provoking)
 {
-    if (!as->mesh)
+    if (as->ip->stencil.write) { /* its window region, for later stencil tests */
+        double p[3][3];
+        const scene_vertex *v = as->s->verts + as->base;
+        if (eye_pos(as->ip, &v[a], p[0]) && eye_pos(as->ip, &v[b], p[1]) &&
+            eye_pos(as->ip, &v[c], p[2]))
+            interp_stencil_tri(as->ip, p);
+    }
+    if (!as->mesh || as->ip->stencil.only)
         return;
     if (as->swap)
         scene_add_tri(as->s, as->base + a, as->base + c, as->base + b, as->base + provoking);
@@ -891,8 +918,10 @@ static void assemble_lines(assembly *as, GLenum mode, uint32_t n)
                 add_point(as, b + i, b + i);
         break;
     case GL_LINES:
-        for (uint32_t i = 0; i + 2 <= n; i += 2)
+        for (uint32_t i = 0; i + 2 <= n; i += 2) {
+            as->stipple_s = 0; /* GL restarts the stipple per segment */
             add_segment(as, b + i, b + i + 1, pv(as, b + i + 1, b + i));
+        }
         break;
     case GL_LINE_STRIP:
     case GL_LINE_LOOP:
@@ -965,6 +994,8 @@ scene_look interp_current_look(interp *ip)
     }
     look.names = interp_names_for_draw(ip);
     interp_scissor_look(ip, &look);
+    look.clip = interp_clip_look(ip);
+    interp_stencil_look(ip, &look);
     interp_lightset_textured(ip, &look);
     return look;
 }
@@ -1022,6 +1053,7 @@ static void end_primitive(interp *ip)
     as.first = a->lighting.provoking == GL_FIRST_VERTEX_CONVENTION;
     as.swap = a->polygon.front_face == GL_CW;
     as.line_smooth = a->caps[INTERP_CAP_LINE_SMOOTH];
+    as.stipple = interp_stipple_on(ip);
     as.point_smooth = a->caps[INTERP_CAP_POINT_SMOOTH];
     as.line_width = raster_width(a->line.width, as.line_smooth);
     as.point_size = raster_width(a->point.size, as.point_smooth);

@@ -266,6 +266,10 @@ static bool exact_ok(interp *ip, bool closed, bool inside, bool faceted)
         return false;
     if (interp_texture_for_draw(ip) >= 0)
         return false; /* the mesh carries the texture coordinates */
+    if (interp_offset_active(ip))
+        return false; /* lines drawn over it lie on GL's facets */
+    if (interp_stencil_writes(ip))
+        return false; /* its triangles make the stencil region */
     return true;
 }
 

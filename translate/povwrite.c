@@ -24,6 +24,7 @@
 
 #include "dedup.h"
 #include "povwrite_light.h"
+#include "povwrite_clip.h"
 #include "povwrite_solid.h"
 #include "povwrite_multitex.h"
 #include "povwrite_texture.h"
@@ -810,8 +811,11 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     }
     if (to_eye)
         put_matrix(ob, to_eye);
-    if (sc && !w->in_proto)
+    if (sc && !w->in_proto) {
         povwrite_scissor(ob, sc, look); /* after the matrix: in eye space */
+        povwrite_clip(ob, sc, look);
+        povwrite_stencil(ob, sc, look);
+    }
     if (w->mesh_no_shadow)
         outbuf_puts(ob, "no_shadow\n");
     outbuf_puts(ob, "}\n");

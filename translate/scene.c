@@ -42,6 +42,8 @@ void scene_finish(scene *s)
     tr_free(s->materials);
     tr_free(s->overlay);
     tr_free(s->names);
+    tr_free(s->clips);
+    tr_free(s->stencil_tris);
     memset(s, 0, sizeof *s);
 }
 
@@ -51,6 +53,8 @@ void scene_reset(scene *s)
     s->nlights = 0;
     s->nmaterials = 0;
     s->nnames = s->names_last = 0;
+    s->nclips = s->clips_last = 0;
+    s->nstencil = 0;
     s->lights_fixed = false;
     s->nlightsets = 0;
     memset(&s->fog, 0, sizeof s->fog);

@@ -68,6 +68,12 @@ typedef struct scene_look {
                            image (origin at its lower left), when scissored */
     int32_t texture1;  /* a second texture unit's, combined with the result of
                           the first by its env_mode (GL 2.1 3.8.13), or -1 */
+    uint32_t clip;     /* its user clip planes: 1 + their set's place in
+                          scene.clips (scene_clip_index), 0: none */
+    uint32_t stencil_first, stencil_n; /* the stencil test keeps it to the
+                          window region of scene.stencil_tris [first, first +
+                          n) (or outside it, stencil_out); n 0: none */
+    uint8_t stencil_out, pad2_[3];
 } scene_look;
 
 /* A run of triangles sharing transform and look: one mesh2 in SDL. */
@@ -274,6 +280,12 @@ typedef struct scene {
     size_t ntextures, cap_textures;
     scene_material *materials; /* lit runs refer to these by index */
     size_t nmaterials, cap_materials;
+    double (*stencil_tris)[9]; /* eye-space triangles drawn into the stencil
+                                  buffer (interp_stencil.c) */
+    size_t nstencil, cap_stencil;
+    double (*clips)[4]; /* user clip plane sets that looks refer to: a row
+                           {count}, then that many eye-space planes */
+    size_t nclips, cap_clips, clips_last;
     uint32_t *names; /* name stacks that looks refer to: a count, then the names */
     size_t nnames, cap_names, names_last; /* names_last: 1 + where the last one starts */
     bool lights_fixed; /* lights hold the GL lights of the first lit draw */
@@ -374,6 +386,14 @@ uint32_t scene_names_index(scene *s, const uint32_t *names, uint32_t n);
 /* The names of look.names value id and their count in *n; NULL (and 0)
  * for 0 or a value the scene does not hold. */
 const uint32_t *scene_names(const scene *s, uint32_t id, uint32_t *n);
+
+/* User clip plane sets (scene_clip.c). scene_clip_index stores n planes
+ * (a, b, c, d: eye-space points with a x + b y + c z + d >= 0 are kept)
+ * and returns the id a look refers to them by (the last set again when
+ * equal); 0 when n is 0 or on failure (the scene's failed flag set).
+ * scene_clip_set: the planes of id (NULL, *n = 0 for none or a bad id). */
+uint32_t scene_clip_index(scene *s, const double (*planes)[4], uint32_t n);
+const double (*scene_clip_set(const scene *s, uint32_t id, uint32_t *n))[4];
 
 /* Camera from a GL projection matrix and viewport (x, y, width, height).
  * Handles any projection with a centre (perspective, off-axis frustum,

@@ -503,6 +503,50 @@ static int write_texcopy(const char *dir)
     return rc;
 }
 
+/* ---- Shapes and per-fragment tests: clip planes, offsets, masks, quadrics -------- */
+
+static int write_shapes(const char *dir)
+{
+    eval_len = 0;
+    EV(Translatef, 1, 0, -5);
+    EV(ClipPlane, 0x3000, 1, 0, 0, 0.5); /* GL_CLIP_PLANE0 */
+    EV(ClipPlane, 0x3007, 0, -1, 0, 1);
+    EV(ClipPlane, 0x3008, 0, 0, 1, 0); /* past the eighth: rejected */
+    EV(Enable, 0x3000);
+    EV(Enable, 0x3007);
+    EV(Enable, 0x8037); /* GL_POLYGON_OFFSET_FILL */
+    EV(PolygonOffset, 1, 1);
+    EV(NewQuadric, 1);
+    EV(QuadricDrawStyle, 1, 100012); /* GLU_LINE */
+    EV(Sphere, 1, 1, 8, 4);
+    EV(SolidTeapot, 1);
+    EV(Enable, 0x0B24); /* GL_LINE_STIPPLE */
+    EV(LineStipple, 3, 0x1C47);
+    EV(Begin, 0x0003); /* GL_LINE_STRIP */
+    EV(Vertex2f, -2, 0);
+    EV(Vertex2f, 2, 1);
+    EV(Vertex2f, 0, -3);
+    eval_cmd(RGL_OP_End, NULL, 0, NULL, 0);
+    EV(Begin, 0x0000); /* GL_POINTS */
+    EV(Vertex2f, -0.75, 0);
+    EV(Vertex2f, 0.75, 0);
+    eval_cmd(RGL_OP_End, NULL, 0, NULL, 0);
+    EV(ClearStencil, 0);
+    EV(Clear, 0x0400); /* GL_STENCIL_BUFFER_BIT */
+    EV(Enable, 0x0B90); /* GL_STENCIL_TEST */
+    EV(StencilFunc, 0x0207, 1, 255); /* GL_ALWAYS */
+    EV(StencilOp, 0x1E00, 0x1E00, 0x1E01); /* GL_KEEP, GL_KEEP, GL_REPLACE */
+    EV(StencilMask, 255);
+    EV(ColorMask, 0, 0, 0, 0);
+    EV(Rectf, -1, -1, 1, 1);
+    EV(ColorMask, 1, 1, 1, 1);
+    EV(StencilFunc, 0x0202, 1, 255); /* GL_EQUAL */
+    EV(Rectf, -2, -2, 2, 2);
+    EV(StencilFunc, 0x0205, 1, 255); /* GL_NOTEQUAL */
+    EV(SolidSphere, 1, 12, 8);
+    return write_file(dir, "shapes.bin", seq, eval_len);
+}
+
 int main(int argc, char **argv)
 {
     rng r = {0x5eed5eed12345678ull};
@@ -531,5 +575,6 @@ int main(int argc, char **argv)
     rc |= write_mtex(argv[1]);
     rc |= write_nurbs(argv[1]);
     rc |= write_texcopy(argv[1]);
+    rc |= write_shapes(argv[1]);
     return rc;
 }

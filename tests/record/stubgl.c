@@ -329,6 +329,7 @@ void glGetDoublev(GLenum pname, GLdouble *v) { (void)pname, (void)v; }
 void glGetBooleanv(GLenum pname, GLboolean *v) { (void)pname, (void)v; }
 void glGetLightfv(GLenum l, GLenum pname, GLfloat *v) { (void)l, (void)pname, (void)v; }
 void glGetMapdv(GLenum t, GLenum q, GLdouble *v) { (void)t, (void)q, (void)v; }
+void glGetClipPlane(GLenum p, GLdouble *v) { (void)p, (void)v; }
 void glGetMapiv(GLenum t, GLenum q, GLint *v) { (void)t, (void)q, (void)v; }
 void glGetMaterialfv(GLenum f, GLenum pname, GLfloat *v) { (void)f, (void)pname, (void)v; }
 void glGetTexGenfv(GLenum c, GLenum pname, GLfloat *v) { (void)c, (void)pname, (void)v; }
