@@ -21,8 +21,8 @@
  * culling, which triangles face the camera) keys the prototype by itself: a
  * call whose inherited state changes what it draws gets its own prototype,
  * and one whose output cannot be shared (a list that loads an absolute
- * matrix, draws without a depth test, or is drawn in eye space) stays
- * inline. Lines and points, which are built in eye space, always stay
+ * matrix, draws without a depth test, is fogged or scissored, or is drawn
+ * in eye space) stays inline. Lines and points, which are built in eye space, always stay
  * inline.
  */
 #include "interp_internal.h"
@@ -298,9 +298,10 @@ static void share_output(interp *ip, uint32_t body, const call_mark *mk)
         if (t->provoking < mk->v0 || t->provoking >= s->nverts)
             return;
     }
-    /* A scissor box lies in the picture, not in the list's space. */
+    /* A scissor box lies in the picture, not in the list's space; so does
+     * fog, a function of the eye distance that differs per call. */
     for (size_t k = 0; k < nm; k++)
-        if (s->meshes[mk->m0 + k].look.scissored)
+        if (s->meshes[mk->m0 + k].look.scissored || s->meshes[mk->m0 + k].look.fog)
             return;
     mat4 call, inv;
     if (!interp_object_to_eye(ip, &mk->mv, &mk->proj, mk->vp, &call) || !mat4_affine(&call) ||
