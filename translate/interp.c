@@ -34,7 +34,7 @@ static bool allowed_in_begin(const char *handler)
         "material",     "calllist",  "calllists", "arrayelement",   "resolvedmatrix",
         "arraydata",    "framebegin", "frameend", "swapbuffers",
         "snapshot",     "notrecorded", "evalcoord1", "evalcoord2", "evalpoint1", "evalpoint2",
-        "multitexcoord",
+        "multitexcoord", "fogcoord", "secondarycolor",
     };
     for (size_t i = 0; i < sizeof ok / sizeof ok[0]; i++)
         if (strcmp(handler, ok[i]) == 0)

@@ -85,6 +85,8 @@ struct interp {
     int draw_unit[2];   /* the draw's first two enabled texture units, or -1 */
     bool prim_tex_from1; /* the look's texture is draw_unit[1]'s (tex1 coordinates) */
     bool prim_blend_mapped; /* its vertex colours carry another blend function as transmit */
+    bool prim_color_sum;  /* the secondary colour goes into the vertex colours (interp_fogsec.c) */
+    bool prim_fog_vertex; /* the fog of the fog coordinate goes into them, no fog layer */
     mat4 prim_clip;     /* object -> clip space of the primitive's own projection */
     uint8_t *edge;      /* edge flag of each vertex of the primitive */
     size_t cap_edge;
@@ -312,6 +314,13 @@ void interp_textures_free(interp *ip);
  * the clear only ends a pass (the scene keeps the first pass). */
 void interp_accum_begin_frame(interp *ip);
 void interp_accum_draw(interp *ip);
+
+/* interp_fogsec.c. interp_fogsec_begin: at a draw's start (after the
+ * texture units are known), whether its vertex colours take the colour sum
+ * and the fog of the fog coordinate, with a note where they cannot.
+ * interp_fogsec_vertex: applies them to one vertex colour (RGB, in place). */
+void interp_fogsec_begin(interp *ip, GLenum mode);
+void interp_fogsec_vertex(const interp *ip, float color[4]);
 bool interp_accum_clear(interp *ip);
 
 /* Evaluator state (interp_eval.c): copied with the context state (-1 on

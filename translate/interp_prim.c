@@ -47,8 +47,8 @@ void interp_color(interp *ip, const rgl_cmd *cmd)
         interp_color_material_update(ip);
 }
 
-/* The current secondary colour and fog coordinate: state only; a draw
- * that would use them is noted (draw_notes). */
+/* The current secondary colour and fog coordinate: taken by each vertex
+ * (interp_fogsec.c). */
 void interp_secondarycolor(interp *ip, const rgl_cmd *cmd)
 {
     uint8_t type = cmd_value_type(cmd);
@@ -111,12 +111,6 @@ static void draw_notes(interp *ip)
         interp_note(ip, DIAG_NOTE_COLOR_MASK);
     if (!c[INTERP_CAP_DEPTH_TEST] || (a->depth.func != GL_LESS && a->depth.func != GL_LEQUAL))
         interp_note(ip, DIAG_NOTE_DEPTH);
-    /* Fog coordinates and secondary colours are recorded, not drawn yet:
-     * a frame that uses them says so. */
-    if (c[INTERP_CAP_FOG] && a->fog.coord_src == GL_FOG_COORD)
-        interp_note(ip, DIAG_NOTE_FOG_COORD);
-    if (c[INTERP_CAP_COLOR_SUM] && !c[INTERP_CAP_LIGHTING])
-        interp_note(ip, DIAG_NOTE_COLOR_SUM);
     /* GL 1.x 3.9: with GL_SINGLE_COLOR the texture modulates the specular
      * term too; POV-Ray adds the highlight after the texture, which is
      * GL_SEPARATE_SPECULAR_COLOR. */
@@ -327,6 +321,7 @@ static void begin_mode(interp *ip, GLenum mode)
     ip->in_begin = true;
     ip->prim_mode = mode;
     ip->prim_skip = true;
+    ip->prim_color_sum = ip->prim_fog_vertex = false;
     if (!ip->scene || !interp_render_mode_draws(ip))
         return;
     interp_accum_draw(ip);
@@ -340,6 +335,7 @@ static void begin_mode(interp *ip, GLenum mode)
     ip->prim_first = ip->scene->nverts;
     ip->prim_blend = blend_mode(ip, mode);
     interp_draw_units(ip);
+    interp_fogsec_begin(ip, mode);
 }
 
 void interp_begin(interp *ip, const rgl_cmd *cmd)
@@ -445,6 +441,8 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
     } else {
         interp_surface_colour(ip, v->color);
     }
+    if (ip->prim_color_sum || ip->prim_fog_vertex)
+        interp_fogsec_vertex(ip, v->color);
     if (ip->prim_blend_mapped)
         map_blend(ip, v->color);
     if (ip->prim_blend == SCENE_BLEND_OPAQUE)
@@ -872,7 +870,7 @@ scene_look interp_current_look(interp *ip)
     look.lit = ip->st.a.caps[INTERP_CAP_LIGHTING];
     look.flat = ip->st.a.lighting.shade_model == GL_FLAT;
     look.blend = ip->prim_blend;
-    look.fog = ip->st.a.caps[INTERP_CAP_FOG];
+    look.fog = ip->st.a.caps[INTERP_CAP_FOG] && !ip->prim_fog_vertex;
     look.material = look.lit ? interp_lit_material(ip) : -1;
     if (look.lit && look.material < 0)
         look.lit = 0;
@@ -1006,6 +1004,7 @@ void interp_end(interp *ip, const rgl_cmd *cmd)
         return;
     }
     end_primitive(ip);
+    ip->prim_color_sum = ip->prim_fog_vertex = false;
 }
 
 bool interp_prim_begin(interp *ip, GLenum mode)
@@ -1018,6 +1017,7 @@ void interp_prim_end(interp *ip)
 {
     if (ip->in_begin)
         end_primitive(ip);
+    ip->prim_color_sum = ip->prim_fog_vertex = false;
 }
 
 void interp_abort_begin(interp *ip)
@@ -1025,6 +1025,7 @@ void interp_abort_begin(interp *ip)
     if (!ip->in_begin)
         return;
     ip->in_begin = false;
+    ip->prim_color_sum = ip->prim_fog_vertex = false;
     if (ip->scene && !ip->prim_skip && ip->scene->nverts >= ip->prim_first)
         ip->scene->nverts = ip->prim_first;
 }

@@ -1,0 +1,304 @@
+/* test_fogsec.c: fog coordinates, the colour sum and fog on shapes.
+ *
+ * Unlit untextured draws take GL's fog of their fog coordinates and the
+ * secondary colour into the vertex colours (no fog layer); lit draws keep
+ * the layer and say so; a fogged GLUT solid gets the fog layer in the
+ * SDL, and so does an unlit one with a fog coordinate baked in its colour;
+ * fogged display-list calls stay inline (each call's own eye distance).
+ */
+#include <GL/gl.h>
+#include <math.h>
+#include <string.h>
+
+#include "check.h"
+#include "interp.h"
+#include "outbuf.h"
+#include "povwrite.h"
+#include "tracegen.h"
+
+static scene sc;
+static diag_log dlog;
+
+static seq bodies[2];
+static size_t nbodies;
+
+static rgl_status fetch(void *ctx, uint32_t id, rgl_resource *out, rgl_error *err)
+{
+    (void)ctx;
+    if (id == 0 || id > nbodies) {
+        err->status = RGL_E_RESOURCE;
+        return RGL_E_RESOURCE;
+    }
+    memset(out, 0, sizeof *out);
+    out->id = id;
+    out->kind = RGL_RES_COMMANDS;
+    out->data = bodies[id - 1].data;
+    out->size = bodies[id - 1].len;
+    return RGL_OK;
+}
+
+static interp *fresh(void)
+{
+    scene_reset(&sc);
+    diag_clear(&dlog);
+    interp *ip = interp_create(&sc, &dlog);
+    interp_set_resources(ip, fetch, NULL);
+    interp_begin_frame(ip);
+    return ip;
+}
+
+static void run(interp *ip, seq *s)
+{
+    rgl_error err;
+    CHECK(interp_run(ip, s->data, s->len, 0, &err) == RGL_OK);
+    seq_free(s);
+}
+
+static uint64_t count(diag_kind k) { return dlog.e[k].count; }
+
+static char sdl[1 << 16];
+static size_t nsdl;
+
+static int keep(void *user, const char *p, size_t n)
+{
+    (void)user;
+    if (nsdl + n >= sizeof sdl)
+        return -1;
+    memcpy(sdl + nsdl, p, n);
+    nsdl += n;
+    sdl[nsdl] = 0;
+    return 0;
+}
+
+static void write_sdl(void)
+{
+    povwriter *w = povwriter_create();
+    outbuf ob;
+    nsdl = 0;
+    sdl[0] = 0;
+    CHECK(w != NULL && outbuf_init(&ob, 1 << 12, keep, NULL) == 0);
+    CHECK(povwriter_scene(w, &ob, &sc, NULL) == 0);
+    CHECK(outbuf_flush(&ob) == 0);
+    outbuf_finish(&ob);
+    povwriter_destroy(w);
+}
+
+/* A red triangle at z = -5 with fog coordinates 0, 5 and 10. */
+static void fog_tri(seq *s)
+{
+    CMD(s, Color3f, 1, 0, 0);
+    CMD(s, Begin, GL_TRIANGLES);
+    CMD(s, FogCoordf, 0);
+    CMD(s, Vertex3f, -1, -1, -5);
+    CMD(s, FogCoordf, 5);
+    CMD(s, Vertex3f, 1, -1, -5);
+    CMD(s, FogCoordf, 10);
+    CMD(s, Vertex3f, 0, 1, -5);
+    CMD0(s, End);
+}
+
+static void fog_setup(seq *s, GLenum mode)
+{
+    CMD(s, Enable, GL_DEPTH_TEST);
+    CMD(s, Enable, GL_FOG);
+    CMD(s, Fogi, GL_FOG_COORD_SRC, GL_FOG_COORD);
+    CMD(s, Fogi, GL_FOG_MODE, mode);
+    CMD(s, Fogf, GL_FOG_START, 0);
+    CMD(s, Fogf, GL_FOG_END, 10);
+    CMD(s, Fogf, GL_FOG_DENSITY, 0.2);
+    CMD(s, Fogfv, GL_FOG_COLOR, 0, 0, 1, 1);
+}
+
+static void test_fog_coord_linear(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    fog_setup(&s, GL_LINEAR);
+    fog_tri(&s);
+    run(ip, &s);
+    CHECK_EQ_U(sc.nmeshes, 1);
+    CHECK_EQ_U(sc.ntris, 1);
+    CHECK(!sc.meshes[0].look.fog); /* baked: no eye-distance layer */
+    static const float want[3][3] = {{1, 0, 0}, {0.5f, 0, 0.5f}, {0, 0, 1}};
+    for (int k = 0; k < 3; k++)
+        for (int c = 0; c < 3; c++)
+            CHECK_NEAR(sc.verts[sc.tris[0].v[k]].color[c], want[k][c], 1e-6);
+    CHECK_EQ_U(count(DIAG_NOTE_FOG_COORD), 0);
+    CHECK_EQ_U(count(DIAG_NOTE_FOG_COORD_EXP), 0);
+    interp_destroy(ip);
+}
+
+static void test_fog_coord_exp(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    fog_setup(&s, GL_EXP2);
+    fog_tri(&s);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 1);
+    double f = exp(-(0.2 * 5) * (0.2 * 5));
+    CHECK_NEAR(sc.verts[sc.tris[0].v[1]].color[0], f, 1e-6);
+    CHECK_NEAR(sc.verts[sc.tris[0].v[1]].color[2], 1 - f, 1e-6);
+    CHECK_EQ_U(count(DIAG_NOTE_FOG_COORD_EXP), 1);
+    CHECK_EQ_U(count(DIAG_NOTE_FOG_COORD), 0);
+    interp_destroy(ip);
+
+    /* Eye distance (the default source): the layer, colours untouched. */
+    ip = fresh();
+    seq_init(&s);
+    fog_setup(&s, GL_LINEAR);
+    CMD(&s, Fogi, GL_FOG_COORD_SRC, GL_FRAGMENT_DEPTH);
+    fog_tri(&s);
+    run(ip, &s);
+    CHECK(sc.nmeshes == 1 && sc.meshes[0].look.fog);
+    CHECK_NEAR(sc.verts[sc.tris[0].v[2]].color[0], 1, 0);
+    interp_destroy(ip);
+}
+
+/* Lit surfaces: POV-Ray computes the colour; the eye-distance layer stays,
+ * with a note. */
+static void test_fog_coord_lit(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    fog_setup(&s, GL_LINEAR);
+    CMD(&s, Enable, GL_LIGHTING);
+    CMD(&s, Enable, GL_LIGHT0);
+    fog_tri(&s);
+    run(ip, &s);
+    CHECK(sc.nmeshes == 1 && sc.meshes[0].look.fog);
+    CHECK_EQ_U(count(DIAG_NOTE_FOG_COORD), 1);
+    interp_destroy(ip);
+}
+
+static void test_color_sum(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Enable, GL_COLOR_SUM);
+    CMD(&s, Color3f, 0.5, 0.2, 0);
+    CMD(&s, SecondaryColor3f, 0.7, 0.1, 0.3);
+    CMD(&s, Begin, GL_TRIANGLES);
+    CMD(&s, Vertex3f, -1, -1, -5);
+    CMD(&s, Vertex3f, 1, -1, -5);
+    CMD(&s, Vertex3f, 0, 1, -5);
+    CMD0(&s, End);
+    CMD(&s, Disable, GL_COLOR_SUM);
+    CMD(&s, Begin, GL_TRIANGLES);
+    CMD(&s, Vertex3f, -1, -1, -6);
+    CMD(&s, Vertex3f, 1, -1, -6);
+    CMD(&s, Vertex3f, 0, 1, -6);
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 2);
+    const float *c0 = sc.verts[sc.tris[0].v[0]].color, *c1 = sc.verts[sc.tris[1].v[0]].color;
+    CHECK_NEAR(c0[0], 1, 1e-6); /* 1.2 clamped */
+    CHECK_NEAR(c0[1], 0.3, 1e-6);
+    CHECK_NEAR(c0[2], 0.3, 1e-6);
+    CHECK_NEAR(c1[0], 0.5, 1e-6);
+    CHECK_NEAR(c1[2], 0, 0);
+    CHECK_EQ_U(count(DIAG_NOTE_COLOR_SUM), 0);
+    interp_destroy(ip);
+}
+
+/* A fogged GLUT sphere is a solid with the fog layer over its texture. */
+static void test_fogged_solid(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Enable, GL_DEPTH_TEST);
+    CMD(&s, Enable, GL_FOG);
+    CMD(&s, Translatef, 0, 0, -8);
+    CMD(&s, SolidSphere, 1, 32, 24);
+    run(ip, &s);
+    interp_end_frame(ip);
+    CHECK_EQ_U(sc.nsolids, 1);
+    write_sdl();
+    const char *decl = strstr(sdl, "#declare rgl_fog=");
+    const char *sph = strstr(sdl, "sphere{<0,0,0>,1");
+    CHECK(decl != NULL && sph != NULL && decl < sph);
+    CHECK(sph != NULL && strstr(sph, "texture{rgl_fog}") != NULL);
+    interp_destroy(ip);
+
+    /* Unlit with a fog coordinate: the fogged colour, no layer. */
+    ip = fresh();
+    seq_init(&s);
+    fog_setup(&s, GL_LINEAR);
+    CMD(&s, Color3f, 1, 0, 0);
+    CMD(&s, FogCoordf, 2.5);
+    CMD(&s, Translatef, 0, 0, -8);
+    CMD(&s, SolidSphere, 1, 32, 24);
+    run(ip, &s);
+    interp_end_frame(ip);
+    CHECK_EQ_U(sc.nsolids, 1);
+    CHECK(!sc.solids[0].look.fog);
+    CHECK_NEAR(sc.solids[0].color[0], 0.75, 1e-6);
+    CHECK_NEAR(sc.solids[0].color[2], 0.25, 1e-6);
+    write_sdl();
+    CHECK(strstr(sdl, "rgl_fog") == NULL);
+    interp_destroy(ip);
+}
+
+/* Calls of one list at other depths: unfogged they share a prototype;
+ * fogged each stays inline, fogged by its own eye distance. */
+static void test_fogged_list(void)
+{
+    seq b;
+    seq_init(&b);
+    CMD(&b, Begin, GL_TRIANGLES);
+    CMD(&b, Vertex2f, 0, 0);
+    CMD(&b, Vertex2f, 1, 0);
+    CMD(&b, Vertex2f, 0, 1);
+    CMD0(&b, End);
+    CMD(&b, Translatef, 0, 0, -5);
+    bodies[0] = b;
+    nbodies = 1;
+    for (int fog = 0; fog < 2; fog++) {
+        interp *ip = fresh();
+        seq s;
+        seq_init(&s);
+        CMD(&s, Enable, GL_DEPTH_TEST);
+        if (fog)
+            CMD(&s, Enable, GL_FOG);
+        CMD(&s, Translatef, 0, 0, -3);
+        CMD(&s, NewList, 1, GL_COMPILE, 1);
+        CMD0(&s, EndList);
+        for (int i = 0; i < 3; i++)
+            CMD(&s, CallList, 1);
+        run(ip, &s);
+        interp_end_frame(ip);
+        CHECK_EQ_U(sc.nprotos, fog ? 0 : 1);
+        CHECK_EQ_U(sc.ntris, fog ? 3 : 1);
+        if (fog) {
+            write_sdl();
+            const char *p = sdl;
+            size_t n = 0;
+            while ((p = strstr(p, "#declare rgl_fog=")) != NULL) {
+                n++;
+                p++;
+            }
+            CHECK_EQ_U(n, 3); /* one fog per call, at its own depth */
+        }
+        interp_destroy(ip);
+    }
+    seq_free(&bodies[0]);
+    nbodies = 0;
+}
+
+int main(void)
+{
+    scene_init(&sc);
+    test_fog_coord_linear();
+    test_fog_coord_exp();
+    test_fog_coord_lit();
+    test_color_sum();
+    test_fogged_solid();
+    test_fogged_list();
+    scene_finish(&sc);
+    return CHECK_RESULT("test_fogsec");
+}

@@ -1,0 +1,74 @@
+/* interp_fogsec.c: fog coordinates and the secondary colour (GL 1.4;
+ * GL 2.1 3.9 colour sum, 3.10 fog).
+ *
+ * GL adds the secondary colour after texturing (GL_COLOR_SUM, unlit) and
+ * then fogs by f of the fragment's fog coordinate: its eye distance, or
+ * with GL_FOG_COORD_SRC = GL_FOG_COORD the interpolated glFogCoord. Where
+ * the vertex colour is GL's final colour (an untextured unlit draw, or lit
+ * lines and points, which the interpreter lights itself), both go into the
+ * vertex colour here, and POV-Ray interpolates it across the face as GL
+ * interpolates the fog coordinate (Gouraud); such a draw then carries no
+ * fog layer (interp_current_look). Lit or textured surfaces, whose colour
+ * POV-Ray computes, keep the eye-distance fog layer, with a note.
+ */
+#include "interp_internal.h"
+
+#include <math.h>
+
+/* GL 2.1 (3.16), with c the fog coordinate as given (Mesa takes no
+ * absolute value of a glFogCoord). */
+static double fog_factor(const gl_attribs *a, double c)
+{
+    double f;
+    switch (a->fog.mode) {
+    case GL_LINEAR: {
+        double span = (double)a->fog.end - a->fog.start;
+        f = span != 0 ? (a->fog.end - c) / span : 1;
+        break;
+    }
+    case GL_EXP2: {
+        double dc = a->fog.density * c;
+        f = exp(-dc * dc);
+        break;
+    }
+    default:
+        f = exp(-a->fog.density * c);
+        break;
+    }
+    if (!(f > 0))
+        return 0; /* also NaN */
+    return f < 1 ? f : 1;
+}
+
+void interp_fogsec_begin(interp *ip, GLenum mode)
+{
+    const gl_attribs *a = &ip->st.a;
+    const uint8_t *c = a->caps;
+    bool lit_surface = c[INTERP_CAP_LIGHTING] && mode > GL_LINE_STRIP;
+    bool final_colour = !lit_surface && ip->draw_unit[0] < 0 && ip->draw_unit[1] < 0;
+    bool sum = c[INTERP_CAP_COLOR_SUM] && !c[INTERP_CAP_LIGHTING];
+    bool coord = c[INTERP_CAP_FOG] && a->fog.coord_src == GL_FOG_COORD;
+    ip->prim_color_sum = sum && final_colour;
+    ip->prim_fog_vertex = coord && final_colour;
+    if (sum && !final_colour)
+        interp_note(ip, DIAG_NOTE_COLOR_SUM);
+    if (coord && !final_colour)
+        interp_note(ip, DIAG_NOTE_FOG_COORD);
+    else if (coord && a->fog.mode != GL_LINEAR)
+        interp_note(ip, DIAG_NOTE_FOG_COORD_EXP);
+}
+
+void interp_fogsec_vertex(const interp *ip, float color[4])
+{
+    const gl_attribs *a = &ip->st.a;
+    if (ip->prim_color_sum)
+        for (int k = 0; k < 3; k++) {
+            float v = color[k] + a->current.secondary[k];
+            color[k] = v < 1 ? v : 1;
+        }
+    if (ip->prim_fog_vertex) {
+        double f = fog_factor(a, a->current.fog_coord);
+        for (int k = 0; k < 3; k++)
+            color[k] = (float)(f * color[k] + (1 - f) * a->fog.color[k]);
+    }
+}
