@@ -54,20 +54,27 @@ void interp_fogsec_begin(interp *ip, GLenum mode)
         interp_note(ip, DIAG_NOTE_COLOR_SUM);
     if (coord && !final_colour)
         interp_note(ip, DIAG_NOTE_FOG_COORD);
-    else if (coord && a->fog.mode != GL_LINEAR)
-        interp_note(ip, DIAG_NOTE_FOG_COORD_EXP);
+    else if (coord && (a->fog.mode != GL_LINEAR || a->lighting.shade_model == GL_FLAT))
+        interp_note(ip, DIAG_NOTE_FOG_COORD_VERTEX);
 }
 
-void interp_fogsec_vertex(const interp *ip, float color[4])
+void interp_fogsec_vertex(interp *ip, float color[4])
 {
     const gl_attribs *a = &ip->st.a;
+    /* GL clamps the sum per fragment, after interpolating both colours;
+     * POV-Ray clamps only the pixel, so the sum stays unclamped, unless
+     * fog follows (GL fogs the clamped sum). */
     if (ip->prim_color_sum)
         for (int k = 0; k < 3; k++) {
             float v = color[k] + a->current.secondary[k];
-            color[k] = v < 1 ? v : 1;
+            color[k] = v < 1 || !ip->prim_fog_vertex ? v : 1;
         }
     if (ip->prim_fog_vertex) {
-        double f = fog_factor(a, a->current.fog_coord);
+        double c = a->current.fog_coord, f = fog_factor(a, c);
+        /* A factor clamped at a vertex is not GL's clamp per fragment. */
+        if (a->fog.mode == GL_LINEAR && (c < fmin(a->fog.start, a->fog.end) ||
+                                         c > fmax(a->fog.start, a->fog.end)))
+            interp_note(ip, DIAG_NOTE_FOG_COORD_VERTEX);
         for (int k = 0; k < 3; k++)
             color[k] = (float)(f * color[k] + (1 - f) * a->fog.color[k]);
     }

@@ -320,7 +320,7 @@ void interp_accum_draw(interp *ip);
  * and the fog of the fog coordinate, with a note where they cannot.
  * interp_fogsec_vertex: applies them to one vertex colour (RGB, in place). */
 void interp_fogsec_begin(interp *ip, GLenum mode);
-void interp_fogsec_vertex(const interp *ip, float color[4]);
+void interp_fogsec_vertex(interp *ip, float color[4]);
 bool interp_accum_clear(interp *ip);
 
 /* Evaluator state (interp_eval.c): copied with the context state (-1 on

@@ -1589,7 +1589,7 @@ static void test_secondary_notes(void)
     /* Unlit and untextured: both translated (test_fogsec.c); GL_EXP
      * fog of fog coordinates is interpolated per vertex, with a note. */
     CHECK_EQ_U(count(DIAG_NOTE_FOG_COORD), 0);
-    CHECK_EQ_U(count(DIAG_NOTE_FOG_COORD_EXP), 1);
+    CHECK_EQ_U(count(DIAG_NOTE_FOG_COORD_VERTEX), 1);
     CHECK_EQ_U(count(DIAG_NOTE_COLOR_SUM), 0);
     CHECK(interp_state(ip)->a.fog.coord_src == GL_FOG_COORD);
     interp_destroy(ip);
