@@ -53,7 +53,6 @@
     X(NOTE_RENDER_MODE, "left out, as GL draws no pixel of it: geometry drawn in GL_SELECT or GL_FEEDBACK render mode") \
     X(NOTE_EVAL_INDEX, "not translated: colour-index evaluator maps (GL_MAP1_INDEX, GL_MAP2_INDEX)") \
     X(NOTE_PIXELS_DEPTH, "approximated: bitmaps and pixel rectangles show in front of the whole scene (drawn with the depth test on, or before later geometry)") \
-    X(NOTE_RASTER_LIT, "approximated: the raster colour is the current colour unlit (glRasterPos with lighting on)") \
     X(NOTE_PIXELS_OTHER, "not translated: colour-index, depth and stencil pixels, pixel maps and index shifts (glDrawPixels, glCopyPixels)") \
     X(NOTE_ACCUM_PASSES, "approximated: accumulation-buffer passes that differ other than by a sub-pixel jitter of the projection or an eye moved around a focal point (motion blur) are drawn as their first pass alone") \
     X(NOTE_FOG_COORD, "not translated yet: fog coordinates (GL_FOG_COORD_SRC GL_FOG_COORD) on lit or textured surfaces: fogged by the eye distance") \

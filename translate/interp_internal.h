@@ -320,6 +320,11 @@ void interp_accum_draw(interp *ip);
  * and the fog of the fog coordinate, with a note where they cannot.
  * interp_fogsec_vertex: applies them to one vertex colour (RGB, in place). */
 void interp_fogsec_begin(interp *ip, GLenum mode);
+
+/* GL's lit colour of a vertex at object point (x, y, z) with the current
+ * normal, colour and material, as lit lines and points take it
+ * (interp_prim.c); the raster position takes it too (GL 2.1 2.13). */
+void interp_lit_point_colour(interp *ip, double x, double y, double z, float out[4]);
 void interp_fogsec_vertex(interp *ip, float color[4]);
 bool interp_accum_clear(interp *ip);
 

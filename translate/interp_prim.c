@@ -406,6 +406,11 @@ static void lit_line_colour(interp *ip, double x, double y, double z, float out[
     interp_lit_color(ip, p, n, false, a->current.color, out);
 }
 
+void interp_lit_point_colour(interp *ip, double x, double y, double z, float out[4])
+{
+    lit_line_colour(ip, x, y, z, out);
+}
+
 void interp_add_vertex(interp *ip, double x, double y, double z, double w)
 {
     scene *s = ip->scene;

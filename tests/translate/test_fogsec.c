@@ -4,7 +4,8 @@
  * secondary colour into the vertex colours (no fog layer); lit draws keep
  * the layer and say so; a fogged GLUT solid gets the fog layer in the
  * SDL, and so does an unlit one with a fog coordinate baked in its colour;
- * fogged display-list calls stay inline (each call's own eye distance).
+ * fogged display-list calls stay inline (each call's own eye distance);
+ * the raster colour under lighting is lit as a vertex.
  */
 #include <GL/gl.h>
 #include <math.h>
@@ -290,6 +291,39 @@ static void test_fogged_list(void)
     nbodies = 0;
 }
 
+/* GL lights the raster position as a vertex (GL 2.1 2.13): GL_LIGHT0's
+ * defaults, the default material, model ambient 0.2: 0.2 * 0.2 + 0.8 (N.L). */
+static void test_raster_lit(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, MatrixMode, GL_PROJECTION);
+    CMD(&s, Ortho, -1, 1, -1, 1, -1, 1);
+    CMD(&s, MatrixMode, GL_MODELVIEW);
+    CMD(&s, Enable, GL_LIGHTING);
+    CMD(&s, Enable, GL_LIGHT0);
+    CMD(&s, Color3f, 1, 0, 0);
+    CMD(&s, Normal3f, 0, 0, 1);
+    CMD(&s, RasterPos3f, 0.5, 0, 0);
+    run(ip, &s);
+    const gl_attribs *a = &interp_state(ip)->a;
+    for (int k = 0; k < 3; k++)
+        CHECK_NEAR(a->current.raster_color[k], 0.84, 1e-6);
+    seq_init(&s);
+    CMD(&s, Normal3f, 0, 0, -1); /* facing away: the ambient terms only */
+    CMD(&s, RasterPos3f, 0.5, 0, 0);
+    run(ip, &s);
+    CHECK_NEAR(a->current.raster_color[0], 0.04, 1e-6);
+    seq_init(&s);
+    CMD(&s, Disable, GL_LIGHTING); /* unlit: the current colour */
+    CMD(&s, RasterPos3f, 0.5, 0, 0);
+    run(ip, &s);
+    CHECK_NEAR(a->current.raster_color[0], 1, 0);
+    CHECK_NEAR(a->current.raster_color[1], 0, 0);
+    interp_destroy(ip);
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -299,6 +333,7 @@ int main(void)
     test_color_sum();
     test_fogged_solid();
     test_fogged_list();
+    test_raster_lit();
     scene_finish(&sc);
     return CHECK_RESULT("test_fogsec");
 }
