@@ -118,6 +118,10 @@ typedef struct gl_attribs {
         double raster_pos[4];
         float raster_color[4];
         bool raster_valid;
+        /* glRasterPos under the camera's projection and viewport: its
+         * normalised device z places depth-tested pixels (interp_pixdepth.c). */
+        bool raster_in_camera;
+        double raster_ndc_z;
     } current; /* GL_CURRENT_BIT */
     uint8_t caps[INTERP_CAP_COUNT]; /* GL_ENABLE_BIT (and each cap's group) */
     struct {

@@ -50,6 +50,8 @@ struct interp {
     uint64_t pixels_mark; /* the scene's items after the frame's last pixel draw
                              (interp_pixels.c) */
     int32_t pixels_org[2]; /* window position of scene.overlay's pixel (0, 0) */
+    int pixels_depth_state; /* how the overlay's pixels were depth-tested (interp_pixdepth.c) */
+    double pixels_ndc_z;    /* their raster position's device z, when all share one */
     uint64_t shape_facets; /* facets of tessellated shapes and evaluator mesh points in this
                               frame (interp_shape.c, interp_eval.c) */
 
@@ -320,6 +322,15 @@ void interp_accum_draw(interp *ip);
  * and the fog of the fog coordinate, with a note where they cannot.
  * interp_fogsec_vertex: applies them to one vertex colour (RGB, in place). */
 void interp_fogsec_begin(interp *ip, GLenum mode);
+
+/* interp_pixdepth.c. _raster: at glRasterPos, with its clip coordinates.
+ * _draw: at each pixel draw, before the overlay is made. _end_frame:
+ * places the overlay at the pixels' depth when they all share one
+ * depth-tested plane (scene.overlay_at_depth); whether the overlay is then
+ * where GL puts it (drawn_after: geometry was drawn after the last pixels). */
+void interp_pixdepth_raster(interp *ip, const double clip[4]);
+void interp_pixdepth_draw(interp *ip);
+bool interp_pixdepth_end_frame(interp *ip, bool drawn_after);
 
 /* GL's lit colour of a vertex at object point (x, y, z) with the current
  * normal, colour and material, as lit lines and points take it

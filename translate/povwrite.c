@@ -1060,7 +1060,8 @@ static double near_t(const scene_camera *cam, const double from[3], const double
 /* Bitmaps and pixel rectangles (scene.overlay): one image covering the
  * camera's view exactly, pixel for pixel (image_map without
  * interpolation: each ray through a pixel centre meets its texel's
- * centre), just beyond the near plane, so in front of the whole scene.
+ * centre), just beyond the near plane, so in front of the whole scene, or
+ * at the depth GL tested its pixels at (scene.overlay_at_depth).
  * Unlit (the #default finish), casting no shadow, seen in no reflection
  * or radiosity. Transparent where nothing was drawn. */
 static int write_overlay(povwriter *w, outbuf *ob, const scene *s)
@@ -1084,6 +1085,13 @@ static int write_overlay(povwriter *w, outbuf *ob, const scene *s)
         /* Just past the near plane: a ten-thousandth of its distance for
          * a camera with a centre, a hair along the ray for a parallel one. */
         tt = ortho ? (tt < 0 && !cam->has_clip ? 0 : tt) + 1e-4 : (tt > 0 ? tt * (1 + 1e-4) : 1e-3);
+        /* Depth-tested pixels at one depth: in that plane (interp_pixdepth.c). */
+        if (s->overlay_at_depth) {
+            const double *a = s->overlay_plane;
+            double den = dot3(a, r), at = den != 0 ? -(dot3(a, from) + a[3]) / den : NAN;
+            if (isfinite(at) && (at > 0 || ortho))
+                tt = at;
+        }
         for (int k = 0; k < 3; k++)
             p[c][k] = from[k] + tt * r[k];
         if (!finite3d(p[c]))

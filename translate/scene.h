@@ -281,6 +281,10 @@ typedef struct scene {
      * unlit, casting no shadow. NULL: none in this frame. */
     uint8_t *overlay;
     int overlay_w, overlay_h;
+    /* Set: the overlay lies in the eye-space plane p . e + p[3] = 0 (its
+     * pixels' depth, interp_pixdepth.c) instead of in front. */
+    bool overlay_at_depth;
+    double overlay_plane[4];
     /* What the frame's accumulation-buffer passes add to the one pass the
      * scene holds (interp_accum.c): POV-Ray's antialiasing at this depth
      * (0: none), and focal blur around focal_point (eye space) through a

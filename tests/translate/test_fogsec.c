@@ -5,10 +5,12 @@
  * the layer and say so; a fogged GLUT solid gets the fog layer in the
  * SDL, and so does an unlit one with a fog coordinate baked in its colour;
  * fogged display-list calls stay inline (each call's own eye distance);
- * the raster colour under lighting is lit as a vertex.
+ * the raster colour under lighting is lit as a vertex; depth-tested
+ * pixels at one depth lie at that depth.
  */
 #include <GL/gl.h>
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "check.h"
@@ -324,6 +326,94 @@ static void test_raster_lit(void)
     interp_destroy(ip);
 }
 
+static const uint8_t one_bit = 0x80;
+
+static rgl_status bits_fetch(void *ctx, uint32_t id, rgl_resource *out, rgl_error *err)
+{
+    (void)ctx;
+    if (id != 1) {
+        err->status = RGL_E_RESOURCE;
+        return RGL_E_RESOURCE;
+    }
+    memset(out, 0, sizeof *out);
+    out->id = id;
+    out->kind = RGL_RES_BYTES;
+    out->data = &one_bit;
+    out->size = 1;
+    return RGL_OK;
+}
+
+/* A perspective camera fixed by a triangle at depth 10, then what `tail`
+ * adds; the frame ends. */
+static interp *pixels_frame(bool depth_test, const double *zs, int nz, bool after)
+{
+    interp *ip = fresh();
+    interp_set_resources(ip, bits_fetch, NULL);
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 40, 30);
+    CMD(&s, MatrixMode, GL_PROJECTION);
+    CMD(&s, Frustum, -1, 1, -1, 1, 1, 30);
+    CMD(&s, MatrixMode, GL_MODELVIEW);
+    CMD(&s, Enable, GL_DEPTH_TEST);
+    CMD(&s, Begin, GL_TRIANGLES);
+    CMD(&s, Vertex3f, -1, -1, -10);
+    CMD(&s, Vertex3f, 1, -1, -10);
+    CMD(&s, Vertex3f, 0, 1, -10);
+    CMD0(&s, End);
+    if (!depth_test)
+        CMD(&s, Disable, GL_DEPTH_TEST);
+    for (int i = 0; i < nz; i++) {
+        CMD(&s, RasterPos3f, 0, 0, zs[i]);
+        CMD(&s, Bitmap, 1, 1, 0, 0, 0, 0, 1);
+    }
+    if (after) {
+        CMD(&s, Begin, GL_TRIANGLES);
+        CMD(&s, Vertex3f, -1, -1, -4);
+        CMD(&s, Vertex3f, 1, -1, -4);
+        CMD(&s, Vertex3f, 0, 1, -4);
+        CMD0(&s, End);
+    }
+    run(ip, &s);
+    interp_end_frame(ip);
+    return ip;
+}
+
+static double plane_at(double z)
+{
+    const double *a = sc.overlay_plane;
+    return a[2] * z + a[3];
+}
+
+/* Depth-tested pixels at one raster depth lie in that plane of eye space;
+ * otherwise in front, noted where GL would differ. */
+static void test_pixels_depth(void)
+{
+    static const double six[2] = {-6, -6}, mixed[2] = {-6, -7};
+    interp *ip = pixels_frame(true, six, 2, true);
+    CHECK(sc.overlay != NULL && sc.overlay_at_depth);
+    CHECK_NEAR(plane_at(-6) / plane_at(-5), 0, 1e-9);
+    CHECK(plane_at(-5) * plane_at(-7) < 0);
+    CHECK_EQ_U(count(DIAG_NOTE_PIXELS_DEPTH), 0);
+    write_sdl();
+    CHECK(strstr(sdl, "-6>") != NULL || strstr(sdl, ",-6>") != NULL);
+    interp_destroy(ip);
+
+    ip = pixels_frame(true, mixed, 2, false); /* two depths: in front */
+    CHECK(sc.overlay != NULL && !sc.overlay_at_depth);
+    CHECK_EQ_U(count(DIAG_NOTE_PIXELS_DEPTH), 1);
+    interp_destroy(ip);
+
+    ip = pixels_frame(false, six, 1, false); /* no depth test, nothing after: exact */
+    CHECK(sc.overlay != NULL && !sc.overlay_at_depth);
+    CHECK_EQ_U(count(DIAG_NOTE_PIXELS_DEPTH), 0);
+    interp_destroy(ip);
+
+    ip = pixels_frame(false, six, 1, true); /* drawn over by GL: noted */
+    CHECK_EQ_U(count(DIAG_NOTE_PIXELS_DEPTH), 1);
+    interp_destroy(ip);
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -334,6 +424,7 @@ int main(void)
     test_fogged_solid();
     test_fogged_list();
     test_raster_lit();
+    test_pixels_depth();
     scene_finish(&sc);
     return CHECK_RESULT("test_fogsec");
 }
