@@ -798,7 +798,12 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         w->light.s->materials[look->material].two_sided) {
         /* GL_BACK's material on the faces' inner side (see the file
          * comment); one texture for the whole mesh, in the first colour. */
-        if (look->fog) { /* a layered texture enters by name only */
+        if (tx) { /* the back takes the texture too (GL textures both sides) */
+            outbuf_puts(ob, "#declare rgl_back=");
+            put_surface(w, ob, look, tx, pigment, c0, 1);
+            outbuf_puts(ob, look->fog ? "texture{rgl_fog}\ninterior_texture{rgl_back}\n"
+                                      : "\ninterior_texture{rgl_back}\n");
+        } else if (look->fog) { /* a layered texture enters by name only */
             outbuf_puts(ob, "#declare rgl_back=");
             povlight_texture(&w->light, ob, look, c0, 1);
             outbuf_puts(ob, "texture{rgl_fog}\ninterior_texture{rgl_back}\n");
