@@ -508,7 +508,8 @@ static void set_cap(interp *ip, const rgl_cmd *cmd, bool on)
      * as that, and the draws' @ArrayData carry what they enable. */
     if (i < 0 && (cap == GL_VERTEX_ARRAY || cap == GL_NORMAL_ARRAY || cap == GL_COLOR_ARRAY ||
                   cap == GL_INDEX_ARRAY || cap == GL_TEXTURE_COORD_ARRAY ||
-                  cap == GL_EDGE_FLAG_ARRAY))
+                  cap == GL_EDGE_FLAG_ARRAY || cap == GL_FOG_COORD_ARRAY ||
+                  cap == GL_SECONDARY_COLOR_ARRAY))
         return;
     if (i < 0) {
         interp_bad_enum(ip, "capability", cap);

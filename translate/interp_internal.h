@@ -120,7 +120,7 @@ struct interp {
         uint32_t type;
         const uint8_t *data;
         size_t bytes;
-    } arrays[5];
+    } arrays[7]; /* interp_array.c's ARR_* */
     /* Texture coordinates of units 1.. (units[0] unused: arrays[3] is
      * unit 0's): an @ArrayData of GL_TEXTURE_COORD_ARRAY fills the client
      * active unit's. */

@@ -326,6 +326,44 @@ static void test_raster_lit(void)
     interp_destroy(ip);
 }
 
+/* The fog-coordinate and secondary-colour arrays: each element sets the
+ * current value as glFogCoord / glSecondaryColor would. */
+static void test_arrays(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    fog_setup(&s, GL_LINEAR);
+    CMD(&s, Enable, GL_COLOR_SUM);
+    CMD(&s, Color3f, 0.5, 0, 0);
+    static const float xyz[9] = {-1, -1, -5, 1, -1, -5, 0, 1, -5};
+    static const double fog[3] = {0, 5, 10};
+    static const uint8_t sec[9] = {0, 0, 0, 0, 255, 0, 0, 0, 255};
+    seq_cmd_bytes(&s, RGL_OP_ArrayData, xyz, sizeof xyz,
+                  (const double[]){GL_VERTEX_ARRAY, 0, 3, GL_FLOAT}, 4);
+    seq_cmd_bytes(&s, RGL_OP_ArrayData, fog, sizeof fog,
+                  (const double[]){GL_FOG_COORD_ARRAY, 0, 1, GL_DOUBLE}, 4);
+    seq_cmd_bytes(&s, RGL_OP_ArrayData, sec, sizeof sec,
+                  (const double[]){GL_SECONDARY_COLOR_ARRAY, 0, 3, GL_UNSIGNED_BYTE}, 4);
+    CMD(&s, DrawArrays, GL_TRIANGLES, 0, 3);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 1);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 0);
+    if (sc.ntris == 1) {
+        const float *c1 = sc.verts[sc.tris[0].v[1]].color, *c2 = sc.verts[sc.tris[0].v[2]].color;
+        /* (0.5, 1, 0) fogged by half toward (0, 0, 1); (0.5, 0, 1) all fog. */
+        CHECK_NEAR(c1[0], 0.25, 1e-6);
+        CHECK_NEAR(c1[1], 0.5, 1e-6);
+        CHECK_NEAR(c1[2], 0.5, 1e-6);
+        CHECK_NEAR(c2[0], 0, 1e-6);
+        CHECK_NEAR(c2[2], 1, 1e-6);
+    }
+    const gl_attribs *a = &interp_state(ip)->a;
+    CHECK_NEAR(a->current.fog_coord, 10, 0); /* the last element's */
+    CHECK_NEAR(a->current.secondary[2], 1, 0);
+    interp_destroy(ip);
+}
+
 static const uint8_t one_bit = 0x80;
 
 static rgl_status bits_fetch(void *ctx, uint32_t id, rgl_resource *out, rgl_error *err)
@@ -425,6 +463,7 @@ int main(void)
     test_fogged_list();
     test_raster_lit();
     test_pixels_depth();
+    test_arrays();
     scene_finish(&sc);
     return CHECK_RESULT("test_fogsec");
 }
