@@ -171,6 +171,7 @@ void interp_default_state(gl_state *st)
     a->hint.perspective = a->hint.point = a->hint.line = a->hint.polygon = a->hint.fog =
         GL_DONT_CARE;
     a->texture.env_mode = GL_MODULATE;
+    interp_combine_defaults(&a->texture);
     for (int i = 0; i < 4; i++) {
         a->texture.gen_mode[i] = GL_EYE_LINEAR;
         for (int k = 0; k < 4; k++)

@@ -174,6 +174,10 @@ typedef struct gl_attribs {
     struct gl_texture_unit {
         GLenum env_mode;
         float env_color[4];
+        /* GL_COMBINE (interp_combine.c): RGB and alpha functions, the RGB
+         * arguments' sources and operands, the scales. */
+        GLenum combine_rgb, combine_alpha, combine_src[3], combine_op[3];
+        float rgb_scale, alpha_scale;
         uint32_t binding_1d, binding_2d;
         GLenum gen_mode[4];       /* s, t, r, q: GL_EYE_LINEAR, ... */
         double obj_plane[4][4];   /* GL_OBJECT_PLANE */

@@ -323,6 +323,14 @@ void interp_accum_draw(interp *ip);
  * interp_fogsec_vertex: applies them to one vertex colour (RGB, in place). */
 void interp_fogsec_begin(interp *ip, GLenum mode);
 
+/* interp_combine.c. _defaults: GL's initial combiner state. _texenv: a
+ * glTexEnv of a combiner pname on the active unit (false: not one).
+ * _mode: the fixed mode a unit's combiner setting equals (unit: its
+ * index; first: the draw's first unit), or 0 when none does. */
+void interp_combine_defaults(struct gl_texture_unit *t);
+bool interp_combine_texenv(interp *ip, GLenum pname, double v);
+GLenum interp_combine_mode(const struct gl_texture_unit *t, int unit, bool first);
+
 /* interp_pixdepth.c. _raster: at glRasterPos, with its clip coordinates.
  * _draw: at each pixel draw, before the overlay is made. _end_frame:
  * places the overlay at the pixels' depth when they all share one

@@ -15,6 +15,7 @@
 
 #include "check.h"
 #include "interp.h"
+#include "interp_internal.h"
 #include "outbuf.h"
 #include "povwrite.h"
 #include "tracegen.h"
@@ -364,6 +365,59 @@ static void test_arrays(void)
     interp_destroy(ip);
 }
 
+/* GL_COMBINE settings equal to a fixed mode, and the rest. */
+static void test_combine(void)
+{
+    struct gl_texture_unit t;
+    memset(&t, 0, sizeof t);
+    interp_combine_defaults(&t);
+    CHECK(interp_combine_mode(&t, 0, true) == GL_MODULATE); /* GL's initial setting */
+    t.combine_src[0] = GL_PRIMARY_COLOR;
+    t.combine_src[1] = GL_TEXTURE;
+    CHECK(interp_combine_mode(&t, 0, true) == GL_MODULATE);
+    CHECK(interp_combine_mode(&t, 1, false) == 0); /* PRIMARY_COLOR is not PREVIOUS there */
+    t.combine_src[1] = GL_TEXTURE1;
+    t.combine_src[0] = GL_PREVIOUS;
+    t.combine_rgb = GL_ADD;
+    CHECK(interp_combine_mode(&t, 1, false) == GL_ADD);
+    CHECK(interp_combine_mode(&t, 2, false) == 0); /* another unit's texel */
+    t.rgb_scale = 2;
+    CHECK(interp_combine_mode(&t, 1, false) == 0);
+    t.rgb_scale = 1;
+    t.combine_rgb = GL_SUBTRACT;
+    CHECK(interp_combine_mode(&t, 1, false) == 0);
+    t.combine_rgb = GL_INTERPOLATE;
+    t.combine_src[0] = GL_CONSTANT;
+    t.combine_src[1] = GL_PREVIOUS;
+    t.combine_src[2] = GL_TEXTURE;
+    t.combine_op[2] = GL_SRC_COLOR;
+    CHECK(interp_combine_mode(&t, 1, false) == GL_BLEND);
+    t.combine_src[0] = GL_TEXTURE;
+    t.combine_op[2] = GL_SRC_ALPHA;
+    CHECK(interp_combine_mode(&t, 1, false) == GL_DECAL);
+    t.combine_op[0] = GL_ONE_MINUS_SRC_COLOR;
+    CHECK(interp_combine_mode(&t, 1, false) == 0);
+
+    /* glTexEnv: stored on the active unit; bad values refused. */
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, TexEnvi, GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_DOT3_RGB);
+    CMD(&s, TexEnvi, GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_DOT3_RGB); /* RGB only */
+    CMD(&s, TexEnvi, GL_TEXTURE_ENV, GL_SOURCE2_RGB, GL_PRIMARY_COLOR);
+    CMD(&s, TexEnvi, GL_TEXTURE_ENV, GL_OPERAND1_RGB, GL_ONE_MINUS_SRC_ALPHA);
+    CMD(&s, TexEnvf, GL_TEXTURE_ENV, GL_RGB_SCALE, 3);
+    CMD(&s, TexEnvf, GL_TEXTURE_ENV, GL_ALPHA_SCALE, 4);
+    run(ip, &s);
+    const struct gl_texture_unit *u = &interp_state(ip)->a.texture;
+    CHECK(u->combine_rgb == GL_DOT3_RGB && u->combine_alpha == GL_MODULATE);
+    CHECK(u->combine_src[2] == GL_PRIMARY_COLOR && u->combine_op[1] == GL_ONE_MINUS_SRC_ALPHA);
+    CHECK(u->rgb_scale == 1 && u->alpha_scale == 4);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 1);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_VALUE), 1);
+    interp_destroy(ip);
+}
+
 static const uint8_t one_bit = 0x80;
 
 static rgl_status bits_fetch(void *ctx, uint32_t id, rgl_resource *out, rgl_error *err)
@@ -464,6 +518,7 @@ int main(void)
     test_raster_lit();
     test_pixels_depth();
     test_arrays();
+    test_combine();
     scene_finish(&sc);
     return CHECK_RESULT("test_fogsec");
 }
