@@ -262,6 +262,25 @@ static void snap_texenv(rgl_buf *b)
     glGetTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, color);
     rgl_emit(b, RGL_OP_TexEnvi, "eei", GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, mode);
     rgl_emit(b, RGL_OP_TexEnvfv, "eeN", GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, color, 4);
+    if (mode == GL_COMBINE) { /* the combiner (GL 1.3), only where it is used */
+        static const GLenum ipn[] = {GL_COMBINE_RGB, GL_COMBINE_ALPHA, GL_SOURCE0_RGB,
+                                     GL_SOURCE1_RGB, GL_SOURCE2_RGB, GL_OPERAND0_RGB,
+                                     GL_OPERAND1_RGB, GL_OPERAND2_RGB, GL_SOURCE0_ALPHA,
+                                     GL_SOURCE1_ALPHA, GL_SOURCE2_ALPHA, GL_OPERAND0_ALPHA,
+                                     GL_OPERAND1_ALPHA, GL_OPERAND2_ALPHA};
+        for (size_t k = 0; k < sizeof ipn / sizeof ipn[0]; k++) {
+            GLint v = SENTINEL_I;
+            glGetTexEnviv(GL_TEXTURE_ENV, ipn[k], &v);
+            if (v != SENTINEL_I)
+                rgl_emit(b, RGL_OP_TexEnvi, "eei", GL_TEXTURE_ENV, ipn[k], v);
+        }
+        static const GLenum fpn[] = {GL_RGB_SCALE, GL_ALPHA_SCALE};
+        for (size_t k = 0; k < 2; k++) {
+            GLfloat f = 1;
+            glGetTexEnvfv(GL_TEXTURE_ENV, fpn[k], &f);
+            rgl_emit(b, RGL_OP_TexEnvf, "eef", GL_TEXTURE_ENV, fpn[k], (double)f);
+        }
+    }
     for (int c = 0; c < 4; c++) {
         GLint gm = GL_EYE_LINEAR;
         GLfloat plane[4] = {0};

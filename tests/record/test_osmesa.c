@@ -515,6 +515,10 @@ static void test_eval_snapshot(const char *path)
 static void test_unit_snapshot(const char *path)
 {
     CHECK(rayglRecordOpen(path) == 0);
+    rayglActiveTexture(GL_TEXTURE3);
+    rayglTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
+    rayglTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_SUBTRACT);
+    rayglTexEnvf(GL_TEXTURE_ENV, GL_RGB_SCALE, 2);
     rayglActiveTexture(GL_TEXTURE1);
     rayglEnable(GL_TEXTURE_2D);
     rayglTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);
@@ -529,6 +533,10 @@ static void test_unit_snapshot(const char *path)
     rayglEnd();
     rayglutSwapBuffers();
     rayglRecordClose();
+    rayglActiveTexture(GL_TEXTURE3);
+    rayglTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    rayglTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_MODULATE);
+    rayglTexEnvf(GL_TEXTURE_ENV, GL_RGB_SCALE, 1);
     rayglActiveTexture(GL_TEXTURE1);
     rayglDisable(GL_TEXTURE_2D);
     rayglTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
@@ -559,6 +567,13 @@ static void test_unit_snapshot(const char *path)
         long tm = trace_cmds_find(&s, (size_t)(u1 > 0 ? u1 : 0),
                                   "glLoadMatrixf(m=[1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0.5, 0, 0, 1])");
         CHECK(tm > u1 && tm < u3);
+        /* Unit 3's combiner, only where GL_COMBINE is the mode. */
+        long u4 = trace_cmds_find(&s, (size_t)(u3 > 0 ? u3 : 0), "glActiveTexture(texture=GL_TEXTURE4)");
+        long sub = trace_cmds_find(&s, 0, "glTexEnvi(target=GL_TEXTURE_ENV, pname=GL_COMBINE_RGB, param=34023)");
+        CHECK(sub > u3 && sub < u4);
+        long sc = trace_cmds_find(&s, 0, "glTexEnvf(target=GL_TEXTURE_ENV, pname=GL_RGB_SCALE, param=2)");
+        CHECK(sc > u3 && sc < u4);
+        CHECK(trace_cmds_count(&s, RGL_OP_TexEnvf) == 2);
         /* The active unit again before the final matrices. */
         long last = -1;
         for (size_t i = 0; i < s.count; i++)
