@@ -57,6 +57,7 @@
     X(NOTE_ACCUM_PASSES, "approximated: accumulation-buffer passes that differ other than by a sub-pixel jitter of the projection or an eye moved around a focal point (motion blur) are drawn as their first pass alone") \
     X(NOTE_FOG_COORD, "not translated yet: fog coordinates (GL_FOG_COORD_SRC GL_FOG_COORD) on lit or textured surfaces: fogged by the eye distance") \
     X(NOTE_FOG_COORD_VERTEX, "approximated: fog coordinates under GL_EXP or GL_EXP2 fog, flat shading, or outside GL_FOG_START..GL_FOG_END: the fog factor is taken at the vertices (per face when flat) where GL interpolates the coordinate; exact where a primitive's fog coordinates are equal") \
+    X(NOTE_FOG_LINES, "approximated: fog on lines: the fog factor is taken at the line's ends (exact for GL_LINEAR within GL_FOG_START..GL_FOG_END and unmapped blending)") \
     X(NOTE_COLOR_SUM, "not translated yet: the secondary colour of unlit textured surfaces (GL_COLOR_SUM): not added") \
     X(NOTE_SINGLE_COLOR, "approximated: lit textured surfaces with GL_SINGLE_COLOR get the highlight after the texture (as GL_SEPARATE_SPECULAR_COLOR), where GL modulates it by the texture") \
     X(NOTE_ACCUM_WEIGHTS, "approximated: accumulation weights that do not add up to one, GL_MULT or GL_ADD, are drawn as an average of the passes") \

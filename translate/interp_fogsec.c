@@ -9,7 +9,9 @@
  * vertex colour here, and POV-Ray interpolates it across the face as GL
  * interpolates the fog coordinate (Gouraud); such a draw then carries no
  * fog layer (interp_current_look). Lit or textured surfaces, whose colour
- * POV-Ray computes, keep the eye-distance fog layer, with a note.
+ * POV-Ray computes, keep the eye-distance fog layer, with a note. Lines
+ * and points, built in eye space with GL's final colours, take the fog of
+ * their eye distance at their ends (interp_fogsec_eye).
  */
 #include "interp_internal.h"
 
@@ -56,6 +58,19 @@ void interp_fogsec_begin(interp *ip, GLenum mode)
         interp_note(ip, DIAG_NOTE_FOG_COORD);
     else if (coord && (a->fog.mode != GL_LINEAR || a->lighting.shade_model == GL_FLAT))
         interp_note(ip, DIAG_NOTE_FOG_COORD_VERTEX);
+}
+
+void interp_fogsec_eye(interp *ip, double z_eye, float color[4])
+{
+    const gl_attribs *a = &ip->st.a;
+    if (!a->caps[INTERP_CAP_FOG] || a->fog.coord_src != GL_FRAGMENT_DEPTH)
+        return; /* unfogged, or fogged by the coordinate already */
+    double c = fabs(z_eye), f = fog_factor(a, c);
+    if (a->fog.mode != GL_LINEAR || ip->prim_blend_mapped ||
+        c < fmin(a->fog.start, a->fog.end) || c > fmax(a->fog.start, a->fog.end))
+        interp_note(ip, DIAG_NOTE_FOG_LINES);
+    for (int k = 0; k < 3; k++)
+        color[k] = (float)(f * color[k] + (1 - f) * a->fog.color[k]);
 }
 
 void interp_fogsec_vertex(interp *ip, float color[4])

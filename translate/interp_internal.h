@@ -345,6 +345,9 @@ bool interp_pixdepth_end_frame(interp *ip, bool drawn_after);
  * (interp_prim.c); the raster position takes it too (GL 2.1 2.13). */
 void interp_lit_point_colour(interp *ip, double x, double y, double z, float out[4]);
 void interp_fogsec_vertex(interp *ip, float color[4]);
+/* The fog of eye-plane distance |z_eye| on a line end's or point's colour,
+ * when fog is on and comes from the depth (interp_fogsec.c). */
+void interp_fogsec_eye(interp *ip, double z_eye, float color[4]);
 bool interp_accum_clear(interp *ip);
 
 /* Evaluator state (interp_eval.c): copied with the context state (-1 on

@@ -601,6 +601,8 @@ static void add_segment(assembly *as, uint32_t i0, uint32_t i1, uint32_t provoki
     const scene_vertex *c1 = as->flat ? &as->s->verts[provoking] : v1;
     memcpy(l->color[0], c0->color, sizeof l->color[0]);
     memcpy(l->color[1], c1->color, sizeof l->color[1]);
+    for (int e = 0; e < 2; e++)
+        interp_fogsec_eye(as->ip, p[e][2], l->color[e]);
 }
 
 /* GL's aliased point: a square of size x size pixels centred on the
@@ -632,6 +634,7 @@ static void add_point(assembly *as, uint32_t i, uint32_t colour_from)
     }
     pt->round = as->point_smooth;
     memcpy(pt->color, as->s->verts[colour_from].color, sizeof pt->color);
+    interp_fogsec_eye(as->ip, p[2], pt->color);
 }
 
 /* Clip-space x, y, w of every vertex of the primitive, for facing. */

@@ -365,6 +365,51 @@ static void test_arrays(void)
     interp_destroy(ip);
 }
 
+/* Lines and points take the fog of their eye distance at their ends. */
+static void test_fogged_lines(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 320, 240);
+    CMD(&s, MatrixMode, GL_PROJECTION);
+    CMD(&s, Frustum, -1, 1, -1, 1, 1, 30);
+    CMD(&s, MatrixMode, GL_MODELVIEW);
+    CMD(&s, Enable, GL_FOG);
+    CMD(&s, Fogi, GL_FOG_MODE, GL_LINEAR);
+    CMD(&s, Fogf, GL_FOG_START, 0);
+    CMD(&s, Fogf, GL_FOG_END, 10);
+    CMD(&s, Fogfv, GL_FOG_COLOR, 0, 0, 1, 1);
+    CMD(&s, Color3f, 1, 0, 0);
+    CMD(&s, Begin, GL_LINES);
+    CMD(&s, Vertex3f, 0, 0, -2);
+    CMD(&s, Vertex3f, 1, 0, -8);
+    CMD0(&s, End);
+    CMD(&s, Begin, GL_POINTS);
+    CMD(&s, Vertex3f, 0, 0.5, -5);
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(sc.nlines, 1);
+    CHECK_EQ_U(sc.npoints, 1);
+    if (sc.nlines == 1) {
+        CHECK_NEAR(sc.lines[0].color[0][0], 0.8, 1e-6);
+        CHECK_NEAR(sc.lines[0].color[0][2], 0.2, 1e-6);
+        CHECK_NEAR(sc.lines[0].color[1][0], 0.2, 1e-6);
+    }
+    if (sc.npoints == 1)
+        CHECK_NEAR(sc.points[0].color[2], 0.5, 1e-5);
+    CHECK_EQ_U(count(DIAG_NOTE_FOG_LINES), 0);
+    seq_init(&s);
+    CMD(&s, Fogi, GL_FOG_MODE, GL_EXP); /* not affine in z: noted */
+    CMD(&s, Begin, GL_LINES);
+    CMD(&s, Vertex3f, 0, 0, -2);
+    CMD(&s, Vertex3f, 1, 0, -8);
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_NOTE_FOG_LINES), 1);
+    interp_destroy(ip);
+}
+
 /* GL_COMBINE settings equal to a fixed mode, and the rest. */
 static void test_combine(void)
 {
@@ -519,6 +564,7 @@ int main(void)
     test_pixels_depth();
     test_arrays();
     test_combine();
+    test_fogged_lines();
     scene_finish(&sc);
     return CHECK_RESULT("test_fogsec");
 }
