@@ -105,7 +105,7 @@ static void snap_lights(rgl_buf *b)
         rgl_emit(b, RGL_OP_LightModeli, "ei", GL_LIGHT_MODEL_COLOR_CONTROL, cc[0]);
 }
 
-static void snap_current(rgl_buf *b)
+static void snap_current(rgl_buf *b, GLint active)
 {
     GLfloat c[4] = {1, 1, 1, 1}, n[4] = {0, 0, 1, 0}, t[4] = {0, 0, 0, 1};
     glGetFloatv(GL_CURRENT_COLOR, c);
@@ -113,8 +113,13 @@ static void snap_current(rgl_buf *b)
     glGetFloatv(GL_CURRENT_TEXTURE_COORDS, t);
     rgl_emit(b, RGL_OP_Color4f, "ffff", (double)c[0], (double)c[1], (double)c[2], (double)c[3]);
     rgl_emit(b, RGL_OP_Normal3f, "fff", (double)n[0], (double)n[1], (double)n[2]);
-    rgl_emit(b, RGL_OP_TexCoord4f, "ffff", (double)t[0], (double)t[1], (double)t[2],
-             (double)t[3]);
+    /* GL_CURRENT_TEXTURE_COORDS is the active unit's; glTexCoord unit 0's. */
+    if (active == GL_TEXTURE0)
+        rgl_emit(b, RGL_OP_TexCoord4f, "ffff", (double)t[0], (double)t[1], (double)t[2],
+                 (double)t[3]);
+    else
+        rgl_emit(b, RGL_OP_MultiTexCoord4f, "effff", (uint32_t)active, (double)t[0],
+                 (double)t[1], (double)t[2], (double)t[3]);
 }
 
 static void snap_materials(rgl_buf *b)
@@ -457,7 +462,7 @@ bool rgl_snapshot_take(rgl_stream *s, rgl_buf *out)
         rgl_emit(out, RGL_OP_ActiveTexture, "e", (uint32_t)active);
     snap_lights_eye(out);
     snap_lights(out);
-    snap_current(out);
+    snap_current(out, active);
     snap_materials(out);
     snap_enables(out);
     snap_eval(out);

@@ -527,6 +527,7 @@ static void test_unit_snapshot(const char *path)
     rayglMatrixMode(GL_MODELVIEW);
     rayglMultiTexCoord2f(GL_TEXTURE1, 0.25f, 0.75f);
     rayglActiveTexture(GL_TEXTURE2);
+    rayglMultiTexCoord2f(GL_TEXTURE2, 0.5f, 0.125f);
     rayglutSwapBuffers();
     rayglBegin(GL_POINTS);
     rayglVertex2f(0, 0);
@@ -553,6 +554,8 @@ static void test_unit_snapshot(const char *path)
         CHECK(rgl_reader_frame(r, 1, &fi, NULL) == RGL_OK) && CHECK(fi.state != 0)) {
         trace_cmds s = trace_resource_cmds(r, fi.state);
         CHECK(trace_cmds_find(&s, 0, "glActiveTexture(texture=GL_TEXTURE2)") == 2);
+        /* The active unit's current coordinates go to that unit. */
+        CHECK(trace_cmds_find(&s, 0, "glMultiTexCoord4f(target=GL_TEXTURE2, s=0.5, t=0.125, r=0, q=1)") > 2);
         long u1 = trace_cmds_find(&s, 0, "glActiveTexture(texture=GL_TEXTURE1)");
         long u3 = trace_cmds_find(&s, 0, "glActiveTexture(texture=GL_TEXTURE3)");
         CHECK(u1 > 2 && u3 > u1);
