@@ -55,7 +55,7 @@
     X(NOTE_PIXELS_DEPTH, "approximated: bitmaps and pixel rectangles show in front of the whole scene (drawn with the depth test on, or before later geometry)") \
     X(NOTE_PIXELS_OTHER, "not translated: colour-index, depth and stencil pixels, pixel maps and index shifts (glDrawPixels, glCopyPixels)") \
     X(NOTE_ACCUM_PASSES, "approximated: accumulation-buffer passes that differ other than by a sub-pixel jitter of the projection or an eye moved around a focal point (motion blur) are drawn as their first pass alone") \
-    X(NOTE_FOG_COORD, "not translated yet: fog coordinates (GL_FOG_COORD_SRC GL_FOG_COORD) on lit or textured surfaces: fogged by the eye distance") \
+    X(NOTE_FOG_COORD, "not translated yet: fog coordinates (GL_FOG_COORD_SRC GL_FOG_COORD) varying over a lit or textured surface: fogged by the eye distance") \
     X(NOTE_FOG_COORD_VERTEX, "approximated: fog coordinates under GL_EXP or GL_EXP2 fog, flat shading, or outside GL_FOG_START..GL_FOG_END: the fog factor is taken at the vertices (per face when flat) where GL interpolates the coordinate; exact where a primitive's fog coordinates are equal") \
     X(NOTE_FOG_LINES, "approximated: fog on lines: the fog factor is taken at the line's ends (exact for GL_LINEAR within GL_FOG_START..GL_FOG_END and unmapped blending)") \
     X(NOTE_COLOR_SUM, "not translated yet: the secondary colour of unlit textured surfaces (GL_COLOR_SUM): not added") \

@@ -52,12 +52,33 @@ void interp_fogsec_begin(interp *ip, GLenum mode)
     bool coord = c[INTERP_CAP_FOG] && a->fog.coord_src == GL_FOG_COORD;
     ip->prim_color_sum = sum && final_colour;
     ip->prim_fog_vertex = coord && final_colour;
+    ip->prim_coord_same = true;
+    ip->prim_coord0 = a->current.fog_coord;
     if (sum && !final_colour)
         interp_note(ip, DIAG_NOTE_COLOR_SUM);
-    if (coord && !final_colour)
-        interp_note(ip, DIAG_NOTE_FOG_COORD);
-    else if (coord && (a->fog.mode != GL_LINEAR || a->lighting.shade_model == GL_FLAT))
+    if (coord && final_colour && (a->fog.mode != GL_LINEAR || a->lighting.shade_model == GL_FLAT))
         interp_note(ip, DIAG_NOTE_FOG_COORD_VERTEX);
+}
+
+void interp_fogsec_look(interp *ip, scene_look *look)
+{
+    const gl_attribs *a = &ip->st.a;
+    if (!look->fog || a->fog.coord_src != GL_FOG_COORD)
+        return;
+    /* Lit or textured: POV-Ray computes the colour. One coordinate for
+     * the whole draw is one factor: a fog layer of constant transmit. */
+    if (ip->prim_coord_same) {
+        look->fog_fixed = 1;
+        look->fog_f = (float)fog_factor(a, ip->prim_coord0);
+    } else {
+        interp_note(ip, DIAG_NOTE_FOG_COORD);
+    }
+}
+
+void interp_fogsec_track(interp *ip)
+{
+    if (ip->st.a.current.fog_coord != ip->prim_coord0)
+        ip->prim_coord_same = false;
 }
 
 void interp_fogsec_eye(interp *ip, double z_eye, float color[4])

@@ -89,6 +89,8 @@ struct interp {
     bool prim_blend_mapped; /* its vertex colours carry another blend function as transmit */
     bool prim_color_sum;  /* the secondary colour goes into the vertex colours (interp_fogsec.c) */
     bool prim_fog_vertex; /* the fog of the fog coordinate goes into them, no fog layer */
+    bool prim_coord_same; /* every vertex so far had the fog coordinate prim_coord0 */
+    float prim_coord0;
     mat4 prim_clip;     /* object -> clip space of the primitive's own projection */
     uint8_t *edge;      /* edge flag of each vertex of the primitive */
     size_t cap_edge;
@@ -345,6 +347,11 @@ bool interp_pixdepth_end_frame(interp *ip, bool drawn_after);
  * (interp_prim.c); the raster position takes it too (GL 2.1 2.13). */
 void interp_lit_point_colour(interp *ip, double x, double y, double z, float out[4]);
 void interp_fogsec_vertex(interp *ip, float color[4]);
+/* interp_fogsec_track: at each vertex, whether the draw keeps one fog
+ * coordinate. interp_fogsec_look: a lit or textured draw fogged by fog
+ * coordinates gets their one factor (look.fog_fixed), or a note. */
+void interp_fogsec_track(interp *ip);
+void interp_fogsec_look(interp *ip, scene_look *look);
 /* The fog of eye-plane distance |z_eye| on a line end's or point's colour,
  * when fog is on and comes from the depth (interp_fogsec.c). */
 void interp_fogsec_eye(interp *ip, double z_eye, float color[4]);

@@ -448,6 +448,7 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
     }
     if (ip->prim_color_sum || ip->prim_fog_vertex)
         interp_fogsec_vertex(ip, v->color);
+    interp_fogsec_track(ip);
     if (ip->prim_blend_mapped)
         map_blend(ip, v->color);
     if (ip->prim_blend == SCENE_BLEND_OPAQUE)
@@ -903,6 +904,7 @@ scene_look interp_current_look(interp *ip)
     }
     look.names = interp_names_for_draw(ip);
     interp_scissor_look(ip, &look);
+    interp_fogsec_look(ip, &look);
     return look;
 }
 

@@ -25,6 +25,7 @@
 #include "dedup.h"
 #include "povwrite_light.h"
 #include "povwrite_solid.h"
+#include "povwrite_fogsec.h"
 #include "povwrite_multitex.h"
 #include "povwrite_texture.h"
 #include "talloc.h"
@@ -664,7 +665,7 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     bool named = look->fog || (tx && tx->env_mode == GL_DECAL && !tx->colour_is_texel);
     if (named) {
         if (look->fog)
-            povlight_fog_declare(&w->light, ob, "rgl_fog", to_eye);
+            povfog_declare(&w->light, ob, "rgl_fog", to_eye, look);
         for (size_t i = 0; i < w->col.count; i++) {
             outbuf_puts(ob, "#declare rgl_t");
             outbuf_u64(ob, i);

@@ -11,6 +11,7 @@
 
 #include <math.h>
 
+#include "povwrite_fogsec.h"
 #include "teapot.h"
 
 static void put_xyz(outbuf *ob, double x, double y, double z)
@@ -49,7 +50,7 @@ static void write_solid(outbuf *ob, const scene *s, const scene_solid *so, const
     /* Fog is a layer over the surface, as on meshes (povwrite_light.c),
      * in the solid's own space: its texture is placed by the same matrix. */
     if (so->look.fog)
-        povlight_fog_declare(pl, ob, "rgl_fog", &so->to_eye);
+        povfog_declare(pl, ob, "rgl_fog", &so->to_eye, &so->look);
     switch (so->kind) {
     case SCENE_SOLID_SPHERE:
         if (!finite_pos(p[0]))

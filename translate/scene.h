@@ -68,6 +68,9 @@ typedef struct scene_look {
                            image (origin at its lower left), when scissored */
     int32_t texture1;  /* a second texture unit's, combined with the result of
                           the first by its env_mode (GL 2.1 3.8.13), or -1 */
+    float fog_f;       /* with fog_fixed: the fog factor of the whole draw (one
+                          fog coordinate for all its vertices) */
+    uint8_t fog_fixed, pad2_[3];
 } scene_look;
 
 /* A run of triangles sharing transform and look: one mesh2 in SDL. */

@@ -173,8 +173,30 @@ static void test_fog_coord_lit(void)
     CMD(&s, Enable, GL_LIGHT0);
     fog_tri(&s);
     run(ip, &s);
-    CHECK(sc.nmeshes == 1 && sc.meshes[0].look.fog);
+    CHECK(sc.nmeshes == 1 && sc.meshes[0].look.fog && !sc.meshes[0].look.fog_fixed);
     CHECK_EQ_U(count(DIAG_NOTE_FOG_COORD), 1);
+    interp_destroy(ip);
+
+    /* One coordinate for the whole draw: a constant factor, exact. */
+    ip = fresh();
+    seq_init(&s);
+    fog_setup(&s, GL_LINEAR);
+    CMD(&s, Enable, GL_LIGHTING);
+    CMD(&s, Enable, GL_LIGHT0);
+    CMD(&s, FogCoordf, 2.5);
+    CMD(&s, Begin, GL_TRIANGLES);
+    CMD(&s, Vertex3f, -1, -1, -5);
+    CMD(&s, Vertex3f, 1, -1, -5);
+    CMD(&s, Vertex3f, 0, 1, -5);
+    CMD0(&s, End);
+    run(ip, &s);
+    interp_end_frame(ip);
+    CHECK(sc.nmeshes == 1 && sc.meshes[0].look.fog && sc.meshes[0].look.fog_fixed);
+    if (sc.nmeshes == 1)
+        CHECK_NEAR(sc.meshes[0].look.fog_f, 0.75, 1e-6);
+    CHECK_EQ_U(count(DIAG_NOTE_FOG_COORD), 0);
+    write_sdl();
+    CHECK(strstr(sdl, "#declare rgl_fog=texture{pigment{rgbt<0,0,1,0.75>}") != NULL);
     interp_destroy(ip);
 }
 
