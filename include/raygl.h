@@ -145,6 +145,13 @@ RAYGL_API void rayglNormalPointer(GLenum type, GLsizei stride, const GLvoid *ptr
 RAYGL_API void rayglColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr);
 RAYGL_API void rayglTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr);
 RAYGL_API void rayglEdgeFlagPointer(GLsizei stride, const GLvoid *ptr);
+/* The fog-coordinate and secondary-colour arrays (GL 1.4 and EXT names). */
+RAYGL_API void rayglFogCoordPointer(GLenum type, GLsizei stride, const GLvoid *ptr);
+RAYGL_API void rayglFogCoordPointerEXT(GLenum type, GLsizei stride, const GLvoid *ptr);
+RAYGL_API void rayglSecondaryColorPointer(GLint size, GLenum type, GLsizei stride,
+                                          const GLvoid *ptr);
+RAYGL_API void rayglSecondaryColorPointerEXT(GLint size, GLenum type, GLsizei stride,
+                                             const GLvoid *ptr);
 RAYGL_API void rayglInterleavedArrays(GLenum format, GLsizei stride, const GLvoid *pointer);
 RAYGL_API void rayglEnableClientState(GLenum array);
 RAYGL_API void rayglDisableClientState(GLenum array);

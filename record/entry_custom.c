@@ -159,6 +159,7 @@ static void texture_param(GLenum target, GLenum pname, bool is_float, const GLfl
 
 static const GLenum array_enums[RGL_MAX_CLIENT_ARRAYS] = {
     GL_VERTEX_ARRAY, GL_NORMAL_ARRAY, GL_COLOR_ARRAY, GL_TEXTURE_COORD_ARRAY, GL_EDGE_FLAG_ARRAY,
+    GL_FOG_COORD_ARRAY, GL_SECONDARY_COLOR_ARRAY,
 };
 
 static int array_slot(GLenum array)
@@ -553,7 +554,7 @@ static void array_pointer(int slot, uint32_t op, GLint size, GLenum type, GLsize
     if (!rec)
         return;
     switch (slot) {
-    case RGL_CA_NORMAL: RECORD_NOW(s, op, "ei", type, stride); break;
+    case RGL_CA_NORMAL: case RGL_CA_FOGCOORD: RECORD_NOW(s, op, "ei", type, stride); break;
     case RGL_CA_EDGEFLAG: RECORD_NOW(s, op, "i", stride); break;
     default: RECORD_NOW(s, op, "iei", size, type, stride); break;
     }
@@ -594,6 +595,48 @@ RGL_EXPORT void rayglEdgeFlagPointer(GLsizei stride, const GLvoid *ptr)
     if (stride >= 0)
         array_pointer(RGL_CA_EDGEFLAG, RGL_OP_EdgeFlagPointer, 1, GL_UNSIGNED_BYTE, stride, ptr);
     glEdgeFlagPointer(stride, ptr);
+}
+
+/* GL 2.1 2.8: fog coordinates are GL_FLOAT or GL_DOUBLE, one each;
+ * secondary colours three components of any type (GL refuses the rest:
+ * nothing recorded). */
+static void fog_coord_pointer(uint32_t op, GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+    if (stride >= 0 && (type == GL_FLOAT || type == GL_DOUBLE))
+        array_pointer(RGL_CA_FOGCOORD, op, 1, type, stride, ptr);
+}
+
+static void secondary_color_pointer(uint32_t op, GLint size, GLenum type, GLsizei stride,
+                                    const GLvoid *ptr)
+{
+    if (size == 3 && stride >= 0 && type_size(type))
+        array_pointer(RGL_CA_SECONDARY, op, size, type, stride, ptr);
+}
+
+RGL_EXPORT void rayglFogCoordPointer(GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+    fog_coord_pointer(RGL_OP_FogCoordPointer, type, stride, ptr);
+    glFogCoordPointer(type, stride, ptr);
+}
+
+RGL_EXPORT void rayglFogCoordPointerEXT(GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+    fog_coord_pointer(RGL_OP_FogCoordPointerEXT, type, stride, ptr);
+    glFogCoordPointerEXT(type, stride, ptr);
+}
+
+RGL_EXPORT void rayglSecondaryColorPointer(GLint size, GLenum type, GLsizei stride,
+                                           const GLvoid *ptr)
+{
+    secondary_color_pointer(RGL_OP_SecondaryColorPointer, size, type, stride, ptr);
+    glSecondaryColorPointer(size, type, stride, ptr);
+}
+
+RGL_EXPORT void rayglSecondaryColorPointerEXT(GLint size, GLenum type, GLsizei stride,
+                                              const GLvoid *ptr)
+{
+    secondary_color_pointer(RGL_OP_SecondaryColorPointerEXT, size, type, stride, ptr);
+    glSecondaryColorPointerEXT(size, type, stride, ptr);
 }
 
 /* glClientActiveTexture: the texture-coordinate array calls change the

@@ -648,6 +648,10 @@ static rgl_stream *stream_create(void)
     s->arrays[RGL_CA_NORMAL].size = 3;
     s->arrays[RGL_CA_EDGEFLAG].size = 1;
     s->arrays[RGL_CA_EDGEFLAG].type = GL_UNSIGNED_BYTE;
+    s->arrays[RGL_CA_FOGCOORD].size = 1;
+    s->arrays[RGL_CA_FOGCOORD].type = GL_FLOAT;
+    s->arrays[RGL_CA_SECONDARY].size = 3;
+    s->arrays[RGL_CA_SECONDARY].type = GL_FLOAT;
     for (int i = 0; i < RGL_MAX_TEX_UNITS; i++)
         s->tc_parked[i] = s->arrays[RGL_CA_TEXCOORD];
     pthread_mutex_lock(&g.list_mu);

@@ -30,11 +30,14 @@
 #endif
 
 /* GL's own limits, mirrored where the recorder needs them. */
-#define RGL_MAX_CLIENT_ARRAYS 5 /* vertex, normal, color, texcoord, edge flag */
+#define RGL_MAX_CLIENT_ARRAYS 7 /* vertex, normal, color, texcoord, edge flag, fog coord, secondary */
 #define RGL_MAX_EVAL_ORDER 30   /* Mesa's GL_MAX_EVAL_ORDER */
 #define RGL_MAX_TEX_UNITS 8     /* Mesa's GL_MAX_TEXTURE_COORDS of GL 2.1 */
 
-enum rgl_client_array { RGL_CA_VERTEX, RGL_CA_NORMAL, RGL_CA_COLOR, RGL_CA_TEXCOORD, RGL_CA_EDGEFLAG };
+enum rgl_client_array {
+    RGL_CA_VERTEX, RGL_CA_NORMAL, RGL_CA_COLOR, RGL_CA_TEXCOORD, RGL_CA_EDGEFLAG,
+    RGL_CA_FOGCOORD, RGL_CA_SECONDARY,
+};
 
 typedef struct rgl_client_array_state {
     bool enabled;

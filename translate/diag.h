@@ -58,11 +58,12 @@
     X(NOTE_RENDER_MODE, "left out, as GL draws no pixel of it: geometry drawn in GL_SELECT or GL_FEEDBACK render mode") \
     X(NOTE_EVAL_INDEX, "not translated: colour-index evaluator maps (GL_MAP1_INDEX, GL_MAP2_INDEX)") \
     X(NOTE_PIXELS_DEPTH, "approximated: bitmaps and pixel rectangles show in front of the whole scene (drawn with the depth test on, or before later geometry)") \
-    X(NOTE_RASTER_LIT, "approximated: the raster colour is the current colour unlit (glRasterPos with lighting on)") \
     X(NOTE_PIXELS_OTHER, "not translated: colour-index, depth and stencil pixels, pixel maps and index shifts (glDrawPixels, glCopyPixels)") \
     X(NOTE_ACCUM_PASSES, "approximated: accumulation-buffer passes that differ other than by a sub-pixel jitter of the projection or an eye moved around a focal point (motion blur) are drawn as their first pass alone") \
-    X(NOTE_FOG_COORD, "not translated yet: fog coordinates (GL_FOG_COORD_SRC GL_FOG_COORD): fogged by the eye distance") \
-    X(NOTE_COLOR_SUM, "not translated yet: the secondary colour of unlit surfaces (GL_COLOR_SUM): not added") \
+    X(NOTE_FOG_COORD, "not translated yet: fog coordinates (GL_FOG_COORD_SRC GL_FOG_COORD) varying over a lit or textured surface: fogged by the eye distance") \
+    X(NOTE_FOG_COORD_VERTEX, "approximated: fog coordinates under GL_EXP or GL_EXP2 fog, flat shading, or outside GL_FOG_START..GL_FOG_END: the fog factor is taken at the vertices (per face when flat) where GL interpolates the coordinate; exact where a primitive's fog coordinates are equal") \
+    X(NOTE_FOG_LINES, "approximated: fog on lines: the fog factor is taken at the line's ends (exact for GL_LINEAR within GL_FOG_START..GL_FOG_END and unmapped blending)") \
+    X(NOTE_COLOR_SUM, "not translated yet: the secondary colour of unlit textured surfaces (GL_COLOR_SUM): not added") \
     X(NOTE_SINGLE_COLOR, "approximated: lit textured surfaces with GL_SINGLE_COLOR get the highlight after the texture (as GL_SEPARATE_SPECULAR_COLOR), where GL modulates it by the texture") \
     X(NOTE_ACCUM_WEIGHTS, "approximated: accumulation weights that do not add up to one, GL_MULT or GL_ADD, are drawn as an average of the passes") \
     X(NOTE_MULTITEX, "approximated: texture units past the second enabled one not drawn; a unit after the first combined with one fragment colour (unlit, the first vertex's) unless both units use GL_MODULATE or the first replaces the colour; two units blended are drawn opaque") \

@@ -121,6 +121,10 @@ typedef struct gl_attribs {
         double raster_pos[4];
         float raster_color[4];
         bool raster_valid;
+        /* glRasterPos under the camera's projection and viewport: its
+         * normalised device z places depth-tested pixels (interp_pixdepth.c). */
+        bool raster_in_camera;
+        double raster_ndc_z;
     } current; /* GL_CURRENT_BIT */
     uint8_t caps[INTERP_CAP_COUNT]; /* GL_ENABLE_BIT (and each cap's group) */
     struct {
@@ -185,6 +189,10 @@ typedef struct gl_attribs {
     struct gl_texture_unit {
         GLenum env_mode;
         float env_color[4];
+        /* GL_COMBINE (interp_combine.c): RGB and alpha functions, the RGB
+         * arguments' sources and operands, the scales. */
+        GLenum combine_rgb, combine_alpha, combine_src[3], combine_op[3];
+        float rgb_scale, alpha_scale;
         uint32_t binding_1d, binding_2d;
         uint32_t binding_rect;    /* GL_TEXTURE_RECTANGLE(_ARB, _NV) */
         uint32_t binding_3d;

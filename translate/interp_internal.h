@@ -72,6 +72,8 @@ struct interp {
     uint64_t pixels_mark; /* the scene's items after the frame's last pixel draw
                              (interp_pixels.c) */
     int32_t pixels_org[2]; /* window position of scene.overlay's pixel (0, 0) */
+    int pixels_depth_state; /* how the overlay's pixels were depth-tested (interp_pixdepth.c) */
+    double pixels_ndc_z;    /* their raster position's device z, when all share one */
     uint64_t shape_facets; /* facets of tessellated shapes and evaluator mesh points in this
                               frame (interp_shape.c, interp_eval.c) */
 
@@ -107,6 +109,10 @@ struct interp {
     int draw_unit[2];   /* the draw's first two enabled texture units, or -1 */
     bool prim_tex_from1; /* the look's texture is draw_unit[1]'s (tex1 coordinates) */
     bool prim_blend_mapped; /* its vertex colours carry another blend function as transmit */
+    bool prim_color_sum;  /* the secondary colour goes into the vertex colours (interp_fogsec.c) */
+    bool prim_fog_vertex; /* the fog of the fog coordinate goes into them, no fog layer */
+    bool prim_coord_same; /* every vertex so far had the fog coordinate prim_coord0 */
+    float prim_coord0;
     mat4 prim_clip;     /* object -> clip space of the primitive's own projection */
     uint8_t *edge;      /* edge flag of each vertex of the primitive */
     size_t cap_edge;
@@ -155,7 +161,7 @@ struct interp {
         uint32_t type;
         const uint8_t *data;
         size_t bytes;
-    } arrays[5];
+    } arrays[7]; /* interp_array.c's ARR_* */
     /* Texture coordinates of units 1.. (units[0] unused: arrays[3] is
      * unit 0's): an @ArrayData of GL_TEXTURE_COORD_ARRAY fills the client
      * active unit's. */
@@ -434,6 +440,43 @@ void interp_textures_free(interp *ip);
  * the clear only ends a pass (the scene keeps the first pass). */
 void interp_accum_begin_frame(interp *ip);
 void interp_accum_draw(interp *ip);
+
+/* interp_fogsec.c. interp_fogsec_begin: at a draw's start (after the
+ * texture units are known), whether its vertex colours take the colour sum
+ * and the fog of the fog coordinate, with a note where they cannot.
+ * interp_fogsec_vertex: applies them to one vertex colour (RGB, in place). */
+void interp_fogsec_begin(interp *ip, GLenum mode);
+
+/* interp_combine.c. _defaults: GL's initial combiner state. _texenv: a
+ * glTexEnv of a combiner pname on the active unit (false: not one).
+ * _mode: the fixed mode a unit's combiner setting equals (unit: its
+ * index; first: the draw's first unit), or 0 when none does. */
+void interp_combine_defaults(struct gl_texture_unit *t);
+bool interp_combine_texenv(interp *ip, GLenum pname, double v);
+GLenum interp_combine_mode(const struct gl_texture_unit *t, int unit, bool first);
+
+/* interp_pixdepth.c. _raster: at glRasterPos, with its clip coordinates.
+ * _draw: at each pixel draw, before the overlay is made. _end_frame:
+ * places the overlay at the pixels' depth when they all share one
+ * depth-tested plane (scene.overlay_at_depth); whether the overlay is then
+ * where GL puts it (drawn_after: geometry was drawn after the last pixels). */
+void interp_pixdepth_raster(interp *ip, const double clip[4]);
+void interp_pixdepth_draw(interp *ip);
+bool interp_pixdepth_end_frame(interp *ip, bool drawn_after);
+
+/* GL's lit colour of a vertex at object point (x, y, z) with the current
+ * normal, colour and material, as lit lines and points take it
+ * (interp_prim.c); the raster position takes it too (GL 2.1 2.13). */
+void interp_lit_point_colour(interp *ip, double x, double y, double z, float out[4]);
+void interp_fogsec_vertex(interp *ip, float color[4]);
+/* interp_fogsec_track: at each vertex, whether the draw keeps one fog
+ * coordinate. interp_fogsec_look: a lit or textured draw fogged by fog
+ * coordinates gets their one factor (look.fog_fixed), or a note. */
+void interp_fogsec_track(interp *ip);
+void interp_fogsec_look(interp *ip, scene_look *look);
+/* The fog of eye-plane distance |z_eye| on a line end's or point's colour,
+ * when fog is on and comes from the depth (interp_fogsec.c). */
+void interp_fogsec_eye(interp *ip, double z_eye, float color[4]);
 bool interp_accum_clear(interp *ip);
 
 /* Evaluator state (interp_eval.c): copied with the context state (-1 on

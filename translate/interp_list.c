@@ -21,8 +21,8 @@
  * culling, which triangles face the camera) keys the prototype by itself: a
  * call whose inherited state changes what it draws gets its own prototype,
  * and one whose output cannot be shared (a list that loads an absolute
- * matrix, draws without a depth test, or is drawn in eye space) stays
- * inline. Lines and points, which are built in eye space, always stay
+ * matrix, draws without a depth test, is fogged or scissored, or is drawn
+ * in eye space) stays inline. Lines and points, which are built in eye space, always stay
  * inline.
  */
 #include "interp_internal.h"
@@ -299,11 +299,13 @@ static void share_output(interp *ip, uint32_t body, const call_mark *mk)
             return;
     }
     /* A scissor box lies in the picture, not in the list's space; so do
-     * user clip planes, in eye space. */
-    for (size_t k = 0; k < nm; k++)
-        if (s->meshes[mk->m0 + k].look.scissored || s->meshes[mk->m0 + k].look.clip ||
-            s->meshes[mk->m0 + k].look.stencil_n)
-            return; /* user clip planes too: in eye space */
+     * user clip planes and the stencil region, in eye space, and fog, a
+     * function of the eye distance that differs per call. */
+    for (size_t k = 0; k < nm; k++) {
+        const scene_look *lk = &s->meshes[mk->m0 + k].look;
+        if (lk->scissored || lk->clip || lk->stencil_n || lk->fog)
+            return;
+    }
     mat4 call, inv;
     if (!interp_object_to_eye(ip, &mk->mv, &mk->proj, mk->vp, &call) || !mat4_affine(&call) ||
         !mat4_invert(&call, &inv))

@@ -50,8 +50,8 @@ void interp_color(interp *ip, const rgl_cmd *cmd)
         interp_color_material_update(ip);
 }
 
-/* The current secondary colour and fog coordinate: state only; a draw
- * that would use them is noted (draw_notes). */
+/* The current secondary colour and fog coordinate: taken by each vertex
+ * (interp_fogsec.c). */
 void interp_secondarycolor(interp *ip, const rgl_cmd *cmd)
 {
     uint8_t type = cmd_value_type(cmd);
@@ -108,12 +108,6 @@ static void draw_notes(interp *ip)
         interp_note(ip, DIAG_NOTE_COLOR_MASK); /* the masks: interp_masks.c */
     if (!c[INTERP_CAP_DEPTH_TEST] || (a->depth.func != GL_LESS && a->depth.func != GL_LEQUAL))
         interp_note(ip, DIAG_NOTE_DEPTH);
-    /* Fog coordinates and secondary colours are recorded, not drawn yet:
-     * a frame that uses them says so. */
-    if (c[INTERP_CAP_FOG] && a->fog.coord_src == GL_FOG_COORD)
-        interp_note(ip, DIAG_NOTE_FOG_COORD);
-    if (c[INTERP_CAP_COLOR_SUM] && !c[INTERP_CAP_LIGHTING])
-        interp_note(ip, DIAG_NOTE_COLOR_SUM);
     /* GL 1.x 3.9: with GL_SINGLE_COLOR the texture modulates the specular
      * term too; POV-Ray adds the highlight after the texture, which is
      * GL_SEPARATE_SPECULAR_COLOR. */
@@ -345,6 +339,7 @@ static void begin_mode(interp *ip, GLenum mode)
     ip->prim_mode = mode;
     ip->prim_skip = true;
     interp_vmat_begin(ip);
+    ip->prim_color_sum = ip->prim_fog_vertex = false;
     if (!ip->scene || !interp_render_mode_draws(ip))
         return;
     interp_accum_draw(ip);
@@ -360,6 +355,7 @@ static void begin_mode(interp *ip, GLenum mode)
     ip->prim_first = ip->scene->nverts;
     ip->prim_blend = blend_mode(ip, mode);
     interp_draw_units(ip);
+    interp_fogsec_begin(ip, mode);
 }
 
 void interp_begin(interp *ip, const rgl_cmd *cmd)
@@ -430,6 +426,11 @@ static void lit_line_colour(interp *ip, double x, double y, double z, float out[
     interp_lit_color(ip, p, n, false, a->current.color, out);
 }
 
+void interp_lit_point_colour(interp *ip, double x, double y, double z, float out[4])
+{
+    lit_line_colour(ip, x, y, z, out);
+}
+
 void interp_add_vertex(interp *ip, double x, double y, double z, double w)
 {
     scene *s = ip->scene;
@@ -465,6 +466,9 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
     } else {
         interp_surface_colour(ip, v->color);
     }
+    if (ip->prim_color_sum || ip->prim_fog_vertex)
+        interp_fogsec_vertex(ip, v->color);
+    interp_fogsec_track(ip);
     if (ip->prim_blend_mapped)
         map_blend(ip, v->color);
     if (ip->prim_blend == SCENE_BLEND_OPAQUE)
@@ -651,6 +655,7 @@ static void add_segment(assembly *as, uint32_t i0, uint32_t i1, uint32_t provoki
             double te = t[0] + (t[1] - t[0]) * dash[d][e];
             for (int k = 0; k < 4; k++)
                 l->color[e][k] = (float)(c0->color[k] + (c1->color[k] - c0->color[k]) * te);
+            interp_fogsec_eye(as->ip, q[e][2], l->color[e]);
         }
     }
 }
@@ -691,6 +696,7 @@ static void add_point(assembly *as, uint32_t i, uint32_t colour_from)
     }
     pt->round = as->point_smooth;
     memcpy(pt->color, as->s->verts[colour_from].color, sizeof pt->color);
+    interp_fogsec_eye(as->ip, p[2], pt->color);
     pt->color[3] *= (float)fade;
 }
 
@@ -969,7 +975,7 @@ scene_look interp_current_look(interp *ip)
     look.lit = ip->st.a.caps[INTERP_CAP_LIGHTING] && !interp_vertex_lit(ip);
     look.flat = ip->st.a.lighting.shade_model == GL_FLAT;
     look.blend = ip->prim_blend;
-    look.fog = ip->st.a.caps[INTERP_CAP_FOG];
+    look.fog = ip->st.a.caps[INTERP_CAP_FOG] && !ip->prim_fog_vertex;
     look.material = look.lit ? interp_lit_material(ip) : -1;
     if (look.lit && look.material < 0)
         look.lit = 0;
@@ -997,6 +1003,7 @@ scene_look interp_current_look(interp *ip)
     look.clip = interp_clip_look(ip);
     interp_stencil_look(ip, &look);
     interp_lightset_textured(ip, &look);
+    interp_fogsec_look(ip, &look);
     return look;
 }
 
@@ -1120,6 +1127,7 @@ void interp_end(interp *ip, const rgl_cmd *cmd)
         return;
     }
     end_primitive(ip);
+    ip->prim_color_sum = ip->prim_fog_vertex = false;
 }
 
 bool interp_prim_begin(interp *ip, GLenum mode)
@@ -1132,6 +1140,7 @@ void interp_prim_end(interp *ip)
 {
     if (ip->in_begin)
         end_primitive(ip);
+    ip->prim_color_sum = ip->prim_fog_vertex = false;
 }
 
 void interp_abort_begin(interp *ip)
@@ -1139,6 +1148,7 @@ void interp_abort_begin(interp *ip)
     if (!ip->in_begin)
         return;
     ip->in_begin = false;
+    ip->prim_color_sum = ip->prim_fog_vertex = false;
     if (ip->scene && !ip->prim_skip && ip->scene->nverts >= ip->prim_first)
         ip->scene->nverts = ip->prim_first;
 }

@@ -296,6 +296,10 @@ static bool emit_solid(interp *ip, scene_solid_kind kind, bool open, double p0, 
         so->to_eye = ip->prim_to_eye;
         so->look = interp_current_look(ip);
         interp_surface_colour(ip, so->color);
+        /* An unlit solid's colour is GL's final one: one fog coordinate
+         * and secondary colour for the whole shape (interp_fogsec.c). */
+        if (ip->prim_color_sum || ip->prim_fog_vertex)
+            interp_fogsec_vertex(ip, so->color);
     }
     interp_abort_begin(ip);
     return true;

@@ -1089,7 +1089,12 @@ void interp_texenv(interp *ip, const rgl_cmd *cmd)
             return;
         }
         ip->st.a.texture.env_mode = m;
-    } else if (pname == GL_TEXTURE_ENV_COLOR) {
+    } else if (pa->kind == RGL_ARG_SCALAR || pa->count >= 1) {
+        if (pname != GL_TEXTURE_ENV_COLOR &&
+            interp_combine_texenv(ip, pname, pa->kind == RGL_ARG_SCALAR ? arg_num(pa) : pa->array[0]))
+            return;
+    }
+    if (pname == GL_TEXTURE_ENV_COLOR) {
         if (pa->kind == RGL_ARG_SCALAR || pa->count < 4)
             return;
         bool is_int = pa->type == RGL_T_i;
@@ -1312,6 +1317,10 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     const tex_image *im = slice ? slice : o->img;
     int32_t idx = -1;
     GLenum env = u.texture->env_mode;
+    if (env == GL_COMBINE) { /* as the fixed mode it equals, if any */
+        GLenum m = interp_combine_mode(u.texture, k, ip->draw_unit[0] == k);
+        env = m ? m : GL_COMBINE;
+    }
     /* A second unit's ADD and BLEND are combined (povwrite's multitexture
      * pigment); a lone unit draws them as MODULATE. */
     bool chained = ip->draw_unit[1] == k && (env == GL_ADD || env == GL_BLEND);

@@ -26,6 +26,7 @@
 #include "povwrite_light.h"
 #include "povwrite_clip.h"
 #include "povwrite_solid.h"
+#include "povwrite_fogsec.h"
 #include "povwrite_multitex.h"
 #include "povwrite_texture.h"
 #include "talloc.h"
@@ -665,7 +666,7 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     bool named = look->fog || (tx && tx->env_mode == GL_DECAL && !tx->colour_is_texel);
     if (named) {
         if (look->fog)
-            povlight_fog_declare(&w->light, ob, "rgl_fog", to_eye);
+            povfog_declare(&w->light, ob, "rgl_fog", to_eye, look);
         for (size_t i = 0; i < w->col.count; i++) {
             outbuf_puts(ob, "#declare rgl_t");
             outbuf_u64(ob, i);
@@ -799,7 +800,12 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         w->light.s->materials[look->material].two_sided) {
         /* GL_BACK's material on the faces' inner side (see the file
          * comment); one texture for the whole mesh, in the first colour. */
-        if (look->fog) { /* a layered texture enters by name only */
+        if (tx) { /* the back takes the texture too (GL textures both sides) */
+            outbuf_puts(ob, "#declare rgl_back=");
+            put_surface(w, ob, look, tx, pigment, c0, 1);
+            outbuf_puts(ob, look->fog ? "texture{rgl_fog}\ninterior_texture{rgl_back}\n"
+                                      : "\ninterior_texture{rgl_back}\n");
+        } else if (look->fog) { /* a layered texture enters by name only */
             outbuf_puts(ob, "#declare rgl_back=");
             povlight_texture(&w->light, ob, look, c0, 1);
             outbuf_puts(ob, "texture{rgl_fog}\ninterior_texture{rgl_back}\n");
@@ -1064,7 +1070,8 @@ static double near_t(const scene_camera *cam, const double from[3], const double
 /* Bitmaps and pixel rectangles (scene.overlay): one image covering the
  * camera's view exactly, pixel for pixel (image_map without
  * interpolation: each ray through a pixel centre meets its texel's
- * centre), just beyond the near plane, so in front of the whole scene.
+ * centre), just beyond the near plane, so in front of the whole scene, or
+ * at the depth GL tested its pixels at (scene.overlay_at_depth).
  * Unlit (the #default finish), casting no shadow, seen in no reflection
  * or radiosity. Transparent where nothing was drawn. */
 static int write_overlay(povwriter *w, outbuf *ob, const scene *s)
@@ -1088,6 +1095,13 @@ static int write_overlay(povwriter *w, outbuf *ob, const scene *s)
         /* Just past the near plane: a ten-thousandth of its distance for
          * a camera with a centre, a hair along the ray for a parallel one. */
         tt = ortho ? (tt < 0 && !cam->has_clip ? 0 : tt) + 1e-4 : (tt > 0 ? tt * (1 + 1e-4) : 1e-3);
+        /* Depth-tested pixels at one depth: in that plane (interp_pixdepth.c). */
+        if (s->overlay_at_depth) {
+            const double *a = s->overlay_plane;
+            double den = dot3(a, r), at = den != 0 ? -(dot3(a, from) + a[3]) / den : NAN;
+            if (isfinite(at) && (at > 0 || ortho))
+                tt = at;
+        }
         for (int k = 0; k < 3; k++)
             p[c][k] = from[k] + tt * r[k];
         if (!finite3d(p[c]))

@@ -5,12 +5,14 @@
  * torus lies in its xz plane, so it turns into GL's xy plane first. The
  * teapot is one declared mesh of Newell's 32 patches (RGL_Teapot), written
  * once per scene and scaled by each call's size. The surface takes the
- * unlit texture of its colour (docs/mapping.md). */
+ * unlit texture of its colour, or the lit one, with the fog layer on top
+ * when fogged (docs/mapping.md). */
 #include "povwrite_solid.h"
 
 #include <math.h>
 
 #include "povwrite_clip.h"
+#include "povwrite_fogsec.h"
 #include "teapot.h"
 #include "teapot_mesh.h"
 
@@ -47,6 +49,10 @@ static void write_solid(outbuf *ob, const scene *s, const scene_solid *so, const
     for (int k = 0; k < 4; k++)
         if (!isfinite(so->color[k]))
             return;
+    /* Fog is a layer over the surface, as on meshes (povwrite_light.c),
+     * in the solid's own space: its texture is placed by the same matrix. */
+    if (so->look.fog)
+        povfog_declare(pl, ob, "rgl_fog", &so->to_eye, &so->look);
     switch (so->kind) {
     case SCENE_SOLID_SPHERE:
         if (!finite_pos(p[0]))
@@ -114,6 +120,8 @@ static void write_solid(outbuf *ob, const scene *s, const scene_solid *so, const
     if (povlight_special(&so->look)) { /* lit, transparent or fogged */
         outbuf_puts(ob, "\n ");
         povlight_texture(pl, ob, &so->look, so->color, 0);
+        if (so->look.fog)
+            outbuf_puts(ob, " texture{rgl_fog}");
     } else {
         outbuf_puts(ob, "\n texture{pigment{rgb");
         put_xyz(ob, so->color[0], so->color[1], so->color[2]);

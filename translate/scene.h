@@ -73,7 +73,9 @@ typedef struct scene_look {
     uint32_t stencil_first, stencil_n; /* the stencil test keeps it to the
                           window region of scene.stencil_tris [first, first +
                           n) (or outside it, stencil_out); n 0: none */
-    uint8_t stencil_out, pad2_[3];
+    float fog_f;       /* with fog_fixed: the fog factor of the whole draw (one
+                          fog coordinate for all its vertices) */
+    uint8_t stencil_out, fog_fixed, pad2_[2];
 } scene_look;
 
 /* A run of triangles sharing transform and look: one mesh2 in SDL. */
@@ -302,6 +304,10 @@ typedef struct scene {
      * unlit, casting no shadow. NULL: none in this frame. */
     uint8_t *overlay;
     int overlay_w, overlay_h;
+    /* Set: the overlay lies in the eye-space plane p . e + p[3] = 0 (its
+     * pixels' depth, interp_pixdepth.c) instead of in front. */
+    bool overlay_at_depth;
+    double overlay_plane[4];
     /* What the frame's accumulation-buffer passes add to the one pass the
      * scene holds (interp_accum.c): POV-Ray's antialiasing at this depth
      * (0: none), and focal blur around focal_point (eye space) through a

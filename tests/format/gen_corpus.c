@@ -547,6 +547,43 @@ static int write_shapes(const char *dir)
     return write_file(dir, "shapes.bin", seq, eval_len);
 }
 
+/* ---- Fog coordinates, secondary colours and their arrays; lit raster ------------ */
+
+static int write_fogsec(const char *dir)
+{
+    static const double quad[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+    static const double fog[4] = {0, 3, 6, 12};
+    static const double sec[12] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 0.5, 0.5, 0.5};
+    eval_len = 0;
+    EV(Ortho, -1, 2, -1, 2, -1, 1);
+    EV(Fogi, 0x8450, 0x8451); /* GL_FOG_COORD_SRC GL_FOG_COORD */
+    EV(Fogi, 0x0B65, 0x2601); /* GL_LINEAR */
+    EV(Enable, 0x0B60);       /* GL_FOG */
+    EV(Enable, 0x8458);       /* GL_COLOR_SUM */
+    EV(Begin, 0x0004);
+    EV(FogCoordf, 2);
+    EV(SecondaryColor3f, 0.2, 0.1, 0);
+    EV(Vertex2f, 0, 0);
+    EV(FogCoorddEXT, 5);
+    EV(Vertex2f, 1, 0);
+    EV(Vertex2f, 0, 1);
+    eval_cmd(RGL_OP_End, NULL, 0, NULL, 0);
+    EV(FogCoordPointer, 0x1406, 0);
+    EV(SecondaryColorPointerEXT, 3, 0x1406, 0);
+    EV(EnableClientState, 0x8457);
+    EV(EnableClientState, 0x845E);
+    eval_cmd(RGL_OP_ArrayData, (const double[]){0x8074, 0, 2, 0x1406}, 4, quad, 8);
+    eval_cmd(RGL_OP_ArrayData, (const double[]){0x8457, 0, 1, 0x1406}, 4, fog, 4);
+    eval_cmd(RGL_OP_ArrayData, (const double[]){0x845E, 0, 3, 0x1406}, 4, sec, 12);
+    EV(DrawArrays, 0x0007, 0, 4);
+    EV(Enable, 0x0B50); /* GL_LIGHTING: a lit raster position */
+    EV(Enable, 0x4000);
+    EV(RasterPos3f, 0.5, 0.5, 0);
+    EV(Enable, 0x0B71); /* GL_DEPTH_TEST */
+    EV(SolidSphere, 0.5, 16, 8);
+    return write_file(dir, "fogsec.bin", seq, eval_len);
+}
+
 int main(int argc, char **argv)
 {
     rng r = {0x5eed5eed12345678ull};
@@ -576,5 +613,6 @@ int main(int argc, char **argv)
     rc |= write_nurbs(argv[1]);
     rc |= write_texcopy(argv[1]);
     rc |= write_shapes(argv[1]);
+    rc |= write_fogsec(argv[1]);
     return rc;
 }

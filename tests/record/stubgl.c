@@ -193,6 +193,26 @@ void glEdgeFlagPointer(GLsizei stride, const GLvoid *ptr)
     LOGV("glEdgeFlagPointer", stride);
     arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], ptr);
 }
+void glFogCoordPointer(GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+    LOGV("glFogCoordPointer", type, stride);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], ptr);
+}
+void glFogCoordPointerEXT(GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+    LOGV("glFogCoordPointerEXT", type, stride);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], ptr);
+}
+void glSecondaryColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+    LOGV("glSecondaryColorPointer", size, type, stride);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], ptr);
+}
+void glSecondaryColorPointerEXT(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+    LOGV("glSecondaryColorPointerEXT", size, type, stride);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], ptr);
+}
 void glInterleavedArrays(GLenum format, GLsizei stride, const GLvoid *pointer)
 {
     LOGV("glInterleavedArrays", format, stride);
