@@ -413,13 +413,16 @@ static void test_fogged_lines(void)
     run(ip, &s);
     CHECK_EQ_U(sc.nlines, 1);
     CHECK_EQ_U(sc.npoints, 1);
+    /* The draw-order step (interp_painter_apply: 5e-5 of the distance per
+     * draw) moves eye z a little before the fog is taken: well under a
+     * level (1/255), so 1e-3. */
     if (sc.nlines == 1) {
-        CHECK_NEAR(sc.lines[0].color[0][0], 0.8, 1e-6);
-        CHECK_NEAR(sc.lines[0].color[0][2], 0.2, 1e-6);
-        CHECK_NEAR(sc.lines[0].color[1][0], 0.2, 1e-6);
+        CHECK_NEAR(sc.lines[0].color[0][0], 0.8, 1e-3);
+        CHECK_NEAR(sc.lines[0].color[0][2], 0.2, 1e-3);
+        CHECK_NEAR(sc.lines[0].color[1][0], 0.2, 1e-3);
     }
     if (sc.npoints == 1)
-        CHECK_NEAR(sc.points[0].color[2], 0.5, 1e-5);
+        CHECK_NEAR(sc.points[0].color[2], 0.5, 1e-3);
     CHECK_EQ_U(count(DIAG_NOTE_FOG_LINES), 0);
     seq_init(&s);
     CMD(&s, Fogi, GL_FOG_MODE, GL_EXP); /* not affine in z: noted */
