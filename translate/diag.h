@@ -34,7 +34,7 @@
     X(NOTE_BLEND_EQUATION, "approximated: blend equations other than GL_FUNC_ADD (glBlendEquation) are drawn as GL_FUNC_ADD") \
     X(NOTE_ALPHA_TEST, "not translated yet: alpha test") \
     X(NOTE_TEXTURE, "approximated: texture environment GL_BLEND, GL_ADD or GL_COMBINE drawn as GL_MODULATE; 3D and cube-map textures not translated") \
-    X(NOTE_TEX_SAMPLING, "approximated: textures are sampled with their magnification filter from level 0 (no mipmaps, no minification filter, mirrored repeat as repeat)") \
+    X(NOTE_TEX_SAMPLING, "approximated: textures are sampled with their magnification filter from level 0 (no mipmaps, no minification filter)") \
     X(NOTE_LISTS, "not translated yet: display lists (calls skipped)") \
     X(NOTE_ARRAYS, "not translated yet: vertex arrays (draws skipped)") \
     X(NOTE_QUADRICS, "not translated yet: GLU quadrics (skipped)") \
@@ -60,7 +60,8 @@
     X(NOTE_COLOR_SUM, "not translated yet: the secondary colour of unlit surfaces (GL_COLOR_SUM): not added") \
     X(NOTE_SINGLE_COLOR, "approximated: lit textured surfaces with GL_SINGLE_COLOR get the highlight after the texture (as GL_SEPARATE_SPECULAR_COLOR), where GL modulates it by the texture") \
     X(NOTE_ACCUM_WEIGHTS, "approximated: accumulation weights that do not add up to one, GL_MULT or GL_ADD, are drawn as an average of the passes") \
-    X(NOTE_MULTITEX, "approximated: texture units past the second enabled one not drawn; a unit after the first combined with one fragment colour (unlit, the first vertex's) unless both units use GL_MODULATE or the first replaces the colour; two units blended are drawn opaque")
+    X(NOTE_MULTITEX, "approximated: texture units past the second enabled one not drawn; a unit after the first combined with one fragment colour (unlit, the first vertex's) unless both units use GL_MODULATE or the first replaces the colour; two units blended are drawn opaque") \
+    X(NOTE_TEX_MODULATE_CM, "approximated: a lit GL_MODULATE texture whose diffuse colour comes from GL_COLOR_MATERIAL is multiplied by that colour per channel only where one mesh has one colour (elsewhere by the mean of its channels)")
 
 typedef enum diag_kind {
 #define DIAG_ENUM_(name, text) DIAG_##name,

@@ -957,9 +957,13 @@ int32_t interp_texture_for_unit(interp *ip, int k)
         interp_note(ip, DIAG_NOTE_TEXTURE);
         env = GL_MODULATE;
     }
-    if (o->wrap_s == GL_MIRRORED_REPEAT || o->wrap_t == GL_MIRRORED_REPEAT ||
-        mipmap_filter(o->min_filter) || o->min_filter != o->mag_filter)
+    if (mipmap_filter(o->min_filter) || o->min_filter != o->mag_filter)
         interp_note(ip, DIAG_NOTE_TEX_SAMPLING);
+    const gl_attribs *ga = &ip->st.a;
+    GLenum cmm = ga->lighting.color_material_mode;
+    if (env == GL_MODULATE && ga->caps[INTERP_CAP_LIGHTING] && ga->caps[INTERP_CAP_COLOR_MATERIAL] &&
+        (cmm == GL_DIFFUSE || cmm == GL_AMBIENT_AND_DIFFUSE))
+        interp_note(ip, DIAG_NOTE_TEX_MODULATE_CM); /* povlight_modulate_tint */
     scene_texture st;
     memset(&st, 0, sizeof st);
     st.width = o->img->width;
@@ -967,6 +971,8 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     st.hash = o->img->hash;
     st.repeat_s = !clamps(o->wrap_s);
     st.repeat_t = o->target == GL_TEXTURE_1D || !clamps(o->wrap_t);
+    st.mirror_s = o->wrap_s == GL_MIRRORED_REPEAT;
+    st.mirror_t = o->target != GL_TEXTURE_1D && o->wrap_t == GL_MIRRORED_REPEAT;
     st.linear = o->mag_filter == GL_LINEAR;
     st.border_s = o->wrap_s == GL_CLAMP || o->wrap_s == GL_CLAMP_TO_BORDER;
     st.border_t = o->target != GL_TEXTURE_1D &&

@@ -78,6 +78,8 @@ struct povwriter {
     size_t cap_eye;
     povtex tex;          /* the frame's texture images */
     unsigned mt_count;   /* the frame's multitexture functions, for their names */
+    bool tinted;         /* the mesh's image is tinted (povlight_modulate_tint) */
+    float mod_kdp[3], mod_tint[3];
     const float **vcorner; /* colour image: 3 corner colours per kept face */
     size_t cap_vcorner;
     float *vuv; /* colour image: 3 uv per kept face */
@@ -329,8 +331,32 @@ static void put_surface(povwriter *w, outbuf *ob, const scene_look *look,
         return;
     }
     outbuf_puts(ob, "texture{"); /* MODULATE: texel times the fragment's colour */
-    povlight_texture_mapped(&w->light, ob, look, c, side, pigment);
+    if (w->tinted)
+        povlight_texture_tinted(&w->light, ob, look, c, side, pigment, w->mod_kdp);
+    else
+        povlight_texture_mapped(&w->light, ob, look, c, side, pigment);
     outbuf_putc(ob, '}');
+}
+
+/* The tint of a lit GL_MODULATE mesh's image whose diffuse colour is not
+ * grey (povlight_modulate_tint; w->tinted set for put_surface), or NULL. */
+static const float *mesh_tint(povwriter *w, const scene_vertex *verts, const scene_tri *tris,
+                              size_t nt, const scene_look *look, const scene_texture *tx,
+                              const scene_texture *tx1)
+{
+    w->tinted = false;
+    if (tx1 || tx->env_mode != GL_MODULATE || tx->colour_is_texel || !look->lit)
+        return NULL;
+    /* GL_COLOR_MATERIAL's diffuse: one colour for the whole mesh, or none. */
+    const float *c = verts[look->flat ? tris[0].provoking : tris[0].v[0]].color;
+    for (size_t i = 0; i < nt && c; i++)
+        for (int k = 0; k < 4 && c; k++) {
+            const float *d = verts[k < 3 ? tris[i].v[k] : tris[i].provoking].color;
+            if (memcmp(d, c, 3 * sizeof *c) != 0)
+                c = NULL;
+        }
+    w->tinted = povlight_modulate_tint(&w->light, look, c, w->mod_kdp, w->mod_tint);
+    return w->tinted ? w->mod_tint : NULL;
 }
 
 /* Whether a prototype's mesh carries its vertex colours as one image
@@ -407,6 +433,7 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         txc.colour_is_texel = povmt_texel(tx, tx1);
         tx = &txc;
     }
+    w->tinted = false;
     bool normals = look->lit;
     bool flat_normals = look->lit && look->flat;
     bool vimage = !tx && colour_image_ok(w, verts, tris, nt, look);
@@ -458,7 +485,8 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
          * fragment's (MODULATE, and REPLACE of RGBA), POV-Ray's transmit. */
         bool keep_alpha = (tx0->env_mode == GL_DECAL && !tx0->colour_is_texel) ||
                           look->blend == SCENE_BLEND_ALPHA;
-        img = povtex_map(&w->tex, sc, look->texture, uvlo, uvhi, keep_alpha, uv_scale, uv_off);
+        img = povtex_map(&w->tex, sc, look->texture, uvlo, uvhi, keep_alpha,
+                         mesh_tint(w, verts, tris, nt, look, tx0, tx1), uv_scale, uv_off);
         if (img < 0)
             return -1;
     }
@@ -479,7 +507,8 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
                 }
             }
         float s1[2], o1[2];
-        int img1 = povtex_map(&w->tex, sc, look->texture1, lo1, hi1, tx1->env_mode == GL_DECAL, s1, o1);
+        int img1 = povtex_map(&w->tex, sc, look->texture1, lo1, hi1, tx1->env_mode == GL_DECAL,
+                              NULL, s1, o1);
         const scene_tri *t0 = &tris[0];
         const float *cf = verts[look->flat ? t0->provoking : t0->v[0]].color;
         if (img1 < 0 || povmt_pigment(ob, &w->tex, (size_t)img, (size_t)img1, tx0, tx1, uv_scale,

@@ -254,7 +254,7 @@ void povlight_texture(const povlight *pl, outbuf *ob, const scene_look *look, co
  * terms unscaled and diffuse the mean of the material's (POV-Ray's diffuse
  * is one number). */
 static void texture_body(const povlight *pl, outbuf *ob, const scene_look *look, const float c[4],
-                         int side, const char *pigment)
+                         int side, const char *pigment, const float *kdp)
 {
     const scene *s = pl->s;
     double t = 1 - (double)c[3];
@@ -292,15 +292,18 @@ static void texture_body(const povlight *pl, outbuf *ob, const scene_look *look,
     const float *ks = cm & SCENE_CM_SPECULAR ? c : m->specular[f];
     const float *ke = cm & SCENE_CM_EMISSION ? c : m->emission[f];
     double p[3], amb[3], em[3];
+    /* kdp: the pigment is the texel times kdp / max(kdp) (povlight_modulate_tint),
+     * and diffuse max(kdp) makes the product the texel times kd per channel. */
+    double kmax = kdp ? fmax(kdp[0], fmax(kdp[1], kdp[2])) : 1;
     for (int k = 0; k < 3; k++) {
-        p[k] = pigment ? 1 : kd[k] > MIN_PIGMENT ? kd[k] : MIN_PIGMENT;
+        p[k] = pigment ? (kdp ? kdp[k] / kmax : 1) : kd[k] > MIN_PIGMENT ? kd[k] : MIN_PIGMENT;
         amb[k] = ka[k] * ((double)m->model_ambient[k] + pl->light_ambient[k]) / p[k];
         em[k] = ke[k] / p[k];
     }
     if (pigment) {
         outbuf_puts(ob, pigment);
         outbuf_puts(ob, "}finish{diffuse ");
-        put_num(ob, ((double)kd[0] + kd[1] + kd[2]) / 3);
+        put_num(ob, kdp ? kmax : ((double)kd[0] + kd[1] + kd[2]) / 3);
         outbuf_puts(ob, " ambient ");
     } else {
         outbuf_puts(ob, t > 0 ? "rgbt<" : "rgb<");
@@ -342,13 +345,56 @@ static void texture_body(const povlight *pl, outbuf *ob, const scene_look *look,
 void povlight_texture_body(const povlight *pl, outbuf *ob, const scene_look *look,
                            const float c[4], int side)
 {
-    texture_body(pl, ob, look, c, side, NULL);
+    texture_body(pl, ob, look, c, side, NULL, NULL);
 }
 
 void povlight_texture_mapped(const povlight *pl, outbuf *ob, const scene_look *look,
                              const float c[4], int side, const char *pigment)
 {
-    texture_body(pl, ob, look, c, side, pigment);
+    texture_body(pl, ob, look, c, side, pigment, NULL);
+}
+
+void povlight_texture_tinted(const povlight *pl, outbuf *ob, const scene_look *look,
+                             const float c[4], int side, const char *pigment, const float kdp[3])
+{
+    texture_body(pl, ob, look, c, side, pigment, kdp);
+}
+
+/* A tint channel is kept at least this share of the largest, so that the
+ * 8-bit image still carries the texel for the ambient and emission terms
+ * of a channel the diffuse colour lacks (the diffuse term there is then
+ * at most this share of the light too bright). */
+#define TINT_FLOOR (4.0f / 255.0f)
+
+bool povlight_modulate_tint(const povlight *pl, const scene_look *look, const float *c,
+                            float kdp[3], float tint[3])
+{
+    const scene *s = pl->s;
+    if (!look->lit || look->material < 0 || (size_t)look->material >= s->nmaterials)
+        return false;
+    const scene_material *m = &s->materials[look->material];
+    bool from_c = (m->color_material[0] & SCENE_CM_DIFFUSE) != 0;
+    if (from_c && !c)
+        return false; /* the diffuse colour varies over the mesh */
+    const float *kd = from_c ? c : m->diffuse[0];
+    if (m->two_sided) {
+        /* One image serves both sides: their diffuse colours must agree. */
+        const float *kb = m->color_material[1] & SCENE_CM_DIFFUSE ? c : m->diffuse[1];
+        if (!kb || memcmp(kb, kd, 3 * sizeof *kd) != 0)
+            return false;
+    }
+    if (kd[0] == kd[1] && kd[1] == kd[2])
+        return false; /* grey: one diffuse number is exact */
+    float mx = 0;
+    for (int k = 0; k < 3; k++)
+        mx = isfinite(kd[k]) && kd[k] > mx ? kd[k] : mx;
+    if (!(mx > MIN_PIGMENT))
+        return false;
+    for (int k = 0; k < 3; k++) {
+        kdp[k] = isfinite(kd[k]) && kd[k] > mx * TINT_FLOOR ? kd[k] : mx * TINT_FLOOR;
+        tint[k] = kdp[k] / mx;
+    }
+    return true;
 }
 
 /* ---- Normals ----------------------------------------------------------------------------- */

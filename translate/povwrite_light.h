@@ -44,6 +44,21 @@ void povlight_texture_body(const povlight *pl, outbuf *ob, const scene_look *loo
 void povlight_texture_mapped(const povlight *pl, outbuf *ob, const scene_look *look,
                              const float c[4], int side, const char *pigment);
 
+/* GL_MODULATE of a lit surface whose diffuse colour is not grey (GL 1.5
+ * table 3.22 applied per channel): true when one image can carry it, with
+ * kdp the diffuse colour (channels floored to a share of the largest) and
+ * tint = kdp / max(kdp), what the writer multiplies the texels by
+ * (povtex_map). c: the mesh's one vertex colour (GL_COLOR_MATERIAL's
+ * diffuse), NULL when the colours vary. False for grey or unlit surfaces
+ * and for two-sided materials whose sides differ. */
+bool povlight_modulate_tint(const povlight *pl, const scene_look *look, const float *c,
+                            float kdp[3], float tint[3]);
+
+/* povlight_texture_mapped for a pigment made with povlight_modulate_tint's
+ * tint: diffuse max(kdp), ambient and emission per channel over the tint. */
+void povlight_texture_tinted(const povlight *pl, outbuf *ob, const scene_look *look,
+                             const float c[4], int side, const char *pigment, const float kdp[3]);
+
 /* The fog layer of a mesh whose object space goes to eye space by to_eye
  * (NULL: already eye space), declared as `name`:
  * `#declare name=texture{...}` and a newline. */

@@ -202,6 +202,7 @@ typedef struct scene_texture {
     int width, height;
     uint64_t hash;
     bool repeat_s, repeat_t; /* GL_REPEAT; else clamped */
+    bool mirror_s, mirror_t; /* repeated as GL_MIRRORED_REPEAT */
     bool border_s, border_t; /* clamped as GL_CLAMP (the border colour counts
                                 under linear filtering), not GL_CLAMP_TO_EDGE */
     float border[4];         /* GL_TEXTURE_BORDER_COLOR */

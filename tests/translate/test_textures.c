@@ -504,7 +504,7 @@ static void test_images(void)
     povtex pt;
     memset(&pt, 0, sizeof pt);
     float lo[2] = {-0.5f, -0.5f}, hi[2] = {1.5f, 1.5f}, scale[2], off[2];
-    CHECK(povtex_map(&pt, &sc, 0, lo, hi, false, scale, off) == 0);
+    CHECK(povtex_map(&pt, &sc, 0, lo, hi, false, NULL, scale, off) == 0);
     if (pt.n == 1) {
         CHECK(pt.imgs[0].width == 8 && pt.imgs[0].height == 2);
         CHECK_NEAR(0 * scale[0] + off[0], 3.0 / 8, 1e-6); /* s = 0: after 1 + 2 texels */
