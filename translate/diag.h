@@ -33,7 +33,7 @@
     X(NOTE_BLEND_ADD, "approximated: additive blending (all of the colour behind kept) keeps 127/128 of it") \
     X(NOTE_BLEND_EQUATION, "approximated: blend equations other than GL_FUNC_ADD (glBlendEquation) are drawn as GL_FUNC_ADD") \
     X(NOTE_ALPHA_TEST, "not translated yet: alpha test") \
-    X(NOTE_TEXTURE, "approximated: texture environment GL_BLEND, GL_ADD or GL_COMBINE drawn as GL_MODULATE; 3D and cube-map textures not translated") \
+    X(NOTE_TEXTURE, "approximated: texture environment GL_COMBINE, and GL_BLEND or GL_ADD on a lit surface, drawn as GL_MODULATE; 3D and cube-map textures not translated") \
     X(NOTE_TEX_SAMPLING, "approximated: textures are sampled with their magnification filter from level 0 (no mipmaps, no minification filter)") \
     X(NOTE_LISTS, "not translated yet: display lists (calls skipped)") \
     X(NOTE_ARRAYS, "not translated yet: vertex arrays (draws skipped)") \

@@ -79,6 +79,7 @@ struct povwriter {
     povtex tex;          /* the frame's texture images */
     unsigned mt_count;   /* the frame's multitexture functions, for their names */
     bool tinted;         /* the mesh's image is tinted (povlight_modulate_tint) */
+    unsigned env_id;     /* the mesh's GL_BLEND or GL_ADD image function (povmt_declare) */
     float mod_kdp[3], mod_tint[3];
     const float **vcorner; /* colour image: 3 corner colours per kept face */
     size_t cap_vcorner;
@@ -319,6 +320,9 @@ static void put_surface(povwriter *w, outbuf *ob, const scene_look *look,
         outbuf_puts(ob, "}}");
         return;
     }
+    if ((tx->env_mode == GL_BLEND || tx->env_mode == GL_ADD) &&
+        povmt_env_texture(ob, tx, w->env_id, c) == 0)
+        return;
     if (tx->env_mode == GL_DECAL) {
         /* DECAL of RGBA: the texel over the fragment's colour by its alpha;
          * the image's alpha is POV-Ray's transmit, so the layer below
@@ -493,6 +497,11 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     char pigment[POVMT_PIGMENT_MAX] = "";
     if (tx && !tx1 && povtex_pigment(&w->tex, (size_t)img, tx, pigment) == 0)
         return -1;
+    if (tx && !tx1 && (tx->env_mode == GL_BLEND || tx->env_mode == GL_ADD)) {
+        w->env_id = w->mt_count++;
+        if (povmt_declare(ob, &w->tex, (size_t)img, tx, w->env_id) != 0)
+            return -1;
+    }
     if (tx1) {
         float lo1[2] = {INFINITY, INFINITY}, hi1[2] = {-INFINITY, -INFINITY};
         for (size_t i = 0; i < nt; i++)
