@@ -32,7 +32,7 @@
     X(NOTE_BLEND, "approximated: blending with colour or destination-alpha factors, or of lit or textured surfaces, other than GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA is drawn as that one") \
     X(NOTE_BLEND_ADD, "approximated: additive blending (all of the colour behind kept) keeps 127/128 of it") \
     X(NOTE_BLEND_EQUATION, "approximated: blend equations other than GL_FUNC_ADD (glBlendEquation) are drawn as GL_FUNC_ADD") \
-    X(NOTE_ALPHA_TEST, "not translated yet: alpha test") \
+    X(NOTE_ALPHA_TEST, "approximated: alpha test of lines and points (drawn whole), of faces whose vertex alphas lie on both sides of the reference (drawn whole), of a texture with vertex alphas that vary (the first vertex's alpha) or with GL_LINEAR filtering (the texels tested one by one)") \
     X(NOTE_TEXTURE, "approximated: texture environment GL_COMBINE, and GL_BLEND or GL_ADD on a lit surface, drawn as GL_MODULATE; 3D and cube-map textures not translated") \
     X(NOTE_TEX_SAMPLING, "approximated: textures are sampled with their magnification filter from level 0 (no mipmaps, no minification filter)") \
     X(NOTE_LISTS, "not translated yet: display lists (calls skipped)") \

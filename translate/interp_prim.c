@@ -91,8 +91,9 @@ static void draw_notes(interp *ip)
     const uint8_t *c = a->caps;
     if (c[INTERP_CAP_FOG])
         interp_fix_fog(ip);
-    if (c[INTERP_CAP_ALPHA_TEST])
-        interp_note(ip, DIAG_NOTE_ALPHA_TEST);
+    if (c[INTERP_CAP_ALPHA_TEST] && a->color_buffer.alpha_func != GL_ALWAYS &&
+        ip->prim_mode <= GL_LINE_STRIP)
+        interp_note(ip, DIAG_NOTE_ALPHA_TEST); /* polygons: interp_alpha_face */
     if (c[INTERP_CAP_TEXTURE_3D] || c[INTERP_CAP_TEXTURE_CUBE_MAP])
         interp_note(ip, DIAG_NOTE_TEXTURE);
     if (c[INTERP_CAP_LINE_STIPPLE] || c[INTERP_CAP_POLYGON_STIPPLE])
@@ -445,6 +446,7 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
     } else {
         interp_surface_colour(ip, v->color);
     }
+    uint8_t afail = interp_alpha_vertex(ip, k, v->color[3]);
     if (ip->prim_blend_mapped)
         map_blend(ip, v->color);
     if (ip->prim_blend == SCENE_BLEND_OPAQUE)
@@ -465,7 +467,7 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
         v->tex[0] = a->current.texcoord[0] / q;
         v->tex[1] = a->current.texcoord[1] / q;
     }
-    ip->edge[k] = a->current.edge_flag;
+    ip->edge[k] = (uint8_t)(a->current.edge_flag | afail);
     scene_commit_vertices(s, 1);
 }
 
@@ -677,6 +679,9 @@ static void fill_tri(assembly *as, uint32_t a, uint32_t b, uint32_t c, uint32_t 
 {
     if (!as->mesh)
         return;
+    const uint32_t abc[3] = {a, b, c};
+    if (!interp_alpha_face(as->ip, abc, 3, as->mesh->look.texture))
+        return;
     if (as->swap)
         scene_add_tri(as->s, as->base + a, as->base + c, as->base + b, as->base + provoking);
     else
@@ -707,7 +712,7 @@ static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t prov
         return;
     }
     for (int k = 0; k < n; k++) {
-        if (edge_flags && !ip->edge[idx[k]])
+        if (edge_flags && !(ip->edge[idx[k]] & 1))
             continue; /* GL draws only boundary edges (and their vertices) */
         if (mode == GL_LINE)
             add_segment(as, as->base + idx[k], as->base + idx[(k + 1) % n], as->base + provoking);

@@ -986,6 +986,26 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     memcpy(st.border, o->border, sizeof st.border);
     st.env_mode = env;
     memcpy(st.env_color, u.texture->env_color, sizeof st.env_color);
+    /* The alpha test per texel where the texel's alpha is the fragment's
+     * (table 3.22: DECAL takes the vertex alpha, and so does a base
+     * format without alpha); otherwise interp_alpha_face. */
+    GLenum b0 = o->base_format;
+    bool has_alpha = b0 == GL_RGBA || b0 == GL_LUMINANCE_ALPHA || b0 == GL_ALPHA ||
+                     b0 == GL_INTENSITY;
+    if (ga->caps[INTERP_CAP_ALPHA_TEST] && ga->color_buffer.alpha_func != GL_ALWAYS && has_alpha &&
+        (env == GL_MODULATE || env == GL_REPLACE)) {
+        st.alpha_func = ga->color_buffer.alpha_func;
+        st.alpha_ref = ga->color_buffer.alpha_ref;
+        st.alpha_uses_af = env != GL_REPLACE;
+        float c[4];
+        interp_surface_colour(ip, c); /* the current alpha (interp_alpha_face checks the vertices') */
+        st.alpha_af = st.alpha_uses_af ? clamp01(c[3]) : 1;
+        if (o->mag_filter == GL_LINEAR)
+            interp_note(ip, DIAG_NOTE_ALPHA_TEST);
+    } else if (ga->caps[INTERP_CAP_ALPHA_TEST] && ga->color_buffer.alpha_func != GL_ALWAYS &&
+               has_alpha && env != GL_DECAL) {
+        interp_note(ip, DIAG_NOTE_TEXTURE); /* BLEND, ADD: drawn opaque, untested */
+    }
     /* Table 3.22: REPLACE takes the texel's colour unless the texture has
      * only alpha; DECAL of RGB (and, undefined in GL, of the luminance
      * formats, which Mesa treats as RGB) takes it outright. */

@@ -152,6 +152,14 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
                 if (mix[1] && outy)
                     d[k] = (uint8_t)((d[k] + border[k] + 1) / 2);
             }
+            if (tx->alpha_func) {
+                /* GL discards the fragment: transmit 1, crisp under GL_NEAREST. */
+                float fa = d[3] / 255.0f * (tx->alpha_uses_af ? tx->alpha_af : 1.0f);
+                if (!scene_alpha_pass(tx->alpha_func, fa, tx->alpha_ref))
+                    d[3] = 0;
+                else if (!keep_alpha)
+                    d[3] = 255;
+            }
             alpha = alpha || d[3] != 255;
         }
     }
@@ -160,7 +168,7 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
     im->rgba = px;
     im->width = out[0];
     im->height = out[1];
-    im->alpha = alpha && keep_alpha;
+    im->alpha = alpha && (keep_alpha || tx->alpha_func);
     im->keep_alpha = keep_alpha;
     im->texture = t;
     memcpy(im->lo, lo, sizeof lo);

@@ -45,7 +45,10 @@ void povtex_finish(povtex *pt);
  * texels' alpha (when some is below 1), which POV-Ray reads as transmit.
  * tint (NULL: none): the texels' colour is multiplied by it per channel
  * (0..1), GL_MODULATE's product with a coloured material made in the image
- * (docs/mapping.md "Coloured materials under GL_MODULATE"). */
+ * (docs/mapping.md section 21). With the texture's alpha test
+ * (alpha_func), texels whose alpha (times alpha_af when alpha_uses_af)
+ * fails are made fully transparent, the others keep their alpha
+ * (keep_alpha) or become opaque. */
 int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const float uvhi[2],
                bool keep_alpha, const float tint[3], float scale[2], float offset[2]);
 

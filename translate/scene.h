@@ -211,7 +211,29 @@ typedef struct scene_texture {
     float env_color[4];
     bool colour_is_texel;    /* the texel's colour replaces the fragment's
                                 (REPLACE or DECAL of a colour format) */
+    /* The alpha test per texel (interp_alphatest.c), when the texel's
+     * alpha counts: GL_NEVER..GL_NOTEQUAL, 0 for none; the fragment's
+     * alpha is the texel's times the vertex alpha when alpha_uses_af. */
+    uint32_t alpha_func;
+    float alpha_ref, alpha_af; /* alpha_af: the draw's vertex alpha */
+    bool alpha_uses_af;
 } scene_texture;
+
+/* Whether alpha a passes the alpha test func (GL_NEVER..GL_ALWAYS)
+ * against ref (GL 1.x 4.1.4). */
+static inline bool scene_alpha_pass(uint32_t func, float a, float ref)
+{
+    switch (func) {
+    case 0x0200: return false;    /* GL_NEVER */
+    case 0x0201: return a < ref;  /* GL_LESS */
+    case 0x0202: return a == ref; /* GL_EQUAL */
+    case 0x0203: return a <= ref; /* GL_LEQUAL */
+    case 0x0204: return a > ref;  /* GL_GREATER */
+    case 0x0205: return a != ref; /* GL_NOTEQUAL */
+    case 0x0206: return a >= ref; /* GL_GEQUAL */
+    default: return true;         /* GL_ALWAYS */
+    }
+}
 
 /* A GLU/GLUT solid with an exact POV-Ray counterpart (issue 5), in its
  * object space (GL's axis conventions), placed by to_eye:

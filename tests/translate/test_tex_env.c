@@ -1,0 +1,320 @@
+/* test_tex_env.c: issue 14's texture items in the interpreter and the
+ * writer: GL_MIRRORED_REPEAT as a mirrored image, GL_MODULATE of a
+ * coloured lit material as a tinted image with per-channel finish terms,
+ * a lone unit's GL_BLEND and GL_ADD as a per-channel pigment, and the
+ * alpha test (faces whose every vertex fails dropped, texels that fail
+ * made transparent).
+ */
+#include <GL/gl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "interp.h"
+#include "outbuf.h"
+#include "povwrite.h"
+#include "povwrite_texture.h"
+#include "tracegen.h"
+
+static scene sc;
+static diag_log dlog;
+
+/* Resources: id k is res[k - 1], bytes. */
+static struct {
+    uint8_t *data;
+    size_t size;
+} res[8];
+static size_t nres;
+
+static rgl_status fetch(void *ctx, uint32_t id, rgl_resource *out, rgl_error *err)
+{
+    (void)ctx;
+    if (id == 0 || id > nres) {
+        err->status = RGL_E_RESOURCE;
+        return RGL_E_RESOURCE;
+    }
+    memset(out, 0, sizeof *out);
+    out->id = id;
+    out->kind = RGL_RES_BYTES;
+    out->data = res[id - 1].data;
+    out->size = res[id - 1].size;
+    return RGL_OK;
+}
+
+static uint32_t add_bytes(const void *p, size_t n)
+{
+    res[nres].data = malloc(n);
+    memcpy(res[nres].data, p, n);
+    res[nres].size = n;
+    return (uint32_t)++nres;
+}
+
+static void free_res(void)
+{
+    for (size_t i = 0; i < nres; i++)
+        free(res[i].data);
+    nres = 0;
+}
+
+static interp *fresh(void)
+{
+    scene_reset(&sc);
+    diag_clear(&dlog);
+    interp *ip = interp_create(&sc, &dlog);
+    interp_set_resources(ip, fetch, NULL);
+    interp_begin_frame(ip);
+    return ip;
+}
+
+static void run(interp *ip, seq *s)
+{
+    rgl_error err;
+    CHECK(interp_run(ip, s->data, s->len, 0, &err) == RGL_OK);
+    seq_free(s);
+}
+
+/* The SDL of the scene, in sdl. */
+static char sdl[1 << 16];
+static size_t sdl_len;
+static int keep(void *user, const char *p, size_t n)
+{
+    (void)user;
+    if (sdl_len + n < sizeof sdl) {
+        memcpy(sdl + sdl_len, p, n);
+        sdl_len += n;
+        sdl[sdl_len] = '\0';
+    }
+    return 0;
+}
+
+static void write_scene(povwriter *w)
+{
+    outbuf ob;
+    sdl_len = 0;
+    sdl[0] = '\0';
+    CHECK(outbuf_init(&ob, 1 << 12, keep, NULL) == 0);
+    CHECK(povwriter_scene(w, &ob, &sc, NULL) == 0);
+    CHECK(outbuf_flush(&ob) == 0);
+    outbuf_finish(&ob);
+}
+
+static uint64_t count(diag_kind k) { return dlog.e[k].count; }
+
+/* A 2 x 1 RGBA texture (red, green; alpha 255, 100) bound as name 1,
+ * nearest, with env mode env, enabled. */
+static void texture(seq *s, uint32_t id, GLenum env, GLenum wrap)
+{
+    CMD(s, BindTexture, GL_TEXTURE_2D, 1);
+    CMD(s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    CMD(s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    CMD(s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
+    CMD(s, TexImage2D, GL_TEXTURE_2D, 0, GL_RGBA, 2, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, id);
+    CMD(s, TexEnvi, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, env);
+    CMD(s, Enable, GL_TEXTURE_2D);
+}
+
+static void triangle(seq *s)
+{
+    CMD(s, Begin, GL_TRIANGLES);
+    CMD(s, TexCoord2f, 0, 0);
+    CMD(s, Vertex2f, 0, 0);
+    CMD(s, TexCoord2f, 2, 0);
+    CMD(s, Vertex2f, 1, 0);
+    CMD(s, TexCoord2f, 0, 1);
+    CMD(s, Vertex2f, 0, 1);
+    CMD0(s, End);
+}
+
+static const uint8_t px[8] = {255, 0, 0, 255, 0, 255, 0, 100};
+
+static void test_mirrored(void)
+{
+    uint32_t id = add_bytes(px, sizeof px);
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    texture(&s, id, GL_REPLACE, GL_MIRRORED_REPEAT);
+    triangle(&s);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntextures, 1);
+    CHECK_EQ_U(count(DIAG_NOTE_TEX_SAMPLING), 0); /* no longer drawn as repeat */
+    if (sc.ntextures == 1) {
+        CHECK(sc.textures[0].mirror_s && !sc.textures[0].mirror_t);
+        povtex pt;
+        memset(&pt, 0, sizeof pt);
+        float lo[2] = {0, 0}, hi[2] = {2, 1}, scale[2], off[2];
+        CHECK(povtex_map(&pt, &sc, 0, lo, hi, false, NULL, scale, off) == 0);
+        if (pt.n == 1) {
+            /* red green | green red: the texture and its mirror image */
+            const povtex_image *im = &pt.imgs[0];
+            CHECK(im->width == 4 && im->height == 1);
+            CHECK(im->rgba[0] == 255 && im->rgba[4 + 1] == 255 && im->rgba[8 + 1] == 255 &&
+                  im->rgba[12] == 255);
+            CHECK_NEAR(scale[0], 0.5, 0);
+            CHECK_NEAR(off[0], 0, 0);
+        }
+        /* a tint multiplies the colour, rounded */
+        float tint[3] = {1, 0.5f, 0.25f};
+        CHECK(povtex_map(&pt, &sc, 0, lo, hi, false, tint, scale, off) == 1);
+        if (pt.n == 2) {
+            CHECK(pt.imgs[1].rgba[0] == 255 && pt.imgs[1].rgba[5] == 128);
+            CHECK(strcmp(pt.imgs[0].name, pt.imgs[1].name) != 0);
+        }
+        povtex_finish(&pt);
+    }
+    interp_destroy(ip);
+    free_res();
+}
+
+/* Lit MODULATE: a gold material's diffuse goes into the image; the
+ * finish's diffuse is its largest channel. A grey one keeps the mean. */
+static void test_modulate_tint(void)
+{
+    uint32_t id = add_bytes(px, sizeof px);
+    for (int gold = 0; gold < 2; gold++) {
+        interp *ip = fresh();
+        seq s;
+        seq_init(&s);
+        CMD(&s, Viewport, 0, 0, 100, 100);
+        CMD(&s, Enable, GL_LIGHTING);
+        CMD(&s, Enable, GL_LIGHT0);
+        if (gold)
+            CMD(&s, Materialfv, GL_FRONT, GL_DIFFUSE, 0.8, 0.6, 0.2, 1);
+        else
+            CMD(&s, Materialfv, GL_FRONT, GL_DIFFUSE, 0.5, 0.5, 0.5, 1);
+        texture(&s, id, GL_MODULATE, GL_REPEAT);
+        CMD(&s, Normal3f, 0, 0, 1);
+        triangle(&s);
+        run(ip, &s);
+        interp_end_frame(ip);
+        povwriter *w = povwriter_create();
+        write_scene(w);
+        if (gold) {
+            CHECK(strstr(sdl, "finish{diffuse 0.8 ") != NULL);
+            CHECK(povwriter_image(w, 0) != NULL);
+            const povtex_image *im = povwriter_image(w, 0);
+            /* red texel times (1, 0.75, 0.25): red stays, green texel times 0.75 */
+            if (im)
+                CHECK(im->rgba[0] == 255 && im->rgba[5] == 191 && im->tint[2] == 64);
+        } else {
+            CHECK(strstr(sdl, "finish{diffuse 0.5 ") != NULL);
+        }
+        CHECK(strstr(sdl, "nan") == NULL && strstr(sdl, "inf") == NULL);
+        povwriter_destroy(w);
+        interp_destroy(ip);
+    }
+    free_res();
+}
+
+/* A lone unit's BLEND and ADD, unlit: a pigment function of the image and
+ * the environment per channel; lit: MODULATE with the note. */
+static void test_blend_add(void)
+{
+    uint32_t id = add_bytes(px, sizeof px);
+    static const GLenum modes[2] = {GL_BLEND, GL_ADD};
+    for (int m = 0; m < 2; m++)
+        for (int lit = 0; lit < 2; lit++) {
+            interp *ip = fresh();
+            seq s;
+            seq_init(&s);
+            CMD(&s, Viewport, 0, 0, 100, 100);
+            if (lit) {
+                CMD(&s, Enable, GL_LIGHTING);
+                CMD(&s, Enable, GL_LIGHT0);
+            }
+            CMD(&s, TexEnvfv, GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, 0.25, 0.5, 1, 1);
+            texture(&s, id, modes[m], GL_REPEAT);
+            CMD(&s, Color3f, 0.5, 0.5, 0.5);
+            triangle(&s);
+            run(ip, &s);
+            CHECK_EQ_U(sc.ntextures, 1);
+            if (sc.ntextures)
+                CHECK_EQ_U(sc.textures[0].env_mode, lit ? GL_MODULATE : modes[m]);
+            CHECK_EQ_U(count(DIAG_NOTE_TEXTURE), lit ? 1 : 0);
+            interp_end_frame(ip);
+            povwriter *w = povwriter_create();
+            write_scene(w);
+            if (!lit) {
+                CHECK_EQ_U(strstr(sdl, "#declare rgl_mt0a=function{pigment{image_map{") != NULL, 1);
+                CHECK(strstr(sdl, "uv_mapping average pigment_map{") != NULL);
+                if (m == 0) /* Cf (1 - Ct) + Cc Ct, Cc blue 1 */
+                    CHECK(strstr(sdl, "((0.5)*(1-rgl_mt0a(x,y,z).blue)+(1)*rgl_mt0a(x,y,z).blue)") != NULL);
+                else
+                    CHECK(strstr(sdl, "min(1,(0.5)+rgl_mt0a(x,y,z).red)") != NULL);
+            }
+            povwriter_destroy(w);
+            interp_destroy(ip);
+        }
+    free_res();
+}
+
+/* The alpha test: untextured faces whose every vertex fails are dropped,
+ * faces across the reference kept with a note; a texture's failing texels
+ * become transparent in its image (alpha 100 fails GL_GREATER 0.5). */
+static void test_alpha_test(void)
+{
+    uint32_t id = add_bytes(px, sizeof px);
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 100, 100);
+    CMD(&s, AlphaFunc, GL_GREATER, 0.5);
+    CMD(&s, Enable, GL_ALPHA_TEST);
+    CMD(&s, Color4f, 1, 0, 0, 0.3);
+    triangle(&s); /* dropped */
+    CMD(&s, Color4f, 1, 0, 0, 0.8);
+    triangle(&s); /* kept */
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 1);
+    CHECK_EQ_U(count(DIAG_NOTE_ALPHA_TEST), 0);
+    seq_init(&s);
+    CMD(&s, Begin, GL_TRIANGLES); /* across the reference: kept, noted */
+    CMD(&s, Color4f, 1, 0, 0, 0.2);
+    CMD(&s, Vertex2f, 0, 0);
+    CMD(&s, Color4f, 1, 0, 0, 0.9);
+    CMD(&s, Vertex2f, 1, 0);
+    CMD(&s, Vertex2f, 0, 1);
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntris, 2);
+    CHECK_EQ_U(count(DIAG_NOTE_ALPHA_TEST), 1);
+    interp_destroy(ip);
+
+    ip = fresh();
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 100, 100);
+    CMD(&s, AlphaFunc, GL_GREATER, 0.5);
+    CMD(&s, Enable, GL_ALPHA_TEST);
+    texture(&s, id, GL_MODULATE, GL_REPEAT);
+    triangle(&s);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntextures, 1);
+    if (sc.ntextures) {
+        CHECK_EQ_U(sc.textures[0].alpha_func, GL_GREATER);
+        CHECK(sc.textures[0].alpha_uses_af);
+        povtex pt;
+        memset(&pt, 0, sizeof pt);
+        float lo[2] = {0, 0}, hi[2] = {1, 1}, scale[2], off[2];
+        CHECK(povtex_map(&pt, &sc, 0, lo, hi, false, NULL, scale, off) == 0);
+        if (pt.n == 1) {
+            CHECK(pt.imgs[0].alpha);
+            CHECK(pt.imgs[0].rgba[3] == 255 && pt.imgs[0].rgba[7] == 0);
+        }
+        povtex_finish(&pt);
+    }
+    CHECK_EQ_U(count(DIAG_NOTE_ALPHA_TEST), 0);
+    interp_destroy(ip);
+    free_res();
+}
+
+int main(void)
+{
+    scene_init(&sc);
+    test_mirrored();
+    test_modulate_tint();
+    test_blend_add();
+    test_alpha_test();
+    scene_finish(&sc);
+    return CHECK_RESULT("test_tex_env");
+}
