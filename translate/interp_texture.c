@@ -1,12 +1,14 @@
 /* interp_texture.c: texture objects, texture environment, texture
  * coordinate generation (issue 5).
  *
- * A texture object keeps its level-0 image converted to 8-bit RGBA as GL's
- * texture environment sees it (GL 1.5 table 3.15: the components the base
- * internal format lacks are given the values the environment functions
- * treat as neutral), bottom row first, and which of the other levels are
- * defined, so that a mipmapping minification filter on an incomplete
- * texture turns texturing off, as in GL (3.8.10). Images are shared,
+ * A texture object keeps the image of each level converted to 8-bit RGBA
+ * as GL's texture environment sees it (GL 1.5 table 3.15: the components
+ * the base internal format lacks are given the values the environment
+ * functions treat as neutral), bottom row first, and each level's size,
+ * so that an incomplete texture (GL 2.1 3.8.10, from GL_TEXTURE_BASE_LEVEL
+ * to GL_TEXTURE_MAX_LEVEL) turns texturing off, as in GL, and a
+ * mipmapping minification filter finds its levels (issue 14: the writer
+ * chooses among them, povwrite_mipmap.c). Images are shared,
  * reference counted, between the interpreters that copy a context's state
  * (frame.c's carried state) and copied before a change.
  *
@@ -32,12 +34,21 @@ typedef struct tex_image {
     uint8_t rgba[]; /* bottom row first */
 } tex_image;
 
+/* Levels 0..14: a 16384-texel side halves to 1 in 14 steps (Mesa's
+ * GL_MAX_TEXTURE_LEVELS is 15). */
+#define TEX_LEVELS 15
+
 typedef struct tex_obj {
     uint32_t name;
     GLenum target;        /* 0 until first bound */
     GLenum base_format;   /* of level 0 */
     tex_image *img;       /* level 0, or NULL */
-    uint32_t levels;      /* bit k: level k defined with the size GL expects */
+    tex_image *lv[TEX_LEVELS]; /* levels 1.., or NULL (lv[0] unused: img) */
+    int32_t lw[TEX_LEVELS], lh[TEX_LEVELS]; /* each defined level's size, no border */
+    uint32_t levels;      /* bit k: level k defined */
+    int32_t base_level, max_level; /* GL_TEXTURE_BASE_LEVEL, GL_TEXTURE_MAX_LEVEL */
+    float min_lod, max_lod;        /* GL_TEXTURE_MIN_LOD, GL_TEXTURE_MAX_LOD */
+    bool generate_mipmap;          /* GL_GENERATE_MIPMAP */
     GLenum wrap_s, wrap_t, min_filter, mag_filter;
     float border[4]; /* GL_TEXTURE_BORDER_COLOR */
     uint32_t lost;   /* pixels whose damage left the image missing or partly
@@ -73,12 +84,32 @@ static void obj_defaults(tex_obj *o, uint32_t name)
     o->wrap_s = o->wrap_t = GL_REPEAT;
     o->min_filter = GL_NEAREST_MIPMAP_LINEAR;
     o->mag_filter = GL_LINEAR;
+    o->max_level = 1000;
+    o->min_lod = -1000;
+    o->max_lod = 1000;
 }
+
+/* The image of level k, or NULL. */
+static tex_image **level_slot(tex_obj *o, int k) { return k == 0 ? &o->img : &o->lv[k]; }
 
 static void image_release(tex_image *img)
 {
     if (img && --img->refs == 0)
         tr_free(img);
+}
+
+static void obj_retain(tex_obj *o)
+{
+    for (int k = 0; k < TEX_LEVELS; k++)
+        if (*level_slot(o, k))
+            (*level_slot(o, k))->refs++;
+}
+
+static void obj_release(tex_obj *o)
+{
+    image_release(o->img);
+    for (int k = 1; k < TEX_LEVELS; k++)
+        image_release(o->lv[k]);
 }
 
 static interp_textures *textures(interp *ip)
@@ -155,7 +186,7 @@ void interp_deletetextures(interp *ip, const rgl_cmd *cmd)
         tex_obj *o = find_obj(t, name);
         if (!o)
             continue;
-        image_release(o->img);
+        obj_release(o);
         namemap_del(&t->names, name);
         *o = t->objs[--t->n];
         if (o != &t->objs[t->n]) /* the last object moved into o's place */
@@ -423,11 +454,49 @@ static bool check_image(interp *ip, GLenum format, GLenum type, int64_t w, int64
     return true;
 }
 
-/* The level-k size GL expects below a level-0 size. */
-static int64_t level_size(int64_t s0, int k)
+/* Levels base+1 .. down to 1 x 1 from the base level, each texel the mean
+ * of the 2 x 2 (or 2 x 1) below it (GL_GENERATE_MIPMAP, gluBuild2DMipmaps:
+ * GL leaves the filter to the implementation; Mesa's is this box). */
+static void generate_levels(interp *ip, tex_obj *o, int b)
 {
-    int64_t s = s0 >> k;
-    return s > 0 ? s : 1;
+    if (b < 0 || b >= TEX_LEVELS || !*level_slot(o, b))
+        return;
+    for (int k = b + 1; k < TEX_LEVELS; k++) {
+        const tex_image *src = *level_slot(o, k - 1);
+        if (!src || (src->width == 1 && src->height == 1))
+            return;
+        int nw = src->width > 1 ? src->width / 2 : 1, nh = src->height > 1 ? src->height / 2 : 1;
+        if (!interp_budget_texels(ip, (uint64_t)nw * (uint64_t)nh * 4))
+            return;
+        tex_image *img = tr_realloc(NULL, sizeof *img + (size_t)nw * (size_t)nh * 4);
+        if (!img) {
+            if (ip->scene)
+                ip->scene->failed = true;
+            return;
+        }
+        img->refs = 1;
+        img->width = nw;
+        img->height = nh;
+        int fx = src->width > 1 ? 2 : 1, fy = src->height > 1 ? 2 : 1;
+        for (int y = 0; y < nh; y++)
+            for (int x = 0; x < nw; x++)
+                for (int c = 0; c < 4; c++) {
+                    unsigned sum = 0;
+                    for (int j = 0; j < fy; j++)
+                        for (int i = 0; i < fx; i++)
+                            sum += src->rgba[((size_t)(y * fy + j) * (size_t)src->width +
+                                              (size_t)(x * fx + i)) * 4 + (size_t)c];
+                    img->rgba[((size_t)y * (size_t)nw + (size_t)x) * 4 + (size_t)c] =
+                        (uint8_t)((sum + (unsigned)(fx * fy) / 2) / (unsigned)(fx * fy));
+                }
+        img->hash = image_hash(img);
+        tex_image **slot = level_slot(o, k);
+        image_release(*slot);
+        *slot = img;
+        o->levels |= 1u << k;
+        o->lw[k] = nw;
+        o->lh[k] = nh;
+    }
 }
 
 /* Sets level `level` of o from w x h pixels (resource id, 0: none). */
@@ -447,7 +516,7 @@ static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t inte
         interp_bad_value(ip, "texture internal format");
         return;
     }
-    if (level < 0 || level > 31 || (border != 0 && border != 1)) {
+    if (level < 0 || level >= TEX_LEVELS || (border != 0 && border != 1)) {
         interp_bad_value(ip, "texture level or border");
         return;
     }
@@ -460,23 +529,17 @@ static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t inte
             ip->scene->failed = true;
         return;
     }
-    if (level > 0) {
-        /* Only whether the chain is complete matters (POV-Ray has no mipmaps). */
-        bool fits = o->img && w - 2 * border == level_size(o->img->width, level) &&
-                    h - (target == GL_TEXTURE_2D ? 2 * border : 0) ==
-                        level_size(o->img->height, level);
-        if (fits)
-            o->levels |= 1u << level;
-        else
-            o->levels &= ~(1u << level);
-        return;
-    }
-    image_release(o->img);
-    o->img = NULL;
-    o->levels = 0;
-    o->lost = 0;
-    o->base_format = base;
     int64_t iw = w - 2 * border, ih = target == GL_TEXTURE_2D ? h - 2 * border : 1;
+    tex_image **slot = level_slot(o, level);
+    image_release(*slot);
+    *slot = NULL;
+    o->levels |= 1u << level;
+    o->lw[level] = (int32_t)(iw > 0 ? iw : 0);
+    o->lh[level] = (int32_t)(ih > 0 ? ih : 0);
+    if (level == 0)
+        o->lost = 0;
+    if (level == 0 || level == o->base_level)
+        o->base_format = base;
     if (iw <= 0 || ih <= 0 || !id)
         return; /* an image with no texels, or undefined contents: no texturing */
     const uint8_t *px = interp_pixels_fetch(ip, id, bytes, &o->lost);
@@ -501,8 +564,9 @@ static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t inte
                              (size_t)border) * ps,
                        (size_t)iw, format, type, base);
     img->hash = image_hash(img);
-    o->img = img;
-    o->levels = 1;
+    *slot = img;
+    if (o->generate_mipmap && level == o->base_level)
+        generate_levels(ip, o, level);
 }
 
 void interp_teximage1d(interp *ip, const rgl_cmd *cmd)
@@ -519,12 +583,13 @@ void interp_teximage2d(interp *ip, const rgl_cmd *cmd)
                   arg_enum(cmd, 7), (uint32_t)cmd->arg[8].v.u);
 }
 
-/* A private copy of o's image before a change. */
-static tex_image *image_own(interp *ip, tex_obj *o)
+/* A private copy of the image in *slot (one of o's levels) before a change. */
+static tex_image *image_own(interp *ip, tex_image **slot)
 {
-    if (o->img->refs == 1)
-        return o->img;
-    size_t n = sizeof *o->img + (size_t)o->img->width * (size_t)o->img->height * 4;
+    tex_image *old = *slot;
+    if (old->refs == 1)
+        return old;
+    size_t n = sizeof *old + (size_t)old->width * (size_t)old->height * 4;
     if (!interp_budget_texels(ip, n))
         return NULL;
     tex_image *c = tr_realloc(NULL, n);
@@ -533,10 +598,10 @@ static tex_image *image_own(interp *ip, tex_obj *o)
             ip->scene->failed = true;
         return NULL;
     }
-    memcpy(c, o->img, n);
+    memcpy(c, old, n);
     c->refs = 1;
-    o->img->refs--;
-    o->img = c;
+    old->refs--;
+    *slot = c;
     return c;
 }
 
@@ -557,20 +622,23 @@ void interp_texsubimage2d(interp *ip, const rgl_cmd *cmd)
     if (!check_image(ip, format, type, w, h, &bytes))
         return;
     tex_obj *o = bound_obj(ip, target, false);
-    if (level != 0)
-        return; /* other levels are not translated */
-    if (!o || !o->img) {
-        interp_bad_op(ip, "glTexSubImage2D on a texture with no level 0");
+    if (level < 0 || level >= TEX_LEVELS) {
+        interp_bad_value(ip, "glTexSubImage2D level");
         return;
     }
-    if (x0 < 0 || y0 < 0 || x0 + w > o->img->width || y0 + h > o->img->height) {
+    tex_image **slot = o ? level_slot(o, (int)level) : NULL;
+    if (!slot || !*slot) {
+        interp_bad_op(ip, "glTexSubImage2D on a texture level with no image");
+        return;
+    }
+    if (x0 < 0 || y0 < 0 || x0 + w > (*slot)->width || y0 + h > (*slot)->height) {
         interp_bad_value(ip, "glTexSubImage2D region outside the texture");
         return;
     }
     if (w == 0 || h == 0 || !id)
         return;
     const uint8_t *px = interp_pixels_fetch(ip, id, bytes, &o->lost);
-    tex_image *img = px ? image_own(ip, o) : NULL;
+    tex_image *img = px ? image_own(ip, slot) : NULL;
     if (!img)
         return;
     int layout[4];
@@ -579,6 +647,8 @@ void interp_texsubimage2d(interp *ip, const rgl_cmd *cmd)
         convert_pixels(img->rgba + ((size_t)(y0 + y) * (size_t)img->width + (size_t)x0) * 4,
                        px + (size_t)y * (size_t)w * ps, (size_t)w, format, type, o->base_format);
     img->hash = image_hash(img);
+    if (o->generate_mipmap && level == o->base_level)
+        generate_levels(ip, o, (int)level);
 }
 
 /* gluBuild2DMipmaps: level 0 is the image scaled to powers of two no
@@ -651,8 +721,10 @@ void interp_build2dmipmaps(interp *ip, const rgl_cmd *cmd)
         img->hash = image_hash(img);
         image_release(src);
         o->img = img;
+        o->lw[0] = img->width;
+        o->lh[0] = img->height;
     }
-    o->levels = UINT32_MAX;
+    generate_levels(ip, o, 0);
 }
 
 void interp_pixelstore(interp *ip, const rgl_cmd *cmd)
@@ -731,8 +803,22 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
             return;
         }
         break;
+    case GL_TEXTURE_BASE_LEVEL: case GL_TEXTURE_MAX_LEVEL:
+        if (v < 0 || !isfinite(v)) {
+            interp_bad_value(ip, "negative texture level");
+            return;
+        }
+        break;
+    case GL_TEXTURE_MIN_LOD: case GL_TEXTURE_MAX_LOD:
+        if (!isfinite(v)) {
+            interp_bad_value(ip, "texture level of detail");
+            return;
+        }
+        break;
+    case GL_GENERATE_MIPMAP:
+        break;
     default:
-        return; /* priority, LOD: nothing POV-Ray shows */
+        return; /* priority: nothing POV-Ray shows */
     }
     tex_obj *o = bound_obj(ip, target, true);
     if (!o) {
@@ -746,6 +832,16 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
             double c = pa->array[k];
             o->border[k] = clamp01((float)(is_int ? (2 * c + 1) / 4294967295.0 : c));
         }
+    } else if (pname == GL_TEXTURE_BASE_LEVEL) {
+        o->base_level = v > 1000 ? 1000 : (int32_t)v;
+    } else if (pname == GL_TEXTURE_MAX_LEVEL) {
+        o->max_level = v > 1000 ? 1000 : (int32_t)v;
+    } else if (pname == GL_TEXTURE_MIN_LOD) {
+        o->min_lod = (float)v;
+    } else if (pname == GL_TEXTURE_MAX_LOD) {
+        o->max_lod = (float)v;
+    } else if (pname == GL_GENERATE_MIPMAP) {
+        o->generate_mipmap = v != 0;
     } else if (pname == GL_TEXTURE_WRAP_S)
         o->wrap_s = e;
     else if (pname == GL_TEXTURE_WRAP_T)
@@ -869,11 +965,9 @@ int interp_textures_copy(interp *dst, const interp *src)
     if (s->n) /* objs is NULL for an empty table: memcpy(NULL, NULL, 0) is undefined */
         memcpy(t->objs, s->objs, s->n * sizeof *t->objs);
     for (size_t i = 0; i < t->n; i++)
-        if (t->objs[i].img)
-            t->objs[i].img->refs++;
+        obj_retain(&t->objs[i]);
     for (int k = 0; k < 2; k++)
-        if (t->zero[k].img)
-            t->zero[k].img->refs++;
+        obj_retain(&t->zero[k]);
     dst->tex = t;
     return 0;
 }
@@ -884,9 +978,9 @@ void interp_textures_free(interp *ip)
     if (!t)
         return;
     for (size_t i = 0; i < t->n; i++)
-        image_release(t->objs[i].img);
+        obj_release(&t->objs[i]);
     for (int k = 0; k < 2; k++)
-        image_release(t->zero[k].img);
+        obj_release(&t->zero[k]);
     namemap_finish(&t->names);
     tr_free(t->objs);
     tr_free(t);
@@ -897,20 +991,37 @@ void interp_textures_free(interp *ip)
 
 static bool mipmap_filter(GLenum f) { return f != GL_NEAREST && f != GL_LINEAR; }
 
-/* GL 3.8.10: complete when level 0 exists and, for a mipmapping
- * minification filter, every level down to 1x1 has the expected size. */
-static bool complete(const tex_obj *o)
+/* The last level of the mipmap chain from base b (GL 2.1 3.8.8: q, at
+ * most GL_TEXTURE_MAX_LEVEL). */
+static int last_level(const tex_obj *o, int b)
 {
-    if (!o->img)
+    int p = 0;
+    while ((o->lw[b] >> p) > 1 || (o->lh[b] >> p) > 1)
+        p++;
+    int q = b + p;
+    if (q > o->max_level)
+        q = o->max_level;
+    return q < TEX_LEVELS ? q : TEX_LEVELS - 1;
+}
+
+/* GL 2.1 3.8.10: complete when the base level (GL_TEXTURE_BASE_LEVEL) has
+ * an image and, for a mipmapping minification filter, every level from it
+ * to q has the size halving gives. A base level past the levels GL can
+ * hold, or above GL_TEXTURE_MAX_LEVEL, is incomplete. */
+static bool complete(tex_obj *o)
+{
+    int b = o->base_level;
+    if (b < 0 || b >= TEX_LEVELS || b > o->max_level || !*level_slot(o, b))
         return false;
     if (!mipmap_filter(o->min_filter))
         return true;
-    int top = 0;
-    while ((o->img->width >> top) > 1 || (o->img->height >> top) > 1)
-        top++;
-    for (int k = 0; k <= top && k < 32; k++)
-        if (!(o->levels & (1u << k)))
+    int q = last_level(o, b);
+    for (int k = b + 1; k <= q; k++) {
+        int32_t ew = o->lw[b] >> (k - b), eh = o->lh[b] >> (k - b);
+        if (!(o->levels & (1u << k)) || o->lw[k] != (ew > 0 ? ew : 1) ||
+            o->lh[k] != (eh > 0 ? eh : 1) || !*level_slot(o, k))
             return false;
+    }
     return true;
 }
 
@@ -927,6 +1038,39 @@ static tex_obj *draw_obj(interp *ip, const interp_tex_unit *u)
 }
 
 static bool clamps(GLenum wrap) { return wrap != GL_REPEAT && wrap != GL_MIRRORED_REPEAT; }
+
+/* The scene textures of o's levels from the base to q, last first, each
+ * linked to the next (scene_texture.mip_next); returns the base's index.
+ * st holds the sampling they share. */
+static int32_t mip_chain(interp *ip, tex_obj *o, scene_texture *st)
+{
+    int b = o->base_level, q = last_level(o, b);
+    int32_t next = -1;
+    st->mip_filter = o->min_filter;
+    st->min_lod = o->min_lod;
+    st->max_lod = o->max_lod;
+    for (int k = q; k >= b; k--) {
+        const tex_image *im = *level_slot(o, k);
+        scene_texture lt = *st;
+        lt.width = im->width;
+        lt.height = im->height;
+        lt.hash = im->hash;
+        lt.mip_next = next;
+        size_t n = (size_t)im->width * (size_t)im->height * 4;
+        if (!interp_budget_texels(ip, n))
+            return -1;
+        lt.rgba = tr_realloc(NULL, n);
+        if (!lt.rgba) {
+            ip->scene->failed = true;
+            return -1;
+        }
+        memcpy(lt.rgba, im->rgba, n);
+        next = scene_add_texture(ip->scene, &lt);
+        if (next < 0)
+            return -1;
+    }
+    return next;
+}
 
 int32_t interp_texture_for_draw(interp *ip)
 {
@@ -963,18 +1107,22 @@ int32_t interp_texture_for_unit(interp *ip, int k)
         interp_note(ip, DIAG_NOTE_TEXTURE);
         env = GL_MODULATE;
     }
-    if (mipmap_filter(o->min_filter) || o->min_filter != o->mag_filter)
+    if (mipmap_filter(o->min_filter))
+        interp_note(ip, DIAG_NOTE_TEX_MIPMAP);
+    else if (o->min_filter != o->mag_filter)
         interp_note(ip, DIAG_NOTE_TEX_SAMPLING);
     const gl_attribs *ga = &ip->st.a;
     GLenum cmm = ga->lighting.color_material_mode;
     if (env == GL_MODULATE && ga->caps[INTERP_CAP_LIGHTING] && ga->caps[INTERP_CAP_COLOR_MATERIAL] &&
         (cmm == GL_DIFFUSE || cmm == GL_AMBIENT_AND_DIFFUSE))
         interp_note(ip, DIAG_NOTE_TEX_MODULATE_CM); /* povlight_modulate_tint */
+    const tex_image *bi = *level_slot(o, o->base_level); /* complete: not NULL */
     scene_texture st;
     memset(&st, 0, sizeof st);
-    st.width = o->img->width;
-    st.height = o->img->height;
-    st.hash = o->img->hash;
+    st.width = bi->width;
+    st.height = bi->height;
+    st.hash = bi->hash;
+    st.mip_next = -1;
     st.repeat_s = !clamps(o->wrap_s);
     st.repeat_t = o->target == GL_TEXTURE_1D || !clamps(o->wrap_t);
     st.mirror_s = o->wrap_s == GL_MIRRORED_REPEAT;
@@ -1013,8 +1161,10 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     st.colour_is_texel = (env == GL_REPLACE && b != GL_ALPHA) ||
                          (env == GL_DECAL && b != GL_RGBA && b != GL_ALPHA);
 
+    if (mipmap_filter(o->min_filter)) /* the levels, each its own scene texture */
+        return mip_chain(ip, o, &st);
     struct tex_cache *tc = &ip->tex->cache[ip->draw_unit[1] == k];
-    if (tc->img == o->img && tc->sc == ip->scene &&
+    if (tc->img == bi && tc->sc == ip->scene &&
         tc->index >= 0 && (size_t)tc->index < ip->scene->ntextures &&
         tc->ntex <= ip->scene->ntextures) {
         const scene_texture *have = &ip->scene->textures[tc->index];
@@ -1030,10 +1180,10 @@ int32_t interp_texture_for_unit(interp *ip, int k)
         ip->scene->failed = true;
         return -1;
     }
-    memcpy(st.rgba, o->img->rgba, n);
+    memcpy(st.rgba, bi->rgba, n);
     int32_t idx = scene_add_texture(ip->scene, &st);
     if (idx >= 0) {
-        tc->img = o->img;
+        tc->img = bi;
         tc->sc = ip->scene;
         tc->index = idx;
         tc->ntex = ip->scene->ntextures;

@@ -25,6 +25,7 @@
 #include "dedup.h"
 #include "povwrite_light.h"
 #include "povwrite_solid.h"
+#include "povwrite_mipmap.h"
 #include "povwrite_multitex.h"
 #include "povwrite_texture.h"
 #include "talloc.h"
@@ -79,6 +80,7 @@ struct povwriter {
     povtex tex;          /* the frame's texture images */
     unsigned mt_count;   /* the frame's multitexture functions, for their names */
     bool tinted;         /* the mesh's image is tinted (povlight_modulate_tint) */
+    const povmip_run *mip; /* the mesh part's level choice (write_mesh2), or NULL */
     unsigned env_id;     /* the mesh's GL_BLEND or GL_ADD image function (povmt_declare) */
     float mod_kdp[3], mod_tint[3];
     const float **vcorner; /* colour image: 3 corner colours per kept face */
@@ -494,9 +496,31 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         if (img < 0)
             return -1;
     }
-    char pigment[POVMT_PIGMENT_MAX] = "";
+    _Static_assert(POVMIP_PIGMENT_MAX >= POVMT_PIGMENT_MAX, "pigment room");
+    char pigment[POVMIP_PIGMENT_MAX] = "";
     if (tx && !tx1 && povtex_pigment(&w->tex, (size_t)img, tx, pigment) == 0)
         return -1;
+    if (tx && !tx1 && w->mip) {
+        /* Mipmapped: the levels by GL's level of detail, at the mesh's own uv. */
+        float uvlo[2] = {INFINITY, INFINITY}, uvhi[2] = {-INFINITY, -INFINITY};
+        for (size_t i = 0; i < nt; i++)
+            for (int k = 0; k < 3; k++)
+                for (int a = 0; a < 2; a++) {
+                    float u = verts[tris[i].v[k]].tex[a];
+                    if (isfinite(u)) {
+                        uvlo[a] = u < uvlo[a] ? u : uvlo[a];
+                        uvhi[a] = u > uvhi[a] ? u : uvhi[a];
+                    }
+                }
+        bool keep_alpha = (tx->env_mode == GL_DECAL && !tx->colour_is_texel) ||
+                          look->blend == SCENE_BLEND_ALPHA;
+        if (povmip_pigment(ob, &w->tex, sc, look->texture, w->mip, w->mt_count++, uvlo, uvhi,
+                           keep_alpha, w->tinted ? w->mod_tint : NULL, pigment,
+                           sizeof pigment) != 0)
+            return -1;
+        uv_scale[0] = uv_scale[1] = 1;
+        uv_off[0] = uv_off[1] = 0;
+    }
     if (tx && !tx1 && (tx->env_mode == GL_BLEND || tx->env_mode == GL_ADD)) {
         w->env_id = w->mt_count++;
         if (povmt_declare(ob, &w->tex, (size_t)img, tx, w->env_id) != 0)
@@ -863,6 +887,23 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
                        const mat4 *to_eye)
 {
     const scene *sc = w->light.s;
+    if (sc && look->texture >= 0 && (size_t)look->texture < sc->ntextures && look->texture1 < 0 &&
+        sc->textures[look->texture].mip_filter && !w->in_proto) {
+        /* Mipmapped: one mesh2 per run sharing a level choice (povmip_split). */
+        const scene_texture *t = &sc->textures[look->texture];
+        while (nt > 0) {
+            povmip_run r;
+            size_t run = povmip_split(&sc->camera, to_eye, verts, tris, nt, t->width, t->height, &r);
+            w->mip = &r;
+            int rc = write_mesh2_part(w, ob, verts, tris, run, look, to_eye, NULL);
+            w->mip = NULL;
+            if (rc != 0)
+                return -1;
+            tris += run;
+            nt -= run;
+        }
+        return 0;
+    }
     if (look->texture < 0 || look->texture1 < 0 || !sc || (size_t)look->texture >= sc->ntextures ||
         (size_t)look->texture1 >= sc->ntextures)
         return write_mesh2_part(w, ob, verts, tris, nt, look, to_eye, NULL);

@@ -217,6 +217,13 @@ typedef struct scene_texture {
     uint32_t alpha_func;
     float alpha_ref, alpha_af; /* alpha_af: the draw's vertex alpha */
     bool alpha_uses_af;
+    /* Mipmapped minification (issue 14): the minification filter when it
+     * mipmaps (GL_*_MIPMAP_*, else 0), the scene texture of the next level
+     * (-1 at the last; each level an image of its own, same sampling), and
+     * the LOD clamps (GL_TEXTURE_MIN_LOD, MAX_LOD, relative to this level). */
+    uint32_t mip_filter;
+    int32_t mip_next;
+    float min_lod, max_lod;
 } scene_texture;
 
 /* Whether alpha a passes the alpha test func (GL_NEVER..GL_ALWAYS)

@@ -3,7 +3,8 @@
  * coloured lit material as a tinted image with per-channel finish terms,
  * a lone unit's GL_BLEND and GL_ADD as a per-channel pigment, and the
  * alpha test (faces whose every vertex fails dropped, texels that fail
- * made transparent).
+ * made transparent), texture levels (base and max level, generated
+ * mipmaps, completeness) and mipmap runs in the writer.
  */
 #include <GL/gl.h>
 #include <stdio.h>
@@ -14,6 +15,7 @@
 #include "interp.h"
 #include "outbuf.h"
 #include "povwrite.h"
+#include "povwrite_mipmap.h"
 #include "povwrite_texture.h"
 #include "tracegen.h"
 
@@ -308,6 +310,157 @@ static void test_alpha_test(void)
     free_res();
 }
 
+/* Levels: GL_TEXTURE_BASE_LEVEL picks the image (white level 0, grey
+ * level 1), GL_TEXTURE_MAX_LEVEL ends the chain a mipmapping filter
+ * needs, GL_GENERATE_MIPMAP makes the levels (2 x 2 means), the chain is
+ * linked level by level in the scene, and a copy of the state shares the
+ * levels until glTexSubImage2D changes one. */
+static void test_levels(void)
+{
+    uint8_t white[4 * 4 * 3], grey[2 * 2 * 3], one[3] = {10, 20, 30};
+    memset(white, 255, sizeof white);
+    memset(grey, 128, sizeof grey);
+    uint32_t iw = add_bytes(white, sizeof white), ig = add_bytes(grey, sizeof grey);
+    uint32_t i1 = add_bytes(one, sizeof one);
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, BindTexture, GL_TEXTURE_2D, 1);
+    CMD(&s, Enable, GL_TEXTURE_2D);
+    CMD(&s, TexImage2D, GL_TEXTURE_2D, 0, GL_RGB, 4, 4, 0, GL_RGB, GL_UNSIGNED_BYTE, iw);
+    CMD(&s, TexImage2D, GL_TEXTURE_2D, 1, GL_RGB, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, ig);
+    CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 1);
+    CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    triangle(&s);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntextures, 1);
+    if (sc.ntextures == 1)
+        CHECK(sc.textures[0].width == 2 && sc.textures[0].rgba[0] == 128);
+    /* Mipmapped from level 1: level 2 (1 x 1) missing, incomplete. */
+    seq_init(&s);
+    CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    triangle(&s);
+    run(ip, &s);
+    CHECK_EQ_U(sc.nmeshes, 2);
+    if (sc.nmeshes == 2)
+        CHECK(sc.meshes[1].look.texture == -1);
+    /* GL_TEXTURE_MAX_LEVEL 1: the chain is level 1 alone, complete. */
+    seq_init(&s);
+    CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 1);
+    triangle(&s);
+    run(ip, &s);
+    if (sc.nmeshes == 3) {
+        int32_t t = sc.meshes[2].look.texture;
+        CHECK(t >= 0 && sc.textures[t].mip_filter == GL_LINEAR_MIPMAP_LINEAR &&
+              sc.textures[t].mip_next == -1 && sc.textures[t].width == 2);
+    }
+    /* A wrong size at level 2 keeps it incomplete; the right one completes. */
+    seq_init(&s);
+    CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 1000);
+    CMD(&s, TexImage2D, GL_TEXTURE_2D, 2, GL_RGB, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, ig);
+    triangle(&s);
+    CMD(&s, TexImage2D, GL_TEXTURE_2D, 2, GL_RGB, 1, 1, 0, GL_RGB, GL_UNSIGNED_BYTE, i1);
+    triangle(&s);
+    run(ip, &s);
+    CHECK_EQ_U(sc.nmeshes, 5);
+    if (sc.nmeshes == 5) {
+        CHECK(sc.meshes[3].look.texture == -1);
+        int32_t t = sc.meshes[4].look.texture;
+        CHECK(t >= 0 && sc.textures[t].mip_next >= 0);
+        if (t >= 0 && sc.textures[t].mip_next >= 0) {
+            const scene_texture *l2 = &sc.textures[sc.textures[t].mip_next];
+            CHECK(l2->width == 1 && l2->rgba[0] == 10 && l2->rgba[2] == 30 && l2->mip_next == -1);
+        }
+    }
+    /* Hostile values: a negative level, level 15, a negative base level. */
+    seq_init(&s);
+    CMD(&s, TexImage2D, GL_TEXTURE_2D, 15, GL_RGB, 1, 1, 0, GL_RGB, GL_UNSIGNED_BYTE, i1);
+    CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, -1);
+    CMD(&s, TexParameterf, GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 1e30);
+    triangle(&s);
+    run(ip, &s);
+    CHECK(count(DIAG_GL_INVALID_VALUE) >= 2);
+    if (sc.nmeshes == 6)
+        CHECK(sc.meshes[5].look.texture == -1); /* base level past the levels */
+    interp_destroy(ip);
+
+    /* GL_GENERATE_MIPMAP: levels from the base, each the mean of 2 x 2. */
+    uint8_t px4[2 * 2 * 3] = {0, 0, 0, 100, 100, 100, 200, 200, 200, 255, 255, 255};
+    uint32_t i4 = add_bytes(px4, sizeof px4);
+    ip = fresh();
+    seq_init(&s);
+    CMD(&s, BindTexture, GL_TEXTURE_2D, 3);
+    CMD(&s, Enable, GL_TEXTURE_2D);
+    CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
+    CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    CMD(&s, TexImage2D, GL_TEXTURE_2D, 0, GL_RGB, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, i4);
+    triangle(&s);
+    run(ip, &s);
+    CHECK_EQ_U(sc.ntextures, 2);
+    if (sc.ntextures == 2 && sc.nmeshes == 1) {
+        int32_t t = sc.meshes[0].look.texture;
+        CHECK(t == 1 && sc.textures[1].mip_next == 0);
+        CHECK_EQ_U(sc.textures[0].rgba[0], 139); /* (0 + 100 + 200 + 255 + 2) / 4 */
+    }
+    interp_destroy(ip);
+    free_res();
+}
+
+/* Mipmap runs: a quad on one plane is one run with lambda per pixel; the
+ * SDL declares its functions and a pigment_map over the levels. */
+static void test_mip_runs(void)
+{
+    uint8_t px16[16 * 16 * 3];
+    for (size_t i = 0; i < sizeof px16; i++)
+        px16[i] = (uint8_t)(i * 13);
+    uint32_t id = add_bytes(px16, sizeof px16);
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 200, 100);
+    CMD(&s, MatrixMode, GL_PROJECTION);
+    CMD(&s, Frustum, -1, 1, -0.5, 0.5, 1, 100);
+    CMD(&s, MatrixMode, GL_MODELVIEW);
+    CMD(&s, BindTexture, GL_TEXTURE_2D, 1);
+    CMD(&s, Enable, GL_TEXTURE_2D);
+    CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    CMD(&s, Build2DMipmaps, GL_TEXTURE_2D, GL_RGB, 16, 16, GL_RGB, GL_UNSIGNED_BYTE, id);
+    CMD(&s, TexEnvi, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    CMD(&s, Begin, GL_QUADS); /* a floor going away */
+    CMD(&s, TexCoord2f, 0, 0);
+    CMD(&s, Vertex3f, -5, -1, -2);
+    CMD(&s, TexCoord2f, 8, 0);
+    CMD(&s, Vertex3f, 5, -1, -2);
+    CMD(&s, TexCoord2f, 8, 8);
+    CMD(&s, Vertex3f, 5, -1, -50);
+    CMD(&s, TexCoord2f, 0, 8);
+    CMD(&s, Vertex3f, -5, -1, -50);
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_NOTE_TEX_MIPMAP), 1);
+    CHECK_EQ_U(sc.nmeshes, 1);
+    if (sc.nmeshes == 1 && sc.meshes[0].tri_count == 2) {
+        const scene_mesh *m = &sc.meshes[0];
+        povmip_run r;
+        const scene_texture *t = &sc.textures[m->look.texture];
+        size_t n = povmip_split(&sc.camera, m->in_eye ? NULL : &m->to_eye, sc.verts,
+                                sc.tris + m->first_tri, 2, t->width, t->height, &r);
+        CHECK_EQ_U(n, 2);
+        CHECK(r.planar);
+    }
+    interp_end_frame(ip);
+    povwriter *w = povwriter_create();
+    write_scene(w);
+    CHECK(strstr(sdl, "#declare rgl_mip0l=function(x,y){ln(") != NULL);
+    CHECK(strstr(sdl, "uv_mapping function{(min(") != NULL);
+    CHECK_EQ_U(povwriter_image(w, 4) != NULL, 1); /* 16, 8, 4, 2, 1 */
+    CHECK(povwriter_image(w, 5) == NULL);
+    CHECK(strstr(sdl, "nan") == NULL && strstr(sdl, "inf") == NULL);
+    povwriter_destroy(w);
+    interp_destroy(ip);
+    free_res();
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -315,6 +468,8 @@ int main(void)
     test_modulate_tint();
     test_blend_add();
     test_alpha_test();
+    test_levels();
+    test_mip_runs();
     scene_finish(&sc);
     return CHECK_RESULT("test_tex_env");
 }
