@@ -20,6 +20,8 @@
 
 #include <GL/gl.h>
 #include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "dedup.h"
@@ -880,6 +882,77 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     return 0;
 }
 
+/* Triangles of a curved mipmapped mesh by their rounded level of detail. */
+typedef struct mip_face {
+    int32_t key; /* lambda * POVMIP_STEPS, rounded */
+    uint32_t i;  /* index in the mesh's triangles */
+} mip_face;
+
+static int mip_face_cmp(const void *a, const void *b)
+{
+    const mip_face *x = a, *y = b;
+    if (x->key != y->key)
+        return x->key < y->key ? -1 : 1;
+    return x->i < y->i ? -1 : x->i > y->i;
+}
+
+/* A mipmapped mesh: one mesh2 per planar run (lambda per pixel), and one
+ * per rounded lambda for the triangles on planes of their own (povmip_split). */
+static int write_mipmapped(povwriter *w, outbuf *ob, const scene_vertex *verts,
+                           const scene_tri *tris, size_t nt, const scene_look *look,
+                           const mat4 *to_eye)
+{
+    const scene *sc = w->light.s;
+    const scene_texture *t = &sc->textures[look->texture];
+    mip_face *single = NULL;
+    scene_tri *group = NULL;
+    size_t ns = 0;
+    int rc = -1;
+    if (nt > SIZE_MAX / sizeof *single || !(single = tr_realloc(NULL, nt * sizeof *single)) ||
+        !(group = tr_realloc(NULL, nt * sizeof *group)))
+        goto fail;
+    for (size_t i = 0; i < nt;) {
+        povmip_run r;
+        size_t run = povmip_split(&sc->camera, to_eye, verts, tris + i, nt - i, t->width,
+                                  t->height, &r);
+        if (r.planar) {
+            w->mip = &r;
+            int e = write_mesh2_part(w, ob, verts, tris + i, run, look, to_eye, NULL);
+            w->mip = NULL;
+            if (e != 0)
+                goto fail;
+        } else {
+            double k = r.lambda * POVMIP_STEPS;
+            k = k < -1e6 ? -1e6 : k > 1e6 ? 1e6 : k;
+            single[ns].key = (int32_t)lround(k);
+            single[ns++].i = (uint32_t)i;
+        }
+        i += run;
+    }
+    qsort(single, ns, sizeof *single, mip_face_cmp);
+    for (size_t a = 0; a < ns;) {
+        size_t b = a;
+        while (b < ns && single[b].key == single[a].key) {
+            group[b - a] = tris[single[b].i];
+            b++;
+        }
+        povmip_run r;
+        memset(&r, 0, sizeof r);
+        r.lambda = (double)single[a].key / POVMIP_STEPS;
+        w->mip = &r;
+        int e = write_mesh2_part(w, ob, verts, group, b - a, look, to_eye, NULL);
+        w->mip = NULL;
+        if (e != 0)
+            goto fail;
+        a = b;
+    }
+    rc = 0;
+fail:
+    tr_free(group);
+    tr_free(single);
+    return rc;
+}
+
 /* A mesh: with two texture units, one mesh2 per run of triangles whose
  * second coordinates are one function of their first (povmt_run). */
 static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
@@ -889,20 +962,7 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
     const scene *sc = w->light.s;
     if (sc && look->texture >= 0 && (size_t)look->texture < sc->ntextures && look->texture1 < 0 &&
         sc->textures[look->texture].mip_filter && !w->in_proto) {
-        /* Mipmapped: one mesh2 per run sharing a level choice (povmip_split). */
-        const scene_texture *t = &sc->textures[look->texture];
-        while (nt > 0) {
-            povmip_run r;
-            size_t run = povmip_split(&sc->camera, to_eye, verts, tris, nt, t->width, t->height, &r);
-            w->mip = &r;
-            int rc = write_mesh2_part(w, ob, verts, tris, run, look, to_eye, NULL);
-            w->mip = NULL;
-            if (rc != 0)
-                return -1;
-            tris += run;
-            nt -= run;
-        }
-        return 0;
+        return write_mipmapped(w, ob, verts, tris, nt, look, to_eye);
     }
     if (look->texture < 0 || look->texture1 < 0 || !sc || (size_t)look->texture >= sc->ntextures ||
         (size_t)look->texture1 >= sc->ntextures)

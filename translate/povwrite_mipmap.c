@@ -11,8 +11,9 @@
  * GL_*_MIPMAP_LINEAR consecutive levels at consecutive indices (the
  * pigment_map's linear blend is GL's blend of two levels), for
  * GL_*_MIPMAP_NEAREST each level over its half-open band (equal indices
- * make the step). Curved meshes (each triangle its own plane) take one
- * lambda per group of neighbouring triangles instead.
+ * make the step). Curved meshes (each triangle its own plane) take each
+ * triangle's lambda at its centroid, rounded to 1/POVMIP_STEPS of a level
+ * so that the writer draws the triangles of one value as one mesh.
  */
 #include "povwrite_mipmap.h"
 
@@ -134,31 +135,16 @@ size_t povmip_split(const scene_camera *cam, const mat4 *to_eye, const scene_ver
             return i;
         }
     }
-    /* Curved: one lambda for neighbours within a quarter level. */
-    double sum = 0, first = 0;
-    size_t n = 0;
-    for (i = 0; i < nt; i++) {
-        double m[9];
+    /* A triangle on a plane of its own: its lambda at its centroid. */
+    if (have) {
         povmip_run r;
-        if (!tri_map(to_eye, verts, &tris[i], m)) {
-            if (i == 0)
-                continue;
-            break;
-        }
-        image_map(cam, m, &r);
-        const float *t0 = verts[tris[i].v[0]].tex, *t1 = verts[tris[i].v[1]].tex,
-                    *t2 = verts[tris[i].v[2]].tex;
-        double l = lambda_at(&r, ((double)t0[0] + t1[0] + t2[0]) / 3,
-                             ((double)t0[1] + t1[1] + t2[1]) / 3, W, H, tw, th);
-        if (n == 0)
-            first = l;
-        else if (fabs(l - first) > 0.25)
-            break;
-        sum += l;
-        n++;
+        image_map(cam, m0, &r);
+        const float *t0 = verts[tris[0].v[0]].tex, *t1 = verts[tris[0].v[1]].tex,
+                    *t2 = verts[tris[0].v[2]].tex;
+        out->lambda = lambda_at(&r, ((double)t0[0] + t1[0] + t2[0]) / 3,
+                                ((double)t0[1] + t1[1] + t2[1]) / 3, W, H, tw, th);
     }
-    out->lambda = n ? sum / (double)n : 0;
-    return i ? i : 1;
+    return 1;
 }
 
 /* Appends to buf (at *len), failing once full. */

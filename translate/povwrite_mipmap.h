@@ -26,9 +26,10 @@ typedef struct povmip_run {
 
 /* The length of the run from tris[0] (nt > 0): triangles on one affine
  * map of their (u, v) into eye space (to_eye NULL: the vertices are in eye
- * space), or, when tris[0] shares its map with no neighbour, the
- * triangles whose lambda (at their centroid) stays within a quarter level
- * of the first's. tw, th: the base level's size in texels. */
+ * space), planar; or 1 when tris[0] shares its map with no neighbour,
+ * with its lambda at its centroid (not planar). tw, th: the base level's
+ * size in texels. */
+#define POVMIP_STEPS 16
 size_t povmip_split(const scene_camera *cam, const mat4 *to_eye, const scene_vertex *verts,
                     const scene_tri *tris, size_t nt, int tw, int th, povmip_run *out);
 
