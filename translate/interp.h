@@ -170,7 +170,7 @@ typedef struct gl_attribs {
     struct gl_texture_unit {
         GLenum env_mode;
         float env_color[4];
-        uint32_t binding_1d, binding_2d;
+        uint32_t binding_1d, binding_2d, binding_cube;
         GLenum gen_mode[4];       /* s, t, r, q: GL_EYE_LINEAR, ... */
         double obj_plane[4][4];   /* GL_OBJECT_PLANE */
         double eye_plane[4][4];   /* GL_EYE_PLANE, times the inverse modelview

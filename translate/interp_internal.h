@@ -359,6 +359,11 @@ void interp_multitex_unbind(interp *ip, uint32_t name);
  * division by q (interp_texture.c). */
 void interp_vertex_texcoord(interp *ip, int unit, const double obj[4], const float nrm[3],
                             float out[2]);
+/* The same with r (s, t, r: a cube map's direction), and whether a unit
+ * draws a cube map (GL_TEXTURE_CUBE_MAP enabled). */
+void interp_vertex_texcoord3(interp *ip, int unit, const double obj[4], const float nrm[3],
+                             float out[3]);
+bool interp_unit_cube(interp *ip, int unit);
 /* The object -> eye transform a draw with modelview mv, projection proj and
  * viewport vp gets (remapped into the frame's camera as a draw does, but
  * without the painter's shift). False when no such transform exists. */

@@ -94,7 +94,7 @@ static void draw_notes(interp *ip)
     if (c[INTERP_CAP_ALPHA_TEST] && a->color_buffer.alpha_func != GL_ALWAYS &&
         ip->prim_mode <= GL_LINE_STRIP)
         interp_note(ip, DIAG_NOTE_ALPHA_TEST); /* polygons: interp_alpha_face */
-    if (c[INTERP_CAP_TEXTURE_3D] || c[INTERP_CAP_TEXTURE_CUBE_MAP])
+    if (c[INTERP_CAP_TEXTURE_3D])
         interp_note(ip, DIAG_NOTE_TEXTURE);
     if (c[INTERP_CAP_LINE_STIPPLE] || c[INTERP_CAP_POLYGON_STIPPLE])
         interp_note(ip, DIAG_NOTE_STIPPLE);
@@ -457,7 +457,15 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
     v->tex1[0] = v->tex1[1] = 0;
     if (ip->draw_unit[0] >= 0) {
         double obj[4] = {x, y, z, 1};
-        interp_vertex_texcoord(ip, ip->draw_unit[0], obj, v->normal, v->tex);
+        if (ip->draw_unit[1] < 0 && interp_unit_cube(ip, ip->draw_unit[0])) {
+            float str[3]; /* a cube map's r rides in tex1 (scene_texture.cube) */
+            interp_vertex_texcoord3(ip, ip->draw_unit[0], obj, v->normal, str);
+            v->tex[0] = str[0];
+            v->tex[1] = str[1];
+            v->tex1[0] = str[2];
+        } else {
+            interp_vertex_texcoord(ip, ip->draw_unit[0], obj, v->normal, v->tex);
+        }
         if (ip->draw_unit[1] >= 0)
             interp_vertex_texcoord(ip, ip->draw_unit[1], obj, v->normal, v->tex1);
     } else if (q == 1 || q == 0 || !isfinite(q)) {

@@ -49,6 +49,7 @@ typedef struct tex_obj {
     int32_t base_level, max_level; /* GL_TEXTURE_BASE_LEVEL, GL_TEXTURE_MAX_LEVEL */
     float min_lod, max_lod;        /* GL_TEXTURE_MIN_LOD, GL_TEXTURE_MAX_LOD */
     bool generate_mipmap;          /* GL_GENERATE_MIPMAP */
+    tex_image *face[6];            /* a cube map's level 0: +X, -X, +Y, -Y, +Z, -Z */
     GLenum wrap_s, wrap_t, min_filter, mag_filter;
     float border[4]; /* GL_TEXTURE_BORDER_COLOR */
     uint32_t lost;   /* pixels whose damage left the image missing or partly
@@ -59,7 +60,7 @@ struct interp_textures {
     tex_obj *objs; /* named objects, unordered */
     size_t n, cap;
     namemap names; /* name -> index in objs */
-    tex_obj zero[2];         /* object 0 of GL_TEXTURE_1D, GL_TEXTURE_2D */
+    tex_obj zero[3];         /* object 0 of GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_CUBE_MAP */
     int32_t unpack[8];       /* glPixelStorei values, by pname - GL_UNPACK_SWAP_BYTES */
     /* The last draw's scene texture, to skip rebuilding it per primitive:
      * one per drawn unit (a draw's first and second). */
@@ -103,6 +104,9 @@ static void obj_retain(tex_obj *o)
     for (int k = 0; k < TEX_LEVELS; k++)
         if (*level_slot(o, k))
             (*level_slot(o, k))->refs++;
+    for (int f = 0; f < 6; f++)
+        if (o->face[f])
+            o->face[f]->refs++;
 }
 
 static void obj_release(tex_obj *o)
@@ -110,6 +114,8 @@ static void obj_release(tex_obj *o)
     image_release(o->img);
     for (int k = 1; k < TEX_LEVELS; k++)
         image_release(o->lv[k]);
+    for (int f = 0; f < 6; f++)
+        image_release(o->face[f]);
 }
 
 static interp_textures *textures(interp *ip)
@@ -120,10 +126,11 @@ static interp_textures *textures(interp *ip)
     if (!t)
         return NULL;
     memset(t, 0, sizeof *t);
-    obj_defaults(&t->zero[0], 0);
-    obj_defaults(&t->zero[1], 0);
+    for (int k = 0; k < 3; k++)
+        obj_defaults(&t->zero[k], 0);
     t->zero[0].target = GL_TEXTURE_1D;
     t->zero[1].target = GL_TEXTURE_2D;
+    t->zero[2].target = GL_TEXTURE_CUBE_MAP;
     t->unpack[GL_UNPACK_ALIGNMENT - GL_UNPACK_SWAP_BYTES] = 4;
     t->cache[0].index = t->cache[1].index = -1;
     ip->tex = t;
@@ -143,7 +150,7 @@ static tex_obj *get_obj(interp *ip, GLenum target, uint32_t name, bool create)
     if (!t)
         return NULL;
     if (name == 0)
-        return &t->zero[target == GL_TEXTURE_1D ? 0 : 1];
+        return &t->zero[target == GL_TEXTURE_1D ? 0 : target == GL_TEXTURE_CUBE_MAP ? 2 : 1];
     tex_obj *o = find_obj(t, name);
     if (o || !create)
         return o;
@@ -162,6 +169,8 @@ static tex_obj *bound_obj(interp *ip, GLenum target, bool create)
         return get_obj(ip, target, ip->st.a.texture.binding_1d, create);
     if (target == GL_TEXTURE_2D)
         return get_obj(ip, target, ip->st.a.texture.binding_2d, create);
+    if (target == GL_TEXTURE_CUBE_MAP)
+        return get_obj(ip, target, ip->st.a.texture.binding_cube, create);
     return NULL;
 }
 
@@ -196,6 +205,8 @@ void interp_deletetextures(interp *ip, const rgl_cmd *cmd)
             ip->st.a.texture.binding_1d = 0;
         if (ip->st.a.texture.binding_2d == name)
             ip->st.a.texture.binding_2d = 0;
+        if (ip->st.a.texture.binding_cube == name)
+            ip->st.a.texture.binding_cube = 0;
         interp_multitex_unbind(ip, name);
     }
 }
@@ -206,8 +217,8 @@ void interp_bindtexture(interp *ip, const rgl_cmd *cmd)
         return;
     GLenum target = arg_enum(cmd, 0);
     uint32_t name = (uint32_t)cmd->arg[1].v.u;
-    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) {
-        if (target != GL_TEXTURE_3D && target != GL_TEXTURE_CUBE_MAP)
+    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_CUBE_MAP) {
+        if (target != GL_TEXTURE_3D)
             interp_bad_enum(ip, "texture target", target);
         return;
     }
@@ -224,6 +235,8 @@ void interp_bindtexture(interp *ip, const rgl_cmd *cmd)
     o->target = target;
     if (target == GL_TEXTURE_1D)
         ip->st.a.texture.binding_1d = name;
+    else if (target == GL_TEXTURE_CUBE_MAP)
+        ip->st.a.texture.binding_cube = name;
     else
         ip->st.a.texture.binding_2d = name;
 }
@@ -505,10 +518,18 @@ static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t inte
 {
     if (interp_reject_in_begin(ip))
         return;
-    if (target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D)
+    if (target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D ||
+        target == GL_PROXY_TEXTURE_CUBE_MAP)
         return;
-    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) {
+    int face = target >= GL_TEXTURE_CUBE_MAP_POSITIVE_X && target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z
+                   ? (int)(target - GL_TEXTURE_CUBE_MAP_POSITIVE_X)
+                   : -1;
+    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && face < 0) {
         interp_bad_enum(ip, "texture target", target);
+        return;
+    }
+    if (face >= 0 && w != h) {
+        interp_bad_value(ip, "cube map face not square");
         return;
     }
     GLenum base = base_format(internal);
@@ -523,23 +544,30 @@ static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t inte
     size_t bytes;
     if (!check_image(ip, format, type, w, h, &bytes))
         return;
-    tex_obj *o = bound_obj(ip, target, true);
+    tex_obj *o = bound_obj(ip, face >= 0 ? GL_TEXTURE_CUBE_MAP : target, true);
     if (!o) {
         if (ip->scene)
             ip->scene->failed = true;
         return;
     }
+    if (face >= 0) {
+        if (level > 0)
+            return; /* a cube map's levels: its level 0 is drawn (the mipmap note) */
+        target = GL_TEXTURE_2D; /* a face is a 2D image */
+    }
     int64_t iw = w - 2 * border, ih = target == GL_TEXTURE_2D ? h - 2 * border : 1;
-    tex_image **slot = level_slot(o, level);
+    tex_image **slot = face >= 0 ? &o->face[face] : level_slot(o, level);
     image_release(*slot);
     *slot = NULL;
     o->levels |= 1u << level;
     o->lw[level] = (int32_t)(iw > 0 ? iw : 0);
     o->lh[level] = (int32_t)(ih > 0 ? ih : 0);
-    if (level == 0)
+    if (level == 0 && face <= 0)
         o->lost = 0;
     if (level == 0 || level == o->base_level)
         o->base_format = base;
+    if (face >= 0)
+        o->levels &= ~(1u << level); /* faces live in o->face */
     if (iw <= 0 || ih <= 0 || !id)
         return; /* an image with no texels, or undefined contents: no texturing */
     const uint8_t *px = interp_pixels_fetch(ip, id, bytes, &o->lost);
@@ -565,7 +593,7 @@ static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t inte
                        (size_t)iw, format, type, base);
     img->hash = image_hash(img);
     *slot = img;
-    if (o->generate_mipmap && level == o->base_level)
+    if (o->generate_mipmap && level == o->base_level && face < 0)
         generate_levels(ip, o, level);
 }
 
@@ -769,8 +797,8 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
     GLenum target = arg_enum(cmd, 0), pname = arg_enum(cmd, 1);
     const rgl_arg *pa = &cmd->arg[2];
     double v = pa->kind == RGL_ARG_SCALAR ? arg_num(pa) : (pa->count ? pa->array[0] : 0);
-    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) {
-        if (target != GL_TEXTURE_3D && target != GL_TEXTURE_CUBE_MAP)
+    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_CUBE_MAP) {
+        if (target != GL_TEXTURE_3D)
             interp_bad_enum(ip, "texture target", target);
         return;
     }
@@ -966,7 +994,7 @@ int interp_textures_copy(interp *dst, const interp *src)
         memcpy(t->objs, s->objs, s->n * sizeof *t->objs);
     for (size_t i = 0; i < t->n; i++)
         obj_retain(&t->objs[i]);
-    for (int k = 0; k < 2; k++)
+    for (int k = 0; k < 3; k++)
         obj_retain(&t->zero[k]);
     dst->tex = t;
     return 0;
@@ -979,7 +1007,7 @@ void interp_textures_free(interp *ip)
         return;
     for (size_t i = 0; i < t->n; i++)
         obj_release(&t->objs[i]);
-    for (int k = 0; k < 2; k++)
+    for (int k = 0; k < 3; k++)
         obj_release(&t->zero[k]);
     namemap_finish(&t->names);
     tr_free(t->objs);
@@ -1030,6 +1058,8 @@ static bool complete(tex_obj *o)
 /* The unit's enabled target: GL_TEXTURE_2D wins over 1D. */
 static tex_obj *draw_obj(interp *ip, const interp_tex_unit *u)
 {
+    if (u->caps[UCAP(TEXTURE_CUBE_MAP)]) /* GL 2.1 3.8.15: the cube map wins */
+        return get_obj(ip, GL_TEXTURE_CUBE_MAP, u->texture->binding_cube, false);
     if (u->caps[UCAP(TEXTURE_2D)])
         return get_obj(ip, GL_TEXTURE_2D, u->texture->binding_2d, false);
     if (u->caps[UCAP(TEXTURE_1D)])
@@ -1038,6 +1068,58 @@ static tex_obj *draw_obj(interp *ip, const interp_tex_unit *u)
 }
 
 static bool clamps(GLenum wrap) { return wrap != GL_REPEAT && wrap != GL_MIRRORED_REPEAT; }
+
+/* A cube map's six faces as scene textures, -Z first, each linked to the
+ * next, +X holding the sampling (scene_texture.cube); the base's index or
+ * -1 (incomplete: a face missing or of another size, GL 2.1 3.8.10, and
+ * GL then draws untextured). A second unit with it is drawn without it. */
+static int32_t cube_for_draw(interp *ip, tex_obj *o, const interp_tex_unit *u, int k)
+{
+    for (int f = 0; f < 6; f++)
+        if (!o->face[f] || o->face[f]->width != o->face[0]->width ||
+            o->face[f]->height != o->face[0]->height)
+            return -1;
+    if (ip->draw_unit[1] >= 0) {
+        interp_note(ip, DIAG_NOTE_MULTITEX);
+        if (ip->draw_unit[1] == k)
+            return -1;
+    }
+    if (mipmap_filter(o->min_filter))
+        interp_note(ip, DIAG_NOTE_TEX_MIPMAP);
+    GLenum env = u->texture->env_mode;
+    if (env != GL_MODULATE && env != GL_REPLACE) {
+        interp_note(ip, DIAG_NOTE_TEXTURE);
+        env = GL_MODULATE;
+    }
+    int32_t next = -1;
+    for (int f = 5; f >= 0; f--) {
+        const tex_image *im = o->face[f];
+        scene_texture st;
+        memset(&st, 0, sizeof st);
+        st.width = im->width;
+        st.height = im->height;
+        st.hash = im->hash;
+        st.linear = o->mag_filter == GL_LINEAR;
+        st.env_mode = env;
+        memcpy(st.env_color, u->texture->env_color, sizeof st.env_color);
+        st.colour_is_texel = env == GL_REPLACE && o->base_format != GL_ALPHA;
+        st.cube = f == 0;
+        st.mip_next = next;
+        size_t n = (size_t)im->width * (size_t)im->height * 4;
+        if (!interp_budget_texels(ip, n))
+            return -1;
+        st.rgba = tr_realloc(NULL, n);
+        if (!st.rgba) {
+            ip->scene->failed = true;
+            return -1;
+        }
+        memcpy(st.rgba, im->rgba, n);
+        next = scene_add_texture(ip->scene, &st);
+        if (next < 0)
+            return -1;
+    }
+    return next;
+}
 
 /* The scene textures of o's levels from the base to q, last first, each
  * linked to the next (scene_texture.mip_next); returns the base's index.
@@ -1083,9 +1165,11 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     if (!ip->scene || k < 0 || k >= INTERP_TEX_UNITS)
         return -1;
     interp_tex_unit u = interp_unit(ip, (uint32_t)k);
-    if (!u.caps[UCAP(TEXTURE_2D)] && !u.caps[UCAP(TEXTURE_1D)])
+    if (!u.caps[UCAP(TEXTURE_2D)] && !u.caps[UCAP(TEXTURE_1D)] && !u.caps[UCAP(TEXTURE_CUBE_MAP)])
         return -1;
     tex_obj *o = draw_obj(ip, &u);
+    if (o && o->target == GL_TEXTURE_CUBE_MAP)
+        return cube_for_draw(ip, o, &u, k);
     if (o && o->lost) {
         char what[DIAG_TEXT];
         snprintf(what, sizeof what, "texture %u (pixels #%u unreadable)", o->name, o->lost);
@@ -1209,6 +1293,15 @@ static bool normal_matrix(interp_textures *t, const mat4 *mv)
 void interp_vertex_texcoord(interp *ip, int unit, const double obj[4], const float nrm[3],
                             float out[2])
 {
+    float str[3];
+    interp_vertex_texcoord3(ip, unit, obj, nrm, str);
+    out[0] = str[0];
+    out[1] = str[1];
+}
+
+void interp_vertex_texcoord3(interp *ip, int unit, const double obj[4], const float nrm[3],
+                             float out[3])
+{
     interp_tex_unit u = interp_unit(ip, (uint32_t)unit);
     const struct gl_texture_unit *ts = u.texture;
     double tc[4] = {u.texcoord[0], u.texcoord[1], u.texcoord[2], u.texcoord[3]};
@@ -1277,4 +1370,13 @@ void interp_vertex_texcoord(interp *ip, int unit, const double obj[4], const flo
         q = 1;
     out[0] = (float)(r[0] / q);
     out[1] = (float)(r[1] / q);
+    out[2] = (float)(r[2] / q);
+}
+
+bool interp_unit_cube(interp *ip, int unit)
+{
+    if (unit < 0 || unit >= INTERP_TEX_UNITS)
+        return false;
+    interp_tex_unit u = interp_unit(ip, (uint32_t)unit);
+    return u.caps[UCAP(TEXTURE_CUBE_MAP)] != 0;
 }

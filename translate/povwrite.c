@@ -27,6 +27,7 @@
 #include "dedup.h"
 #include "povwrite_light.h"
 #include "povwrite_solid.h"
+#include "povwrite_cube.h"
 #include "povwrite_mipmap.h"
 #include "povwrite_multitex.h"
 #include "povwrite_texture.h"
@@ -83,6 +84,8 @@ struct povwriter {
     unsigned mt_count;   /* the frame's multitexture functions, for their names */
     bool tinted;         /* the mesh's image is tinted (povlight_modulate_tint) */
     const povmip_run *mip; /* the mesh part's level choice (write_mesh2), or NULL */
+    const povcube *cube;   /* the mesh's cube map (write_mesh2), or NULL */
+    const double *cube_map; /* and the part's r over (s, t) */
     unsigned env_id;     /* the mesh's GL_BLEND or GL_ADD image function (povmt_declare) */
     float mod_kdp[3], mod_tint[3];
     const float **vcorner; /* colour image: 3 corner colours per kept face */
@@ -502,6 +505,13 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     char pigment[POVMIP_PIGMENT_MAX] = "";
     if (tx && !tx1 && povtex_pigment(&w->tex, (size_t)img, tx, pigment) == 0)
         return -1;
+    if (tx && !tx1 && w->cube) {
+        /* A cube map: GL's face and texel per pixel from (s, t, r). */
+        if (povcube_pigment(ob, w->cube, w->cube_map, w->mt_count++, pigment, sizeof pigment) != 0)
+            return -1;
+        uv_scale[0] = uv_scale[1] = 1;
+        uv_off[0] = uv_off[1] = 0;
+    }
     if (tx && !tx1 && w->mip) {
         /* Mipmapped: the levels by GL's level of detail, at the mesh's own uv. */
         float uvlo[2] = {INFINITY, INFINITY}, uvhi[2] = {-INFINITY, -INFINITY};
@@ -960,6 +970,26 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
                        const mat4 *to_eye)
 {
     const scene *sc = w->light.s;
+    if (sc && look->texture >= 0 && (size_t)look->texture < sc->ntextures && look->texture1 < 0 &&
+        sc->textures[look->texture].cube) {
+        /* A cube map: one mesh2 per run whose r is one function of (s, t). */
+        povcube cube;
+        if (povcube_declare(ob, &w->tex, sc, look->texture, w->mt_count++, &cube) != 0)
+            return -1;
+        while (nt > 0) {
+            double map[6];
+            size_t run = povmt_run(verts, tris, nt, map);
+            w->cube = &cube;
+            w->cube_map = map;
+            int rc = write_mesh2_part(w, ob, verts, tris, run, look, to_eye, NULL);
+            w->cube = NULL;
+            if (rc != 0)
+                return -1;
+            tris += run;
+            nt -= run;
+        }
+        return 0;
+    }
     if (sc && look->texture >= 0 && (size_t)look->texture < sc->ntextures && look->texture1 < 0 &&
         sc->textures[look->texture].mip_filter && !w->in_proto) {
         return write_mipmapped(w, ob, verts, tris, nt, look, to_eye);

@@ -224,6 +224,10 @@ typedef struct scene_texture {
     uint32_t mip_filter;
     int32_t mip_next;
     float min_lod, max_lod;
+    /* A cube map (GL_TEXTURE_CUBE_MAP): this is face +X, and mip_next
+     * links -X, +Y, -Y, +Z, -Z in turn (mip_filter 0); the coordinates are
+     * the vertices' (tex[0], tex[1], tex1[0]) = (s, t, r). */
+    bool cube;
 } scene_texture;
 
 /* Whether alpha a passes the alpha test func (GL_NEVER..GL_ALWAYS)

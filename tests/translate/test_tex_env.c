@@ -7,6 +7,7 @@
  * mipmaps, completeness) and mipmap runs in the writer.
  */
 #include <GL/gl.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -461,6 +462,80 @@ static void test_mip_runs(void)
     free_res();
 }
 
+/* Cube maps: the six faces are accepted (no "invalid texture target"),
+ * the draw's texture is +X linked to the other five, the vertices carry
+ * (s, t, r) from GL_REFLECTION_MAP (r in tex1), a missing face leaves the
+ * cube incomplete, and the writer samples the faces by the major axis. */
+static void test_cube(void)
+{
+    uint8_t face[6][4 * 3];
+    uint32_t id[6];
+    for (int k = 0; k < 6; k++) {
+        memset(face[k], 40 * k, sizeof face[k]);
+        id[k] = add_bytes(face[k], sizeof face[k]);
+    }
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 100, 100);
+    CMD(&s, BindTexture, GL_TEXTURE_CUBE_MAP, 7);
+    for (int k = 0; k < 5; k++)
+        CMD(&s, TexImage2D, GL_TEXTURE_CUBE_MAP_POSITIVE_X + k, 0, GL_RGB, 2, 2, 0, GL_RGB,
+            GL_UNSIGNED_BYTE, id[k]);
+    CMD(&s, TexParameteri, GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    CMD(&s, TexEnvi, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    CMD(&s, Enable, GL_TEXTURE_CUBE_MAP);
+    for (int c = 0; c < 3; c++) {
+        CMD(&s, TexGeni, GL_S + c, GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP);
+        CMD(&s, Enable, GL_TEXTURE_GEN_S + c);
+    }
+    CMD(&s, Normal3f, 0, 0, 1);
+    triangle(&s); /* five faces: incomplete */
+    CMD(&s, TexImage2D, GL_TEXTURE_CUBE_MAP_NEGATIVE_Z, 0, GL_RGB, 2, 2, 0, GL_RGB,
+        GL_UNSIGNED_BYTE, id[5]);
+    triangle(&s);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 0);
+    CHECK_EQ_U(sc.nmeshes, 2);
+    if (sc.nmeshes == 2) {
+        CHECK(sc.meshes[0].look.texture == -1);
+        int32_t t = sc.meshes[1].look.texture;
+        CHECK(t >= 0 && sc.textures[t].cube);
+        int n = 0;
+        for (int32_t k = t; k >= 0 && n < 7; k = sc.textures[k].mip_next, n++)
+            CHECK_EQ_U(sc.textures[k].rgba[0], 40 * n);
+        CHECK_EQ_U(n, 6);
+        /* GL 2.10.4: at eye (1, 0, 0), normal +Z: u = (1, 0, 0), r = u. */
+        const scene_tri *tr = &sc.tris[sc.meshes[1].first_tri];
+        for (int k = 0; k < 3; k++) {
+            const scene_vertex *v = &sc.verts[tr->v[k]];
+            if (v->pos[0] == 1 && v->pos[1] == 0)
+                CHECK(v->tex[0] == 1 && v->tex[1] == 0 && v->tex1[0] == 0);
+        }
+    }
+    interp_end_frame(ip);
+    povwriter *w = povwriter_create();
+    write_scene(w);
+    CHECK(strstr(sdl, "#declare rgl_cube0f5=function{pigment{image_map{") != NULL);
+    CHECK(strstr(sdl, "#declare rgl_cube0r1=function(x,y){") != NULL);
+    CHECK(strstr(sdl, "select(min(abs(x)-abs(y),abs(x)-abs(rgl_cube0r1(x,y)))") != NULL);
+    CHECK(strstr(sdl, "nan") == NULL && strstr(sdl, "inf") == NULL);
+    povwriter_destroy(w);
+    interp_destroy(ip);
+    /* A face that is not square is GL_INVALID_VALUE; the proxy is ignored. */
+    ip = fresh();
+    seq_init(&s);
+    CMD(&s, BindTexture, GL_TEXTURE_CUBE_MAP, 1);
+    CMD(&s, TexImage2D, GL_TEXTURE_CUBE_MAP_POSITIVE_Y, 0, GL_RGB, 4, 1, 0, GL_RGB,
+        GL_UNSIGNED_BYTE, id[0]);
+    CMD(&s, TexImage2D, GL_PROXY_TEXTURE_CUBE_MAP, 0, GL_RGB, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, 0);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_VALUE), 1);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 0);
+    interp_destroy(ip);
+    free_res();
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -470,6 +545,7 @@ int main(void)
     test_alpha_test();
     test_levels();
     test_mip_runs();
+    test_cube();
     scene_finish(&sc);
     return CHECK_RESULT("test_tex_env");
 }
