@@ -507,7 +507,7 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         return -1;
     if (tx && !tx1 && w->cube) {
         /* A cube map: GL's face and texel per pixel from (s, t, r). */
-        if (povcube_pigment(ob, w->cube, w->cube_map, w->mt_count++, pigment, sizeof pigment) != 0)
+        if (povcube_pigment(w->cube, w->cube_map, pigment, sizeof pigment) != 0)
             return -1;
         uv_scale[0] = uv_scale[1] = 1;
         uv_off[0] = uv_off[1] = 0;

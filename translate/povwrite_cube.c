@@ -47,6 +47,27 @@ int povcube_declare(outbuf *ob, povtex *pt, const scene *s, int32_t t, unsigned 
         outbuf_puts(ob, decl);
         f = tx->mip_next;
     }
+    /* Per channel, a function of the direction (x, y, z) = (s, t, r):
+     * table 3.21, sc and tc over the major axis ma, per face. */
+    static const char *const sc[6] = {"-z", "z", "x", "x", "x", "-x"};
+    static const char *const tc[6] = {"-y", "-y", "z", "-z", "-y", "-y"};
+    static const char *const ma[6] = {"x", "x", "y", "y", "z", "z"};
+    static const char *const chan[3] = {"red", "green", "blue"};
+    char n[4][NUMFMT_F32_ROOM + 3];
+    for (int ch = 0; ch < 3; ch++) {
+        char face[6][300];
+        for (int k = 0; k < 6; k++)
+            snprintf(face[k], sizeof face[k],
+                     "rgl_cube%uf%d((%s/abs(%s)+1)/2*%s+%s,(%s/abs(%s)+1)/2*%s+%s,0).%s", id, k,
+                     sc[k], ma[k], num(n[0], c->scale[k][0]), num(n[1], c->offset[k][0]), tc[k],
+                     ma[k], num(n[2], c->scale[k][1]), num(n[3], c->offset[k][1]), chan[ch]);
+        char decl[2400];
+        snprintf(decl, sizeof decl,
+                 "#declare rgl_cube%uc%d=function(x,y,z){select(min(abs(x)-abs(y),abs(x)-abs(z)),"
+                 "select(abs(y)-abs(z),select(z,%s,%s),select(y,%s,%s)),select(x,%s,%s))}\n",
+                 id, ch, face[5], face[4], face[3], face[2], face[1], face[0]);
+        outbuf_puts(ob, decl);
+    }
     return 0;
 }
 
@@ -63,52 +84,19 @@ static bool put(char *buf, size_t cap, size_t *len, const char *fmt, ...)
     return true;
 }
 
-int povcube_pigment(outbuf *ob, const povcube *c, const double map[6], unsigned run, char *buf,
-                    size_t cap)
+int povcube_pigment(const povcube *c, const double map[6], char *buf, size_t cap)
 {
-    char f[8][NUMFMT_F32_ROOM + 3];
-    char r[128];
-    snprintf(r, sizeof r, "rgl_cube%ur%u(x,y)", c->id, run);
-    char decl[8192];
-    snprintf(decl, sizeof decl, "#declare rgl_cube%ur%u=function(x,y){%s*x+%s*y+%s}\n", c->id, run,
-             num(f[0], map[0]), num(f[1], map[1]), num(f[2], map[2]));
-    outbuf_puts(ob, decl);
-    /* Table 3.21: per face, sc and tc over the major axis ma. */
-    static const char *const sc[6] = {"-Z", "Z", "X", "X", "X", "-X"};
-    static const char *const tc[6] = {"-Y", "-Y", "Z", "-Z", "-Y", "-Y"};
-    static const char *const ma[6] = {"X", "X", "Y", "Y", "Z", "Z"};
-    static const char *const chan[3] = {"red", "green", "blue"};
+    char f[3][NUMFMT_F32_ROOM + 3];
+    char r[160];
+    snprintf(r, sizeof r, "%s*x+%s*y+%s", num(f[0], map[0]), num(f[1], map[1]), num(f[2], map[2]));
     static const char *const prim[3] = {"<3,0,0>", "<0,3,0>", "<0,0,3>"};
-    for (int ch = 0; ch < 3; ch++) {
-        char face[6][800];
-        for (int k = 0; k < 6; k++) {
-            char e[2][320];
-            for (int a = 0; a < 2; a++) {
-                const char *v = a ? tc[k] : sc[k];
-                /* X, Y: the uv; Z: r of the run */
-                char sym[160];
-                snprintf(sym, sizeof sym, "%s%s", v[0] == '-' ? "-" : "",
-                         v[strlen(v) - 1] == 'X' ? "x" : v[strlen(v) - 1] == 'Y' ? "y" : r);
-                snprintf(e[a], sizeof e[a], "(%s/abs(%s)+1)/2*%s+%s", sym,
-                         ma[k][0] == 'X' ? "x" : ma[k][0] == 'Y' ? "y" : r,
-                         num(f[2 + 2 * a], c->scale[k][a]), num(f[3 + 2 * a], c->offset[k][a]));
-            }
-            snprintf(face[k], sizeof face[k], "rgl_cube%uf%d(%s,%s,0).%s", c->id, k, e[0], e[1],
-                     chan[ch]);
-        }
-        snprintf(decl, sizeof decl,
-                 "#declare rgl_cube%uc%u_%d=function(x,y){select(min(abs(x)-abs(y),abs(x)-abs(%s)),"
-                 "select(abs(y)-abs(%s),select(%s,%s,%s),select(y,%s,%s)),select(x,%s,%s))}\n",
-                 c->id, run, ch, r, r, r, face[5], face[4], face[3], face[2], face[1], face[0]);
-        outbuf_puts(ob, decl);
-    }
     size_t len = 0;
     if (!put(buf, cap, &len, "uv_mapping average pigment_map{"))
         return -1;
     for (int ch = 0; ch < 3; ch++)
         if (!put(buf, cap, &len,
-                 "[1 function{min(1,max(0,rgl_cube%uc%u_%d(x,y)))*0.5}colour_map{[0 rgb 0][0.5 rgb %s]}]",
-                 c->id, run, ch, prim[ch]))
+                 "[1 function{min(1,max(0,rgl_cube%uc%d(x,y,%s)))*0.5}colour_map{[0 rgb 0][0.5 rgb %s]}]",
+                 c->id, ch, r, prim[ch]))
             return -1;
     return put(buf, cap, &len, "}") ? 0 : -1;
 }

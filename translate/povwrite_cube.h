@@ -19,17 +19,16 @@ typedef struct povcube {
 } povcube;
 
 /* Declares the faces of cube texture t (scene_texture.cube; the faces
- * linked by mip_next). Returns 0, or -1 when memory ran out or t is not a
- * whole cube. */
+ * linked by mip_next) and, per channel, the function of a direction
+ * (s, t, r) that samples the cube as GL does (GL 2.1 3.8.6, table 3.21:
+ * the major axis picks the face, the other two coordinates divided by it
+ * the texel), rgl_cube<id>c<channel>(s, t, r). Returns 0, or -1 when
+ * memory ran out or t is not a whole cube. */
 int povcube_declare(outbuf *ob, povtex *pt, const scene *s, int32_t t, unsigned id, povcube *c);
 
-/* Declares the functions of a run whose r = map[0] s + map[1] t + map[2]
- * (povmt_run's map of tex1[0] over tex) as rgl_cube<id>r<run>..., and puts
- * into buf the pigment text (uv_mapping: x, y are s, t) that samples the
- * cube as GL does (GL 2.1 3.8.6, table 3.21: the major axis of (s, t, r)
- * picks the face, the other two divided by it the texel). Returns 0, or
- * -1 when buf is too small. */
-int povcube_pigment(outbuf *ob, const povcube *c, const double map[6], unsigned run, char *buf,
-                    size_t cap);
+/* Puts into buf the pigment text (uv_mapping: x, y are s, t) of a run
+ * whose r = map[0] s + map[1] t + map[2] (povmt_run's map of tex1[0] over
+ * tex). Returns 0, or -1 when buf is too small. */
+int povcube_pigment(const povcube *c, const double map[6], char *buf, size_t cap);
 
 #endif

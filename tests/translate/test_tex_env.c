@@ -104,6 +104,14 @@ static void write_scene(povwriter *w)
 
 static uint64_t count(diag_kind k) { return dlog.e[k].count; }
 
+static size_t occurrences(const char *hay, const char *needle)
+{
+    size_t n = 0;
+    for (const char *p = hay; (p = strstr(p, needle)); p++)
+        n++;
+    return n;
+}
+
 /* A 2 x 1 RGBA texture (red, green; alpha 255, 100) bound as name 1,
  * nearest, with env mode env, enabled. */
 static void texture(seq *s, uint32_t id, GLenum env, GLenum wrap)
@@ -517,8 +525,9 @@ static void test_cube(void)
     povwriter *w = povwriter_create();
     write_scene(w);
     CHECK(strstr(sdl, "#declare rgl_cube0f5=function{pigment{image_map{") != NULL);
-    CHECK(strstr(sdl, "#declare rgl_cube0r1=function(x,y){") != NULL);
-    CHECK(strstr(sdl, "select(min(abs(x)-abs(y),abs(x)-abs(rgl_cube0r1(x,y)))") != NULL);
+    CHECK(strstr(sdl, "#declare rgl_cube0c2=function(x,y,z){select(min(abs(x)-abs(y),abs(x)-abs(z))") != NULL);
+    CHECK_EQ_U(occurrences(sdl, "#declare rgl_cube0c"), 3); /* once per cube, not per run */
+    CHECK(strstr(sdl, "function{min(1,max(0,rgl_cube0c0(x,y,") != NULL);
     CHECK(strstr(sdl, "nan") == NULL && strstr(sdl, "inf") == NULL);
     povwriter_destroy(w);
     interp_destroy(ip);
