@@ -642,19 +642,24 @@ void interp_texsubimage2d(interp *ip, const rgl_cmd *cmd)
     int64_t w = cmd->arg[4].v.i, h = cmd->arg[5].v.i;
     GLenum format = arg_enum(cmd, 6), type = arg_enum(cmd, 7);
     uint32_t id = (uint32_t)cmd->arg[8].v.u;
-    if (target != GL_TEXTURE_2D) {
+    int face = target >= GL_TEXTURE_CUBE_MAP_POSITIVE_X && target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z
+                   ? (int)(target - GL_TEXTURE_CUBE_MAP_POSITIVE_X)
+                   : -1;
+    if (target != GL_TEXTURE_2D && face < 0) {
         interp_bad_enum(ip, "texture target", target);
         return;
     }
     size_t bytes;
     if (!check_image(ip, format, type, w, h, &bytes))
         return;
-    tex_obj *o = bound_obj(ip, target, false);
+    tex_obj *o = bound_obj(ip, face >= 0 ? GL_TEXTURE_CUBE_MAP : target, false);
     if (level < 0 || level >= TEX_LEVELS) {
         interp_bad_value(ip, "glTexSubImage2D level");
         return;
     }
-    tex_image **slot = o ? level_slot(o, (int)level) : NULL;
+    if (face >= 0 && level > 0)
+        return; /* a cube map's levels are not drawn (tex_image_set) */
+    tex_image **slot = !o ? NULL : face >= 0 ? &o->face[face] : level_slot(o, (int)level);
     if (!slot || !*slot) {
         interp_bad_op(ip, "glTexSubImage2D on a texture level with no image");
         return;
@@ -675,7 +680,7 @@ void interp_texsubimage2d(interp *ip, const rgl_cmd *cmd)
         convert_pixels(img->rgba + ((size_t)(y0 + y) * (size_t)img->width + (size_t)x0) * 4,
                        px + (size_t)y * (size_t)w * ps, (size_t)w, format, type, o->base_format);
     img->hash = image_hash(img);
-    if (o->generate_mipmap && level == o->base_level)
+    if (o->generate_mipmap && level == o->base_level && face < 0)
         generate_levels(ip, o, (int)level);
 }
 
@@ -865,9 +870,9 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
     } else if (pname == GL_TEXTURE_MAX_LEVEL) {
         o->max_level = v > 1000 ? 1000 : (int32_t)v;
     } else if (pname == GL_TEXTURE_MIN_LOD) {
-        o->min_lod = (float)v;
+        o->min_lod = (float)(v < -1000 ? -1000 : v > 1000 ? 1000 : v);
     } else if (pname == GL_TEXTURE_MAX_LOD) {
-        o->max_lod = (float)v;
+        o->max_lod = (float)(v < -1000 ? -1000 : v > 1000 ? 1000 : v);
     } else if (pname == GL_GENERATE_MIPMAP) {
         o->generate_mipmap = v != 0;
     } else if (pname == GL_TEXTURE_WRAP_S)

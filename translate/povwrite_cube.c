@@ -58,7 +58,7 @@ int povcube_declare(outbuf *ob, povtex *pt, const scene *s, int32_t t, unsigned 
         char face[6][300];
         for (int k = 0; k < 6; k++)
             snprintf(face[k], sizeof face[k],
-                     "rgl_cube%uf%d((%s/abs(%s)+1)/2*%s+%s,(%s/abs(%s)+1)/2*%s+%s,0).%s", id, k,
+                     "rgl_cube%uf%d((%s/max(1e-30,abs(%s))+1)/2*%s+%s,(%s/max(1e-30,abs(%s))+1)/2*%s+%s,0).%s", id, k,
                      sc[k], ma[k], num(n[0], c->scale[k][0]), num(n[1], c->offset[k][0]), tc[k],
                      ma[k], num(n[2], c->scale[k][1]), num(n[3], c->offset[k][1]), chan[ch]);
         char decl[2400];

@@ -212,7 +212,7 @@ int povmip_pigment(outbuf *ob, povtex *pt, const scene *s, int32_t t, const povm
             int d = k % 2; /* 0: u, 1: v */
             snprintf(tmp, sizeof tmp,
                      "#declare rgl_mip%u%s=function(x,y){%s*(%s*rgl_mip%uc(x,y)-rgl_mip%u%s(x,y)*%s)"
-                     "/pow(rgl_mip%uc(x,y),2)}\n",
+                     "/max(1e-12,pow(rgl_mip%uc(x,y),2))}\n",
                      id, name[k], num(f[0], k < 2 ? W : H), num(f[1], co[k][d]), id, id, fn[k],
                      num(f[2], r->c[d]), id);
             outbuf_puts(ob, tmp);

@@ -538,9 +538,29 @@ static void test_cube(void)
     CMD(&s, TexImage2D, GL_TEXTURE_CUBE_MAP_POSITIVE_Y, 0, GL_RGB, 4, 1, 0, GL_RGB,
         GL_UNSIGNED_BYTE, id[0]);
     CMD(&s, TexImage2D, GL_PROXY_TEXTURE_CUBE_MAP, 0, GL_RGB, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, 0);
+    /* glTexSubImage2D of a face patches that face */
+    for (int k = 0; k < 6; k++)
+        CMD(&s, TexImage2D, GL_TEXTURE_CUBE_MAP_POSITIVE_X + k, 0, GL_RGB, 2, 2, 0, GL_RGB,
+            GL_UNSIGNED_BYTE, id[k]);
+    uint8_t red[3] = {255, 0, 0};
+    uint32_t ir = add_bytes(red, sizeof red);
+    CMD(&s, TexSubImage2D, GL_TEXTURE_CUBE_MAP_NEGATIVE_Y, 0, 1, 1, 1, 1, GL_RGB, GL_UNSIGNED_BYTE, ir);
+    CMD(&s, TexParameteri, GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    CMD(&s, Enable, GL_TEXTURE_CUBE_MAP);
+    triangle(&s);
     run(ip, &s);
     CHECK_EQ_U(count(DIAG_GL_INVALID_VALUE), 1);
     CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 0);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_OPERATION), 0);
+    if (sc.nmeshes == 1 && sc.meshes[0].look.texture >= 0) {
+        int32_t k = sc.meshes[0].look.texture;
+        for (int f = 0; f < 3 && k >= 0; f++)
+            k = sc.textures[k].mip_next; /* -Y */
+        if (k >= 0)
+            CHECK(sc.textures[k].rgba[(1 * 2 + 1) * 4] == 255 && sc.textures[k].rgba[0] == 120);
+    } else {
+        CHECK(0);
+    }
     interp_destroy(ip);
     free_res();
 }
