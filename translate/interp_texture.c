@@ -1186,12 +1186,13 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     /* A second unit's ADD and BLEND are combined (povwrite's multitexture
      * pigment); a lone unit draws them as MODULATE. */
     bool chained = ip->draw_unit[1] == k && (env == GL_ADD || env == GL_BLEND);
-    /* A lone unit's ADD and BLEND over an unlit colour: povmt_env_texture.
+    /* A lone unit's ADD and BLEND: povmt_env_texture, povmt_env_lit.
      * Of an alpha texture they keep the colour, as MODULATE of its white texels. */
-    bool lone = ip->draw_unit[1] < 0 && !ip->st.a.caps[INTERP_CAP_LIGHTING] &&
-                (env == GL_ADD || env == GL_BLEND);
+    bool lone = ip->draw_unit[1] < 0 && (env == GL_ADD || env == GL_BLEND);
     if ((env == GL_ADD || env == GL_BLEND) && o->base_format == GL_ALPHA)
         env = GL_MODULATE;
+    else if (lone && ip->prim_blend != SCENE_BLEND_OPAQUE)
+        interp_note(ip, DIAG_NOTE_TEXTURE); /* drawn opaque */
     if (env != GL_MODULATE && env != GL_REPLACE && env != GL_DECAL && !chained && !lone) {
         interp_note(ip, DIAG_NOTE_TEXTURE);
         env = GL_MODULATE;

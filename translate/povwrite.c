@@ -327,9 +327,22 @@ static void put_surface(povwriter *w, outbuf *ob, const scene_look *look,
         outbuf_puts(ob, "}}");
         return;
     }
-    if ((tx->env_mode == GL_BLEND || tx->env_mode == GL_ADD) &&
-        povmt_env_texture(ob, tx, w->env_id, c) == 0)
-        return;
+    if (tx->env_mode == GL_BLEND || tx->env_mode == GL_ADD) {
+        if (look->lit) {
+            float kdp[3], tint[3];
+            bool tinted = povlight_modulate_tint(&w->light, look, c, kdp, tint);
+            char lit[POVMT_PIGMENT_MAX], env[POVMT_PIGMENT_MAX];
+            if (povmt_env_lit(tx, w->env_id, tinted ? tint : NULL, lit, sizeof lit, env,
+                              sizeof env) == 0) {
+                povlight_texture_env(&w->light, ob, look, c, side,
+                                     tx->env_mode == GL_BLEND ? lit : NULL,
+                                     tinted && tx->env_mode == GL_BLEND ? kdp : NULL, env);
+                return;
+            }
+        } else if (povmt_env_texture(ob, tx, w->env_id, c) == 0) {
+            return;
+        }
+    }
     if (tx->env_mode == GL_DECAL) {
         /* DECAL of RGBA: the texel over the fragment's colour by its alpha;
          * the image's alpha is POV-Ray's transmit, so the layer below

@@ -254,7 +254,7 @@ void povlight_texture(const povlight *pl, outbuf *ob, const scene_look *look, co
  * terms unscaled and diffuse the mean of the material's (POV-Ray's diffuse
  * is one number). */
 static void texture_body(const povlight *pl, outbuf *ob, const scene_look *look, const float c[4],
-                         int side, const char *pigment, const float *kdp)
+                         int side, const char *pigment, const float *kdp, double gain)
 {
     const scene *s = pl->s;
     double t = 1 - (double)c[3];
@@ -297,13 +297,13 @@ static void texture_body(const povlight *pl, outbuf *ob, const scene_look *look,
     double kmax = kdp ? fmax(kdp[0], fmax(kdp[1], kdp[2])) : 1;
     for (int k = 0; k < 3; k++) {
         p[k] = pigment ? (kdp ? kdp[k] / kmax : 1) : kd[k] > MIN_PIGMENT ? kd[k] : MIN_PIGMENT;
-        amb[k] = ka[k] * ((double)m->model_ambient[k] + pl->light_ambient[k]) / p[k];
-        em[k] = ke[k] / p[k];
+        amb[k] = gain * ka[k] * ((double)m->model_ambient[k] + pl->light_ambient[k]) / p[k];
+        em[k] = gain * ke[k] / p[k];
     }
     if (pigment) {
         outbuf_puts(ob, pigment);
         outbuf_puts(ob, "}finish{diffuse ");
-        put_num(ob, kdp ? kmax : ((double)kd[0] + kd[1] + kd[2]) / 3);
+        put_num(ob, gain * (kdp ? kmax : ((double)kd[0] + kd[1] + kd[2]) / 3));
         outbuf_puts(ob, " ambient ");
     } else {
         outbuf_puts(ob, t > 0 ? "rgbt<" : "rgb<");
@@ -316,7 +316,9 @@ static void texture_body(const povlight *pl, outbuf *ob, const scene_look *look,
             outbuf_putc(ob, ',');
             put_num(ob, t);
         }
-        outbuf_puts(ob, ">}finish{diffuse 1 ambient ");
+        outbuf_puts(ob, ">}finish{diffuse ");
+        put_num(ob, gain);
+        outbuf_puts(ob, " ambient ");
     }
     put_rgb3(ob, amb);
     /* Always named: the #default finish (unlit surfaces) has emission 1. */
@@ -327,7 +329,7 @@ static void texture_body(const povlight *pl, outbuf *ob, const scene_look *look,
         outbuf_putc(ob, '0');
     /* POV-Ray's highlights are not dimmed by transmit; GL blends them
      * with the rest of the colour, by alpha. */
-    double spec = ((double)ks[0] + ks[1] + ks[2]) / 3 * (1 - t);
+    double spec = gain * ((double)ks[0] + ks[1] + ks[2]) / 3 * (1 - t);
     if (spec > 0) {
         double sh = m->shininess[f];
         outbuf_puts(ob, " specular ");
@@ -345,19 +347,31 @@ static void texture_body(const povlight *pl, outbuf *ob, const scene_look *look,
 void povlight_texture_body(const povlight *pl, outbuf *ob, const scene_look *look,
                            const float c[4], int side)
 {
-    texture_body(pl, ob, look, c, side, NULL, NULL);
+    texture_body(pl, ob, look, c, side, NULL, NULL, 1);
 }
 
 void povlight_texture_mapped(const povlight *pl, outbuf *ob, const scene_look *look,
                              const float c[4], int side, const char *pigment)
 {
-    texture_body(pl, ob, look, c, side, pigment, NULL);
+    texture_body(pl, ob, look, c, side, pigment, NULL, 1);
 }
 
 void povlight_texture_tinted(const povlight *pl, outbuf *ob, const scene_look *look,
                              const float c[4], int side, const char *pigment, const float kdp[3])
 {
-    texture_body(pl, ob, look, c, side, pigment, kdp);
+    texture_body(pl, ob, look, c, side, pigment, kdp, 1);
+}
+
+void povlight_texture_env(const povlight *pl, outbuf *ob, const scene_look *look, const float c[4],
+                          int side, const char *lit_pigment, const float *kdp,
+                          const char *env_pigment)
+{
+    /* average halves the sum: each term at twice its weight. */
+    outbuf_puts(ob, "texture{average texture_map{[1 ");
+    texture_body(pl, ob, look, c, side, lit_pigment, kdp, 2);
+    outbuf_puts(ob, "][1 pigment{");
+    outbuf_puts(ob, env_pigment);
+    outbuf_puts(ob, "}finish{emission 2 diffuse 0 ambient 0}]}}");
 }
 
 /* A tint channel is kept at least this share of the largest, so that the

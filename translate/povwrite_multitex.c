@@ -230,6 +230,41 @@ int povmt_env_texture(outbuf *ob, const scene_texture *t, unsigned id, const flo
     return 0;
 }
 
+/* buf: `uv_mapping average pigment_map{...}` of the three channel
+ * expressions e (each in 0..1 after clamping). */
+static int channels(char *buf, size_t cap, char e[3][600])
+{
+    size_t len = 0;
+    if (!put(buf, cap, &len, "uv_mapping average pigment_map{"))
+        return -1;
+    for (int k = 0; k < 3; k++)
+        if (!put(buf, cap, &len,
+                 "[1 function{min(1,max(0,%s))*0.5}colour_map{[0 rgb 0][0.5 rgb %s]}]", e[k],
+                 prim[k]))
+            return -1;
+    return put(buf, cap, &len, "}") ? 0 : -1;
+}
+
+int povmt_env_lit(const scene_texture *t, unsigned id, const float tint[3], char *lit, size_t lcap,
+                  char *env, size_t ecap)
+{
+    char at[64], a[3][600], b[3][600], f[2][NUMFMT_F32_ROOM + 3];
+    snprintf(at, sizeof at, "rgl_mt%ua(x,y,z)", id);
+    for (int k = 0; k < 3; k++) {
+        if (t->env_mode == GL_BLEND) { /* Cf (1 - Ct) + Cc Ct */
+            snprintf(a[k], sizeof a[k], "(1-%s.%s)*%s", at, chan[k], num(f[0], tint ? tint[k] : 1));
+            snprintf(b[k], sizeof b[k], "%s*%s.%s", num(f[1], t->env_color[k]), at, chan[k]);
+        } else { /* GL_ADD: Cf + Ct */
+            snprintf(b[k], sizeof b[k], "%s.%s", at, chan[k]);
+        }
+    }
+    if (lit && lcap)
+        lit[0] = '\0';
+    if (t->env_mode == GL_BLEND && channels(lit, lcap, a) != 0)
+        return -1;
+    return channels(env, ecap, b);
+}
+
 int povmt_declare(outbuf *ob, const povtex *pt, size_t img, const scene_texture *t, unsigned id)
 {
     char im[POVTEX_PIGMENT_MAX], decl[2 * POVTEX_PIGMENT_MAX];

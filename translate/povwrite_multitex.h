@@ -46,4 +46,12 @@ int povmt_pigment(outbuf *ob, const povtex *pt, size_t img0, size_t img1,
 int povmt_declare(outbuf *ob, const povtex *pt, size_t img, const scene_texture *t, unsigned id);
 int povmt_env_texture(outbuf *ob, const scene_texture *t, unsigned id, const float cf[4]);
 
+/* The same environments on a lit surface (povlight_texture_env): lit gets
+ * the pigment the lit colour multiplies (GL_BLEND: 1 - Ct per channel,
+ * times tint when not NULL; GL_ADD: empty, the material's own colour),
+ * env the one added (Cc Ct; Ct). Returns 0, or -1 when a buffer is too
+ * small. */
+int povmt_env_lit(const scene_texture *t, unsigned id, const float tint[3], char *lit, size_t lcap,
+                  char *env, size_t ecap);
+
 #endif
