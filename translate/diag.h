@@ -62,7 +62,7 @@
     X(NOTE_SINGLE_COLOR, "approximated: lit textured surfaces with GL_SINGLE_COLOR get the highlight after the texture (as GL_SEPARATE_SPECULAR_COLOR), where GL modulates it by the texture") \
     X(NOTE_ACCUM_WEIGHTS, "approximated: accumulation weights that do not add up to one, GL_MULT or GL_ADD, are drawn as an average of the passes") \
     X(NOTE_MULTITEX, "approximated: texture units past the second enabled one not drawn; a unit after the first combined with one fragment colour (unlit, the first vertex's) unless both units use GL_MODULATE or the first replaces the colour; two units blended are drawn opaque") \
-    X(NOTE_TEX_MODULATE_CM, "approximated: a lit GL_MODULATE texture whose diffuse colour comes from GL_COLOR_MATERIAL is multiplied by that colour per channel only where one mesh has one colour (elsewhere by the mean of its channels)")
+    X(NOTE_TEX_MODULATE_CM, "approximated: a lit GL_MODULATE texture whose diffuse colour comes from GL_COLOR_MATERIAL and varies over a mesh, blended, mipmapped, two-sided or on two units, is multiplied by the mean of that colour's channels")
 
 typedef enum diag_kind {
 #define DIAG_ENUM_(name, text) DIAG_##name,

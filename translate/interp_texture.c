@@ -1204,8 +1204,10 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     const gl_attribs *ga = &ip->st.a;
     GLenum cmm = ga->lighting.color_material_mode;
     if (env == GL_MODULATE && ga->caps[INTERP_CAP_LIGHTING] && ga->caps[INTERP_CAP_COLOR_MATERIAL] &&
-        (cmm == GL_DIFFUSE || cmm == GL_AMBIENT_AND_DIFFUSE))
-        interp_note(ip, DIAG_NOTE_TEX_MODULATE_CM); /* povlight_modulate_tint */
+        (cmm == GL_DIFFUSE || cmm == GL_AMBIENT_AND_DIFFUSE) &&
+        (ip->prim_blend != SCENE_BLEND_OPAQUE || mipmap_filter(o->min_filter) ||
+         o->target == GL_TEXTURE_CUBE_MAP || ga->lighting.two_side || ip->draw_unit[1] >= 0))
+        interp_note(ip, DIAG_NOTE_TEX_MODULATE_CM); /* povwrite.c mesh_tint */
     const tex_image *bi = *level_slot(o, o->base_level); /* complete: not NULL */
     scene_texture st;
     memset(&st, 0, sizeof st);

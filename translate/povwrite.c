@@ -83,6 +83,7 @@ struct povwriter {
     povtex tex;          /* the frame's texture images */
     unsigned mt_count;   /* the frame's multitexture functions, for their names */
     bool tinted;         /* the mesh's image is tinted (povlight_modulate_tint) */
+    bool per_entry;      /* no tint fits the mesh: each colour entry tints a function of it */
     const povmip_run *mip; /* the mesh part's level choice (write_mesh2), or NULL */
     const povcube *cube;   /* the mesh's cube map (write_mesh2), or NULL */
     const double *cube_map; /* and the part's r over (s, t) */
@@ -354,6 +355,15 @@ static void put_surface(povwriter *w, outbuf *ob, const scene_look *look,
         outbuf_puts(ob, "}}");
         return;
     }
+    float kdp[3], tint[3];
+    char tp[POVMT_PIGMENT_MAX];
+    if (w->per_entry && povlight_modulate_tint(&w->light, look, c, kdp, tint) &&
+        povmt_tinted(tx, w->env_id, tint, tp, sizeof tp) == 0) {
+        outbuf_puts(ob, "texture{"); /* MODULATE, this entry's diffuse colour per channel */
+        povlight_texture_tinted(&w->light, ob, look, c, side, tp, kdp);
+        outbuf_putc(ob, '}');
+        return;
+    }
     outbuf_puts(ob, "texture{"); /* MODULATE: texel times the fragment's colour */
     if (w->tinted)
         povlight_texture_tinted(&w->light, ob, look, c, side, pigment, w->mod_kdp);
@@ -368,7 +378,7 @@ static const float *mesh_tint(povwriter *w, const scene_vertex *verts, const sce
                               size_t nt, const scene_look *look, const scene_texture *tx,
                               const scene_texture *tx1)
 {
-    w->tinted = false;
+    w->tinted = w->per_entry = false;
     if (tx1 || tx->env_mode != GL_MODULATE || tx->colour_is_texel || !look->lit)
         return NULL;
     /* GL_COLOR_MATERIAL's diffuse: one colour for the whole mesh, or none. */
@@ -380,6 +390,9 @@ static const float *mesh_tint(povwriter *w, const scene_vertex *verts, const sce
                 c = NULL;
         }
     w->tinted = povlight_modulate_tint(&w->light, look, c, w->mod_kdp, w->mod_tint);
+    /* GL_COLOR_MATERIAL colours that vary: a tint per texture_list entry,
+     * through a function of the image (opaque: not under blending). */
+    w->per_entry = !c && !w->mip && !w->cube && look->blend == SCENE_BLEND_OPAQUE;
     return w->tinted ? w->mod_tint : NULL;
 }
 
@@ -457,7 +470,7 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         txc.colour_is_texel = povmt_texel(tx, tx1);
         tx = &txc;
     }
-    w->tinted = false;
+    w->tinted = w->per_entry = false;
     bool normals = look->lit;
     bool flat_normals = look->lit && look->flat;
     bool vimage = !tx && colour_image_ok(w, verts, tris, nt, look);
@@ -546,7 +559,7 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         uv_scale[0] = uv_scale[1] = 1;
         uv_off[0] = uv_off[1] = 0;
     }
-    if (tx && !tx1 && (tx->env_mode == GL_BLEND || tx->env_mode == GL_ADD)) {
+    if (tx && !tx1 && (tx->env_mode == GL_BLEND || tx->env_mode == GL_ADD || w->per_entry)) {
         w->env_id = w->mt_count++;
         if (povmt_declare(ob, &w->tex, (size_t)img, tx, w->env_id) != 0)
             return -1;

@@ -265,6 +265,16 @@ int povmt_env_lit(const scene_texture *t, unsigned id, const float tint[3], char
     return channels(env, ecap, b);
 }
 
+int povmt_tinted(const scene_texture *t, unsigned id, const float tint[3], char *buf, size_t cap)
+{
+    (void)t;
+    char at[64], e[3][600], f[NUMFMT_F32_ROOM + 3];
+    snprintf(at, sizeof at, "rgl_mt%ua(x,y,z)", id);
+    for (int k = 0; k < 3; k++)
+        snprintf(e[k], sizeof e[k], "%s.%s*%s", at, chan[k], num(f, tint[k]));
+    return channels(buf, cap, e);
+}
+
 int povmt_declare(outbuf *ob, const povtex *pt, size_t img, const scene_texture *t, unsigned id)
 {
     char im[POVTEX_PIGMENT_MAX], decl[2 * POVTEX_PIGMENT_MAX];

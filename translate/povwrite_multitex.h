@@ -51,6 +51,12 @@ int povmt_env_texture(outbuf *ob, const scene_texture *t, unsigned id, const flo
  * times tint when not NULL; GL_ADD: empty, the material's own colour),
  * env the one added (Cc Ct; Ct). Returns 0, or -1 when a buffer is too
  * small. */
+/* The pigment of image function rgl_mt<id>a (povmt_declare) times tint
+ * per channel (GL_MODULATE of a lit colour-material surface whose colours
+ * vary: one per texture_list entry). Returns 0, or -1 when buf is too
+ * small. */
+int povmt_tinted(const scene_texture *t, unsigned id, const float tint[3], char *buf, size_t cap);
+
 int povmt_env_lit(const scene_texture *t, unsigned id, const float tint[3], char *lit, size_t lcap,
                   char *env, size_t ecap);
 

@@ -215,6 +215,33 @@ static void test_modulate_tint(void)
         povwriter_destroy(w);
         interp_destroy(ip);
     }
+    /* GL_COLOR_MATERIAL colours that vary: a tinted function per entry, no note. */
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 100, 100);
+    CMD(&s, Enable, GL_LIGHTING);
+    CMD(&s, Enable, GL_LIGHT0);
+    CMD(&s, Enable, GL_COLOR_MATERIAL);
+    texture(&s, id, GL_MODULATE, GL_REPEAT);
+    CMD(&s, Normal3f, 0, 0, 1);
+    CMD(&s, Begin, GL_TRIANGLES);
+    CMD(&s, Color3f, 1, 0.5, 0);
+    CMD(&s, Vertex2f, 0, 0);
+    CMD(&s, Color3f, 0, 0.5, 1);
+    CMD(&s, Vertex2f, 1, 0);
+    CMD(&s, Vertex2f, 0, 1);
+    CMD0(&s, End);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_NOTE_TEX_MODULATE_CM), 0);
+    interp_end_frame(ip);
+    povwriter *w = povwriter_create();
+    write_scene(w);
+    CHECK(strstr(sdl, "#declare rgl_mt0a=function{pigment{image_map{") != NULL);
+    CHECK(strstr(sdl, "rgl_mt0a(x,y,z).red*(1)") != NULL);  /* (1, 0.5, 0): red the largest */
+    CHECK(strstr(sdl, "rgl_mt0a(x,y,z).blue*(1)") != NULL); /* (0, 0.5, 1) */
+    povwriter_destroy(w);
+    interp_destroy(ip);
     free_res();
 }
 
