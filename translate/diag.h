@@ -32,7 +32,7 @@
     X(NOTE_BLEND, "approximated: blending with colour or destination-alpha factors, or of lit or textured surfaces, other than GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA is drawn as that one") \
     X(NOTE_BLEND_ADD, "approximated: additive blending (all of the colour behind kept) keeps 127/128 of it") \
     X(NOTE_BLEND_EQUATION, "approximated: blend equations other than GL_FUNC_ADD (glBlendEquation) are drawn as GL_FUNC_ADD") \
-    X(NOTE_ALPHA_TEST, "approximated: alpha test of lines and points (drawn whole), of faces whose vertex alphas lie on both sides of the reference (drawn whole), of a texture with vertex alphas that vary (the first vertex's alpha) or with GL_LINEAR filtering (the texels tested one by one)") \
+    X(NOTE_ALPHA_TEST, "approximated: alpha test of lines and points (drawn whole), of faces whose vertex alphas lie on both sides of the reference (drawn whole), of a texture with vertex alphas that vary (the first vertex's alpha) or with GL_EQUAL or GL_NOTEQUAL and GL_LINEAR filtering (the texels tested one by one)") \
     X(NOTE_TEXTURE, "approximated: texture environment GL_COMBINE drawn as GL_MODULATE (a cube map's GL_DECAL, GL_BLEND and GL_ADD too), GL_BLEND and GL_ADD drawn opaque; 3D textures not translated") \
     X(NOTE_TEX_SAMPLING, "approximated: a texture whose minification filter (without mipmaps) differs from its magnification filter is sampled with the magnification filter") \
     X(NOTE_TEX_MIPMAP, "approximated: mipmapped textures take GL's level of detail per pixel on flat runs of faces only: one level per group of faces on curved meshes, the base level in display-list copies and with two texture units") \

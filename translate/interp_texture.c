@@ -1240,8 +1240,8 @@ int32_t interp_texture_for_unit(interp *ip, int k)
         float c[4];
         interp_surface_colour(ip, c); /* the current alpha (interp_alpha_face checks the vertices') */
         st.alpha_af = st.alpha_uses_af ? clamp01(c[3]) : 1;
-        if (o->mag_filter == GL_LINEAR)
-            interp_note(ip, DIAG_NOTE_ALPHA_TEST);
+        if (o->mag_filter == GL_LINEAR && !scene_alpha_crisp(&st))
+            interp_note(ip, DIAG_NOTE_ALPHA_TEST); /* GL_EQUAL, GL_NOTEQUAL per texel */
     } else if (ga->caps[INTERP_CAP_ALPHA_TEST] && ga->color_buffer.alpha_func != GL_ALWAYS &&
                has_alpha && env != GL_DECAL) {
         interp_note(ip, DIAG_NOTE_TEXTURE); /* BLEND, ADD: drawn opaque, untested */

@@ -531,6 +531,23 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     char pigment[POVMIP_PIGMENT_MAX] = "";
     if (tx && !tx1 && povtex_pigment(&w->tex, (size_t)img, tx, pigment) == 0)
         return -1;
+    if (tx && !tx1 && !w->cube && !w->mip && !w->per_entry && scene_alpha_crisp(tx) &&
+        tx->env_mode != GL_BLEND && tx->env_mode != GL_ADD) {
+        /* The alpha test on the filtered alpha, as GL's per fragment. */
+        float uvlo[2] = {INFINITY, INFINITY}, uvhi[2] = {-INFINITY, -INFINITY};
+        for (size_t i = 0; i < nt; i++)
+            for (int k = 0; k < 3; k++)
+                for (int a = 0; a < 2; a++) {
+                    float u = verts[tris[i].v[k]].tex[a];
+                    if (isfinite(u)) {
+                        uvlo[a] = u < uvlo[a] ? u : uvlo[a];
+                        uvhi[a] = u > uvhi[a] ? u : uvhi[a];
+                    }
+                }
+        if (povtex_alpha_pigment(ob, &w->tex, sc, look->texture, (size_t)img, uvlo, uvhi,
+                                 w->mt_count++, pigment, sizeof pigment) != 0)
+            return -1;
+    }
     if (tx && !tx1 && w->cube) {
         /* A cube map: GL's face and texel per pixel from (s, t, r). */
         if (povcube_pigment(w->cube, w->cube_map, pigment, sizeof pigment) != 0)

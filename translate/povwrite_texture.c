@@ -152,7 +152,10 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
                 if (mix[1] && outy)
                     d[k] = (uint8_t)((d[k] + border[k] + 1) / 2);
             }
-            if (tx->alpha_func) {
+            if (scene_alpha_crisp(tx)) {
+                if (!keep_alpha) /* the test is the pigment's (povtex_alpha_pigment) */
+                    d[3] = 255;
+            } else if (tx->alpha_func) {
                 /* GL discards the fragment: transmit 1, crisp under GL_NEAREST. */
                 float fa = d[3] / 255.0f * (tx->alpha_uses_af ? tx->alpha_af : 1.0f);
                 if (!scene_alpha_pass(tx->alpha_func, fa, tx->alpha_ref))
@@ -212,6 +215,37 @@ size_t povtex_image_pigment(const povtex *pt, size_t i, bool linear,
     int n = snprintf(buf, POVTEX_PIGMENT_MAX, "uv_mapping image_map{png \"" POVTEX_DIR "/%s\" gamma 2.2%s}",
                      pt->imgs[i].name, linear ? " interpolate 2" : "");
     return n > 0 && n < POVTEX_PIGMENT_MAX ? (size_t)n : 0;
+}
+
+int povtex_alpha_pigment(outbuf *ob, povtex *pt, const scene *s, int32_t t, size_t img,
+                         const float uvlo[2], const float uvhi[2], unsigned id, char *buf,
+                         size_t cap)
+{
+    const scene_texture *tx = &s->textures[t];
+    float sc[2], off[2];
+    int ai = povtex_map(pt, s, t, uvlo, uvhi, true, NULL, sc, off);
+    char raw[POVTEX_PIGMENT_MAX], col[POVTEX_PIGMENT_MAX];
+    if (ai < 0 || povtex_image_pigment(pt, (size_t)ai, true, raw) == 0 ||
+        povtex_image_pigment(pt, img, true, col) == 0)
+        return -1;
+    const char *rb = strncmp(raw, "uv_mapping ", 11) == 0 ? raw + 11 : raw;
+    const char *cb = strncmp(col, "uv_mapping ", 11) == 0 ? col + 11 : col;
+    char decl[POVTEX_PIGMENT_MAX + 64];
+    snprintf(decl, sizeof decl, "#declare rgl_at%u=function{pigment{%s}}\n", id, rb);
+    outbuf_puts(ob, decl);
+    /* GL tests the filtered alpha At (times the vertex alpha Af): passes
+     * where At > ref / Af (GL_GREATER, GL_GEQUAL), i.e. transmit below
+     * 1 - ref / Af; GL_LESS, GL_LEQUAL the other side. */
+    double af = tx->alpha_uses_af ? tx->alpha_af : 1;
+    double th = af > 0 ? 1 - tx->alpha_ref / af : 0;
+    th = th < 0 ? 0 : th > 1 ? 1 : th;
+    bool below = tx->alpha_func == GL_GREATER || tx->alpha_func == GL_GEQUAL;
+    const char *a = below ? cb : "rgbt<1,1,1,1>", *b = below ? "rgbt<1,1,1,1>" : cb;
+    int n = snprintf(buf, cap,
+                     "uv_mapping function{rgl_at%u(x,y,z).transmit}pigment_map{[0 %s][%.9g %s][%.9g "
+                     "%s][1 %s]}",
+                     id, a, th, a, th, b, b);
+    return n > 0 && (size_t)n < cap ? 0 : -1;
 }
 
 size_t povtex_pigment(const povtex *pt, size_t i, const scene_texture *t,

@@ -59,6 +59,16 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
 size_t povtex_pigment(const povtex *pt, size_t i, const scene_texture *t,
                       char buf[POVTEX_PIGMENT_MAX]);
 
+/* The alpha test of texture t on its filtered alpha (scene_alpha_crisp):
+ * declares (before the mesh) a function rgl_at<id> of t's image with its
+ * alpha, and puts into buf a pigment of image img (the colours) where the
+ * filtered alpha passes and fully transparent elsewhere, an edge as crisp
+ * as GL's per-fragment test. Returns 0, or -1 when memory ran out or buf
+ * is too small. */
+int povtex_alpha_pigment(outbuf *ob, povtex *pt, const scene *s, int32_t t, size_t img,
+                         const float uvlo[2], const float uvhi[2], unsigned id, char *buf,
+                         size_t cap);
+
 /* The same for an image that is not a GL texture (filtering linear or
  * nearest). */
 size_t povtex_image_pigment(const povtex *pt, size_t i, bool linear,

@@ -230,6 +230,15 @@ typedef struct scene_texture {
     bool cube;
 } scene_texture;
 
+/* Whether a texture's alpha test is drawn on the filtered alpha (GL_LINEAR
+ * and a comparison with a side: the writer's pigment_map by transmit),
+ * rather than texel by texel in the image. */
+static inline bool scene_alpha_crisp(const scene_texture *t)
+{
+    return t->linear && !t->mip_filter && !t->cube && t->alpha_func >= 0x0201 && t->alpha_func <= 0x0206 &&
+           t->alpha_func != 0x0202 && t->alpha_func != 0x0205;
+}
+
 /* Whether alpha a passes the alpha test func (GL_NEVER..GL_ALWAYS)
  * against ref (GL 1.x 4.1.4). */
 static inline bool scene_alpha_pass(uint32_t func, float a, float ref)

@@ -11,6 +11,11 @@
 
 enum { T = 16 };
 
+/* tex_alpha_linear.c draws the same with GL_LINEAR. */
+#ifndef TREE_FILTER
+#define TREE_FILTER GL_NEAREST
+#endif
+
 static void tree(unsigned char px[T * T * 4])
 {
     for (int y = 0; y < T; y++)
@@ -51,8 +56,8 @@ static int draw(int w, int h)
     rayglGenTextures(1, &name);
     rayglBindTexture(GL_TEXTURE_2D, name);
     rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, T, T, 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
-    rayglTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    rayglTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    rayglTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, TREE_FILTER);
+    rayglTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, TREE_FILTER);
     rayglTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
     rayglAlphaFunc(GL_GREATER, 0.5f);
     rayglEnable(GL_ALPHA_TEST);

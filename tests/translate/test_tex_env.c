@@ -349,6 +349,27 @@ static void test_alpha_test(void)
     }
     CHECK_EQ_U(count(DIAG_NOTE_ALPHA_TEST), 0);
     interp_destroy(ip);
+
+    /* GL_LINEAR: the test on the filtered alpha, a pigment_map by transmit
+     * (pass below 1 - 0.5), the alpha image unthresholded. */
+    ip = fresh();
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 100, 100);
+    CMD(&s, AlphaFunc, GL_GREATER, 0.5);
+    CMD(&s, Enable, GL_ALPHA_TEST);
+    texture(&s, id, GL_MODULATE, GL_REPEAT);
+    CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    triangle(&s);
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_NOTE_ALPHA_TEST), 0);
+    interp_end_frame(ip);
+    povwriter *w = povwriter_create();
+    write_scene(w);
+    CHECK(strstr(sdl, "#declare rgl_at0=function{pigment{image_map{") != NULL);
+    CHECK(strstr(sdl, "uv_mapping function{rgl_at0(x,y,z).transmit}pigment_map{[0 image_map{") != NULL);
+    CHECK(strstr(sdl, "[0.5 rgbt<1,1,1,1>][1 rgbt<1,1,1,1>]}") != NULL);
+    povwriter_destroy(w);
+    interp_destroy(ip);
     free_res();
 }
 
