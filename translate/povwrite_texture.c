@@ -17,6 +17,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "numfmt.h"
 #include "talloc.h"
 
 static float clamp01(float x) { return x > 0 ? (x < 1 ? x : 1) : 0; /* NaN: 0 */ }
@@ -241,10 +242,12 @@ int povtex_alpha_pigment(outbuf *ob, povtex *pt, const scene *s, int32_t t, size
     th = th < 0 ? 0 : th > 1 ? 1 : th;
     bool below = tx->alpha_func == GL_GREATER || tx->alpha_func == GL_GEQUAL;
     const char *a = below ? cb : "rgbt<1,1,1,1>", *b = below ? "rgbt<1,1,1,1>" : cb;
+    char ts[NUMFMT_F32_ROOM];
+    ts[numfmt_f32(ts, (float)th)] = '\0';
     int n = snprintf(buf, cap,
-                     "uv_mapping function{rgl_at%u(x,y,z).transmit}pigment_map{[0 %s][%.9g %s][%.9g "
+                     "uv_mapping function{rgl_at%u(x,y,z).transmit}pigment_map{[0 %s][%s %s][%s "
                      "%s][1 %s]}",
-                     id, a, th, a, th, b, b);
+                     id, a, ts, a, ts, b, b);
     return n > 0 && (size_t)n < cap ? 0 : -1;
 }
 
