@@ -163,6 +163,7 @@ enum rgl_pname_family {
     RGL_PN_TEX_PARAMETER = 1u << 4,
     RGL_PN_TEX_ENV = 1u << 5,
     RGL_PN_TEX_GEN = 1u << 6,
+    RGL_PN_POINT_PARAMETER = 1u << 7,
 };
 
 /* Number of values the calls of `family` read for pname: 0 when pname is

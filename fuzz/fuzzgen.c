@@ -602,6 +602,89 @@ static void st_shape(gen *g, buf *b)
     put_row(g, b, c);
 }
 
+/* A GLU NURBS surface or curve whose knots and points mostly fit their
+ * sizes (random blobs almost never do), sometimes trimmed, in a display
+ * mode picked at random. Each blob gets floats from g_bytes. */
+static void put_nurbs(gen *g, buf *b, uint32_t op, const double *vals, size_t nvals,
+                      const uint32_t *nfloats)
+{
+    rng *r = &g->r;
+    if (rgl_cmd_init(&g_cmd, op) != RGL_OK)
+        return;
+    size_t used = 0, k = 0, nb = 0;
+    for (uint32_t i = 0; i < g_cmd.nargs; i++) {
+        rgl_arg *a = &g_cmd.arg[i];
+        if (a->kind == RGL_ARG_BLOB) {
+            uint32_t n = one_in(r, 16) ? below(r, 20) : nfloats[nb];
+            float last = 0;
+            for (uint32_t e = 0; e < n && used + 4 * e + 4 <= sizeof g_bytes; e++) {
+                /* knots (the first blobs of a surface or curve) rise */
+                float x = nb + 1 < (op == RGL_OP_NurbsSurface ? 3u : op == RGL_OP_NurbsCurve ? 2u : 0u)
+                              ? (last += (float)below(r, 3) * 0.5f)
+                              : (float)below(r, 9) * 0.25f - 1.0f;
+                uint32_t bits;
+                memcpy(&bits, &x, 4); /* little-endian IEEE-754 single */
+                for (int c = 0; c < 4; c++)
+                    g_bytes[used + 4 * e + (uint32_t)c] = (uint8_t)(bits >> (8 * c));
+            }
+            a->bytes = g_bytes + used;
+            a->count = 4 * n;
+            used += 4 * n;
+            nb++;
+        } else if (a->kind == RGL_ARG_SCALAR) {
+            double v = k < nvals ? vals[k++] : 0;
+            if (a->type == RGL_T_f)
+                a->v.f = v;
+            else if (a->type == RGL_T_i)
+                a->v.i = (int64_t)v;
+            else
+                a->v.u = (uint64_t)v;
+        }
+    }
+    size_t n = rgl_cmd_encode(&g_cmd, g_enc, sizeof g_enc);
+    if (n)
+        buf_put(b, g_enc, n);
+}
+
+static void st_nurbs(gen *g, buf *b)
+{
+    rng *r = &g->r;
+    static const uint32_t modes[3] = {100012, 100240, 100241}; /* FILL, OUTLINE_POLYGON, _PATCH */
+    PUT(g, b, NewNurbsRenderer, 1);
+    if (one_in(r, 2))
+        PUT(g, b, NurbsProperty, 1, 100204, modes[below(r, 3)]);
+    if (one_in(r, 4))
+        PUT(g, b, NurbsProperty, 1, 100205, 100217); /* GLU_DOMAIN_DISTANCE */
+    if (one_in(r, 3)) {
+        uint32_t order = 1 + below(r, 4), n = order + below(r, 4), type = one_in(r, 2) ? 0x0D98 : 0x0D97;
+        uint32_t k = type == 0x0D98 ? 4 : 3;
+        PUT(g, b, BeginCurve, 1);
+        const uint32_t nf[2] = {n + order, n * k};
+        put_nurbs(g, b, RGL_OP_NurbsCurve, (const double[]){1, n + order, k, order, type}, 5, nf);
+        PUT(g, b, EndCurve, 1);
+        return;
+    }
+    uint32_t so = 1 + below(r, 4), to = 1 + below(r, 4);
+    uint32_t sn = so + below(r, 3), tn = to + below(r, 3);
+    static const uint32_t types[4] = {0x0DB7, 0x0DB8, 0x0DB0, 0x0DB2}; /* V3, V4, COLOR_4, NORMAL */
+    static const uint32_t kk[4] = {3, 4, 4, 3};
+    PUT(g, b, BeginSurface, 1);
+    for (uint32_t p = 0, np = 1 + below(r, 2); p < np; p++) {
+        uint32_t t = p == 0 ? below(r, 2) : below(r, 4);
+        const uint32_t nf[3] = {sn + so, tn + to, sn * tn * kk[t]};
+        put_nurbs(g, b, RGL_OP_NurbsSurface,
+                  (const double[]){1, sn + so, tn + to, kk[t] * tn, kk[t], so, to, types[t]}, 8, nf);
+    }
+    for (uint32_t l = 0, nl = below(r, 3); l < nl; l++) {
+        uint32_t cnt = 3 + below(r, 4);
+        PUT(g, b, BeginTrim, 1);
+        const uint32_t nf[1] = {2 * cnt};
+        put_nurbs(g, b, RGL_OP_PwlCurve, (const double[]){1, cnt, 2, 100210}, 4, nf);
+        PUT(g, b, EndTrim, 1);
+    }
+    PUT(g, b, EndSurface, 1);
+}
+
 static void st_xform(gen *g, buf *b)
 {
     rng *r = &g->r;
@@ -761,7 +844,10 @@ static void st_draw(gen *g, buf *b, int depth)
         st_prim(g, b);
         break;
     case 2:
-        st_shape(g, b);
+        if (one_in(r, 3))
+            st_nurbs(g, b);
+        else
+            st_shape(g, b);
         break;
     case 3:
         st_xform(g, b);

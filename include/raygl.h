@@ -196,6 +196,27 @@ RAYGL_API void rayglDrawPixels(GLsizei width, GLsizei height, GLenum format, GLe
                                const GLvoid *pixels);
 RAYGL_API void rayglCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type);
 
+/* Texture copies, their framebuffer rectangle read back at the call; 3D
+ * textures, their pixels read as glTexImage2D's (unpack image height and
+ * skipped images included). */
+RAYGL_API void rayglCopyTexImage1D(GLenum target, GLint level, GLenum internalformat, GLint x,
+                                   GLint y, GLsizei width, GLint border);
+RAYGL_API void rayglCopyTexImage2D(GLenum target, GLint level, GLenum internalformat, GLint x,
+                                   GLint y, GLsizei width, GLsizei height, GLint border);
+RAYGL_API void rayglCopyTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLint x, GLint y,
+                                      GLsizei width);
+RAYGL_API void rayglCopyTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                      GLint x, GLint y, GLsizei width, GLsizei height);
+RAYGL_API void rayglCopyTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                      GLint zoffset, GLint x, GLint y, GLsizei width,
+                                      GLsizei height);
+RAYGL_API void rayglTexImage3D(GLenum target, GLint level, GLint internalFormat, GLsizei width,
+                               GLsizei height, GLsizei depth, GLint border, GLenum format,
+                               GLenum type, const GLvoid *pixels);
+RAYGL_API void rayglTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                  GLint zoffset, GLsizei width, GLsizei height, GLsizei depth,
+                                  GLenum format, GLenum type, const GLvoid *pixels);
+
 /* glEnable / glDisable: the client arrays (GL_VERTEX_ARRAY, ...), which
  * Mesa takes there as glEnableClientState does, are recorded as that. */
 RAYGL_API void rayglEnable(GLenum cap);
@@ -222,6 +243,27 @@ RAYGL_API void raygluPartialDisk(GLUquadric *quad, GLdouble inner, GLdouble oute
                                  GLint loops, GLdouble start, GLdouble sweep);
 RAYGL_API GLint raygluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width,
                                      GLsizei height, GLenum format, GLenum type, const void *data);
+
+/* GLU NURBS: the calls recorded as such (GLU draws them at gluEndSurface
+ * and gluEndCurve; its own GL calls are not recorded). */
+RAYGL_API GLUnurbs *raygluNewNurbsRenderer(void);
+RAYGL_API void raygluDeleteNurbsRenderer(GLUnurbs *nurb);
+RAYGL_API void raygluNurbsProperty(GLUnurbs *nurb, GLenum property, GLfloat value);
+RAYGL_API void raygluLoadSamplingMatrices(GLUnurbs *nurb, const GLfloat *model,
+                                          const GLfloat *perspective, const GLint *view);
+RAYGL_API void raygluBeginSurface(GLUnurbs *nurb);
+RAYGL_API void raygluEndSurface(GLUnurbs *nurb);
+RAYGL_API void raygluNurbsSurface(GLUnurbs *nurb, GLint sKnotCount, GLfloat *sKnots,
+                                  GLint tKnotCount, GLfloat *tKnots, GLint sStride, GLint tStride,
+                                  GLfloat *control, GLint sOrder, GLint tOrder, GLenum type);
+RAYGL_API void raygluBeginCurve(GLUnurbs *nurb);
+RAYGL_API void raygluEndCurve(GLUnurbs *nurb);
+RAYGL_API void raygluNurbsCurve(GLUnurbs *nurb, GLint knotCount, GLfloat *knots, GLint stride,
+                                GLfloat *control, GLint order, GLenum type);
+RAYGL_API void raygluBeginTrim(GLUnurbs *nurb);
+RAYGL_API void raygluEndTrim(GLUnurbs *nurb);
+RAYGL_API void raygluPwlCurve(GLUnurbs *nurb, GLint count, GLfloat *data, GLint stride,
+                              GLenum type);
 
 RAYGL_API void rayglutSwapBuffers(void);
 

@@ -889,6 +889,13 @@ static void texture_compact(GLenum target)
  * definition from there. */
 #define RGL_TEX_RECORD_ROOM 128
 
+void rgl_texture_defined(rgl_stream *s, uint32_t target, const uint8_t *from, bool reset)
+{
+    texture_define(s, target, from, reset);
+    if (!reset)
+        texture_compact(target);
+}
+
 RGL_EXPORT void rayglTexImage1D(GLenum target, GLint level, GLint internalFormat, GLsizei width,
                                 GLint border, GLenum format, GLenum type, const GLvoid *pixels)
 {

@@ -302,7 +302,7 @@ bool rgl_tex_is_proxy(uint32_t target)
 {
     switch (target) {
     case GL_PROXY_TEXTURE_1D: case GL_PROXY_TEXTURE_2D: case GL_PROXY_TEXTURE_CUBE_MAP:
-    case GL_PROXY_TEXTURE_RECTANGLE: case GL_PROXY_TEXTURE_1D_ARRAY:
+    case GL_PROXY_TEXTURE_RECTANGLE: case GL_PROXY_TEXTURE_1D_ARRAY: case GL_PROXY_TEXTURE_3D:
         return true;
     default:
         return false;
@@ -317,6 +317,8 @@ static bool tex_target_ok(int dims, GLenum target, bool sub)
         return false;
     if (dims == 1)
         return target == GL_TEXTURE_1D || target == GL_PROXY_TEXTURE_1D;
+    if (dims == 3)
+        return target == GL_TEXTURE_3D || target == GL_PROXY_TEXTURE_3D;
     switch (target) {
     case GL_TEXTURE_2D: case GL_PROXY_TEXTURE_2D: case GL_TEXTURE_RECTANGLE:
     case GL_PROXY_TEXTURE_RECTANGLE: case GL_TEXTURE_1D_ARRAY: case GL_PROXY_TEXTURE_1D_ARRAY:
@@ -446,3 +448,116 @@ int64_t rgl_glu_pixels(rgl_stream *s, int32_t w, int32_t h, uint32_t format, uin
         return RGL_PX_REFUSED;
     return rgl_pixels_put(s, format, type, w, h, data, true);
 }
+
+int64_t rgl_tex_check(rgl_stream *s, int dims, bool sub, uint32_t target, int32_t level,
+                      int32_t internal, int32_t x, int32_t y, int32_t w, int32_t h,
+                      int32_t border)
+{
+    enum px_status st = tex_check(s, dims, sub, target, level, internal, x, y, w, h, border);
+    return st == PX_OK ? RGL_PX_NONE : st == PX_UNKNOWN ? RGL_PX_SKIP_ENUM : RGL_PX_REFUSED;
+}
+
+/* GL 1.2's 3D unpack state (GL 2.1 3.8.1): rows of an image, images to skip. */
+static void unpack_get3d(GLint *image_height, GLint *skip_images)
+{
+    *image_height = *skip_images = 0;
+    if (!rgl_live_context())
+        return; /* without a context, GL's defaults: the recorder keeps only the 2D state */
+    glGetIntegerv(GL_UNPACK_IMAGE_HEIGHT, image_height);
+    glGetIntegerv(GL_UNPACK_SKIP_IMAGES, skip_images);
+    if (*image_height < 0)
+        *image_height = 0;
+    if (*skip_images < 0)
+        *skip_images = 0;
+}
+
+/* The pixels of a 3D image: d images of h rows, each laid out as
+ * rgl_pixels_put reads one, images GL_UNPACK_IMAGE_HEIGHT rows apart (h
+ * when 0) after GL_UNPACK_SKIP_IMAGES of them (GL 2.1 3.8.1, figure 3.9). */
+static int64_t pixels_put3d(rgl_stream *s, uint32_t format, uint32_t type, int32_t w, int32_t h,
+                            int32_t d, const void *pixels)
+{
+    size_t ps, es;
+    enum px_status st = pixel_layout(format, type, &ps, &es);
+    if (st != PX_OK)
+        return st == PX_UNKNOWN ? RGL_PX_SKIP_ENUM : RGL_PX_REFUSED;
+    if (ps == 0 || w < 0 || h < 0 || d < 0)
+        return RGL_PX_REFUSED;
+    if (rgl_buffer_binding(s, GL_PIXEL_UNPACK_BUFFER))
+        return pixels ? RGL_PX_SKIP_DATA : RGL_PX_NONE; /* read from a buffer: not recorded */
+    if (!pixels || w == 0 || h == 0 || d == 0)
+        return RGL_PX_NONE;
+    GLint u[UP_COUNT], ih, si;
+    unpack_get(s, u);
+    unpack_get3d(&ih, &si);
+    px_span sp;
+    uint64_t istride, start;
+    if (!pixel_span(u, ps, (uint64_t)w, &sp) ||
+        __builtin_mul_overflow((uint64_t)(ih > 0 ? ih : h), sp.stride, &istride) ||
+        __builtin_mul_overflow((uint64_t)si, istride, &start) ||
+        __builtin_add_overflow(start, sp.start, &start))
+        return RGL_PX_REFUSED;
+    if (sp.row > RGL_CHUNK_MAX_PAYLOAD / (size_t)h / (size_t)d) {
+        rgl_fail(EFBIG, "a texture image is larger than a chunk can hold");
+        return RGL_PX_REFUSED;
+    }
+    size_t total = sp.row * (size_t)h * (size_t)d;
+    uint8_t *tmp = rgl_alloc(total);
+    if (!tmp) {
+        rgl_fail(ENOMEM, "allocation failed");
+        return RGL_PX_REFUSED;
+    }
+    const uint8_t *src = (const uint8_t *)pixels + start;
+    for (size_t z = 0; z < (size_t)d; z++)
+        for (size_t y = 0; y < (size_t)h; y++)
+            memcpy(tmp + (z * (size_t)h + y) * sp.row, src + z * istride + y * sp.stride, sp.row);
+    if (u[UP_SWAP] && es > 1)
+        bytes_swap(tmp, total, es);
+    uint32_t id = rgl_resource_put(RGL_RES_BYTES, tmp, total);
+    rgl_free(tmp);
+    return id ? (int64_t)id : RGL_PX_REFUSED;
+}
+
+int64_t rgl_tex_pixels3d(rgl_stream *s, bool sub, uint32_t target, int32_t level,
+                         int32_t internal, int32_t x, int32_t y, int32_t z, int32_t w, int32_t h,
+                         int32_t d, int32_t border, uint32_t format, uint32_t type,
+                         const void *pixels)
+{
+    int64_t r = rgl_tex_check3d(s, sub, target, level, internal, x, y, z, w, h, d, border);
+    if (r != RGL_PX_NONE)
+        return r;
+    if (rgl_tex_is_proxy(target)) {
+        size_t ps, es;
+        enum px_status st = pixel_layout(format, type, &ps, &es);
+        return st == PX_OK ? RGL_PX_NONE : st == PX_UNKNOWN ? RGL_PX_SKIP_ENUM : RGL_PX_REFUSED;
+    }
+    return pixels_put3d(s, format, type, w, h, d, pixels);
+}
+
+int64_t rgl_tex_check3d(rgl_stream *s, bool sub, uint32_t target, int32_t level,
+                        int32_t internal, int32_t x, int32_t y, int32_t z, int32_t w, int32_t h,
+                        int32_t d, int32_t border)
+{
+    if (d < 0 || (!sub && d < 2 * border))
+        return RGL_PX_REFUSED;
+    int64_t r = rgl_tex_check(s, 3, sub, target, level, internal, x, y, w, h, border);
+    if (r != RGL_PX_NONE || !rgl_live_context() || target != GL_TEXTURE_3D)
+        return r;
+    GLint max = 0;
+    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max);
+    if (max > 0 && !sub && (w - 2 * border > max || h - 2 * border > max || d - 2 * border > max))
+        return RGL_PX_REFUSED;
+    if (sub) {
+        GLint tw = 0, th = 0, td = 0, tb = 0;
+        glGetTexLevelParameteriv(target, level, GL_TEXTURE_WIDTH, &tw);
+        glGetTexLevelParameteriv(target, level, GL_TEXTURE_HEIGHT, &th);
+        glGetTexLevelParameteriv(target, level, GL_TEXTURE_DEPTH, &td);
+        glGetTexLevelParameteriv(target, level, GL_TEXTURE_BORDER, &tb);
+        if ((int64_t)x < -tb || (int64_t)x + w > (int64_t)tw - tb || (int64_t)y < -tb ||
+            (int64_t)y + h > (int64_t)th - tb || (int64_t)z < -tb ||
+            (int64_t)z + d > (int64_t)td - tb)
+            return RGL_PX_REFUSED;
+    }
+    return RGL_PX_NONE;
+}
+

@@ -348,6 +348,35 @@ int64_t rgl_tex_pixels(rgl_stream *s, int dims, bool sub, uint32_t target, int32
 int64_t rgl_glu_pixels(rgl_stream *s, int32_t w, int32_t h, uint32_t format, uint32_t type,
                        const void *data);
 
+/* The checks of rgl_tex_pixels alone, for a call that reads no client
+ * memory (glCopyTexImage, glCopyTexSubImage): RGL_PX_NONE when GL takes
+ * it, else RGL_PX_REFUSED or RGL_PX_SKIP_ENUM. */
+int64_t rgl_tex_check(rgl_stream *s, int dims, bool sub, uint32_t target, int32_t level,
+                      int32_t internal, int32_t x, int32_t y, int32_t w, int32_t h,
+                      int32_t border);
+
+/* The same for a 3D image (glTexImage3D, glTexSubImage3D at x, y, z;
+ * glCopyTexSubImage3D with d 1): with a live context also the largest
+ * size and a sub-image's place. */
+int64_t rgl_tex_check3d(rgl_stream *s, bool sub, uint32_t target, int32_t level,
+                        int32_t internal, int32_t x, int32_t y, int32_t z, int32_t w, int32_t h,
+                        int32_t d, int32_t border);
+
+/* The pixels of glTexImage3D (sub false) or glTexSubImage3D: rgl_tex_check3d,
+ * then the w x h x d image read as GL reads it, GL_UNPACK_IMAGE_HEIGHT and
+ * GL_UNPACK_SKIP_IMAGES included (read from a live context; GL's defaults
+ * without one). Pixels in a GL_PIXEL_UNPACK_BUFFER: RGL_PX_SKIP_DATA. */
+int64_t rgl_tex_pixels3d(rgl_stream *s, bool sub, uint32_t target, int32_t level,
+                         int32_t internal, int32_t x, int32_t y, int32_t z, int32_t w, int32_t h,
+                         int32_t d, int32_t border, uint32_t format, uint32_t type,
+                         const void *pixels);
+
+/* Appends the record just written from `from` to the definition of the
+ * texture bound to target (GL_TEXTURE_1D or GL_TEXTURE_2D; others are not
+ * kept), which `reset` starts afresh; then, for a sub-image, compacts a
+ * definition grown too long (entry_custom.c). */
+void rgl_texture_defined(rgl_stream *s, uint32_t target, const uint8_t *from, bool reset);
+
 /* Whether target is a proxy texture target (GL reads no pixels for it). */
 bool rgl_tex_is_proxy(uint32_t target);
 

@@ -74,6 +74,11 @@ void translator_set_budget_shift(translator *t, unsigned shift)
         interp_set_budget_shift(t->cursors[k].ip, shift);
 }
 
+void translator_set_vertex_lighting(translator *t, bool on)
+{
+    interp_set_vertex_lighting(t->ip, on);
+}
+
 void translator_destroy(translator *t)
 {
     if (!t)

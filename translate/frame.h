@@ -59,6 +59,10 @@ rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result
  * fuzz target. */
 void translator_set_budget_shift(translator *t, unsigned shift);
 
+/* GL's per-vertex lighting for the frames built from now on
+ * (interp_set_vertex_lighting). */
+void translator_set_vertex_lighting(translator *t, bool on);
+
 /* Heavy frames (interp_set_heavy): fn(ctx) is called from translator_build
  * when its frame turns heavy, and may block. */
 void translator_set_heavy(translator *t, void (*fn)(void *ctx), void *ctx);

@@ -145,6 +145,10 @@ void interp_default_state(gl_state *st)
     a->polygon.mode[0] = a->polygon.mode[1] = GL_FILL;
     a->line.width = 1;
     a->point.size = 1;
+    a->point.size_max = 1024; /* Mesa's largest point, interp_pointsize's limit */
+    a->point.fade_threshold = 1;
+    a->point.atten[0] = 1;
+    a->lighting.provoking = GL_LAST_VERTEX_CONVENTION;
     /* The window size is unknown here; the recorder's snapshot (or the
      * program) sets the viewport. */
     a->viewport.rect[2] = 640;
@@ -213,9 +217,11 @@ void interp_destroy(interp *ip)
     unrec_finish(&ip->unrecorded);
     tr_free(ip->begin_ok);
     tr_free(ip->edge);
+    tr_free(ip->vmat.mats);
     tr_free(ip->clipv);
     interp_textures_free(ip);
     interp_eval_free(ip);
+    interp_nurbs_free(ip);
     tr_free(ip);
 }
 
@@ -225,6 +231,7 @@ void interp_reset(interp *ip)
     memset(ip->quadrics, 0, sizeof ip->quadrics);
     interp_textures_free(ip);
     interp_eval_free(ip);
+    interp_nurbs_free(ip);
     ip->in_begin = false;
     ip->camera_fixed = false;
     ip->frame_begin = false;
@@ -242,6 +249,8 @@ void interp_copy_state(interp *dst, const interp *src)
     if (!interp_lists_copy(dst, src) && dst->scene)
         dst->scene->failed = true;
     if (interp_eval_copy(dst, src) != 0 && dst->scene)
+        dst->scene->failed = true;
+    if (interp_nurbs_copy(dst, src) != 0 && dst->scene)
         dst->scene->failed = true;
 }
 

@@ -26,6 +26,9 @@
  *   interp_eval.c    evaluators: maps, grids, glEvalCoord, glEvalMesh
  *   interp_multitex.c texture units: glActiveTexture, glClientActiveTexture,
  *                    glMultiTexCoord, the units a draw takes
+ *   interp_lightset.c the frame's light sets (each lit draw's lights)
+ *   interp_vmaterial.c glMaterial between the vertices of a primitive
+ *   interp_gouraud.c per-vertex lighting on request (--vertex-lighting)
  *
  * Not thread-safe; one interpreter per worker thread.
  */
@@ -128,6 +131,7 @@ typedef struct gl_attribs {
         float model_ambient[4];
         bool local_viewer, two_side;
         GLenum color_control; /* GL_LIGHT_MODEL_COLOR_CONTROL */
+        GLenum provoking;     /* glProvokingVertex */
     } lighting; /* GL_LIGHTING_BIT */
     struct {
         GLenum front_face, cull_mode;
@@ -139,6 +143,9 @@ typedef struct gl_attribs {
     } line; /* GL_LINE_BIT */
     struct {
         float size;
+        /* glPointParameter (GL 1.4 3.3): the derived size's clamp, the
+         * size below which points fade, the distance attenuation. */
+        float size_min, size_max, fade_threshold, atten[3];
     } point; /* GL_POINT_BIT */
     struct {
         int32_t rect[4]; /* x, y, width, height */
@@ -170,7 +177,10 @@ typedef struct gl_attribs {
     struct gl_texture_unit {
         GLenum env_mode;
         float env_color[4];
-        uint32_t binding_1d, binding_2d, binding_cube;
+        uint32_t binding_1d, binding_2d;
+        uint32_t binding_rect;    /* GL_TEXTURE_RECTANGLE(_ARB, _NV) */
+        uint32_t binding_3d;
+        uint32_t binding_cube;    /* GL_TEXTURE_CUBE_MAP */
         GLenum gen_mode[4];       /* s, t, r, q: GL_EYE_LINEAR, ... */
         double obj_plane[4][4];   /* GL_OBJECT_PLANE */
         double eye_plane[4][4];   /* GL_EYE_PLANE, times the inverse modelview
@@ -197,6 +207,7 @@ typedef struct gl_attribs {
 typedef struct gl_tex_unit_parked {
     struct gl_texture_unit texture;
     uint8_t caps[8]; /* INTERP_CAP_TEXTURE_1D .. INTERP_CAP_TEXTURE_GEN_Q */
+    uint8_t rect;    /* INTERP_CAP_TEXTURE_RECTANGLE */
     mat4 matrix[INTERP_TEXTURE_DEPTH];
     int depth;
 } gl_tex_unit_parked;
@@ -238,6 +249,11 @@ interp *interp_create(scene *out, diag_log *log);
  * frames ip runs from now on: the fuzz targets run on a small budget, so
  * an input that would cut a frame at the full budget costs them little. */
 void interp_set_budget_shift(interp *ip, unsigned shift);
+
+/* On: lit surfaces take GL's lit colour at each vertex, interpolated and
+ * drawn unlit, as OpenGL shades them (raygl2pov --vertex-lighting,
+ * interp_gouraud.c); off (the default): POV-Ray lights each pixel. */
+void interp_set_vertex_lighting(interp *ip, bool on);
 void interp_destroy(interp *ip);
 
 /* Back to GL's initial state; the scene and log stay attached. */

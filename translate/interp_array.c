@@ -11,8 +11,11 @@
  * buffers earlier frames filled). A draw is what GL 1.x 2.8 defines it to
  * be: glBegin(mode), glArrayElement(i) for each index, glEnd; each element
  * sets the current edge flag, texture coordinates, colour and normal from
- * the enabled arrays and then issues the vertex, so the current values
- * keep the last element's afterwards, as Mesa leaves them.
+ * the enabled arrays and then issues the vertex. GL leaves the current
+ * values of the enabled arrays indeterminate after a draw (2.8); Mesa
+ * keeps the values from before it, and so the materials colour material
+ * tracks (checked with OSMesa 22.3.6): a draw restores them. Only
+ * glArrayElement keeps the element's.
  */
 #include "interp_internal.h"
 
@@ -242,10 +245,26 @@ static void draw(interp *ip, GLenum mode, int64_t first, int64_t count, const ui
             return;
         }
     }
+    gl_attribs *a = &ip->st.a;
+    float color[4], normal[3], texcoord[4];
+    memcpy(color, a->current.color, sizeof color);
+    memcpy(normal, a->current.normal, sizeof normal);
+    memcpy(texcoord, a->current.texcoord, sizeof texcoord);
+    bool edge_flag = a->current.edge_flag;
+    gl_material mat[2] = {a->lighting.material[0], a->lighting.material[1]};
+    float unit_tc[INTERP_TEX_UNITS][4];
+    memcpy(unit_tc, ip->st.unit_texcoord, sizeof unit_tc);
     interp_prim_begin(ip, mode);
     for (int64_t i = 0; i < count && !ip->cut; i++)
         array_element(ip, idx ? index_at(idx, its, (size_t)i) : (uint32_t)(first + i));
     interp_prim_end(ip);
+    memcpy(a->current.color, color, sizeof color);
+    memcpy(a->current.normal, normal, sizeof normal);
+    memcpy(a->current.texcoord, texcoord, sizeof texcoord);
+    a->current.edge_flag = edge_flag;
+    a->lighting.material[0] = mat[0];
+    a->lighting.material[1] = mat[1];
+    memcpy(ip->st.unit_texcoord, unit_tc, sizeof unit_tc);
 }
 
 static bool check_mode(interp *ip, GLenum mode)

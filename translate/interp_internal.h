@@ -29,12 +29,14 @@ typedef struct interp_quadric {
 
 typedef struct interp_textures interp_textures; /* interp_texture.c */
 struct interp_eval;                             /* interp_eval.c */
+struct interp_nurbs;                            /* interp_nurbs.c */
 
 struct interp {
     gl_state st;
     interp_quadric quadrics[INTERP_QUADRICS]; /* context state, like st */
     interp_textures *tex; /* texture objects and unpack state; NULL: none yet */
     struct interp_eval *eval; /* evaluator maps; NULL: all at their initial values */
+    struct interp_nurbs *nurbs; /* GLU NURBS objects and the open shape; NULL: none yet */
     scene *scene; /* NULL: state only */
     diag_log *log;
     uint8_t *begin_ok; /* by opcode: allowed between glBegin and glEnd */
@@ -128,6 +130,28 @@ struct interp {
      * or fogged draw), to notice when a later draw uses others. */
     uint8_t seen_light_on[INTERP_MAX_LIGHTS];
     gl_light seen_light[INTERP_MAX_LIGHTS];
+    uint32_t seen_set; /* their light set (interp_lightset.c) */
+    /* The scene's light sets: where each starts and its size, its hash,
+     * and a table from hash to 1 + set (0: an empty slot; at most half
+     * full, so a probe always ends). */
+    struct interp_lsets {
+        uint32_t count;
+        uint32_t first[SCENE_MAX_LIGHTSETS];
+        uint8_t n[SCENE_MAX_LIGHTSETS];
+        uint64_t hash[SCENE_MAX_LIGHTSETS];
+        int16_t slot[2 * SCENE_MAX_LIGHTSETS];
+    } lsets;
+    bool vertex_lighting; /* interp_set_vertex_lighting */
+
+    /* glMaterial between the vertices of the open primitive
+     * (interp_vmaterial.c): each vertex's material once one changed, and
+     * the terms its vertex colours carry at glEnd. */
+    struct interp_vmat {
+        bool changed;
+        gl_material (*mats)[2];
+        size_t n, cap;
+        uint8_t cm_extra[2];
+    } vmat;
 
     /* The frame's accumulation-buffer passes (interp_accum.c): after the
      * first glAccum(GL_ACCUM or GL_LOAD), what later passes draw is dropped
@@ -224,6 +248,45 @@ void interp_diag(interp *ip, diag_kind kind, const char *fmt, ...);
 /* Logs a NOTE_* kind once per frame (the CLI then says it once per run). */
 void interp_note(interp *ip, diag_kind kind);
 
+/* glTexImage1D/2D's effect on the bound texture, pixels from resource id
+ * (0: undefined contents), and glTexSubImage1D/2D's (dims 1 or 2): for
+ * the copies of interp_texcopy.c (interp_texture.c). */
+void interp_tex_image(interp *ip, GLenum target, int32_t level, int32_t internal, int64_t w,
+                      int64_t h, int32_t border, GLenum format, GLenum type, uint32_t id);
+void interp_tex_subimage(interp *ip, int dims, GLenum target, int64_t level, int64_t x0,
+                         int64_t y0, int64_t w, int64_t h, GLenum format, GLenum type,
+                         uint32_t id);
+
+/* Whether unit k draws a rectangle texture: its GL_TEXTURE_RECTANGLE is
+ * enabled and neither 3D nor cube map is (interp_texture.c). */
+bool interp_texture_rect_on(const interp *ip, uint32_t k);
+
+/* Forgets the r coordinates seen (interp_texture.c): a new primitive
+ * starts, whose r decides which slice of a 3D texture it shows. */
+void interp_texture_r_reset(interp *ip);
+
+/* glTexImage3D's effect on the bound 3D texture (interp_texture.c). */
+void interp_tex_image3d(interp *ip, int32_t level, int32_t internal, int64_t w, int64_t h,
+                        int64_t d, int32_t border, GLenum format, GLenum type, uint32_t id);
+void interp_tex_subimage3d(interp *ip, int64_t level, int64_t x0, int64_t y0, int64_t z0,
+                           int64_t w, int64_t h, int64_t d, GLenum format, GLenum type,
+                           uint32_t id);
+
+/* Whether wrap is one of EXT_texture_mirror_clamp's modes (interp_texture.c). */
+bool interp_mirror_clamp(GLenum wrap);
+
+/* Packed pixel types (interp_texpacked.c): the components of one packed
+ * pixel of `type` and its *bytes, 0 for a type that is not packed; the
+ * components of the pixel at p, in [0, 1], in component order. */
+int interp_packed_layout(GLenum type, size_t *bytes);
+void interp_packed_decode(const uint8_t *p, GLenum type, float out[4]);
+
+/* Point parameters (interp_point.c): whether any is away from GL's
+ * default, and the derived size of a point at eye-space position eye
+ * (GL 1.4 3.3), *fade its alpha factor. */
+bool interp_point_params_set(const gl_attribs *a);
+double interp_point_size(const gl_attribs *a, const double eye[3], double *fade);
+
 /* GL errors for the current command; the caller then returns (skips it). */
 void interp_bad_enum(interp *ip, const char *what, uint32_t value);
 void interp_bad_value(interp *ip, const char *fmt_detail);
@@ -237,7 +300,7 @@ bool interp_reject_in_begin(interp *ip);
 
 /* Pixels in client formats (interp_texture.c). interp_pixel_bytes: the
  * tightly packed size of w x h pixels of format/type, 0 for a pair not
- * translated (packed types, index, depth and stencil formats) or too many
+ * translated (index, depth and stencil formats) or too many
  * pixels. interp_pixels_float: n such pixels as GL's RGBA floats before
  * pixel transfer (GL 2.1 3.6.4). interp_pixels_fetch: the bytes of pixel
  * resource id, exactly `need` of them (counted in the frame's budget), or
@@ -331,6 +394,19 @@ void interp_eval_curve(const double *pts, int order, uint32_t k, double t, doubl
 void interp_eval_surface(const double *pts, int uorder, int vorder, uint32_t k, double u,
                          double v, double *out, double *du, double *dv);
 
+/* A NURBS curve of n points of k values each (packed), order 1..24, over
+ * n + order knots, at u (clamped to its domain [knots[order-1], knots[n]]),
+ * into out[k], and its derivative into der (may be NULL); the surface of
+ * un x vn points (u major) at (u, v), with partial derivatives into du and
+ * dv (both or neither NULL), k <= 4. Homogeneous points stay homogeneous.
+ * False when the sizes are invalid or every knot span is empty
+ * (interp_nurbs.c). */
+bool interp_nurbs_curve_at(const double *pts, uint32_t k, const double *knots, int n, int order,
+                           double u, double *out, double *der);
+bool interp_nurbs_surface_at(const double *pts, uint32_t k, const double *uknots, int un,
+                             int uorder, const double *vknots, int vn, int vorder, double u,
+                             double v, double *out, double *du, double *dv);
+
 /* The texture index (in the scene) that a draw with the current state
  * samples, or -1 (interp_texture.c): its first enabled unit's. */
 int32_t interp_texture_for_draw(interp *ip);
@@ -423,12 +499,18 @@ void interp_arrays_forget(interp *ip);
 /* Initial values (interp.c). */
 void interp_default_state(gl_state *st);
 
+/* GLU NURBS state's life cycle (interp_nurbs.c): copy returns -1 on
+ * allocation failure (dst then has the initial properties). */
+void interp_nurbs_free(interp *ip);
+int interp_nurbs_copy(interp *dst, const interp *src);
+
 /* Marks the colour glColor sets into the material with GL_COLOR_MATERIAL
  * (interp_light.c). */
 void interp_color_material_update(interp *ip);
 
-/* The scene material index of the current lighting state, fixing the
- * frame's lights at its first lit draw (interp_light.c); -1 on failure. */
+/* The scene material index of the current lighting state, with the light
+ * set of the lights enabled now (interp_light.c, interp_lightset.c); -1 on
+ * failure. */
 int32_t interp_lit_material(interp *ip);
 
 /* Fixes the frame's fog at its first fogged draw (interp_light.c). */
@@ -438,6 +520,36 @@ void interp_fix_fog(interp *ip);
  * normal n, for the front (back = false) or back material, from the
  * current state; colour is the vertex colour for GL_COLOR_MATERIAL.
  * For lines and points, which the scene draws unlit (interp_light.c). */
+/* glMaterial between vertices (interp_vmaterial.c): _begin at glBegin,
+ * _before_change in glMaterial before it changes the material, _vertex
+ * after each vertex is added to the pool, _end at glEnd of a filled primitive of n
+ * vertices before its look is made (true: the material was swapped, saved
+ * in `saved`, to be put back by _restore after the look). */
+void interp_vmat_begin(interp *ip);
+void interp_vmat_before_change(interp *ip);
+void interp_vmat_vertex(interp *ip);
+bool interp_vmat_end(interp *ip, uint32_t n, gl_material saved[2]);
+void interp_vmat_restore(interp *ip, const gl_material saved[2]);
+uint8_t interp_cm_bits(GLenum mode);
+
+/* Whether the open filled primitive is lit per vertex here
+ * (interp_gouraud.c): vertex lighting on, lighting on, one-sided. */
+bool interp_vertex_lit(const interp *ip);
+
+/* Notes a lit primitive (its triangles from first_tri on) with a face
+ * large against its distance to a positional light or, with a local
+ * viewer, to the eye: lit per pixel, it differs from GL's per-vertex
+ * lighting (interp_gouraud.c). */
+void interp_gouraud_check(interp *ip, size_t first_tri);
+
+/* The light set of the GL lights enabled now, added to the scene when the
+ * frame has not had it yet (interp_lightset.c). */
+uint32_t interp_lightset_current(interp *ip);
+
+/* Notes a lit, textured draw under a set whose highlights only the
+ * per-channel form makes exact (not open to textures). */
+void interp_lightset_textured(interp *ip, const scene_look *look);
+
 void interp_lit_color(const interp *ip, const double p[3], const double n[3], bool back,
                       const float colour[4], float out[4]);
 

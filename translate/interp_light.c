@@ -97,6 +97,7 @@ void interp_material(interp *ip, const rgl_cmd *cmd)
         interp_bad_value(ip, "shininess outside [0, 128]");
         return;
     }
+    interp_vmat_before_change(ip);
     for (int f = 0; f < 2; f++) {
         if (!(faces & (1 << f)))
             continue;
@@ -309,67 +310,19 @@ static uint8_t cm_bits(GLenum mode)
     }
 }
 
+uint8_t interp_cm_bits(GLenum mode) { return cm_bits(mode); }
+
 static bool light_on(const gl_attribs *a, int i)
 {
     return a->caps[INTERP_CAP_LIGHT0 + i] != 0;
 }
 
-/* The frame's lights are those of its first lit draw: POV-Ray lights the
- * whole scene with one set. A later lit draw under other lights is noted. */
-static void fix_lights(interp *ip)
-{
-    scene *s = ip->scene;
-    const gl_attribs *a = &ip->st.a;
-    if (s->lights_fixed) {
-        for (int i = 0; i < INTERP_MAX_LIGHTS; i++) {
-            bool on = light_on(a, i);
-            if (on != (ip->seen_light_on[i] != 0) ||
-                (on && memcmp(&a->lighting.light[i], &ip->seen_light[i], sizeof(gl_light)) != 0)) {
-                interp_note(ip, DIAG_NOTE_LIGHTING);
-                return;
-            }
-        }
-        return;
-    }
-    s->lights_fixed = true;
-    for (int i = 0; i < INTERP_MAX_LIGHTS; i++) {
-        const gl_light *g = &a->lighting.light[i];
-        ip->seen_light_on[i] = light_on(a, i);
-        ip->seen_light[i] = *g;
-        if (!light_on(a, i))
-            continue;
-        scene_light *l = scene_add_light(s);
-        if (!l)
-            return;
-        float w = g->position[3];
-        if (w == 0) {
-            l->kind = SCENE_LIGHT_PARALLEL;
-            for (int k = 0; k < 3; k++)
-                l->direction[k] = g->position[k];
-        } else {
-            l->kind = g->spot_cutoff == 180 ? SCENE_LIGHT_POINT : SCENE_LIGHT_SPOT;
-            for (int k = 0; k < 3; k++) {
-                l->position[k] = (double)g->position[k] / w;
-                l->direction[k] = g->spot_direction[k];
-            }
-        }
-        if (l->kind == SCENE_LIGHT_SPOT && memcmp(g->diffuse, g->specular, 3 * sizeof(float)) != 0)
-            interp_note(ip, DIAG_NOTE_SPOT_SPECULAR);
-        memcpy(l->color, g->diffuse, sizeof l->color);
-        memcpy(l->ambient, g->ambient, sizeof l->ambient);
-        memcpy(l->specular, g->specular, sizeof l->specular);
-        l->spot_exponent = g->spot_exponent;
-        l->spot_cutoff = g->spot_cutoff;
-        memcpy(l->attenuation, g->attenuation, sizeof l->attenuation);
-    }
-}
-
 int32_t interp_lit_material(interp *ip)
 {
     const gl_attribs *a = &ip->st.a;
-    fix_lights(ip);
     scene_material m;
     memset(&m, 0, sizeof m);
+    m.lightset = interp_lightset_current(ip);
     bool two = a->lighting.two_side;
     for (int f = 0; f < 2; f++) {
         /* One-sided lighting lights back faces with the front material. */
@@ -398,6 +351,18 @@ int32_t interp_lit_material(interp *ip)
             if (bits & SCENE_CM_EMISSION)
                 memset(m.emission[f], 0, sizeof m.emission[f]);
         }
+    }
+    for (int f = 0; f < 2; f++) { /* terms glMaterial varied between vertices */
+        uint8_t x = ip->vmat.cm_extra[f];
+        m.color_material[f] |= x;
+        if (x & SCENE_CM_AMBIENT)
+            memset(m.ambient[f], 0, sizeof m.ambient[f]);
+        if (x & SCENE_CM_DIFFUSE)
+            memset(m.diffuse[f], 0, sizeof m.diffuse[f]);
+        if (x & SCENE_CM_SPECULAR)
+            memset(m.specular[f], 0, sizeof m.specular[f]);
+        if (x & SCENE_CM_EMISSION)
+            memset(m.emission[f], 0, sizeof m.emission[f]);
     }
     memcpy(m.model_ambient, a->lighting.model_ambient, sizeof m.model_ambient);
     m.two_sided = two;

@@ -38,6 +38,7 @@ static void park(gl_state *st, uint32_t k)
     gl_tex_unit_parked *u = &st->units[k];
     u->texture = st->a.texture;
     memcpy(u->caps, &st->a.caps[UNIT_CAP0], UNIT_NCAPS);
+    u->rect = st->a.caps[INTERP_CAP_TEXTURE_RECTANGLE];
     memcpy(u->matrix, st->texture, sizeof u->matrix);
     u->depth = st->depth[INTERP_TEX];
 }
@@ -47,6 +48,7 @@ static void unpark(gl_state *st, uint32_t k)
     const gl_tex_unit_parked *u = &st->units[k];
     st->a.texture = u->texture;
     memcpy(&st->a.caps[UNIT_CAP0], u->caps, UNIT_NCAPS);
+    st->a.caps[INTERP_CAP_TEXTURE_RECTANGLE] = u->rect;
     memcpy(st->texture, u->matrix, sizeof u->matrix);
     st->depth[INTERP_TEX] = u->depth;
 }
@@ -119,10 +121,12 @@ interp_tex_unit interp_unit(interp *ip, uint32_t k)
 void interp_draw_units(interp *ip)
 {
     int n = 0;
+    interp_texture_r_reset(ip); /* a new primitive: its own r range */
     ip->draw_unit[0] = ip->draw_unit[1] = -1;
     for (uint32_t k = 0; k < INTERP_TEX_UNITS; k++) {
         interp_tex_unit u = interp_unit(ip, k);
         if (!u.caps[INTERP_CAP_TEXTURE_1D - UNIT_CAP0] && !u.caps[INTERP_CAP_TEXTURE_2D - UNIT_CAP0] &&
+            !u.caps[INTERP_CAP_TEXTURE_3D - UNIT_CAP0] && !interp_texture_rect_on(ip, k) &&
             !u.caps[INTERP_CAP_TEXTURE_CUBE_MAP - UNIT_CAP0])
             continue;
         if (n == 2) {
@@ -141,6 +145,10 @@ void interp_multitex_unbind(interp *ip, uint32_t name)
             t->binding_1d = 0;
         if (t->binding_2d == name)
             t->binding_2d = 0;
+        if (t->binding_rect == name)
+            t->binding_rect = 0;
+        if (t->binding_3d == name)
+            t->binding_3d = 0;
         if (t->binding_cube == name)
             t->binding_cube = 0;
     }

@@ -94,8 +94,8 @@ static void draw_notes(interp *ip)
     if (c[INTERP_CAP_ALPHA_TEST] && a->color_buffer.alpha_func != GL_ALWAYS &&
         ip->prim_mode <= GL_LINE_STRIP)
         interp_note(ip, DIAG_NOTE_ALPHA_TEST); /* polygons: interp_alpha_face */
-    if (c[INTERP_CAP_TEXTURE_3D])
-        interp_note(ip, DIAG_NOTE_TEXTURE);
+    /* Cube maps and 3D textures are drawn (interp_texture.c): their notes
+     * come with the texture, as the environment's do. */
     if (c[INTERP_CAP_LINE_STIPPLE] || c[INTERP_CAP_POLYGON_STIPPLE])
         interp_note(ip, DIAG_NOTE_STIPPLE);
     if (interp_scissor_cuts(ip, a->viewport.rect) && ip->prim_mode <= GL_LINE_STRIP)
@@ -328,6 +328,7 @@ static void begin_mode(interp *ip, GLenum mode)
     ip->in_begin = true;
     ip->prim_mode = mode;
     ip->prim_skip = true;
+    interp_vmat_begin(ip);
     if (!ip->scene || !interp_render_mode_draws(ip))
         return;
     interp_accum_draw(ip);
@@ -441,7 +442,7 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
     if (!a->caps[INTERP_CAP_LIGHTING]) {
         for (int i = 0; i < 4; i++)
             v->color[i] = clamp01(a->current.color[i]);
-    } else if (ip->prim_mode <= GL_LINE_STRIP) {
+    } else if (ip->prim_mode <= GL_LINE_STRIP || interp_vertex_lit(ip)) {
         lit_line_colour(ip, x, y, z, v->color);
     } else {
         interp_surface_colour(ip, v->color);
@@ -477,6 +478,7 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
     }
     ip->edge[k] = (uint8_t)(a->current.edge_flag | afail);
     scene_commit_vertices(s, 1);
+    interp_vmat_vertex(ip);
 }
 
 void interp_vertex(interp *ip, const rgl_cmd *cmd)
@@ -511,10 +513,21 @@ typedef struct assembly {
     bool swap;      /* glFrontFace(GL_CW): reorder so that front is CCW */
     bool check_bad; /* some vertex is not finite */
     bool flat;
+    bool first; /* GL_FIRST_VERTEX_CONVENTION (glProvokingVertex) */
     float line_width, point_size;
     bool line_smooth, point_smooth;
+    bool point_params; /* glPointParameter away from its defaults */
     scene_mesh *mesh;
 } assembly;
+
+/* The provoking vertex of a primitive whose last and first vertices are
+ * `last` and `first` (GL 3.2 table 2.12). Quads and quad strips keep the
+ * last vertex: Mesa's GL_QUADS_FOLLOW_PROVOKING_VERTEX_CONVENTION is
+ * false (EXT_provoking_vertex allows either). */
+static uint32_t pv(const assembly *as, uint32_t last, uint32_t first)
+{
+    return as->first ? first : last;
+}
 
 static bool vertex_ok(const scene_vertex *v)
 {
@@ -631,7 +644,12 @@ static void add_point(assembly *as, uint32_t i, uint32_t colour_from)
     scene_point *pt = scene_add_point(as->s);
     if (!pt)
         return;
-    double h = as->point_size * 0.5;
+    double size = as->point_size, fade = 1;
+    if (as->point_params)
+        size = interp_point_size(&as->ip->st.a, p, &fade);
+    if (!as->point_params || !as->point_smooth)
+        size = raster_width((float)size, as->point_smooth);
+    double h = size * 0.5;
     for (int k = 0; k < 3; k++) {
         pt->p[k] = (float)p[k];
         pt->right[k] = (float)(h * px * r[k]);
@@ -639,6 +657,7 @@ static void add_point(assembly *as, uint32_t i, uint32_t colour_from)
     }
     pt->round = as->point_smooth;
     memcpy(pt->color, as->s->verts[colour_from].color, sizeof pt->color);
+    pt->color[3] *= (float)fade;
 }
 
 /* Clip-space x, y, w of every vertex of the primitive, for facing. */
@@ -736,7 +755,7 @@ static void assemble_polygons(assembly *as, GLenum mode, uint32_t n)
     case GL_TRIANGLES:
         for (uint32_t i = 0; i + 3 <= n; i += 3) {
             t[0] = i, t[1] = i + 1, t[2] = i + 2;
-            emit_polygon(as, t, 3, i + 2, true);
+            emit_polygon(as, t, 3, pv(as, i + 2, i), true);
         }
         break;
     case GL_TRIANGLE_STRIP:
@@ -746,13 +765,13 @@ static void assemble_polygons(assembly *as, GLenum mode, uint32_t n)
             else
                 t[0] = i + 1, t[1] = i;
             t[2] = i + 2;
-            emit_polygon(as, t, 3, i + 2, false);
+            emit_polygon(as, t, 3, pv(as, i + 2, i), false);
         }
         break;
     case GL_TRIANGLE_FAN:
         for (uint32_t i = 0; i + 3 <= n; i++) {
             t[0] = 0, t[1] = i + 1, t[2] = i + 2;
-            emit_polygon(as, t, 3, i + 2, false);
+            emit_polygon(as, t, 3, pv(as, i + 2, i + 1), false);
         }
         break;
     case GL_QUADS:
@@ -791,19 +810,19 @@ static void assemble_filled(assembly *as, GLenum mode, uint32_t n)
     switch (mode) {
     case GL_TRIANGLES:
         for (uint32_t i = 0; i + 3 <= n; i += 3)
-            fill_tri(as, i, i + 1, i + 2, i + 2);
+            fill_tri(as, i, i + 1, i + 2, pv(as, i + 2, i));
         break;
     case GL_TRIANGLE_STRIP:
         for (uint32_t i = 0; i + 3 <= n; i++) {
             if (i % 2 == 0)
-                fill_tri(as, i, i + 1, i + 2, i + 2);
+                fill_tri(as, i, i + 1, i + 2, pv(as, i + 2, i));
             else
-                fill_tri(as, i + 1, i, i + 2, i + 2);
+                fill_tri(as, i + 1, i, i + 2, pv(as, i + 2, i));
         }
         break;
     case GL_TRIANGLE_FAN:
         for (uint32_t i = 0; i + 3 <= n; i++)
-            fill_tri(as, 0, i + 1, i + 2, i + 2);
+            fill_tri(as, 0, i + 1, i + 2, pv(as, i + 2, i + 1));
         break;
     case GL_QUADS:
         for (uint32_t i = 0; i + 4 <= n; i += 4) {
@@ -837,14 +856,14 @@ static void assemble_lines(assembly *as, GLenum mode, uint32_t n)
         break;
     case GL_LINES:
         for (uint32_t i = 0; i + 2 <= n; i += 2)
-            add_segment(as, b + i, b + i + 1, b + i + 1);
+            add_segment(as, b + i, b + i + 1, pv(as, b + i + 1, b + i));
         break;
     case GL_LINE_STRIP:
     case GL_LINE_LOOP:
         for (uint32_t i = 0; i + 2 <= n; i++)
-            add_segment(as, b + i, b + i + 1, b + i + 1);
-        if (mode == GL_LINE_LOOP && n >= 2)
-            add_segment(as, b + n - 1, b, b); /* table 2.2: provoking is vertex 1 */
+            add_segment(as, b + i, b + i + 1, pv(as, b + i + 1, b + i));
+        if (mode == GL_LINE_LOOP && n >= 2) /* table 2.2: provoking is vertex 1 */
+            add_segment(as, b + n - 1, b, pv(as, b, b + n - 1));
         break;
     default:
         break;
@@ -882,7 +901,7 @@ scene_look interp_current_look(interp *ip)
 {
     scene_look look;
     memset(&look, 0, sizeof look);
-    look.lit = ip->st.a.caps[INTERP_CAP_LIGHTING];
+    look.lit = ip->st.a.caps[INTERP_CAP_LIGHTING] && !interp_vertex_lit(ip);
     look.flat = ip->st.a.lighting.shade_model == GL_FLAT;
     look.blend = ip->prim_blend;
     look.fog = ip->st.a.caps[INTERP_CAP_FOG];
@@ -910,6 +929,7 @@ scene_look interp_current_look(interp *ip)
     }
     look.names = interp_names_for_draw(ip);
     interp_scissor_look(ip, &look);
+    interp_lightset_textured(ip, &look);
     return look;
 }
 
@@ -963,11 +983,13 @@ static void end_primitive(interp *ip)
     as.s = s;
     as.base = (uint32_t)ip->prim_first;
     as.flat = a->lighting.shade_model == GL_FLAT;
+    as.first = a->lighting.provoking == GL_FIRST_VERTEX_CONVENTION;
     as.swap = a->polygon.front_face == GL_CW;
     as.line_smooth = a->caps[INTERP_CAP_LINE_SMOOTH];
     as.point_smooth = a->caps[INTERP_CAP_POINT_SMOOTH];
     as.line_width = raster_width(a->line.width, as.line_smooth);
     as.point_size = raster_width(a->point.size, as.point_smooth);
+    as.point_params = interp_point_params_set(a);
     for (uint32_t i = 0; i < n && !as.check_bad; i++)
         if (!vertex_ok(&s->verts[as.base + i]))
             as.check_bad = true;
@@ -995,7 +1017,11 @@ static void end_primitive(interp *ip)
         as.check_bad = true;
     }
     ip->prim_tex_from1 = false;
+    gl_material vmat_saved[2];
+    bool vmat = interp_vmat_end(ip, n, vmat_saved);
     scene_look look = interp_current_look(ip);
+    if (vmat)
+        interp_vmat_restore(ip, vmat_saved);
     if (ip->prim_tex_from1)
         for (size_t i = 0; i < n; i++) {
             scene_vertex *v = &s->verts[ip->prim_first + i];
@@ -1005,10 +1031,13 @@ static void end_primitive(interp *ip)
         check_normals(ip, n);
     mat4 id = mat4_identity();
     as.mesh = scene_mesh_for(s, ip->prim_in_eye ? &id : &ip->prim_to_eye, ip->prim_in_eye, &look);
+    size_t first_tri = s->ntris;
     if (!as.facing && !as.check_bad && a->polygon.mode[0] == GL_FILL)
         assemble_filled(&as, mode, n);
     else
         assemble_polygons(&as, mode, n);
+    if (look.lit)
+        interp_gouraud_check(ip, first_tri);
 }
 
 void interp_end(interp *ip, const rgl_cmd *cmd)

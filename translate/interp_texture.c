@@ -20,19 +20,13 @@
 #include <string.h>
 
 #include "interp_internal.h"
+#include "interp_teximage.h"
 #include "namemap.h"
 #include "talloc.h"
 
 /* Pixels above this per image are refused (an error value, not an attempt
  * to allocate what a hostile trace asks for). 16384 x 16384 RGBA is 1 GiB. */
 #define TEX_MAX_TEXELS (1u << 26)
-
-typedef struct tex_image {
-    unsigned refs;
-    int width, height;
-    uint64_t hash; /* of width, height and texels */
-    uint8_t rgba[]; /* bottom row first */
-} tex_image;
 
 /* Levels 0..14: a 16384-texel side halves to 1 in 14 steps (Mesa's
  * GL_MAX_TEXTURE_LEVELS is 15). */
@@ -51,7 +45,13 @@ typedef struct tex_obj {
     bool generate_mipmap;          /* GL_GENERATE_MIPMAP */
     tex_image *face[6];            /* a cube map's level 0: +X, -X, +Y, -Y, +Z, -Z */
     GLenum wrap_s, wrap_t, min_filter, mag_filter;
+    GLenum wrap_r;   /* GL_TEXTURE_WRAP_R (3D) */
+    int depth3;      /* a 3D texture's images: img holds them one above the
+                        other (height = rows x depth3); 0 for 1D and 2D */
     float border[4]; /* GL_TEXTURE_BORDER_COLOR */
+    GLenum depth_mode; /* GL_DEPTH_TEXTURE_MODE */
+    bool depth;        /* the base level (or level 0) has a depth internal format:
+                          every level drawn as depth_mode */
     uint32_t lost;   /* pixels whose damage left the image missing or partly
                         stale (0: none): every frame drawing with it says so */
 } tex_obj;
@@ -60,7 +60,8 @@ struct interp_textures {
     tex_obj *objs; /* named objects, unordered */
     size_t n, cap;
     namemap names; /* name -> index in objs */
-    tex_obj zero[3];         /* object 0 of GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_CUBE_MAP */
+    /* object 0 of GL_TEXTURE_1D, GL_TEXTURE_2D, rectangle, 3D, GL_TEXTURE_CUBE_MAP */
+    tex_obj zero[5];
     int32_t unpack[8];       /* glPixelStorei values, by pname - GL_UNPACK_SWAP_BYTES */
     /* The last draw's scene texture, to skip rebuilding it per primitive:
      * one per drawn unit (a draw's first and second). */
@@ -71,6 +72,9 @@ struct interp_textures {
         const scene *sc;
         size_t ntex;
     } cache[2];
+    /* The range of r over the primitive being drawn, per unit: a 3D
+     * texture is drawn as a slice where it is constant. */
+    double r_min[INTERP_TEX_UNITS], r_max[INTERP_TEX_UNITS];
     /* Sphere map: the modelview whose inverse transpose is in nrm_mat. */
     mat4 nrm_of, nrm_mat;
     bool nrm_ok;
@@ -82,16 +86,27 @@ static void obj_defaults(tex_obj *o, uint32_t name)
 {
     memset(o, 0, sizeof *o);
     o->name = name;
-    o->wrap_s = o->wrap_t = GL_REPEAT;
+    o->wrap_s = o->wrap_t = o->wrap_r = GL_REPEAT;
     o->min_filter = GL_NEAREST_MIPMAP_LINEAR;
     o->mag_filter = GL_LINEAR;
     o->max_level = 1000;
     o->min_lod = -1000;
     o->max_lod = 1000;
+    o->depth_mode = GL_LUMINANCE;
 }
 
 /* The image of level k, or NULL. */
 static tex_image **level_slot(tex_obj *o, int k) { return k == 0 ? &o->img : &o->lv[k]; }
+
+/* A rectangle texture's defaults (ARB_texture_rectangle): no mipmaps, no
+ * repeat. */
+static void obj_rect_defaults(tex_obj *o)
+{
+    o->wrap_s = o->wrap_t = GL_CLAMP_TO_EDGE;
+    o->min_filter = GL_LINEAR;
+}
+
+#define ZEROS(t) (sizeof (t)->zero / sizeof (t)->zero[0])
 
 static void image_release(tex_image *img)
 {
@@ -118,6 +133,20 @@ static void obj_release(tex_obj *o)
         image_release(o->face[f]);
 }
 
+static void r_reset(interp_textures *t)
+{
+    for (int k = 0; k < INTERP_TEX_UNITS; k++) {
+        t->r_min[k] = INFINITY;
+        t->r_max[k] = -INFINITY;
+    }
+}
+
+void interp_texture_r_reset(interp *ip)
+{
+    if (ip->tex)
+        r_reset(ip->tex);
+}
+
 static interp_textures *textures(interp *ip)
 {
     if (ip->tex)
@@ -126,11 +155,15 @@ static interp_textures *textures(interp *ip)
     if (!t)
         return NULL;
     memset(t, 0, sizeof *t);
-    for (int k = 0; k < 3; k++)
+    for (size_t k = 0; k < ZEROS(t); k++)
         obj_defaults(&t->zero[k], 0);
     t->zero[0].target = GL_TEXTURE_1D;
     t->zero[1].target = GL_TEXTURE_2D;
-    t->zero[2].target = GL_TEXTURE_CUBE_MAP;
+    t->zero[2].target = GL_TEXTURE_RECTANGLE;
+    obj_rect_defaults(&t->zero[2]);
+    t->zero[3].target = GL_TEXTURE_3D;
+    t->zero[4].target = GL_TEXTURE_CUBE_MAP;
+    r_reset(t);
     t->unpack[GL_UNPACK_ALIGNMENT - GL_UNPACK_SWAP_BYTES] = 4;
     t->cache[0].index = t->cache[1].index = -1;
     ip->tex = t;
@@ -150,7 +183,11 @@ static tex_obj *get_obj(interp *ip, GLenum target, uint32_t name, bool create)
     if (!t)
         return NULL;
     if (name == 0)
-        return &t->zero[target == GL_TEXTURE_1D ? 0 : target == GL_TEXTURE_CUBE_MAP ? 2 : 1];
+        return &t->zero[target == GL_TEXTURE_1D          ? 0
+                        : target == GL_TEXTURE_RECTANGLE ? 2
+                        : target == GL_TEXTURE_3D        ? 3
+                        : target == GL_TEXTURE_CUBE_MAP  ? 4
+                                                         : 1];
     tex_obj *o = find_obj(t, name);
     if (o || !create)
         return o;
@@ -159,6 +196,8 @@ static tex_obj *get_obj(interp *ip, GLenum target, uint32_t name, bool create)
         return NULL;
     o = &t->objs[t->n++];
     obj_defaults(o, name);
+    if (target == GL_TEXTURE_RECTANGLE)
+        obj_rect_defaults(o);
     return o;
 }
 
@@ -169,6 +208,10 @@ static tex_obj *bound_obj(interp *ip, GLenum target, bool create)
         return get_obj(ip, target, ip->st.a.texture.binding_1d, create);
     if (target == GL_TEXTURE_2D)
         return get_obj(ip, target, ip->st.a.texture.binding_2d, create);
+    if (target == GL_TEXTURE_RECTANGLE)
+        return get_obj(ip, target, ip->st.a.texture.binding_rect, create);
+    if (target == GL_TEXTURE_3D)
+        return get_obj(ip, target, ip->st.a.texture.binding_3d, create);
     if (target == GL_TEXTURE_CUBE_MAP)
         return get_obj(ip, target, ip->st.a.texture.binding_cube, create);
     return NULL;
@@ -205,6 +248,10 @@ void interp_deletetextures(interp *ip, const rgl_cmd *cmd)
             ip->st.a.texture.binding_1d = 0;
         if (ip->st.a.texture.binding_2d == name)
             ip->st.a.texture.binding_2d = 0;
+        if (ip->st.a.texture.binding_rect == name)
+            ip->st.a.texture.binding_rect = 0;
+        if (ip->st.a.texture.binding_3d == name)
+            ip->st.a.texture.binding_3d = 0;
         if (ip->st.a.texture.binding_cube == name)
             ip->st.a.texture.binding_cube = 0;
         interp_multitex_unbind(ip, name);
@@ -217,9 +264,9 @@ void interp_bindtexture(interp *ip, const rgl_cmd *cmd)
         return;
     GLenum target = arg_enum(cmd, 0);
     uint32_t name = (uint32_t)cmd->arg[1].v.u;
-    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_CUBE_MAP) {
-        if (target != GL_TEXTURE_3D)
-            interp_bad_enum(ip, "texture target", target);
+    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_RECTANGLE &&
+        target != GL_TEXTURE_3D && target != GL_TEXTURE_CUBE_MAP) {
+        interp_bad_enum(ip, "texture target", target);
         return;
     }
     tex_obj *o = get_obj(ip, target, name, true);
@@ -235,6 +282,10 @@ void interp_bindtexture(interp *ip, const rgl_cmd *cmd)
     o->target = target;
     if (target == GL_TEXTURE_1D)
         ip->st.a.texture.binding_1d = name;
+    else if (target == GL_TEXTURE_RECTANGLE)
+        ip->st.a.texture.binding_rect = name;
+    else if (target == GL_TEXTURE_3D)
+        ip->st.a.texture.binding_3d = name;
     else if (target == GL_TEXTURE_CUBE_MAP)
         ip->st.a.texture.binding_cube = name;
     else
@@ -299,32 +350,69 @@ static float component(const uint8_t *p, GLenum type)
     }
 }
 
-size_t interp_pixel_bytes(GLenum format, GLenum type, int64_t w, int64_t h)
+/* A texture image's format: the pixel formats, and GL_DEPTH_COMPONENT,
+ * whose depth goes where luminance does (GL 2.1 3.8.1: a depth texture's
+ * texels are drawn as its GL_DEPTH_TEXTURE_MODE says, tex_depth_mode). */
+static int tex_layout(GLenum format, int dst[4])
+{
+    if (format == GL_DEPTH_COMPONENT) {
+        dst[0] = 4;
+        return 1;
+    }
+    return format_layout(format, dst);
+}
+
+/* Bytes of one pixel of format/type, 0 for a pair not translated or a
+ * packed type of another component count than the format's (GL refuses
+ * it: GL_INVALID_OPERATION). tex: a texture image's format (tex_layout). */
+static size_t pixel_bytes(GLenum format, GLenum type, bool tex)
 {
     int layout[4];
-    int nc = format_layout(format, layout);
+    int nc = tex ? tex_layout(format, layout) : format_layout(format, layout);
+    size_t pb;
+    int pc = interp_packed_layout(type, &pb);
+    if (pc)
+        return pc == nc ? pb : 0;
+    return (size_t)nc * type_bytes(type);
+}
+
+/* The components of the pixel at src placed into c by layout: R, G, B,
+ * A, or luminance (4) to R, G and B. */
+static void pixel_read(const uint8_t *src, GLenum type, const int *layout, int nc, float c[4])
+{
+    float v[4] = {0, 0, 0, 0};
     size_t tb = type_bytes(type);
-    if (!nc || !tb || w < 0 || h < 0 || (uint64_t)w * (uint64_t)h > TEX_MAX_TEXELS)
+    if (tb == 0)
+        interp_packed_decode(src, type, v);
+    else
+        for (int k = 0; k < nc && k < 4; k++)
+            v[k] = component(src + (size_t)k * tb, type);
+    for (int k = 0; k < nc && k < 4; k++) {
+        if (layout[k] == 4)
+            c[0] = c[1] = c[2] = v[k];
+        else
+            c[layout[k]] = v[k];
+    }
+}
+
+size_t interp_pixel_bytes(GLenum format, GLenum type, int64_t w, int64_t h)
+{
+    size_t ps = pixel_bytes(format, type, false);
+    if (!ps || w < 0 || h < 0 || (uint64_t)w * (uint64_t)h > TEX_MAX_TEXELS)
         return 0;
-    return (size_t)w * (size_t)h * (size_t)nc * tb;
+    return (size_t)w * (size_t)h * ps;
 }
 
 void interp_pixels_float(float *dst, const uint8_t *src, size_t n, GLenum format, GLenum type)
 {
     int layout[4] = {0, 0, 0, 0};
     int nc = format_layout(format, layout);
-    size_t tb = type_bytes(type);
-    for (size_t i = 0; i < n; i++, src += (size_t)nc * tb, dst += 4) {
+    size_t ps = pixel_bytes(format, type, false);
+    for (size_t i = 0; i < n; i++, src += ps, dst += 4) {
         /* GL 2.1 3.6.4, "Conversion to RGBA": missing R, G, B are 0, A is 1. */
         dst[0] = dst[1] = dst[2] = 0;
         dst[3] = 1;
-        for (int k = 0; k < nc; k++) {
-            float v = component(src + (size_t)k * tb, type);
-            if (layout[k] == 4)
-                dst[0] = dst[1] = dst[2] = v;
-            else
-                dst[layout[k]] = v;
-        }
+        pixel_read(src, type, layout, nc, dst);
     }
 }
 
@@ -350,6 +438,9 @@ static GLenum base_format(int32_t internal)
     case GL_INTENSITY: case GL_INTENSITY4: case GL_INTENSITY8: case GL_INTENSITY12:
     case GL_INTENSITY16:
         return GL_INTENSITY;
+    case GL_DEPTH_COMPONENT: case GL_DEPTH_COMPONENT16: case GL_DEPTH_COMPONENT24:
+    case GL_DEPTH_COMPONENT32:
+        return GL_DEPTH_COMPONENT;
     default:
         return 0;
     }
@@ -367,17 +458,11 @@ static void convert_pixels(uint8_t *dst, const uint8_t *src, size_t n, GLenum fo
                            GLenum base)
 {
     int layout[4] = {0, 0, 0, 0};
-    int nc = format_layout(format, layout);
-    size_t tb = type_bytes(type);
-    for (size_t i = 0; i < n; i++, src += (size_t)nc * tb, dst += 4) {
+    int nc = tex_layout(format, layout);
+    size_t ps = pixel_bytes(format, type, true);
+    for (size_t i = 0; i < n; i++, src += ps, dst += 4) {
         float c[4] = {0, 0, 0, 1};
-        for (int k = 0; k < nc; k++) {
-            float v = component(src + (size_t)k * tb, type);
-            if (layout[k] == 4)
-                c[0] = c[1] = c[2] = v;
-            else
-                c[layout[k]] = v;
-        }
+        pixel_read(src, type, layout, nc, c);
         /* Table 3.15: which components the texel keeps. The others take
          * the neutral value of MODULATE (1), so that MODULATE and the
          * writer's image need no case of their own. */
@@ -406,6 +491,8 @@ static uint64_t image_hash(const tex_image *img)
         h = (h ^ img->rgba[i]) * 0x100000001b3ull;
     return h;
 }
+
+uint64_t interp_tex_image_hash(const tex_image *img) { return image_hash(img); }
 
 /* The texel bytes of pixel resource `id` holding exactly `need` bytes, or
  * NULL after a diagnostic; *lost is set to id when the trace's damage is
@@ -446,13 +533,18 @@ static bool check_image(interp *ip, GLenum format, GLenum type, int64_t w, int64
                         size_t *bytes)
 {
     int layout[4];
-    int nc = format_layout(format, layout);
+    int nc = tex_layout(format, layout);
     if (!nc) {
         interp_bad_enum(ip, "pixel format", format);
         return false;
     }
-    size_t tb = type_bytes(type);
-    if (!tb) {
+    size_t pb, ps = pixel_bytes(format, type, true);
+    int pc = interp_packed_layout(type, &pb);
+    if (pc && pc != nc) {
+        interp_bad_op(ip, "packed pixel type of another component count than the format");
+        return false;
+    }
+    if (!ps) {
         interp_diag(ip, DIAG_IGNORED, "texture image: pixel type 0x%x not translated", type);
         return false;
     }
@@ -463,7 +555,7 @@ static bool check_image(interp *ip, GLenum format, GLenum type, int64_t w, int64
                     (long long)w, (long long)h, INTERP_MAX_TEXTURE_SIZE, TEX_MAX_TEXELS);
         return false;
     }
-    *bytes = (size_t)w * (size_t)h * (size_t)nc * tb;
+    *bytes = (size_t)w * (size_t)h * ps;
     return true;
 }
 
@@ -512,6 +604,13 @@ static void generate_levels(interp *ip, tex_obj *o, int b)
     }
 }
 
+/* The size of level k of a side of s0 texels (GL 2.1 3.8.8). */
+static int64_t level_size(int64_t s0, int k)
+{
+    int64_t s = s0 >> k;
+    return s > 0 ? s : 1;
+}
+
 /* Sets level `level` of o from w x h pixels (resource id, 0: none). */
 static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t internal, int64_t w,
                           int64_t h, int32_t border, GLenum format, GLenum type, uint32_t id)
@@ -519,12 +618,13 @@ static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t inte
     if (interp_reject_in_begin(ip))
         return;
     if (target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D ||
-        target == GL_PROXY_TEXTURE_CUBE_MAP)
+        target == GL_PROXY_TEXTURE_RECTANGLE || target == GL_PROXY_TEXTURE_CUBE_MAP)
         return;
     int face = target >= GL_TEXTURE_CUBE_MAP_POSITIVE_X && target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z
                    ? (int)(target - GL_TEXTURE_CUBE_MAP_POSITIVE_X)
                    : -1;
-    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && face < 0) {
+    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_RECTANGLE &&
+        face < 0) {
         interp_bad_enum(ip, "texture target", target);
         return;
     }
@@ -537,8 +637,21 @@ static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t inte
         interp_bad_value(ip, "texture internal format");
         return;
     }
-    if (level < 0 || level >= TEX_LEVELS || (border != 0 && border != 1)) {
+    /* ARB_texture_rectangle: level 0 alone, no border. */
+    if (level < 0 || level >= TEX_LEVELS || (border != 0 && border != 1) ||
+        (target == GL_TEXTURE_RECTANGLE && (level != 0 || border != 0))) {
         interp_bad_value(ip, "texture level or border");
+        return;
+    }
+    /* GL 2.1 3.8.1: depth pixels for a depth format, and only there. */
+    if ((base == GL_DEPTH_COMPONENT) != (format == GL_DEPTH_COMPONENT)) {
+        interp_bad_op(ip, "depth pixels and a colour internal format, or the reverse");
+        return;
+    }
+    /* GL 2.1 3.8.1: depth textures are 1D or 2D (and rectangles,
+     * ARB_texture_rectangle), never a cube map's face. */
+    if (base == GL_DEPTH_COMPONENT && face >= 0) {
+        interp_bad_op(ip, "a depth internal format for a cube map face");
         return;
     }
     size_t bytes;
@@ -555,7 +668,9 @@ static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t inte
             return; /* a cube map's levels: its level 0 is drawn (the mipmap note) */
         target = GL_TEXTURE_2D; /* a face is a 2D image */
     }
-    int64_t iw = w - 2 * border, ih = target == GL_TEXTURE_2D ? h - 2 * border : 1;
+    bool depth = base == GL_DEPTH_COMPONENT;
+    bool two = target != GL_TEXTURE_1D;
+    int64_t iw = w - 2 * border, ih = two ? h - 2 * border : 1;
     tex_image **slot = face >= 0 ? &o->face[face] : level_slot(o, level);
     image_release(*slot);
     *slot = NULL;
@@ -564,8 +679,12 @@ static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t inte
     o->lh[level] = (int32_t)(ih > 0 ? ih : 0);
     if (level == 0 && face <= 0)
         o->lost = 0;
-    if (level == 0 || level == o->base_level)
+    if (depth)
+        base = o->depth_mode; /* the depth is drawn as luminance, intensity or alpha */
+    if (level == 0 || level == o->base_level) {
+        o->depth = depth;
         o->base_format = base;
+    }
     if (face >= 0)
         o->levels &= ~(1u << level); /* faces live in o->face */
     if (iw <= 0 || ih <= 0 || !id)
@@ -583,17 +702,19 @@ static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t inte
     img->refs = 1;
     img->width = (int)iw;
     img->height = (int)ih;
-    int layout[4];
-    size_t ps = (size_t)format_layout(format, layout) * type_bytes(type);
+    size_t ps = pixel_bytes(format, type, true);
     /* A border is dropped: POV-Ray has no border texels. */
     for (int64_t y = 0; y < ih; y++)
         convert_pixels(img->rgba + (size_t)y * (size_t)iw * 4,
-                       px + ((size_t)(y + (target == GL_TEXTURE_2D ? border : 0)) * (size_t)w +
+                       px + ((size_t)(y + (two ? border : 0)) * (size_t)w +
                              (size_t)border) * ps,
                        (size_t)iw, format, type, base);
     img->hash = image_hash(img);
     *slot = img;
-    if (o->generate_mipmap && level == o->base_level && face < 0)
+    /* A rectangle has no mipmaps (ARB_texture_rectangle), whatever
+     * GL_GENERATE_MIPMAP says. */
+    if (o->generate_mipmap && level == o->base_level && face < 0 &&
+        o->target != GL_TEXTURE_RECTANGLE)
         generate_levels(ip, o, level);
 }
 
@@ -635,17 +756,28 @@ static tex_image *image_own(interp *ip, tex_image **slot)
 
 void interp_texsubimage2d(interp *ip, const rgl_cmd *cmd)
 {
+    interp_tex_subimage(ip, 2, arg_enum(cmd, 0), cmd->arg[1].v.i, cmd->arg[2].v.i,
+                        cmd->arg[3].v.i, cmd->arg[4].v.i, cmd->arg[5].v.i, arg_enum(cmd, 6),
+                        arg_enum(cmd, 7), (uint32_t)cmd->arg[8].v.u);
+}
+
+void interp_tex_image(interp *ip, GLenum target, int32_t level, int32_t internal, int64_t w,
+                      int64_t h, int32_t border, GLenum format, GLenum type, uint32_t id)
+{
+    tex_image_set(ip, target, level, internal, w, h, border, format, type, id);
+}
+
+void interp_tex_subimage(interp *ip, int dims, GLenum target, int64_t level, int64_t x0,
+                         int64_t y0, int64_t w, int64_t h, GLenum format, GLenum type,
+                         uint32_t id)
+{
     if (interp_reject_in_begin(ip))
         return;
-    GLenum target = arg_enum(cmd, 0);
-    int64_t level = cmd->arg[1].v.i, x0 = cmd->arg[2].v.i, y0 = cmd->arg[3].v.i;
-    int64_t w = cmd->arg[4].v.i, h = cmd->arg[5].v.i;
-    GLenum format = arg_enum(cmd, 6), type = arg_enum(cmd, 7);
-    uint32_t id = (uint32_t)cmd->arg[8].v.u;
     int face = target >= GL_TEXTURE_CUBE_MAP_POSITIVE_X && target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z
                    ? (int)(target - GL_TEXTURE_CUBE_MAP_POSITIVE_X)
                    : -1;
-    if (target != GL_TEXTURE_2D && face < 0) {
+    if (dims == 1 ? target != GL_TEXTURE_1D
+                  : target != GL_TEXTURE_2D && target != GL_TEXTURE_RECTANGLE && face < 0) {
         interp_bad_enum(ip, "texture target", target);
         return;
     }
@@ -654,18 +786,22 @@ void interp_texsubimage2d(interp *ip, const rgl_cmd *cmd)
         return;
     tex_obj *o = bound_obj(ip, face >= 0 ? GL_TEXTURE_CUBE_MAP : target, false);
     if (level < 0 || level >= TEX_LEVELS) {
-        interp_bad_value(ip, "glTexSubImage2D level");
+        interp_bad_value(ip, "texture sub-image level");
         return;
     }
     if (face >= 0 && level > 0)
         return; /* a cube map's levels are not drawn (tex_image_set) */
     tex_image **slot = !o ? NULL : face >= 0 ? &o->face[face] : level_slot(o, (int)level);
     if (!slot || !*slot) {
-        interp_bad_op(ip, "glTexSubImage2D on a texture level with no image");
+        interp_bad_op(ip, "texture sub-image on a texture level with no image");
         return;
     }
     if (x0 < 0 || y0 < 0 || x0 + w > (*slot)->width || y0 + h > (*slot)->height) {
-        interp_bad_value(ip, "glTexSubImage2D region outside the texture");
+        interp_bad_value(ip, "texture sub-image region outside the texture");
+        return;
+    }
+    if (o->depth != (format == GL_DEPTH_COMPONENT)) {
+        interp_bad_op(ip, "depth pixels and a colour texture, or the reverse");
         return;
     }
     if (w == 0 || h == 0 || !id)
@@ -674,14 +810,127 @@ void interp_texsubimage2d(interp *ip, const rgl_cmd *cmd)
     tex_image *img = px ? image_own(ip, slot) : NULL;
     if (!img)
         return;
-    int layout[4];
-    size_t ps = (size_t)format_layout(format, layout) * type_bytes(type);
+    size_t ps = pixel_bytes(format, type, true);
     for (int64_t y = 0; y < h; y++)
         convert_pixels(img->rgba + ((size_t)(y0 + y) * (size_t)img->width + (size_t)x0) * 4,
                        px + (size_t)y * (size_t)w * ps, (size_t)w, format, type, o->base_format);
     img->hash = image_hash(img);
-    if (o->generate_mipmap && level == o->base_level && face < 0)
+    if (o->generate_mipmap && level == o->base_level && face < 0 &&
+        o->target != GL_TEXTURE_RECTANGLE)
         generate_levels(ip, o, (int)level);
+}
+
+void interp_tex_image3d(interp *ip, int32_t level, int32_t internal, int64_t w, int64_t h,
+                        int64_t d, int32_t border, GLenum format, GLenum type, uint32_t id)
+{
+    GLenum base = base_format(internal);
+    if (!base || base == GL_DEPTH_COMPONENT) {
+        interp_bad_value(ip, "3D texture internal format");
+        return;
+    }
+    size_t bytes;
+    if (!check_image(ip, format, type, w, h, &bytes))
+        return;
+    if (d < 0 || d > INTERP_MAX_TEXTURE_SIZE || (uint64_t)w * (uint64_t)h * (uint64_t)d >
+                                                   TEX_MAX_TEXELS) {
+        interp_bad_value(ip, "3D texture depth");
+        return;
+    }
+    bytes *= (size_t)d;
+    tex_obj *o = bound_obj(ip, GL_TEXTURE_3D, true);
+    if (!o) {
+        if (ip->scene)
+            ip->scene->failed = true;
+        return;
+    }
+    if (level > 0) {
+        bool fits = o->img && w - 2 * border == level_size(o->img->width, level) &&
+                    h - 2 * border == level_size(o->img->height / o->depth3, level) &&
+                    d - 2 * border == level_size(o->depth3, level);
+        if (fits)
+            o->levels |= 1u << level;
+        else
+            o->levels &= ~(1u << level);
+        return;
+    }
+    image_release(o->img);
+    o->img = NULL;
+    o->levels = 0;
+    o->lost = 0;
+    o->depth = false;
+    o->base_format = base;
+    o->depth3 = 0;
+    int64_t iw = w - 2 * border, ih = h - 2 * border, id3 = d - 2 * border;
+    if (iw <= 0 || ih <= 0 || id3 <= 0 || !id)
+        return;
+    const uint8_t *px = interp_pixels_fetch(ip, id, bytes, &o->lost);
+    if (!px || !interp_budget_texels(ip, (uint64_t)iw * (uint64_t)ih * (uint64_t)id3 * 4))
+        return;
+    tex_image *img = tr_realloc(NULL, sizeof *img + (size_t)(iw * ih * id3) * 4);
+    if (!img) {
+        if (ip->scene)
+            ip->scene->failed = true;
+        return;
+    }
+    img->refs = 1;
+    img->width = (int)iw;
+    img->height = (int)(ih * id3);
+    size_t ps = pixel_bytes(format, type, true);
+    for (int64_t z = 0; z < id3; z++)
+        for (int64_t y = 0; y < ih; y++)
+            convert_pixels(img->rgba + ((size_t)(z * ih + y) * (size_t)iw) * 4,
+                           px + (((size_t)(z + border) * (size_t)h + (size_t)(y + border)) *
+                                     (size_t)w +
+                                 (size_t)border) *
+                                    ps,
+                           (size_t)iw, format, type, base);
+    img->hash = image_hash(img);
+    o->img = img;
+    /* GL_GENERATE_MIPMAP: the levels follow (a 3D texture is drawn from
+     * its level 0, so only their presence matters). */
+    o->levels = o->generate_mipmap ? ~0u : 1u;
+    o->depth3 = (int)id3;
+}
+
+void interp_tex_subimage3d(interp *ip, int64_t level, int64_t x0, int64_t y0, int64_t z0,
+                           int64_t w, int64_t h, int64_t d, GLenum format, GLenum type,
+                           uint32_t id)
+{
+    size_t bytes;
+    if (!check_image(ip, format, type, w, h, &bytes))
+        return;
+    tex_obj *o = bound_obj(ip, GL_TEXTURE_3D, false);
+    if (level != 0)
+        return; /* other levels are not translated */
+    if (!o || !o->img || !o->depth3) {
+        interp_bad_op(ip, "3D texture sub-image on a texture with no level 0");
+        return;
+    }
+    int th = o->img->height / o->depth3;
+    if (x0 < 0 || y0 < 0 || z0 < 0 || d < 0 || x0 + w > o->img->width || y0 + h > th ||
+        z0 + d > o->depth3) {
+        interp_bad_value(ip, "3D texture sub-image region outside the texture");
+        return;
+    }
+    if (o->depth != (format == GL_DEPTH_COMPONENT)) {
+        interp_bad_op(ip, "depth pixels and a colour texture, or the reverse");
+        return;
+    }
+    if (w == 0 || h == 0 || d == 0 || !id)
+        return;
+    const uint8_t *px = interp_pixels_fetch(ip, id, bytes * (size_t)d, &o->lost);
+    tex_image *img = px ? image_own(ip, &o->img) : NULL;
+    if (!img)
+        return;
+    size_t ps = pixel_bytes(format, type, true);
+    for (int64_t z = 0; z < d; z++)
+        for (int64_t y = 0; y < h; y++)
+            convert_pixels(img->rgba +
+                               ((size_t)((z0 + z) * th + y0 + y) * (size_t)img->width +
+                                (size_t)x0) * 4,
+                           px + ((size_t)(z * h + y) * (size_t)w) * ps, (size_t)w, format, type,
+                           o->base_format);
+    img->hash = image_hash(img);
 }
 
 /* gluBuild2DMipmaps: level 0 is the image scaled to powers of two no
@@ -795,6 +1044,38 @@ void interp_pixelstore(interp *ip, const rgl_cmd *cmd)
 
 /* ---- Parameters and environment ------------------------------------------------------- */
 
+bool interp_mirror_clamp(GLenum wrap)
+{
+    return wrap == GL_MIRROR_CLAMP_EXT || wrap == GL_MIRROR_CLAMP_TO_EDGE_EXT ||
+           wrap == GL_MIRROR_CLAMP_TO_BORDER_EXT;
+}
+
+/* GL_DEPTH_TEXTURE_MODE: a depth texture's texels are (d, d, d, 1), (d, d,
+ * d, d) or alpha d (GL 2.1 3.8.13). The depth is recovered from the texels
+ * kept (red, or alpha in GL_ALPHA mode), so the image is redrawn exactly. */
+static void tex_depth_mode(interp *ip, tex_obj *o, GLenum mode)
+{
+    GLenum was = o->depth_mode;
+    o->depth_mode = mode;
+    if (!o->depth || was == mode)
+        return;
+    o->base_format = mode;
+    for (int k = 0; k < TEX_LEVELS; k++) { /* every level (a depth texture's mipmaps) */
+        tex_image **slot = level_slot(o, k);
+        tex_image *img = *slot ? image_own(ip, slot) : NULL;
+        if (!img)
+            continue;
+        size_t n = (size_t)img->width * (size_t)img->height;
+        for (size_t i = 0; i < n; i++) {
+            uint8_t *t = img->rgba + i * 4, d = was == GL_ALPHA ? t[3] : t[0];
+            bool alpha = mode == GL_ALPHA;
+            t[0] = t[1] = t[2] = alpha ? 255 : d;
+            t[3] = mode == GL_LUMINANCE ? 255 : d;
+        }
+        img->hash = image_hash(img);
+    }
+}
+
 void interp_texparameter(interp *ip, const rgl_cmd *cmd)
 {
     if (interp_reject_in_begin(ip))
@@ -802,20 +1083,44 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
     GLenum target = arg_enum(cmd, 0), pname = arg_enum(cmd, 1);
     const rgl_arg *pa = &cmd->arg[2];
     double v = pa->kind == RGL_ARG_SCALAR ? arg_num(pa) : (pa->count ? pa->array[0] : 0);
-    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_CUBE_MAP) {
-        if (target != GL_TEXTURE_3D)
-            interp_bad_enum(ip, "texture target", target);
+    bool rect = target == GL_TEXTURE_RECTANGLE;
+    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && !rect && target != GL_TEXTURE_3D &&
+        target != GL_TEXTURE_CUBE_MAP) {
+        interp_bad_enum(ip, "texture target", target);
         return;
     }
     GLenum e = interp_enum_of(v);
     switch (pname) {
-    case GL_TEXTURE_WRAP_S: case GL_TEXTURE_WRAP_T:
-        if (e != GL_REPEAT && e != GL_CLAMP && e != GL_CLAMP_TO_EDGE &&
-            e != GL_CLAMP_TO_BORDER && e != GL_MIRRORED_REPEAT) {
+    case GL_TEXTURE_WRAP_S: case GL_TEXTURE_WRAP_T: case GL_TEXTURE_WRAP_R: {
+        bool clamp = e == GL_CLAMP || e == GL_CLAMP_TO_EDGE || e == GL_CLAMP_TO_BORDER;
+        bool other = e == GL_REPEAT || e == GL_MIRRORED_REPEAT || interp_mirror_clamp(e);
+        /* ARB_texture_rectangle: the clamping modes alone. */
+        if (!clamp && (!other || rect)) {
             interp_bad_enum(ip, "texture wrap mode", e);
             return;
         }
         break;
+    }
+    case GL_DEPTH_TEXTURE_MODE:
+        if (e != GL_LUMINANCE && e != GL_INTENSITY && e != GL_ALPHA) {
+            interp_bad_enum(ip, "depth texture mode", e);
+            return;
+        }
+        break;
+    case GL_TEXTURE_COMPARE_MODE:
+        if (e != GL_NONE && e != GL_COMPARE_R_TO_TEXTURE) {
+            interp_bad_enum(ip, "texture compare mode", e);
+            return;
+        }
+        if (e != GL_NONE)
+            interp_diag(ip, DIAG_IGNORED,
+                        "texture compare mode GL_COMPARE_R_TO_TEXTURE not translated (depth "
+                        "drawn as it is)");
+        return;
+    case GL_TEXTURE_LOD_BIAS:
+        if (v != 0)
+            interp_note(ip, DIAG_NOTE_TEX_LOD_BIAS);
+        return;
     case GL_TEXTURE_MAG_FILTER:
         if (e != GL_NEAREST && e != GL_LINEAR) {
             interp_bad_enum(ip, "texture magnification filter", e);
@@ -823,9 +1128,9 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
         }
         break;
     case GL_TEXTURE_MIN_FILTER:
-        if (e != GL_NEAREST && e != GL_LINEAR && e != GL_NEAREST_MIPMAP_NEAREST &&
-            e != GL_LINEAR_MIPMAP_NEAREST && e != GL_NEAREST_MIPMAP_LINEAR &&
-            e != GL_LINEAR_MIPMAP_LINEAR) {
+        if (e != GL_NEAREST && e != GL_LINEAR &&
+            (rect || (e != GL_NEAREST_MIPMAP_NEAREST && e != GL_LINEAR_MIPMAP_NEAREST &&
+                      e != GL_NEAREST_MIPMAP_LINEAR && e != GL_LINEAR_MIPMAP_LINEAR))) {
             interp_bad_enum(ip, "texture minification filter", e);
             return;
         }
@@ -839,6 +1144,11 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
     case GL_TEXTURE_BASE_LEVEL: case GL_TEXTURE_MAX_LEVEL:
         if (v < 0 || !isfinite(v)) {
             interp_bad_value(ip, "negative texture level");
+            return;
+        }
+        /* ARB_texture_rectangle: level 0 is the base. */
+        if (rect && pname == GL_TEXTURE_BASE_LEVEL && v != 0) {
+            interp_bad_value(ip, "rectangle texture base level other than 0");
             return;
         }
         break;
@@ -875,6 +1185,10 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
         o->max_lod = (float)(v < -1000 ? -1000 : v > 1000 ? 1000 : v);
     } else if (pname == GL_GENERATE_MIPMAP) {
         o->generate_mipmap = v != 0;
+    } else if (pname == GL_DEPTH_TEXTURE_MODE) {
+        tex_depth_mode(ip, o, e);
+    } else if (pname == GL_TEXTURE_WRAP_R) {
+        o->wrap_r = e;
     } else if (pname == GL_TEXTURE_WRAP_S)
         o->wrap_s = e;
     else if (pname == GL_TEXTURE_WRAP_T)
@@ -885,12 +1199,44 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
         o->min_filter = e;
 }
 
+/* glTexEnv's other targets (GL 1.4, 2.0): GL_TEXTURE_FILTER_CONTROL's
+ * GL_TEXTURE_LOD_BIAS and GL_POINT_SPRITE's GL_COORD_REPLACE, accepted and
+ * noted (no mipmaps, no point sprites drawn). */
+static void interp_texenv_other(interp *ip, GLenum target, GLenum pname, const rgl_arg *pa)
+{
+    double v = pa->kind == RGL_ARG_SCALAR ? arg_num(pa) : (pa->count ? pa->array[0] : 0);
+    if (target == GL_TEXTURE_FILTER_CONTROL) {
+        if (pname != GL_TEXTURE_LOD_BIAS) {
+            interp_bad_enum(ip, "texture filter control pname", pname);
+            return;
+        }
+        if (v != 0)
+            interp_note(ip, DIAG_NOTE_TEX_LOD_BIAS);
+        return;
+    }
+    if (pname != GL_COORD_REPLACE) {
+        interp_bad_enum(ip, "point sprite pname", pname);
+        return;
+    }
+    GLenum e = interp_enum_of(v);
+    if (e != GL_TRUE && e != GL_FALSE) {
+        interp_bad_enum(ip, "GL_COORD_REPLACE value", e);
+        return;
+    }
+    if (e == GL_TRUE)
+        interp_note(ip, DIAG_NOTE_POINT_SPRITE);
+}
+
 void interp_texenv(interp *ip, const rgl_cmd *cmd)
 {
     if (interp_reject_in_begin(ip))
         return;
     GLenum target = arg_enum(cmd, 0), pname = arg_enum(cmd, 1);
     const rgl_arg *pa = &cmd->arg[2];
+    if (target == GL_POINT_SPRITE || target == GL_TEXTURE_FILTER_CONTROL) {
+        interp_texenv_other(ip, target, pname, pa);
+        return;
+    }
     if (target != GL_TEXTURE_ENV) {
         interp_bad_enum(ip, "texture environment target", target);
         return;
@@ -999,7 +1345,7 @@ int interp_textures_copy(interp *dst, const interp *src)
         memcpy(t->objs, s->objs, s->n * sizeof *t->objs);
     for (size_t i = 0; i < t->n; i++)
         obj_retain(&t->objs[i]);
-    for (int k = 0; k < 3; k++)
+    for (size_t k = 0; k < ZEROS(t); k++)
         obj_retain(&t->zero[k]);
     dst->tex = t;
     return 0;
@@ -1012,7 +1358,7 @@ void interp_textures_free(interp *ip)
         return;
     for (size_t i = 0; i < t->n; i++)
         obj_release(&t->objs[i]);
-    for (int k = 0; k < 3; k++)
+    for (size_t k = 0; k < ZEROS(t); k++)
         obj_release(&t->zero[k]);
     namemap_finish(&t->names);
     tr_free(t->objs);
@@ -1037,12 +1383,32 @@ static int last_level(const tex_obj *o, int b)
     return q < TEX_LEVELS ? q : TEX_LEVELS - 1;
 }
 
+/* A 3D texture's completeness: level 0 and, for a mipmapping
+ * minification filter, every level down to 1 x 1 x 1 defined with the
+ * size halving gives (interp_tex_image3d counts them). */
+static bool complete3d(const tex_obj *o)
+{
+    if (!o->img || !o->depth3)
+        return false;
+    if (!mipmap_filter(o->min_filter))
+        return true;
+    int top = 0, h = o->img->height / o->depth3;
+    while ((o->img->width >> top) > 1 || (h >> top) > 1 || (o->depth3 >> top) > 1)
+        top++;
+    for (int k = 0; k <= top && k < 32; k++)
+        if (!(o->levels & (1u << k)))
+            return false;
+    return true;
+}
+
 /* GL 2.1 3.8.10: complete when the base level (GL_TEXTURE_BASE_LEVEL) has
  * an image and, for a mipmapping minification filter, every level from it
  * to q has the size halving gives. A base level past the levels GL can
  * hold, or above GL_TEXTURE_MAX_LEVEL, is incomplete. */
 static bool complete(tex_obj *o)
 {
+    if (o->target == GL_TEXTURE_3D) /* drawn from level 0; the others only counted */
+        return complete3d(o);
     int b = o->base_level;
     if (b < 0 || b >= TEX_LEVELS || b > o->max_level || !*level_slot(o, b))
         return false;
@@ -1060,11 +1426,28 @@ static bool complete(tex_obj *o)
 
 #define UCAP(name) (INTERP_CAP_##name - INTERP_CAP_TEXTURE_1D)
 
-/* The unit's enabled target: GL_TEXTURE_2D wins over 1D. */
-static tex_obj *draw_obj(interp *ip, const interp_tex_unit *u)
+bool interp_texture_rect_on(const interp *ip, uint32_t k)
 {
-    if (u->caps[UCAP(TEXTURE_CUBE_MAP)]) /* GL 2.1 3.8.15: the cube map wins */
+    if (k >= INTERP_TEX_UNITS)
+        return false;
+    const gl_state *st = &ip->st;
+    bool active = k == st->active_unit;
+    const uint8_t *c = active ? &st->a.caps[INTERP_CAP_TEXTURE_1D] : st->units[k].caps;
+    bool rect = active ? st->a.caps[INTERP_CAP_TEXTURE_RECTANGLE] : st->units[k].rect;
+    return rect && !c[UCAP(TEXTURE_3D)] && !c[UCAP(TEXTURE_CUBE_MAP)];
+}
+
+/* The unit's enabled target, by GL's priority when several are enabled
+ * (GL 2.1 3.8.15 with ARB_texture_rectangle: cube map, 3D, rectangle, 2D,
+ * 1D). */
+static tex_obj *draw_obj(interp *ip, const interp_tex_unit *u, uint32_t k)
+{
+    if (u->caps[UCAP(TEXTURE_CUBE_MAP)])
         return get_obj(ip, GL_TEXTURE_CUBE_MAP, u->texture->binding_cube, false);
+    if (u->caps[UCAP(TEXTURE_3D)])
+        return get_obj(ip, GL_TEXTURE_3D, u->texture->binding_3d, false);
+    if (interp_texture_rect_on(ip, k))
+        return get_obj(ip, GL_TEXTURE_RECTANGLE, u->texture->binding_rect, false);
     if (u->caps[UCAP(TEXTURE_2D)])
         return get_obj(ip, GL_TEXTURE_2D, u->texture->binding_2d, false);
     if (u->caps[UCAP(TEXTURE_1D)])
@@ -1128,8 +1511,10 @@ static int32_t cube_for_draw(interp *ip, tex_obj *o, const interp_tex_unit *u, i
 
 /* The scene textures of o's levels from the base to q, last first, each
  * linked to the next (scene_texture.mip_next); returns the base's index.
- * st holds the sampling they share. */
-static int32_t mip_chain(interp *ip, tex_obj *o, scene_texture *st)
+ * st holds the sampling they share; ms and mt double each level as the
+ * mirror clamp does the base (interp_tex_mirror_fill), so the level of
+ * detail the writer computes from the sizes stays GL's. */
+static int32_t mip_chain(interp *ip, tex_obj *o, scene_texture *st, bool ms, bool mt)
 {
     int b = o->base_level, q = last_level(o, b);
     int32_t next = -1;
@@ -1139,11 +1524,11 @@ static int32_t mip_chain(interp *ip, tex_obj *o, scene_texture *st)
     for (int k = q; k >= b; k--) {
         const tex_image *im = *level_slot(o, k);
         scene_texture lt = *st;
-        lt.width = im->width;
-        lt.height = im->height;
-        lt.hash = im->hash;
+        lt.width = im->width * (ms ? 2 : 1);
+        lt.height = im->height * (mt ? 2 : 1);
+        lt.hash = im->hash ^ (ms ? 0x9e3779b97f4a7c15ull : 0) ^ (mt ? 0xc2b2ae3d27d4eb4full : 0);
         lt.mip_next = next;
-        size_t n = (size_t)im->width * (size_t)im->height * 4;
+        size_t n = (size_t)lt.width * (size_t)lt.height * 4;
         if (!interp_budget_texels(ip, n))
             return -1;
         lt.rgba = tr_realloc(NULL, n);
@@ -1151,12 +1536,41 @@ static int32_t mip_chain(interp *ip, tex_obj *o, scene_texture *st)
             ip->scene->failed = true;
             return -1;
         }
-        memcpy(lt.rgba, im->rgba, n);
+        if (ms || mt)
+            interp_tex_mirror_fill(lt.rgba, im, ms, mt);
+        else
+            memcpy(lt.rgba, im->rgba, n);
         next = scene_add_texture(ip->scene, &lt);
         if (next < 0)
             return -1;
     }
     return next;
+}
+
+/* The 2D image a 3D texture shows on a primitive over which r is
+ * constant (interp_tex_slice); NULL, with a note, when r varies (or is
+ * unknown: a GLU or GLUT solid). The caller frees it. */
+static tex_image *tex3d_slice(interp *ip, const tex_obj *o, int k)
+{
+    interp_textures *t = ip->tex;
+    double lo = t->r_min[k], hi = t->r_max[k];
+    if (!(lo <= hi) || hi - lo > 1e-6 || !isfinite(lo)) {
+        interp_diag(ip, DIAG_IGNORED,
+                    "3D texture %u drawn untextured: its r coordinate varies over a primitive",
+                    o->name);
+        interp_note(ip, DIAG_NOTE_TEX_3D);
+        return NULL;
+    }
+    size_t n = (size_t)o->img->width * (size_t)(o->img->height / o->depth3) * 4;
+    if (!interp_budget_texels(ip, n))
+        return NULL;
+    tex_image *img = interp_tex_slice(o->img, o->depth3, lo, o->mag_filter == GL_LINEAR, o->wrap_r);
+    if (!img) {
+        ip->scene->failed = true;
+        return NULL;
+    }
+    interp_note(ip, DIAG_NOTE_TEX_3D);
+    return img;
 }
 
 int32_t interp_texture_for_draw(interp *ip)
@@ -1170,18 +1584,25 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     if (!ip->scene || k < 0 || k >= INTERP_TEX_UNITS)
         return -1;
     interp_tex_unit u = interp_unit(ip, (uint32_t)k);
-    if (!u.caps[UCAP(TEXTURE_2D)] && !u.caps[UCAP(TEXTURE_1D)] && !u.caps[UCAP(TEXTURE_CUBE_MAP)])
+    if (!u.caps[UCAP(TEXTURE_2D)] && !u.caps[UCAP(TEXTURE_1D)] && !u.caps[UCAP(TEXTURE_3D)] &&
+        !u.caps[UCAP(TEXTURE_CUBE_MAP)] && !interp_texture_rect_on(ip, (uint32_t)k))
         return -1;
-    tex_obj *o = draw_obj(ip, &u);
-    if (o && o->target == GL_TEXTURE_CUBE_MAP)
-        return cube_for_draw(ip, o, &u, k);
+    tex_obj *o = draw_obj(ip, &u, (uint32_t)k);
     if (o && o->lost) {
         char what[DIAG_TEXT];
         snprintf(what, sizeof what, "texture %u (pixels #%u unreadable)", o->name, o->lost);
         interp_missing(ip, what);
     }
+    if (o && o->target == GL_TEXTURE_CUBE_MAP)
+        return cube_for_draw(ip, o, &u, k);
     if (!o || !complete(o))
         return -1;
+    /* A 3D texture: the slice its r picks, when r is constant. */
+    tex_image *slice = NULL;
+    if (o->depth3 && !(slice = tex3d_slice(ip, o, k)))
+        return -1;
+    const tex_image *im = slice ? slice : *level_slot(o, o->base_level); /* complete: not NULL */
+    int32_t idx = -1;
     GLenum env = u.texture->env_mode;
     /* A second unit's ADD and BLEND are combined (povwrite's multitexture
      * pigment); a lone unit draws them as MODULATE. */
@@ -1208,21 +1629,28 @@ int32_t interp_texture_for_unit(interp *ip, int k)
         (ip->prim_blend != SCENE_BLEND_OPAQUE || mipmap_filter(o->min_filter) ||
          o->target == GL_TEXTURE_CUBE_MAP || ga->lighting.two_side || ip->draw_unit[1] >= 0))
         interp_note(ip, DIAG_NOTE_TEX_MODULATE_CM); /* povwrite.c mesh_tint */
-    const tex_image *bi = *level_slot(o, o->base_level); /* complete: not NULL */
+    /* Mirror clamp: the image mirrored once beside itself, clamped beyond
+     * (interp_vertex_texcoord maps [-1, 1] onto it). */
+    bool ms = interp_mirror_clamp(o->wrap_s);
+    bool mt = o->target != GL_TEXTURE_1D && interp_mirror_clamp(o->wrap_t);
+    if (ms || mt)
+        interp_note(ip, DIAG_NOTE_TEX_MIRROR_CLAMP);
     scene_texture st;
     memset(&st, 0, sizeof st);
-    st.width = bi->width;
-    st.height = bi->height;
-    st.hash = bi->hash;
+    st.width = im->width * (ms ? 2 : 1);
+    st.height = im->height * (mt ? 2 : 1);
+    st.hash = im->hash ^ (ms ? 0x9e3779b97f4a7c15ull : 0) ^ (mt ? 0xc2b2ae3d27d4eb4full : 0);
     st.mip_next = -1;
-    st.repeat_s = !clamps(o->wrap_s);
-    st.repeat_t = o->target == GL_TEXTURE_1D || !clamps(o->wrap_t);
+    st.repeat_s = !clamps(o->wrap_s) && !ms;
+    st.repeat_t = o->target == GL_TEXTURE_1D || (!clamps(o->wrap_t) && !mt);
     st.mirror_s = o->wrap_s == GL_MIRRORED_REPEAT;
     st.mirror_t = o->target != GL_TEXTURE_1D && o->wrap_t == GL_MIRRORED_REPEAT;
     st.linear = o->mag_filter == GL_LINEAR;
-    st.border_s = o->wrap_s == GL_CLAMP || o->wrap_s == GL_CLAMP_TO_BORDER;
+    st.border_s = o->wrap_s == GL_CLAMP || o->wrap_s == GL_CLAMP_TO_BORDER ||
+                  o->wrap_s == GL_MIRROR_CLAMP_TO_BORDER_EXT;
     st.border_t = o->target != GL_TEXTURE_1D &&
-                  (o->wrap_t == GL_CLAMP || o->wrap_t == GL_CLAMP_TO_BORDER);
+                  (o->wrap_t == GL_CLAMP || o->wrap_t == GL_CLAMP_TO_BORDER ||
+                   o->wrap_t == GL_MIRROR_CLAMP_TO_BORDER_EXT);
     memcpy(st.border, o->border, sizeof st.border);
     st.env_mode = env;
     memcpy(st.env_color, u.texture->env_color, sizeof st.env_color);
@@ -1253,10 +1681,12 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     st.colour_is_texel = (env == GL_REPLACE && b != GL_ALPHA) ||
                          (env == GL_DECAL && b != GL_RGBA && b != GL_ALPHA);
 
-    if (mipmap_filter(o->min_filter)) /* the levels, each its own scene texture */
-        return mip_chain(ip, o, &st);
+    if (mipmap_filter(o->min_filter) && !slice) { /* the levels, each its own scene texture */
+        idx = mip_chain(ip, o, &st, ms, mt);
+        goto out;
+    }
     struct tex_cache *tc = &ip->tex->cache[ip->draw_unit[1] == k];
-    if (tc->img == bi && tc->sc == ip->scene &&
+    if (!slice && tc->img == im && tc->sc == ip->scene &&
         tc->index >= 0 && (size_t)tc->index < ip->scene->ntextures &&
         tc->ntex <= ip->scene->ntextures) {
         const scene_texture *have = &ip->scene->textures[tc->index];
@@ -1266,21 +1696,26 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     }
     size_t n = (size_t)st.width * (size_t)st.height * 4;
     if (!interp_budget_texels(ip, n))
-        return -1;
+        goto out;
     st.rgba = tr_realloc(NULL, n);
     if (!st.rgba) {
         ip->scene->failed = true;
-        return -1;
+        goto out;
     }
-    memcpy(st.rgba, bi->rgba, n);
-    int32_t idx = scene_add_texture(ip->scene, &st);
-    if (idx >= 0) {
-        tc->img = bi;
+    if (ms || mt)
+        interp_tex_mirror_fill(st.rgba, im, ms, mt);
+    else
+        memcpy(st.rgba, im->rgba, n);
+    idx = scene_add_texture(ip->scene, &st);
+    if (idx >= 0 && !slice) {
+        tc->img = im;
         tc->sc = ip->scene;
         tc->index = idx;
         tc->ntex = ip->scene->ntextures;
         tc->st = ip->scene->textures[idx];
     }
+out:
+    tr_free(slice);
     return idx;
 }
 
@@ -1296,6 +1731,24 @@ static bool normal_matrix(interp_textures *t, const mat4 *mv)
     t->nrm_of = *mv;
     t->nrm_ok = true;
     return true;
+}
+
+/* What the drawn texture makes of s and t: a rectangle texture's are in
+ * texels (ARB_texture_rectangle), divided here by its size; a mirror
+ * clamp's [-1, 1] lands on the doubled image of interp_texture_for_unit. */
+static void texcoord_fit(interp *ip, const interp_tex_unit *u, int unit, float out[2])
+{
+    tex_obj *o = draw_obj(ip, u, (uint32_t)unit);
+    if (!o || !o->img)
+        return;
+    if (o->target == GL_TEXTURE_RECTANGLE) {
+        out[0] /= (float)o->img->width;
+        out[1] /= (float)o->img->height;
+    }
+    if (interp_mirror_clamp(o->wrap_s))
+        out[0] = (out[0] + 1) * 0.5f;
+    if (o->target != GL_TEXTURE_1D && interp_mirror_clamp(o->wrap_t))
+        out[1] = (out[1] + 1) * 0.5f;
 }
 
 void interp_vertex_texcoord(interp *ip, int unit, const double obj[4], const float nrm[3],
@@ -1379,6 +1832,14 @@ void interp_vertex_texcoord3(interp *ip, int unit, const double obj[4], const fl
     out[0] = (float)(r[0] / q);
     out[1] = (float)(r[1] / q);
     out[2] = (float)(r[2] / q);
+    if (u.caps[UCAP(TEXTURE_3D)] && !u.caps[UCAP(TEXTURE_CUBE_MAP)] && ip->tex && unit >= 0 &&
+        unit < INTERP_TEX_UNITS) {
+        double rq = r[2] / q;
+        interp_textures *t = ip->tex;
+        t->r_min[unit] = fmin(t->r_min[unit], rq);
+        t->r_max[unit] = fmax(t->r_max[unit], rq);
+    }
+    texcoord_fit(ip, &u, unit, out);
 }
 
 bool interp_unit_cube(interp *ip, int unit)

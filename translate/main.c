@@ -367,8 +367,10 @@ static void *worker(void *arg)
     job *j = arg;
     worker_ctx w = {j, false};
     translator *t = translator_create(j->reader, &j->reader_lock);
-    if (t)
+    if (t) {
         translator_set_heavy(t, heavy_enter, &w);
+        translator_set_vertex_lighting(t, j->o->vertex_lighting);
+    }
     outbuf ob;
     bool ob_ok = outbuf_init(&ob, 1 << 20, fd_flush, NULL) == 0;
     for (;;) {

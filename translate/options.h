@@ -44,6 +44,7 @@ typedef struct options {
     int jobs; /* 0 until opt_finish_parse: one per core */
     bool dump, quiet, help, version;
     pov_options pov; /* shadows, reflection, area lights (options_light.c) */
+    bool vertex_lighting; /* --vertex-lighting (interp_gouraud.c) */
     const char *name_pattern; /* NULL: frame-NNNNN, or rayglFrameBegin's name */
     look_settings look;       /* look.h */
     render_settings render;   /* render.h */

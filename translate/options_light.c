@@ -58,3 +58,8 @@ bool opt_set_area_lights(options *o, const char *v, const opt_ctx *ctx, opt_err 
     o->pov.area_lights = n;
     return true;
 }
+
+bool opt_set_vertex_lighting(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
+{
+    return opt_bool(v, &o->vertex_lighting, ctx, err);
+}

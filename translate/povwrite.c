@@ -1314,6 +1314,46 @@ static int write_overlay(povwriter *w, outbuf *ob, const scene *s)
     return 0;
 }
 
+/* A display-list instance is lit by the set of its prototype's first lit
+ * mesh (a list that changes lights inside it is lit by the first). */
+static int32_t instance_set(const povwriter *w, const scene *s, const scene_instance *in)
+{
+    const scene_proto *pr = &s->protos[in->proto];
+    for (size_t k = 0; k < pr->nmeshes && pr->first_mesh + k < s->nmeshes; k++) {
+        int32_t set = povlight_look_set(&w->light, &s->meshes[pr->first_mesh + k].look);
+        if (set >= 0)
+            return set;
+    }
+    return POVLIGHT_UNGROUPED;
+}
+
+/* The meshes, solids and display-list instances of the writer's pass
+ * (w->light.pass). */
+static int write_objects(povwriter *w, outbuf *ob, const scene *s)
+{
+    for (size_t i = 0; i < s->nmeshes; i++) {
+        const scene_mesh *m = &s->meshes[i];
+        if (m->tri_count > 0 && !m->proto && povlight_in_pass(&w->light, &m->look) &&
+            write_mesh2(w, ob, s->verts, s->tris + m->first_tri, m->tri_count, &m->look,
+                        m->in_eye ? NULL : &m->to_eye) != 0)
+            return -1;
+    }
+    povwrite_solids(ob, s, &w->light);
+    for (size_t i = 0; i < s->ninstances; i++) {
+        const scene_instance *in = &s->instances[i];
+        if (!mat4_finite(&in->to_eye) || in->proto >= s->nprotos)
+            continue;
+        if (w->light.pass != POVLIGHT_ALL && instance_set(w, s, in) != w->light.pass)
+            continue;
+        outbuf_puts(ob, "object{RGL_L");
+        outbuf_u64(ob, in->proto);
+        outbuf_putc(ob, ' ');
+        put_matrix(ob, &in->to_eye);
+        outbuf_puts(ob, "}\n");
+    }
+    return 0;
+}
+
 int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_info *info)
 {
     outbuf_puts(ob, "// ");
@@ -1372,24 +1412,27 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
         outbuf_puts(ob, "sphere{");
         put_vec3f(ob, anchor);
         outbuf_puts(ob, ",0}\n");
-        for (size_t i = 0; i < s->nmeshes; i++) {
-            const scene_mesh *m = &s->meshes[i];
-            if (m->tri_count > 0 && !m->proto &&
-                write_mesh2(w, ob, s->verts, s->tris + m->first_tri, m->tri_count, &m->look,
-                            m->in_eye ? NULL : &m->to_eye) != 0)
-                return -1;
+        if (w->light.groups) {
+            /* Each light set's objects in a light_group with its lights
+             * (docs/mapping.md "Lights per object"); global_lights on lets
+             * the lights outside every group (rayglFrameBegin's, --light)
+             * light them as they light the rest. */
+            for (uint32_t k = 0; k < s->nlightsets && k < SCENE_MAX_LIGHTSETS; k++) {
+                if (!w->light.used[k])
+                    continue;
+                outbuf_puts(ob, "light_group{\n");
+                povlight_set_lights(&w->light, ob, k);
+                w->light.pass = (int32_t)k;
+                if (write_objects(w, ob, s) != 0)
+                    return -1;
+                outbuf_puts(ob, "global_lights on}\n");
+            }
+            w->light.pass = POVLIGHT_UNGROUPED;
         }
-        povwrite_solids(ob, s, &w->light);
-        for (size_t i = 0; i < s->ninstances; i++) {
-            const scene_instance *in = &s->instances[i];
-            if (!mat4_finite(&in->to_eye) || in->proto >= s->nprotos)
-                continue;
-            outbuf_puts(ob, "object{RGL_L");
-            outbuf_u64(ob, in->proto);
-            outbuf_putc(ob, ' ');
-            put_matrix(ob, &in->to_eye);
-            outbuf_puts(ob, "}\n");
-        }
+        int orc = write_objects(w, ob, s);
+        w->light.pass = POVLIGHT_ALL;
+        if (orc != 0)
+            return -1;
         if (write_lines(w, ob, s) != 0)
             return -1;
         write_clip(ob, &s->camera);

@@ -7,13 +7,18 @@
  *   P A ambient_light + P E + sum_j fade_j spot_j C_j (D P (N.L) + S (N.H)^(1/r)),
  * its specular belonging to the surface and its light having one colour.
  * So P = d (at least 1e-3 per channel), A = a (Ga + sum la_i) / P with
- * ambient_light 1, E = e / P, D = 1, S = mean(k), r = 1 / s; and each GL
- * light becomes up to two POV-Ray lights at its place: one of colour ls
- * (diffuse and highlights) and a shadowless one of colour ld - ls (POV-Ray
- * gives shadowless lights no highlights), so a light without specular
- * makes none. Shadowless lights ignore a spotlight's cone, so a spot whose
- * specular colour differs from its diffuse is one light of its diffuse
- * colour (approximate). Attenuation maps onto fade_distance/fade_power (exact when
+ * ambient_light 1, E = e / P, D = 1, S = mean(k), r = 1 / s; and with
+ * --no-shadows each GL light becomes up to two POV-Ray lights at its
+ * place: one of colour ls (diffuse and highlights) and a shadowless one of
+ * colour ld - ls (POV-Ray gives shadowless lights no highlights), so a
+ * light without specular makes none. Shadowless lights ignore a
+ * spotlight's cone, so a spot whose specular colour differs from its
+ * diffuse is one light of its diffuse colour (approximate). With shadows a
+ * shadow must take the whole light: each GL light is one shadow-casting
+ * light, of colour ld with S scaled by the light set's specular multiple,
+ * or of colour ls with P = d / t where the multiple t is per channel (see
+ * put_gl_light). The lights of each light set light only its objects
+ * (light_group, povwrite.c). Attenuation maps onto fade_distance/fade_power (exact when
  * one of GL's linear and quadratic terms is zero), spots onto spotlight
  * with radius = falloff = cutoff and tightness = exponent (exact).
  */
@@ -202,6 +207,64 @@ static double gl_att_spot(const scene_light *l, const double p[3])
     return f;
 }
 
+/* ---- Light sets ---------------------------------------------------------------------- */
+
+static int32_t material_set(const scene *s, const scene_look *look)
+{
+    if (!look->lit || look->material < 0 || (size_t)look->material >= s->nmaterials)
+        return POVLIGHT_UNGROUPED;
+    uint32_t k = s->materials[look->material].lightset;
+    return k < SCENE_MAX_LIGHTSETS ? (int32_t)k : POVLIGHT_UNGROUPED;
+}
+
+/* Which sets the frame's objects use (the frame may hold sets of draws a
+ * glClear erased), and each set's highlight multiple. */
+static void begin_sets(povlight *pl, const scene *s)
+{
+    size_t nused = 0;
+    uint8_t textured[SCENE_MAX_LIGHTSETS];
+    memset(textured, 0, sizeof textured);
+    for (size_t i = 0; i < s->nmeshes + s->nsolids; i++) {
+        const scene_look *look = i < s->nmeshes ? &s->meshes[i].look
+                                                : &s->solids[i - s->nmeshes].look;
+        if (i < s->nmeshes && s->meshes[i].tri_count == 0)
+            continue;
+        int32_t k = material_set(s, look);
+        if (k >= 0 && look->texture >= 0)
+            textured[k] = 1;
+        if (k >= 0 && !pl->used[k]) {
+            pl->used[k] = 1;
+            nused++;
+        }
+    }
+    pl->groups = nused > 1;
+    pl->pass = POVLIGHT_ALL;
+    for (uint32_t k = 0; k < s->nlightsets && k < SCENE_MAX_LIGHTSETS; k++) {
+        size_t first = 0, n = 0;
+        while (first < s->nlights && (s->lights[first].aimed || s->lights[first].set != k))
+            first++;
+        while (first + n < s->nlights && !s->lights[first + n].aimed &&
+               s->lights[first + n].set == k)
+            n++;
+        double r = 1; /* no GL light: the user's (--light) keep the material's */
+        double t[3];
+        if (n > 0 && !scene_lights_specular_ratio(s->lights + first, n, &r) && !textured[k] &&
+            scene_lights_specular_channels(s->lights + first, n, t))
+            memcpy(pl->set_channel[k], t, sizeof t);
+        pl->set_ratio[k] = r;
+    }
+}
+
+int32_t povlight_look_set(const povlight *pl, const scene_look *look)
+{
+    return pl->groups ? material_set(pl->s, look) : POVLIGHT_UNGROUPED;
+}
+
+bool povlight_in_pass(const povlight *pl, const scene_look *look)
+{
+    return pl->pass == POVLIGHT_ALL || povlight_look_set(pl, look) == pl->pass;
+}
+
 /* ---- Per frame --------------------------------------------------------------------- */
 
 void povlight_begin(povlight *pl, const scene *s, const pov_options *options)
@@ -229,9 +292,13 @@ void povlight_begin(povlight *pl, const scene *s, const pov_options *options)
         if (l->aimed)
             continue;
         double f = gl_att_spot(l, pl->centre);
-        for (int k = 0; k < 3; k++)
+        for (int k = 0; k < 3; k++) {
             pl->light_ambient[k] += fin(l->ambient[k] * f);
+            if (l->set < SCENE_MAX_LIGHTSETS)
+                pl->set_ambient[l->set][k] += fin(l->ambient[k] * f);
+        }
     }
+    begin_sets(pl, s);
 }
 
 /* ---- Surfaces ------------------------------------------------------------------------ */
@@ -292,12 +359,21 @@ static void texture_body(const povlight *pl, outbuf *ob, const scene_look *look,
     const float *ks = cm & SCENE_CM_SPECULAR ? c : m->specular[f];
     const float *ke = cm & SCENE_CM_EMISSION ? c : m->emission[f];
     double p[3], amb[3], em[3];
+    bool in_set = m->lightset < SCENE_MAX_LIGHTSETS && m->lightset < s->nlightsets;
+    const float *la = in_set ? pl->set_ambient[m->lightset] : pl->light_ambient;
+    /* The per-channel form belongs to untextured sets (begin_sets): a
+     * pigment never meets it. */
+    const double *chan = in_set && !pl->opt.no_shadows && pl->set_channel[m->lightset][0] > 0
+                             ? pl->set_channel[m->lightset]
+                             : NULL;
     /* kdp: the pigment is the texel times kdp / max(kdp) (povlight_modulate_tint),
      * and diffuse max(kdp) makes the product the texel times kd per channel. */
     double kmax = kdp ? fmax(kdp[0], fmax(kdp[1], kdp[2])) : 1;
     for (int k = 0; k < 3; k++) {
-        p[k] = pigment ? (kdp ? kdp[k] / kmax : 1) : kd[k] > MIN_PIGMENT ? kd[k] : MIN_PIGMENT;
-        amb[k] = gain * ka[k] * ((double)m->model_ambient[k] + pl->light_ambient[k]) / p[k];
+        /* Per-channel form: lights of colour ls = t ld, so kd ld = (kd / t) ls. */
+        double kdk = chan && !pigment ? kd[k] / chan[k] : kd[k];
+        p[k] = pigment ? (kdp ? kdp[k] / kmax : 1) : kdk > MIN_PIGMENT ? kdk : MIN_PIGMENT;
+        amb[k] = gain * ka[k] * ((double)m->model_ambient[k] + la[k]) / p[k];
         em[k] = gain * ke[k] / p[k];
     }
     if (pigment) {
@@ -330,6 +406,10 @@ static void texture_body(const povlight *pl, outbuf *ob, const scene_look *look,
     /* POV-Ray's highlights are not dimmed by transmit; GL blends them
      * with the rest of the colour, by alpha. */
     double spec = gain * ((double)ks[0] + ks[1] + ks[2]) / 3 * (1 - t);
+    /* With shadows each light is one light of its diffuse colour
+     * (povlight_lights): the highlight is the set's multiple of it. */
+    if (!pl->opt.no_shadows && in_set && !chan)
+        spec *= pl->set_ratio[m->lightset];
     if (spec > 0) {
         double sh = m->shininess[f];
         outbuf_puts(ob, " specular ");
@@ -650,46 +730,82 @@ static void put_light(const povlight *pl, outbuf *ob, const scene_light *l, cons
     outbuf_puts(ob, "}\n");
 }
 
+/* One GL light. With --no-shadows: a light of colour ls (diffuse and
+ * highlights) and a shadowless one of ld - ls (no highlights), exact. With
+ * shadows, a shadow must take the whole light: one shadow-casting light of
+ * colour ld, whose highlights the finish scales by the set's multiple
+ * (texture_body; exact when ls is that multiple of ld). A light with
+ * specular and no diffuse keeps the split (its diffuse parts cancel). */
+static void put_gl_light(const povlight *pl, outbuf *ob, const scene_light *l)
+{
+    if (l->kind == SCENE_LIGHT_PARALLEL && !(len3(l->direction) > 0))
+        return; /* GL: a direction of zero lights nothing but ambient */
+    double spec[3], rest[3], dif[3];
+    for (int k = 0; k < 3; k++) {
+        spec[k] = l->specular[k];
+        rest[k] = (double)l->color[k] - l->specular[k];
+        dif[k] = l->color[k];
+    }
+    if (!pl->opt.no_shadows && nonzero3(dif)) {
+        if (l->set < SCENE_MAX_LIGHTSETS && pl->set_channel[l->set][0] > 0)
+            put_light(pl, ob, l, spec, false); /* the per-channel form: ls */
+        else
+            put_light(pl, ob, l, dif, false);
+        return;
+    }
+    if (l->kind == SCENE_LIGHT_SPOT && nonzero3(rest)) {
+        /* POV-Ray's shadowless lights ignore the spot cone: a spot is
+         * one light of its diffuse colour, its highlights those of a
+         * specular colour equal to it (approximate; noted). */
+        for (int k = 0; k < 3; k++) {
+            spec[k] = l->color[k];
+            rest[k] = 0;
+        }
+    }
+    if (nonzero3(spec))
+        put_light(pl, ob, l, spec, false);
+    if (nonzero3(rest)) {
+        if (!pl->opt.no_shadows)
+            outbuf_puts(ob, "// diffuse beyond the light's specular colour: no shadow, no "
+                            "highlight (docs/mapping.md)\n");
+        put_light(pl, ob, l, rest, true);
+    }
+}
+
+/* rayglFrameBegin's white light, as the paper wrote it. */
+static void put_aimed(outbuf *ob, const scene_light *l)
+{
+    double c[3] = {l->color[0], l->color[1], l->color[2]};
+    outbuf_puts(ob, "light_source{");
+    put_vec(ob, l->position);
+    outbuf_putc(ob, ' ');
+    put_rgb3(ob, c);
+    outbuf_puts(ob, " parallel point_at");
+    put_vec(ob, l->point_at);
+    outbuf_puts(ob, "}\n");
+}
+
 void povlight_lights(const povlight *pl, outbuf *ob)
 {
     const scene *s = pl->s;
+    /* One set lights the objects: its lights, for every object. */
+    int32_t only = -1;
+    for (uint32_t k = 0; k < s->nlightsets && k < SCENE_MAX_LIGHTSETS && only < 0; k++)
+        if (pl->used[k])
+            only = (int32_t)k;
     for (size_t i = 0; i < s->nlights; i++) {
         const scene_light *l = &s->lights[i];
-        if (l->aimed) {
-            /* rayglFrameBegin's white light, as the paper wrote it. */
-            double c[3] = {l->color[0], l->color[1], l->color[2]};
-            outbuf_puts(ob, "light_source{");
-            put_vec(ob, l->position);
-            outbuf_putc(ob, ' ');
-            put_rgb3(ob, c);
-            outbuf_puts(ob, " parallel point_at");
-            put_vec(ob, l->point_at);
-            outbuf_puts(ob, "}\n");
-            continue;
-        }
-        if (l->kind == SCENE_LIGHT_PARALLEL && !(len3(l->direction) > 0))
-            continue; /* GL: a direction of zero lights nothing but ambient */
-        double spec[3], rest[3];
-        for (int k = 0; k < 3; k++) {
-            spec[k] = l->specular[k];
-            rest[k] = (double)l->color[k] - l->specular[k];
-        }
-        if (l->kind == SCENE_LIGHT_SPOT && nonzero3(rest)) {
-            /* POV-Ray's shadowless lights ignore the spot cone: a spot is
-             * one light of its diffuse colour, its highlights those of a
-             * specular colour equal to it (approximate; noted). */
-            for (int k = 0; k < 3; k++) {
-                spec[k] = l->color[k];
-                rest[k] = 0;
-            }
-        }
-        if (nonzero3(spec))
-            put_light(pl, ob, l, spec, false);
-        if (nonzero3(rest)) {
-            if (!pl->opt.no_shadows)
-                outbuf_puts(ob, "// diffuse beyond the light's specular colour: no shadow, no "
-                                "highlight (docs/mapping.md)\n");
-            put_light(pl, ob, l, rest, true);
-        }
+        if (l->aimed)
+            put_aimed(ob, l);
+        else if (!pl->groups && (only < 0 || l->set == (uint32_t)only))
+            put_gl_light(pl, ob, l);
     }
+}
+
+void povlight_set_lights(const povlight *pl, outbuf *ob, uint32_t set)
+{
+    const scene *s = pl->s;
+    for (size_t i = 0; i < s->nlights; i++)
+        if (!s->lights[i].aimed && s->lights[i].set == set)
+            put_gl_light(pl, ob, &s->lights[i]);
 }

@@ -19,7 +19,25 @@ typedef struct povlight {
     double centre[3]; /* of the drawn geometry's bounding box, eye space */
     double radius;    /* half its diagonal (at least a small positive value) */
     float light_ambient[3]; /* sum of the GL lights' ambient, attenuated at the centre */
+    /* Light sets (scene_light.set): per set, whether an object of the
+     * frame uses it, its lights' ambient as light_ambient, and the multiple
+     * of the diffuse colour its highlights take with shadows on. groups:
+     * more than one set is used, each lights its objects in a light_group;
+     * pass: which objects the writer writes now (POVLIGHT_ALL, or a set's,
+     * or POVLIGHT_UNGROUPED: the rest). */
+    bool groups;
+    int32_t pass;
+    uint8_t used[SCENE_MAX_LIGHTSETS];
+    float set_ambient[SCENE_MAX_LIGHTSETS][3];
+    double set_ratio[SCENE_MAX_LIGHTSETS];
+    /* With shadows, a set whose lights' specular is one multiple of their
+     * diffuse per channel (channel[k] > 0; none textured): lights of their
+     * specular colour, pigments scaled by 1 / channel. */
+    double set_channel[SCENE_MAX_LIGHTSETS][3];
 } povlight;
+
+#define POVLIGHT_ALL (-2)
+#define POVLIGHT_UNGROUPED (-1)
 
 /* Fills pl for scene s (options may be NULL: the defaults). */
 void povlight_begin(povlight *pl, const scene *s, const pov_options *options);
@@ -89,7 +107,19 @@ bool povlight_front_facing(const povlight *pl, const double a[3], const double b
 void povlight_front_normal(const povlight *pl, const mat4 *to_eye, const mat4 *to_eye_inv,
                            const double p[3], const float n[3], float out[3]);
 
-/* The light_source statements of the scene's GL lights. */
+/* The light_source statements of the scene's GL lights (with groups: the
+ * lights that light everything, rayglFrameBegin's). */
 void povlight_lights(const povlight *pl, outbuf *ob);
+
+/* The light set of a look's objects, POVLIGHT_UNGROUPED for an unlit one or
+ * without groups. */
+int32_t povlight_look_set(const povlight *pl, const scene_look *look);
+
+/* Whether an object of this look belongs to the writer's current pass. */
+bool povlight_in_pass(const povlight *pl, const scene_look *look);
+
+/* The light_source statements of light set `set` (inside its
+ * light_group). */
+void povlight_set_lights(const povlight *pl, outbuf *ob, uint32_t set);
 
 #endif

@@ -226,6 +226,8 @@ void povwrite_names(outbuf *ob, const scene *s, uint32_t names)
 void povwrite_solids(outbuf *ob, const scene *s, const povlight *pl)
 {
     for (size_t i = 0; i < s->nsolids; i++) {
+        if (!povlight_in_pass(pl, &s->solids[i].look))
+            continue;
         povwrite_names(ob, s, s->solids[i].look.names);
         write_solid(ob, s, &s->solids[i], pl);
     }

@@ -45,7 +45,7 @@ void povtex_finish(povtex *pt);
  * texels' alpha (when some is below 1), which POV-Ray reads as transmit.
  * tint (NULL: none): the texels' colour is multiplied by it per channel
  * (0..1), GL_MODULATE's product with a coloured material made in the image
- * (docs/mapping.md section 21). With the texture's alpha test
+ * (docs/mapping.md section 24). With the texture's alpha test
  * (alpha_func), texels whose alpha (times alpha_af when alpha_uses_af)
  * fails are made fully transparent, the others keep their alpha
  * (keep_alpha) or become opaque. */

@@ -52,6 +52,7 @@ void scene_reset(scene *s)
     s->nmaterials = 0;
     s->nnames = s->names_last = 0;
     s->lights_fixed = false;
+    s->nlightsets = 0;
     memset(&s->fog, 0, sizeof s->fog);
     s->have_camera = false;
     s->have_view = false;
@@ -521,3 +522,44 @@ bool scene_camera_pixel_size(const scene_camera *cam, const double p[3], double 
     *py = t * ul / cam->height;
     return isfinite(*px) && isfinite(*py);
 }
+
+bool scene_lights_specular_ratio(const scene_light *l, size_t n, double *ratio)
+{
+    double dd = 0, ds = 0;
+    for (size_t i = 0; i < n; i++)
+        for (int k = 0; k < 3; k++) {
+            dd += (double)l[i].color[k] * l[i].color[k];
+            ds += (double)l[i].color[k] * l[i].specular[k];
+        }
+    double r = dd > 0 && isfinite(ds / dd) ? ds / dd : 0;
+    *ratio = r;
+    for (size_t i = 0; i < n; i++)
+        for (int k = 0; k < 3; k++)
+            if (fabs(r * l[i].color[k] - l[i].specular[k]) > 1e-6 * (1 + fabs(l[i].specular[k])))
+                return false;
+    return true;
+}
+
+bool scene_lights_specular_channels(const scene_light *l, size_t n, double t[3])
+{
+    for (int k = 0; k < 3; k++) {
+        t[k] = -1;
+        for (size_t i = 0; i < n; i++) {
+            double d = l[i].color[k], sp = l[i].specular[k];
+            if (d == 0) {
+                if (sp != 0)
+                    return false;
+                continue;
+            }
+            double r = sp / d;
+            if (t[k] < 0)
+                t[k] = r;
+            else if (fabs(r - t[k]) > 1e-6 * (1 + t[k]))
+                return false;
+        }
+        if (!(t[k] > 0) || !isfinite(t[k]))
+            return false;
+    }
+    return true;
+}
+

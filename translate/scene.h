@@ -154,7 +154,14 @@ typedef struct scene_light {
     float ambient[3], specular[3];
     float spot_exponent, spot_cutoff;   /* degrees */
     float attenuation[3];               /* constant, linear, quadratic */
+    uint32_t set;        /* the light set it belongs to (not aimed lights) */
 } scene_light;
+
+/* Light sets (docs/mapping.md "Lights per object"): the GL lights of a lit
+ * draw are one set; a later draw under other lights opens another, and its
+ * materials name it (scene_material.lightset). A set's lights are
+ * consecutive in scene.lights. Aimed lights light everything. */
+#define SCENE_MAX_LIGHTSETS 256
 
 /* A GL material, front [0] and back [1], as the lit runs that refer to it
  * saw it (GL 1.x 2.13.1). color_material names the terms (SCENE_CM_* bits,
@@ -175,6 +182,7 @@ typedef struct scene_material {
     uint8_t color_material[2];
     bool two_sided;
     bool local_viewer;
+    uint32_t lightset; /* the lights that light it (scene_light.set) */
 } scene_material;
 
 /* How the colour behind a face shows through it (glBlendFunc with
@@ -312,6 +320,7 @@ typedef struct scene {
     uint32_t *names; /* name stacks that looks refer to: a count, then the names */
     size_t nnames, cap_names, names_last; /* names_last: 1 + where the last one starts */
     bool lights_fixed; /* lights hold the GL lights of the first lit draw */
+    uint32_t nlightsets; /* light sets in lights, numbered 0.. */
     /* World -> eye: the modelview just after the frame's first gluLookAt
      * (raygl2pov's --camera-* and --light overrides are given in world
      * coordinates when there is one; look.c). */
@@ -388,6 +397,17 @@ int32_t scene_add_texture(scene *s, const scene_texture *t);
 int32_t scene_material_index(scene *s, const scene_material *m);
 
 bool scene_look_equal(const scene_look *a, const scene_look *b);
+
+/* The one multiple r of their diffuse colours (scene_light.color) that
+ * fits the specular colours of lights l[0..n-1] best (least squares over
+ * every channel; 0 without diffuse); true when each specular colour is r
+ * times its diffuse colour. */
+bool scene_lights_specular_ratio(const scene_light *l, size_t n, double *ratio);
+
+/* Per channel k, the one ratio t[k] > 0 of every light's specular to its
+ * diffuse (lights without diffuse in a channel have no specular there);
+ * false when the lights disagree, or a channel has no specular. */
+bool scene_lights_specular_channels(const scene_light *l, size_t n, double t[3]);
 
 /* The look.names value of the name stack names[0..n-1] (bottom first):
  * the last stack added when equal, else a new one; 0 for an empty stack

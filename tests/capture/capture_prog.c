@@ -16,6 +16,9 @@
  *   --teapot            GLUT: each frame is one glutSolidTeapot instead
  *   --nurbs             each frame is one GLU NURBS surface instead (GLU
  *                       draws it through evaluators: glMap2f, glEvalMesh2)
+ *   --nurbs-tess        as --nurbs, in GLU_NURBS_TESSELLATOR mode: GLU hands
+ *                       the triangles to callbacks that draw them with
+ *                       glBegin, glNormal3fv, glVertex3fv, glEnd
  *   --hang FILE         after the frames, start one more (glBegin, two
  *                       vertices), create FILE, and wait to be killed
  *   --exec-child        after frame 0, fork; the child runs this program
@@ -151,6 +154,11 @@ static void bitmap_text(void)
     glutBitmapString(GLUT_BITMAP_8_BY_13, (const unsigned char *)"GB");
 }
 
+static void GLAPIENTRY tess_begin(GLenum mode) { glBegin(mode); }
+static void GLAPIENTRY tess_vertex(GLfloat *v) { glVertex3fv(v); }
+static void GLAPIENTRY tess_normal(GLfloat *n) { glNormal3fv(n); }
+static void GLAPIENTRY tess_end(void) { glEnd(); }
+
 static void draw(int frame, int thread)
 {
     if (opt.unrecorded)
@@ -163,6 +171,16 @@ static void draw(int frame, int thread)
         return;
     }
     if (opt.nurbs) {
+        /* The tessellator's callbacks: the program's own drawing. */
+        static const struct {
+            GLenum which;
+            void (*fn)(void);
+        } cbs[] = {
+            {GLU_NURBS_BEGIN, (void (*)(void))tess_begin},
+            {GLU_NURBS_VERTEX, (void (*)(void))tess_vertex},
+            {GLU_NURBS_NORMAL, (void (*)(void))tess_normal},
+            {GLU_NURBS_END, (void (*)(void))tess_end},
+        };
         /* A bicubic Bezier patch as a NURBS surface, a dome over [-0.6, 0.6]^2. */
         static GLfloat knots[8] = {0, 0, 0, 0, 1, 1, 1, 1};
         GLfloat ctl[4][4][3];
@@ -174,6 +192,11 @@ static void draw(int frame, int thread)
             }
         GLUnurbsObj *n = gluNewNurbsRenderer();
         gluNurbsProperty(n, GLU_SAMPLING_TOLERANCE, 25.0f);
+        if (opt.nurbs == 2) {
+            gluNurbsProperty(n, GLU_NURBS_MODE, GLU_NURBS_TESSELLATOR);
+            for (size_t i = 0; i < sizeof cbs / sizeof cbs[0]; i++)
+                gluNurbsCallback(n, cbs[i].which, cbs[i].fn);
+        }
         glColor3f(1, 0.5f, 0);
         gluBeginSurface(n);
         gluNurbsSurface(n, 8, knots, 8, knots, 4 * 3, 3, &ctl[0][0][0], 4, 4, GL_MAP2_VERTEX_3);
@@ -408,6 +431,8 @@ int main(int argc, char **argv)
             opt.teapot = 1;
         else if (strcmp(a, "--nurbs") == 0)
             opt.nurbs = 1;
+        else if (strcmp(a, "--nurbs-tess") == 0)
+            opt.nurbs = 2;
         else if (strcmp(a, "--exec-child") == 0)
             opt.exec_child = 1;
         else if (strcmp(a, "--fork-child") == 0)

@@ -15,8 +15,11 @@
 #   unrecorded               calls passed through unrecorded: counted per
 #                            frame (@NotRecorded), reported by raygl2pov;
 #                            queries not counted
-#   nurbs                    3 GLU NURBS surfaces: GLU draws them through
-#                            evaluators, recorded and translated as meshes
+#   nurbs                    3 GLU NURBS surfaces: recorded as the GLU calls,
+#                            none of the GL calls GLU draws them with;
+#                            translated as meshes
+#   nurbs-tess               the same in GLU_NURBS_TESSELLATOR mode: the
+#                            callbacks' GL calls recorded as the program's
 #   threads                  two threads, two contexts: two streams of 3
 #   kill                     SIGKILL mid-frame: the complete frames read
 #                            and translate
@@ -192,8 +195,22 @@ unrecorded)
 nurbs)
     record -o t.raygl -- "$prog" --api glx --nurbs >prog.log 2>&1 || { cat prog.log; fail "the program failed"; }
     expect t.raygl '^frame ' 3
-    [ "$(count t.raygl 'glMap2f(target=GL_MAP2_VERTEX_3')" -ge 3 ] || fail "no glMap2f per surface"
-    [ "$(count t.raygl 'glEvalMesh2(\|glEvalCoord2f(')" -ge 3 ] || fail "no evaluation"
+    expect t.raygl 'gluNurbsSurface(nurb=#' 3
+    expect t.raygl 'gluEndSurface(nurb=#' 3
+    # GLU's own drawing stays out: the guard around the GLU calls.
+    expect t.raygl 'glMap2f(\|glEvalMesh2(\|glEvalCoord2f(\|glBegin(\|glVertex' 0
+    translate t.raygl 3
+    for f in t-pov/frame-*.pov; do
+        grep -q '^mesh2{' "$f" || fail "$f: the surface drew nothing"
+    done
+    ;;
+nurbs-tess)
+    record -o t.raygl -- "$prog" --api glx --nurbs-tess >prog.log 2>&1 || { cat prog.log; fail "the program failed"; }
+    expect t.raygl '^frame ' 3
+    expect t.raygl 'gluNurbsSurface(nurb=#' 3
+    # The callbacks draw: their calls are the program's, recorded.
+    [ "$(count t.raygl 'glVertex3fv(')" -ge 12 ] || fail "the callbacks' vertices are not recorded"
+    expect t.raygl 'glMap2f(\|glEvalMesh2(' 0
     translate t.raygl 3
     for f in t-pov/frame-*.pov; do
         grep -q '^mesh2{' "$f" || fail "$f: the surface drew nothing"

@@ -9,8 +9,9 @@
  * fuzzers start from meshes that draw; pixels.bin holds bitmaps and pixel
  * rectangles with resources of their size; accum-passes.bin accumulated
  * passes; select-scissor.bin a picking pass, named draws and scissored
- * clears and draws. The corpus also holds
- * recorded-*.bin, traces written by libraygl for the image tests.
+ * clears and draws; nurbs.bin GLU NURBS surfaces (trimmed, outlined) and
+ * curves whose knots and points fit their sizes. The corpus also holds
+ * recorded-*.bin, traces written by libraygl for the image tests (recorded-nurbs-trim.bin: nurbs_trim's).
  */
 #include "testutil.h"
 
@@ -110,6 +111,12 @@ static void eval_cmd(uint32_t op, const double *v, size_t nv, const double *pts,
             }
             a->bytes = blob;
             a->count = (uint32_t)(n * (dbl ? 8 : 4));
+        } else if (a->kind == RGL_ARG_COUNTED) { /* the rest of v */
+            static double rest[16];
+            a->count = 0;
+            while (used < nv && a->count < 16)
+                rest[a->count++] = v[used++];
+            a->array = rest;
         } else if (a->kind == RGL_ARG_ARRAY) {
             static double arr[RGL_MAX_ARGS][4];
             for (uint32_t c = 0; c < a->count; c++)
@@ -341,6 +348,161 @@ static int write_mtex(const char *dir)
     return write_file(dir, "mtex.bin", seq, eval_len);
 }
 
+/* ---- GLU NURBS: knots and points that fit their sizes ----------------------------- */
+
+/* Appends command `op` with scalars v in row order and its blobs, in order,
+ * from the float arrays b[0..] of n[0..] values. */
+static void nurbs_cmd(uint32_t op, const double *v, size_t nv, const float *const *b,
+                      const size_t *n)
+{
+    static rgl_cmd cmd;
+    static uint8_t blob[3][1024];
+    if (rgl_cmd_init(&cmd, op) != RGL_OK)
+        return;
+    size_t used = 0, nb = 0;
+    for (uint32_t k = 0; k < cmd.nargs; k++) {
+        rgl_arg *a = &cmd.arg[k];
+        if (a->kind == RGL_ARG_BLOB) {
+            for (size_t i = 0; i < n[nb]; i++)
+                rgl_put_f(blob[nb] + 4 * i, b[nb][i]);
+            a->bytes = blob[nb];
+            a->count = (uint32_t)(4 * n[nb]);
+            nb++;
+        } else if (a->kind == RGL_ARG_ARRAY) {
+            static double arr[RGL_MAX_ARGS][16];
+            for (uint32_t c = 0; c < a->count; c++)
+                arr[k][c] = c % 5 == 0 ? 1 : 0;
+            a->array = arr[k];
+        } else if (a->type == RGL_T_f) {
+            a->v.f = used < nv ? v[used++] : 0;
+        } else if (a->type == RGL_T_i) {
+            a->v.i = used < nv ? (int64_t)v[used++] : 0;
+        } else {
+            a->v.u = used < nv ? (uint64_t)v[used++] : 0;
+        }
+    }
+    eval_len += rgl_cmd_encode(&cmd, seq + eval_len, sizeof seq - eval_len);
+}
+
+static int write_nurbs(const char *dir)
+{
+    static const float k4[8] = {0, 0, 0, 0, 1, 1, 1, 1}, k2[4] = {0, 0, 1, 1};
+    static const float kc[7] = {0, 0, 0, 0.5f, 1, 1, 1};
+    static const float outer[10] = {0, 0, 1, 0, 1, 1, 0, 1, 0, 0};
+    static const float hole[10] = {0.3f, 0.3f, 0.3f, 0.7f, 0.7f, 0.7f, 0.7f, 0.3f, 0.3f, 0.3f};
+    static const float hk[7] = {0, 0, 1, 2, 3, 4, 4};
+    float hill[48], col[16], curve[16];
+    for (int i = 0; i < 16; i++) {
+        hill[3 * i] = (float)(i / 4) - 1.5f;
+        hill[3 * i + 1] = (float)(i % 4) - 1.5f;
+        hill[3 * i + 2] = (i / 4 == 1 || i / 4 == 2) && (i % 4 == 1 || i % 4 == 2) ? 1.5f : -1;
+        col[i] = (float)(i % 5) * 0.25f;
+        curve[i] = i % 4 == 3 ? 1 + (float)(i / 8) : (float)i * 0.2f;
+    }
+    eval_len = 0;
+    EV(Ortho, -3, 3, -3, 3, -5, 5);
+    EV(Enable, 0x0D80); /* GL_AUTO_NORMAL */
+    EV(Enable, 0x0B50); /* GL_LIGHTING */
+    EV(NewNurbsRenderer, 1);
+    EV(NurbsProperty, 1, 100205, 100217); /* GLU_SAMPLING_METHOD, GLU_DOMAIN_DISTANCE */
+    EV(NurbsProperty, 1, 100206, 4);      /* GLU_U_STEP */
+    EV(BeginSurface, 1);
+    nurbs_cmd(RGL_OP_NurbsSurface, (const double[]){1, 8, 8, 12, 3, 4, 4, 0x0DB7}, 8,
+              (const float *const[]){k4, k4, hill}, (const size_t[]){8, 8, 48});
+    nurbs_cmd(RGL_OP_NurbsSurface, (const double[]){1, 4, 4, 8, 4, 2, 2, 0x0DB0}, 8,
+              (const float *const[]){k2, k2, col}, (const size_t[]){4, 4, 16});
+    EV(BeginTrim, 1);
+    nurbs_cmd(RGL_OP_PwlCurve, (const double[]){1, 5, 2, 100210}, 4,
+              (const float *const[]){outer}, (const size_t[]){10});
+    EV(EndTrim, 1);
+    EV(BeginTrim, 1);
+    nurbs_cmd(RGL_OP_NurbsCurve, (const double[]){1, 7, 2, 2, 100210}, 5,
+              (const float *const[]){hk, hole}, (const size_t[]){7, 10});
+    EV(EndTrim, 1);
+    EV(EndSurface, 1);
+    EV(NurbsProperty, 1, 100204, 100240); /* GLU_DISPLAY_MODE, GLU_OUTLINE_POLYGON */
+    EV(BeginSurface, 1);
+    nurbs_cmd(RGL_OP_NurbsSurface, (const double[]){1, 8, 8, 12, 3, 4, 4, 0x0DB7}, 8,
+              (const float *const[]){k4, k4, hill}, (const size_t[]){8, 8, 48});
+    EV(EndSurface, 1);
+    EV(BeginCurve, 1);
+    nurbs_cmd(RGL_OP_NurbsCurve, (const double[]){1, 7, 4, 3, 0x0D98}, 5,
+              (const float *const[]){kc, curve}, (const size_t[]){7, 16});
+    EV(EndCurve, 1);
+    nurbs_cmd(RGL_OP_LoadSamplingMatrices, (const double[]){1, 0, 0, 64, 64}, 5, NULL, NULL);
+    EV(NurbsProperty, 1, 100160, 100161); /* GLU_NURBS_MODE, GLU_NURBS_TESSELLATOR */
+    EV(BeginSurface, 1);
+    EV(EndSurface, 1);
+    EV(DeleteNurbsRenderer, 1);
+    return write_file(dir, "nurbs.bin", seq, eval_len);
+}
+
+/* ---- Texture copies, 3D, rectangle, packed, depth, points, provoking vertex ------- */
+
+static int write_texcopy(const char *dir)
+{
+    static const uint8_t rgba[16] = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 9, 9, 9, 9};
+    static const uint8_t packed[8] = {0x00, 0xf8, 0xe0, 0x07, 0x1f, 0x00, 0xff, 0xff};
+    static const uint8_t vox[24] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12,
+                                    13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24};
+    rgl_trace_builder *b = rgl_trace_builder_create();
+    uint32_t px = 0, pk = 0, vx = 0;
+    const uint8_t *data;
+    size_t size;
+    int rc = 1;
+    if (!b)
+        return 1;
+    rgl_trace_builder_resource(b, RGL_RES_BYTES, rgba, sizeof rgba, &px);
+    rgl_trace_builder_resource(b, RGL_RES_BYTES, packed, sizeof packed, &pk);
+    rgl_trace_builder_resource(b, RGL_RES_BYTES, vox, sizeof vox, &vx);
+    eval_len = 0;
+    EV(Ortho, -1, 2, -1, 2, -1, 1);
+    EV(BindTexture, 0x0DE1, 1);
+    EV(TexParameteri, 0x0DE1, 0x2801, 0x2600); /* GL_NEAREST */
+    EV(CopyTexImage2D, 0x0DE1, 0, 0x1909, 0, 0, 2, 2, 0, px); /* GL_LUMINANCE */
+    EV(CopyTexSubImage2D, 0x0DE1, 0, 1, 1, 0, 0, 1, 1, px);
+    EV(CopyTexImage1D, 0x0DE0, 0, 0x1907, 0, 0, 4, 0, 0);
+    EV(CopyTexSubImage1D, 0x0DE0, 0, 0, 0, 0, 1, 0);
+    EV(TexParameteri, 0x0DE1, 0x2802, 0x8743); /* GL_MIRROR_CLAMP_TO_EDGE_EXT */
+    EV(Enable, 0x0DE1);
+    EV(Rectf, -1, -1, 1, 1);
+    EV(TexImage2D, 0x0DE1, 0, 0x1907, 2, 2, 0, 0x1907, 0x8363, pk); /* 5_6_5 */
+    EV(TexImage2D, 0x0DE1, 0, 0x81A5, 2, 1, 0, 0x1902, 0x1406, pk); /* depth, float */
+    EV(TexParameteri, 0x0DE1, 0x884B, 0x8049);                    /* GL_INTENSITY */
+    EV(BindTexture, 0x84F5, 2);                                   /* rectangle */
+    EV(TexImage2D, 0x84F5, 0, 0x1908, 2, 2, 0, 0x1908, 0x1401, px);
+    EV(Enable, 0x84F5);
+    EV(Rectf, 0, 0, 2, 2);
+    EV(BindTexture, 0x806F, 3); /* GL_TEXTURE_3D */
+    EV(TexImage3D, 0x806F, 0, 0x1907, 2, 2, 2, 0, 0x1907, 0x1401, vx);
+    EV(TexSubImage3D, 0x806F, 0, 0, 0, 1, 2, 2, 1, 0x1907, 0x1401, vx);
+    EV(CopyTexSubImage3D, 0x806F, 0, 0, 0, 0, 0, 0, 1, 1, 0);
+    EV(TexEnvi, 0x8861, 0x8862, 1);     /* GL_POINT_SPRITE, GL_COORD_REPLACE */
+    EV(TexEnvf, 0x8500, 0x8501, 0.5);   /* GL_TEXTURE_LOD_BIAS */
+    EV(ShadeModel, 0x1D00);
+    EV(ProvokingVertex, 0x8E4D);
+    EV(PointParameterfv, 0x8129, 1, 0.5, 0.25);
+    EV(PointParameterf, 0x8126, 2);
+    EV(PointParameteri, 0x8127, 9);
+    EV(PointParameteriv, 0x8128, 3);
+    EV(PointSize, 12);
+    EV(Begin, 0x0000);
+    EV(Vertex3f, 0, 0, -3);
+    eval_cmd(RGL_OP_End, NULL, 0, NULL, 0);
+    EV(Begin, 0x0006);
+    EV(Color3f, 1, 0, 0);
+    EV(Vertex2f, 0, 0);
+    EV(Color3f, 0, 1, 0);
+    EV(Vertex2f, 1, 0);
+    EV(Vertex2f, 1, 1);
+    eval_cmd(RGL_OP_End, NULL, 0, NULL, 0);
+    if (rgl_trace_builder_frame(b, 0, 0, 0, 0, seq, eval_len) == RGL_OK &&
+        rgl_trace_builder_finish(b, true, &data, &size) == RGL_OK)
+        rc = write_file(dir, "texcopy.bin", data, size);
+    rgl_trace_builder_destroy(b);
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
     rng r = {0x5eed5eed12345678ull};
@@ -367,5 +529,7 @@ int main(int argc, char **argv)
     rc |= write_accum(argv[1]);
     rc |= write_select(argv[1]);
     rc |= write_mtex(argv[1]);
+    rc |= write_nurbs(argv[1]);
+    rc |= write_texcopy(argv[1]);
     return rc;
 }

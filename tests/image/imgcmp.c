@@ -50,6 +50,10 @@
  *                        in the box X2..X3, Y2..Y3, while A's ratio is at
  *                        least 0.95 (the boxes alike in A); prints the four
  *                        means and both ratios
+ *   --expect X0,Y0,X1,Y1,R,G,B,T
+ *                        B's mean colour in the box X0..X1, Y0..Y1 is
+ *                        (R, G, B) within T levels per channel (a shadow
+ *                        that is dark and not tinted); prints the means
  */
 #include <errno.h>
 #include <math.h>
@@ -80,6 +84,8 @@ typedef struct options {
     bool have_shadow;
     int shadow_box[8];
     double shadow_max;
+    bool have_expect;
+    int expect[8];
     const char *a_path, *b_path;
 } options;
 
@@ -102,7 +108,8 @@ static void usage(FILE *f)
 {
     fputs("usage: imgcmp [--tol T] [--min-match F] [--max-mean M] [--min-silhouette S]\n"
           "              [--max-core N] [--background R,G,B] [--check-gamma] [--diff OUT.png]\n"
-          "              [--pair OUT.png] [--at X,Y]... [--shadow X0,Y0,X1,Y1,X2,Y2,X3,Y3,F] A.png B.png\n",
+          "              [--pair OUT.png] [--at X,Y]... [--shadow X0,Y0,X1,Y1,X2,Y2,X3,Y3,F]\n"
+          "              [--expect X0,Y0,X1,Y1,R,G,B,T] A.png B.png\n",
           f);
 }
 
@@ -204,6 +211,10 @@ static int parse_args(int argc, char **argv, options *o)
                       o->shadow_box[1] > o->shadow_box[3] || o->shadow_box[4] > o->shadow_box[6] ||
                       o->shadow_box[5] > o->shadow_box[7];
                 o->have_shadow = true;
+            } else if (strcmp(a, "--expect") == 0) {
+                bad = parse_ints(v, o->expect, 8, 0, 1 << 20) || o->expect[0] > o->expect[2] ||
+                      o->expect[1] > o->expect[3];
+                o->have_expect = true;
             } else if (strcmp(a, "--diff") == 0) {
                 o->diff_path = v;
             } else if (strcmp(a, "--pair") == 0) {
@@ -338,6 +349,23 @@ int main(int argc, char **argv)
         }
     }
 
+    bool expect_ok = true;
+    if (o.have_expect) {
+        double m[3] = {0, 0, 0};
+        size_t n = 0;
+        for (int y = o.expect[1]; y <= o.expect[3] && y < b.h; y++)
+            for (int x = o.expect[0]; x <= o.expect[2] && x < b.w; x++, n++)
+                for (int k = 0; k < 3; k++)
+                    m[k] += b.rgb[((size_t)y * b.w + x) * 3 + k];
+        for (int k = 0; k < 3; k++) {
+            m[k] = n ? m[k] / (double)n : -1e9;
+            expect_ok = expect_ok && fabs(m[k] - o.expect[4 + k]) <= o.expect[7];
+        }
+        printf("expect: B box (%d,%d)-(%d,%d) mean (%.2f,%.2f,%.2f), expected (%d,%d,%d) +- %d\n",
+               o.expect[0], o.expect[1], o.expect[2], o.expect[3], m[0], m[1], m[2], o.expect[4],
+               o.expect[5], o.expect[6], o.expect[7]);
+    }
+
     int rc = 0;
     if (o.diff_path) {
         img d;
@@ -380,6 +408,8 @@ int main(int argc, char **argv)
         FAILED("no shadow in B: ratio %.4f > %.4f", shadow_ratio[1], o.shadow_max);
     if (o.have_shadow && !(shadow_ratio[0] >= 0.95))
         FAILED("A is darker in the shadow box too: ratio %.4f < 0.95", shadow_ratio[0]);
+    if (!expect_ok)
+        FAILED("B's box is not the expected colour");
 #undef FAILED
     if (fails) {
         printf("FAIL: %s\n", why);

@@ -15,6 +15,10 @@
  *                      its provoking vertex: the last vertex of each
  *                      triangle, quad, segment (line loop's closing segment:
  *                      the first vertex) and the first vertex of GL_POLYGON.
+ *   texcopy_provoking  (BEGIN_MODES_FIRST too) GL_FLAT with
+ *                      glProvokingVertex(GL_FIRST_VERTEX_CONVENTION): the
+ *                      first vertex of each primitive, the second of a
+ *                      fan's triangle (GL 3.2 table 2.12).
  *
  * Points are 6 pixels, lines 3 pixels wide; positions sit at .13/.37 of a
  * pixel so no edge runs through pixel centres at 320x240.
@@ -66,6 +70,9 @@ static int draw(int w, int h)
     rayglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     rayglClear(GL_COLOR_BUFFER_BIT);
     rayglShadeModel(FLAT ? GL_FLAT : GL_SMOOTH);
+#ifdef BEGIN_MODES_FIRST
+    rayglProvokingVertex(GL_FIRST_VERTEX_CONVENTION);
+#endif
     rayglPointSize(6.0f);
     rayglLineWidth(3.0f);
 

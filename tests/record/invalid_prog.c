@@ -37,6 +37,7 @@ static void report(const char *what)
 #define AT(n) ((const void *)(uintptr_t)(n))
 
 static GLubyte frame[SIDE * SIDE * 4];
+static const GLfloat one3[1] = {1}; /* one value where some pnames take three */
 
 int main(void)
 {
@@ -102,6 +103,23 @@ int main(void)
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1024, 1024, 0, GL_RGBA, GL_UNSIGNED_BYTE, tiny);
         glEnd());
     TRY(glTexSubImage2D(GL_TEXTURE_2D, 0, 15, 15, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, tiny));
+    /* 3D images GL refuses over the same 4 bytes, and copies it refuses. */
+    TRY(glTexImage3D(GL_TEXTURE_2D, 0, GL_RGBA, 64, 64, 64, 0, GL_RGBA, GL_UNSIGNED_BYTE, tiny));
+    TRY(glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA, 64, -1, 64, 0, GL_RGBA, GL_UNSIGNED_BYTE, tiny));
+    TRY(glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA, 64, 64, 64, 0, GL_RGBA, 0x1234, tiny));
+    TRY(glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA, 1 << 14, 1 << 14, 64, 0, GL_RGBA,
+                     GL_UNSIGNED_BYTE, tiny));
+    TRY(glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, 64, 64, 64, GL_RGBA, GL_UNSIGNED_BYTE, tiny));
+    TRY(glPixelStorei(GL_UNPACK_SKIP_IMAGES, 1 << 20));
+    TRY(glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA, 1, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL));
+    TRY(glPixelStorei(GL_UNPACK_SKIP_IMAGES, 0));
+    TRY(glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, -1, 8, 0));
+    TRY(glCopyTexImage2D(GL_TEXTURE_3D, 0, GL_RGBA, 0, 0, 8, 8, 0));
+    TRY(glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, 1 << 20, 1 << 20, 0));
+    TRY(glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 30, 30, 0, 0, 8, 8));
+    TRY(glCopyTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 5, 0, 0, 8, 8));
+    TRY(glProvokingVertex(0x1234));
+    TRY(glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION + 100, one3));
 
     /* GLU refuses these before it reads (its return value printed). */
     printf("gluBuild2DMipmaps %d\n",

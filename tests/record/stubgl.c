@@ -255,6 +255,64 @@ GLint gluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLsi
     arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], data);
     return 0;
 }
+static char nurbs_objs[16];
+static unsigned nnurbs;
+GLUnurbs *gluNewNurbsRenderer(void)
+{
+    LOG0("gluNewNurbsRenderer");
+    return (GLUnurbs *)&nurbs_objs[nnurbs++ % sizeof nurbs_objs];
+}
+#define NURBS_MARK(fn)                                                         \
+    void fn(GLUnurbs *n)                                                       \
+    {                                                                          \
+        stub_call *c = stub_begin(#fn);                                        \
+        arg_p(c, n);                                                           \
+    }
+NURBS_MARK(gluDeleteNurbsRenderer)
+NURBS_MARK(gluBeginSurface)
+NURBS_MARK(gluEndSurface)
+NURBS_MARK(gluBeginCurve)
+NURBS_MARK(gluEndCurve)
+NURBS_MARK(gluBeginTrim)
+NURBS_MARK(gluEndTrim)
+void gluNurbsProperty(GLUnurbs *n, GLenum property, GLfloat value)
+{
+    (void)n;
+    LOGV("gluNurbsProperty", property, value);
+}
+void gluLoadSamplingMatrices(GLUnurbs *n, const GLfloat *model, const GLfloat *perspective,
+                             const GLint *view)
+{
+    stub_call *c = stub_begin("gluLoadSamplingMatrices");
+    arg_p(c, n);
+    arg_p(c, model);
+    arg_p(c, perspective);
+    arg_p(c, view);
+}
+void gluNurbsSurface(GLUnurbs *n, GLint sKnotCount, GLfloat *sKnots, GLint tKnotCount,
+                     GLfloat *tKnots, GLint sStride, GLint tStride, GLfloat *control,
+                     GLint sOrder, GLint tOrder, GLenum type)
+{
+    (void)n;
+    (void)sKnots;
+    (void)tKnots;
+    (void)control;
+    LOGV("gluNurbsSurface", sKnotCount, tKnotCount, sStride, tStride, sOrder, tOrder, type);
+}
+void gluNurbsCurve(GLUnurbs *n, GLint knotCount, GLfloat *knots, GLint stride, GLfloat *control,
+                   GLint order, GLenum type)
+{
+    (void)n;
+    (void)knots;
+    (void)control;
+    LOGV("gluNurbsCurve", knotCount, stride, order, type);
+}
+void gluPwlCurve(GLUnurbs *n, GLint count, GLfloat *data, GLint stride, GLenum type)
+{
+    (void)n;
+    (void)data;
+    LOGV("gluPwlCurve", count, stride, type);
+}
 void glutSwapBuffers(void) { LOG0("glutSwapBuffers"); }
 
 /* ---- Queries: GL with no current context changes nothing ---------------------- */
@@ -399,6 +457,45 @@ void glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const GLvoid
 void glCopyPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type)
 {
     LOGV("glCopyPixels", x, y, w, h, type);
+}
+
+/* ---- Texture copies and 3D textures (record/entry_texcopy.c) ----------------------- */
+
+void glCopyTexImage1D(GLenum target, GLint level, GLenum internal, GLint x, GLint y, GLsizei w,
+                      GLint border)
+{
+    LOGV("glCopyTexImage1D", target, level, internal, x, y, w, border);
+}
+void glCopyTexImage2D(GLenum target, GLint level, GLenum internal, GLint x, GLint y, GLsizei w,
+                      GLsizei h, GLint border)
+{
+    LOGV("glCopyTexImage2D", target, level, internal, x, y, w, h, border);
+}
+void glCopyTexSubImage1D(GLenum target, GLint level, GLint xo, GLint x, GLint y, GLsizei w)
+{
+    LOGV("glCopyTexSubImage1D", target, level, xo, x, y, w);
+}
+void glCopyTexSubImage2D(GLenum target, GLint level, GLint xo, GLint yo, GLint x, GLint y,
+                         GLsizei w, GLsizei h)
+{
+    LOGV("glCopyTexSubImage2D", target, level, xo, yo, x, y, w, h);
+}
+void glCopyTexSubImage3D(GLenum target, GLint level, GLint xo, GLint yo, GLint zo, GLint x,
+                         GLint y, GLsizei w, GLsizei h)
+{
+    LOGV("glCopyTexSubImage3D", target, level, xo, yo, zo, x, y, w, h);
+}
+void glTexImage3D(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei h, GLsizei d,
+                  GLint border, GLenum format, GLenum type, const GLvoid *pixels)
+{
+    LOGV("glTexImage3D", target, level, internal, w, h, d, border, format, type);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], pixels);
+}
+void glTexSubImage3D(GLenum target, GLint level, GLint xo, GLint yo, GLint zo, GLsizei w,
+                     GLsizei h, GLsizei d, GLenum format, GLenum type, const GLvoid *pixels)
+{
+    LOGV("glTexSubImage3D", target, level, xo, yo, zo, w, h, d, format, type);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], pixels);
 }
 
 /* ---- Evaluator maps ---------------------------------------------------------------- */

@@ -17,6 +17,7 @@ void test_too_large(const char *dir);
 void test_unpack(const char *dir);
 void test_pixel_rules(const char *dir);
 void test_raster(const char *dir);
+void test_texcopy_nocontext(const char *dir);
 
 /* The BLOB argument of a decoded command of frame f, command i. */
 static const uint8_t *blob_of(rgl_reader *r, size_t f, size_t i, unsigned arg, size_t *n)
@@ -640,6 +641,70 @@ void test_raster(const char *dir)
               res.data[1] == 0x50);
     if (CHECK(rgl_reader_resource(r, 2, &res, NULL) == RGL_OK))
         CHECK(res.size == 6 && res.data[0] == 10 && res.data[5] == 15);
+    rgl_reader_destroy(r);
+}
+
+/* Texture copies and 3D images without a context (record/entry_texcopy.c):
+ * a copy is recorded with no pixels (nothing to read them from), one GL
+ * refuses is not recorded; glTexImage3D reads exactly its image (it ends
+ * at a page's end), nothing for a call GL refuses (its pointer faults),
+ * and an unknown type is marked @Skipped; everything is forwarded. */
+void test_texcopy_nocontext(const char *dir)
+{
+    char path[128];
+    snprintf(path, sizeof path, "%s/texcopy.raygl", dir);
+    uint8_t *bad, *page = guard_pages(&bad);
+    if (!page)
+        return;
+    long pg = sysconf(_SC_PAGESIZE);
+    CHECK(rayglRecordOpen(path) == 0);
+    stub_reset();
+    rayglCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 1, 2, 3, 4, 0);
+    rayglCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 2, 3, 4);
+    rayglCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 1, 2, -3, 4, 0);
+    rayglCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 1, 2, 3, 4, 5);
+    rayglBegin(GL_POINTS);
+    rayglCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 1, 2, 3, 4, 0);
+    rayglTexImage3D(GL_TEXTURE_3D, 0, GL_RGB, 2, 1, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, bad);
+    rayglEnd();
+    rayglPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    uint8_t *vox = bad - 12;
+    for (int i = 0; i < 12; i++)
+        vox[i] = (uint8_t)(40 + i);
+    rayglTexImage3D(GL_TEXTURE_3D, 0, GL_RGB, 2, 1, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, vox);
+    rayglTexImage3D(GL_TEXTURE_2D, 0, GL_RGB, 2, 1, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, bad);
+    rayglTexImage3D(GL_TEXTURE_3D, 0, GL_RGB, 2, 1, -2, 0, GL_RGB, GL_UNSIGNED_BYTE, bad);
+    rayglTexImage3D(GL_TEXTURE_3D, 0, GL_RGB, 2, 1, 2, 0, GL_RGB, 0x1234, bad);
+    rayglTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, 2, 1, -1, GL_RGB, GL_UNSIGNED_BYTE, bad);
+    rayglPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    CHECK(forwarded("glCopyTexImage2D") == 4 && forwarded("glCopyTexSubImage2D") == 1 &&
+          forwarded("glTexImage3D") == 5 && forwarded("glTexSubImage3D") == 1);
+    rayglFrameEnd();
+    rayglRecordClose();
+    munmap(page, (size_t)pg * 2);
+
+    rgl_reader *r = trace_open(path);
+    if (!r)
+        return;
+    rgl_frame_info fi;
+    trace_cmds c = trace_frame(r, 0, &fi);
+    CHECK(count_lines(&c, "glCopyTexImage2D(") == 1);
+    CHECK(count_lines(&c, "glCopyTexImage2D(target=GL_TEXTURE_2D, level=0, internalformat=6407, "
+                          "x=1, y=2, width=3, height=4, border=0, pixels=#0)") == 1);
+    CHECK(count_lines(&c, "glCopyTexSubImage2D(") == 1);
+    CHECK(count_lines(&c, "glTexImage3D(") == 1);
+    CHECK(count_lines(&c, "glTexSubImage3D(") == 0);
+    char skipped[64];
+    snprintf(skipped, sizeof skipped, "@Skipped(opcode=0x%x, reason=0x%x)",
+             (unsigned)RGL_OP_TexImage3D, (unsigned)RGL_SKIP_UNKNOWN_ENUM);
+    CHECK(count_lines(&c, skipped) == 1);
+    if (check_failures)
+        trace_cmds_print(&c, "texcopy");
+    trace_cmds_free(&c);
+    rgl_resource res;
+    if (CHECK(rgl_reader_resource(r, 1, &res, NULL) == RGL_OK))
+        CHECK(res.kind == RGL_RES_BYTES && res.size == 12 && res.data[0] == 40 &&
+              res.data[11] == 51);
     rgl_reader_destroy(r);
 }
 

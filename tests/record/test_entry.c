@@ -20,6 +20,7 @@
 void test_custom(const char *dir);
 void test_buffers(const char *dir);
 void test_eval(const char *dir);
+void test_nurbs_rec(const char *dir);
 void test_select(const char *dir);
 void test_multitex_arrays(const char *dir);
 void test_alloc_failures(const char *dir);
@@ -27,6 +28,7 @@ void test_too_large(const char *dir);
 void test_unpack(const char *dir);
 void test_pixel_rules(const char *dir);
 void test_raster(const char *dir);
+void test_texcopy_nocontext(const char *dir);
 void test_pbo(const char *dir);
 void test_live_bindings(const char *dir);
 void test_reopen(const char *dir);
@@ -43,7 +45,8 @@ static uint32_t mix(uint32_t op, const char *name, uint32_t k)
     return h ^ (h >> 15);
 }
 
-/* The parameter name each handler's *v rows take: one with 4 values. */
+/* The parameter name each handler's *v rows take: one with 4 values (3
+ * for glPointParameter, whose largest is GL_POINT_DISTANCE_ATTENUATION). */
 static uint32_t pname_for(const char *handler)
 {
     if (!strcmp(handler, "light")) return GL_DIFFUSE;
@@ -52,6 +55,7 @@ static uint32_t pname_for(const char *handler)
     if (!strcmp(handler, "fog")) return GL_FOG_COLOR;
     if (!strcmp(handler, "texenv")) return GL_TEXTURE_ENV_COLOR;
     if (!strcmp(handler, "texgen")) return GL_OBJECT_PLANE;
+    if (!strcmp(handler, "pointparameter")) return GL_POINT_DISTANCE_ATTENUATION;
     return GL_AMBIENT;
 }
 
@@ -276,6 +280,7 @@ int main(void)
     test_custom(dir);
     test_buffers(dir);
     test_eval(dir);
+    test_nurbs_rec(dir);
     test_select(dir);
     test_multitex_arrays(dir);
     test_alloc_failures(dir);
@@ -283,6 +288,7 @@ int main(void)
     test_unpack(dir);
     test_pixel_rules(dir);
     test_raster(dir);
+    test_texcopy_nocontext(dir);
     test_pbo(dir);
     test_live_bindings(dir);
     test_reopen(dir);

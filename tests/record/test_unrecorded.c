@@ -33,8 +33,8 @@ static void test_list(void)
     static const char *const counted[] = {
         "glIndexMask", "glIndexi", "glCreateProgram", "glBlendColor", "glutStrokeCharacter",
         "glPixelMapfv", "glutBitmapCharacter", "glutBitmapString", "glClipPlane", "glStencilFunc",
-        "glTexImage3D", "glUseProgram", "glUniform4fv", "glBlendColorEXT", "glBlendEquationSeparate",
-        "glPolygonStipple", "gluNurbsSurface", "gluTessVertex", "gluBuild1DMipmaps", "glutInit",
+        "glTexImage3DEXT", "glUseProgram", "glUniform4fv", "glBlendColorEXT", "glBlendEquationSeparate",
+        "glPolygonStipple", "gluNurbsCallback", "gluTessVertex", "gluBuild1DMipmaps", "glutInit",
         "glutStrokeCharacter", "glutSolidTeacup", "glReadBuffer",
     };
     for (size_t i = 0; i < sizeof counted / sizeof counted[0]; i++)
@@ -45,9 +45,12 @@ static void test_list(void)
         "glReadPixels", "glAreTexturesResident", "gluErrorString", "gluProject",
         "gluGetTessProperty", "glutGet", "glutDeviceGet", "glutBitmapWidth",
         "glVertex3f", "glBegin", "glTexImage2D", "gluSphere", "glutSolidTeapot",
-        "glutSwapBuffers", "glFlush", "glMap1f", "glEvalMesh2", "glRasterPos2i",
+        "glutSwapBuffers", "glFlush", "glMap1f", "glEvalMesh2", "glRasterPos2i", "gluNurbsSurface",
+        "gluPwlCurve", "gluNewNurbsRenderer",
         "glWindowPos2f", "glBitmap", "glDrawPixels", "glCopyPixels", "glPixelZoom",
-        "glPixelTransferf",
+        "glPixelTransferf", "glCopyTexImage2D", "glCopyTexSubImage3D", "glTexImage3D",
+        "glPointParameterfv", "glProvokingVertex", "glPointParameterfARB",
+        "glPointParameterfvEXT",
         "glActiveTexture", "glActiveTextureARB", "glClientActiveTexture", "glMultiTexCoord2f",
         "glMultiTexCoord4dvARB", "glLogicOp", "glAccum", "glSecondaryColor3f", "glRenderMode",
     };

@@ -542,20 +542,22 @@ static void test_attributes(void)
         CHECK(fabsf(sc.points[0].color[1] - 0.54f) < 1e-6f);
         CHECK(fabsf(sc.points[1].color[1] - 0.24f) < 1e-6f);
     }
-    /* The lit triangles: one material (colour material's terms are left
-     * out of it), the lights of the first lit draw, and a note when a
-     * later draw has others. */
-    CHECK_EQ_U(sc.nmaterials, 1);
-    if (sc.nmaterials == 1) {
+    /* The lit triangles: colour material's terms are left out of the
+     * material; the second draw, with GL_LIGHT0 off, has a light set of
+     * its own (no lights), so a material of its own, and no note. */
+    CHECK_EQ_U(sc.nmaterials, 2);
+    if (sc.nmaterials == 2) {
         CHECK(sc.materials[0].color_material[0] == (SCENE_CM_AMBIENT | SCENE_CM_DIFFUSE));
         CHECK(sc.materials[0].diffuse[0][1] == 0);
         CHECK(sc.materials[0].specular[0][3] == 1);
+        CHECK(sc.materials[0].lightset == 0 && sc.materials[1].lightset == 1);
     }
+    CHECK_EQ_U(sc.nlightsets, 2);
     CHECK_EQ_U(sc.nlights, 1);
     if (sc.nlights == 1)
         CHECK(sc.lights[0].kind == SCENE_LIGHT_PARALLEL && sc.lights[0].direction[2] == 1 &&
-              sc.lights[0].specular[0] == 1);
-    CHECK_EQ_U(count(DIAG_NOTE_LIGHTING), 1);
+              sc.lights[0].specular[0] == 1 && sc.lights[0].set == 0);
+    CHECK_EQ_U(count(DIAG_NOTE_LIGHTING), 0);
     interp_destroy(ip);
 }
 

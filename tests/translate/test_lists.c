@@ -394,8 +394,12 @@ static void test_arrays(void)
     CHECK_NEAR(sc.verts[1].color[1], 1, 0);
     CHECK_NEAR(sc.verts[2].pos[0], 1, 0);
     CHECK_NEAR(sc.verts[0].normal[2], 1, 1e-9);
-    /* The current colour keeps the last element's. */
+    /* The current colour and normal are what they were before the draw,
+     * as Mesa leaves them (GL: indeterminate). */
     CHECK_NEAR(interp_state(ip)->a.current.color[0], 1, 0);
+    CHECK_NEAR(interp_state(ip)->a.current.color[1], 1, 0);
+    CHECK_NEAR(interp_state(ip)->a.current.color[2], 1, 0);
+    CHECK_NEAR(interp_state(ip)->a.current.normal[2], 1, 0);
 
     /* Indexed: ubyte, ushort and uint indices, from element 1 on. */
     static const uint8_t i8[3] = {1, 2, 3};
