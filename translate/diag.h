@@ -37,9 +37,10 @@
     X(NOTE_BLEND, "approximated: blending with colour or destination-alpha factors, or of lit or textured surfaces, other than GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA is drawn as that one") \
     X(NOTE_BLEND_ADD, "approximated: additive blending (all of the colour behind kept) keeps 127/128 of it") \
     X(NOTE_BLEND_EQUATION, "approximated: blend equations other than GL_FUNC_ADD (glBlendEquation) are drawn as GL_FUNC_ADD") \
-    X(NOTE_ALPHA_TEST, "not translated yet: alpha test") \
-    X(NOTE_TEXTURE, "approximated: texture environment GL_BLEND, GL_ADD or GL_COMBINE drawn as GL_MODULATE; cube-map textures not translated") \
-    X(NOTE_TEX_SAMPLING, "approximated: textures are sampled with their magnification filter from level 0 (no mipmaps, no minification filter, mirrored repeat as repeat)") \
+    X(NOTE_ALPHA_TEST, "approximated: alpha test of lines and points (drawn whole), of faces whose vertex alphas lie on both sides of the reference (drawn whole), of a texture with vertex alphas that vary (the first vertex's alpha) or with GL_EQUAL or GL_NOTEQUAL and GL_LINEAR filtering (the texels tested one by one)") \
+    X(NOTE_TEXTURE, "approximated: texture environment GL_COMBINE drawn as GL_MODULATE (a cube map's GL_DECAL, GL_BLEND and GL_ADD too), GL_BLEND and GL_ADD drawn opaque") \
+    X(NOTE_TEX_SAMPLING, "approximated: a texture whose minification filter (without mipmaps) differs from its magnification filter is sampled with the magnification filter") \
+    X(NOTE_TEX_MIPMAP, "approximated: mipmapped textures take GL's level of detail per pixel on flat runs of faces only: one level per group of faces on curved meshes, the base level in display-list copies and with two texture units, level 0 of cube maps and 3D textures") \
     X(NOTE_LISTS, "not translated yet: display lists (calls skipped)") \
     X(NOTE_ARRAYS, "not translated yet: vertex arrays (draws skipped)") \
     X(NOTE_QUADRICS, "not translated yet: GLU quadrics (skipped)") \
@@ -67,6 +68,7 @@
     X(NOTE_SINGLE_COLOR, "approximated: lit textured surfaces with GL_SINGLE_COLOR get the highlight after the texture (as GL_SEPARATE_SPECULAR_COLOR), where GL modulates it by the texture") \
     X(NOTE_ACCUM_WEIGHTS, "approximated: accumulation weights that do not add up to one, GL_MULT or GL_ADD, are drawn as an average of the passes") \
     X(NOTE_MULTITEX, "approximated: texture units past the second enabled one not drawn; a unit after the first combined with one fragment colour (unlit, the first vertex's) unless both units use GL_MODULATE or the first replaces the colour; two units blended are drawn opaque") \
+    X(NOTE_TEX_MODULATE_CM, "approximated: a lit GL_MODULATE texture whose diffuse colour comes from GL_COLOR_MATERIAL and varies over a mesh, blended, mipmapped, two-sided or on two units, is multiplied by the mean of that colour's channels") \
     X(NOTE_NURBS_TRIM, "approximated: GLU NURBS trim edges not along the u or v axis cut along the sampling grid") \
     X(NOTE_NURBS_OUTLINE, "approximated: GLU_OUTLINE_POLYGON of trimmed NURBS: the translator's grid, not GLU's triangles") \
     X(NOTE_NURBS_SAMPLING, "approximated: GLU NURBS sampled at 16+ steps a knot span, finer than GLU may sample them") \
@@ -76,7 +78,7 @@
     X(NOTE_SHADOW_HIGHLIGHT, "approximated with shadows: highlights of lights whose specular is not one multiple of their diffuse colour") \
     X(NOTE_POINT_FADE, "not translated: the point fade threshold (GL_POINT_FADE_THRESHOLD_SIZE; GL fades points only when multisampling)") \
     X(NOTE_TEX_MIRROR_CLAMP, "approximated: mirror-clamp texture wraps (GL_MIRROR_CLAMP_EXT and its kin) drawn as the image mirrored once, then clamped to its edge texels") \
-    X(NOTE_TEX_LOD_BIAS, "not translated: texture level-of-detail bias (GL_TEXTURE_LOD_BIAS; textures are drawn from level 0)") \
+    X(NOTE_TEX_LOD_BIAS, "not translated: texture level-of-detail bias (GL_TEXTURE_LOD_BIAS; mipmap levels are chosen without it)") \
     X(NOTE_POINT_SPRITE, "not translated: point sprites (GL_POINT_SPRITE, GL_COORD_REPLACE): points drawn untextured") \
     X(NOTE_TEX_3D, "approximated: 3D textures drawn as the slice (GL_NEAREST) or the blend of two slices (GL_LINEAR) that r picks where r is constant over a primitive; untextured where it varies") \
     X(NOTE_FRONT_BUFFER, "approximated: a single-buffered frame shows the drawing of at most 64 earlier frames since the last colour clear (the front buffer holds all of it)") \

@@ -196,6 +196,7 @@ typedef struct gl_attribs {
         uint32_t binding_1d, binding_2d;
         uint32_t binding_rect;    /* GL_TEXTURE_RECTANGLE(_ARB, _NV) */
         uint32_t binding_3d;
+        uint32_t binding_cube;    /* GL_TEXTURE_CUBE_MAP */
         GLenum gen_mode[4];       /* s, t, r, q: GL_EYE_LINEAR, ... */
         double obj_plane[4][4];   /* GL_OBJECT_PLANE */
         double eye_plane[4][4];   /* GL_EYE_PLANE, times the inverse modelview

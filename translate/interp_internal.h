@@ -118,6 +118,8 @@ struct interp {
     size_t cap_edge;
     double (*clipv)[3]; /* clip-space x, y, w of each vertex (culling) */
     size_t cap_clipv;
+    float prim_alpha;        /* the first vertex's alpha (interp_alpha_vertex) */
+    bool prim_alpha_varies;  /* another vertex's differs */
 
     /* The frame's camera: fixed by the first draw (or at the frame's end). */
     bool camera_fixed;
@@ -535,6 +537,11 @@ void interp_multitex_unbind(interp *ip, uint32_t name);
  * division by q (interp_texture.c). */
 void interp_vertex_texcoord(interp *ip, int unit, const double obj[4], const float nrm[3],
                             float out[2]);
+/* The same with r (s, t, r: a cube map's direction), and whether a unit
+ * draws a cube map (GL_TEXTURE_CUBE_MAP enabled). */
+void interp_vertex_texcoord3(interp *ip, int unit, const double obj[4], const float nrm[3],
+                             float out[3]);
+bool interp_unit_cube(interp *ip, int unit);
 /* The object -> eye transform a draw with modelview mv, projection proj and
  * viewport vp gets (remapped into the frame's camera as a draw does, but
  * without the painter's shift). False when no such transform exists. */
@@ -611,6 +618,17 @@ bool interp_scissor_cuts(const interp *ip, const int32_t vp[4]);
  * (a draw then draws nothing); and look's scissor fields for a draw now. */
 bool interp_scissor_hides(const interp *ip);
 void interp_scissor_look(const interp *ip, scene_look *look);
+
+/* The alpha test (interp_alphatest.c). interp_alpha_vertex: vertex k of
+ * the primitive, of alpha a as GL computed it (before blending forces
+ * it): INTERP_ALPHA_FAIL when it fails the test, else 0; kept with the
+ * vertex's edge flag (ip->edge, bit 0). interp_alpha_face: false when GL
+ * discards all of polygon idx (relative to prim_first; every vertex fails
+ * and the texture's alpha, scene texture `texture` or -1, does not
+ * count); notes the cases drawn approximately. */
+#define INTERP_ALPHA_FAIL 2
+uint8_t interp_alpha_vertex(interp *ip, size_t k, float a);
+bool interp_alpha_face(interp *ip, const uint32_t *idx, int n, int32_t texture);
 bool interp_scissor_clear(interp *ip);
 void interp_scissor_end_frame(interp *ip);
 

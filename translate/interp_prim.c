@@ -94,10 +94,11 @@ static void draw_notes(interp *ip)
     const uint8_t *c = a->caps;
     if (c[INTERP_CAP_FOG])
         interp_fix_fog(ip);
-    if (c[INTERP_CAP_ALPHA_TEST])
-        interp_note(ip, DIAG_NOTE_ALPHA_TEST);
-    if (c[INTERP_CAP_TEXTURE_CUBE_MAP]) /* 3D: interp_texture.c's slices */
-        interp_note(ip, DIAG_NOTE_TEXTURE);
+    if (c[INTERP_CAP_ALPHA_TEST] && a->color_buffer.alpha_func != GL_ALWAYS &&
+        ip->prim_mode <= GL_LINE_STRIP)
+        interp_note(ip, DIAG_NOTE_ALPHA_TEST); /* polygons: interp_alpha_face */
+    /* Cube maps and 3D textures are drawn (interp_texture.c): their notes
+     * come with the texture, as the environment's do. */
     if (c[INTERP_CAP_POLYGON_STIPPLE] && ip->prim_mode > GL_LINE_STRIP)
         interp_note(ip, DIAG_NOTE_STIPPLE); /* line stipple: interp_stipple.c */
     if (interp_scissor_cuts(ip, a->viewport.rect) && ip->prim_mode <= GL_LINE_STRIP)
@@ -469,6 +470,7 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
     if (ip->prim_color_sum || ip->prim_fog_vertex)
         interp_fogsec_vertex(ip, v->color);
     interp_fogsec_track(ip);
+    uint8_t afail = interp_alpha_vertex(ip, k, v->color[3]);
     if (ip->prim_blend_mapped)
         map_blend(ip, v->color);
     if (ip->prim_blend == SCENE_BLEND_OPAQUE)
@@ -479,7 +481,15 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
     v->tex1[0] = v->tex1[1] = 0;
     if (ip->draw_unit[0] >= 0) {
         double obj[4] = {x, y, z, 1};
-        interp_vertex_texcoord(ip, ip->draw_unit[0], obj, v->normal, v->tex);
+        if (ip->draw_unit[1] < 0 && interp_unit_cube(ip, ip->draw_unit[0])) {
+            float str[3]; /* a cube map's r rides in tex1 (scene_texture.cube) */
+            interp_vertex_texcoord3(ip, ip->draw_unit[0], obj, v->normal, str);
+            v->tex[0] = str[0];
+            v->tex[1] = str[1];
+            v->tex1[0] = str[2];
+        } else {
+            interp_vertex_texcoord(ip, ip->draw_unit[0], obj, v->normal, v->tex);
+        }
         if (ip->draw_unit[1] >= 0)
             interp_vertex_texcoord(ip, ip->draw_unit[1], obj, v->normal, v->tex1);
     } else if (q == 1 || q == 0 || !isfinite(q)) {
@@ -489,7 +499,7 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
         v->tex[0] = a->current.texcoord[0] / q;
         v->tex[1] = a->current.texcoord[1] / q;
     }
-    ip->edge[k] = a->current.edge_flag;
+    ip->edge[k] = (uint8_t)(a->current.edge_flag | afail);
     scene_commit_vertices(s, 1);
     interp_vmat_vertex(ip);
 }
@@ -770,6 +780,9 @@ static void fill_tri(assembly *as, uint32_t a, uint32_t b, uint32_t c, uint32_t 
     }
     if (!as->mesh || as->ip->stencil.only)
         return;
+    const uint32_t abc[3] = {a, b, c};
+    if (!interp_alpha_face(as->ip, abc, 3, as->mesh->look.texture))
+        return;
     if (as->swap)
         scene_add_tri(as->s, as->base + a, as->base + c, as->base + b, as->base + provoking);
     else
@@ -800,7 +813,7 @@ static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t prov
         return;
     }
     for (int k = 0; k < n; k++) {
-        if (edge_flags && !ip->edge[idx[k]])
+        if (edge_flags && !(ip->edge[idx[k]] & 1))
             continue; /* GL draws only boundary edges (and their vertices) */
         if (mode == GL_LINE)
             add_segment(as, as->base + idx[k], as->base + idx[(k + 1) % n], as->base + provoking);

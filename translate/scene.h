@@ -218,6 +218,7 @@ typedef struct scene_texture {
     int width, height;
     uint64_t hash;
     bool repeat_s, repeat_t; /* GL_REPEAT; else clamped */
+    bool mirror_s, mirror_t; /* repeated as GL_MIRRORED_REPEAT */
     bool border_s, border_t; /* clamped as GL_CLAMP (the border colour counts
                                 under linear filtering), not GL_CLAMP_TO_EDGE */
     float border[4];         /* GL_TEXTURE_BORDER_COLOR */
@@ -226,7 +227,49 @@ typedef struct scene_texture {
     float env_color[4];
     bool colour_is_texel;    /* the texel's colour replaces the fragment's
                                 (REPLACE or DECAL of a colour format) */
+    /* The alpha test per texel (interp_alphatest.c), when the texel's
+     * alpha counts: GL_NEVER..GL_NOTEQUAL, 0 for none; the fragment's
+     * alpha is the texel's times the vertex alpha when alpha_uses_af. */
+    uint32_t alpha_func;
+    float alpha_ref, alpha_af; /* alpha_af: the draw's vertex alpha */
+    bool alpha_uses_af;
+    /* Mipmapped minification (issue 14): the minification filter when it
+     * mipmaps (GL_*_MIPMAP_*, else 0), the scene texture of the next level
+     * (-1 at the last; each level an image of its own, same sampling), and
+     * the LOD clamps (GL_TEXTURE_MIN_LOD, MAX_LOD, relative to this level). */
+    uint32_t mip_filter;
+    int32_t mip_next;
+    float min_lod, max_lod;
+    /* A cube map (GL_TEXTURE_CUBE_MAP): this is face +X, and mip_next
+     * links -X, +Y, -Y, +Z, -Z in turn (mip_filter 0); the coordinates are
+     * the vertices' (tex[0], tex[1], tex1[0]) = (s, t, r). */
+    bool cube;
 } scene_texture;
+
+/* Whether a texture's alpha test is drawn on the filtered alpha (GL_LINEAR
+ * and a comparison with a side: the writer's pigment_map by transmit),
+ * rather than texel by texel in the image. */
+static inline bool scene_alpha_crisp(const scene_texture *t)
+{
+    return t->linear && !t->mip_filter && !t->cube && t->alpha_func >= 0x0201 && t->alpha_func <= 0x0206 &&
+           t->alpha_func != 0x0202 && t->alpha_func != 0x0205;
+}
+
+/* Whether alpha a passes the alpha test func (GL_NEVER..GL_ALWAYS)
+ * against ref (GL 1.x 4.1.4). */
+static inline bool scene_alpha_pass(uint32_t func, float a, float ref)
+{
+    switch (func) {
+    case 0x0200: return false;    /* GL_NEVER */
+    case 0x0201: return a < ref;  /* GL_LESS */
+    case 0x0202: return a == ref; /* GL_EQUAL */
+    case 0x0203: return a <= ref; /* GL_LEQUAL */
+    case 0x0204: return a > ref;  /* GL_GREATER */
+    case 0x0205: return a != ref; /* GL_NOTEQUAL */
+    case 0x0206: return a >= ref; /* GL_GEQUAL */
+    default: return true;         /* GL_ALWAYS */
+    }
+}
 
 /* A GLU/GLUT solid with an exact POV-Ray counterpart (issue 5), in its
  * object space (GL's axis conventions), placed by to_eye:
