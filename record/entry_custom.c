@@ -91,20 +91,16 @@ static bool executes(const rgl_stream *s)
 }
 
 
-static int target_slot(GLenum target)
-{
-    return target == GL_TEXTURE_1D ? 0 : target == GL_TEXTURE_2D ? 1 : -1;
-}
-
-/* The texture object bound to target in s, created on first use. */
+/* The texture object bound to target (a cube-map face: the cube map) on
+ * the active unit in s, created on first use. */
 static rgl_texture *bound_texture(rgl_stream *s, GLenum target)
 {
-    int slot = target_slot(target);
+    int slot = rgl_tex_slot(target);
     if (slot < 0)
         return NULL;
-    rgl_texture *t = rgl_texture_get(s, s->objs.bound[slot], true);
+    rgl_texture *t = rgl_texture_get(s, s->objs.bound[rgl_tex_active_unit(s)][slot], true);
     if (t && !t->target)
-        t->target = target;
+        t->target = rgl_tex_slot_target(slot);
     return t;
 }
 
@@ -118,6 +114,10 @@ static void texture_define(rgl_stream *s, GLenum target, const uint8_t *from, bo
     rgl_texture *t = bound_texture(s, target);
     if (!t)
         return;
+    /* A cube map's faces are defined one by one: a new +X face starts its
+     * definition afresh, the other faces add to it. */
+    if (target > GL_TEXTURE_CUBE_MAP_POSITIVE_X && target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z)
+        reset = false;
     if (reset)
         t->defs.size = 0;
     size_t n = (size_t)(s->pos - from);
@@ -799,9 +799,10 @@ RGL_EXPORT void rayglDeleteTextures(GLsizei n, const GLuint *textures)
                 continue;
             texture_forget(s, textures[k]);
             /* Deleting a bound texture binds 0 (GL 1.5, 3.8.12). */
-            for (int b = 0; b < 2; b++)
-                if (s->objs.bound[b] == textures[k])
-                    s->objs.bound[b] = 0;
+            for (int u = 0; u < RGL_MAX_TEX_UNITS; u++)
+                for (int b = 0; b < RGL_TEX_TARGETS; b++)
+                    if (s->objs.bound[u][b] == textures[k])
+                        s->objs.bound[u][b] = 0;
         }
     }
     glDeleteTextures(n, textures);
@@ -809,11 +810,12 @@ RGL_EXPORT void rayglDeleteTextures(GLsizei n, const GLuint *textures)
 
 RGL_EXPORT void rayglBindTexture(GLenum target, GLuint texture)
 {
-    int slot = target_slot(target);
+    int slot = rgl_tex_slot(target);
     rgl_stream *s;
-    if (slot >= 0 && rgl_reserve(&s, 1)) {
-        if (executes(s)) {
-            s->objs.bound[slot] = texture;
+    /* A cube-map face is no target of glBindTexture. */
+    if (slot >= 0 && target == rgl_tex_slot_target(slot) && rgl_reserve(&s, 1)) {
+        if (executes(s) && !s->in_begin) {
+            s->objs.bound[rgl_tex_active_unit(s)][slot] = texture;
             rgl_texture *t = rgl_texture_get(s, texture, true);
             if (t && !t->target)
                 t->target = target;
@@ -834,10 +836,12 @@ RGL_EXPORT void rayglBindTexture(GLenum target, GLuint texture)
 static void texture_compact(GLenum target)
 {
     rgl_stream *s = rgl_tls_stream;
-    int slot = target_slot(target);
-    if (!s || slot < 0 || !executes(s) || !rgl_live_context())
+    /* Read back as 2D or 1D images: the other targets stay as recorded. */
+    int slot = rgl_tex_slot(target);
+    if (!s || (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) || !executes(s) ||
+        !rgl_live_context())
         return;
-    rgl_texture *t = rgl_texture_get(s, s->objs.bound[slot], false);
+    rgl_texture *t = rgl_texture_get(s, s->objs.bound[rgl_tex_active_unit(s)][slot], false);
     if (!t || t->defs.size <= RGL_TEX_DEFS_COMPACT)
         return;
     static const GLenum pack[4] = {GL_PACK_ALIGNMENT, GL_PACK_ROW_LENGTH, GL_PACK_SKIP_ROWS,

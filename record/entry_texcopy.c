@@ -177,16 +177,23 @@ RGL_EXPORT void rayglTexImage3D(GLenum target, GLint level, GLint internalFormat
                                 GLenum type, const GLvoid *pixels)
 {
     rgl_stream *s;
+    const uint8_t *from = NULL;
     if (rgl_reserve(&s, 1)) {
         int64_t id = rgl_tex_pixels3d(s, false, target, level, internalFormat, 0, 0, 0, width,
                                       height, depth, border, format, type, pixels);
         rgl_note_skipped(RGL_OP_TexImage3D, id);
-        if (id >= 0)
-            rgl_record(RGL_OP_TexImage3D, "eiiiiiieee", target, level, internalFormat, width,
-                       height, depth, border, format, type, (uint32_t)id);
+        /* Kept as the texture's definition for the snapshot (snaptex.c). */
+        if (id >= 0 && rgl_reserve(&s, TEXCOPY_RECORD_ROOM)) {
+            from = s->pos;
+            if (!rgl_record(RGL_OP_TexImage3D, "eiiiiiieee", target, level, internalFormat,
+                            width, height, depth, border, format, type, (uint32_t)id))
+                from = NULL;
+        }
     }
     glTexImage3D(target, level, internalFormat, width, height, depth, border, format, type,
                  pixels);
+    if (from)
+        rgl_texture_defined(s, target, from, level == 0);
 }
 
 RGL_EXPORT void rayglTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
@@ -194,14 +201,20 @@ RGL_EXPORT void rayglTexSubImage3D(GLenum target, GLint level, GLint xoffset, GL
                                    GLenum format, GLenum type, const GLvoid *pixels)
 {
     rgl_stream *s;
+    const uint8_t *from = NULL;
     if (rgl_reserve(&s, 1)) {
         int64_t id = rgl_tex_pixels3d(s, true, target, level, 0, xoffset, yoffset, zoffset, width,
                                       height, depth, 0, format, type, pixels);
         rgl_note_skipped(RGL_OP_TexSubImage3D, id);
-        if (id > 0)
-            rgl_record(RGL_OP_TexSubImage3D, "eiiiiiiieee", target, level, xoffset, yoffset,
-                       zoffset, width, height, depth, format, type, (uint32_t)id);
+        if (id > 0 && rgl_reserve(&s, TEXCOPY_RECORD_ROOM)) {
+            from = s->pos;
+            if (!rgl_record(RGL_OP_TexSubImage3D, "eiiiiiiieee", target, level, xoffset,
+                            yoffset, zoffset, width, height, depth, format, type, (uint32_t)id))
+                from = NULL;
+        }
     }
     glTexSubImage3D(target, level, xoffset, yoffset, zoffset, width, height, depth, format,
                     type, pixels);
+    if (from)
+        rgl_texture_defined(s, target, from, false);
 }
