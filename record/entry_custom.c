@@ -408,23 +408,33 @@ static bool record_elements(uint32_t op, GLenum mode, GLuint start, GLuint end, 
     return ok;
 }
 
-RGL_EXPORT void rayglArrayElement(GLint i)
+static void array_element(uint32_t op, GLint i)
 {
     /* Inside glBegin/glEnd: no matrix read-back here (glGet is illegal). */
-    if (i >= 0 && record_arrays(RGL_OP_ArrayElement, i, 1))
-        rgl_record(RGL_OP_ArrayElement, "i", i);
+    if (i >= 0 && record_arrays(op, i, 1))
+        rgl_record(op, "i", i);
     glArrayElement(i);
+}
+
+RGL_EXPORT void rayglArrayElement(GLint i)
+{
+    array_element(RGL_OP_ArrayElement, i);
+}
+
+static void draw_arrays(uint32_t op, GLenum mode, GLint first, GLsizei count)
+{
+    rgl_stream *s = rgl_tls_stream;
+    if (first >= 0 && count >= 0 && s && draw_ok(s, op, mode)) {
+        rgl_resolve_matrices();
+        if (record_arrays(op, first, count))
+            rgl_record(op, "eii", mode, first, count);
+    }
+    glDrawArrays(mode, first, count);
 }
 
 RGL_EXPORT void rayglDrawArrays(GLenum mode, GLint first, GLsizei count)
 {
-    rgl_stream *s = rgl_tls_stream;
-    if (first >= 0 && count >= 0 && s && draw_ok(s, RGL_OP_DrawArrays, mode)) {
-        rgl_resolve_matrices();
-        if (record_arrays(RGL_OP_DrawArrays, first, count))
-            rgl_record(RGL_OP_DrawArrays, "eii", mode, first, count);
-    }
-    glDrawArrays(mode, first, count);
+    draw_arrays(RGL_OP_DrawArrays, mode, first, count);
 }
 
 RGL_EXPORT void rayglDrawElements(GLenum mode, GLsizei count, GLenum type, const GLvoid *indices)
@@ -443,12 +453,12 @@ RGL_EXPORT void rayglDrawRangeElements(GLenum mode, GLuint start, GLuint end, GL
 
 /* glMultiDrawArrays: one @ArrayData range covering every draw, then the
  * firsts and counts as two blobs of little-endian int32. */
-RGL_EXPORT void rayglMultiDrawArrays(GLenum mode, const GLint *first, const GLsizei *count,
-                                     GLsizei drawcount)
+static void multi_draw_arrays(uint32_t op, GLenum mode, const GLint *first, const GLsizei *count,
+                              GLsizei drawcount)
 {
     rgl_stream *s = rgl_tls_stream;
     bool ok = drawcount >= 0 && (drawcount == 0 || (first && count)) && s &&
-              draw_ok(s, RGL_OP_MultiDrawArrays, mode);
+              draw_ok(s, op, mode);
     int64_t lo = INT64_MAX, hi = 0;
     for (GLsizei i = 0; ok && i < drawcount; i++) {
         if (first[i] < 0 || count[i] < 0)
@@ -462,23 +472,29 @@ RGL_EXPORT void rayglMultiDrawArrays(GLenum mode, const GLint *first, const GLsi
         rgl_resolve_matrices();
         if (lo == INT64_MAX)
             lo = hi = 0;
-        if (record_arrays(RGL_OP_MultiDrawArrays, lo, hi - lo))
-            rgl_record(RGL_OP_MultiDrawArrays, "eBBi", mode, (const void *)first,
+        if (record_arrays(op, lo, hi - lo))
+            rgl_record(op, "eBBi", mode, (const void *)first,
                        (size_t)drawcount * 4, (const void *)count, (size_t)drawcount * 4,
                        drawcount);
     }
     glMultiDrawArrays(mode, first, count, drawcount);
 }
 
+RGL_EXPORT void rayglMultiDrawArrays(GLenum mode, const GLint *first, const GLsizei *count,
+                                     GLsizei drawcount)
+{
+    multi_draw_arrays(RGL_OP_MultiDrawArrays, mode, first, count, drawcount);
+}
+
 /* glMultiDrawElements: the index arrays of all the draws, one after the
  * other, in one blob; one @ArrayData range covering every index. */
-static void record_multi_elements(GLenum mode, const GLsizei *count, GLenum type,
+static void record_multi_elements(uint32_t op, GLenum mode, const GLsizei *count, GLenum type,
                                   const void *const *indices, GLsizei drawcount)
 {
     size_t ts = index_size(type);
     rgl_stream *s = rgl_tls_stream;
     if (!s || !ts || drawcount < 0 || (drawcount > 0 && (!count || !indices)) ||
-        !draw_ok(s, RGL_OP_MultiDrawElements, mode))
+        !draw_ok(s, op, mode))
         return;
     uint32_t eb = rgl_buffer_binding(s, GL_ELEMENT_ARRAY_BUFFER);
     size_t total = 0;
@@ -503,7 +519,7 @@ static void record_multi_elements(GLenum mode, const GLsizei *count, GLenum type
         size_t b;
         ok = idx && index_range(count[i], type, idx, &l, &h, &b);
         if (!idx && eb)
-            rgl_note_skipped(RGL_OP_MultiDrawElements, RGL_PX_SKIP_DATA); /* see record_arrays */
+            rgl_note_skipped(op, RGL_PX_SKIP_DATA); /* see record_arrays */
         if (ok && bytes) {
             memcpy(all + at, idx, bytes);
             at += bytes;
@@ -519,8 +535,8 @@ static void record_multi_elements(GLenum mode, const GLsizei *count, GLenum type
             lo = hi = 0;
         else
             hi++;
-        if (record_arrays(RGL_OP_MultiDrawElements, lo, (int64_t)hi - lo))
-            rgl_record(RGL_OP_MultiDrawElements, "eBeBi", mode, (const void *)count,
+        if (record_arrays(op, lo, (int64_t)hi - lo))
+            rgl_record(op, "eBeBi", mode, (const void *)count,
                        (size_t)drawcount * 4, type, (const void *)all, total, drawcount);
     }
     rgl_free(all);
@@ -529,8 +545,41 @@ static void record_multi_elements(GLenum mode, const GLsizei *count, GLenum type
 RGL_EXPORT void rayglMultiDrawElements(GLenum mode, const GLsizei *count, GLenum type,
                                        const void *const *indices, GLsizei drawcount)
 {
-    record_multi_elements(mode, count, type, indices, drawcount);
+    record_multi_elements(RGL_OP_MultiDrawElements, mode, count, type, indices, drawcount);
     glMultiDrawElements(mode, count, type, indices, drawcount);
+}
+
+/* The EXT names of the array draws: rows of their own, forwarded to the
+ * core functions, which gl.xml makes the same. */
+RGL_EXPORT void rayglArrayElementEXT(GLint i)
+{
+    array_element(RGL_OP_ArrayElementEXT, i);
+}
+
+RGL_EXPORT void rayglDrawArraysEXT(GLenum mode, GLint first, GLsizei count)
+{
+    draw_arrays(RGL_OP_DrawArraysEXT, mode, first, count);
+}
+
+RGL_EXPORT void rayglDrawRangeElementsEXT(GLenum mode, GLuint start, GLuint end, GLsizei count,
+                                          GLenum type, const void *indices)
+{
+    if (end >= start)
+        record_elements(RGL_OP_DrawRangeElementsEXT, mode, start, end, count, type, indices);
+    glDrawRangeElements(mode, start, end, count, type, indices);
+}
+
+RGL_EXPORT void rayglMultiDrawArraysEXT(GLenum mode, const GLint *first, const GLsizei *count,
+                                        GLsizei primcount)
+{
+    multi_draw_arrays(RGL_OP_MultiDrawArraysEXT, mode, first, count, primcount);
+}
+
+RGL_EXPORT void rayglMultiDrawElementsEXT(GLenum mode, const GLsizei *count, GLenum type,
+                                          const void *const *indices, GLsizei primcount)
+{
+    record_multi_elements(RGL_OP_MultiDrawElementsEXT, mode, count, type, indices, primcount);
+    glMultiDrawElements(mode, count, type, indices, primcount);
 }
 
 /* Keeps a pointer call's layout in the stream (GL changes nothing on error)
@@ -808,7 +857,7 @@ RGL_EXPORT void rayglDeleteTextures(GLsizei n, const GLuint *textures)
     glDeleteTextures(n, textures);
 }
 
-RGL_EXPORT void rayglBindTexture(GLenum target, GLuint texture)
+static void bind_texture(uint32_t op, GLenum target, GLuint texture)
 {
     int slot = rgl_tex_slot(target);
     rgl_stream *s;
@@ -820,9 +869,20 @@ RGL_EXPORT void rayglBindTexture(GLenum target, GLuint texture)
             if (t && !t->target)
                 t->target = target;
         }
-        rgl_record(RGL_OP_BindTexture, "ee", target, texture);
+        rgl_record(op, "ee", target, texture);
     }
     glBindTexture(target, texture);
+}
+
+RGL_EXPORT void rayglBindTexture(GLenum target, GLuint texture)
+{
+    bind_texture(RGL_OP_BindTexture, target, texture);
+}
+
+/* Forwarded to the core function, which gl.xml makes the same. */
+RGL_EXPORT void rayglBindTextureEXT(GLenum target, GLuint texture)
+{
+    bind_texture(RGL_OP_BindTextureEXT, target, texture);
 }
 
 /* A texture's definition past this many bytes of records is read back from
@@ -939,24 +999,41 @@ RGL_EXPORT void rayglTexImage2D(GLenum target, GLint level, GLint internalFormat
     glTexImage2D(target, level, internalFormat, width, height, border, format, type, pixels);
 }
 
-RGL_EXPORT void rayglTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
-                                   GLsizei width, GLsizei height, GLenum format, GLenum type,
-                                   const GLvoid *pixels)
+static void tex_subimage2d(uint32_t op, GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                           GLsizei width, GLsizei height, GLenum format, GLenum type,
+                           const GLvoid *pixels)
 {
     rgl_stream *s;
     if (rgl_reserve(&s, 1)) {
         int64_t id = rgl_tex_pixels(s, 2, true, target, level, 0, xoffset, yoffset, width,
                                     height, 0, format, type, pixels);
-        rgl_note_skipped(RGL_OP_TexSubImage2D, id);
+        rgl_note_skipped(op, id);
         if (id > 0 && rgl_reserve(&s, RGL_TEX_RECORD_ROOM)) {
             const uint8_t *from = s->pos;
-            if (rgl_record(RGL_OP_TexSubImage2D, "eiiiiieee", target, level, xoffset, yoffset,
+            if (rgl_record(op, "eiiiiieee", target, level, xoffset, yoffset,
                            width, height, format, type, (uint32_t)id))
                 texture_define(s, target, from, false);
         }
     }
     glTexSubImage2D(target, level, xoffset, yoffset, width, height, format, type, pixels);
     texture_compact(target);
+}
+
+RGL_EXPORT void rayglTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                   GLsizei width, GLsizei height, GLenum format, GLenum type,
+                                   const GLvoid *pixels)
+{
+    tex_subimage2d(RGL_OP_TexSubImage2D, target, level, xoffset, yoffset, width, height, format,
+                   type, pixels);
+}
+
+/* Forwarded to the core function (libOSMesa exports no glTexSubImage2DEXT). */
+RGL_EXPORT void rayglTexSubImage2DEXT(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                      GLsizei width, GLsizei height, GLenum format, GLenum type,
+                                      const void *pixels)
+{
+    tex_subimage2d(RGL_OP_TexSubImage2DEXT, target, level, xoffset, yoffset, width, height,
+                   format, type, pixels);
 }
 
 RGL_EXPORT GLint raygluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width,

@@ -124,6 +124,106 @@ static void test_objects(const char *path)
     rgl_reader_destroy(r);
 }
 
+static void test_ext(const char *path)
+{
+    CHECK(rayglRecordOpen(path) == 0);
+    rayglClearColor(0.25f, 0.5f, 0.75f, 1);
+    rayglClear(GL_COLOR_BUFFER_BIT);
+    GLuint tex[2];
+    rayglGenTextures(2, tex);
+    rayglBindTextureEXT(GL_TEXTURE_2D, tex[0]);
+    rayglCopyTexImage2DEXT(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, 4, 4, 0);
+    rayglCopyTexSubImage2DEXT(GL_TEXTURE_2D, 0, 1, 1, 0, 0, 2, 2);
+    GLubyte px[2 * 2 * 2 * 4] = {0};
+    rayglPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    rayglTexSubImage2DEXT(GL_TEXTURE_2D, 0, 0, 0, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    rayglBindTextureEXT(GL_TEXTURE_1D, tex[1]);
+    rayglCopyTexImage1DEXT(GL_TEXTURE_1D, 0, GL_RGBA, 0, 0, 4, 0);
+    rayglCopyTexSubImage1DEXT(GL_TEXTURE_1D, 0, 1, 0, 0, 2);
+    GLuint t3;
+    rayglGenTextures(1, &t3);
+    rayglBindTextureEXT(GL_TEXTURE_3D, t3);
+    rayglTexImage3DEXT(GL_TEXTURE_3D, 0, GL_RGBA, 2, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    rayglTexSubImage3DEXT(GL_TEXTURE_3D, 0, 0, 0, 1, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    rayglCopyTexSubImage3DEXT(GL_TEXTURE_3D, 0, 1, 1, 0, 0, 0, 1, 1);
+    rayglBlendEquationEXT(GL_FUNC_ADD);
+    /* The EXT array draws. */
+    static const GLfloat v[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+    static const GLushort idx[4] = {0, 1, 2, 3};
+    const GLint first[1] = {0};
+    const GLsizei count[1] = {4};
+    const void *const idxs[1] = {idx};
+    rayglEnableClientState(GL_VERTEX_ARRAY);
+    rayglVertexPointer(2, GL_FLOAT, 0, v);
+    rayglDrawArraysEXT(GL_QUADS, 0, 4);
+    rayglDrawRangeElementsEXT(GL_QUADS, 0, 3, 4, GL_UNSIGNED_SHORT, idx);
+    rayglMultiDrawArraysEXT(GL_QUADS, first, count, 1);
+    rayglMultiDrawElementsEXT(GL_QUADS, count, GL_UNSIGNED_SHORT, idxs, 1);
+    rayglBegin(GL_QUADS);
+    for (GLint k = 0; k < 4; k++)
+        rayglArrayElementEXT(k);
+    rayglEnd();
+    rayglDisableClientState(GL_VERTEX_ARRAY);
+    /* Rejected as the core names are: not recorded. */
+    rayglCopyTexImage2DEXT(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, -1, 4, 0);
+    CHECK(glGetError() != GL_NO_ERROR);
+    while (glGetError() != GL_NO_ERROR)
+        ;
+    /* GL carried them out: the 2D texture is the clear colour. */
+    GLint w = 0;
+    glBindTexture(GL_TEXTURE_2D, tex[0]);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
+    CHECK(w == 4);
+    rayglutSwapBuffers();
+    rayglClear(GL_COLOR_BUFFER_BIT);
+    rayglutSwapBuffers();
+    rayglRecordClose();
+
+    rgl_reader *r = trace_open(path);
+    if (!r)
+        return;
+    rgl_frame_info fi;
+    trace_cmds c = trace_frame(r, 0, &fi);
+    CHECK(c.clean);
+    static const struct {
+        uint32_t op;
+        size_t n;
+    } want[] = {
+        {RGL_OP_BindTextureEXT, 3},        {RGL_OP_CopyTexImage2DEXT, 1},
+        {RGL_OP_CopyTexSubImage2DEXT, 1},  {RGL_OP_TexSubImage2DEXT, 1},
+        {RGL_OP_CopyTexImage1DEXT, 1},     {RGL_OP_CopyTexSubImage1DEXT, 1},
+        {RGL_OP_TexImage3DEXT, 1},         {RGL_OP_TexSubImage3DEXT, 1},
+        {RGL_OP_CopyTexSubImage3DEXT, 1},  {RGL_OP_BlendEquationEXT, 1},
+        {RGL_OP_CopyTexImage2D, 0},        {RGL_OP_TexImage3D, 0},
+        {RGL_OP_BindTexture, 0},
+        {RGL_OP_DrawArraysEXT, 1},         {RGL_OP_DrawRangeElementsEXT, 1},
+        {RGL_OP_MultiDrawArraysEXT, 1},    {RGL_OP_MultiDrawElementsEXT, 1},
+        {RGL_OP_ArrayElementEXT, 4},       {RGL_OP_DrawArrays, 0},
+        {RGL_OP_ArrayElement, 0},          {RGL_OP_ArrayData, 8},
+    };
+    for (size_t k = 0; k < sizeof want / sizeof want[0]; k++)
+        CHECKM(trace_cmds_count(&c, want[k].op) == want[k].n, "opcode 0x%x: %zu", want[k].op,
+               trace_cmds_count(&c, want[k].op));
+    long k = trace_cmds_find(&c, 0, "glCopyTexImage2DEXT(target=GL_TEXTURE_2D, level=0");
+    CHECK(k >= 0 && strstr(c.lines[k], "pixels=#") && !strstr(c.lines[k], "pixels=#0"));
+    if (check_failures)
+        trace_cmds_print(&c, "EXT");
+    trace_cmds_free(&c);
+    /* The next frame's snapshot re-creates the textures from them. */
+    c = trace_frame(r, 1, &fi);
+    trace_cmds s = trace_resource_cmds(r, fi.state);
+    CHECK(trace_cmds_find(&s, 0, "glCopyTexImage2DEXT(target=GL_TEXTURE_2D") >= 0);
+    CHECK(trace_cmds_find(&s, 0, "glTexSubImage2DEXT(target=GL_TEXTURE_2D") >= 0);
+    CHECK(trace_cmds_find(&s, 0, "glCopyTexImage1DEXT(target=GL_TEXTURE_1D") >= 0);
+    CHECK(trace_cmds_find(&s, 0, "glTexImage3DEXT(target=GL_TEXTURE_3D") >= 0);
+    CHECK(trace_cmds_find(&s, 0, "glTexSubImage3DEXT(target=GL_TEXTURE_3D") >= 0);
+    if (check_failures)
+        trace_cmds_print(&s, "EXT snapshot");
+    trace_cmds_free(&s);
+    trace_cmds_free(&c);
+    rgl_reader_destroy(r);
+}
+
 int main(void)
 {
     OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 16, 0, 0, NULL);
@@ -132,13 +232,16 @@ int main(void)
     char dir[] = "/tmp/raygl-snaptex-XXXXXX";
     if (!CHECK(mkdtemp(dir) != NULL))
         return check_exit();
-    char p1[64];
+    char p1[64], p2[64];
     snprintf(p1, sizeof p1, "%s/objects.raygl", dir);
+    snprintf(p2, sizeof p2, "%s/ext.raygl", dir);
     test_objects(p1);
+    test_ext(p2);
     glFinish();
     OSMesaDestroyContext(ctx);
     if (!check_failures) {
         unlink(p1);
+        unlink(p2);
         rmdir(dir);
     }
     return check_exit();
