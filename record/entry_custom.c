@@ -890,55 +890,81 @@ RGL_EXPORT void rayglBindTextureEXT(GLenum target, GLuint texture)
  * would otherwise make every snapshot longer than the last. */
 #define RGL_TEX_DEFS_COMPACT 4096
 
+/* Level `level` of `target` (a cube map's face for a cube map) read back as
+ * GL_RGBA / GL_UNSIGNED_BYTE and appended to defs as the glTexImage that
+ * makes it. Returns false when the level is empty; *ok false on failure. */
+static bool compact_level(rgl_buf *defs, GLenum target, GLint level, bool *ok)
+{
+    GLint w = 0, h = 0, d = 1, fmt = 0, border = 0;
+    glGetTexLevelParameteriv(target, level, GL_TEXTURE_WIDTH, &w);
+    glGetTexLevelParameteriv(target, level, GL_TEXTURE_HEIGHT, &h);
+    if (target == GL_TEXTURE_3D)
+        glGetTexLevelParameteriv(target, level, GL_TEXTURE_DEPTH, &d);
+    glGetTexLevelParameteriv(target, level, GL_TEXTURE_INTERNAL_FORMAT, &fmt);
+    glGetTexLevelParameteriv(target, level, GL_TEXTURE_BORDER, &border);
+    if (w <= 0 || h <= 0 || d <= 0)
+        return false;
+    size_t bytes = (size_t)w * (size_t)h * (size_t)d * 4;
+    if (bytes > RGL_CHUNK_MAX_PAYLOAD) { /* no resource holds it: keep the records */
+        *ok = false;
+        return false;
+    }
+    uint8_t *px = rgl_alloc(bytes);
+    if (!px) {
+        rgl_fail(ENOMEM, "allocation failed");
+        *ok = false;
+        return false;
+    }
+    glGetTexImage(target, level, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    uint32_t id = rgl_resource_put(RGL_RES_BYTES, px, bytes);
+    rgl_free(px);
+    if (target == GL_TEXTURE_1D)
+        *ok = id && rgl_emit(defs, RGL_OP_TexImage1D, "eiiiieee", target, level, fmt, w, border,
+                             GL_RGBA, GL_UNSIGNED_BYTE, id);
+    else if (target == GL_TEXTURE_3D)
+        *ok = id && rgl_emit(defs, RGL_OP_TexImage3D, "eiiiiiieee", target, level, fmt, w, h, d,
+                             border, GL_RGBA, GL_UNSIGNED_BYTE, id);
+    else
+        *ok = id && rgl_emit(defs, RGL_OP_TexImage2D, "eiiiiieee", target, level, fmt, w, h,
+                             border, GL_RGBA, GL_UNSIGNED_BYTE, id);
+    return *ok;
+}
+
 /* Replaces the definition of the texture bound to target by its images read
- * back from a live context (GL_RGBA, GL_UNSIGNED_BYTE), once it has grown
- * past RGL_TEX_DEFS_COMPACT. The pack state is saved and restored. */
+ * back from a live context (GL_RGBA, GL_UNSIGNED_BYTE; every level, every
+ * face of a cube map), once it has grown past RGL_TEX_DEFS_COMPACT. The
+ * pack state is saved and restored. */
 static void texture_compact(GLenum target)
 {
     rgl_stream *s = rgl_tls_stream;
-    /* Read back as 2D or 1D images: the other targets stay as recorded. */
     int slot = rgl_tex_slot(target);
-    if (!s || (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) || !executes(s) ||
-        !rgl_live_context())
+    if (!s || slot < 0 || !executes(s) || !rgl_live_context())
         return;
     rgl_texture *t = rgl_texture_get(s, s->objs.bound[rgl_tex_active_unit(s)][slot], false);
     if (!t || t->defs.size <= RGL_TEX_DEFS_COMPACT)
         return;
-    static const GLenum pack[4] = {GL_PACK_ALIGNMENT, GL_PACK_ROW_LENGTH, GL_PACK_SKIP_ROWS,
-                                   GL_PACK_SKIP_PIXELS};
-    GLint saved[4] = {4, 0, 0, 0};
-    for (int k = 0; k < 4; k++) {
+    GLenum obj = rgl_tex_slot_target(slot);
+    /* The 3D ones only where 3D textures are (GL 1.2). */
+    static const GLenum pack[6] = {GL_PACK_ALIGNMENT,  GL_PACK_ROW_LENGTH,
+                                   GL_PACK_SKIP_ROWS,  GL_PACK_SKIP_PIXELS,
+                                   GL_PACK_IMAGE_HEIGHT, GL_PACK_SKIP_IMAGES};
+    int npack = obj == GL_TEXTURE_3D ? 6 : 4;
+    GLint saved[6] = {4, 0, 0, 0, 0, 0};
+    for (int k = 0; k < npack; k++) {
         glGetIntegerv(pack[k], &saved[k]);
         glPixelStorei(pack[k], k == 0 ? 4 : 0);
     }
     rgl_buf defs = {0};
     bool ok = true;
-    for (GLint level = 0; ok && level < 32; level++) {
-        GLint w = 0, h = 0, fmt = 0, border = 0;
-        glGetTexLevelParameteriv(target, level, GL_TEXTURE_WIDTH, &w);
-        glGetTexLevelParameteriv(target, level, GL_TEXTURE_HEIGHT, &h);
-        glGetTexLevelParameteriv(target, level, GL_TEXTURE_INTERNAL_FORMAT, &fmt);
-        glGetTexLevelParameteriv(target, level, GL_TEXTURE_BORDER, &border);
-        if (w <= 0 || h <= 0)
-            break;
-        size_t bytes = (size_t)w * (size_t)h * 4;
-        uint8_t *px = rgl_alloc(bytes);
-        if (!px) {
-            rgl_fail(ENOMEM, "allocation failed");
-            ok = false;
-            break;
-        }
-        glGetTexImage(target, level, GL_RGBA, GL_UNSIGNED_BYTE, px);
-        uint32_t id = rgl_resource_put(RGL_RES_BYTES, px, bytes);
-        rgl_free(px);
-        if (target == GL_TEXTURE_1D)
-            ok = id && rgl_emit(&defs, RGL_OP_TexImage1D, "eiiiieee", target, level, fmt, w,
-                                border, GL_RGBA, GL_UNSIGNED_BYTE, id);
-        else
-            ok = id && rgl_emit(&defs, RGL_OP_TexImage2D, "eiiiiieee", target, level, fmt, w, h,
-                                border, GL_RGBA, GL_UNSIGNED_BYTE, id);
-    }
-    for (int k = 0; k < 4; k++)
+    bool cube = obj == GL_TEXTURE_CUBE_MAP;
+    GLenum first = cube ? GL_TEXTURE_CUBE_MAP_POSITIVE_X : obj;
+    GLenum last = cube ? GL_TEXTURE_CUBE_MAP_NEGATIVE_Z : obj;
+    for (GLenum face = first; ok && face <= last; face++)
+        /* A rectangle texture has level 0 only. */
+        for (GLint level = 0; level < (obj == GL_TEXTURE_RECTANGLE_ARB ? 1 : 32); level++)
+            if (!compact_level(&defs, face, level, &ok))
+                break;
+    for (int k = 0; k < npack; k++)
         glPixelStorei(pack[k], saved[k]);
     if (ok && defs.size) {
         rgl_buf_finish(&t->defs);
@@ -997,6 +1023,10 @@ RGL_EXPORT void rayglTexImage2D(GLenum target, GLint level, GLint internalFormat
         }
     }
     glTexImage2D(target, level, internalFormat, width, height, border, format, type, pixels);
+    /* A cube map's faces add to its definition (texture_define): bounded
+     * as sub-images are. */
+    if (target > GL_TEXTURE_CUBE_MAP_POSITIVE_X && target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z)
+        texture_compact(target);
 }
 
 static void tex_subimage2d(uint32_t op, GLenum target, GLint level, GLint xoffset, GLint yoffset,

@@ -224,6 +224,74 @@ static void test_ext(const char *path)
     rgl_reader_destroy(r);
 }
 
+static size_t count_prefix(const trace_cmds *c, const char *prefix)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < c->count; i++)
+        n += strncmp(c->lines[i], prefix, strlen(prefix)) == 0;
+    return n;
+}
+
+static void test_updates(const char *path)
+{
+    CHECK(rayglRecordOpen(path) == 0);
+    GLuint tex[3];
+    rayglGenTextures(3, tex);
+    GLubyte img[4 * 4 * 4 * 4] = {0};
+    rayglBindTexture(GL_TEXTURE_RECTANGLE_ARB, tex[0]);
+    rayglTexImage2D(GL_TEXTURE_RECTANGLE_ARB, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    rayglBindTexture(GL_TEXTURE_3D, tex[1]);
+    rayglTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA, 4, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    rayglBindTexture(GL_TEXTURE_CUBE_MAP, tex[2]);
+    for (GLenum f = GL_TEXTURE_CUBE_MAP_POSITIVE_X; f <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z; f++)
+        rayglTexImage2D(f, 0, GL_RGBA, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    const int frames = 300;
+    for (int f = 0; f < frames; f++) {
+        GLubyte texel[4] = {(GLubyte)f, (GLubyte)(f >> 8), 7, 255};
+        rayglBindTexture(GL_TEXTURE_RECTANGLE_ARB, tex[0]);
+        rayglTexSubImage2D(GL_TEXTURE_RECTANGLE_ARB, 0, f % 4, (f / 4) % 4, 1, 1, GL_RGBA,
+                           GL_UNSIGNED_BYTE, texel);
+        rayglBindTexture(GL_TEXTURE_3D, tex[1]);
+        rayglTexSubImage3D(GL_TEXTURE_3D, 0, f % 4, (f / 4) % 4, (f / 16) % 4, 1, 1, 1, GL_RGBA,
+                           GL_UNSIGNED_BYTE, texel);
+        /* A face made anew every frame. */
+        rayglBindTexture(GL_TEXTURE_CUBE_MAP, tex[2]);
+        GLubyte face[2 * 2 * 4];
+        memset(face, f & 255, sizeof face);
+        rayglTexImage2D(GL_TEXTURE_CUBE_MAP_NEGATIVE_Z, 0, GL_RGBA, 2, 2, 0, GL_RGBA,
+                        GL_UNSIGNED_BYTE, face);
+        rayglutSwapBuffers();
+    }
+    CHECK(glGetError() == GL_NO_ERROR);
+    rayglRecordClose();
+    rgl_reader *r = trace_open(path);
+    if (!r)
+        return;
+    rgl_frame_info fi;
+    if (CHECK(rgl_reader_frame(r, (size_t)frames - 1, &fi, NULL) == RGL_OK)) {
+        trace_cmds s = trace_resource_cmds(r, fi.state);
+        size_t rect = count_prefix(&s, "glTexSubImage2D(target=GL_TEXTURE_RECTANGLE");
+        size_t vol = count_prefix(&s, "glTexSubImage3D(target=GL_TEXTURE_3D");
+        size_t faces = count_prefix(&s, "glTexImage2D(target=GL_TEXTURE_CUBE_MAP_");
+        CHECKM(rect < 200 && vol < 200 && faces < 200, "%zu, %zu sub-images, %zu faces", rect,
+               vol, faces);
+        /* Compacted: whole images read back, every cube face kept. */
+        CHECK(count_prefix(&s, "glTexImage3D(target=GL_TEXTURE_3D") == 1);
+        CHECK(count_prefix(&s, "glTexImage2D(target=GL_TEXTURE_RECTANGLE") == 1);
+        for (GLenum f = GL_TEXTURE_CUBE_MAP_POSITIVE_X; f <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z;
+             f++) {
+            char want[96];
+            snprintf(want, sizeof want, "glTexImage2D(target=%s",
+                     rgl_enum_name(f, "target"));
+            CHECKM(trace_cmds_find(&s, 0, want) >= 0, "%s", want);
+        }
+        if (check_failures)
+            trace_cmds_print(&s, "updated");
+        trace_cmds_free(&s);
+    }
+    rgl_reader_destroy(r);
+}
+
 int main(void)
 {
     OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 16, 0, 0, NULL);
@@ -232,16 +300,19 @@ int main(void)
     char dir[] = "/tmp/raygl-snaptex-XXXXXX";
     if (!CHECK(mkdtemp(dir) != NULL))
         return check_exit();
-    char p1[64], p2[64];
+    char p1[64], p2[64], p3[64];
     snprintf(p1, sizeof p1, "%s/objects.raygl", dir);
     snprintf(p2, sizeof p2, "%s/ext.raygl", dir);
+    snprintf(p3, sizeof p3, "%s/updates.raygl", dir);
     test_objects(p1);
     test_ext(p2);
+    test_updates(p3);
     glFinish();
     OSMesaDestroyContext(ctx);
     if (!check_failures) {
         unlink(p1);
         unlink(p2);
+        unlink(p3);
         rmdir(dir);
     }
     return check_exit();
