@@ -59,6 +59,12 @@ typedef struct rgl_buf {
  * stream (one context per thread) so the snapshot can re-create them. */
 #define RGL_TEX_PARAMS_MAX 16
 
+/* Texture targets whose objects are kept: 1D, 2D, rectangle, 3D, cube map
+ * (slots of rgl_tex_slot, snaptex.c). */
+#define RGL_TEX_TARGETS 5
+#define RGL_TEX_SLOT_RECT 2
+#define RGL_TEX_SLOT_CUBE 4
+
 typedef struct rgl_tex_param {
     uint32_t pname;
     uint8_t count;  /* values held */
@@ -85,7 +91,8 @@ typedef struct rgl_objects {
     size_t ntextures, cap_textures;
     rgl_list_rec *lists;
     size_t nlists, cap_lists;
-    uint32_t bound[2];          /* texture bound to GL_TEXTURE_1D, GL_TEXTURE_2D */
+    /* texture bound per unit to each target of rgl_tex_slot */
+    uint32_t bound[RGL_MAX_TEX_UNITS][RGL_TEX_TARGETS];
     uint32_t next_texture_name; /* RayGL's own names when GL has no context */
     /* GL_UNPACK_SWAP_BYTES .. GL_UNPACK_ALIGNMENT (0x0CF0 .. 0x0CF5) as the
      * program set them (alignment 0: GL's 4), for recording without a
@@ -383,6 +390,18 @@ int64_t rgl_tex_pixels3d(rgl_stream *s, bool sub, uint32_t target, int32_t level
  * kept), which `reset` starts afresh; then, for a sub-image, compacts a
  * definition grown too long (entry_custom.c). */
 void rgl_texture_defined(rgl_stream *s, uint32_t target, const uint8_t *from, bool reset);
+
+/* The slot of a texture target (a cube-map face: the cube map's), -1 for
+ * a target whose objects are not kept; and the target of a slot. */
+int rgl_tex_slot(uint32_t target);
+uint32_t rgl_tex_slot_target(int slot);
+
+/* The active texture unit of the current context (0 without a context,
+ * without multitexture, inside glBegin/glEnd, or past RGL_MAX_TEX_UNITS). */
+uint32_t rgl_tex_active_unit(const rgl_stream *s);
+
+/* The snapshot's texture objects and every unit's bindings (snaptex.c). */
+void rgl_snap_textures(rgl_stream *s, rgl_buf *out);
 
 /* Whether target is a proxy texture target (GL reads no pixels for it). */
 bool rgl_tex_is_proxy(uint32_t target);

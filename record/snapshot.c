@@ -6,8 +6,9 @@
  * deduplicated resource that the frame references, so each frame can be
  * translated without the frames before it (docs/design.md, "Resolved state").
  *
- * Only side-effect-free queries are used, except for texture parameters:
- * the texture is bound to read them and the binding is restored.
+ * Only side-effect-free queries are used, except for texture parameters
+ * and bindings (snaptex.c): the texture is bound, or the unit made active,
+ * to read them, and what GL had is restored.
  */
 #include <string.h>
 
@@ -36,10 +37,6 @@ static const GLenum caps_off[] = {
     GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1, GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3,
     GL_MAP2_TEXTURE_COORD_4, GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4,
 };
-
-/* Texture parameters read back from GL (the rest come from tracking). */
-static const GLenum tex_params_live[] = {GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER,
-                                         GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T};
 
 static GLint get_i(GLenum pname)
 {
@@ -333,63 +330,6 @@ static void snap_texenv(rgl_buf *b)
     }
 }
 
-static bool is_live_param(uint32_t pname)
-{
-    for (size_t k = 0; k < sizeof tex_params_live / sizeof tex_params_live[0]; k++)
-        if (tex_params_live[k] == pname)
-            return true;
-    return false;
-}
-
-/* The texture objects RayGL knows of: bind, their images (resource ids),
- * their parameters; then the bindings GL has now. */
-static void snap_textures(rgl_stream *s, rgl_buf *b)
-{
-    GLint bound1 = get_i(GL_TEXTURE_BINDING_1D), bound2 = get_i(GL_TEXTURE_BINDING_2D);
-    /* While GL compiles a list, glBindTexture would go into it: read the
-     * parameters only outside one. */
-    bool may_bind = get_i(GL_LIST_INDEX) == 0;
-    for (size_t t = 0; t < s->objs.ntextures; t++) {
-        const rgl_texture *tex = &s->objs.textures[t];
-        if (tex->target != GL_TEXTURE_1D && tex->target != GL_TEXTURE_2D)
-            continue;
-        rgl_emit(b, RGL_OP_BindTexture, "ee", tex->target, tex->name);
-        if (tex->defs.size) {
-            uint8_t *p = rgl_buf_reserve(b, tex->defs.size);
-            if (p)
-                rgl_buf_commit(b, (uint8_t *)memcpy(p, tex->defs.data, tex->defs.size) +
-                                      tex->defs.size);
-        }
-        for (uint32_t k = 0; k < tex->nparams; k++) {
-            const rgl_tex_param *pr = &tex->params[k];
-            if (is_live_param(pr->pname))
-                continue;
-            if (pr->is_float)
-                rgl_emit(b, RGL_OP_TexParameterfv, "eeN", tex->target, pr->pname, pr->f,
-                         (int)pr->count);
-            else
-                rgl_emit(b, RGL_OP_TexParameteriv, "eeI", tex->target, pr->pname, pr->i,
-                         (int)pr->count);
-        }
-        /* A name deleted behind RayGL's back is not re-created by binding. */
-        if (!may_bind || (tex->name != 0 && !glIsTexture(tex->name)))
-            continue;
-        glBindTexture(tex->target, tex->name);
-        for (size_t k = 0; k < sizeof tex_params_live / sizeof tex_params_live[0]; k++) {
-            GLint v = SENTINEL_I;
-            glGetTexParameteriv(tex->target, tex_params_live[k], &v);
-            if (v != SENTINEL_I)
-                rgl_emit(b, RGL_OP_TexParameteri, "eei", tex->target, tex_params_live[k], v);
-        }
-    }
-    if (may_bind) {
-        glBindTexture(GL_TEXTURE_1D, (GLuint)bound1);
-        glBindTexture(GL_TEXTURE_2D, (GLuint)bound2);
-    }
-    rgl_emit(b, RGL_OP_BindTexture, "ee", GL_TEXTURE_1D, (uint32_t)bound1);
-    rgl_emit(b, RGL_OP_BindTexture, "ee", GL_TEXTURE_2D, (uint32_t)bound2);
-}
-
 /* Multitexture (GL 1.3): what the calls above read is the active unit's,
  * replayed on the unit the snapshot's first glActiveTexture names. The
  * other units' state follows, each read with its unit made active and
@@ -508,7 +448,7 @@ bool rgl_snapshot_take(rgl_stream *s, rgl_buf *out)
     snap_raster(out);
     snap_texenv(out);
     rgl_emit(out, RGL_OP_ListBase, "e", (uint32_t)get_i(GL_LIST_BASE));
-    snap_textures(s, out);
+    rgl_snap_textures(s, out);
     rgl_quadrics_snapshot(out);
     snap_lists(s, out);
     snap_other_units(out, active, nunits);

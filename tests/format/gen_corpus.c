@@ -584,6 +584,50 @@ static int write_fogsec(const char *dir)
     return write_file(dir, "fogsec.bin", seq, eval_len);
 }
 
+/* ---- EXT names of texture calls; cube-map and per-unit snapshot bindings ---- */
+
+static int write_snaptex(const char *dir)
+{
+    static const uint8_t rgba[16] = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 9, 9, 9, 9};
+    rgl_trace_builder *b = rgl_trace_builder_create();
+    uint32_t px = 0;
+    const uint8_t *data;
+    size_t size;
+    int rc = 1;
+    if (!b)
+        return 1;
+    rgl_trace_builder_resource(b, RGL_RES_BYTES, rgba, sizeof rgba, &px);
+    eval_len = 0;
+    EV(Ortho, -1, 2, -1, 2, -1, 1);
+    EV(BindTextureEXT, 0x0DE1, 1);
+    EV(TexParameteri, 0x0DE1, 0x2801, 0x2600); /* GL_NEAREST */
+    EV(CopyTexImage2DEXT, 0x0DE1, 0, 0x1908, 0, 0, 2, 2, 0, px);
+    EV(CopyTexSubImage2DEXT, 0x0DE1, 0, 1, 1, 0, 0, 1, 1, px);
+    EV(TexSubImage2DEXT, 0x0DE1, 0, 0, 0, 1, 1, 0x1908, 0x1401, px);
+    EV(CopyTexImage1DEXT, 0x0DE0, 0, 0x1908, 0, 0, 4, 0, px);
+    EV(CopyTexSubImage1DEXT, 0x0DE0, 0, 0, 0, 0, 1, 0);
+    EV(BindTextureEXT, 0x806F, 2); /* GL_TEXTURE_3D */
+    EV(TexImage3DEXT, 0x806F, 0, 0x1908, 2, 1, 2, 0, 0x1908, 0x1401, px);
+    EV(TexSubImage3DEXT, 0x806F, 0, 0, 0, 1, 1, 1, 1, 0x1908, 0x1401, px);
+    EV(CopyTexSubImage3DEXT, 0x806F, 0, 0, 0, 0, 0, 0, 1, 1, 0);
+    EV(BlendEquationEXT, 0x8006); /* GL_FUNC_ADD */
+    /* A snapshot's cube map and a binding on unit 1. */
+    EV(BindTexture, 0x8513, 3);
+    EV(TexImage2D, 0x8515, 0, 0x1908, 1, 1, 0, 0x1908, 0x1401, px);
+    EV(TexImage2D, 0x851A, 0, 0x1908, 1, 1, 0, 0x1908, 0x1401, px);
+    EV(ActiveTexture, 0x84C1);
+    EV(BindTexture, 0x806F, 2);
+    EV(Enable, 0x806F);
+    EV(ActiveTexture, 0x84C0);
+    EV(Enable, 0x0DE1);
+    EV(Rectf, -1, -1, 1, 1);
+    if (rgl_trace_builder_frame(b, 0, 0, 0, 0, seq, eval_len) == RGL_OK &&
+        rgl_trace_builder_finish(b, true, &data, &size) == RGL_OK)
+        rc = write_file(dir, "snaptex.bin", data, size);
+    rgl_trace_builder_destroy(b);
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
     rng r = {0x5eed5eed12345678ull};
@@ -614,5 +658,6 @@ int main(int argc, char **argv)
     rc |= write_texcopy(argv[1]);
     rc |= write_shapes(argv[1]);
     rc |= write_fogsec(argv[1]);
+    rc |= write_snaptex(argv[1]);
     return rc;
 }

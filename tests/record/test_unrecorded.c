@@ -33,7 +33,7 @@ static void test_list(void)
     static const char *const counted[] = {
         "glIndexMask", "glIndexi", "glCreateProgram", "glBlendColor", "glutStrokeCharacter",
         "glPixelMapfv", "glutBitmapCharacter", "glutBitmapString", "glPixelMapuiv", "glClearIndex",
-        "glTexImage3DEXT", "glUseProgram", "glUniform4fv", "glBlendColorEXT", "glBlendEquationSeparate",
+        "glCompressedTexImage2DARB", "glUseProgram", "glUniform4fv", "glBlendColorEXT", "glBlendEquationSeparate",
         "glPolygonStipple", "gluNurbsCallback", "gluTessVertex", "gluBuild1DMipmaps", "glutInit",
         "glutStrokeCharacter", "glutSolidTeacup", "glReadBuffer",
     };
@@ -50,7 +50,9 @@ static void test_list(void)
         "glWindowPos2f", "glBitmap", "glDrawPixels", "glCopyPixels", "glPixelZoom",
         "glPixelTransferf", "glCopyTexImage2D", "glCopyTexSubImage3D", "glTexImage3D",
         "glPointParameterfv", "glProvokingVertex", "glPointParameterfARB",
-        "glPointParameterfvEXT",
+        "glPointParameterfvEXT", "glTexImage3DEXT", "glTexSubImage3DEXT", "glCopyTexImage1DEXT",
+        "glCopyTexImage2DEXT", "glCopyTexSubImage2DEXT", "glBindTextureEXT", "glTexSubImage2DEXT",
+        "glBlendEquationEXT", "glDrawArraysEXT", "glArrayElementEXT", "glMultiDrawElementsEXT",
         "glActiveTexture", "glActiveTextureARB", "glClientActiveTexture", "glMultiTexCoord2f",
         "glMultiTexCoord4dvARB", "glLogicOp", "glAccum", "glSecondaryColor3f", "glRenderMode",
     };
