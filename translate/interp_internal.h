@@ -103,6 +103,10 @@ struct interp {
     size_t cap_edge;
     double (*clipv)[3]; /* clip-space x, y, w of each vertex (culling) */
     size_t cap_clipv;
+    float (*relit_col)[4]; /* GL's lit colour of each vertex (interp_relit.c) */
+    size_t cap_relit;
+    bool relit_over;       /* some vertex was lit past 1 in a channel */
+    bool prim_relit;       /* the look being made is of GL-lit faces */
 
     /* The frame's camera: fixed by the first draw (or at the frame's end). */
     bool camera_fixed;
@@ -588,6 +592,30 @@ void interp_lightset_textured(interp *ip, const scene_look *look);
 
 void interp_lit_color(const interp *ip, const double p[3], const double n[3], bool back,
                       const float colour[4], float out[4]);
+/* The same, with the largest channel before GL clamps it in *peak. */
+void interp_lit_color_peak(const interp *ip, const double p[3], const double n[3], bool back,
+                           const float colour[4], float out[4], double *peak);
+
+/* GL's own lighting for the faces POV-Ray would light otherwise
+ * (interp_relit.c): back faces under one-sided lighting, and textured
+ * GL_MODULATE surfaces lit past white (GL clamps before the texture).
+ * _wanted: the open filled primitive's vertices need GL's lit colour;
+ * _store: vertex k's (post-processed) lit colour and its unclamped peak;
+ * _split: at glEnd, which faces go to a GL-lit mesh (0: none,
+ * INTERP_RELIT_BACK: back faces, INTERP_RELIT_ALL: all); _vertices: the
+ * primitive's n vertices copied with their GL colours, returning the
+ * copies' first index (or -1 on failure); _done: forget the primitive. */
+/* Notes a fogged primitive of n pool vertices with vertices both behind
+ * and in front of the eye (interp_fogbehind.c). */
+void interp_fog_behind_check(interp *ip, uint32_t n);
+
+#define INTERP_RELIT_BACK 1
+#define INTERP_RELIT_ALL 2
+bool interp_relit_wanted(const interp *ip);
+void interp_relit_store(interp *ip, size_t k, const float colour[4], double peak);
+int interp_relit_split(interp *ip, const scene_look *look);
+long interp_relit_vertices(interp *ip, uint32_t n);
+void interp_relit_done(interp *ip);
 
 /* The colour a surface vertex carries into the scene (scene_vertex.color):
  * glColor unlit; lit, what GL_COLOR_MATERIAL takes from glColor (or the

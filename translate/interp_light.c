@@ -391,6 +391,12 @@ void interp_fix_fog(interp *ip)
 void interp_lit_color(const interp *ip, const double p[3], const double n[3], bool back,
                       const float colour[4], float out[4])
 {
+    interp_lit_color_peak(ip, p, n, back, colour, out, NULL);
+}
+
+void interp_lit_color_peak(const interp *ip, const double p[3], const double n[3], bool back,
+                           const float colour[4], float out[4], double *peak)
+{
     const gl_attribs *a = &ip->st.a;
     int f = back && a->lighting.two_side ? 1 : 0;
     gl_material m = a->lighting.material[f];
@@ -459,4 +465,6 @@ void interp_lit_color(const interp *ip, const double p[3], const double n[3], bo
     for (int k = 0; k < 3; k++)
         out[k] = clamp01((float)c[k]);
     out[3] = clamp01(m.diffuse[3]);
+    if (peak)
+        *peak = fmax(c[0], fmax(c[1], c[2]));
 }

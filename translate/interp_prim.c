@@ -407,7 +407,7 @@ void interp_surface_colour(const interp *ip, float out[4])
  * here (the scene draws them unlit), with the current normal in GL's own
  * eye space (2.11.3: the inverse transpose of the modelview, normalised
  * under GL_NORMALIZE, rescaled under GL_RESCALE_NORMAL). */
-static void lit_line_colour(interp *ip, double x, double y, double z, float out[4])
+static void lit_line_colour(interp *ip, double x, double y, double z, float out[4], double *peak)
 {
     const gl_attribs *a = &ip->st.a;
     const mat4 *mv = interp_matrix(ip, INTERP_MV);
@@ -431,7 +431,7 @@ static void lit_line_colour(interp *ip, double x, double y, double z, float out[
                     n[k] /= r;
         }
     }
-    interp_lit_color(ip, p, n, false, a->current.color, out);
+    interp_lit_color_peak(ip, p, n, false, a->current.color, out, peak);
 }
 
 void interp_add_vertex(interp *ip, double x, double y, double z, double w)
@@ -465,7 +465,7 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
         for (int i = 0; i < 4; i++)
             v->color[i] = clamp01(a->current.color[i]);
     } else if (ip->prim_mode <= GL_LINE_STRIP || interp_vertex_lit(ip)) {
-        lit_line_colour(ip, x, y, z, v->color);
+        lit_line_colour(ip, x, y, z, v->color, NULL);
     } else {
         interp_surface_colour(ip, v->color);
     }
@@ -475,6 +475,18 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
         v->color[3] = 1;
     else if (ip->prim_blend == SCENE_BLEND_INVISIBLE)
         v->color[3] = 0;
+    if (interp_relit_wanted(ip)) { /* GL's colour, should its face need it */
+        float c[4];
+        double peak;
+        lit_line_colour(ip, x, y, z, c, &peak);
+        if (ip->prim_blend_mapped)
+            map_blend(ip, c);
+        if (ip->prim_blend == SCENE_BLEND_OPAQUE)
+            c[3] = 1;
+        else if (ip->prim_blend == SCENE_BLEND_INVISIBLE)
+            c[3] = 0;
+        interp_relit_store(ip, k, c, peak);
+    }
     float q = a->current.texcoord[3];
     v->tex1[0] = v->tex1[1] = 0;
     if (ip->draw_unit[0] >= 0) {
@@ -531,6 +543,9 @@ typedef struct assembly {
     bool line_smooth, point_smooth;
     bool point_params; /* glPointParameter away from its defaults */
     bool list_quads; /* quads split along v1-v3, as Mesa does in a list or when clipping */
+    int relit;          /* INTERP_RELIT_*: filled faces lit as GL does (interp_relit.c) */
+    bool relit_pass;    /* drawing those faces (into the GL-lit mesh) */
+    uint32_t relit_deferred; /* faces left for that pass */
     scene_mesh *mesh;
 } assembly;
 
@@ -755,11 +770,21 @@ static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t prov
             if (!vertex_ok(&as->s->verts[as->base + idx[k]]))
                 return;
     GLenum mode = a->polygon.mode[0];
+    bool front = true;
     if (as->facing) {
-        bool front = is_ccw(ip, idx, n) != as->swap;
+        front = is_ccw(ip, idx, n) != as->swap;
         if ((front && as->cull_front) || (!front && as->cull_back))
             return;
         mode = a->polygon.mode[front ? 0 : 1];
+    }
+    if (as->relit && mode == GL_FILL) {
+        bool gl_lit = as->relit == INTERP_RELIT_ALL || !front;
+        if (gl_lit != as->relit_pass) {
+            as->relit_deferred += gl_lit;
+            return;
+        }
+    } else if (as->relit_pass) {
+        return;
     }
     if (mode == GL_FILL) {
         for (int k = 1; k + 1 < n; k++)
@@ -1013,6 +1038,7 @@ static void end_primitive(interp *ip)
     GLenum mode = ip->prim_mode;
     if (n == 0)
         return;
+    interp_fog_behind_check(ip, n);
     assembly as;
     memset(&as, 0, sizeof as);
     as.ip = ip;
@@ -1044,7 +1070,8 @@ static void end_primitive(interp *ip)
     GLenum cm = a->polygon.cull_mode;
     as.cull_front = cull && (cm == GL_FRONT || cm == GL_FRONT_AND_BACK);
     as.cull_back = cull && (cm == GL_BACK || cm == GL_FRONT_AND_BACK);
-    as.facing = cull || a->polygon.mode[0] != a->polygon.mode[1];
+    /* Back faces may need GL's lighting (interp_relit.c). */
+    as.facing = cull || a->polygon.mode[0] != a->polygon.mode[1] || interp_relit_wanted(ip);
     if (as.facing && !compute_clip(ip, n)) {
         s->failed = true;
         return;
@@ -1072,10 +1099,25 @@ static void end_primitive(interp *ip)
     mat4 id = mat4_identity();
     as.mesh = scene_mesh_for(s, ip->prim_in_eye ? &id : &ip->prim_to_eye, ip->prim_in_eye, &look);
     size_t first_tri = s->ntris;
-    if (!as.facing && !as.check_bad && a->polygon.mode[0] == GL_FILL)
+    as.relit = interp_relit_split(ip, &look);
+    if (!as.facing && !as.check_bad && a->polygon.mode[0] == GL_FILL && !as.relit)
         assemble_filled(&as, mode, n);
     else
         assemble_polygons(&as, mode, n);
+    if (as.relit_deferred > 0) {
+        long b = interp_relit_vertices(ip, n);
+        if (b >= 0) {
+            ip->prim_relit = true;
+            scene_look gl_look = interp_current_look(ip);
+            ip->prim_relit = false;
+            as.mesh = scene_mesh_for(s, ip->prim_in_eye ? &id : &ip->prim_to_eye, ip->prim_in_eye,
+                                     &gl_look);
+            as.base = (uint32_t)b;
+            as.relit_pass = true;
+            assemble_polygons(&as, mode, n);
+        }
+    }
+    interp_relit_done(ip);
     if (look.lit)
         interp_gouraud_check(ip, first_tri);
 }
