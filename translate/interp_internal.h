@@ -107,6 +107,9 @@ struct interp {
     size_t cap_relit;
     bool relit_over;       /* some vertex was lit past 1 in a channel */
     bool prim_relit;       /* the look being made is of GL-lit faces */
+    double *fogz;          /* GL's eye z of each vertex, when fogged (interp_fogbehind.c) */
+    size_t cap_fogz;
+    bool fog_split;        /* the primitive's triangles behind the eye get their own fog */
 
     /* The frame's camera: fixed by the first draw (or at the frame's end). */
     bool camera_fixed;
@@ -605,9 +608,15 @@ void interp_lit_color_peak(const interp *ip, const double p[3], const double n[3
  * INTERP_RELIT_BACK: back faces, INTERP_RELIT_ALL: all); _vertices: the
  * primitive's n vertices copied with their GL colours, returning the
  * copies' first index (or -1 on failure); _done: forget the primitive. */
-/* Notes a fogged primitive of n pool vertices with vertices both behind
- * and in front of the eye (interp_fogbehind.c). */
+/* Fog of primitives reaching behind the eye (interp_fogbehind.c). _check:
+ * at glEnd of n pool vertices (before they move to eye space), notes a
+ * fogged line or unfilled polygon with vertices both behind and in front
+ * of the eye, or sets fog_split for a filled one; _mesh: the mesh for the
+ * triangle rel (relative to base), with its own fog plane when a corner is
+ * behind the eye. */
 void interp_fog_behind_check(interp *ip, uint32_t n);
+scene_mesh *interp_fog_behind_mesh(interp *ip, const scene_look *look, const mat4 *to_eye,
+                                   bool in_eye, uint32_t base, const uint32_t rel[3]);
 
 #define INTERP_RELIT_BACK 1
 #define INTERP_RELIT_ALL 2

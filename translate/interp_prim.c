@@ -546,6 +546,10 @@ typedef struct assembly {
     int relit;          /* INTERP_RELIT_*: filled faces lit as GL does (interp_relit.c) */
     bool relit_pass;    /* drawing those faces (into the GL-lit mesh) */
     uint32_t relit_deferred; /* faces left for that pass */
+    bool fog_split;     /* triangles behind the eye get their own fog (interp_fogbehind.c) */
+    const scene_look *look; /* the mesh's look, and where its vertices are, for fog_split */
+    const mat4 *to_eye;
+    bool in_eye;
     scene_mesh *mesh;
 } assembly;
 
@@ -752,6 +756,12 @@ static void fill_tri(assembly *as, uint32_t a, uint32_t b, uint32_t c, uint32_t 
 {
     if (!as->mesh)
         return;
+    if (as->fog_split) {
+        const uint32_t rel[3] = {a, b, c};
+        as->mesh = interp_fog_behind_mesh(as->ip, as->look, as->to_eye, as->in_eye, as->base, rel);
+        if (!as->mesh)
+            return;
+    }
     if (as->swap)
         scene_add_tri(as->s, as->base + a, as->base + c, as->base + b, as->base + provoking);
     else
@@ -1098,6 +1108,10 @@ static void end_primitive(interp *ip)
         check_normals(ip, n);
     mat4 id = mat4_identity();
     as.mesh = scene_mesh_for(s, ip->prim_in_eye ? &id : &ip->prim_to_eye, ip->prim_in_eye, &look);
+    as.fog_split = ip->fog_split;
+    as.look = &look;
+    as.to_eye = ip->prim_in_eye ? &id : &ip->prim_to_eye;
+    as.in_eye = ip->prim_in_eye;
     size_t first_tri = s->ntris;
     as.relit = interp_relit_split(ip, &look);
     if (!as.facing && !as.check_bad && a->polygon.mode[0] == GL_FILL && !as.relit)
@@ -1113,6 +1127,7 @@ static void end_primitive(interp *ip)
             as.mesh = scene_mesh_for(s, ip->prim_in_eye ? &id : &ip->prim_to_eye, ip->prim_in_eye,
                                      &gl_look);
             as.base = (uint32_t)b;
+            as.look = &gl_look;
             as.relit_pass = true;
             assemble_polygons(&as, mode, n);
         }

@@ -68,6 +68,9 @@ typedef struct scene_look {
                            image (origin at its lower left), when scissored */
     int32_t texture1;  /* a second texture unit's, combined with the result of
                           the first by its env_mode (GL 2.1 3.8.13), or -1 */
+    uint8_t fog_own, pad2_[3]; /* fogged by fog_plane, not by the eye-plane distance */
+    float fog_plane[4]; /* GL's fog coordinate a.p + d over the mesh's own space,
+                           for faces reaching behind the eye (interp_fogbehind.c) */
 } scene_look;
 
 /* A run of triangles sharing transform and look: one mesh2 in SDL. */
