@@ -41,6 +41,13 @@ int interp_relit_split(interp *ip, const scene_look *look)
 {
     if (!look->lit || !interp_relit_wanted(ip))
         return 0;
+    /* GL_SEPARATE_SPECULAR_COLOR adds the highlight after the texture: an
+     * unlit copy cannot carry it (interp_lit_color sums it in). */
+    const gl_attribs *a = &ip->st.a;
+    const float *ks = a->lighting.material[0].specular;
+    if (look->texture >= 0 && a->lighting.color_control != GL_SINGLE_COLOR &&
+        (ks[0] > 0 || ks[1] > 0 || ks[2] > 0))
+        return 0;
     if (ip->relit_over && look->texture >= 0) {
         const scene_texture *t = &ip->scene->textures[look->texture];
         if (t->env_mode == GL_MODULATE && !t->colour_is_texel)

@@ -164,16 +164,22 @@ static void test_mixed_strip(void)
 
 /* A textured GL_MODULATE face whose lit colour passes 1 (an emission of
  * 0.5 over the default light) takes GL's clamped colour; lit to at most
- * 1 (no emission), or GL_REPLACE, or untextured, POV-Ray lights it. */
+ * 1 (no emission), or GL_REPLACE, or untextured, POV-Ray lights it; so
+ * it does with GL_SEPARATE_SPECULAR_COLOR and a highlight, which GL adds
+ * after the texture. */
 static void test_modulate_past_white(void)
 {
     static uint8_t rgb[12] = {200, 150, 90, 200, 150, 90, 200, 150, 90, 200, 150, 90};
     texels = rgb;
-    for (int c = 0; c < 4; c++) {
+    for (int c = 0; c < 5; c++) {
         interp *ip = fresh();
         seq s;
         seq_init(&s);
         lit(&s);
+        if (c == 4) {
+            CMD(&s, LightModeli, GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
+            CMD(&s, Materialfv, GL_FRONT, GL_SPECULAR, 0.5, 0.5, 0.5, 1);
+        }
         if (c != 1)
             CMD(&s, Materialfv, GL_FRONT, GL_EMISSION, 0.5, 0.5, 0.5, 1);
         if (c != 3) {
