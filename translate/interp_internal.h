@@ -620,6 +620,7 @@ scene_mesh *interp_fog_behind_mesh(interp *ip, const scene_look *look, const mat
 
 #define INTERP_RELIT_BACK 1
 #define INTERP_RELIT_ALL 2
+#define INTERP_RELIT_PROBE 3 /* back faces noted (NOTE_RELIT_SPECULAR), drawn as they are */
 bool interp_relit_wanted(const interp *ip);
 void interp_relit_store(interp *ip, size_t k, const float colour[4], double peak);
 int interp_relit_split(interp *ip, const scene_look *look);

@@ -412,7 +412,7 @@ void interp_lit_color_peak(const interp *ip, const double p[3], const double n[3
     if (f == 1)
         for (int k = 0; k < 3; k++)
             nn[k] = -nn[k];
-    double c[3];
+    double c[3], spec[3] = {0, 0, 0};
     for (int k = 0; k < 3; k++)
         c[k] = m.emission[k] + m.ambient[k] * a->lighting.model_ambient[k];
     for (int i = 0; i < INTERP_MAX_LIGHTS; i++) {
@@ -457,14 +457,21 @@ void interp_lit_color_peak(const interp *ip, const double p[3], const double n[3
             double nh = hl > 0 ? (nn[0] * h[0] + nn[1] * h[1] + nn[2] * h[2]) / hl : 0;
             sp = nh > 0 ? pow(nh, m.shininess) : (m.shininess == 0 ? 1 : 0);
         }
-        for (int k = 0; k < 3; k++)
+        for (int k = 0; k < 3; k++) {
             c[k] += att * spot *
                     (m.ambient[k] * l->ambient[k] + fmax(nl, 0) * m.diffuse[k] * l->diffuse[k] +
                      sp * m.specular[k] * l->specular[k]);
+            spec[k] += att * spot * sp * m.specular[k] * l->specular[k];
+        }
     }
     for (int k = 0; k < 3; k++)
         out[k] = clamp01((float)c[k]);
     out[3] = clamp01(m.diffuse[3]);
-    if (peak)
-        *peak = fmax(c[0], fmax(c[1], c[2]));
+    if (peak) { /* the colour GL clamps before texturing: the primary one alone */
+        bool sep = a->lighting.color_control != GL_SINGLE_COLOR;
+        double q[3];
+        for (int k = 0; k < 3; k++)
+            q[k] = sep ? c[k] - spec[k] : c[k];
+        *peak = fmax(q[0], fmax(q[1], q[2]));
+    }
 }

@@ -787,7 +787,10 @@ static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t prov
             return;
         mode = a->polygon.mode[front ? 0 : 1];
     }
-    if (as->relit && mode == GL_FILL) {
+    if (as->relit == INTERP_RELIT_PROBE) {
+        if (!front && mode == GL_FILL)
+            interp_note(ip, DIAG_NOTE_RELIT_SPECULAR);
+    } else if (as->relit && mode == GL_FILL) {
         bool gl_lit = as->relit == INTERP_RELIT_ALL || !front;
         if (gl_lit != as->relit_pass) {
             as->relit_deferred += gl_lit;

@@ -46,8 +46,11 @@ int interp_relit_split(interp *ip, const scene_look *look)
     const gl_attribs *a = &ip->st.a;
     const float *ks = a->lighting.material[0].specular;
     if (look->texture >= 0 && a->lighting.color_control != GL_SINGLE_COLOR &&
-        (ks[0] > 0 || ks[1] > 0 || ks[2] > 0))
-        return 0;
+        (ks[0] > 0 || ks[1] > 0 || ks[2] > 0)) {
+        if (ip->relit_over)
+            interp_note(ip, DIAG_NOTE_RELIT_SPECULAR);
+        return INTERP_RELIT_PROBE; /* back faces are noted, not moved */
+    }
     if (ip->relit_over && look->texture >= 0) {
         const scene_texture *t = &ip->scene->textures[look->texture];
         if (t->env_mode == GL_MODULATE && !t->colour_is_texel)

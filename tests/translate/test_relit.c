@@ -166,7 +166,7 @@ static void test_mixed_strip(void)
  * 0.5 over the default light) takes GL's clamped colour; lit to at most
  * 1 (no emission), or GL_REPLACE, or untextured, POV-Ray lights it; so
  * it does with GL_SEPARATE_SPECULAR_COLOR and a highlight, which GL adds
- * after the texture. */
+ * after the texture, with a note. */
 static void test_modulate_past_white(void)
 {
     static uint8_t rgb[12] = {200, 150, 90, 200, 150, 90, 200, 150, 90, 200, 150, 90};
@@ -200,6 +200,34 @@ static void test_modulate_past_white(void)
             }
         }
         CHECK_EQ_U(count(DIAG_GL_INVALID_VALUE) + count(DIAG_IGNORED), 0);
+        CHECK_EQ_U(count(DIAG_NOTE_RELIT_SPECULAR), c == 4 ? 1 : 0);
+        interp_destroy(ip);
+    }
+}
+
+/* Under GL_SEPARATE_SPECULAR_COLOR with a highlight, a textured back face
+ * stays lit by POV-Ray with a note; a front face has none. */
+static void test_separate_specular_back(void)
+{
+    static uint8_t rgb[12] = {200, 150, 90, 200, 150, 90, 200, 150, 90, 200, 150, 90};
+    texels = rgb;
+    for (int back = 0; back < 2; back++) {
+        interp *ip = fresh();
+        seq s;
+        seq_init(&s);
+        lit(&s);
+        CMD(&s, LightModeli, GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
+        CMD(&s, Materialfv, GL_FRONT, GL_SPECULAR, 0.5, 0.5, 0.5, 1);
+        CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        CMD(&s, TexImage2D, GL_TEXTURE_2D, 0, GL_RGB, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, 1);
+        CMD(&s, Enable, GL_TEXTURE_2D);
+        tri(&s, back != 0);
+        run(ip, &s);
+        CHECK_EQ_U(sc.nmeshes, 1);
+        CHECK_EQ_U(sc.ntris, 1);
+        if (sc.nmeshes == 1)
+            CHECK(sc.meshes[0].look.lit);
+        CHECK_EQ_U(count(DIAG_NOTE_RELIT_SPECULAR), back ? 1 : 0);
         interp_destroy(ip);
     }
 }
@@ -257,6 +285,7 @@ int main(void)
     test_back_faces();
     test_mixed_strip();
     test_modulate_past_white();
+    test_separate_specular_back();
     test_fog_behind();
     scene_finish(&sc);
     return CHECK_RESULT("test_relit");
