@@ -223,6 +223,8 @@ void interp_destroy(interp *ip)
     unrec_finish(&ip->unrecorded);
     tr_free(ip->begin_ok);
     tr_free(ip->edge);
+    tr_free(ip->relit_col);
+    tr_free(ip->fogz);
     tr_free(ip->vmat.mats);
     tr_free(ip->clipv);
     interp_textures_free(ip);

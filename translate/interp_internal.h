@@ -120,6 +120,13 @@ struct interp {
     size_t cap_clipv;
     float prim_alpha;        /* the first vertex's alpha (interp_alpha_vertex) */
     bool prim_alpha_varies;  /* another vertex's differs */
+    float (*relit_col)[4]; /* GL's lit colour of each vertex (interp_relit.c) */
+    size_t cap_relit;
+    bool relit_over;       /* some vertex was lit past 1 in a channel */
+    bool prim_relit;       /* the look being made is of GL-lit faces */
+    double *fogz;          /* GL's eye z of each vertex, when fogged (interp_fogbehind.c) */
+    size_t cap_fogz;
+    bool fog_split;        /* the primitive's triangles behind the eye get their own fog */
 
     /* The frame's camera: fixed by the first draw (or at the frame's end). */
     bool camera_fixed;
@@ -702,6 +709,37 @@ void interp_lightset_textured(interp *ip, const scene_look *look);
 
 void interp_lit_color(const interp *ip, const double p[3], const double n[3], bool back,
                       const float colour[4], float out[4]);
+/* The same, with the largest channel before GL clamps it in *peak. */
+void interp_lit_color_peak(const interp *ip, const double p[3], const double n[3], bool back,
+                           const float colour[4], float out[4], double *peak);
+
+/* GL's own lighting for the faces POV-Ray would light otherwise
+ * (interp_relit.c): back faces under one-sided lighting, and textured
+ * GL_MODULATE surfaces lit past white (GL clamps before the texture).
+ * _wanted: the open filled primitive's vertices need GL's lit colour;
+ * _store: vertex k's (post-processed) lit colour and its unclamped peak;
+ * _split: at glEnd, which faces go to a GL-lit mesh (0: none,
+ * INTERP_RELIT_BACK: back faces, INTERP_RELIT_ALL: all); _vertices: the
+ * primitive's n vertices copied with their GL colours, returning the
+ * copies' first index (or -1 on failure); _done: forget the primitive. */
+/* Fog of primitives reaching behind the eye (interp_fogbehind.c). _check:
+ * at glEnd of n pool vertices (before they move to eye space), notes a
+ * fogged line or unfilled polygon with vertices both behind and in front
+ * of the eye, or sets fog_split for a filled one; _mesh: the mesh for the
+ * triangle rel (relative to base), with its own fog plane when a corner is
+ * behind the eye. */
+void interp_fog_behind_check(interp *ip, uint32_t n);
+scene_mesh *interp_fog_behind_mesh(interp *ip, const scene_look *look, const mat4 *to_eye,
+                                   bool in_eye, uint32_t base, const uint32_t rel[3]);
+
+#define INTERP_RELIT_BACK 1
+#define INTERP_RELIT_ALL 2
+#define INTERP_RELIT_PROBE 3 /* back faces noted (NOTE_RELIT_SPECULAR), drawn as they are */
+bool interp_relit_wanted(const interp *ip);
+void interp_relit_store(interp *ip, size_t k, const float colour[4], double peak);
+int interp_relit_split(interp *ip, const scene_look *look);
+long interp_relit_vertices(interp *ip, uint32_t n);
+void interp_relit_done(interp *ip);
 
 /* The colour a surface vertex carries into the scene (scene_vertex.color):
  * glColor unlit; lit, what GL_COLOR_MATERIAL takes from glColor (or the

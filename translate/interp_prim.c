@@ -400,7 +400,7 @@ void interp_surface_colour(const interp *ip, float out[4])
  * here (the scene draws them unlit), with the current normal in GL's own
  * eye space (2.11.3: the inverse transpose of the modelview, normalised
  * under GL_NORMALIZE, rescaled under GL_RESCALE_NORMAL). */
-static void lit_line_colour(interp *ip, double x, double y, double z, float out[4])
+static void lit_line_colour(interp *ip, double x, double y, double z, float out[4], double *peak)
 {
     const gl_attribs *a = &ip->st.a;
     const mat4 *mv = interp_matrix(ip, INTERP_MV);
@@ -424,7 +424,7 @@ static void lit_line_colour(interp *ip, double x, double y, double z, float out[
                     n[k] /= r;
         }
     }
-    interp_lit_color(ip, p, n, false, a->current.color, out);
+    interp_lit_color_peak(ip, p, n, false, a->current.color, out, peak);
 }
 
 void interp_lit_point_colour(interp *ip, double x, double y, double z, float out[4])
@@ -463,7 +463,7 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
         for (int i = 0; i < 4; i++)
             v->color[i] = clamp01(a->current.color[i]);
     } else if (ip->prim_mode <= GL_LINE_STRIP || interp_vertex_lit(ip)) {
-        lit_line_colour(ip, x, y, z, v->color);
+        lit_line_colour(ip, x, y, z, v->color, NULL);
     } else {
         interp_surface_colour(ip, v->color);
     }
@@ -477,6 +477,18 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
         v->color[3] = 1;
     else if (ip->prim_blend == SCENE_BLEND_INVISIBLE)
         v->color[3] = 0;
+    if (interp_relit_wanted(ip)) { /* GL's colour, should its face need it */
+        float c[4];
+        double peak;
+        lit_line_colour(ip, x, y, z, c, &peak);
+        if (ip->prim_blend_mapped)
+            map_blend(ip, c);
+        if (ip->prim_blend == SCENE_BLEND_OPAQUE)
+            c[3] = 1;
+        else if (ip->prim_blend == SCENE_BLEND_INVISIBLE)
+            c[3] = 0;
+        interp_relit_store(ip, k, c, peak);
+    }
     float q = a->current.texcoord[3];
     v->tex1[0] = v->tex1[1] = 0;
     if (ip->draw_unit[0] >= 0) {
@@ -543,6 +555,13 @@ typedef struct assembly {
     bool list_quads; /* quads split along v1-v3, as Mesa does in a list or when clipping */
     bool stipple;       /* glLineStipple applies (interp_stipple.c) */
     uint64_t stipple_s; /* GL's stipple counter */
+    int relit;          /* INTERP_RELIT_*: filled faces lit as GL does (interp_relit.c) */
+    bool relit_pass;    /* drawing those faces (into the GL-lit mesh) */
+    uint32_t relit_deferred; /* faces left for that pass */
+    bool fog_split;     /* triangles behind the eye get their own fog (interp_fogbehind.c) */
+    const scene_look *look; /* the mesh's look, and where its vertices are, for fog_split */
+    const mat4 *to_eye;
+    bool in_eye;
     scene_mesh *mesh;
 } assembly;
 
@@ -783,6 +802,12 @@ static void fill_tri(assembly *as, uint32_t a, uint32_t b, uint32_t c, uint32_t 
     const uint32_t abc[3] = {a, b, c};
     if (!interp_alpha_face(as->ip, abc, 3, as->mesh->look.texture))
         return;
+    if (as->fog_split) {
+        const uint32_t rel[3] = {a, b, c};
+        as->mesh = interp_fog_behind_mesh(as->ip, as->look, as->to_eye, as->in_eye, as->base, rel);
+        if (!as->mesh)
+            return;
+    }
     if (as->swap)
         scene_add_tri(as->s, as->base + a, as->base + c, as->base + b, as->base + provoking);
     else
@@ -801,11 +826,24 @@ static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t prov
             if (!vertex_ok(&as->s->verts[as->base + idx[k]]))
                 return;
     GLenum mode = a->polygon.mode[0];
+    bool front = true;
     if (as->facing) {
-        bool front = is_ccw(ip, idx, n) != as->swap;
+        front = is_ccw(ip, idx, n) != as->swap;
         if ((front && as->cull_front) || (!front && as->cull_back))
             return;
         mode = a->polygon.mode[front ? 0 : 1];
+    }
+    if (as->relit == INTERP_RELIT_PROBE) {
+        if (!front && mode == GL_FILL)
+            interp_note(ip, DIAG_NOTE_RELIT_SPECULAR);
+    } else if (as->relit && mode == GL_FILL) {
+        bool gl_lit = as->relit == INTERP_RELIT_ALL || !front;
+        if (gl_lit != as->relit_pass) {
+            as->relit_deferred += gl_lit;
+            return;
+        }
+    } else if (as->relit_pass) {
+        return;
     }
     if (mode == GL_FILL) {
         for (int k = 1; k + 1 < n; k++)
@@ -1064,6 +1102,7 @@ static void end_primitive(interp *ip)
     GLenum mode = ip->prim_mode;
     if (n == 0)
         return;
+    interp_fog_behind_check(ip, n);
     assembly as;
     memset(&as, 0, sizeof as);
     as.ip = ip;
@@ -1096,7 +1135,8 @@ static void end_primitive(interp *ip)
     GLenum cm = a->polygon.cull_mode;
     as.cull_front = cull && (cm == GL_FRONT || cm == GL_FRONT_AND_BACK);
     as.cull_back = cull && (cm == GL_BACK || cm == GL_FRONT_AND_BACK);
-    as.facing = cull || a->polygon.mode[0] != a->polygon.mode[1];
+    /* Back faces may need GL's lighting (interp_relit.c). */
+    as.facing = cull || a->polygon.mode[0] != a->polygon.mode[1] || interp_relit_wanted(ip);
     if (as.facing && !compute_clip(ip, n)) {
         s->failed = true;
         return;
@@ -1123,11 +1163,31 @@ static void end_primitive(interp *ip)
         check_normals(ip, n);
     mat4 id = mat4_identity();
     as.mesh = scene_mesh_for(s, ip->prim_in_eye ? &id : &ip->prim_to_eye, ip->prim_in_eye, &look);
+    as.fog_split = ip->fog_split;
+    as.look = &look;
+    as.to_eye = ip->prim_in_eye ? &id : &ip->prim_to_eye;
+    as.in_eye = ip->prim_in_eye;
     size_t first_tri = s->ntris;
-    if (!as.facing && !as.check_bad && a->polygon.mode[0] == GL_FILL)
+    as.relit = interp_relit_split(ip, &look);
+    if (!as.facing && !as.check_bad && a->polygon.mode[0] == GL_FILL && !as.relit)
         assemble_filled(&as, mode, n);
     else
         assemble_polygons(&as, mode, n);
+    if (as.relit_deferred > 0) {
+        long b = interp_relit_vertices(ip, n);
+        if (b >= 0) {
+            ip->prim_relit = true;
+            scene_look gl_look = interp_current_look(ip);
+            ip->prim_relit = false;
+            as.mesh = scene_mesh_for(s, ip->prim_in_eye ? &id : &ip->prim_to_eye, ip->prim_in_eye,
+                                     &gl_look);
+            as.base = (uint32_t)b;
+            as.look = &gl_look;
+            as.relit_pass = true;
+            assemble_polygons(&as, mode, n);
+        }
+    }
+    interp_relit_done(ip);
     if (look.lit)
         interp_gouraud_check(ip, first_tri);
 }

@@ -782,8 +782,15 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     /* Layered textures (fog, DECAL of RGBA) enter texture_list by name only. */
     bool named = look->fog || (tx && tx->env_mode == GL_DECAL && !tx->colour_is_texel);
     if (named) {
-        if (look->fog)
+        if (look->fog && look->fog_own && !look->fog_fixed) { /* the fog coordinate's own plane */
+            mat4 fp;
+            memset(&fp, 0, sizeof fp);
+            for (int k = 0; k < 4; k++)
+                fp.m[k * 4 + 2] = look->fog_plane[k];
+            povlight_fog_declare(&w->light, ob, "rgl_fog", &fp);
+        } else if (look->fog) {
             povfog_declare(&w->light, ob, "rgl_fog", to_eye, look);
+        }
         for (size_t i = 0; i < w->col.count; i++) {
             outbuf_puts(ob, "#declare rgl_t");
             outbuf_u64(ob, i);

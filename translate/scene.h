@@ -75,7 +75,10 @@ typedef struct scene_look {
                           n) (or outside it, stencil_out); n 0: none */
     float fog_f;       /* with fog_fixed: the fog factor of the whole draw (one
                           fog coordinate for all its vertices) */
-    uint8_t stencil_out, fog_fixed, pad2_[2];
+    uint8_t stencil_out, fog_fixed;
+    uint8_t fog_own, pad2_[1]; /* fogged by fog_plane, not by the eye-plane distance */
+    float fog_plane[4]; /* GL's fog coordinate a.p + d over the mesh's own space,
+                           for faces reaching behind the eye (interp_fogbehind.c) */
 } scene_look;
 
 /* A run of triangles sharing transform and look: one mesh2 in SDL. */
