@@ -429,7 +429,7 @@ static void lit_line_colour(interp *ip, double x, double y, double z, float out[
 
 void interp_lit_point_colour(interp *ip, double x, double y, double z, float out[4])
 {
-    lit_line_colour(ip, x, y, z, out);
+    lit_line_colour(ip, x, y, z, out, NULL);
 }
 
 void interp_add_vertex(interp *ip, double x, double y, double z, double w)
