@@ -226,9 +226,11 @@ static void test_modulate_tint(void)
     texture(&s, id, GL_MODULATE, GL_REPEAT);
     CMD(&s, Normal3f, 0, 0, 1);
     CMD(&s, Begin, GL_TRIANGLES);
-    CMD(&s, Color3f, 1, 0.5, 0);
+    /* Lit below white (0.8 x (1 + 0.2 ambient) < 1): past it, GL's clamped
+     * per-vertex colours are drawn instead (interp_relit.c). */
+    CMD(&s, Color3f, 0.8, 0.4, 0);
     CMD(&s, Vertex2f, 0, 0);
-    CMD(&s, Color3f, 0, 0.5, 1);
+    CMD(&s, Color3f, 0, 0.4, 0.8);
     CMD(&s, Vertex2f, 1, 0);
     CMD(&s, Vertex2f, 0, 1);
     CMD0(&s, End);
