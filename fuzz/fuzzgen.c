@@ -759,6 +759,14 @@ static void st_array(gen *g, buf *b)
     PUT(g, b, VertexPointer, size, V_FLOAT, 0);
     double ad[] = {V_VERTEX_ARRAY, first, size, V_FLOAT};
     put_op(g, b, RGL_OP_ArrayData, ad, 4, bytes, nbytes);
+    if (one_in(r, 3)) { /* fog coordinates and secondary colours from the same bytes */
+        double af[] = {0x8457 /* GL_FOG_COORD_ARRAY */, first, 1, V_FLOAT};
+        double as[] = {0x845E /* GL_SECONDARY_COLOR_ARRAY */, first, 3, V_FLOAT};
+        PUT(g, b, Enable, 0x8458); /* GL_COLOR_SUM */
+        PUT(g, b, FogCoordPointer, V_FLOAT, 0);
+        put_op(g, b, RGL_OP_ArrayData, af, 4, bytes, nbytes);
+        put_op(g, b, RGL_OP_ArrayData, as, 4, bytes, nbytes);
+    }
     if (one_in(r, 2)) {
         PUT(g, b, DrawArrays, one_in(r, 2) ? V_TRIANGLES : pick_enum(g, rgl_cmd_info_get(RGL_OP_DrawArrays), "mode"), first, count);
     } else {

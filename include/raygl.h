@@ -145,6 +145,13 @@ RAYGL_API void rayglNormalPointer(GLenum type, GLsizei stride, const GLvoid *ptr
 RAYGL_API void rayglColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr);
 RAYGL_API void rayglTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr);
 RAYGL_API void rayglEdgeFlagPointer(GLsizei stride, const GLvoid *ptr);
+/* The fog-coordinate and secondary-colour arrays (GL 1.4 and EXT names). */
+RAYGL_API void rayglFogCoordPointer(GLenum type, GLsizei stride, const GLvoid *ptr);
+RAYGL_API void rayglFogCoordPointerEXT(GLenum type, GLsizei stride, const GLvoid *ptr);
+RAYGL_API void rayglSecondaryColorPointer(GLint size, GLenum type, GLsizei stride,
+                                          const GLvoid *ptr);
+RAYGL_API void rayglSecondaryColorPointerEXT(GLint size, GLenum type, GLsizei stride,
+                                             const GLvoid *ptr);
 RAYGL_API void rayglInterleavedArrays(GLenum format, GLsizei stride, const GLvoid *pointer);
 RAYGL_API void rayglEnableClientState(GLenum array);
 RAYGL_API void rayglDisableClientState(GLenum array);
@@ -156,6 +163,15 @@ RAYGL_API void rayglMultiDrawArrays(GLenum mode, const GLint *first, const GLsiz
                                     GLsizei drawcount);
 RAYGL_API void rayglMultiDrawElements(GLenum mode, const GLsizei *count, GLenum type,
                                       const void *const *indices, GLsizei drawcount);
+/* The EXT names of the array draws, recorded as rows of their own. */
+RAYGL_API void rayglArrayElementEXT(GLint i);
+RAYGL_API void rayglDrawArraysEXT(GLenum mode, GLint first, GLsizei count);
+RAYGL_API void rayglDrawRangeElementsEXT(GLenum mode, GLuint start, GLuint end, GLsizei count,
+                                         GLenum type, const void *indices);
+RAYGL_API void rayglMultiDrawArraysEXT(GLenum mode, const GLint *first, const GLsizei *count,
+                                       GLsizei primcount);
+RAYGL_API void rayglMultiDrawElementsEXT(GLenum mode, const GLsizei *count, GLenum type,
+                                         const void *const *indices, GLsizei primcount);
 
 /* Buffer objects (GL 1.5) and their ARB_vertex_buffer_object names. */
 RAYGL_API void rayglGenBuffers(GLsizei n, GLuint *buffers);
@@ -216,6 +232,29 @@ RAYGL_API void rayglTexImage3D(GLenum target, GLint level, GLint internalFormat,
 RAYGL_API void rayglTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
                                   GLint zoffset, GLsizei width, GLsizei height, GLsizei depth,
                                   GLenum format, GLenum type, const GLvoid *pixels);
+/* Their EXT names (and glBindTextureEXT, glTexSubImage2DEXT), recorded as
+ * rows of their own, with glext.h's prototypes. */
+RAYGL_API void rayglCopyTexImage1DEXT(GLenum target, GLint level, GLenum internalformat, GLint x,
+                                      GLint y, GLsizei width, GLint border);
+RAYGL_API void rayglCopyTexImage2DEXT(GLenum target, GLint level, GLenum internalformat, GLint x,
+                                      GLint y, GLsizei width, GLsizei height, GLint border);
+RAYGL_API void rayglCopyTexSubImage1DEXT(GLenum target, GLint level, GLint xoffset, GLint x,
+                                         GLint y, GLsizei width);
+RAYGL_API void rayglCopyTexSubImage2DEXT(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                         GLint x, GLint y, GLsizei width, GLsizei height);
+RAYGL_API void rayglCopyTexSubImage3DEXT(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                         GLint zoffset, GLint x, GLint y, GLsizei width,
+                                         GLsizei height);
+RAYGL_API void rayglTexImage3DEXT(GLenum target, GLint level, GLenum internalformat, GLsizei width,
+                                  GLsizei height, GLsizei depth, GLint border, GLenum format,
+                                  GLenum type, const void *pixels);
+RAYGL_API void rayglTexSubImage3DEXT(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                     GLint zoffset, GLsizei width, GLsizei height, GLsizei depth,
+                                     GLenum format, GLenum type, const void *pixels);
+RAYGL_API void rayglBindTextureEXT(GLenum target, GLuint texture);
+RAYGL_API void rayglTexSubImage2DEXT(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                     GLsizei width, GLsizei height, GLenum format, GLenum type,
+                                     const void *pixels);
 
 /* glEnable / glDisable: the client arrays (GL_VERTEX_ARRAY, ...), which
  * Mesa takes there as glEnableClientState does, are recorded as that. */

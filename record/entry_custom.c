@@ -91,20 +91,16 @@ static bool executes(const rgl_stream *s)
 }
 
 
-static int target_slot(GLenum target)
-{
-    return target == GL_TEXTURE_1D ? 0 : target == GL_TEXTURE_2D ? 1 : -1;
-}
-
-/* The texture object bound to target in s, created on first use. */
+/* The texture object bound to target (a cube-map face: the cube map) on
+ * the active unit in s, created on first use. */
 static rgl_texture *bound_texture(rgl_stream *s, GLenum target)
 {
-    int slot = target_slot(target);
+    int slot = rgl_tex_slot(target);
     if (slot < 0)
         return NULL;
-    rgl_texture *t = rgl_texture_get(s, s->objs.bound[slot], true);
+    rgl_texture *t = rgl_texture_get(s, s->objs.bound[rgl_tex_active_unit(s)][slot], true);
     if (t && !t->target)
-        t->target = target;
+        t->target = rgl_tex_slot_target(slot);
     return t;
 }
 
@@ -118,6 +114,10 @@ static void texture_define(rgl_stream *s, GLenum target, const uint8_t *from, bo
     rgl_texture *t = bound_texture(s, target);
     if (!t)
         return;
+    /* A cube map's faces are defined one by one: a new +X face starts its
+     * definition afresh, the other faces add to it. */
+    if (target > GL_TEXTURE_CUBE_MAP_POSITIVE_X && target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z)
+        reset = false;
     if (reset)
         t->defs.size = 0;
     size_t n = (size_t)(s->pos - from);
@@ -159,6 +159,7 @@ static void texture_param(GLenum target, GLenum pname, bool is_float, const GLfl
 
 static const GLenum array_enums[RGL_MAX_CLIENT_ARRAYS] = {
     GL_VERTEX_ARRAY, GL_NORMAL_ARRAY, GL_COLOR_ARRAY, GL_TEXTURE_COORD_ARRAY, GL_EDGE_FLAG_ARRAY,
+    GL_FOG_COORD_ARRAY, GL_SECONDARY_COLOR_ARRAY,
 };
 
 static int array_slot(GLenum array)
@@ -408,23 +409,33 @@ static bool record_elements(uint32_t op, GLenum mode, GLuint start, GLuint end, 
     return ok;
 }
 
-RGL_EXPORT void rayglArrayElement(GLint i)
+static void array_element(uint32_t op, GLint i)
 {
     /* Inside glBegin/glEnd: no matrix read-back here (glGet is illegal). */
-    if (i >= 0 && record_arrays(RGL_OP_ArrayElement, i, 1))
-        rgl_record(RGL_OP_ArrayElement, "i", i);
+    if (i >= 0 && record_arrays(op, i, 1))
+        rgl_record(op, "i", i);
     glArrayElement(i);
+}
+
+RGL_EXPORT void rayglArrayElement(GLint i)
+{
+    array_element(RGL_OP_ArrayElement, i);
+}
+
+static void draw_arrays(uint32_t op, GLenum mode, GLint first, GLsizei count)
+{
+    rgl_stream *s = rgl_tls_stream;
+    if (first >= 0 && count >= 0 && s && draw_ok(s, op, mode)) {
+        rgl_resolve_matrices();
+        if (record_arrays(op, first, count))
+            rgl_record(op, "eii", mode, first, count);
+    }
+    glDrawArrays(mode, first, count);
 }
 
 RGL_EXPORT void rayglDrawArrays(GLenum mode, GLint first, GLsizei count)
 {
-    rgl_stream *s = rgl_tls_stream;
-    if (first >= 0 && count >= 0 && s && draw_ok(s, RGL_OP_DrawArrays, mode)) {
-        rgl_resolve_matrices();
-        if (record_arrays(RGL_OP_DrawArrays, first, count))
-            rgl_record(RGL_OP_DrawArrays, "eii", mode, first, count);
-    }
-    glDrawArrays(mode, first, count);
+    draw_arrays(RGL_OP_DrawArrays, mode, first, count);
 }
 
 RGL_EXPORT void rayglDrawElements(GLenum mode, GLsizei count, GLenum type, const GLvoid *indices)
@@ -443,12 +454,12 @@ RGL_EXPORT void rayglDrawRangeElements(GLenum mode, GLuint start, GLuint end, GL
 
 /* glMultiDrawArrays: one @ArrayData range covering every draw, then the
  * firsts and counts as two blobs of little-endian int32. */
-RGL_EXPORT void rayglMultiDrawArrays(GLenum mode, const GLint *first, const GLsizei *count,
-                                     GLsizei drawcount)
+static void multi_draw_arrays(uint32_t op, GLenum mode, const GLint *first, const GLsizei *count,
+                              GLsizei drawcount)
 {
     rgl_stream *s = rgl_tls_stream;
     bool ok = drawcount >= 0 && (drawcount == 0 || (first && count)) && s &&
-              draw_ok(s, RGL_OP_MultiDrawArrays, mode);
+              draw_ok(s, op, mode);
     int64_t lo = INT64_MAX, hi = 0;
     for (GLsizei i = 0; ok && i < drawcount; i++) {
         if (first[i] < 0 || count[i] < 0)
@@ -462,23 +473,29 @@ RGL_EXPORT void rayglMultiDrawArrays(GLenum mode, const GLint *first, const GLsi
         rgl_resolve_matrices();
         if (lo == INT64_MAX)
             lo = hi = 0;
-        if (record_arrays(RGL_OP_MultiDrawArrays, lo, hi - lo))
-            rgl_record(RGL_OP_MultiDrawArrays, "eBBi", mode, (const void *)first,
+        if (record_arrays(op, lo, hi - lo))
+            rgl_record(op, "eBBi", mode, (const void *)first,
                        (size_t)drawcount * 4, (const void *)count, (size_t)drawcount * 4,
                        drawcount);
     }
     glMultiDrawArrays(mode, first, count, drawcount);
 }
 
+RGL_EXPORT void rayglMultiDrawArrays(GLenum mode, const GLint *first, const GLsizei *count,
+                                     GLsizei drawcount)
+{
+    multi_draw_arrays(RGL_OP_MultiDrawArrays, mode, first, count, drawcount);
+}
+
 /* glMultiDrawElements: the index arrays of all the draws, one after the
  * other, in one blob; one @ArrayData range covering every index. */
-static void record_multi_elements(GLenum mode, const GLsizei *count, GLenum type,
+static void record_multi_elements(uint32_t op, GLenum mode, const GLsizei *count, GLenum type,
                                   const void *const *indices, GLsizei drawcount)
 {
     size_t ts = index_size(type);
     rgl_stream *s = rgl_tls_stream;
     if (!s || !ts || drawcount < 0 || (drawcount > 0 && (!count || !indices)) ||
-        !draw_ok(s, RGL_OP_MultiDrawElements, mode))
+        !draw_ok(s, op, mode))
         return;
     uint32_t eb = rgl_buffer_binding(s, GL_ELEMENT_ARRAY_BUFFER);
     size_t total = 0;
@@ -503,7 +520,7 @@ static void record_multi_elements(GLenum mode, const GLsizei *count, GLenum type
         size_t b;
         ok = idx && index_range(count[i], type, idx, &l, &h, &b);
         if (!idx && eb)
-            rgl_note_skipped(RGL_OP_MultiDrawElements, RGL_PX_SKIP_DATA); /* see record_arrays */
+            rgl_note_skipped(op, RGL_PX_SKIP_DATA); /* see record_arrays */
         if (ok && bytes) {
             memcpy(all + at, idx, bytes);
             at += bytes;
@@ -519,8 +536,8 @@ static void record_multi_elements(GLenum mode, const GLsizei *count, GLenum type
             lo = hi = 0;
         else
             hi++;
-        if (record_arrays(RGL_OP_MultiDrawElements, lo, (int64_t)hi - lo))
-            rgl_record(RGL_OP_MultiDrawElements, "eBeBi", mode, (const void *)count,
+        if (record_arrays(op, lo, (int64_t)hi - lo))
+            rgl_record(op, "eBeBi", mode, (const void *)count,
                        (size_t)drawcount * 4, type, (const void *)all, total, drawcount);
     }
     rgl_free(all);
@@ -529,8 +546,41 @@ static void record_multi_elements(GLenum mode, const GLsizei *count, GLenum type
 RGL_EXPORT void rayglMultiDrawElements(GLenum mode, const GLsizei *count, GLenum type,
                                        const void *const *indices, GLsizei drawcount)
 {
-    record_multi_elements(mode, count, type, indices, drawcount);
+    record_multi_elements(RGL_OP_MultiDrawElements, mode, count, type, indices, drawcount);
     glMultiDrawElements(mode, count, type, indices, drawcount);
+}
+
+/* The EXT names of the array draws: rows of their own, forwarded to the
+ * core functions, which gl.xml makes the same. */
+RGL_EXPORT void rayglArrayElementEXT(GLint i)
+{
+    array_element(RGL_OP_ArrayElementEXT, i);
+}
+
+RGL_EXPORT void rayglDrawArraysEXT(GLenum mode, GLint first, GLsizei count)
+{
+    draw_arrays(RGL_OP_DrawArraysEXT, mode, first, count);
+}
+
+RGL_EXPORT void rayglDrawRangeElementsEXT(GLenum mode, GLuint start, GLuint end, GLsizei count,
+                                          GLenum type, const void *indices)
+{
+    if (end >= start)
+        record_elements(RGL_OP_DrawRangeElementsEXT, mode, start, end, count, type, indices);
+    glDrawRangeElements(mode, start, end, count, type, indices);
+}
+
+RGL_EXPORT void rayglMultiDrawArraysEXT(GLenum mode, const GLint *first, const GLsizei *count,
+                                        GLsizei primcount)
+{
+    multi_draw_arrays(RGL_OP_MultiDrawArraysEXT, mode, first, count, primcount);
+}
+
+RGL_EXPORT void rayglMultiDrawElementsEXT(GLenum mode, const GLsizei *count, GLenum type,
+                                          const void *const *indices, GLsizei primcount)
+{
+    record_multi_elements(RGL_OP_MultiDrawElementsEXT, mode, count, type, indices, primcount);
+    glMultiDrawElements(mode, count, type, indices, primcount);
 }
 
 /* Keeps a pointer call's layout in the stream (GL changes nothing on error)
@@ -553,7 +603,7 @@ static void array_pointer(int slot, uint32_t op, GLint size, GLenum type, GLsize
     if (!rec)
         return;
     switch (slot) {
-    case RGL_CA_NORMAL: RECORD_NOW(s, op, "ei", type, stride); break;
+    case RGL_CA_NORMAL: case RGL_CA_FOGCOORD: RECORD_NOW(s, op, "ei", type, stride); break;
     case RGL_CA_EDGEFLAG: RECORD_NOW(s, op, "i", stride); break;
     default: RECORD_NOW(s, op, "iei", size, type, stride); break;
     }
@@ -594,6 +644,48 @@ RGL_EXPORT void rayglEdgeFlagPointer(GLsizei stride, const GLvoid *ptr)
     if (stride >= 0)
         array_pointer(RGL_CA_EDGEFLAG, RGL_OP_EdgeFlagPointer, 1, GL_UNSIGNED_BYTE, stride, ptr);
     glEdgeFlagPointer(stride, ptr);
+}
+
+/* GL 2.1 2.8: fog coordinates are GL_FLOAT or GL_DOUBLE, one each;
+ * secondary colours three components of any type (GL refuses the rest:
+ * nothing recorded). */
+static void fog_coord_pointer(uint32_t op, GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+    if (stride >= 0 && (type == GL_FLOAT || type == GL_DOUBLE))
+        array_pointer(RGL_CA_FOGCOORD, op, 1, type, stride, ptr);
+}
+
+static void secondary_color_pointer(uint32_t op, GLint size, GLenum type, GLsizei stride,
+                                    const GLvoid *ptr)
+{
+    if (size == 3 && stride >= 0 && type_size(type))
+        array_pointer(RGL_CA_SECONDARY, op, size, type, stride, ptr);
+}
+
+RGL_EXPORT void rayglFogCoordPointer(GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+    fog_coord_pointer(RGL_OP_FogCoordPointer, type, stride, ptr);
+    glFogCoordPointer(type, stride, ptr);
+}
+
+RGL_EXPORT void rayglFogCoordPointerEXT(GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+    fog_coord_pointer(RGL_OP_FogCoordPointerEXT, type, stride, ptr);
+    glFogCoordPointerEXT(type, stride, ptr);
+}
+
+RGL_EXPORT void rayglSecondaryColorPointer(GLint size, GLenum type, GLsizei stride,
+                                           const GLvoid *ptr)
+{
+    secondary_color_pointer(RGL_OP_SecondaryColorPointer, size, type, stride, ptr);
+    glSecondaryColorPointer(size, type, stride, ptr);
+}
+
+RGL_EXPORT void rayglSecondaryColorPointerEXT(GLint size, GLenum type, GLsizei stride,
+                                              const GLvoid *ptr)
+{
+    secondary_color_pointer(RGL_OP_SecondaryColorPointerEXT, size, type, stride, ptr);
+    glSecondaryColorPointerEXT(size, type, stride, ptr);
 }
 
 /* glClientActiveTexture: the texture-coordinate array calls change the
@@ -799,28 +891,41 @@ RGL_EXPORT void rayglDeleteTextures(GLsizei n, const GLuint *textures)
                 continue;
             texture_forget(s, textures[k]);
             /* Deleting a bound texture binds 0 (GL 1.5, 3.8.12). */
-            for (int b = 0; b < 2; b++)
-                if (s->objs.bound[b] == textures[k])
-                    s->objs.bound[b] = 0;
+            for (int u = 0; u < RGL_MAX_TEX_UNITS; u++)
+                for (int b = 0; b < RGL_TEX_TARGETS; b++)
+                    if (s->objs.bound[u][b] == textures[k])
+                        s->objs.bound[u][b] = 0;
         }
     }
     glDeleteTextures(n, textures);
 }
 
-RGL_EXPORT void rayglBindTexture(GLenum target, GLuint texture)
+static void bind_texture(uint32_t op, GLenum target, GLuint texture)
 {
-    int slot = target_slot(target);
+    int slot = rgl_tex_slot(target);
     rgl_stream *s;
-    if (slot >= 0 && rgl_reserve(&s, 1)) {
-        if (executes(s)) {
-            s->objs.bound[slot] = texture;
+    /* A cube-map face is no target of glBindTexture. */
+    if (slot >= 0 && target == rgl_tex_slot_target(slot) && rgl_reserve(&s, 1)) {
+        if (executes(s) && !s->in_begin) {
+            s->objs.bound[rgl_tex_active_unit(s)][slot] = texture;
             rgl_texture *t = rgl_texture_get(s, texture, true);
             if (t && !t->target)
                 t->target = target;
         }
-        rgl_record(RGL_OP_BindTexture, "ee", target, texture);
+        rgl_record(op, "ee", target, texture);
     }
     glBindTexture(target, texture);
+}
+
+RGL_EXPORT void rayglBindTexture(GLenum target, GLuint texture)
+{
+    bind_texture(RGL_OP_BindTexture, target, texture);
+}
+
+/* Forwarded to the core function, which gl.xml makes the same. */
+RGL_EXPORT void rayglBindTextureEXT(GLenum target, GLuint texture)
+{
+    bind_texture(RGL_OP_BindTextureEXT, target, texture);
 }
 
 /* A texture's definition past this many bytes of records is read back from
@@ -828,53 +933,81 @@ RGL_EXPORT void rayglBindTexture(GLenum target, GLuint texture)
  * would otherwise make every snapshot longer than the last. */
 #define RGL_TEX_DEFS_COMPACT 4096
 
+/* Level `level` of `target` (a cube map's face for a cube map) read back as
+ * GL_RGBA / GL_UNSIGNED_BYTE and appended to defs as the glTexImage that
+ * makes it. Returns false when the level is empty; *ok false on failure. */
+static bool compact_level(rgl_buf *defs, GLenum target, GLint level, bool *ok)
+{
+    GLint w = 0, h = 0, d = 1, fmt = 0, border = 0;
+    glGetTexLevelParameteriv(target, level, GL_TEXTURE_WIDTH, &w);
+    glGetTexLevelParameteriv(target, level, GL_TEXTURE_HEIGHT, &h);
+    if (target == GL_TEXTURE_3D)
+        glGetTexLevelParameteriv(target, level, GL_TEXTURE_DEPTH, &d);
+    glGetTexLevelParameteriv(target, level, GL_TEXTURE_INTERNAL_FORMAT, &fmt);
+    glGetTexLevelParameteriv(target, level, GL_TEXTURE_BORDER, &border);
+    if (w <= 0 || h <= 0 || d <= 0)
+        return false;
+    size_t bytes = (size_t)w * (size_t)h * (size_t)d * 4;
+    if (bytes > RGL_CHUNK_MAX_PAYLOAD) { /* no resource holds it: keep the records */
+        *ok = false;
+        return false;
+    }
+    uint8_t *px = rgl_alloc(bytes);
+    if (!px) {
+        rgl_fail(ENOMEM, "allocation failed");
+        *ok = false;
+        return false;
+    }
+    glGetTexImage(target, level, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    uint32_t id = rgl_resource_put(RGL_RES_BYTES, px, bytes);
+    rgl_free(px);
+    if (target == GL_TEXTURE_1D)
+        *ok = id && rgl_emit(defs, RGL_OP_TexImage1D, "eiiiieee", target, level, fmt, w, border,
+                             GL_RGBA, GL_UNSIGNED_BYTE, id);
+    else if (target == GL_TEXTURE_3D)
+        *ok = id && rgl_emit(defs, RGL_OP_TexImage3D, "eiiiiiieee", target, level, fmt, w, h, d,
+                             border, GL_RGBA, GL_UNSIGNED_BYTE, id);
+    else
+        *ok = id && rgl_emit(defs, RGL_OP_TexImage2D, "eiiiiieee", target, level, fmt, w, h,
+                             border, GL_RGBA, GL_UNSIGNED_BYTE, id);
+    return *ok;
+}
+
 /* Replaces the definition of the texture bound to target by its images read
- * back from a live context (GL_RGBA, GL_UNSIGNED_BYTE), once it has grown
- * past RGL_TEX_DEFS_COMPACT. The pack state is saved and restored. */
+ * back from a live context (GL_RGBA, GL_UNSIGNED_BYTE; every level, every
+ * face of a cube map), once it has grown past RGL_TEX_DEFS_COMPACT. The
+ * pack state is saved and restored. */
 static void texture_compact(GLenum target)
 {
     rgl_stream *s = rgl_tls_stream;
-    int slot = target_slot(target);
+    int slot = rgl_tex_slot(target);
     if (!s || slot < 0 || !executes(s) || !rgl_live_context())
         return;
-    rgl_texture *t = rgl_texture_get(s, s->objs.bound[slot], false);
+    rgl_texture *t = rgl_texture_get(s, s->objs.bound[rgl_tex_active_unit(s)][slot], false);
     if (!t || t->defs.size <= RGL_TEX_DEFS_COMPACT)
         return;
-    static const GLenum pack[4] = {GL_PACK_ALIGNMENT, GL_PACK_ROW_LENGTH, GL_PACK_SKIP_ROWS,
-                                   GL_PACK_SKIP_PIXELS};
-    GLint saved[4] = {4, 0, 0, 0};
-    for (int k = 0; k < 4; k++) {
+    GLenum obj = rgl_tex_slot_target(slot);
+    /* The 3D ones only where 3D textures are (GL 1.2). */
+    static const GLenum pack[6] = {GL_PACK_ALIGNMENT,  GL_PACK_ROW_LENGTH,
+                                   GL_PACK_SKIP_ROWS,  GL_PACK_SKIP_PIXELS,
+                                   GL_PACK_IMAGE_HEIGHT, GL_PACK_SKIP_IMAGES};
+    int npack = obj == GL_TEXTURE_3D ? 6 : 4;
+    GLint saved[6] = {4, 0, 0, 0, 0, 0};
+    for (int k = 0; k < npack; k++) {
         glGetIntegerv(pack[k], &saved[k]);
         glPixelStorei(pack[k], k == 0 ? 4 : 0);
     }
     rgl_buf defs = {0};
     bool ok = true;
-    for (GLint level = 0; ok && level < 32; level++) {
-        GLint w = 0, h = 0, fmt = 0, border = 0;
-        glGetTexLevelParameteriv(target, level, GL_TEXTURE_WIDTH, &w);
-        glGetTexLevelParameteriv(target, level, GL_TEXTURE_HEIGHT, &h);
-        glGetTexLevelParameteriv(target, level, GL_TEXTURE_INTERNAL_FORMAT, &fmt);
-        glGetTexLevelParameteriv(target, level, GL_TEXTURE_BORDER, &border);
-        if (w <= 0 || h <= 0)
-            break;
-        size_t bytes = (size_t)w * (size_t)h * 4;
-        uint8_t *px = rgl_alloc(bytes);
-        if (!px) {
-            rgl_fail(ENOMEM, "allocation failed");
-            ok = false;
-            break;
-        }
-        glGetTexImage(target, level, GL_RGBA, GL_UNSIGNED_BYTE, px);
-        uint32_t id = rgl_resource_put(RGL_RES_BYTES, px, bytes);
-        rgl_free(px);
-        if (target == GL_TEXTURE_1D)
-            ok = id && rgl_emit(&defs, RGL_OP_TexImage1D, "eiiiieee", target, level, fmt, w,
-                                border, GL_RGBA, GL_UNSIGNED_BYTE, id);
-        else
-            ok = id && rgl_emit(&defs, RGL_OP_TexImage2D, "eiiiiieee", target, level, fmt, w, h,
-                                border, GL_RGBA, GL_UNSIGNED_BYTE, id);
-    }
-    for (int k = 0; k < 4; k++)
+    bool cube = obj == GL_TEXTURE_CUBE_MAP;
+    GLenum first = cube ? GL_TEXTURE_CUBE_MAP_POSITIVE_X : obj;
+    GLenum last = cube ? GL_TEXTURE_CUBE_MAP_NEGATIVE_Z : obj;
+    for (GLenum face = first; ok && face <= last; face++)
+        /* A rectangle texture has level 0 only. */
+        for (GLint level = 0; level < (obj == GL_TEXTURE_RECTANGLE_ARB ? 1 : 32); level++)
+            if (!compact_level(&defs, face, level, &ok))
+                break;
+    for (int k = 0; k < npack; k++)
         glPixelStorei(pack[k], saved[k]);
     if (ok && defs.size) {
         rgl_buf_finish(&t->defs);
@@ -933,26 +1066,47 @@ RGL_EXPORT void rayglTexImage2D(GLenum target, GLint level, GLint internalFormat
         }
     }
     glTexImage2D(target, level, internalFormat, width, height, border, format, type, pixels);
+    /* A cube map's faces add to its definition (texture_define): bounded
+     * as sub-images are. */
+    if (target > GL_TEXTURE_CUBE_MAP_POSITIVE_X && target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z)
+        texture_compact(target);
 }
 
-RGL_EXPORT void rayglTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
-                                   GLsizei width, GLsizei height, GLenum format, GLenum type,
-                                   const GLvoid *pixels)
+static void tex_subimage2d(uint32_t op, GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                           GLsizei width, GLsizei height, GLenum format, GLenum type,
+                           const GLvoid *pixels)
 {
     rgl_stream *s;
     if (rgl_reserve(&s, 1)) {
         int64_t id = rgl_tex_pixels(s, 2, true, target, level, 0, xoffset, yoffset, width,
                                     height, 0, format, type, pixels);
-        rgl_note_skipped(RGL_OP_TexSubImage2D, id);
+        rgl_note_skipped(op, id);
         if (id > 0 && rgl_reserve(&s, RGL_TEX_RECORD_ROOM)) {
             const uint8_t *from = s->pos;
-            if (rgl_record(RGL_OP_TexSubImage2D, "eiiiiieee", target, level, xoffset, yoffset,
+            if (rgl_record(op, "eiiiiieee", target, level, xoffset, yoffset,
                            width, height, format, type, (uint32_t)id))
                 texture_define(s, target, from, false);
         }
     }
     glTexSubImage2D(target, level, xoffset, yoffset, width, height, format, type, pixels);
     texture_compact(target);
+}
+
+RGL_EXPORT void rayglTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                   GLsizei width, GLsizei height, GLenum format, GLenum type,
+                                   const GLvoid *pixels)
+{
+    tex_subimage2d(RGL_OP_TexSubImage2D, target, level, xoffset, yoffset, width, height, format,
+                   type, pixels);
+}
+
+/* Forwarded to the core function (libOSMesa exports no glTexSubImage2DEXT). */
+RGL_EXPORT void rayglTexSubImage2DEXT(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                      GLsizei width, GLsizei height, GLenum format, GLenum type,
+                                      const void *pixels)
+{
+    tex_subimage2d(RGL_OP_TexSubImage2DEXT, target, level, xoffset, yoffset, width, height,
+                   format, type, pixels);
 }
 
 RGL_EXPORT GLint raygluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width,
@@ -1110,49 +1264,132 @@ RGL_EXPORT void rayglDeleteLists(GLuint list, GLsizei range)
 
 /* GLU quadric objects are process-wide pointers; the trace names them by
  * small ids. A quadric made by plain gluNewQuadric gets an id when first
- * seen. */
+ * seen. The table also keeps each quadric's state (GLU has no query for
+ * it): a shape compiled into a display list is drawn by GLU with the state
+ * of compile time, so the body carries that state (docs/format.md 3.2), and
+ * the frame-start snapshot re-creates the quadrics with theirs. */
+typedef struct quad_entry {
+    const GLUquadric *q;
+    uint32_t id;
+    uint32_t draw, normals, orientation, texture;
+} quad_entry;
+
 static struct {
     pthread_mutex_t mu;
-    struct quad_entry { const GLUquadric *q; uint32_t id; } *v;
+    quad_entry *v;
     size_t n, cap;
     uint32_t next;
 } quads = {.mu = PTHREAD_MUTEX_INITIALIZER};
+
+/* The entry of q, added with GLU's initial state when new; NULL when out
+ * of memory. Called with quads.mu held. */
+static quad_entry *quad_find(const GLUquadric *q)
+{
+    for (size_t i = 0; i < quads.n; i++)
+        if (quads.v[i].q == q)
+            return &quads.v[i];
+    if (quads.n == quads.cap) {
+        size_t cap = quads.cap ? 2 * quads.cap : 8;
+        quad_entry *v = rgl_realloc(quads.v, cap * sizeof *v);
+        if (!v)
+            return NULL;
+        quads.v = v;
+        quads.cap = cap;
+    }
+    quads.v[quads.n] = (quad_entry){q, ++quads.next, GLU_FILL, GLU_SMOOTH, GLU_OUTSIDE, 0};
+    return &quads.v[quads.n++];
+}
 
 static uint32_t quad_id(const GLUquadric *q, bool forget)
 {
     uint32_t id = 0;
     pthread_mutex_lock(&quads.mu);
-    for (size_t i = 0; i < quads.n; i++) {
-        if (quads.v[i].q == q) {
-            id = quads.v[i].id;
-            if (forget)
+    if (forget) {
+        for (size_t i = 0; i < quads.n; i++)
+            if (quads.v[i].q == q) {
+                id = quads.v[i].id;
                 quads.v[i] = quads.v[--quads.n];
-            goto out;
-        }
+                break;
+            }
+    } else {
+        quad_entry *e = quad_find(q);
+        id = e ? e->id : 0;
     }
-    if (forget)
-        goto out;
-    if (quads.n == quads.cap) {
-        size_t cap = quads.cap ? 2 * quads.cap : 8;
-        struct quad_entry *v = rgl_realloc(quads.v, cap * sizeof *v);
-        if (!v)
-            goto out;
-        quads.v = v;
-        quads.cap = cap;
-    }
-    id = ++quads.next;
-    quads.v[quads.n++] = (struct quad_entry){q, id};
-out:
     pthread_mutex_unlock(&quads.mu);
     return id;
 }
 
+/* Keeps what GLU accepts (an invalid value leaves the quadric unchanged). */
+static void quad_track(const GLUquadric *q, uint32_t op, uint32_t v)
+{
+    pthread_mutex_lock(&quads.mu);
+    quad_entry *e = quad_find(q);
+    if (e) {
+        if (op == RGL_OP_QuadricDrawStyle &&
+            (v == GLU_FILL || v == GLU_LINE || v == GLU_SILHOUETTE || v == GLU_POINT))
+            e->draw = v;
+        else if (op == RGL_OP_QuadricNormals && (v == GLU_NONE || v == GLU_FLAT || v == GLU_SMOOTH))
+            e->normals = v;
+        else if (op == RGL_OP_QuadricOrientation && (v == GLU_OUTSIDE || v == GLU_INSIDE))
+            e->orientation = v;
+        else if (op == RGL_OP_QuadricTexture)
+            e->texture = v != 0;
+    }
+    pthread_mutex_unlock(&quads.mu);
+}
+
+/* Writes the state of quadric e as its state commands into b (b NULL: the
+ * calling thread's stream). Called with quads.mu held. */
+static void quad_emit_state(rgl_buf *b, const quad_entry *e)
+{
+    if (b) {
+        rgl_emit(b, RGL_OP_QuadricDrawStyle, "ee", e->id, e->draw);
+        rgl_emit(b, RGL_OP_QuadricNormals, "ee", e->id, e->normals);
+        rgl_emit(b, RGL_OP_QuadricOrientation, "ee", e->id, e->orientation);
+        rgl_emit(b, RGL_OP_QuadricTexture, "eo", e->id, (int)e->texture);
+    } else {
+        rgl_record(RGL_OP_QuadricDrawStyle, "ee", e->id, e->draw);
+        rgl_record(RGL_OP_QuadricNormals, "ee", e->id, e->normals);
+        rgl_record(RGL_OP_QuadricOrientation, "ee", e->id, e->orientation);
+        rgl_record(RGL_OP_QuadricTexture, "eo", e->id, (int)e->texture);
+    }
+}
+
+void rgl_quadrics_snapshot(rgl_buf *b)
+{
+    pthread_mutex_lock(&quads.mu);
+    for (size_t i = 0; i < quads.n; i++) {
+        rgl_emit(b, RGL_OP_NewQuadric, "e", quads.v[i].id);
+        quad_emit_state(b, &quads.v[i]);
+    }
+    pthread_mutex_unlock(&quads.mu);
+}
+
+/* Before a shape drawn into a list being compiled: the quadric's state
+ * now, into the body. Returns the quadric's id (0: none). */
+static uint32_t quad_shape(rgl_stream *s, const GLUquadric *q)
+{
+    if (!s->compiling)
+        return quad_id(q, false);
+    uint32_t id = 0;
+    pthread_mutex_lock(&quads.mu);
+    quad_entry *e = quad_find(q);
+    if (e) {
+        id = e->id;
+        quad_emit_state(NULL, e);
+    }
+    pthread_mutex_unlock(&quads.mu);
+    return id;
+}
+
+/* The quadric calls are GLU client state, done at once even while a list
+ * is compiled: recorded into the frame, never into a list body. */
 RGL_EXPORT GLUquadric *raygluNewQuadric(void)
 {
     GLUquadric *q = gluNewQuadric();
     rgl_stream *s;
     if (q && rgl_reserve(&s, 1))
-        rgl_record(RGL_OP_NewQuadric, "e", quad_id(q, false));
+        RECORD_NOW(s, RGL_OP_NewQuadric, "e", quad_id(q, false));
     return q;
 }
 
@@ -1160,7 +1397,9 @@ RGL_EXPORT void raygluDeleteQuadric(GLUquadric *quad)
 {
     rgl_stream *s;
     if (quad && rgl_reserve(&s, 1))
-        rgl_record(RGL_OP_DeleteQuadric, "e", quad_id(quad, true));
+        RECORD_NOW(s, RGL_OP_DeleteQuadric, "e", quad_id(quad, true));
+    else if (quad)
+        quad_id(quad, true);
     gluDeleteQuadric(quad);
 }
 
@@ -1168,8 +1407,11 @@ RGL_EXPORT void raygluDeleteQuadric(GLUquadric *quad)
 static void quadric_state(uint32_t op, const GLUquadric *quad, GLenum value)
 {
     rgl_stream *s;
-    if (quad && rgl_reserve(&s, 1))
-        rgl_record(op, "ee", quad_id(quad, false), value);
+    if (!quad)
+        return;
+    quad_track(quad, op, value);
+    if (rgl_reserve(&s, 1))
+        RECORD_NOW(s, op, "ee", quad_id(quad, false), value);
 }
 
 RGL_EXPORT void raygluQuadricDrawStyle(GLUquadric *quad, GLenum draw)
@@ -1193,8 +1435,11 @@ RGL_EXPORT void raygluQuadricOrientation(GLUquadric *quad, GLenum orientation)
 RGL_EXPORT void raygluQuadricTexture(GLUquadric *quad, GLboolean texture)
 {
     rgl_stream *s;
-    if (quad && rgl_reserve(&s, 1))
-        rgl_record(RGL_OP_QuadricTexture, "eo", quad_id(quad, false), (int)texture);
+    if (quad) {
+        quad_track(quad, RGL_OP_QuadricTexture, texture);
+        if (rgl_reserve(&s, 1))
+            RECORD_NOW(s, RGL_OP_QuadricTexture, "eo", quad_id(quad, false), (int)texture);
+    }
     gluQuadricTexture(quad, texture);
 }
 
@@ -1206,7 +1451,7 @@ RGL_EXPORT void raygluSphere(GLUquadric *quad, GLdouble radius, GLint slices, GL
         rgl_resolve_matrices();
         rgl_stream *s;
         if (rgl_reserve(&s, 1))
-            rgl_record(RGL_OP_Sphere, "edii", quad_id(quad, false), radius, slices, stacks);
+            rgl_record(RGL_OP_Sphere, "edii", quad_shape(s, quad), radius, slices, stacks);
     }
     gluSphere(quad, radius, slices, stacks);
 }
@@ -1218,7 +1463,7 @@ RGL_EXPORT void raygluCylinder(GLUquadric *quad, GLdouble base, GLdouble top, GL
         rgl_resolve_matrices();
         rgl_stream *s;
         if (rgl_reserve(&s, 1))
-            rgl_record(RGL_OP_Cylinder, "edddii", quad_id(quad, false), base, top, height, slices,
+            rgl_record(RGL_OP_Cylinder, "edddii", quad_shape(s, quad), base, top, height, slices,
                        stacks);
     }
     gluCylinder(quad, base, top, height, slices, stacks);
@@ -1231,7 +1476,7 @@ RGL_EXPORT void raygluDisk(GLUquadric *quad, GLdouble inner, GLdouble outer, GLi
         rgl_resolve_matrices();
         rgl_stream *s;
         if (rgl_reserve(&s, 1))
-            rgl_record(RGL_OP_Disk, "eddii", quad_id(quad, false), inner, outer, slices, loops);
+            rgl_record(RGL_OP_Disk, "eddii", quad_shape(s, quad), inner, outer, slices, loops);
     }
     gluDisk(quad, inner, outer, slices, loops);
 }
@@ -1243,7 +1488,7 @@ RGL_EXPORT void raygluPartialDisk(GLUquadric *quad, GLdouble inner, GLdouble out
         rgl_resolve_matrices();
         rgl_stream *s;
         if (rgl_reserve(&s, 1))
-            rgl_record(RGL_OP_PartialDisk, "eddiidd", quad_id(quad, false), inner, outer, slices,
+            rgl_record(RGL_OP_PartialDisk, "eddiidd", quad_shape(s, quad), inner, outer, slices,
                        loops, start, sweep);
     }
     gluPartialDisk(quad, inner, outer, slices, loops, start, sweep);

@@ -588,14 +588,14 @@ static void objects_clear(rgl_objects *o, bool keep_names)
         rgl_buf_finish(&o->textures[i].defs);
     rgl_free(o->textures);
     rgl_free(o->lists);
-    uint32_t bound[2] = {o->bound[0], o->bound[1]};
+    uint32_t bound[RGL_MAX_TEX_UNITS][RGL_TEX_TARGETS];
+    memcpy(bound, o->bound, sizeof bound);
     uint32_t nt = o->next_texture_name, nl = o->next_list_name;
     int32_t unpack[6];
     memcpy(unpack, o->unpack, sizeof unpack);
     memset(o, 0, sizeof *o);
     if (keep_names) { /* GL state, not the trace's: a new trace keeps it */
-        o->bound[0] = bound[0];
-        o->bound[1] = bound[1];
+        memcpy(o->bound, bound, sizeof bound);
         o->next_texture_name = nt;
         o->next_list_name = nl;
         memcpy(o->unpack, unpack, sizeof unpack);
@@ -648,6 +648,10 @@ static rgl_stream *stream_create(void)
     s->arrays[RGL_CA_NORMAL].size = 3;
     s->arrays[RGL_CA_EDGEFLAG].size = 1;
     s->arrays[RGL_CA_EDGEFLAG].type = GL_UNSIGNED_BYTE;
+    s->arrays[RGL_CA_FOGCOORD].size = 1;
+    s->arrays[RGL_CA_FOGCOORD].type = GL_FLOAT;
+    s->arrays[RGL_CA_SECONDARY].size = 3;
+    s->arrays[RGL_CA_SECONDARY].type = GL_FLOAT;
     for (int i = 0; i < RGL_MAX_TEX_UNITS; i++)
         s->tc_parked[i] = s->arrays[RGL_CA_TEXCOORD];
     pthread_mutex_lock(&g.list_mu);

@@ -30,11 +30,14 @@
 #endif
 
 /* GL's own limits, mirrored where the recorder needs them. */
-#define RGL_MAX_CLIENT_ARRAYS 5 /* vertex, normal, color, texcoord, edge flag */
+#define RGL_MAX_CLIENT_ARRAYS 7 /* vertex, normal, color, texcoord, edge flag, fog coord, secondary */
 #define RGL_MAX_EVAL_ORDER 30   /* Mesa's GL_MAX_EVAL_ORDER */
 #define RGL_MAX_TEX_UNITS 8     /* Mesa's GL_MAX_TEXTURE_COORDS of GL 2.1 */
 
-enum rgl_client_array { RGL_CA_VERTEX, RGL_CA_NORMAL, RGL_CA_COLOR, RGL_CA_TEXCOORD, RGL_CA_EDGEFLAG };
+enum rgl_client_array {
+    RGL_CA_VERTEX, RGL_CA_NORMAL, RGL_CA_COLOR, RGL_CA_TEXCOORD, RGL_CA_EDGEFLAG,
+    RGL_CA_FOGCOORD, RGL_CA_SECONDARY,
+};
 
 typedef struct rgl_client_array_state {
     bool enabled;
@@ -55,6 +58,12 @@ typedef struct rgl_buf {
 /* Texture and display-list objects created through raygl calls, kept per
  * stream (one context per thread) so the snapshot can re-create them. */
 #define RGL_TEX_PARAMS_MAX 16
+
+/* Texture targets whose objects are kept: 1D, 2D, rectangle, 3D, cube map
+ * (slots of rgl_tex_slot, snaptex.c). */
+#define RGL_TEX_TARGETS 5
+#define RGL_TEX_SLOT_RECT 2
+#define RGL_TEX_SLOT_CUBE 4
 
 typedef struct rgl_tex_param {
     uint32_t pname;
@@ -82,7 +91,8 @@ typedef struct rgl_objects {
     size_t ntextures, cap_textures;
     rgl_list_rec *lists;
     size_t nlists, cap_lists;
-    uint32_t bound[2];          /* texture bound to GL_TEXTURE_1D, GL_TEXTURE_2D */
+    /* texture bound per unit to each target of rgl_tex_slot */
+    uint32_t bound[RGL_MAX_TEX_UNITS][RGL_TEX_TARGETS];
     uint32_t next_texture_name; /* RayGL's own names when GL has no context */
     /* GL_UNPACK_SWAP_BYTES .. GL_UNPACK_ALIGNMENT (0x0CF0 .. 0x0CF5) as the
      * program set them (alignment 0: GL's 4), for recording without a
@@ -313,6 +323,10 @@ bool rgl_buffer_live(void);
 bool rgl_buffer_gather(uint32_t target, uint32_t name, bool live, uint64_t offset,
                        uint64_t stride, size_t row, size_t rows, uint8_t *out);
 
+/* GLU quadrics (entry_custom.c): every live quadric as NewQuadric and its
+ * state commands, into b (the frame-start snapshot). */
+void rgl_quadrics_snapshot(rgl_buf *b);
+
 /* Records a call GL executes at once even while a list is compiled
  * (client state, list names, buffer objects): into the frame, never into
  * the list body. */
@@ -376,6 +390,18 @@ int64_t rgl_tex_pixels3d(rgl_stream *s, bool sub, uint32_t target, int32_t level
  * kept), which `reset` starts afresh; then, for a sub-image, compacts a
  * definition grown too long (entry_custom.c). */
 void rgl_texture_defined(rgl_stream *s, uint32_t target, const uint8_t *from, bool reset);
+
+/* The slot of a texture target (a cube-map face: the cube map's), -1 for
+ * a target whose objects are not kept; and the target of a slot. */
+int rgl_tex_slot(uint32_t target);
+uint32_t rgl_tex_slot_target(int slot);
+
+/* The active texture unit of the current context (0 without a context,
+ * without multitexture, inside glBegin/glEnd, or past RGL_MAX_TEX_UNITS). */
+uint32_t rgl_tex_active_unit(const rgl_stream *s);
+
+/* The snapshot's texture objects and every unit's bindings (snaptex.c). */
+void rgl_snap_textures(rgl_stream *s, rgl_buf *out);
 
 /* Whether target is a proxy texture target (GL reads no pixels for it). */
 bool rgl_tex_is_proxy(uint32_t target);

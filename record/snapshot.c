@@ -6,12 +6,15 @@
  * deduplicated resource that the frame references, so each frame can be
  * translated without the frames before it (docs/design.md, "Resolved state").
  *
- * Only side-effect-free queries are used, except for texture parameters:
- * the texture is bound to read them and the binding is restored.
+ * Only side-effect-free queries are used, except for texture parameters
+ * and bindings (snaptex.c): the texture is bound, or the unit made active,
+ * to read them, and what GL had is restored.
  */
 #include <string.h>
 
+#define GL_GLEXT_PROTOTYPES 1 /* glActiveTexture (GL 1.3) */
 #include <GL/gl.h>
+#include <GL/glext.h>
 
 #include "recorder.h"
 
@@ -34,10 +37,6 @@ static const GLenum caps_off[] = {
     GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1, GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3,
     GL_MAP2_TEXTURE_COORD_4, GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4,
 };
-
-/* Texture parameters read back from GL (the rest come from tracking). */
-static const GLenum tex_params_live[] = {GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER,
-                                         GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T};
 
 static GLint get_i(GLenum pname)
 {
@@ -103,7 +102,7 @@ static void snap_lights(rgl_buf *b)
         rgl_emit(b, RGL_OP_LightModeli, "ei", GL_LIGHT_MODEL_COLOR_CONTROL, cc[0]);
 }
 
-static void snap_current(rgl_buf *b)
+static void snap_current(rgl_buf *b, GLint active)
 {
     GLfloat c[4] = {1, 1, 1, 1}, n[4] = {0, 0, 1, 0}, t[4] = {0, 0, 0, 1};
     glGetFloatv(GL_CURRENT_COLOR, c);
@@ -111,8 +110,13 @@ static void snap_current(rgl_buf *b)
     glGetFloatv(GL_CURRENT_TEXTURE_COORDS, t);
     rgl_emit(b, RGL_OP_Color4f, "ffff", (double)c[0], (double)c[1], (double)c[2], (double)c[3]);
     rgl_emit(b, RGL_OP_Normal3f, "fff", (double)n[0], (double)n[1], (double)n[2]);
-    rgl_emit(b, RGL_OP_TexCoord4f, "ffff", (double)t[0], (double)t[1], (double)t[2],
-             (double)t[3]);
+    /* GL_CURRENT_TEXTURE_COORDS is the active unit's; glTexCoord unit 0's. */
+    if (active == GL_TEXTURE0)
+        rgl_emit(b, RGL_OP_TexCoord4f, "ffff", (double)t[0], (double)t[1], (double)t[2],
+                 (double)t[3]);
+    else
+        rgl_emit(b, RGL_OP_MultiTexCoord4f, "effff", (uint32_t)active, (double)t[0],
+                 (double)t[1], (double)t[2], (double)t[3]);
 }
 
 static void snap_materials(rgl_buf *b)
@@ -142,6 +146,43 @@ static void snap_enables(rgl_buf *b)
             rgl_emit(b, RGL_OP_Enable, "e", caps_off[k]);
     if (!glIsEnabled(GL_DITHER))
         rgl_emit(b, RGL_OP_Disable, "e", GL_DITHER);
+}
+
+/* User clip planes: GL keeps them in eye space, and the snapshot is
+ * replayed under an identity modelview, so the eye-space equation goes in
+ * as it is; with the enables. Only the planes GL has (querying past
+ * GL_MAX_CLIP_PLANES would raise an error). */
+static void snap_clip_planes(rgl_buf *b)
+{
+    GLint max = 0;
+    glGetIntegerv(GL_MAX_CLIP_PLANES, &max);
+    for (GLint i = 0; i < max && i < 8; i++) {
+        GLenum plane = (GLenum)(GL_CLIP_PLANE0 + i);
+        GLdouble eq[4] = {0, 0, 0, 0};
+        glGetClipPlane(plane, eq);
+        if (eq[0] != 0 || eq[1] != 0 || eq[2] != 0 || eq[3] != 0)
+            rgl_emit(b, RGL_OP_ClipPlane, "edddd", plane, eq[0], eq[1], eq[2], eq[3]);
+        if (glIsEnabled(plane))
+            rgl_emit(b, RGL_OP_Enable, "e", plane);
+    }
+}
+
+/* The stencil state, and its enable. */
+static void snap_stencil(rgl_buf *b)
+{
+    GLint v[8] = {GL_ALWAYS, 0, -1, GL_KEEP, GL_KEEP, GL_KEEP, -1, 0};
+    static const GLenum q[8] = {GL_STENCIL_FUNC, GL_STENCIL_REF, GL_STENCIL_VALUE_MASK,
+                                GL_STENCIL_FAIL, GL_STENCIL_PASS_DEPTH_FAIL,
+                                GL_STENCIL_PASS_DEPTH_PASS, GL_STENCIL_WRITEMASK,
+                                GL_STENCIL_CLEAR_VALUE};
+    for (int k = 0; k < 8; k++)
+        glGetIntegerv(q[k], &v[k]);
+    rgl_emit(b, RGL_OP_StencilFunc, "eie", (uint32_t)v[0], v[1], (uint32_t)v[2]);
+    rgl_emit(b, RGL_OP_StencilOp, "eee", (uint32_t)v[3], (uint32_t)v[4], (uint32_t)v[5]);
+    rgl_emit(b, RGL_OP_StencilMask, "e", (uint32_t)v[6]);
+    rgl_emit(b, RGL_OP_ClearStencil, "i", v[7]);
+    if (glIsEnabled(GL_STENCIL_TEST))
+        rgl_emit(b, RGL_OP_Enable, "e", GL_STENCIL_TEST);
 }
 
 /* Evaluators: the grids, and every map that is not GL's initial one (order
@@ -260,6 +301,25 @@ static void snap_texenv(rgl_buf *b)
     glGetTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, color);
     rgl_emit(b, RGL_OP_TexEnvi, "eei", GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, mode);
     rgl_emit(b, RGL_OP_TexEnvfv, "eeN", GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, color, 4);
+    if (mode == GL_COMBINE) { /* the combiner (GL 1.3), only where it is used */
+        static const GLenum ipn[] = {GL_COMBINE_RGB, GL_COMBINE_ALPHA, GL_SOURCE0_RGB,
+                                     GL_SOURCE1_RGB, GL_SOURCE2_RGB, GL_OPERAND0_RGB,
+                                     GL_OPERAND1_RGB, GL_OPERAND2_RGB, GL_SOURCE0_ALPHA,
+                                     GL_SOURCE1_ALPHA, GL_SOURCE2_ALPHA, GL_OPERAND0_ALPHA,
+                                     GL_OPERAND1_ALPHA, GL_OPERAND2_ALPHA};
+        for (size_t k = 0; k < sizeof ipn / sizeof ipn[0]; k++) {
+            GLint v = SENTINEL_I;
+            glGetTexEnviv(GL_TEXTURE_ENV, ipn[k], &v);
+            if (v != SENTINEL_I)
+                rgl_emit(b, RGL_OP_TexEnvi, "eei", GL_TEXTURE_ENV, ipn[k], v);
+        }
+        static const GLenum fpn[] = {GL_RGB_SCALE, GL_ALPHA_SCALE};
+        for (size_t k = 0; k < 2; k++) {
+            GLfloat f = 1;
+            glGetTexEnvfv(GL_TEXTURE_ENV, fpn[k], &f);
+            rgl_emit(b, RGL_OP_TexEnvf, "eef", GL_TEXTURE_ENV, fpn[k], (double)f);
+        }
+    }
     for (int c = 0; c < 4; c++) {
         GLint gm = GL_EYE_LINEAR;
         GLfloat plane[4] = {0};
@@ -270,61 +330,62 @@ static void snap_texenv(rgl_buf *b)
     }
 }
 
-static bool is_live_param(uint32_t pname)
+/* Multitexture (GL 1.3): what the calls above read is the active unit's,
+ * replayed on the unit the snapshot's first glActiveTexture names. The
+ * other units' state follows, each read with its unit made active and
+ * written after a glActiveTexture naming it, and the program's active unit
+ * is restored at the end, in GL and in the replay. Not while GL compiles
+ * a list: glActiveTexture would go into it (the other units are then
+ * left out, as before multitexture). */
+static GLint active_unit(GLint *nunits)
 {
-    for (size_t k = 0; k < sizeof tex_params_live / sizeof tex_params_live[0]; k++)
-        if (tex_params_live[k] == pname)
-            return true;
-    return false;
+    GLint active = GL_TEXTURE0, n = 1;
+    glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
+    glGetIntegerv(GL_MAX_TEXTURE_UNITS, &n);
+    if (active < GL_TEXTURE0 || active >= GL_TEXTURE0 + RGL_MAX_TEX_UNITS)
+        active = GL_TEXTURE0;
+    *nunits = n < 1 ? 1 : n > RGL_MAX_TEX_UNITS ? RGL_MAX_TEX_UNITS : n;
+    return active;
 }
 
-/* The texture objects RayGL knows of: bind, their images (resource ids),
- * their parameters; then the bindings GL has now. */
-static void snap_textures(rgl_stream *s, rgl_buf *b)
+static void snap_unit(rgl_buf *b, GLint u)
 {
-    GLint bound1 = get_i(GL_TEXTURE_BINDING_1D), bound2 = get_i(GL_TEXTURE_BINDING_2D);
-    /* While GL compiles a list, glBindTexture would go into it: read the
-     * parameters only outside one. */
-    bool may_bind = get_i(GL_LIST_INDEX) == 0;
-    for (size_t t = 0; t < s->objs.ntextures; t++) {
-        const rgl_texture *tex = &s->objs.textures[t];
-        if (tex->target != GL_TEXTURE_1D && tex->target != GL_TEXTURE_2D)
-            continue;
-        rgl_emit(b, RGL_OP_BindTexture, "ee", tex->target, tex->name);
-        if (tex->defs.size) {
-            uint8_t *p = rgl_buf_reserve(b, tex->defs.size);
-            if (p)
-                rgl_buf_commit(b, (uint8_t *)memcpy(p, tex->defs.data, tex->defs.size) +
-                                      tex->defs.size);
-        }
-        for (uint32_t k = 0; k < tex->nparams; k++) {
-            const rgl_tex_param *pr = &tex->params[k];
-            if (is_live_param(pr->pname))
-                continue;
-            if (pr->is_float)
-                rgl_emit(b, RGL_OP_TexParameterfv, "eeN", tex->target, pr->pname, pr->f,
-                         (int)pr->count);
-            else
-                rgl_emit(b, RGL_OP_TexParameteriv, "eeI", tex->target, pr->pname, pr->i,
-                         (int)pr->count);
-        }
-        /* A name deleted behind RayGL's back is not re-created by binding. */
-        if (!may_bind || (tex->name != 0 && !glIsTexture(tex->name)))
-            continue;
-        glBindTexture(tex->target, tex->name);
-        for (size_t k = 0; k < sizeof tex_params_live / sizeof tex_params_live[0]; k++) {
-            GLint v = SENTINEL_I;
-            glGetTexParameteriv(tex->target, tex_params_live[k], &v);
-            if (v != SENTINEL_I)
-                rgl_emit(b, RGL_OP_TexParameteri, "eei", tex->target, tex_params_live[k], v);
-        }
+    static const GLenum caps_unit[] = {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_GEN_S,
+                                       GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q};
+    for (size_t k = 0; k < sizeof caps_unit / sizeof caps_unit[0]; k++)
+        if (glIsEnabled(caps_unit[k]))
+            rgl_emit(b, RGL_OP_Enable, "e", caps_unit[k]);
+    snap_texenv(b);
+    for (int c = 0; c < 4; c++) { /* under the snapshot's identity modelview */
+        GLfloat v[4] = {0};
+        glGetTexGenfv(texgen_coords[c], GL_EYE_PLANE, v);
+        rgl_emit(b, RGL_OP_TexGenfv, "eeN", texgen_coords[c], GL_EYE_PLANE, v, 4);
     }
-    if (may_bind) {
-        glBindTexture(GL_TEXTURE_1D, (GLuint)bound1);
-        glBindTexture(GL_TEXTURE_2D, (GLuint)bound2);
+    rgl_emit(b, RGL_OP_BindTexture, "ee", GL_TEXTURE_1D, (uint32_t)get_i(GL_TEXTURE_BINDING_1D));
+    rgl_emit(b, RGL_OP_BindTexture, "ee", GL_TEXTURE_2D, (uint32_t)get_i(GL_TEXTURE_BINDING_2D));
+    GLfloat t[4] = {0, 0, 0, 1}; /* glTexCoord is unit 0's: the unit named */
+    glGetFloatv(GL_CURRENT_TEXTURE_COORDS, t);
+    rgl_emit(b, RGL_OP_MultiTexCoord4f, "effff", (uint32_t)(GL_TEXTURE0 + u), (double)t[0],
+             (double)t[1], (double)t[2], (double)t[3]);
+    GLfloat m[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    glGetFloatv(GL_TEXTURE_MATRIX, m);
+    rgl_emit(b, RGL_OP_MatrixMode, "e", GL_TEXTURE);
+    rgl_emit(b, RGL_OP_LoadMatrixf, "A", m, 16);
+}
+
+static void snap_other_units(rgl_buf *b, GLint active, GLint nunits)
+{
+    if (nunits < 2 || get_i(GL_LIST_INDEX) != 0)
+        return;
+    for (GLint u = 0; u < nunits; u++) {
+        if (GL_TEXTURE0 + u == active)
+            continue;
+        glActiveTexture((GLenum)(GL_TEXTURE0 + u));
+        rgl_emit(b, RGL_OP_ActiveTexture, "e", (uint32_t)(GL_TEXTURE0 + u));
+        snap_unit(b, u);
     }
-    rgl_emit(b, RGL_OP_BindTexture, "ee", GL_TEXTURE_1D, (uint32_t)bound1);
-    rgl_emit(b, RGL_OP_BindTexture, "ee", GL_TEXTURE_2D, (uint32_t)bound2);
+    glActiveTexture((GLenum)active);
+    rgl_emit(b, RGL_OP_ActiveTexture, "e", (uint32_t)active);
 }
 
 static void snap_lists(rgl_stream *s, rgl_buf *b)
@@ -370,19 +431,27 @@ bool rgl_snapshot_take(rgl_stream *s, rgl_buf *out)
     if (!matrix_mode(&mode))
         return false;
     out->size = 0;
+    GLint nunits;
+    GLint active = active_unit(&nunits);
     rgl_emit(out, RGL_OP_MatrixMode, "e", GL_MODELVIEW);
     rgl_emit(out, RGL_OP_LoadIdentity, "");
+    if (active != GL_TEXTURE0) /* the unit the state read below belongs to */
+        rgl_emit(out, RGL_OP_ActiveTexture, "e", (uint32_t)active);
     snap_lights_eye(out);
+    snap_clip_planes(out);
+    snap_stencil(out);
     snap_lights(out);
-    snap_current(out);
+    snap_current(out, active);
     snap_materials(out);
     snap_enables(out);
     snap_eval(out);
     snap_raster(out);
     snap_texenv(out);
     rgl_emit(out, RGL_OP_ListBase, "e", (uint32_t)get_i(GL_LIST_BASE));
-    snap_textures(s, out);
+    rgl_snap_textures(s, out);
+    rgl_quadrics_snapshot(out);
     snap_lists(s, out);
+    snap_other_units(out, active, nunits);
     snap_matrices(out, mode);
     return true;
 }

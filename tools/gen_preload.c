@@ -110,7 +110,7 @@ static int header(void)
  * libGL directly, which tests/record's `forward-symbols` test rejects. */
 static const char *const forward_extra[] = {
     "glGetBooleanv", "glGetBufferParameteriv", "glGetBufferSubData", "glGetDoublev", "glGetError", "glGetFloatv",
-    "glGetIntegerv", "glGetLightfv", "glGetMapdv", "glGetMapiv", "glGetMaterialfv",
+    "glGetIntegerv", "glGetLightfv", "glGetMapdv", "glGetMapiv", "glGetMaterialfv", "glGetClipPlane",
     "glGetPointerv", "glGetString",
     "glGetTexEnvfv", "glGetTexEnviv", "glGetTexGenfv", "glGetTexGeniv", "glGetTexImage",
     "glGetTexLevelParameteriv", "glGetTexParameterfv", "glGetTexParameteriv", "glIsBuffer",

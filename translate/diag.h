@@ -37,17 +37,18 @@
     X(NOTE_BLEND, "approximated: blending with colour or destination-alpha factors, or of lit or textured surfaces, other than GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA is drawn as that one") \
     X(NOTE_BLEND_ADD, "approximated: additive blending (all of the colour behind kept) keeps 127/128 of it") \
     X(NOTE_BLEND_EQUATION, "approximated: blend equations other than GL_FUNC_ADD (glBlendEquation) are drawn as GL_FUNC_ADD") \
-    X(NOTE_ALPHA_TEST, "not translated yet: alpha test") \
-    X(NOTE_TEXTURE, "approximated: texture environment GL_BLEND, GL_ADD or GL_COMBINE drawn as GL_MODULATE; cube-map textures not translated") \
-    X(NOTE_TEX_SAMPLING, "approximated: textures are sampled with their magnification filter from level 0 (no mipmaps, no minification filter, mirrored repeat as repeat)") \
+    X(NOTE_ALPHA_TEST, "approximated: alpha test of lines and points (drawn whole), of faces whose vertex alphas lie on both sides of the reference (drawn whole), of a texture with vertex alphas that vary (the first vertex's alpha) or with GL_EQUAL or GL_NOTEQUAL and GL_LINEAR filtering (the texels tested one by one)") \
+    X(NOTE_TEXTURE, "approximated: texture environment GL_COMBINE drawn as GL_MODULATE (a cube map's GL_DECAL, GL_BLEND and GL_ADD too), GL_BLEND and GL_ADD drawn opaque") \
+    X(NOTE_TEX_SAMPLING, "approximated: a texture whose minification filter (without mipmaps) differs from its magnification filter is sampled with the magnification filter") \
+    X(NOTE_TEX_MIPMAP, "approximated: mipmapped textures take GL's level of detail per pixel on flat runs of faces only: one level per group of faces on curved meshes, the base level in display-list copies and with two texture units, level 0 of cube maps and 3D textures") \
     X(NOTE_LISTS, "not translated yet: display lists (calls skipped)") \
     X(NOTE_ARRAYS, "not translated yet: vertex arrays (draws skipped)") \
     X(NOTE_QUADRICS, "not translated yet: GLU quadrics (skipped)") \
-    X(NOTE_STIPPLE, "not translated: line and polygon stipple (drawn solid)") \
+    X(NOTE_STIPPLE, "not translated: polygon stipple (drawn solid)") \
     X(NOTE_SCISSOR, "not translated: scissor test of geometry (drawn whole)") \
     X(NOTE_SCISSOR_CLEAR, "approximated: a scissored clear does not erase what was drawn before it inside its box") \
     X(NOTE_CLIP_PLANE, "not translated: user clip planes") \
-    X(NOTE_STENCIL, "not translated: stencil test") \
+    X(NOTE_STENCIL, "approximated: stencil buffer contents the scene does not follow (values other than one written over the cleared buffer by filled triangles; glStencilOp fail and zfail operations): drawn as if the test passed") \
     X(NOTE_COLOR_MASK, "not translated: colour mask and logic op") \
     X(NOTE_DEPTH, "approximated: depth test off or not GL_LESS (draws in one plane show in draw order, others nearest first; where parts of one strip or fan overlap in one plane, either may show)") \
     X(NOTE_PROJECTION, "approximated: lit, fogged or depth-tested textured geometry drawn with another projection or viewport than the frame's camera is lit, fogged and textured as seen from that camera") \
@@ -58,14 +59,16 @@
     X(NOTE_RENDER_MODE, "left out, as GL draws no pixel of it: geometry drawn in GL_SELECT or GL_FEEDBACK render mode") \
     X(NOTE_EVAL_INDEX, "not translated: colour-index evaluator maps (GL_MAP1_INDEX, GL_MAP2_INDEX)") \
     X(NOTE_PIXELS_DEPTH, "approximated: bitmaps and pixel rectangles show in front of the whole scene (drawn with the depth test on, or before later geometry)") \
-    X(NOTE_RASTER_LIT, "approximated: the raster colour is the current colour unlit (glRasterPos with lighting on)") \
     X(NOTE_PIXELS_OTHER, "not translated: colour-index, depth and stencil pixels, pixel maps and index shifts (glDrawPixels, glCopyPixels)") \
     X(NOTE_ACCUM_PASSES, "approximated: accumulation-buffer passes that differ other than by a sub-pixel jitter of the projection or an eye moved around a focal point (motion blur) are drawn as their first pass alone") \
-    X(NOTE_FOG_COORD, "not translated yet: fog coordinates (GL_FOG_COORD_SRC GL_FOG_COORD): fogged by the eye distance") \
-    X(NOTE_COLOR_SUM, "not translated yet: the secondary colour of unlit surfaces (GL_COLOR_SUM): not added") \
+    X(NOTE_FOG_COORD, "not translated yet: fog coordinates (GL_FOG_COORD_SRC GL_FOG_COORD) varying over a lit or textured surface: fogged by the eye distance") \
+    X(NOTE_FOG_COORD_VERTEX, "approximated: fog coordinates under GL_EXP or GL_EXP2 fog, flat shading, or outside GL_FOG_START..GL_FOG_END: the fog factor is taken at the vertices (per face when flat) where GL interpolates the coordinate; exact where a primitive's fog coordinates are equal") \
+    X(NOTE_FOG_LINES, "approximated: fog on lines: the fog factor is taken at the line's ends (exact for GL_LINEAR within GL_FOG_START..GL_FOG_END and unmapped blending)") \
+    X(NOTE_COLOR_SUM, "not translated yet: the secondary colour of unlit textured surfaces (GL_COLOR_SUM): not added") \
     X(NOTE_SINGLE_COLOR, "approximated: lit textured surfaces with GL_SINGLE_COLOR get the highlight after the texture (as GL_SEPARATE_SPECULAR_COLOR), where GL modulates it by the texture") \
     X(NOTE_ACCUM_WEIGHTS, "approximated: accumulation weights that do not add up to one, GL_MULT or GL_ADD, are drawn as an average of the passes") \
     X(NOTE_MULTITEX, "approximated: texture units past the second enabled one not drawn; a unit after the first combined with one fragment colour (unlit, the first vertex's) unless both units use GL_MODULATE or the first replaces the colour; two units blended are drawn opaque") \
+    X(NOTE_TEX_MODULATE_CM, "approximated: a lit GL_MODULATE texture whose diffuse colour comes from GL_COLOR_MATERIAL and varies over a mesh, blended, mipmapped, two-sided or on two units, is multiplied by the mean of that colour's channels") \
     X(NOTE_NURBS_TRIM, "approximated: GLU NURBS trim edges not along the u or v axis cut along the sampling grid") \
     X(NOTE_NURBS_OUTLINE, "approximated: GLU_OUTLINE_POLYGON of trimmed NURBS: the translator's grid, not GLU's triangles") \
     X(NOTE_NURBS_SAMPLING, "approximated: GLU NURBS sampled at 16+ steps a knot span, finer than GLU may sample them") \
@@ -75,10 +78,14 @@
     X(NOTE_SHADOW_HIGHLIGHT, "approximated with shadows: highlights of lights whose specular is not one multiple of their diffuse colour") \
     X(NOTE_POINT_FADE, "not translated: the point fade threshold (GL_POINT_FADE_THRESHOLD_SIZE; GL fades points only when multisampling)") \
     X(NOTE_TEX_MIRROR_CLAMP, "approximated: mirror-clamp texture wraps (GL_MIRROR_CLAMP_EXT and its kin) drawn as the image mirrored once, then clamped to its edge texels") \
-    X(NOTE_TEX_LOD_BIAS, "not translated: texture level-of-detail bias (GL_TEXTURE_LOD_BIAS; textures are drawn from level 0)") \
+    X(NOTE_TEX_LOD_BIAS, "not translated: texture level-of-detail bias (GL_TEXTURE_LOD_BIAS; mipmap levels are chosen without it)") \
     X(NOTE_POINT_SPRITE, "not translated: point sprites (GL_POINT_SPRITE, GL_COORD_REPLACE): points drawn untextured") \
     X(NOTE_TEX_3D, "approximated: 3D textures drawn as the slice (GL_NEAREST) or the blend of two slices (GL_LINEAR) that r picks where r is constant over a primitive; untextured where it varies") \
-    X(NOTE_FRONT_BUFFER, "approximated: a single-buffered frame shows the drawing of at most 64 earlier frames since the last colour clear (the front buffer holds all of it)")
+    X(NOTE_FRONT_BUFFER, "approximated: a single-buffered frame shows the drawing of at most 64 earlier frames since the last colour clear (the front buffer holds all of it)") \
+    X(NOTE_POLYGON_OFFSET, "approximated: glPolygonOffset moves an offset polygon one pixel's width along the camera's rays (away from the eye for a positive offset), not by GL's window-depth offset; offset GLU and GLUT shapes are drawn as GL's facets") \
+    X(NOTE_DEPTH_ONLY, "approximated: draws with every colour channel masked (glColorMask) are left out, but they wrote depth, which hides in GL what is drawn behind them later") \
+    X(NOTE_FOG_BEHIND, "approximated: fogged primitives reaching behind the eye, which OpenGL fogs by |eye z| interpolated across the near-plane cut (denser near the eye than their distance)") \
+    X(NOTE_RELIT_SPECULAR, "approximated: textured faces under GL_SEPARATE_SPECULAR_COLOR with a highlight, lit past white or showing their back under one-sided lighting, lit per pixel (unclamped, normals toward the viewer)")
 
 typedef enum diag_kind {
 #define DIAG_ENUM_(name, text) DIAG_##name,

@@ -34,7 +34,7 @@ static bool allowed_in_begin(const char *handler)
         "material",     "calllist",  "calllists", "arrayelement",   "resolvedmatrix",
         "arraydata",    "framebegin", "frameend", "swapbuffers",
         "snapshot",     "notrecorded", "evalcoord1", "evalcoord2", "evalpoint1", "evalpoint2",
-        "multitexcoord",
+        "multitexcoord", "fogcoord", "secondarycolor",
     };
     for (size_t i = 0; i < sizeof ok / sizeof ok[0]; i++)
         if (strcmp(handler, ok[i]) == 0)
@@ -163,6 +163,11 @@ void interp_default_state(gl_state *st)
     a->color_buffer.alpha_func = GL_ALWAYS;
     for (int i = 0; i < 4; i++)
         a->color_buffer.mask[i] = true;
+    a->stencil.func = GL_ALWAYS;
+    a->stencil.fail = a->stencil.zfail = a->stencil.zpass = GL_KEEP;
+    a->stencil.value_mask = a->stencil.write_mask = 0xffffffffu;
+    a->line.stipple_factor = 1;
+    a->line.stipple_pattern = 0xffff;
     a->depth.func = GL_LESS;
     a->depth.mask = true;
     a->depth.clear = 1;
@@ -175,6 +180,7 @@ void interp_default_state(gl_state *st)
     a->hint.perspective = a->hint.point = a->hint.line = a->hint.polygon = a->hint.fog =
         GL_DONT_CARE;
     a->texture.env_mode = GL_MODULATE;
+    interp_combine_defaults(&a->texture);
     for (int i = 0; i < 4; i++) {
         a->texture.gen_mode[i] = GL_EYE_LINEAR;
         for (int k = 0; k < 4; k++)
@@ -217,6 +223,8 @@ void interp_destroy(interp *ip)
     unrec_finish(&ip->unrecorded);
     tr_free(ip->begin_ok);
     tr_free(ip->edge);
+    tr_free(ip->relit_col);
+    tr_free(ip->fogz);
     tr_free(ip->vmat.mats);
     tr_free(ip->clipv);
     interp_textures_free(ip);
@@ -525,7 +533,8 @@ static void set_cap(interp *ip, const rgl_cmd *cmd, bool on)
      * as that, and the draws' @ArrayData carry what they enable. */
     if (i < 0 && (cap == GL_VERTEX_ARRAY || cap == GL_NORMAL_ARRAY || cap == GL_COLOR_ARRAY ||
                   cap == GL_INDEX_ARRAY || cap == GL_TEXTURE_COORD_ARRAY ||
-                  cap == GL_EDGE_FLAG_ARRAY))
+                  cap == GL_EDGE_FLAG_ARRAY || cap == GL_FOG_COORD_ARRAY ||
+                  cap == GL_SECONDARY_COLOR_ARRAY))
         return;
     if (i < 0) {
         interp_bad_enum(ip, "capability", cap);

@@ -121,6 +121,10 @@ typedef struct gl_attribs {
         double raster_pos[4];
         float raster_color[4];
         bool raster_valid;
+        /* glRasterPos under the camera's projection and viewport: its
+         * normalised device z places depth-tested pixels (interp_pixdepth.c). */
+        bool raster_in_camera;
+        double raster_ndc_z;
     } current; /* GL_CURRENT_BIT */
     uint8_t caps[INTERP_CAP_COUNT]; /* GL_ENABLE_BIT (and each cap's group) */
     struct {
@@ -140,7 +144,14 @@ typedef struct gl_attribs {
     } polygon; /* GL_POLYGON_BIT */
     struct {
         float width;
+        int32_t stipple_factor;    /* glLineStipple, clamped to [1, 256] */
+        uint16_t stipple_pattern; /* bit 0 first */
     } line; /* GL_LINE_BIT */
+    struct {
+        GLenum func, fail, zfail, zpass;
+        int32_t ref, clear;
+        uint32_t value_mask, write_mask;
+    } stencil; /* GL_STENCIL_BUFFER_BIT */
     struct {
         float size;
         /* glPointParameter (GL 1.4 3.3): the derived size's clamp, the
@@ -153,6 +164,7 @@ typedef struct gl_attribs {
     } viewport; /* GL_VIEWPORT_BIT */
     struct {
         GLenum matrix_mode;
+        double clip_plane[8][4]; /* eye space, at the glClipPlane call */
     } transform; /* GL_TRANSFORM_BIT */
     struct {
         float clear[4];
@@ -177,9 +189,14 @@ typedef struct gl_attribs {
     struct gl_texture_unit {
         GLenum env_mode;
         float env_color[4];
+        /* GL_COMBINE (interp_combine.c): RGB and alpha functions, the RGB
+         * arguments' sources and operands, the scales. */
+        GLenum combine_rgb, combine_alpha, combine_src[3], combine_op[3];
+        float rgb_scale, alpha_scale;
         uint32_t binding_1d, binding_2d;
         uint32_t binding_rect;    /* GL_TEXTURE_RECTANGLE(_ARB, _NV) */
         uint32_t binding_3d;
+        uint32_t binding_cube;    /* GL_TEXTURE_CUBE_MAP */
         GLenum gen_mode[4];       /* s, t, r, q: GL_EYE_LINEAR, ... */
         double obj_plane[4][4];   /* GL_OBJECT_PLANE */
         double eye_plane[4][4];   /* GL_EYE_PLANE, times the inverse modelview

@@ -21,7 +21,12 @@
 
 #include <string.h>
 
-enum { ARR_VERTEX, ARR_NORMAL, ARR_COLOR, ARR_TEXCOORD, ARR_EDGEFLAG, ARR_COUNT };
+enum {
+    ARR_VERTEX, ARR_NORMAL, ARR_COLOR, ARR_TEXCOORD, ARR_EDGEFLAG, ARR_FOGCOORD, ARR_SECONDARY,
+    ARR_COUNT
+};
+_Static_assert(ARR_COUNT == sizeof ((interp *)0)->arrays / sizeof ((interp *)0)->arrays[0],
+               "interp.arrays out of step");
 
 static int array_slot(GLenum array)
 {
@@ -31,6 +36,8 @@ static int array_slot(GLenum array)
     case GL_COLOR_ARRAY: return ARR_COLOR;
     case GL_TEXTURE_COORD_ARRAY: return ARR_TEXCOORD;
     case GL_EDGE_FLAG_ARRAY: return ARR_EDGEFLAG;
+    case GL_FOG_COORD_ARRAY: return ARR_FOGCOORD;
+    case GL_SECONDARY_COLOR_ARRAY: return ARR_SECONDARY;
     default: return -1;
     }
 }
@@ -183,6 +190,17 @@ static void array_element(interp *ip, uint32_t index)
                 k < arr[ARR_COLOR].size ? (float)normalised(t, component(p, t, k)) : 1.0f;
         if (a->caps[INTERP_CAP_COLOR_MATERIAL])
             interp_color_material_update(ip);
+    }
+    /* GL 2.1 2.8: fog coordinates as they are, secondary colours
+     * normalised as glSecondaryColor's (interp_fogsec.c draws them). */
+    if ((p = element(&arr[ARR_FOGCOORD], index))) {
+        double v = component(p, arr[ARR_FOGCOORD].type, 0);
+        a->current.fog_coord = isfinite(v) ? (float)v : 0.0f;
+    }
+    if ((p = element(&arr[ARR_SECONDARY], index))) {
+        GLenum t = arr[ARR_SECONDARY].type;
+        for (int k = 0; k < 3 && k < arr[ARR_SECONDARY].size; k++)
+            a->current.secondary[k] = (float)normalised(t, component(p, t, k));
     }
     if ((p = element(&arr[ARR_NORMAL], index))) {
         GLenum t = arr[ARR_NORMAL].type;
@@ -342,6 +360,8 @@ void interp_normalpointer(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd;
 void interp_colorpointer(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
 void interp_texcoordpointer(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
 void interp_edgeflagpointer(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
+void interp_fogcoordpointer(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
+void interp_secondarycolorpointer(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
 void interp_interleavedarrays(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
 void interp_enableclientstate(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
 void interp_disableclientstate(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }

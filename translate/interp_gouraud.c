@@ -21,6 +21,8 @@ void interp_set_vertex_lighting(interp *ip, bool on) { ip->vertex_lighting = on;
 bool interp_vertex_lit(const interp *ip)
 {
     const gl_attribs *a = &ip->st.a;
+    if (ip->prim_relit) /* the GL-lit faces of interp_relit.c */
+        return true;
     return ip->vertex_lighting && a->caps[INTERP_CAP_LIGHTING] && !a->lighting.two_side;
 }
 

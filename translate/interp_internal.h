@@ -45,6 +45,15 @@ typedef struct interp_proj_vote_t {
 struct interp {
     gl_state st;
     interp_quadric quadrics[INTERP_QUADRICS]; /* context state, like st */
+    struct {
+        size_t first;   /* scene.stencil_tris of the buffer's content */
+        int32_t value;  /* written there */
+        int32_t cleared; /* the clear value there */
+        bool written, mixed; /* something / values the scene cannot hold */
+        bool write, only; /* this draw writes the stencil; and no colour */
+        uint8_t clip;     /* this draw kept 1 inside, 2 outside the region */
+        size_t n;         /* the region's triangles at this draw */
+    } stencil; /* interp_stencil.c */
     interp_textures *tex; /* texture objects and unpack state; NULL: none yet */
     struct interp_eval *eval; /* evaluator maps; NULL: all at their initial values */
     struct interp_nurbs *nurbs; /* GLU NURBS objects and the open shape; NULL: none yet */
@@ -63,6 +72,8 @@ struct interp {
     uint64_t pixels_mark; /* the scene's items after the frame's last pixel draw
                              (interp_pixels.c) */
     int32_t pixels_org[2]; /* window position of scene.overlay's pixel (0, 0) */
+    int pixels_depth_state; /* how the overlay's pixels were depth-tested (interp_pixdepth.c) */
+    double pixels_ndc_z;    /* their raster position's device z, when all share one */
     uint64_t shape_facets; /* facets of tessellated shapes and evaluator mesh points in this
                               frame (interp_shape.c, interp_eval.c) */
 
@@ -98,11 +109,24 @@ struct interp {
     int draw_unit[2];   /* the draw's first two enabled texture units, or -1 */
     bool prim_tex_from1; /* the look's texture is draw_unit[1]'s (tex1 coordinates) */
     bool prim_blend_mapped; /* its vertex colours carry another blend function as transmit */
+    bool prim_color_sum;  /* the secondary colour goes into the vertex colours (interp_fogsec.c) */
+    bool prim_fog_vertex; /* the fog of the fog coordinate goes into them, no fog layer */
+    bool prim_coord_same; /* every vertex so far had the fog coordinate prim_coord0 */
+    float prim_coord0;
     mat4 prim_clip;     /* object -> clip space of the primitive's own projection */
     uint8_t *edge;      /* edge flag of each vertex of the primitive */
     size_t cap_edge;
     double (*clipv)[3]; /* clip-space x, y, w of each vertex (culling) */
     size_t cap_clipv;
+    float prim_alpha;        /* the first vertex's alpha (interp_alpha_vertex) */
+    bool prim_alpha_varies;  /* another vertex's differs */
+    float (*relit_col)[4]; /* GL's lit colour of each vertex (interp_relit.c) */
+    size_t cap_relit;
+    bool relit_over;       /* some vertex was lit past 1 in a channel */
+    bool prim_relit;       /* the look being made is of GL-lit faces */
+    double *fogz;          /* GL's eye z of each vertex, when fogged (interp_fogbehind.c) */
+    size_t cap_fogz;
+    bool fog_split;        /* the primitive's triangles behind the eye get their own fog */
 
     /* The frame's camera: fixed by the first draw (or at the frame's end). */
     bool camera_fixed;
@@ -146,7 +170,7 @@ struct interp {
         uint32_t type;
         const uint8_t *data;
         size_t bytes;
-    } arrays[5];
+    } arrays[7]; /* interp_array.c's ARR_* */
     /* Texture coordinates of units 1.. (units[0] unused: arrays[3] is
      * unit 0's): an @ArrayData of GL_TEXTURE_COORD_ARRAY fills the client
      * active unit's. */
@@ -425,6 +449,43 @@ void interp_textures_free(interp *ip);
  * the clear only ends a pass (the scene keeps the first pass). */
 void interp_accum_begin_frame(interp *ip);
 void interp_accum_draw(interp *ip);
+
+/* interp_fogsec.c. interp_fogsec_begin: at a draw's start (after the
+ * texture units are known), whether its vertex colours take the colour sum
+ * and the fog of the fog coordinate, with a note where they cannot.
+ * interp_fogsec_vertex: applies them to one vertex colour (RGB, in place). */
+void interp_fogsec_begin(interp *ip, GLenum mode);
+
+/* interp_combine.c. _defaults: GL's initial combiner state. _texenv: a
+ * glTexEnv of a combiner pname on the active unit (false: not one).
+ * _mode: the fixed mode a unit's combiner setting equals (unit: its
+ * index; first: the draw's first unit), or 0 when none does. */
+void interp_combine_defaults(struct gl_texture_unit *t);
+bool interp_combine_texenv(interp *ip, GLenum pname, double v);
+GLenum interp_combine_mode(const struct gl_texture_unit *t, int unit, bool first);
+
+/* interp_pixdepth.c. _raster: at glRasterPos, with its clip coordinates.
+ * _draw: at each pixel draw, before the overlay is made. _end_frame:
+ * places the overlay at the pixels' depth when they all share one
+ * depth-tested plane (scene.overlay_at_depth); whether the overlay is then
+ * where GL puts it (drawn_after: geometry was drawn after the last pixels). */
+void interp_pixdepth_raster(interp *ip, const double clip[4]);
+void interp_pixdepth_draw(interp *ip);
+bool interp_pixdepth_end_frame(interp *ip, bool drawn_after);
+
+/* GL's lit colour of a vertex at object point (x, y, z) with the current
+ * normal, colour and material, as lit lines and points take it
+ * (interp_prim.c); the raster position takes it too (GL 2.1 2.13). */
+void interp_lit_point_colour(interp *ip, double x, double y, double z, float out[4]);
+void interp_fogsec_vertex(interp *ip, float color[4]);
+/* interp_fogsec_track: at each vertex, whether the draw keeps one fog
+ * coordinate. interp_fogsec_look: a lit or textured draw fogged by fog
+ * coordinates gets their one factor (look.fog_fixed), or a note. */
+void interp_fogsec_track(interp *ip);
+void interp_fogsec_look(interp *ip, scene_look *look);
+/* The fog of eye-plane distance |z_eye| on a line end's or point's colour,
+ * when fog is on and comes from the depth (interp_fogsec.c). */
+void interp_fogsec_eye(interp *ip, double z_eye, float color[4]);
 bool interp_accum_clear(interp *ip);
 
 /* Evaluator state (interp_eval.c): copied with the context state (-1 on
@@ -483,6 +544,11 @@ void interp_multitex_unbind(interp *ip, uint32_t name);
  * division by q (interp_texture.c). */
 void interp_vertex_texcoord(interp *ip, int unit, const double obj[4], const float nrm[3],
                             float out[2]);
+/* The same with r (s, t, r: a cube map's direction), and whether a unit
+ * draws a cube map (GL_TEXTURE_CUBE_MAP enabled). */
+void interp_vertex_texcoord3(interp *ip, int unit, const double obj[4], const float nrm[3],
+                             float out[3]);
+bool interp_unit_cube(interp *ip, int unit);
 /* The object -> eye transform a draw with modelview mv, projection proj and
  * viewport vp gets (remapped into the frame's camera as a draw does, but
  * without the painter's shift). False when no such transform exists. */
@@ -504,6 +570,50 @@ double interp_painter_reach(const interp *ip);
 bool interp_render_mode_draws(interp *ip);
 uint32_t interp_names_for_draw(interp *ip);
 
+/* User clip planes (interp_clip.c). interp_clip_look: the id of the
+ * enabled planes' set in the scene (scene_clip_index), 0 for none.
+ * interp_clip_segment: clips eye-space segment p0-p1 by the enabled planes,
+ * moving the ends and setting *t0, *t1 to their places along the original
+ * (0 and 1 when whole); false when nothing is left. interp_clip_point:
+ * whether an eye-space point is kept. */
+uint32_t interp_clip_look(interp *ip);
+bool interp_clip_segment(const interp *ip, double p0[3], double p1[3], double *t0, double *t1);
+bool interp_clip_point(const interp *ip, const double p[3]);
+
+/* The stencil test (interp_stencil.c). interp_stencil_draw: at a draw's
+ * start, sets ip->stencil.write/clip and returns false when the test
+ * hides the whole draw; interp_stencil_writes: draws now write the
+ * stencil buffer; interp_stencil_look: the region a drawn look is kept
+ * to; interp_stencil_tri: a triangle (eye space) a writing draw covers;
+ * interp_stencil_clear: glClear of the stencil buffer. */
+bool interp_stencil_draw(interp *ip);
+bool interp_stencil_writes(const interp *ip);
+void interp_stencil_look(interp *ip, scene_look *look);
+void interp_stencil_tri(interp *ip, double p[3][3]);
+void interp_stencil_clear(interp *ip);
+
+/* The colour and depth masks (interp_masks.c): true when a draw changes
+ * no colour (every colour channel masked) and is left out, with a note
+ * when it writes depth; notes a partial colour mask. */
+bool interp_masks_hide(interp *ip);
+
+/* Line stipple (interp_stipple.c). interp_stipple_on: lines drawn now are
+ * stippled. interp_stipple_dashes: the dashes of eye-space segment p0-p1
+ * (w0-w1 in the window, scene_camera_project's), as [from, to] fractions of the
+ * segment in eye space (at most max), GL's counter starting at *counter
+ * and advanced past the segment. */
+bool interp_stipple_on(const interp *ip);
+size_t interp_stipple_dashes(const interp *ip, const scene_camera *cam, const double p0[3],
+                             const double p1[3], const double w0[2], const double w1[2],
+                             uint64_t *counter, double (*dash)[2], size_t max);
+
+/* glPolygonOffset (interp_offset.c). interp_offset_active: polygons drawn
+ * now are offset (their shapes are drawn as GL's facets);
+ * interp_offset_apply: moves a polygon draw's to_eye along the camera's
+ * rays by its offset (a note when it does). */
+bool interp_offset_active(const interp *ip);
+void interp_offset_apply(interp *ip, mat4 *to_eye);
+
 /* The scissor test (interp_scissor.c). interp_scissor_cuts: it is on and
  * its box leaves out part of viewport vp. interp_scissor_clear: a glClear
  * of the colour buffer with the scissor test on; false when the box holds
@@ -515,6 +625,17 @@ bool interp_scissor_cuts(const interp *ip, const int32_t vp[4]);
  * (a draw then draws nothing); and look's scissor fields for a draw now. */
 bool interp_scissor_hides(const interp *ip);
 void interp_scissor_look(const interp *ip, scene_look *look);
+
+/* The alpha test (interp_alphatest.c). interp_alpha_vertex: vertex k of
+ * the primitive, of alpha a as GL computed it (before blending forces
+ * it): INTERP_ALPHA_FAIL when it fails the test, else 0; kept with the
+ * vertex's edge flag (ip->edge, bit 0). interp_alpha_face: false when GL
+ * discards all of polygon idx (relative to prim_first; every vertex fails
+ * and the texture's alpha, scene texture `texture` or -1, does not
+ * count); notes the cases drawn approximately. */
+#define INTERP_ALPHA_FAIL 2
+uint8_t interp_alpha_vertex(interp *ip, size_t k, float a);
+bool interp_alpha_face(interp *ip, const uint32_t *idx, int n, int32_t texture);
 bool interp_scissor_clear(interp *ip);
 void interp_scissor_end_frame(interp *ip);
 
@@ -588,6 +709,37 @@ void interp_lightset_textured(interp *ip, const scene_look *look);
 
 void interp_lit_color(const interp *ip, const double p[3], const double n[3], bool back,
                       const float colour[4], float out[4]);
+/* The same, with the largest channel before GL clamps it in *peak. */
+void interp_lit_color_peak(const interp *ip, const double p[3], const double n[3], bool back,
+                           const float colour[4], float out[4], double *peak);
+
+/* GL's own lighting for the faces POV-Ray would light otherwise
+ * (interp_relit.c): back faces under one-sided lighting, and textured
+ * GL_MODULATE surfaces lit past white (GL clamps before the texture).
+ * _wanted: the open filled primitive's vertices need GL's lit colour;
+ * _store: vertex k's (post-processed) lit colour and its unclamped peak;
+ * _split: at glEnd, which faces go to a GL-lit mesh (0: none,
+ * INTERP_RELIT_BACK: back faces, INTERP_RELIT_ALL: all); _vertices: the
+ * primitive's n vertices copied with their GL colours, returning the
+ * copies' first index (or -1 on failure); _done: forget the primitive. */
+/* Fog of primitives reaching behind the eye (interp_fogbehind.c). _check:
+ * at glEnd of n pool vertices (before they move to eye space), notes a
+ * fogged line or unfilled polygon with vertices both behind and in front
+ * of the eye, or sets fog_split for a filled one; _mesh: the mesh for the
+ * triangle rel (relative to base), with its own fog plane when a corner is
+ * behind the eye. */
+void interp_fog_behind_check(interp *ip, uint32_t n);
+scene_mesh *interp_fog_behind_mesh(interp *ip, const scene_look *look, const mat4 *to_eye,
+                                   bool in_eye, uint32_t base, const uint32_t rel[3]);
+
+#define INTERP_RELIT_BACK 1
+#define INTERP_RELIT_ALL 2
+#define INTERP_RELIT_PROBE 3 /* back faces noted (NOTE_RELIT_SPECULAR), drawn as they are */
+bool interp_relit_wanted(const interp *ip);
+void interp_relit_store(interp *ip, size_t k, const float colour[4], double peak);
+int interp_relit_split(interp *ip, const scene_look *look);
+long interp_relit_vertices(interp *ip, uint32_t n);
+void interp_relit_done(interp *ip);
 
 /* The colour a surface vertex carries into the scene (scene_vertex.color):
  * glColor unlit; lit, what GL_COLOR_MATERIAL takes from glColor (or the

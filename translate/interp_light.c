@@ -391,6 +391,12 @@ void interp_fix_fog(interp *ip)
 void interp_lit_color(const interp *ip, const double p[3], const double n[3], bool back,
                       const float colour[4], float out[4])
 {
+    interp_lit_color_peak(ip, p, n, back, colour, out, NULL);
+}
+
+void interp_lit_color_peak(const interp *ip, const double p[3], const double n[3], bool back,
+                           const float colour[4], float out[4], double *peak)
+{
     const gl_attribs *a = &ip->st.a;
     int f = back && a->lighting.two_side ? 1 : 0;
     gl_material m = a->lighting.material[f];
@@ -406,7 +412,7 @@ void interp_lit_color(const interp *ip, const double p[3], const double n[3], bo
     if (f == 1)
         for (int k = 0; k < 3; k++)
             nn[k] = -nn[k];
-    double c[3];
+    double c[3], spec[3] = {0, 0, 0};
     for (int k = 0; k < 3; k++)
         c[k] = m.emission[k] + m.ambient[k] * a->lighting.model_ambient[k];
     for (int i = 0; i < INTERP_MAX_LIGHTS; i++) {
@@ -451,12 +457,21 @@ void interp_lit_color(const interp *ip, const double p[3], const double n[3], bo
             double nh = hl > 0 ? (nn[0] * h[0] + nn[1] * h[1] + nn[2] * h[2]) / hl : 0;
             sp = nh > 0 ? pow(nh, m.shininess) : (m.shininess == 0 ? 1 : 0);
         }
-        for (int k = 0; k < 3; k++)
+        for (int k = 0; k < 3; k++) {
             c[k] += att * spot *
                     (m.ambient[k] * l->ambient[k] + fmax(nl, 0) * m.diffuse[k] * l->diffuse[k] +
                      sp * m.specular[k] * l->specular[k]);
+            spec[k] += att * spot * sp * m.specular[k] * l->specular[k];
+        }
     }
     for (int k = 0; k < 3; k++)
         out[k] = clamp01((float)c[k]);
     out[3] = clamp01(m.diffuse[3]);
+    if (peak) { /* the colour GL clamps before texturing: the primary one alone */
+        bool sep = a->lighting.color_control != GL_SINGLE_COLOR;
+        double q[3];
+        for (int k = 0; k < 3; k++)
+            q[k] = sep ? c[k] - spec[k] : c[k];
+        *peak = fmax(q[0], fmax(q[1], q[2]));
+    }
 }

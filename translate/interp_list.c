@@ -21,8 +21,8 @@
  * culling, which triangles face the camera) keys the prototype by itself: a
  * call whose inherited state changes what it draws gets its own prototype,
  * and one whose output cannot be shared (a list that loads an absolute
- * matrix, draws without a depth test, or is drawn in eye space) stays
- * inline. Lines and points, which are built in eye space, always stay
+ * matrix, draws without a depth test, is fogged or scissored, or is drawn
+ * in eye space) stays inline. Lines and points, which are built in eye space, always stay
  * inline.
  */
 #include "interp_internal.h"
@@ -298,10 +298,14 @@ static void share_output(interp *ip, uint32_t body, const call_mark *mk)
         if (t->provoking < mk->v0 || t->provoking >= s->nverts)
             return;
     }
-    /* A scissor box lies in the picture, not in the list's space. */
-    for (size_t k = 0; k < nm; k++)
-        if (s->meshes[mk->m0 + k].look.scissored)
+    /* A scissor box lies in the picture, not in the list's space; so do
+     * user clip planes and the stencil region, in eye space, and fog, a
+     * function of the eye distance that differs per call. */
+    for (size_t k = 0; k < nm; k++) {
+        const scene_look *lk = &s->meshes[mk->m0 + k].look;
+        if (lk->scissored || lk->clip || lk->stencil_n || lk->fog)
             return;
+    }
     mat4 call, inv;
     if (!interp_object_to_eye(ip, &mk->mv, &mk->proj, mk->vp, &call) || !mat4_affine(&call) ||
         !mat4_invert(&call, &inv))
@@ -427,9 +431,15 @@ static void call_list(interp *ip, uint32_t name)
     }
     const rgl_cmd *outer = ip->cmd;
     rgl_error err;
+    /* GLU quadric calls are client state, done at compile time and never
+     * stored in a list: the recorder writes a compiled shape's quadric
+     * state into the body before it, for the body alone. */
+    interp_quadric quadrics[INTERP_QUADRICS];
+    memcpy(quadrics, ip->quadrics, sizeof quadrics);
     ip->list_depth++;
     rgl_status st = interp_run(ip, data, size, offset, &err);
     ip->list_depth--;
+    memcpy(ip->quadrics, quadrics, sizeof quadrics);
     ip->cmd = outer;
     if (st != RGL_OK) {
         interp_diag(ip, DIAG_IGNORED,

@@ -126,7 +126,8 @@ void interp_draw_units(interp *ip)
     for (uint32_t k = 0; k < INTERP_TEX_UNITS; k++) {
         interp_tex_unit u = interp_unit(ip, k);
         if (!u.caps[INTERP_CAP_TEXTURE_1D - UNIT_CAP0] && !u.caps[INTERP_CAP_TEXTURE_2D - UNIT_CAP0] &&
-            !u.caps[INTERP_CAP_TEXTURE_3D - UNIT_CAP0] && !interp_texture_rect_on(ip, k))
+            !u.caps[INTERP_CAP_TEXTURE_3D - UNIT_CAP0] && !interp_texture_rect_on(ip, k) &&
+            !u.caps[INTERP_CAP_TEXTURE_CUBE_MAP - UNIT_CAP0])
             continue;
         if (n == 2) {
             interp_note(ip, DIAG_NOTE_MULTITEX);
@@ -148,5 +149,7 @@ void interp_multitex_unbind(interp *ip, uint32_t name)
             t->binding_rect = 0;
         if (t->binding_3d == name)
             t->binding_3d = 0;
+        if (t->binding_cube == name)
+            t->binding_cube = 0;
     }
 }

@@ -19,12 +19,23 @@
 
 /* ---- The raster position --------------------------------------------------------- */
 
-/* The current colour becomes the raster colour (GL 2.1 2.13: lit when
- * lighting is on, which is not computed here). */
+/* The current colour becomes the raster colour (GL 2.1 2.13). */
 static void take_colour(interp *ip)
 {
     gl_attribs *a = &ip->st.a;
     memcpy(a->current.raster_color, a->current.color, sizeof a->current.raster_color);
+}
+
+/* Under lighting GL lights the raster position as a vertex at obj (w
+ * divided out), with the current normal and material. */
+static void take_lit_colour(interp *ip, const double obj[4])
+{
+    gl_attribs *a = &ip->st.a;
+    double w = obj[3] != 0 ? obj[3] : 1;
+    float c[4];
+    interp_lit_point_colour(ip, obj[0] / w, obj[1] / w, obj[2] / w, c);
+    for (int k = 0; k < 4; k++)
+        a->current.raster_color[k] = c[k] > 0 ? (c[k] < 1 ? c[k] : 1) : 0;
 }
 
 void interp_rasterpos(interp *ip, const rgl_cmd *cmd)
@@ -54,9 +65,11 @@ void interp_rasterpos(interp *ip, const rgl_cmd *cmd)
     a->current.raster_pos[1] = vp[1] + (clip[1] / w + 1) * vp[3] / 2;
     a->current.raster_pos[2] = n_ + (clip[2] / w + 1) / 2 * (f_ - n_);
     a->current.raster_pos[3] = w;
-    take_colour(ip);
+    interp_pixdepth_raster(ip, clip);
     if (a->caps[INTERP_CAP_LIGHTING])
-        interp_note(ip, DIAG_NOTE_RASTER_LIT);
+        take_lit_colour(ip, obj);
+    else
+        take_colour(ip);
 }
 
 void interp_windowpos(interp *ip, const rgl_cmd *cmd)
@@ -79,6 +92,7 @@ void interp_windowpos(interp *ip, const rgl_cmd *cmd)
     a->current.raster_pos[2] = n_ + z * (f_ - n_);
     a->current.raster_pos[3] = 1;
     a->current.raster_valid = true;
+    a->current.raster_in_camera = false; /* no eye-space depth to place it by */
     take_colour(ip);
 }
 
@@ -139,10 +153,13 @@ static uint64_t scene_items(const scene *s)
 void interp_pixels_end_frame(interp *ip)
 {
     scene *s = ip->scene;
+    if (s)
+        s->overlay_at_depth = false;
     if (!s || !s->overlay)
         return;
-    /* GL would draw that geometry over the pixels; the image is in front. */
-    if (scene_items(s) > ip->pixels_mark)
+    /* GL would draw that geometry over the pixels; the image is in front,
+     * unless it lies at the pixels' depth. */
+    if (!interp_pixdepth_end_frame(ip, scene_items(s) > ip->pixels_mark))
         interp_note(ip, DIAG_NOTE_PIXELS_DEPTH);
     /* The image was made at the viewport of the first pixel draw; the
      * camera may have another (fixed by a later draw): the same window
@@ -233,8 +250,7 @@ static void put_pixel(uint8_t *d, const float c[4], bool over)
 static bool pixels_begin(interp *ip)
 {
     const gl_attribs *a = &ip->st.a;
-    if (a->caps[INTERP_CAP_DEPTH_TEST])
-        interp_note(ip, DIAG_NOTE_PIXELS_DEPTH);
+    interp_pixdepth_draw(ip);
     if (ip->scene)
         ip->pixels_mark = scene_items(ip->scene);
     return a->caps[INTERP_CAP_BLEND] && a->color_buffer.blend_src == GL_SRC_ALPHA &&

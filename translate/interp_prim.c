@@ -50,8 +50,8 @@ void interp_color(interp *ip, const rgl_cmd *cmd)
         interp_color_material_update(ip);
 }
 
-/* The current secondary colour and fog coordinate: state only; a draw
- * that would use them is noted (draw_notes). */
+/* The current secondary colour and fog coordinate: taken by each vertex
+ * (interp_fogsec.c). */
 void interp_secondarycolor(interp *ip, const rgl_cmd *cmd)
 {
     uint8_t type = cmd_value_type(cmd);
@@ -94,32 +94,21 @@ static void draw_notes(interp *ip)
     const uint8_t *c = a->caps;
     if (c[INTERP_CAP_FOG])
         interp_fix_fog(ip);
-    if (c[INTERP_CAP_ALPHA_TEST])
-        interp_note(ip, DIAG_NOTE_ALPHA_TEST);
-    if (c[INTERP_CAP_TEXTURE_CUBE_MAP]) /* 3D: interp_texture.c's slices */
-        interp_note(ip, DIAG_NOTE_TEXTURE);
-    if (c[INTERP_CAP_LINE_STIPPLE] || c[INTERP_CAP_POLYGON_STIPPLE])
-        interp_note(ip, DIAG_NOTE_STIPPLE);
+    if (c[INTERP_CAP_ALPHA_TEST] && a->color_buffer.alpha_func != GL_ALWAYS &&
+        ip->prim_mode <= GL_LINE_STRIP)
+        interp_note(ip, DIAG_NOTE_ALPHA_TEST); /* polygons: interp_alpha_face */
+    /* Cube maps and 3D textures are drawn (interp_texture.c): their notes
+     * come with the texture, as the environment's do. */
+    if (c[INTERP_CAP_POLYGON_STIPPLE] && ip->prim_mode > GL_LINE_STRIP)
+        interp_note(ip, DIAG_NOTE_STIPPLE); /* line stipple: interp_stipple.c */
     if (interp_scissor_cuts(ip, a->viewport.rect) && ip->prim_mode <= GL_LINE_STRIP)
         interp_note(ip, DIAG_NOTE_SCISSOR); /* lines and points: drawn whole */
-    if (c[INTERP_CAP_STENCIL_TEST])
-        interp_note(ip, DIAG_NOTE_STENCIL);
-    for (int i = 0; i < 8; i++)
-        if (c[INTERP_CAP_CLIP_PLANE0 + i])
-            interp_note(ip, DIAG_NOTE_CLIP_PLANE);
     if (c[INTERP_CAP_BLEND] && a->color_buffer.blend_equation != GL_FUNC_ADD)
         interp_note(ip, DIAG_NOTE_BLEND_EQUATION);
-    if ((c[INTERP_CAP_COLOR_LOGIC_OP] && a->color_buffer.logic_op != GL_COPY) || !a->color_buffer.mask[0] || !a->color_buffer.mask[1] ||
-        !a->color_buffer.mask[2])
-        interp_note(ip, DIAG_NOTE_COLOR_MASK);
+    if (c[INTERP_CAP_COLOR_LOGIC_OP] && a->color_buffer.logic_op != GL_COPY)
+        interp_note(ip, DIAG_NOTE_COLOR_MASK); /* the masks: interp_masks.c */
     if (!c[INTERP_CAP_DEPTH_TEST] || (a->depth.func != GL_LESS && a->depth.func != GL_LEQUAL))
         interp_note(ip, DIAG_NOTE_DEPTH);
-    /* Fog coordinates and secondary colours are recorded, not drawn yet:
-     * a frame that uses them says so. */
-    if (c[INTERP_CAP_FOG] && a->fog.coord_src == GL_FOG_COORD)
-        interp_note(ip, DIAG_NOTE_FOG_COORD);
-    if (c[INTERP_CAP_COLOR_SUM] && !c[INTERP_CAP_LIGHTING])
-        interp_note(ip, DIAG_NOTE_COLOR_SUM);
     /* GL 1.x 3.9: with GL_SINGLE_COLOR the texture modulates the specular
      * term too; POV-Ray adds the highlight after the texture, which is
      * GL_SEPARATE_SPECULAR_COLOR. */
@@ -247,6 +236,7 @@ static bool setup_transform(interp *ip)
         return false;
     }
     painter_shift(ip, &to_eye);
+    interp_offset_apply(ip, &to_eye);
     ip->prim_to_eye = to_eye;
     ip->prim_in_eye = false;
     if (!mat4_affine(&to_eye)) {
@@ -350,6 +340,7 @@ static void begin_mode(interp *ip, GLenum mode)
     ip->prim_mode = mode;
     ip->prim_skip = true;
     interp_vmat_begin(ip);
+    ip->prim_color_sum = ip->prim_fog_vertex = false;
     if (!ip->scene || !interp_render_mode_draws(ip))
         return;
     interp_accum_draw(ip);
@@ -358,12 +349,14 @@ static void begin_mode(interp *ip, GLenum mode)
     draw_notes(ip);
     interp_proj_vote(ip, mode);
     interp_fix_camera(ip);
-    if (interp_scissor_hides(ip) || !setup_transform(ip))
+    if (interp_scissor_hides(ip) || !interp_stencil_draw(ip) || interp_masks_hide(ip) ||
+        !setup_transform(ip))
         return;
     ip->prim_skip = false;
     ip->prim_first = ip->scene->nverts;
     ip->prim_blend = blend_mode(ip, mode);
     interp_draw_units(ip);
+    interp_fogsec_begin(ip, mode);
 }
 
 void interp_begin(interp *ip, const rgl_cmd *cmd)
@@ -407,7 +400,7 @@ void interp_surface_colour(const interp *ip, float out[4])
  * here (the scene draws them unlit), with the current normal in GL's own
  * eye space (2.11.3: the inverse transpose of the modelview, normalised
  * under GL_NORMALIZE, rescaled under GL_RESCALE_NORMAL). */
-static void lit_line_colour(interp *ip, double x, double y, double z, float out[4])
+static void lit_line_colour(interp *ip, double x, double y, double z, float out[4], double *peak)
 {
     const gl_attribs *a = &ip->st.a;
     const mat4 *mv = interp_matrix(ip, INTERP_MV);
@@ -431,7 +424,12 @@ static void lit_line_colour(interp *ip, double x, double y, double z, float out[
                     n[k] /= r;
         }
     }
-    interp_lit_color(ip, p, n, false, a->current.color, out);
+    interp_lit_color_peak(ip, p, n, false, a->current.color, out, peak);
+}
+
+void interp_lit_point_colour(interp *ip, double x, double y, double z, float out[4])
+{
+    lit_line_colour(ip, x, y, z, out, NULL);
 }
 
 void interp_add_vertex(interp *ip, double x, double y, double z, double w)
@@ -465,21 +463,45 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
         for (int i = 0; i < 4; i++)
             v->color[i] = clamp01(a->current.color[i]);
     } else if (ip->prim_mode <= GL_LINE_STRIP || interp_vertex_lit(ip)) {
-        lit_line_colour(ip, x, y, z, v->color);
+        lit_line_colour(ip, x, y, z, v->color, NULL);
     } else {
         interp_surface_colour(ip, v->color);
     }
+    if (ip->prim_color_sum || ip->prim_fog_vertex)
+        interp_fogsec_vertex(ip, v->color);
+    interp_fogsec_track(ip);
+    uint8_t afail = interp_alpha_vertex(ip, k, v->color[3]);
     if (ip->prim_blend_mapped)
         map_blend(ip, v->color);
     if (ip->prim_blend == SCENE_BLEND_OPAQUE)
         v->color[3] = 1;
     else if (ip->prim_blend == SCENE_BLEND_INVISIBLE)
         v->color[3] = 0;
+    if (interp_relit_wanted(ip)) { /* GL's colour, should its face need it */
+        float c[4];
+        double peak;
+        lit_line_colour(ip, x, y, z, c, &peak);
+        if (ip->prim_blend_mapped)
+            map_blend(ip, c);
+        if (ip->prim_blend == SCENE_BLEND_OPAQUE)
+            c[3] = 1;
+        else if (ip->prim_blend == SCENE_BLEND_INVISIBLE)
+            c[3] = 0;
+        interp_relit_store(ip, k, c, peak);
+    }
     float q = a->current.texcoord[3];
     v->tex1[0] = v->tex1[1] = 0;
     if (ip->draw_unit[0] >= 0) {
         double obj[4] = {x, y, z, 1};
-        interp_vertex_texcoord(ip, ip->draw_unit[0], obj, v->normal, v->tex);
+        if (ip->draw_unit[1] < 0 && interp_unit_cube(ip, ip->draw_unit[0])) {
+            float str[3]; /* a cube map's r rides in tex1 (scene_texture.cube) */
+            interp_vertex_texcoord3(ip, ip->draw_unit[0], obj, v->normal, str);
+            v->tex[0] = str[0];
+            v->tex[1] = str[1];
+            v->tex1[0] = str[2];
+        } else {
+            interp_vertex_texcoord(ip, ip->draw_unit[0], obj, v->normal, v->tex);
+        }
         if (ip->draw_unit[1] >= 0)
             interp_vertex_texcoord(ip, ip->draw_unit[1], obj, v->normal, v->tex1);
     } else if (q == 1 || q == 0 || !isfinite(q)) {
@@ -489,7 +511,7 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
         v->tex[0] = a->current.texcoord[0] / q;
         v->tex[1] = a->current.texcoord[1] / q;
     }
-    ip->edge[k] = a->current.edge_flag;
+    ip->edge[k] = (uint8_t)(a->current.edge_flag | afail);
     scene_commit_vertices(s, 1);
     interp_vmat_vertex(ip);
 }
@@ -531,6 +553,15 @@ typedef struct assembly {
     bool line_smooth, point_smooth;
     bool point_params; /* glPointParameter away from its defaults */
     bool list_quads; /* quads split along v1-v3, as Mesa does in a list or when clipping */
+    bool stipple;       /* glLineStipple applies (interp_stipple.c) */
+    uint64_t stipple_s; /* GL's stipple counter */
+    int relit;          /* INTERP_RELIT_*: filled faces lit as GL does (interp_relit.c) */
+    bool relit_pass;    /* drawing those faces (into the GL-lit mesh) */
+    uint32_t relit_deferred; /* faces left for that pass */
+    bool fog_split;     /* triangles behind the eye get their own fog (interp_fogbehind.c) */
+    const scene_look *look; /* the mesh's look, and where its vertices are, for fog_split */
+    const mat4 *to_eye;
+    bool in_eye;
     scene_mesh *mesh;
 } assembly;
 
@@ -600,12 +631,13 @@ static void add_segment(assembly *as, uint32_t i0, uint32_t i1, uint32_t provoki
     interp *ip = as->ip;
     const scene_vertex *v0 = &as->s->verts[i0], *v1 = &as->s->verts[i1];
     const scene_camera *cam = &as->s->camera;
-    double p[2][3], px[2], py[2], w0[2], w1[2];
-    if (!eye_pos(ip, v0, p[0]) || !eye_pos(ip, v1, p[1]))
+    double p[2][3], w0[2], w1[2], t[2];
+    if (ip->stencil.only)
+        return; /* into the stencil buffer alone (not followed: a note) */
+    if (!eye_pos(ip, v0, p[0]) || !eye_pos(ip, v1, p[1]) ||
+        !interp_clip_segment(ip, p[0], p[1], &t[0], &t[1]))
         return;
-    if (!scene_camera_pixel_size(cam, p[0], &px[0], &py[0]) ||
-        !scene_camera_pixel_size(cam, p[1], &px[1], &py[1]) ||
-        !scene_camera_project(cam, p[0], w0) || !scene_camera_project(cam, p[1], w1))
+    if (!scene_camera_project(cam, p[0], w0) || !scene_camera_project(cam, p[1], w1))
         return;
     double dx = w1[0] - w0[0], dy = w1[1] - w0[1], len = hypot(dx, dy);
     if (!(len > 1e-6))
@@ -621,20 +653,40 @@ static void add_segment(assembly *as, uint32_t i0, uint32_t i1, uint32_t provoki
         ox = as->line_width * 0.5;
         oy = 0;
     }
+    /* Stippled: the dashes GL draws (interp_stipple.c); else the whole. */
+    double dash[1024][2] = {{0, 1}};
+    size_t ndash = 1;
+    if (as->stipple)
+        ndash = interp_stipple_dashes(ip, cam, p[0], p[1], w0, w1, &as->stipple_s, dash,
+                                      sizeof dash / sizeof dash[0]);
     double r[3], u[3];
     image_axes(cam, r, u);
-    scene_line *l = scene_add_line(as->s);
-    if (!l)
-        return;
-    for (int e = 0; e < 2; e++)
-        for (int k = 0; k < 3; k++) {
-            l->p[e][k] = (float)p[e][k];
-            l->half[e][k] = (float)(ox * px[e] * r[k] + oy * py[e] * u[k]);
-        }
     const scene_vertex *c0 = as->flat ? &as->s->verts[provoking] : v0;
     const scene_vertex *c1 = as->flat ? &as->s->verts[provoking] : v1;
-    memcpy(l->color[0], c0->color, sizeof l->color[0]);
-    memcpy(l->color[1], c1->color, sizeof l->color[1]);
+    for (size_t d = 0; d < ndash; d++) {
+        double q[2][3], px[2], py[2];
+        for (int e = 0; e < 2; e++)
+            for (int k = 0; k < 3; k++)
+                q[e][k] = p[0][k] + (p[1][k] - p[0][k]) * dash[d][e];
+        if (!scene_camera_pixel_size(cam, q[0], &px[0], &py[0]) ||
+            !scene_camera_pixel_size(cam, q[1], &px[1], &py[1]))
+            continue;
+        scene_line *l = scene_add_line(as->s);
+        if (!l)
+            return;
+        for (int e = 0; e < 2; e++)
+            for (int k = 0; k < 3; k++) {
+                l->p[e][k] = (float)q[e][k];
+                l->half[e][k] = (float)(ox * px[e] * r[k] + oy * py[e] * u[k]);
+            }
+        /* cut by a clip plane or the stipple: the colour there */
+        for (int e = 0; e < 2; e++) {
+            double te = t[0] + (t[1] - t[0]) * dash[d][e];
+            for (int k = 0; k < 4; k++)
+                l->color[e][k] = (float)(c0->color[k] + (c1->color[k] - c0->color[k]) * te);
+            interp_fogsec_eye(as->ip, q[e][2], l->color[e]);
+        }
+    }
 }
 
 /* GL's aliased point: a square of size x size pixels centred on the
@@ -645,8 +697,10 @@ static void add_point(assembly *as, uint32_t i, uint32_t colour_from)
 {
     double p[3], px, py, r[3], u[3], w[2];
     const scene_camera *cam = &as->s->camera;
-    if (!eye_pos(as->ip, &as->s->verts[i], p) || !scene_camera_pixel_size(cam, p, &px, &py) ||
-        !scene_camera_project(cam, p, w))
+    if (as->ip->stencil.only)
+        return;
+    if (!eye_pos(as->ip, &as->s->verts[i], p) || !interp_clip_point(as->ip, p) ||
+        !scene_camera_pixel_size(cam, p, &px, &py) || !scene_camera_project(cam, p, w))
         return;
     if (fabs(w[0]) > cam->width * 0.5 || fabs(w[1]) > cam->height * 0.5)
         return;
@@ -671,6 +725,7 @@ static void add_point(assembly *as, uint32_t i, uint32_t colour_from)
     }
     pt->round = as->point_smooth;
     memcpy(pt->color, as->s->verts[colour_from].color, sizeof pt->color);
+    interp_fogsec_eye(as->ip, p[2], pt->color);
     pt->color[3] *= (float)fade;
 }
 
@@ -735,8 +790,24 @@ static bool is_ccw(const interp *ip, const uint32_t *idx, int n)
 
 static void fill_tri(assembly *as, uint32_t a, uint32_t b, uint32_t c, uint32_t provoking)
 {
-    if (!as->mesh)
+    if (as->ip->stencil.write) { /* its window region, for later stencil tests */
+        double p[3][3];
+        const scene_vertex *v = as->s->verts + as->base;
+        if (eye_pos(as->ip, &v[a], p[0]) && eye_pos(as->ip, &v[b], p[1]) &&
+            eye_pos(as->ip, &v[c], p[2]))
+            interp_stencil_tri(as->ip, p);
+    }
+    if (!as->mesh || as->ip->stencil.only)
         return;
+    const uint32_t abc[3] = {a, b, c};
+    if (!interp_alpha_face(as->ip, abc, 3, as->mesh->look.texture))
+        return;
+    if (as->fog_split) {
+        const uint32_t rel[3] = {a, b, c};
+        as->mesh = interp_fog_behind_mesh(as->ip, as->look, as->to_eye, as->in_eye, as->base, rel);
+        if (!as->mesh)
+            return;
+    }
     if (as->swap)
         scene_add_tri(as->s, as->base + a, as->base + c, as->base + b, as->base + provoking);
     else
@@ -755,11 +826,24 @@ static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t prov
             if (!vertex_ok(&as->s->verts[as->base + idx[k]]))
                 return;
     GLenum mode = a->polygon.mode[0];
+    bool front = true;
     if (as->facing) {
-        bool front = is_ccw(ip, idx, n) != as->swap;
+        front = is_ccw(ip, idx, n) != as->swap;
         if ((front && as->cull_front) || (!front && as->cull_back))
             return;
         mode = a->polygon.mode[front ? 0 : 1];
+    }
+    if (as->relit == INTERP_RELIT_PROBE) {
+        if (!front && mode == GL_FILL)
+            interp_note(ip, DIAG_NOTE_RELIT_SPECULAR);
+    } else if (as->relit && mode == GL_FILL) {
+        bool gl_lit = as->relit == INTERP_RELIT_ALL || !front;
+        if (gl_lit != as->relit_pass) {
+            as->relit_deferred += gl_lit;
+            return;
+        }
+    } else if (as->relit_pass) {
+        return;
     }
     if (mode == GL_FILL) {
         for (int k = 1; k + 1 < n; k++)
@@ -767,7 +851,7 @@ static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t prov
         return;
     }
     for (int k = 0; k < n; k++) {
-        if (edge_flags && !ip->edge[idx[k]])
+        if (edge_flags && !(ip->edge[idx[k]] & 1))
             continue; /* GL draws only boundary edges (and their vertices) */
         if (mode == GL_LINE)
             add_segment(as, as->base + idx[k], as->base + idx[(k + 1) % n], as->base + provoking);
@@ -891,8 +975,10 @@ static void assemble_lines(assembly *as, GLenum mode, uint32_t n)
                 add_point(as, b + i, b + i);
         break;
     case GL_LINES:
-        for (uint32_t i = 0; i + 2 <= n; i += 2)
+        for (uint32_t i = 0; i + 2 <= n; i += 2) {
+            as->stipple_s = 0; /* GL restarts the stipple per segment */
             add_segment(as, b + i, b + i + 1, pv(as, b + i + 1, b + i));
+        }
         break;
     case GL_LINE_STRIP:
     case GL_LINE_LOOP:
@@ -940,7 +1026,7 @@ scene_look interp_current_look(interp *ip)
     look.lit = ip->st.a.caps[INTERP_CAP_LIGHTING] && !interp_vertex_lit(ip);
     look.flat = ip->st.a.lighting.shade_model == GL_FLAT;
     look.blend = ip->prim_blend;
-    look.fog = ip->st.a.caps[INTERP_CAP_FOG];
+    look.fog = ip->st.a.caps[INTERP_CAP_FOG] && !ip->prim_fog_vertex;
     if (ip->st.a.caps[INTERP_CAP_ALPHA_TEST]) {
         GLenum f = ip->st.a.color_buffer.alpha_func;
         look.alpha_test = f == GL_GREATER || f == GL_GEQUAL ? SCENE_ALPHA_ABOVE
@@ -974,7 +1060,10 @@ scene_look interp_current_look(interp *ip)
     }
     look.names = interp_names_for_draw(ip);
     interp_scissor_look(ip, &look);
+    look.clip = interp_clip_look(ip);
+    interp_stencil_look(ip, &look);
     interp_lightset_textured(ip, &look);
+    interp_fogsec_look(ip, &look);
     return look;
 }
 
@@ -1022,6 +1111,7 @@ static void end_primitive(interp *ip)
     GLenum mode = ip->prim_mode;
     if (n == 0)
         return;
+    interp_fog_behind_check(ip, n);
     assembly as;
     memset(&as, 0, sizeof as);
     as.ip = ip;
@@ -1031,6 +1121,7 @@ static void end_primitive(interp *ip)
     as.first = a->lighting.provoking == GL_FIRST_VERTEX_CONVENTION;
     as.swap = a->polygon.front_face == GL_CW;
     as.line_smooth = a->caps[INTERP_CAP_LINE_SMOOTH];
+    as.stipple = interp_stipple_on(ip);
     as.point_smooth = a->caps[INTERP_CAP_POINT_SMOOTH];
     as.line_width = raster_width(a->line.width, as.line_smooth);
     as.point_size = raster_width(a->point.size, as.point_smooth);
@@ -1053,7 +1144,8 @@ static void end_primitive(interp *ip)
     GLenum cm = a->polygon.cull_mode;
     as.cull_front = cull && (cm == GL_FRONT || cm == GL_FRONT_AND_BACK);
     as.cull_back = cull && (cm == GL_BACK || cm == GL_FRONT_AND_BACK);
-    as.facing = cull || a->polygon.mode[0] != a->polygon.mode[1];
+    /* Back faces may need GL's lighting (interp_relit.c). */
+    as.facing = cull || a->polygon.mode[0] != a->polygon.mode[1] || interp_relit_wanted(ip);
     if (as.facing && !compute_clip(ip, n)) {
         s->failed = true;
         return;
@@ -1080,11 +1172,31 @@ static void end_primitive(interp *ip)
         check_normals(ip, n);
     mat4 id = mat4_identity();
     as.mesh = scene_mesh_for(s, ip->prim_in_eye ? &id : &ip->prim_to_eye, ip->prim_in_eye, &look);
+    as.fog_split = ip->fog_split;
+    as.look = &look;
+    as.to_eye = ip->prim_in_eye ? &id : &ip->prim_to_eye;
+    as.in_eye = ip->prim_in_eye;
     size_t first_tri = s->ntris;
-    if (!as.facing && !as.check_bad && a->polygon.mode[0] == GL_FILL)
+    as.relit = interp_relit_split(ip, &look);
+    if (!as.facing && !as.check_bad && a->polygon.mode[0] == GL_FILL && !as.relit)
         assemble_filled(&as, mode, n);
     else
         assemble_polygons(&as, mode, n);
+    if (as.relit_deferred > 0) {
+        long b = interp_relit_vertices(ip, n);
+        if (b >= 0) {
+            ip->prim_relit = true;
+            scene_look gl_look = interp_current_look(ip);
+            ip->prim_relit = false;
+            as.mesh = scene_mesh_for(s, ip->prim_in_eye ? &id : &ip->prim_to_eye, ip->prim_in_eye,
+                                     &gl_look);
+            as.base = (uint32_t)b;
+            as.look = &gl_look;
+            as.relit_pass = true;
+            assemble_polygons(&as, mode, n);
+        }
+    }
+    interp_relit_done(ip);
     if (look.lit)
         interp_gouraud_check(ip, first_tri);
 }
@@ -1097,6 +1209,7 @@ void interp_end(interp *ip, const rgl_cmd *cmd)
         return;
     }
     end_primitive(ip);
+    ip->prim_color_sum = ip->prim_fog_vertex = false;
 }
 
 bool interp_prim_begin(interp *ip, GLenum mode)
@@ -1109,6 +1222,7 @@ void interp_prim_end(interp *ip)
 {
     if (ip->in_begin)
         end_primitive(ip);
+    ip->prim_color_sum = ip->prim_fog_vertex = false;
 }
 
 void interp_abort_begin(interp *ip)
@@ -1116,6 +1230,7 @@ void interp_abort_begin(interp *ip)
     if (!ip->in_begin)
         return;
     ip->in_begin = false;
+    ip->prim_color_sum = ip->prim_fog_vertex = false;
     if (ip->scene && !ip->prim_skip && ip->scene->nverts >= ip->prim_first)
         ip->scene->nverts = ip->prim_first;
 }

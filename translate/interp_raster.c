@@ -67,6 +67,9 @@ void interp_begin_frame(interp *ip)
     if (ip->scene)
         scene_reset(ip->scene);
     interp_lists_begin_frame(ip);
+    /* the scene's stencil region starts empty (interp_stencil.c) */
+    ip->stencil.first = 0;
+    ip->stencil.written = ip->stencil.mixed = false;
 }
 
 void interp_end_frame(interp *ip)
@@ -164,6 +167,8 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
     if ((mask & GL_DEPTH_BUFFER_BIT) && !(mask & GL_COLOR_BUFFER_BIT) &&
         ip->st.render_mode == GL_RENDER)
         interp_proj_depth_clear(ip);
+    if ((mask & GL_STENCIL_BUFFER_BIT) && ip->st.render_mode == GL_RENDER)
+        interp_stencil_clear(ip);
     if (!(mask & GL_COLOR_BUFFER_BIT) || !ip->scene || ip->st.render_mode != GL_RENDER)
         return;
     const gl_attribs *a = &ip->st.a;

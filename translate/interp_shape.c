@@ -266,6 +266,10 @@ static bool exact_ok(interp *ip, bool closed, bool inside, bool faceted)
         return false;
     if (interp_texture_for_draw(ip) >= 0)
         return false; /* the mesh carries the texture coordinates */
+    if (interp_offset_active(ip))
+        return false; /* lines drawn over it lie on GL's facets */
+    if (interp_stencil_writes(ip))
+        return false; /* its triangles make the stencil region */
     return true;
 }
 
@@ -292,6 +296,10 @@ static bool emit_solid(interp *ip, scene_solid_kind kind, bool open, double p0, 
         so->to_eye = ip->prim_to_eye;
         so->look = interp_current_look(ip);
         interp_surface_colour(ip, so->color);
+        /* An unlit solid's colour is GL's final one: one fog coordinate
+         * and secondary colour for the whole shape (interp_fogsec.c). */
+        if (ip->prim_color_sum || ip->prim_fog_vertex)
+            interp_fogsec_vertex(ip, so->color);
     }
     interp_abort_begin(ip);
     return true;

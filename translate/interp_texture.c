@@ -1,12 +1,14 @@
 /* interp_texture.c: texture objects, texture environment, texture
  * coordinate generation (issue 5).
  *
- * A texture object keeps its level-0 image converted to 8-bit RGBA as GL's
- * texture environment sees it (GL 1.5 table 3.15: the components the base
- * internal format lacks are given the values the environment functions
- * treat as neutral), bottom row first, and which of the other levels are
- * defined, so that a mipmapping minification filter on an incomplete
- * texture turns texturing off, as in GL (3.8.10). Images are shared,
+ * A texture object keeps the image of each level converted to 8-bit RGBA
+ * as GL's texture environment sees it (GL 1.5 table 3.15: the components
+ * the base internal format lacks are given the values the environment
+ * functions treat as neutral), bottom row first, and each level's size,
+ * so that an incomplete texture (GL 2.1 3.8.10, from GL_TEXTURE_BASE_LEVEL
+ * to GL_TEXTURE_MAX_LEVEL) turns texturing off, as in GL, and a
+ * mipmapping minification filter finds its levels (issue 14: the writer
+ * chooses among them, povwrite_mipmap.c). Images are shared,
  * reference counted, between the interpreters that copy a context's state
  * (frame.c's carried state) and copied before a change.
  *
@@ -26,19 +28,30 @@
  * to allocate what a hostile trace asks for). 16384 x 16384 RGBA is 1 GiB. */
 #define TEX_MAX_TEXELS (1u << 26)
 
+/* Levels 0..14: a 16384-texel side halves to 1 in 14 steps (Mesa's
+ * GL_MAX_TEXTURE_LEVELS is 15). */
+#define TEX_LEVELS 15
+
 typedef struct tex_obj {
     uint32_t name;
     GLenum target;        /* 0 until first bound */
     GLenum base_format;   /* of level 0 */
     tex_image *img;       /* level 0, or NULL */
-    uint32_t levels;      /* bit k: level k defined with the size GL expects */
+    tex_image *lv[TEX_LEVELS]; /* levels 1.., or NULL (lv[0] unused: img) */
+    int32_t lw[TEX_LEVELS], lh[TEX_LEVELS]; /* each defined level's size, no border */
+    uint32_t levels;      /* bit k: level k defined */
+    int32_t base_level, max_level; /* GL_TEXTURE_BASE_LEVEL, GL_TEXTURE_MAX_LEVEL */
+    float min_lod, max_lod;        /* GL_TEXTURE_MIN_LOD, GL_TEXTURE_MAX_LOD */
+    bool generate_mipmap;          /* GL_GENERATE_MIPMAP */
+    tex_image *face[6];            /* a cube map's level 0: +X, -X, +Y, -Y, +Z, -Z */
     GLenum wrap_s, wrap_t, min_filter, mag_filter;
     GLenum wrap_r;   /* GL_TEXTURE_WRAP_R (3D) */
     int depth3;      /* a 3D texture's images: img holds them one above the
                         other (height = rows x depth3); 0 for 1D and 2D */
     float border[4]; /* GL_TEXTURE_BORDER_COLOR */
     GLenum depth_mode; /* GL_DEPTH_TEXTURE_MODE */
-    bool depth;        /* level 0 has a depth internal format: drawn as depth_mode */
+    bool depth;        /* the base level (or level 0) has a depth internal format:
+                          every level drawn as depth_mode */
     uint32_t lost;   /* pixels whose damage left the image missing or partly
                         stale (0: none): every frame drawing with it says so */
 } tex_obj;
@@ -47,7 +60,8 @@ struct interp_textures {
     tex_obj *objs; /* named objects, unordered */
     size_t n, cap;
     namemap names; /* name -> index in objs */
-    tex_obj zero[4];         /* object 0 of GL_TEXTURE_1D, GL_TEXTURE_2D, rectangle, 3D */
+    /* object 0 of GL_TEXTURE_1D, GL_TEXTURE_2D, rectangle, 3D, GL_TEXTURE_CUBE_MAP */
+    tex_obj zero[5];
     int32_t unpack[8];       /* glPixelStorei values, by pname - GL_UNPACK_SWAP_BYTES */
     /* The last draw's scene texture, to skip rebuilding it per primitive:
      * one per drawn unit (a draw's first and second). */
@@ -75,8 +89,14 @@ static void obj_defaults(tex_obj *o, uint32_t name)
     o->wrap_s = o->wrap_t = o->wrap_r = GL_REPEAT;
     o->min_filter = GL_NEAREST_MIPMAP_LINEAR;
     o->mag_filter = GL_LINEAR;
+    o->max_level = 1000;
+    o->min_lod = -1000;
+    o->max_lod = 1000;
     o->depth_mode = GL_LUMINANCE;
 }
+
+/* The image of level k, or NULL. */
+static tex_image **level_slot(tex_obj *o, int k) { return k == 0 ? &o->img : &o->lv[k]; }
 
 /* A rectangle texture's defaults (ARB_texture_rectangle): no mipmaps, no
  * repeat. */
@@ -92,6 +112,25 @@ static void image_release(tex_image *img)
 {
     if (img && --img->refs == 0)
         tr_free(img);
+}
+
+static void obj_retain(tex_obj *o)
+{
+    for (int k = 0; k < TEX_LEVELS; k++)
+        if (*level_slot(o, k))
+            (*level_slot(o, k))->refs++;
+    for (int f = 0; f < 6; f++)
+        if (o->face[f])
+            o->face[f]->refs++;
+}
+
+static void obj_release(tex_obj *o)
+{
+    image_release(o->img);
+    for (int k = 1; k < TEX_LEVELS; k++)
+        image_release(o->lv[k]);
+    for (int f = 0; f < 6; f++)
+        image_release(o->face[f]);
 }
 
 static void r_reset(interp_textures *t)
@@ -123,6 +162,7 @@ static interp_textures *textures(interp *ip)
     t->zero[2].target = GL_TEXTURE_RECTANGLE;
     obj_rect_defaults(&t->zero[2]);
     t->zero[3].target = GL_TEXTURE_3D;
+    t->zero[4].target = GL_TEXTURE_CUBE_MAP;
     r_reset(t);
     t->unpack[GL_UNPACK_ALIGNMENT - GL_UNPACK_SWAP_BYTES] = 4;
     t->cache[0].index = t->cache[1].index = -1;
@@ -146,6 +186,7 @@ static tex_obj *get_obj(interp *ip, GLenum target, uint32_t name, bool create)
         return &t->zero[target == GL_TEXTURE_1D          ? 0
                         : target == GL_TEXTURE_RECTANGLE ? 2
                         : target == GL_TEXTURE_3D        ? 3
+                        : target == GL_TEXTURE_CUBE_MAP  ? 4
                                                          : 1];
     tex_obj *o = find_obj(t, name);
     if (o || !create)
@@ -171,6 +212,8 @@ static tex_obj *bound_obj(interp *ip, GLenum target, bool create)
         return get_obj(ip, target, ip->st.a.texture.binding_rect, create);
     if (target == GL_TEXTURE_3D)
         return get_obj(ip, target, ip->st.a.texture.binding_3d, create);
+    if (target == GL_TEXTURE_CUBE_MAP)
+        return get_obj(ip, target, ip->st.a.texture.binding_cube, create);
     return NULL;
 }
 
@@ -195,7 +238,7 @@ void interp_deletetextures(interp *ip, const rgl_cmd *cmd)
         tex_obj *o = find_obj(t, name);
         if (!o)
             continue;
-        image_release(o->img);
+        obj_release(o);
         namemap_del(&t->names, name);
         *o = t->objs[--t->n];
         if (o != &t->objs[t->n]) /* the last object moved into o's place */
@@ -209,6 +252,8 @@ void interp_deletetextures(interp *ip, const rgl_cmd *cmd)
             ip->st.a.texture.binding_rect = 0;
         if (ip->st.a.texture.binding_3d == name)
             ip->st.a.texture.binding_3d = 0;
+        if (ip->st.a.texture.binding_cube == name)
+            ip->st.a.texture.binding_cube = 0;
         interp_multitex_unbind(ip, name);
     }
 }
@@ -220,9 +265,8 @@ void interp_bindtexture(interp *ip, const rgl_cmd *cmd)
     GLenum target = arg_enum(cmd, 0);
     uint32_t name = (uint32_t)cmd->arg[1].v.u;
     if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_RECTANGLE &&
-        target != GL_TEXTURE_3D) {
-        if (target != GL_TEXTURE_CUBE_MAP)
-            interp_bad_enum(ip, "texture target", target);
+        target != GL_TEXTURE_3D && target != GL_TEXTURE_CUBE_MAP) {
+        interp_bad_enum(ip, "texture target", target);
         return;
     }
     tex_obj *o = get_obj(ip, target, name, true);
@@ -242,6 +286,8 @@ void interp_bindtexture(interp *ip, const rgl_cmd *cmd)
         ip->st.a.texture.binding_rect = name;
     else if (target == GL_TEXTURE_3D)
         ip->st.a.texture.binding_3d = name;
+    else if (target == GL_TEXTURE_CUBE_MAP)
+        ip->st.a.texture.binding_cube = name;
     else
         ip->st.a.texture.binding_2d = name;
 }
@@ -513,7 +559,52 @@ static bool check_image(interp *ip, GLenum format, GLenum type, int64_t w, int64
     return true;
 }
 
-/* The level-k size GL expects below a level-0 size. */
+/* Levels base+1 .. down to 1 x 1 from the base level, each texel the mean
+ * of the 2 x 2 (or 2 x 1) below it (GL_GENERATE_MIPMAP, gluBuild2DMipmaps:
+ * GL leaves the filter to the implementation; Mesa's is this box). */
+static void generate_levels(interp *ip, tex_obj *o, int b)
+{
+    if (b < 0 || b >= TEX_LEVELS || !*level_slot(o, b))
+        return;
+    for (int k = b + 1; k < TEX_LEVELS; k++) {
+        const tex_image *src = *level_slot(o, k - 1);
+        if (!src || (src->width == 1 && src->height == 1))
+            return;
+        int nw = src->width > 1 ? src->width / 2 : 1, nh = src->height > 1 ? src->height / 2 : 1;
+        if (!interp_budget_texels(ip, (uint64_t)nw * (uint64_t)nh * 4))
+            return;
+        tex_image *img = tr_realloc(NULL, sizeof *img + (size_t)nw * (size_t)nh * 4);
+        if (!img) {
+            if (ip->scene)
+                ip->scene->failed = true;
+            return;
+        }
+        img->refs = 1;
+        img->width = nw;
+        img->height = nh;
+        int fx = src->width > 1 ? 2 : 1, fy = src->height > 1 ? 2 : 1;
+        for (int y = 0; y < nh; y++)
+            for (int x = 0; x < nw; x++)
+                for (int c = 0; c < 4; c++) {
+                    unsigned sum = 0;
+                    for (int j = 0; j < fy; j++)
+                        for (int i = 0; i < fx; i++)
+                            sum += src->rgba[((size_t)(y * fy + j) * (size_t)src->width +
+                                              (size_t)(x * fx + i)) * 4 + (size_t)c];
+                    img->rgba[((size_t)y * (size_t)nw + (size_t)x) * 4 + (size_t)c] =
+                        (uint8_t)((sum + (unsigned)(fx * fy) / 2) / (unsigned)(fx * fy));
+                }
+        img->hash = image_hash(img);
+        tex_image **slot = level_slot(o, k);
+        image_release(*slot);
+        *slot = img;
+        o->levels |= 1u << k;
+        o->lw[k] = nw;
+        o->lh[k] = nh;
+    }
+}
+
+/* The size of level k of a side of s0 texels (GL 2.1 3.8.8). */
 static int64_t level_size(int64_t s0, int k)
 {
     int64_t s = s0 >> k;
@@ -527,10 +618,18 @@ static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t inte
     if (interp_reject_in_begin(ip))
         return;
     if (target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D ||
-        target == GL_PROXY_TEXTURE_RECTANGLE)
+        target == GL_PROXY_TEXTURE_RECTANGLE || target == GL_PROXY_TEXTURE_CUBE_MAP)
         return;
-    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_RECTANGLE) {
+    int face = target >= GL_TEXTURE_CUBE_MAP_POSITIVE_X && target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z
+                   ? (int)(target - GL_TEXTURE_CUBE_MAP_POSITIVE_X)
+                   : -1;
+    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_RECTANGLE &&
+        face < 0) {
         interp_bad_enum(ip, "texture target", target);
+        return;
+    }
+    if (face >= 0 && w != h) {
+        interp_bad_value(ip, "cube map face not square");
         return;
     }
     GLenum base = base_format(internal);
@@ -538,7 +637,8 @@ static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t inte
         interp_bad_value(ip, "texture internal format");
         return;
     }
-    if (level < 0 || level > 31 || (border != 0 && border != 1) ||
+    /* ARB_texture_rectangle: level 0 alone, no border. */
+    if (level < 0 || level >= TEX_LEVELS || (border != 0 && border != 1) ||
         (target == GL_TEXTURE_RECTANGLE && (level != 0 || border != 0))) {
         interp_bad_value(ip, "texture level or border");
         return;
@@ -548,36 +648,45 @@ static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t inte
         interp_bad_op(ip, "depth pixels and a colour internal format, or the reverse");
         return;
     }
+    /* GL 2.1 3.8.1: depth textures are 1D or 2D (and rectangles,
+     * ARB_texture_rectangle), never a cube map's face. */
+    if (base == GL_DEPTH_COMPONENT && face >= 0) {
+        interp_bad_op(ip, "a depth internal format for a cube map face");
+        return;
+    }
     size_t bytes;
     if (!check_image(ip, format, type, w, h, &bytes))
         return;
-    tex_obj *o = bound_obj(ip, target, true);
+    tex_obj *o = bound_obj(ip, face >= 0 ? GL_TEXTURE_CUBE_MAP : target, true);
     if (!o) {
         if (ip->scene)
             ip->scene->failed = true;
         return;
     }
-    if (level > 0) {
-        /* Only whether the chain is complete matters (POV-Ray has no mipmaps). */
-        bool fits = o->img && w - 2 * border == level_size(o->img->width, level) &&
-                    h - (target == GL_TEXTURE_2D ? 2 * border : 0) ==
-                        level_size(o->img->height, level);
-        if (fits)
-            o->levels |= 1u << level;
-        else
-            o->levels &= ~(1u << level);
-        return;
+    if (face >= 0) {
+        if (level > 0)
+            return; /* a cube map's levels: its level 0 is drawn (the mipmap note) */
+        target = GL_TEXTURE_2D; /* a face is a 2D image */
     }
-    image_release(o->img);
-    o->img = NULL;
-    o->levels = 0;
-    o->lost = 0;
-    o->depth = base == GL_DEPTH_COMPONENT;
-    if (o->depth)
-        base = o->depth_mode; /* the depth is drawn as luminance, intensity or alpha */
-    o->base_format = base;
+    bool depth = base == GL_DEPTH_COMPONENT;
     bool two = target != GL_TEXTURE_1D;
     int64_t iw = w - 2 * border, ih = two ? h - 2 * border : 1;
+    tex_image **slot = face >= 0 ? &o->face[face] : level_slot(o, level);
+    image_release(*slot);
+    *slot = NULL;
+    o->levels |= 1u << level;
+    o->lw[level] = (int32_t)(iw > 0 ? iw : 0);
+    o->lh[level] = (int32_t)(ih > 0 ? ih : 0);
+    if (level == 0 && face <= 0)
+        o->lost = 0;
+    if (depth)
+        base = o->depth_mode; /* the depth is drawn as luminance, intensity or alpha */
+    if (level == 0 || level == o->base_level) {
+        o->depth = depth;
+        o->base_format = base;
+    }
+    if (face >= 0)
+        o->levels &= ~(1u << level); /* faces live in o->face */
     if (iw <= 0 || ih <= 0 || !id)
         return; /* an image with no texels, or undefined contents: no texturing */
     const uint8_t *px = interp_pixels_fetch(ip, id, bytes, &o->lost);
@@ -601,8 +710,12 @@ static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t inte
                              (size_t)border) * ps,
                        (size_t)iw, format, type, base);
     img->hash = image_hash(img);
-    o->img = img;
-    o->levels = 1;
+    *slot = img;
+    /* A rectangle has no mipmaps (ARB_texture_rectangle), whatever
+     * GL_GENERATE_MIPMAP says. */
+    if (o->generate_mipmap && level == o->base_level && face < 0 &&
+        o->target != GL_TEXTURE_RECTANGLE)
+        generate_levels(ip, o, level);
 }
 
 void interp_teximage1d(interp *ip, const rgl_cmd *cmd)
@@ -619,12 +732,13 @@ void interp_teximage2d(interp *ip, const rgl_cmd *cmd)
                   arg_enum(cmd, 7), (uint32_t)cmd->arg[8].v.u);
 }
 
-/* A private copy of o's image before a change. */
-static tex_image *image_own(interp *ip, tex_obj *o)
+/* A private copy of the image in *slot (one of o's levels) before a change. */
+static tex_image *image_own(interp *ip, tex_image **slot)
 {
-    if (o->img->refs == 1)
-        return o->img;
-    size_t n = sizeof *o->img + (size_t)o->img->width * (size_t)o->img->height * 4;
+    tex_image *old = *slot;
+    if (old->refs == 1)
+        return old;
+    size_t n = sizeof *old + (size_t)old->width * (size_t)old->height * 4;
     if (!interp_budget_texels(ip, n))
         return NULL;
     tex_image *c = tr_realloc(NULL, n);
@@ -633,10 +747,10 @@ static tex_image *image_own(interp *ip, tex_obj *o)
             ip->scene->failed = true;
         return NULL;
     }
-    memcpy(c, o->img, n);
+    memcpy(c, old, n);
     c->refs = 1;
-    o->img->refs--;
-    o->img = c;
+    old->refs--;
+    *slot = c;
     return c;
 }
 
@@ -659,22 +773,30 @@ void interp_tex_subimage(interp *ip, int dims, GLenum target, int64_t level, int
 {
     if (interp_reject_in_begin(ip))
         return;
+    int face = target >= GL_TEXTURE_CUBE_MAP_POSITIVE_X && target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z
+                   ? (int)(target - GL_TEXTURE_CUBE_MAP_POSITIVE_X)
+                   : -1;
     if (dims == 1 ? target != GL_TEXTURE_1D
-                  : target != GL_TEXTURE_2D && target != GL_TEXTURE_RECTANGLE) {
+                  : target != GL_TEXTURE_2D && target != GL_TEXTURE_RECTANGLE && face < 0) {
         interp_bad_enum(ip, "texture target", target);
         return;
     }
     size_t bytes;
     if (!check_image(ip, format, type, w, h, &bytes))
         return;
-    tex_obj *o = bound_obj(ip, target, false);
-    if (level != 0)
-        return; /* other levels are not translated */
-    if (!o || !o->img) {
-        interp_bad_op(ip, "texture sub-image on a texture with no level 0");
+    tex_obj *o = bound_obj(ip, face >= 0 ? GL_TEXTURE_CUBE_MAP : target, false);
+    if (level < 0 || level >= TEX_LEVELS) {
+        interp_bad_value(ip, "texture sub-image level");
         return;
     }
-    if (x0 < 0 || y0 < 0 || x0 + w > o->img->width || y0 + h > o->img->height) {
+    if (face >= 0 && level > 0)
+        return; /* a cube map's levels are not drawn (tex_image_set) */
+    tex_image **slot = !o ? NULL : face >= 0 ? &o->face[face] : level_slot(o, (int)level);
+    if (!slot || !*slot) {
+        interp_bad_op(ip, "texture sub-image on a texture level with no image");
+        return;
+    }
+    if (x0 < 0 || y0 < 0 || x0 + w > (*slot)->width || y0 + h > (*slot)->height) {
         interp_bad_value(ip, "texture sub-image region outside the texture");
         return;
     }
@@ -685,7 +807,7 @@ void interp_tex_subimage(interp *ip, int dims, GLenum target, int64_t level, int
     if (w == 0 || h == 0 || !id)
         return;
     const uint8_t *px = interp_pixels_fetch(ip, id, bytes, &o->lost);
-    tex_image *img = px ? image_own(ip, o) : NULL;
+    tex_image *img = px ? image_own(ip, slot) : NULL;
     if (!img)
         return;
     size_t ps = pixel_bytes(format, type, true);
@@ -693,6 +815,9 @@ void interp_tex_subimage(interp *ip, int dims, GLenum target, int64_t level, int
         convert_pixels(img->rgba + ((size_t)(y0 + y) * (size_t)img->width + (size_t)x0) * 4,
                        px + (size_t)y * (size_t)w * ps, (size_t)w, format, type, o->base_format);
     img->hash = image_hash(img);
+    if (o->generate_mipmap && level == o->base_level && face < 0 &&
+        o->target != GL_TEXTURE_RECTANGLE)
+        generate_levels(ip, o, (int)level);
 }
 
 void interp_tex_image3d(interp *ip, int32_t level, int32_t internal, int64_t w, int64_t h,
@@ -761,7 +886,9 @@ void interp_tex_image3d(interp *ip, int32_t level, int32_t internal, int64_t w, 
                            (size_t)iw, format, type, base);
     img->hash = image_hash(img);
     o->img = img;
-    o->levels = 1;
+    /* GL_GENERATE_MIPMAP: the levels follow (a 3D texture is drawn from
+     * its level 0, so only their presence matters). */
+    o->levels = o->generate_mipmap ? ~0u : 1u;
     o->depth3 = (int)id3;
 }
 
@@ -792,7 +919,7 @@ void interp_tex_subimage3d(interp *ip, int64_t level, int64_t x0, int64_t y0, in
     if (w == 0 || h == 0 || d == 0 || !id)
         return;
     const uint8_t *px = interp_pixels_fetch(ip, id, bytes * (size_t)d, &o->lost);
-    tex_image *img = px ? image_own(ip, o) : NULL;
+    tex_image *img = px ? image_own(ip, &o->img) : NULL;
     if (!img)
         return;
     size_t ps = pixel_bytes(format, type, true);
@@ -876,8 +1003,10 @@ void interp_build2dmipmaps(interp *ip, const rgl_cmd *cmd)
         img->hash = image_hash(img);
         image_release(src);
         o->img = img;
+        o->lw[0] = img->width;
+        o->lh[0] = img->height;
     }
-    o->levels = UINT32_MAX;
+    generate_levels(ip, o, 0);
 }
 
 void interp_pixelstore(interp *ip, const rgl_cmd *cmd)
@@ -931,17 +1060,20 @@ static void tex_depth_mode(interp *ip, tex_obj *o, GLenum mode)
     if (!o->depth || was == mode)
         return;
     o->base_format = mode;
-    tex_image *img = o->img ? image_own(ip, o) : NULL;
-    if (!img)
-        return;
-    size_t n = (size_t)img->width * (size_t)img->height;
-    for (size_t i = 0; i < n; i++) {
-        uint8_t *t = img->rgba + i * 4, d = was == GL_ALPHA ? t[3] : t[0];
-        bool alpha = mode == GL_ALPHA;
-        t[0] = t[1] = t[2] = alpha ? 255 : d;
-        t[3] = mode == GL_LUMINANCE ? 255 : d;
+    for (int k = 0; k < TEX_LEVELS; k++) { /* every level (a depth texture's mipmaps) */
+        tex_image **slot = level_slot(o, k);
+        tex_image *img = *slot ? image_own(ip, slot) : NULL;
+        if (!img)
+            continue;
+        size_t n = (size_t)img->width * (size_t)img->height;
+        for (size_t i = 0; i < n; i++) {
+            uint8_t *t = img->rgba + i * 4, d = was == GL_ALPHA ? t[3] : t[0];
+            bool alpha = mode == GL_ALPHA;
+            t[0] = t[1] = t[2] = alpha ? 255 : d;
+            t[3] = mode == GL_LUMINANCE ? 255 : d;
+        }
+        img->hash = image_hash(img);
     }
-    img->hash = image_hash(img);
 }
 
 void interp_texparameter(interp *ip, const rgl_cmd *cmd)
@@ -952,9 +1084,9 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
     const rgl_arg *pa = &cmd->arg[2];
     double v = pa->kind == RGL_ARG_SCALAR ? arg_num(pa) : (pa->count ? pa->array[0] : 0);
     bool rect = target == GL_TEXTURE_RECTANGLE;
-    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && !rect && target != GL_TEXTURE_3D) {
-        if (target != GL_TEXTURE_CUBE_MAP)
-            interp_bad_enum(ip, "texture target", target);
+    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && !rect && target != GL_TEXTURE_3D &&
+        target != GL_TEXTURE_CUBE_MAP) {
+        interp_bad_enum(ip, "texture target", target);
         return;
     }
     GLenum e = interp_enum_of(v);
@@ -1009,8 +1141,27 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
             return;
         }
         break;
+    case GL_TEXTURE_BASE_LEVEL: case GL_TEXTURE_MAX_LEVEL:
+        if (v < 0 || !isfinite(v)) {
+            interp_bad_value(ip, "negative texture level");
+            return;
+        }
+        /* ARB_texture_rectangle: level 0 is the base. */
+        if (rect && pname == GL_TEXTURE_BASE_LEVEL && v != 0) {
+            interp_bad_value(ip, "rectangle texture base level other than 0");
+            return;
+        }
+        break;
+    case GL_TEXTURE_MIN_LOD: case GL_TEXTURE_MAX_LOD:
+        if (!isfinite(v)) {
+            interp_bad_value(ip, "texture level of detail");
+            return;
+        }
+        break;
+    case GL_GENERATE_MIPMAP:
+        break;
     default:
-        return; /* priority, LOD: nothing POV-Ray shows */
+        return; /* priority: nothing POV-Ray shows */
     }
     tex_obj *o = bound_obj(ip, target, true);
     if (!o) {
@@ -1024,6 +1175,16 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
             double c = pa->array[k];
             o->border[k] = clamp01((float)(is_int ? (2 * c + 1) / 4294967295.0 : c));
         }
+    } else if (pname == GL_TEXTURE_BASE_LEVEL) {
+        o->base_level = v > 1000 ? 1000 : (int32_t)v;
+    } else if (pname == GL_TEXTURE_MAX_LEVEL) {
+        o->max_level = v > 1000 ? 1000 : (int32_t)v;
+    } else if (pname == GL_TEXTURE_MIN_LOD) {
+        o->min_lod = (float)(v < -1000 ? -1000 : v > 1000 ? 1000 : v);
+    } else if (pname == GL_TEXTURE_MAX_LOD) {
+        o->max_lod = (float)(v < -1000 ? -1000 : v > 1000 ? 1000 : v);
+    } else if (pname == GL_GENERATE_MIPMAP) {
+        o->generate_mipmap = v != 0;
     } else if (pname == GL_DEPTH_TEXTURE_MODE) {
         tex_depth_mode(ip, o, e);
     } else if (pname == GL_TEXTURE_WRAP_R) {
@@ -1089,7 +1250,12 @@ void interp_texenv(interp *ip, const rgl_cmd *cmd)
             return;
         }
         ip->st.a.texture.env_mode = m;
-    } else if (pname == GL_TEXTURE_ENV_COLOR) {
+    } else if (pa->kind == RGL_ARG_SCALAR || pa->count >= 1) {
+        if (pname != GL_TEXTURE_ENV_COLOR &&
+            interp_combine_texenv(ip, pname, pa->kind == RGL_ARG_SCALAR ? arg_num(pa) : pa->array[0]))
+            return;
+    }
+    if (pname == GL_TEXTURE_ENV_COLOR) {
         if (pa->kind == RGL_ARG_SCALAR || pa->count < 4)
             return;
         bool is_int = pa->type == RGL_T_i;
@@ -1183,11 +1349,9 @@ int interp_textures_copy(interp *dst, const interp *src)
     if (s->n) /* objs is NULL for an empty table: memcpy(NULL, NULL, 0) is undefined */
         memcpy(t->objs, s->objs, s->n * sizeof *t->objs);
     for (size_t i = 0; i < t->n; i++)
-        if (t->objs[i].img)
-            t->objs[i].img->refs++;
+        obj_retain(&t->objs[i]);
     for (size_t k = 0; k < ZEROS(t); k++)
-        if (t->zero[k].img)
-            t->zero[k].img->refs++;
+        obj_retain(&t->zero[k]);
     dst->tex = t;
     return 0;
 }
@@ -1198,9 +1362,9 @@ void interp_textures_free(interp *ip)
     if (!t)
         return;
     for (size_t i = 0; i < t->n; i++)
-        image_release(t->objs[i].img);
+        obj_release(&t->objs[i]);
     for (size_t k = 0; k < ZEROS(t); k++)
-        image_release(t->zero[k].img);
+        obj_release(&t->zero[k]);
     namemap_finish(&t->names);
     tr_free(t->objs);
     tr_free(t);
@@ -1211,20 +1375,57 @@ void interp_textures_free(interp *ip)
 
 static bool mipmap_filter(GLenum f) { return f != GL_NEAREST && f != GL_LINEAR; }
 
-/* GL 3.8.10: complete when level 0 exists and, for a mipmapping
- * minification filter, every level down to 1x1 has the expected size. */
-static bool complete(const tex_obj *o)
+/* The last level of the mipmap chain from base b (GL 2.1 3.8.8: q, at
+ * most GL_TEXTURE_MAX_LEVEL). */
+static int last_level(const tex_obj *o, int b)
 {
-    if (!o->img)
+    int p = 0;
+    while ((o->lw[b] >> p) > 1 || (o->lh[b] >> p) > 1)
+        p++;
+    int q = b + p;
+    if (q > o->max_level)
+        q = o->max_level;
+    return q < TEX_LEVELS ? q : TEX_LEVELS - 1;
+}
+
+/* A 3D texture's completeness: level 0 and, for a mipmapping
+ * minification filter, every level down to 1 x 1 x 1 defined with the
+ * size halving gives (interp_tex_image3d counts them). */
+static bool complete3d(const tex_obj *o)
+{
+    if (!o->img || !o->depth3)
         return false;
     if (!mipmap_filter(o->min_filter))
         return true;
-    int top = 0, h = o->depth3 ? o->img->height / o->depth3 : o->img->height;
+    int top = 0, h = o->img->height / o->depth3;
     while ((o->img->width >> top) > 1 || (h >> top) > 1 || (o->depth3 >> top) > 1)
         top++;
     for (int k = 0; k <= top && k < 32; k++)
         if (!(o->levels & (1u << k)))
             return false;
+    return true;
+}
+
+/* GL 2.1 3.8.10: complete when the base level (GL_TEXTURE_BASE_LEVEL) has
+ * an image and, for a mipmapping minification filter, every level from it
+ * to q has the size halving gives. A base level past the levels GL can
+ * hold, or above GL_TEXTURE_MAX_LEVEL, is incomplete. */
+static bool complete(tex_obj *o)
+{
+    if (o->target == GL_TEXTURE_3D) /* drawn from level 0; the others only counted */
+        return complete3d(o);
+    int b = o->base_level;
+    if (b < 0 || b >= TEX_LEVELS || b > o->max_level || !*level_slot(o, b))
+        return false;
+    if (!mipmap_filter(o->min_filter))
+        return true;
+    int q = last_level(o, b);
+    for (int k = b + 1; k <= q; k++) {
+        int32_t ew = o->lw[b] >> (k - b), eh = o->lh[b] >> (k - b);
+        if (!(o->levels & (1u << k)) || o->lw[k] != (ew > 0 ? ew : 1) ||
+            o->lh[k] != (eh > 0 ? eh : 1) || !*level_slot(o, k))
+            return false;
+    }
     return true;
 }
 
@@ -1241,10 +1442,14 @@ bool interp_texture_rect_on(const interp *ip, uint32_t k)
     return rect && !c[UCAP(TEXTURE_3D)] && !c[UCAP(TEXTURE_CUBE_MAP)];
 }
 
-/* The unit's enabled target: a rectangle wins over 2D, 2D over 1D. */
+/* The unit's enabled target, by GL's priority when several are enabled
+ * (GL 2.1 3.8.15 with ARB_texture_rectangle: cube map, 3D, rectangle, 2D,
+ * 1D). */
 static tex_obj *draw_obj(interp *ip, const interp_tex_unit *u, uint32_t k)
 {
-    if (u->caps[UCAP(TEXTURE_3D)] && !u->caps[UCAP(TEXTURE_CUBE_MAP)])
+    if (u->caps[UCAP(TEXTURE_CUBE_MAP)])
+        return get_obj(ip, GL_TEXTURE_CUBE_MAP, u->texture->binding_cube, false);
+    if (u->caps[UCAP(TEXTURE_3D)])
         return get_obj(ip, GL_TEXTURE_3D, u->texture->binding_3d, false);
     if (interp_texture_rect_on(ip, k))
         return get_obj(ip, GL_TEXTURE_RECTANGLE, u->texture->binding_rect, false);
@@ -1256,6 +1461,96 @@ static tex_obj *draw_obj(interp *ip, const interp_tex_unit *u, uint32_t k)
 }
 
 static bool clamps(GLenum wrap) { return wrap != GL_REPEAT && wrap != GL_MIRRORED_REPEAT; }
+
+/* A cube map's six faces as scene textures, -Z first, each linked to the
+ * next, +X holding the sampling (scene_texture.cube); the base's index or
+ * -1 (incomplete: a face missing or of another size, GL 2.1 3.8.10, and
+ * GL then draws untextured). A second unit with it is drawn without it. */
+static int32_t cube_for_draw(interp *ip, tex_obj *o, const interp_tex_unit *u, int k)
+{
+    for (int f = 0; f < 6; f++)
+        if (!o->face[f] || o->face[f]->width != o->face[0]->width ||
+            o->face[f]->height != o->face[0]->height)
+            return -1;
+    if (ip->draw_unit[1] >= 0) {
+        interp_note(ip, DIAG_NOTE_MULTITEX);
+        if (ip->draw_unit[1] == k)
+            return -1;
+    }
+    if (mipmap_filter(o->min_filter))
+        interp_note(ip, DIAG_NOTE_TEX_MIPMAP);
+    GLenum env = u->texture->env_mode;
+    if (env != GL_MODULATE && env != GL_REPLACE) {
+        interp_note(ip, DIAG_NOTE_TEXTURE);
+        env = GL_MODULATE;
+    }
+    int32_t next = -1;
+    for (int f = 5; f >= 0; f--) {
+        const tex_image *im = o->face[f];
+        scene_texture st;
+        memset(&st, 0, sizeof st);
+        st.width = im->width;
+        st.height = im->height;
+        st.hash = im->hash;
+        st.linear = o->mag_filter == GL_LINEAR;
+        st.env_mode = env;
+        memcpy(st.env_color, u->texture->env_color, sizeof st.env_color);
+        st.colour_is_texel = env == GL_REPLACE && o->base_format != GL_ALPHA;
+        st.cube = f == 0;
+        st.mip_next = next;
+        size_t n = (size_t)im->width * (size_t)im->height * 4;
+        if (!interp_budget_texels(ip, n))
+            return -1;
+        st.rgba = tr_realloc(NULL, n);
+        if (!st.rgba) {
+            ip->scene->failed = true;
+            return -1;
+        }
+        memcpy(st.rgba, im->rgba, n);
+        next = scene_add_texture(ip->scene, &st);
+        if (next < 0)
+            return -1;
+    }
+    return next;
+}
+
+/* The scene textures of o's levels from the base to q, last first, each
+ * linked to the next (scene_texture.mip_next); returns the base's index.
+ * st holds the sampling they share; ms and mt double each level as the
+ * mirror clamp does the base (interp_tex_mirror_fill), so the level of
+ * detail the writer computes from the sizes stays GL's. */
+static int32_t mip_chain(interp *ip, tex_obj *o, scene_texture *st, bool ms, bool mt)
+{
+    int b = o->base_level, q = last_level(o, b);
+    int32_t next = -1;
+    st->mip_filter = o->min_filter;
+    st->min_lod = o->min_lod;
+    st->max_lod = o->max_lod;
+    for (int k = q; k >= b; k--) {
+        const tex_image *im = *level_slot(o, k);
+        scene_texture lt = *st;
+        lt.width = im->width * (ms ? 2 : 1);
+        lt.height = im->height * (mt ? 2 : 1);
+        lt.hash = im->hash ^ (ms ? 0x9e3779b97f4a7c15ull : 0) ^ (mt ? 0xc2b2ae3d27d4eb4full : 0);
+        lt.mip_next = next;
+        size_t n = (size_t)lt.width * (size_t)lt.height * 4;
+        if (!interp_budget_texels(ip, n))
+            return -1;
+        lt.rgba = tr_realloc(NULL, n);
+        if (!lt.rgba) {
+            ip->scene->failed = true;
+            return -1;
+        }
+        if (ms || mt)
+            interp_tex_mirror_fill(lt.rgba, im, ms, mt);
+        else
+            memcpy(lt.rgba, im->rgba, n);
+        next = scene_add_texture(ip->scene, &lt);
+        if (next < 0)
+            return -1;
+    }
+    return next;
+}
 
 /* The 2D image a 3D texture shows on a primitive over which r is
  * constant (interp_tex_slice); NULL, with a note, when r varies (or is
@@ -1295,7 +1590,7 @@ int32_t interp_texture_for_unit(interp *ip, int k)
         return -1;
     interp_tex_unit u = interp_unit(ip, (uint32_t)k);
     if (!u.caps[UCAP(TEXTURE_2D)] && !u.caps[UCAP(TEXTURE_1D)] && !u.caps[UCAP(TEXTURE_3D)] &&
-        !interp_texture_rect_on(ip, (uint32_t)k))
+        !u.caps[UCAP(TEXTURE_CUBE_MAP)] && !interp_texture_rect_on(ip, (uint32_t)k))
         return -1;
     tex_obj *o = draw_obj(ip, &u, (uint32_t)k);
     if (o && o->lost) {
@@ -1303,25 +1598,46 @@ int32_t interp_texture_for_unit(interp *ip, int k)
         snprintf(what, sizeof what, "texture %u (pixels #%u unreadable)", o->name, o->lost);
         interp_missing(ip, what);
     }
+    if (o && o->target == GL_TEXTURE_CUBE_MAP)
+        return cube_for_draw(ip, o, &u, k);
     if (!o || !complete(o))
         return -1;
     /* A 3D texture: the slice its r picks, when r is constant. */
     tex_image *slice = NULL;
     if (o->depth3 && !(slice = tex3d_slice(ip, o, k)))
         return -1;
-    const tex_image *im = slice ? slice : o->img;
+    const tex_image *im = slice ? slice : *level_slot(o, o->base_level); /* complete: not NULL */
     int32_t idx = -1;
     GLenum env = u.texture->env_mode;
+    if (env == GL_COMBINE) { /* as the fixed mode it equals, if any */
+        GLenum m = interp_combine_mode(u.texture, k, ip->draw_unit[0] == k);
+        env = m ? m : GL_COMBINE;
+    }
     /* A second unit's ADD and BLEND are combined (povwrite's multitexture
      * pigment); a lone unit draws them as MODULATE. */
     bool chained = ip->draw_unit[1] == k && (env == GL_ADD || env == GL_BLEND);
-    if (env != GL_MODULATE && env != GL_REPLACE && env != GL_DECAL && !chained) {
+    /* A lone unit's ADD and BLEND: povmt_env_texture, povmt_env_lit.
+     * Of an alpha texture they keep the colour, as MODULATE of its white texels. */
+    bool lone = ip->draw_unit[1] < 0 && (env == GL_ADD || env == GL_BLEND);
+    if ((env == GL_ADD || env == GL_BLEND) && o->base_format == GL_ALPHA)
+        env = GL_MODULATE;
+    else if (lone && ip->prim_blend != SCENE_BLEND_OPAQUE)
+        interp_note(ip, DIAG_NOTE_TEXTURE); /* drawn opaque */
+    if (env != GL_MODULATE && env != GL_REPLACE && env != GL_DECAL && !chained && !lone) {
         interp_note(ip, DIAG_NOTE_TEXTURE);
         env = GL_MODULATE;
     }
-    if (o->wrap_s == GL_MIRRORED_REPEAT || o->wrap_t == GL_MIRRORED_REPEAT ||
-        mipmap_filter(o->min_filter) || o->min_filter != o->mag_filter)
+    if (mipmap_filter(o->min_filter))
+        interp_note(ip, DIAG_NOTE_TEX_MIPMAP);
+    else if (o->min_filter != o->mag_filter)
         interp_note(ip, DIAG_NOTE_TEX_SAMPLING);
+    const gl_attribs *ga = &ip->st.a;
+    GLenum cmm = ga->lighting.color_material_mode;
+    if (env == GL_MODULATE && ga->caps[INTERP_CAP_LIGHTING] && ga->caps[INTERP_CAP_COLOR_MATERIAL] &&
+        (cmm == GL_DIFFUSE || cmm == GL_AMBIENT_AND_DIFFUSE) &&
+        (ip->prim_blend != SCENE_BLEND_OPAQUE || mipmap_filter(o->min_filter) ||
+         o->target == GL_TEXTURE_CUBE_MAP || ga->lighting.two_side || ip->draw_unit[1] >= 0))
+        interp_note(ip, DIAG_NOTE_TEX_MODULATE_CM); /* povwrite.c mesh_tint */
     /* Mirror clamp: the image mirrored once beside itself, clamped beyond
      * (interp_vertex_texcoord maps [-1, 1] onto it). */
     bool ms = interp_mirror_clamp(o->wrap_s);
@@ -1333,8 +1649,11 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     st.width = im->width * (ms ? 2 : 1);
     st.height = im->height * (mt ? 2 : 1);
     st.hash = im->hash ^ (ms ? 0x9e3779b97f4a7c15ull : 0) ^ (mt ? 0xc2b2ae3d27d4eb4full : 0);
+    st.mip_next = -1;
     st.repeat_s = !clamps(o->wrap_s) && !ms;
     st.repeat_t = o->target == GL_TEXTURE_1D || (!clamps(o->wrap_t) && !mt);
+    st.mirror_s = o->wrap_s == GL_MIRRORED_REPEAT;
+    st.mirror_t = o->target != GL_TEXTURE_1D && o->wrap_t == GL_MIRRORED_REPEAT;
     st.linear = o->mag_filter == GL_LINEAR;
     st.border_s = o->wrap_s == GL_CLAMP || o->wrap_s == GL_CLAMP_TO_BORDER ||
                   o->wrap_s == GL_MIRROR_CLAMP_TO_BORDER_EXT;
@@ -1344,6 +1663,26 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     memcpy(st.border, o->border, sizeof st.border);
     st.env_mode = env;
     memcpy(st.env_color, u.texture->env_color, sizeof st.env_color);
+    /* The alpha test per texel where the texel's alpha is the fragment's
+     * (table 3.22: DECAL takes the vertex alpha, and so does a base
+     * format without alpha); otherwise interp_alpha_face. */
+    GLenum b0 = o->base_format;
+    bool has_alpha = b0 == GL_RGBA || b0 == GL_LUMINANCE_ALPHA || b0 == GL_ALPHA ||
+                     b0 == GL_INTENSITY;
+    if (ga->caps[INTERP_CAP_ALPHA_TEST] && ga->color_buffer.alpha_func != GL_ALWAYS && has_alpha &&
+        (env == GL_MODULATE || env == GL_REPLACE)) {
+        st.alpha_func = ga->color_buffer.alpha_func;
+        st.alpha_ref = ga->color_buffer.alpha_ref;
+        st.alpha_uses_af = env != GL_REPLACE;
+        float c[4];
+        interp_surface_colour(ip, c); /* the current alpha (interp_alpha_face checks the vertices') */
+        st.alpha_af = st.alpha_uses_af ? clamp01(c[3]) : 1;
+        if (o->mag_filter == GL_LINEAR && !scene_alpha_crisp(&st))
+            interp_note(ip, DIAG_NOTE_ALPHA_TEST); /* GL_EQUAL, GL_NOTEQUAL per texel */
+    } else if (ga->caps[INTERP_CAP_ALPHA_TEST] && ga->color_buffer.alpha_func != GL_ALWAYS &&
+               has_alpha && env != GL_DECAL) {
+        interp_note(ip, DIAG_NOTE_TEXTURE); /* BLEND, ADD: drawn opaque, untested */
+    }
     /* Table 3.22: REPLACE takes the texel's colour unless the texture has
      * only alpha; DECAL of RGB (and, undefined in GL, of the luminance
      * formats, which Mesa treats as RGB) takes it outright. */
@@ -1351,8 +1690,12 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     st.colour_is_texel = (env == GL_REPLACE && b != GL_ALPHA) ||
                          (env == GL_DECAL && b != GL_RGBA && b != GL_ALPHA);
 
+    if (mipmap_filter(o->min_filter) && !slice) { /* the levels, each its own scene texture */
+        idx = mip_chain(ip, o, &st, ms, mt);
+        goto out;
+    }
     struct tex_cache *tc = &ip->tex->cache[ip->draw_unit[1] == k];
-    if (!slice && tc->img == o->img && tc->sc == ip->scene &&
+    if (!slice && tc->img == im && tc->sc == ip->scene &&
         tc->index >= 0 && (size_t)tc->index < ip->scene->ntextures &&
         tc->ntex <= ip->scene->ntextures) {
         const scene_texture *have = &ip->scene->textures[tc->index];
@@ -1374,7 +1717,7 @@ int32_t interp_texture_for_unit(interp *ip, int k)
         memcpy(st.rgba, im->rgba, n);
     idx = scene_add_texture(ip->scene, &st);
     if (idx >= 0 && !slice) {
-        tc->img = o->img;
+        tc->img = im;
         tc->sc = ip->scene;
         tc->index = idx;
         tc->ntex = ip->scene->ntextures;
@@ -1419,6 +1762,15 @@ static void texcoord_fit(interp *ip, const interp_tex_unit *u, int unit, float o
 
 void interp_vertex_texcoord(interp *ip, int unit, const double obj[4], const float nrm[3],
                             float out[2])
+{
+    float str[3];
+    interp_vertex_texcoord3(ip, unit, obj, nrm, str);
+    out[0] = str[0];
+    out[1] = str[1];
+}
+
+void interp_vertex_texcoord3(interp *ip, int unit, const double obj[4], const float nrm[3],
+                             float out[3])
 {
     interp_tex_unit u = interp_unit(ip, (uint32_t)unit);
     const struct gl_texture_unit *ts = u.texture;
@@ -1488,11 +1840,21 @@ void interp_vertex_texcoord(interp *ip, int unit, const double obj[4], const flo
         q = 1;
     out[0] = (float)(r[0] / q);
     out[1] = (float)(r[1] / q);
-    if (u.caps[UCAP(TEXTURE_3D)] && ip->tex && unit >= 0 && unit < INTERP_TEX_UNITS) {
+    out[2] = (float)(r[2] / q);
+    if (u.caps[UCAP(TEXTURE_3D)] && !u.caps[UCAP(TEXTURE_CUBE_MAP)] && ip->tex && unit >= 0 &&
+        unit < INTERP_TEX_UNITS) {
         double rq = r[2] / q;
         interp_textures *t = ip->tex;
         t->r_min[unit] = fmin(t->r_min[unit], rq);
         t->r_max[unit] = fmax(t->r_max[unit], rq);
     }
     texcoord_fit(ip, &u, unit, out);
+}
+
+bool interp_unit_cube(interp *ip, int unit)
+{
+    if (unit < 0 || unit >= INTERP_TEX_UNITS)
+        return false;
+    interp_tex_unit u = interp_unit(ip, (uint32_t)unit);
+    return u.caps[UCAP(TEXTURE_CUBE_MAP)] != 0;
 }

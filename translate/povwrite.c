@@ -20,11 +20,17 @@
 
 #include <GL/gl.h>
 #include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "dedup.h"
 #include "povwrite_light.h"
+#include "povwrite_clip.h"
 #include "povwrite_solid.h"
+#include "povwrite_cube.h"
+#include "povwrite_mipmap.h"
+#include "povwrite_fogsec.h"
 #include "povwrite_multitex.h"
 #include "povwrite_texture.h"
 #include "talloc.h"
@@ -78,6 +84,13 @@ struct povwriter {
     size_t cap_eye;
     povtex tex;          /* the frame's texture images */
     unsigned mt_count;   /* the frame's multitexture functions, for their names */
+    bool tinted;         /* the mesh's image is tinted (povlight_modulate_tint) */
+    bool per_entry;      /* no tint fits the mesh: each colour entry tints a function of it */
+    const povmip_run *mip; /* the mesh part's level choice (write_mesh2), or NULL */
+    const povcube *cube;   /* the mesh's cube map (write_mesh2), or NULL */
+    const double *cube_map; /* and the part's r over (s, t) */
+    unsigned env_id;     /* the mesh's GL_BLEND or GL_ADD image function (povmt_declare) */
+    float mod_kdp[3], mod_tint[3];
     const float **vcorner; /* colour image: 3 corner colours per kept face */
     size_t cap_vcorner;
     float *vuv; /* colour image: 3 uv per kept face */
@@ -317,6 +330,22 @@ static void put_surface(povwriter *w, outbuf *ob, const scene_look *look,
         outbuf_puts(ob, "}}");
         return;
     }
+    if (tx->env_mode == GL_BLEND || tx->env_mode == GL_ADD) {
+        if (look->lit) {
+            float kdp[3], tint[3];
+            bool tinted = povlight_modulate_tint(&w->light, look, c, kdp, tint);
+            char lit[POVMT_PIGMENT_MAX], env[POVMT_PIGMENT_MAX];
+            if (povmt_env_lit(tx, w->env_id, tinted ? tint : NULL, lit, sizeof lit, env,
+                              sizeof env) == 0) {
+                povlight_texture_env(&w->light, ob, look, c, side,
+                                     tx->env_mode == GL_BLEND ? lit : NULL,
+                                     tinted && tx->env_mode == GL_BLEND ? kdp : NULL, env);
+                return;
+            }
+        } else if (povmt_env_texture(ob, tx, w->env_id, c) == 0) {
+            return;
+        }
+    }
     if (tx->env_mode == GL_DECAL) {
         /* DECAL of RGBA: the texel over the fragment's colour by its alpha;
          * the image's alpha is POV-Ray's transmit, so the layer below
@@ -328,9 +357,45 @@ static void put_surface(povwriter *w, outbuf *ob, const scene_look *look,
         outbuf_puts(ob, "}}");
         return;
     }
+    float kdp[3], tint[3];
+    char tp[POVMT_PIGMENT_MAX];
+    if (w->per_entry && povlight_modulate_tint(&w->light, look, c, kdp, tint) &&
+        povmt_tinted(tx, w->env_id, tint, tp, sizeof tp) == 0) {
+        outbuf_puts(ob, "texture{"); /* MODULATE, this entry's diffuse colour per channel */
+        povlight_texture_tinted(&w->light, ob, look, c, side, tp, kdp);
+        outbuf_putc(ob, '}');
+        return;
+    }
     outbuf_puts(ob, "texture{"); /* MODULATE: texel times the fragment's colour */
-    povlight_texture_mapped(&w->light, ob, look, c, side, pigment);
+    if (w->tinted)
+        povlight_texture_tinted(&w->light, ob, look, c, side, pigment, w->mod_kdp);
+    else
+        povlight_texture_mapped(&w->light, ob, look, c, side, pigment);
     outbuf_putc(ob, '}');
+}
+
+/* The tint of a lit GL_MODULATE mesh's image whose diffuse colour is not
+ * grey (povlight_modulate_tint; w->tinted set for put_surface), or NULL. */
+static const float *mesh_tint(povwriter *w, const scene_vertex *verts, const scene_tri *tris,
+                              size_t nt, const scene_look *look, const scene_texture *tx,
+                              const scene_texture *tx1)
+{
+    w->tinted = w->per_entry = false;
+    if (tx1 || tx->env_mode != GL_MODULATE || tx->colour_is_texel || !look->lit)
+        return NULL;
+    /* GL_COLOR_MATERIAL's diffuse: one colour for the whole mesh, or none. */
+    const float *c = verts[look->flat ? tris[0].provoking : tris[0].v[0]].color;
+    for (size_t i = 0; i < nt && c; i++)
+        for (int k = 0; k < 4 && c; k++) {
+            const float *d = verts[k < 3 ? tris[i].v[k] : tris[i].provoking].color;
+            if (memcmp(d, c, 3 * sizeof *c) != 0)
+                c = NULL;
+        }
+    w->tinted = povlight_modulate_tint(&w->light, look, c, w->mod_kdp, w->mod_tint);
+    /* GL_COLOR_MATERIAL colours that vary: a tint per texture_list entry,
+     * through a function of the image (opaque: not under blending). */
+    w->per_entry = !c && !w->mip && !w->cube && look->blend == SCENE_BLEND_OPAQUE;
+    return w->tinted ? w->mod_tint : NULL;
 }
 
 /* Whether a prototype's mesh carries its vertex colours as one image
@@ -407,6 +472,7 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         txc.colour_is_texel = povmt_texel(tx, tx1);
         tx = &txc;
     }
+    w->tinted = w->per_entry = false;
     bool normals = look->lit;
     bool flat_normals = look->lit && look->flat;
     bool vimage = !tx && colour_image_ok(w, verts, tris, nt, look);
@@ -458,13 +524,65 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
          * fragment's (MODULATE, and REPLACE of RGBA), POV-Ray's transmit. */
         bool keep_alpha = (tx0->env_mode == GL_DECAL && !tx0->colour_is_texel) ||
                           look->blend == SCENE_BLEND_ALPHA;
-        img = povtex_map(&w->tex, sc, look->texture, uvlo, uvhi, keep_alpha, uv_scale, uv_off);
+        img = povtex_map(&w->tex, sc, look->texture, uvlo, uvhi, keep_alpha,
+                         mesh_tint(w, verts, tris, nt, look, tx0, tx1), uv_scale, uv_off);
         if (img < 0)
             return -1;
     }
-    char pigment[POVMT_PIGMENT_MAX] = "";
+    _Static_assert(POVMIP_PIGMENT_MAX >= POVMT_PIGMENT_MAX, "pigment room");
+    char pigment[POVMIP_PIGMENT_MAX] = "";
     if (tx && !tx1 && povtex_pigment(&w->tex, (size_t)img, tx, pigment) == 0)
         return -1;
+    if (tx && !tx1 && !w->cube && !w->mip && !w->per_entry && scene_alpha_crisp(tx) &&
+        tx->env_mode != GL_BLEND && tx->env_mode != GL_ADD) {
+        /* The alpha test on the filtered alpha, as GL's per fragment. */
+        float uvlo[2] = {INFINITY, INFINITY}, uvhi[2] = {-INFINITY, -INFINITY};
+        for (size_t i = 0; i < nt; i++)
+            for (int k = 0; k < 3; k++)
+                for (int a = 0; a < 2; a++) {
+                    float u = verts[tris[i].v[k]].tex[a];
+                    if (isfinite(u)) {
+                        uvlo[a] = u < uvlo[a] ? u : uvlo[a];
+                        uvhi[a] = u > uvhi[a] ? u : uvhi[a];
+                    }
+                }
+        if (povtex_alpha_pigment(ob, &w->tex, sc, look->texture, (size_t)img, uvlo, uvhi,
+                                 w->mt_count++, pigment, sizeof pigment) != 0)
+            return -1;
+    }
+    if (tx && !tx1 && w->cube) {
+        /* A cube map: GL's face and texel per pixel from (s, t, r). */
+        if (povcube_pigment(w->cube, w->cube_map, pigment, sizeof pigment) != 0)
+            return -1;
+        uv_scale[0] = uv_scale[1] = 1;
+        uv_off[0] = uv_off[1] = 0;
+    }
+    if (tx && !tx1 && w->mip) {
+        /* Mipmapped: the levels by GL's level of detail, at the mesh's own uv. */
+        float uvlo[2] = {INFINITY, INFINITY}, uvhi[2] = {-INFINITY, -INFINITY};
+        for (size_t i = 0; i < nt; i++)
+            for (int k = 0; k < 3; k++)
+                for (int a = 0; a < 2; a++) {
+                    float u = verts[tris[i].v[k]].tex[a];
+                    if (isfinite(u)) {
+                        uvlo[a] = u < uvlo[a] ? u : uvlo[a];
+                        uvhi[a] = u > uvhi[a] ? u : uvhi[a];
+                    }
+                }
+        bool keep_alpha = (tx->env_mode == GL_DECAL && !tx->colour_is_texel) ||
+                          look->blend == SCENE_BLEND_ALPHA;
+        if (povmip_pigment(ob, &w->tex, sc, look->texture, w->mip, w->mt_count++, uvlo, uvhi,
+                           keep_alpha, w->tinted ? w->mod_tint : NULL, pigment,
+                           sizeof pigment) != 0)
+            return -1;
+        uv_scale[0] = uv_scale[1] = 1;
+        uv_off[0] = uv_off[1] = 0;
+    }
+    if (tx && !tx1 && (tx->env_mode == GL_BLEND || tx->env_mode == GL_ADD || w->per_entry)) {
+        w->env_id = w->mt_count++;
+        if (povmt_declare(ob, &w->tex, (size_t)img, tx, w->env_id) != 0)
+            return -1;
+    }
     if (tx1) {
         float lo1[2] = {INFINITY, INFINITY}, hi1[2] = {-INFINITY, -INFINITY};
         for (size_t i = 0; i < nt; i++)
@@ -479,7 +597,8 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
                 }
             }
         float s1[2], o1[2];
-        int img1 = povtex_map(&w->tex, sc, look->texture1, lo1, hi1, tx1->env_mode == GL_DECAL, s1, o1);
+        int img1 = povtex_map(&w->tex, sc, look->texture1, lo1, hi1, tx1->env_mode == GL_DECAL,
+                              NULL, s1, o1);
         const scene_tri *t0 = &tris[0];
         const float *cf = verts[look->flat ? t0->provoking : t0->v[0]].color;
         if (img1 < 0 || povmt_pigment(ob, &w->tex, (size_t)img, (size_t)img1, tx0, tx1, uv_scale,
@@ -663,8 +782,15 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     /* Layered textures (fog, DECAL of RGBA) enter texture_list by name only. */
     bool named = look->fog || (tx && tx->env_mode == GL_DECAL && !tx->colour_is_texel);
     if (named) {
-        if (look->fog)
-            povlight_fog_declare(&w->light, ob, "rgl_fog", to_eye);
+        if (look->fog && look->fog_own && !look->fog_fixed) { /* the fog coordinate's own plane */
+            mat4 fp;
+            memset(&fp, 0, sizeof fp);
+            for (int k = 0; k < 4; k++)
+                fp.m[k * 4 + 2] = look->fog_plane[k];
+            povlight_fog_declare(&w->light, ob, "rgl_fog", &fp);
+        } else if (look->fog) {
+            povfog_declare(&w->light, ob, "rgl_fog", to_eye, look);
+        }
         for (size_t i = 0; i < w->col.count; i++) {
             outbuf_puts(ob, "#declare rgl_t");
             outbuf_u64(ob, i);
@@ -798,7 +924,12 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         w->light.s->materials[look->material].two_sided) {
         /* GL_BACK's material on the faces' inner side (see the file
          * comment); one texture for the whole mesh, in the first colour. */
-        if (look->fog) { /* a layered texture enters by name only */
+        if (tx) { /* the back takes the texture too (GL textures both sides) */
+            outbuf_puts(ob, "#declare rgl_back=");
+            put_surface(w, ob, look, tx, pigment, c0, 1);
+            outbuf_puts(ob, look->fog ? "texture{rgl_fog}\ninterior_texture{rgl_back}\n"
+                                      : "\ninterior_texture{rgl_back}\n");
+        } else if (look->fog) { /* a layered texture enters by name only */
             outbuf_puts(ob, "#declare rgl_back=");
             povlight_texture(&w->light, ob, look, c0, 1);
             outbuf_puts(ob, "texture{rgl_fog}\ninterior_texture{rgl_back}\n");
@@ -810,12 +941,86 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     }
     if (to_eye)
         put_matrix(ob, to_eye);
-    if (sc && !w->in_proto)
+    if (sc && !w->in_proto) {
         povwrite_scissor(ob, sc, look); /* after the matrix: in eye space */
+        povwrite_clip(ob, sc, look);
+        povwrite_stencil(ob, sc, look);
+    }
     if (w->mesh_no_shadow)
         outbuf_puts(ob, "no_shadow\n");
     outbuf_puts(ob, "}\n");
     return 0;
+}
+
+/* Triangles of a curved mipmapped mesh by their rounded level of detail. */
+typedef struct mip_face {
+    int32_t key; /* lambda * POVMIP_STEPS, rounded */
+    uint32_t i;  /* index in the mesh's triangles */
+} mip_face;
+
+static int mip_face_cmp(const void *a, const void *b)
+{
+    const mip_face *x = a, *y = b;
+    if (x->key != y->key)
+        return x->key < y->key ? -1 : 1;
+    return x->i < y->i ? -1 : x->i > y->i;
+}
+
+/* A mipmapped mesh: one mesh2 per planar run (lambda per pixel), and one
+ * per rounded lambda for the triangles on planes of their own (povmip_split). */
+static int write_mipmapped(povwriter *w, outbuf *ob, const scene_vertex *verts,
+                           const scene_tri *tris, size_t nt, const scene_look *look,
+                           const mat4 *to_eye)
+{
+    const scene *sc = w->light.s;
+    const scene_texture *t = &sc->textures[look->texture];
+    mip_face *single = NULL;
+    scene_tri *group = NULL;
+    size_t ns = 0;
+    int rc = -1;
+    if (nt > SIZE_MAX / sizeof *single || !(single = tr_realloc(NULL, nt * sizeof *single)) ||
+        !(group = tr_realloc(NULL, nt * sizeof *group)))
+        goto fail;
+    for (size_t i = 0; i < nt;) {
+        povmip_run r;
+        size_t run = povmip_split(&sc->camera, to_eye, verts, tris + i, nt - i, t->width,
+                                  t->height, &r);
+        if (r.planar) {
+            w->mip = &r;
+            int e = write_mesh2_part(w, ob, verts, tris + i, run, look, to_eye, NULL);
+            w->mip = NULL;
+            if (e != 0)
+                goto fail;
+        } else {
+            double k = r.lambda * POVMIP_STEPS;
+            k = k < -1e6 ? -1e6 : k > 1e6 ? 1e6 : k;
+            single[ns].key = (int32_t)lround(k);
+            single[ns++].i = (uint32_t)i;
+        }
+        i += run;
+    }
+    qsort(single, ns, sizeof *single, mip_face_cmp);
+    for (size_t a = 0; a < ns;) {
+        size_t b = a;
+        while (b < ns && single[b].key == single[a].key) {
+            group[b - a] = tris[single[b].i];
+            b++;
+        }
+        povmip_run r;
+        memset(&r, 0, sizeof r);
+        r.lambda = (double)single[a].key / POVMIP_STEPS;
+        w->mip = &r;
+        int e = write_mesh2_part(w, ob, verts, group, b - a, look, to_eye, NULL);
+        w->mip = NULL;
+        if (e != 0)
+            goto fail;
+        a = b;
+    }
+    rc = 0;
+fail:
+    tr_free(group);
+    tr_free(single);
+    return rc;
 }
 
 /* A mesh: with two texture units, one mesh2 per run of triangles whose
@@ -825,6 +1030,30 @@ static int write_mesh2(povwriter *w, outbuf *ob, const scene_vertex *verts,
                        const mat4 *to_eye)
 {
     const scene *sc = w->light.s;
+    if (sc && look->texture >= 0 && (size_t)look->texture < sc->ntextures && look->texture1 < 0 &&
+        sc->textures[look->texture].cube) {
+        /* A cube map: one mesh2 per run whose r is one function of (s, t). */
+        povcube cube;
+        if (povcube_declare(ob, &w->tex, sc, look->texture, w->mt_count++, &cube) != 0)
+            return -1;
+        while (nt > 0) {
+            double map[6];
+            size_t run = povmt_run(verts, tris, nt, map);
+            w->cube = &cube;
+            w->cube_map = map;
+            int rc = write_mesh2_part(w, ob, verts, tris, run, look, to_eye, NULL);
+            w->cube = NULL;
+            if (rc != 0)
+                return -1;
+            tris += run;
+            nt -= run;
+        }
+        return 0;
+    }
+    if (sc && look->texture >= 0 && (size_t)look->texture < sc->ntextures && look->texture1 < 0 &&
+        sc->textures[look->texture].mip_filter && !w->in_proto) {
+        return write_mipmapped(w, ob, verts, tris, nt, look, to_eye);
+    }
     if (look->texture < 0 || look->texture1 < 0 || !sc || (size_t)look->texture >= sc->ntextures ||
         (size_t)look->texture1 >= sc->ntextures)
         return write_mesh2_part(w, ob, verts, tris, nt, look, to_eye, NULL);
@@ -1060,7 +1289,8 @@ static double near_t(const scene_camera *cam, const double from[3], const double
 /* Bitmaps and pixel rectangles (scene.overlay): one image covering the
  * camera's view exactly, pixel for pixel (image_map without
  * interpolation: each ray through a pixel centre meets its texel's
- * centre), just beyond the near plane, so in front of the whole scene.
+ * centre), just beyond the near plane, so in front of the whole scene, or
+ * at the depth GL tested its pixels at (scene.overlay_at_depth).
  * Unlit (the #default finish), casting no shadow, seen in no reflection
  * or radiosity. Transparent where nothing was drawn. */
 static int write_overlay(povwriter *w, outbuf *ob, const scene *s)
@@ -1084,6 +1314,13 @@ static int write_overlay(povwriter *w, outbuf *ob, const scene *s)
         /* Just past the near plane: a ten-thousandth of its distance for
          * a camera with a centre, a hair along the ray for a parallel one. */
         tt = ortho ? (tt < 0 && !cam->has_clip ? 0 : tt) + 1e-4 : (tt > 0 ? tt * (1 + 1e-4) : 1e-3);
+        /* Depth-tested pixels at one depth: in that plane (interp_pixdepth.c). */
+        if (s->overlay_at_depth) {
+            const double *a = s->overlay_plane;
+            double den = dot3(a, r), at = den != 0 ? -(dot3(a, from) + a[3]) / den : NAN;
+            if (isfinite(at) && (at > 0 || ortho))
+                tt = at;
+        }
         for (int k = 0; k < 3; k++)
             p[c][k] = from[k] + tt * r[k];
         if (!finite3d(p[c]))

@@ -321,7 +321,7 @@ void povlight_texture(const povlight *pl, outbuf *ob, const scene_look *look, co
  * terms unscaled and diffuse the mean of the material's (POV-Ray's diffuse
  * is one number). */
 static void texture_body(const povlight *pl, outbuf *ob, const scene_look *look, const float c[4],
-                         int side, const char *pigment)
+                         int side, const char *pigment, const float *kdp, double gain)
 {
     const scene *s = pl->s;
     double t = 1 - (double)c[3];
@@ -361,20 +361,25 @@ static void texture_body(const povlight *pl, outbuf *ob, const scene_look *look,
     double p[3], amb[3], em[3];
     bool in_set = m->lightset < SCENE_MAX_LIGHTSETS && m->lightset < s->nlightsets;
     const float *la = in_set ? pl->set_ambient[m->lightset] : pl->light_ambient;
+    /* The per-channel form belongs to untextured sets (begin_sets): a
+     * pigment never meets it. */
     const double *chan = in_set && !pl->opt.no_shadows && pl->set_channel[m->lightset][0] > 0
                              ? pl->set_channel[m->lightset]
                              : NULL;
+    /* kdp: the pigment is the texel times kdp / max(kdp) (povlight_modulate_tint),
+     * and diffuse max(kdp) makes the product the texel times kd per channel. */
+    double kmax = kdp ? fmax(kdp[0], fmax(kdp[1], kdp[2])) : 1;
     for (int k = 0; k < 3; k++) {
         /* Per-channel form: lights of colour ls = t ld, so kd ld = (kd / t) ls. */
         double kdk = chan && !pigment ? kd[k] / chan[k] : kd[k];
-        p[k] = pigment ? 1 : kdk > MIN_PIGMENT ? kdk : MIN_PIGMENT;
-        amb[k] = ka[k] * ((double)m->model_ambient[k] + la[k]) / p[k];
-        em[k] = ke[k] / p[k];
+        p[k] = pigment ? (kdp ? kdp[k] / kmax : 1) : kdk > MIN_PIGMENT ? kdk : MIN_PIGMENT;
+        amb[k] = gain * ka[k] * ((double)m->model_ambient[k] + la[k]) / p[k];
+        em[k] = gain * ke[k] / p[k];
     }
     if (pigment) {
         outbuf_puts(ob, pigment);
         outbuf_puts(ob, "}finish{diffuse ");
-        put_num(ob, ((double)kd[0] + kd[1] + kd[2]) / 3);
+        put_num(ob, gain * (kdp ? kmax : ((double)kd[0] + kd[1] + kd[2]) / 3));
         outbuf_puts(ob, " ambient ");
     } else {
         outbuf_puts(ob, t > 0 ? "rgbt<" : "rgb<");
@@ -387,7 +392,9 @@ static void texture_body(const povlight *pl, outbuf *ob, const scene_look *look,
             outbuf_putc(ob, ',');
             put_num(ob, t);
         }
-        outbuf_puts(ob, ">}finish{diffuse 1 ambient ");
+        outbuf_puts(ob, ">}finish{diffuse ");
+        put_num(ob, gain);
+        outbuf_puts(ob, " ambient ");
     }
     put_rgb3(ob, amb);
     /* Always named: the #default finish (unlit surfaces) has emission 1. */
@@ -398,7 +405,7 @@ static void texture_body(const povlight *pl, outbuf *ob, const scene_look *look,
         outbuf_putc(ob, '0');
     /* POV-Ray's highlights are not dimmed by transmit; GL blends them
      * with the rest of the colour, by alpha. */
-    double spec = ((double)ks[0] + ks[1] + ks[2]) / 3 * (1 - t);
+    double spec = gain * ((double)ks[0] + ks[1] + ks[2]) / 3 * (1 - t);
     /* With shadows each light is one light of its diffuse colour
      * (povlight_lights): the highlight is the set's multiple of it. */
     if (!pl->opt.no_shadows && in_set && !chan)
@@ -420,13 +427,68 @@ static void texture_body(const povlight *pl, outbuf *ob, const scene_look *look,
 void povlight_texture_body(const povlight *pl, outbuf *ob, const scene_look *look,
                            const float c[4], int side)
 {
-    texture_body(pl, ob, look, c, side, NULL);
+    texture_body(pl, ob, look, c, side, NULL, NULL, 1);
 }
 
 void povlight_texture_mapped(const povlight *pl, outbuf *ob, const scene_look *look,
                              const float c[4], int side, const char *pigment)
 {
-    texture_body(pl, ob, look, c, side, pigment);
+    texture_body(pl, ob, look, c, side, pigment, NULL, 1);
+}
+
+void povlight_texture_tinted(const povlight *pl, outbuf *ob, const scene_look *look,
+                             const float c[4], int side, const char *pigment, const float kdp[3])
+{
+    texture_body(pl, ob, look, c, side, pigment, kdp, 1);
+}
+
+void povlight_texture_env(const povlight *pl, outbuf *ob, const scene_look *look, const float c[4],
+                          int side, const char *lit_pigment, const float *kdp,
+                          const char *env_pigment)
+{
+    /* average halves the sum: each term at twice its weight. */
+    outbuf_puts(ob, "texture{average texture_map{[1 ");
+    texture_body(pl, ob, look, c, side, lit_pigment, kdp, 2);
+    outbuf_puts(ob, "][1 pigment{");
+    outbuf_puts(ob, env_pigment);
+    outbuf_puts(ob, "}finish{emission 2 diffuse 0 ambient 0}]}}");
+}
+
+/* A tint channel is kept at least this share of the largest, so that the
+ * 8-bit image still carries the texel for the ambient and emission terms
+ * of a channel the diffuse colour lacks (the diffuse term there is then
+ * at most this share of the light too bright). */
+#define TINT_FLOOR (4.0f / 255.0f)
+
+bool povlight_modulate_tint(const povlight *pl, const scene_look *look, const float *c,
+                            float kdp[3], float tint[3])
+{
+    const scene *s = pl->s;
+    if (!look->lit || look->material < 0 || (size_t)look->material >= s->nmaterials)
+        return false;
+    const scene_material *m = &s->materials[look->material];
+    bool from_c = (m->color_material[0] & SCENE_CM_DIFFUSE) != 0;
+    if (from_c && !c)
+        return false; /* the diffuse colour varies over the mesh */
+    const float *kd = from_c ? c : m->diffuse[0];
+    if (m->two_sided) {
+        /* One image serves both sides: their diffuse colours must agree. */
+        const float *kb = m->color_material[1] & SCENE_CM_DIFFUSE ? c : m->diffuse[1];
+        if (!kb || memcmp(kb, kd, 3 * sizeof *kd) != 0)
+            return false;
+    }
+    if (kd[0] == kd[1] && kd[1] == kd[2])
+        return false; /* grey: one diffuse number is exact */
+    float mx = 0;
+    for (int k = 0; k < 3; k++)
+        mx = isfinite(kd[k]) && kd[k] > mx ? kd[k] : mx;
+    if (!(mx > MIN_PIGMENT))
+        return false;
+    for (int k = 0; k < 3; k++) {
+        kdp[k] = isfinite(kd[k]) && kd[k] > mx * TINT_FLOOR ? kd[k] : mx * TINT_FLOOR;
+        tint[k] = kdp[k] / mx;
+    }
+    return true;
 }
 
 /* ---- Normals ----------------------------------------------------------------------------- */

@@ -62,6 +62,30 @@ void povlight_texture_body(const povlight *pl, outbuf *ob, const scene_look *loo
 void povlight_texture_mapped(const povlight *pl, outbuf *ob, const scene_look *look,
                              const float c[4], int side, const char *pigment);
 
+/* GL_MODULATE of a lit surface whose diffuse colour is not grey (GL 1.5
+ * table 3.22 applied per channel): true when one image can carry it, with
+ * kdp the diffuse colour (channels floored to a share of the largest) and
+ * tint = kdp / max(kdp), what the writer multiplies the texels by
+ * (povtex_map). c: the mesh's one vertex colour (GL_COLOR_MATERIAL's
+ * diffuse), NULL when the colours vary. False for grey or unlit surfaces
+ * and for two-sided materials whose sides differ. */
+bool povlight_modulate_tint(const povlight *pl, const scene_look *look, const float *c,
+                            float kdp[3], float tint[3]);
+
+/* GL_BLEND and GL_ADD of a lit surface (GL 1.5 table 3.22): a whole
+ * texture{ } averaging the lit surface, its pigment lit_pigment (NULL:
+ * the material's colour; made with kdp's tint as povlight_texture_tinted,
+ * or kdp NULL), and the unlit env_pigment, each at twice its weight: the
+ * lit colour times lit_pigment plus env_pigment. */
+void povlight_texture_env(const povlight *pl, outbuf *ob, const scene_look *look, const float c[4],
+                          int side, const char *lit_pigment, const float *kdp,
+                          const char *env_pigment);
+
+/* povlight_texture_mapped for a pigment made with povlight_modulate_tint's
+ * tint: diffuse max(kdp), ambient and emission per channel over the tint. */
+void povlight_texture_tinted(const povlight *pl, outbuf *ob, const scene_look *look,
+                             const float c[4], int side, const char *pigment, const float kdp[3]);
+
 /* The fog layer of a mesh whose object space goes to eye space by to_eye
  * (NULL: already eye space), declared as `name`:
  * `#declare name=texture{...}` and a newline. */

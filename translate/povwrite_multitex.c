@@ -120,6 +120,36 @@ static bool image_map(const povtex *pt, size_t i, bool linear, char out[POVTEX_P
     return true;
 }
 
+static const char *const chan[3] = {"red", "green", "blue"};
+static const char *const prim[3] = {"<3,0,0>", "<0,3,0>", "<0,0,3>"};
+
+/* Channel k of environment t (GL 2.1 table 3.22) over the incoming colour
+ * e0 with the texel at `at` (a pigment function call), as SDL, into out. */
+static void env_channel(char *out, size_t cap, const scene_texture *t, int k, const char *e0,
+                        const char *at)
+{
+    const char *ch = chan[k];
+    char g[NUMFMT_F32_ROOM + 3];
+    switch (t->env_mode) {
+    case GL_ADD:
+        snprintf(out, cap, "min(1,%s+%s.%s)", e0, at, ch);
+        break;
+    case GL_DECAL:
+        snprintf(out, cap, "(%s*%s.transmit+%s.%s*(1-%s.transmit))", e0, at, at, ch, at);
+        break;
+    case GL_BLEND:
+        snprintf(out, cap, "(%s*(1-%s.%s)+%s*%s.%s)", e0, at, ch, num(g, t->env_color[k]), at,
+                 ch);
+        break;
+    case GL_REPLACE: /* of an alpha texture: the colour goes on */
+        snprintf(out, cap, "%s", e0);
+        break;
+    default: /* GL_MODULATE */
+        snprintf(out, cap, "(%s*%s.%s)", e0, at, ch);
+        break;
+    }
+}
+
 int povmt_pigment(outbuf *ob, const povtex *pt, size_t img0, size_t img1,
                   const scene_texture *t0, const scene_texture *t1, const float scale0[2],
                   const float offset0[2], const float scale1[2], const float offset1[2],
@@ -155,14 +185,12 @@ int povmt_pigment(outbuf *ob, const povtex *pt, size_t img0, size_t img1,
     snprintf(at0, sizeof at0, "rgl_mt%ua(x,y,z)", id);
 
     bool texel = povmt_texel(t0, t1);
-    static const char *const chan[3] = {"red", "green", "blue"};
-    static const char *const prim[3] = {"<3,0,0>", "<0,3,0>", "<0,0,3>"};
     size_t len = 0;
     if (!put(buf, cap, &len, "uv_mapping average pigment_map{"))
         return -1;
     for (int k = 0; k < 3; k++) {
         const char *ch = chan[k];
-        char e0[512], e1[1400], f[NUMFMT_F32_ROOM + 3], g[NUMFMT_F32_ROOM + 3];
+        char e0[512], e1[1400], f[NUMFMT_F32_ROOM + 3];
         /* C0: unit 0's result, the fragment colour folded in when texel. */
         if (!texel || t0->colour_is_texel)
             snprintf(e0, sizeof e0, "%s.%s", at0, ch);
@@ -173,28 +201,86 @@ int povmt_pigment(outbuf *ob, const povtex *pt, size_t img0, size_t img1,
             snprintf(e0, sizeof e0, "%s", num(f, cf[k]));
         else
             snprintf(e0, sizeof e0, "(%s*%s.%s)", num(f, cf[k]), at0, ch);
-        switch (t1->env_mode) {
-        case GL_ADD:
-            snprintf(e1, sizeof e1, "min(1,%s+%s.%s)", e0, at1, ch);
-            break;
-        case GL_DECAL:
-            snprintf(e1, sizeof e1, "(%s*%s.transmit+%s.%s*(1-%s.transmit))", e0, at1, at1, ch,
-                     at1);
-            break;
-        case GL_BLEND:
-            snprintf(e1, sizeof e1, "(%s*(1-%s.%s)+%s*%s.%s)", e0, at1, ch,
-                     num(g, t1->env_color[k]), at1, ch);
-            break;
-        case GL_REPLACE: /* of an alpha texture: the colour goes on */
-            snprintf(e1, sizeof e1, "%s", e0);
-            break;
-        default: /* GL_MODULATE */
-            snprintf(e1, sizeof e1, "(%s*%s.%s)", e0, at1, ch);
-            break;
-        }
+        env_channel(e1, sizeof e1, t1, k, e0, at1);
         if (!put(buf, cap, &len, "[1 function{min(1,max(0,%s))*0.5}colour_map{[0 rgb 0][0.5 rgb %s]}]",
                  e1, prim[k]))
             return -1;
     }
     return put(buf, cap, &len, "}") ? 0 : -1;
+}
+
+int povmt_env_texture(outbuf *ob, const scene_texture *t, unsigned id, const float cf[4])
+{
+    char at[64], buf[POVMT_PIGMENT_MAX];
+    snprintf(at, sizeof at, "rgl_mt%ua(x,y,z)", id);
+    size_t len = 0;
+    if (!put(buf, sizeof buf, &len, "texture{pigment{uv_mapping average pigment_map{"))
+        return -1;
+    for (int k = 0; k < 3; k++) {
+        char e0[NUMFMT_F32_ROOM + 3], e1[1400];
+        env_channel(e1, sizeof e1, t, k, num(e0, cf[k]), at);
+        if (!put(buf, sizeof buf, &len,
+                 "[1 function{min(1,max(0,%s))*0.5}colour_map{[0 rgb 0][0.5 rgb %s]}]", e1,
+                 prim[k]))
+            return -1;
+    }
+    if (!put(buf, sizeof buf, &len, "}}}"))
+        return -1;
+    outbuf_puts(ob, buf);
+    return 0;
+}
+
+/* buf: `uv_mapping average pigment_map{...}` of the three channel
+ * expressions e (each in 0..1 after clamping). */
+static int channels(char *buf, size_t cap, char e[3][600])
+{
+    size_t len = 0;
+    if (!put(buf, cap, &len, "uv_mapping average pigment_map{"))
+        return -1;
+    for (int k = 0; k < 3; k++)
+        if (!put(buf, cap, &len,
+                 "[1 function{min(1,max(0,%s))*0.5}colour_map{[0 rgb 0][0.5 rgb %s]}]", e[k],
+                 prim[k]))
+            return -1;
+    return put(buf, cap, &len, "}") ? 0 : -1;
+}
+
+int povmt_env_lit(const scene_texture *t, unsigned id, const float tint[3], char *lit, size_t lcap,
+                  char *env, size_t ecap)
+{
+    char at[64], a[3][600], b[3][600], f[2][NUMFMT_F32_ROOM + 3];
+    snprintf(at, sizeof at, "rgl_mt%ua(x,y,z)", id);
+    for (int k = 0; k < 3; k++) {
+        if (t->env_mode == GL_BLEND) { /* Cf (1 - Ct) + Cc Ct */
+            snprintf(a[k], sizeof a[k], "(1-%s.%s)*%s", at, chan[k], num(f[0], tint ? tint[k] : 1));
+            snprintf(b[k], sizeof b[k], "%s*%s.%s", num(f[1], t->env_color[k]), at, chan[k]);
+        } else { /* GL_ADD: Cf + Ct */
+            snprintf(b[k], sizeof b[k], "%s.%s", at, chan[k]);
+        }
+    }
+    if (lit && lcap)
+        lit[0] = '\0';
+    if (t->env_mode == GL_BLEND && channels(lit, lcap, a) != 0)
+        return -1;
+    return channels(env, ecap, b);
+}
+
+int povmt_tinted(const scene_texture *t, unsigned id, const float tint[3], char *buf, size_t cap)
+{
+    (void)t;
+    char at[64], e[3][600], f[NUMFMT_F32_ROOM + 3];
+    snprintf(at, sizeof at, "rgl_mt%ua(x,y,z)", id);
+    for (int k = 0; k < 3; k++)
+        snprintf(e[k], sizeof e[k], "%s.%s*%s", at, chan[k], num(f, tint[k]));
+    return channels(buf, cap, e);
+}
+
+int povmt_declare(outbuf *ob, const povtex *pt, size_t img, const scene_texture *t, unsigned id)
+{
+    char im[POVTEX_PIGMENT_MAX], decl[2 * POVTEX_PIGMENT_MAX];
+    if (!image_map(pt, img, t->linear, im))
+        return -1;
+    snprintf(decl, sizeof decl, "#declare rgl_mt%ua=function{pigment{%s}}\n", id, im);
+    outbuf_puts(ob, decl);
+    return 0;
 }

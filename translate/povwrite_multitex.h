@@ -37,4 +37,27 @@ int povmt_pigment(outbuf *ob, const povtex *pt, size_t img0, size_t img1,
                   const float offset0[2], const float scale1[2], const float offset1[2],
                   const double map[6], const float cf[4], unsigned id, char *buf, size_t cap);
 
+/* One unit's GL_BLEND or GL_ADD over a colour (issue 14; docs/mapping.md
+ * section 27): povmt_declare declares, before the mesh, a function
+ * rgl_mt<id>a sampling image img of pt; povmt_env_texture writes a whole
+ * unlit texture{ } whose pigment is that environment applied to colour cf
+ * per channel, as povmt_pigment's second unit. Both return 0, or -1 on
+ * failure (nothing written). */
+int povmt_declare(outbuf *ob, const povtex *pt, size_t img, const scene_texture *t, unsigned id);
+int povmt_env_texture(outbuf *ob, const scene_texture *t, unsigned id, const float cf[4]);
+
+/* The same environments on a lit surface (povlight_texture_env): lit gets
+ * the pigment the lit colour multiplies (GL_BLEND: 1 - Ct per channel,
+ * times tint when not NULL; GL_ADD: empty, the material's own colour),
+ * env the one added (Cc Ct; Ct). Returns 0, or -1 when a buffer is too
+ * small. */
+/* The pigment of image function rgl_mt<id>a (povmt_declare) times tint
+ * per channel (GL_MODULATE of a lit colour-material surface whose colours
+ * vary: one per texture_list entry). Returns 0, or -1 when buf is too
+ * small. */
+int povmt_tinted(const scene_texture *t, unsigned id, const float tint[3], char *buf, size_t cap);
+
+int povmt_env_lit(const scene_texture *t, unsigned id, const float tint[3], char *lit, size_t lcap,
+                  char *env, size_t ecap);
+
 #endif

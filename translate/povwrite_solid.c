@@ -3,14 +3,18 @@
  * Each solid is written in GL's object space of the shape (scene.h gives
  * the axis conventions) and placed with its object -> eye matrix; POV-Ray's
  * torus lies in its xz plane, so it turns into GL's xy plane first. The
- * teapot is one declared union of Newell's 32 patches (RGL_Teapot), written
+ * teapot is one declared mesh of Newell's 32 patches (RGL_Teapot), written
  * once per scene and scaled by each call's size. The surface takes the
- * unlit texture of its colour (docs/mapping.md). */
+ * unlit texture of its colour, or the lit one, with the fog layer on top
+ * when fogged (docs/mapping.md). */
 #include "povwrite_solid.h"
 
 #include <math.h>
 
+#include "povwrite_clip.h"
+#include "povwrite_fogsec.h"
 #include "teapot.h"
+#include "teapot_mesh.h"
 
 static void put_xyz(outbuf *ob, double x, double y, double z)
 {
@@ -45,6 +49,10 @@ static void write_solid(outbuf *ob, const scene *s, const scene_solid *so, const
     for (int k = 0; k < 4; k++)
         if (!isfinite(so->color[k]))
             return;
+    /* Fog is a layer over the surface, as on meshes (povwrite_light.c),
+     * in the solid's own space: its texture is placed by the same matrix. */
+    if (so->look.fog)
+        povfog_declare(pl, ob, "rgl_fog", &so->to_eye, &so->look);
     switch (so->kind) {
     case SCENE_SOLID_SPHERE:
         if (!finite_pos(p[0]))
@@ -112,6 +120,8 @@ static void write_solid(outbuf *ob, const scene *s, const scene_solid *so, const
     if (povlight_special(&so->look)) { /* lit, transparent or fogged */
         outbuf_puts(ob, "\n ");
         povlight_texture(pl, ob, &so->look, so->color, 0);
+        if (so->look.fog)
+            outbuf_puts(ob, " texture{rgl_fog}");
     } else {
         outbuf_puts(ob, "\n texture{pigment{rgb");
         put_xyz(ob, so->color[0], so->color[1], so->color[2]);
@@ -119,23 +129,24 @@ static void write_solid(outbuf *ob, const scene *s, const scene_solid *so, const
     }
     put_matrix(ob, &so->to_eye);
     povwrite_scissor(ob, s, &so->look);
+    povwrite_clip(ob, s, &so->look);
+    povwrite_stencil(ob, s, &so->look);
     outbuf_puts(ob, "}\n");
 }
 
-/* POV-Ray cuts each patch into 2^TEAPOT_STEPS x 2^TEAPOT_STEPS flat
- * triangles and intersects those: 32 x 32 stay within 0.001 x size of the
- * true surface (16 x 16: 0.004; GL's 7 x 7: 0.019). Type 0 cuts them while
- * rendering: type 1 would store them, and POV-Ray cuts every object{} copy
- * again (7 MB and 0.1 s of parsing per teapot; docs/mapping.md). */
+/* Each patch is cut into 2^TEAPOT_STEPS x 2^TEAPOT_STEPS cells: 32 x 32
+ * stay within 0.001 x size of the true surface (16 x 16: 0.004; GL's 7 x 7:
+ * 0.019). One mesh2 whose patches share their seam vertices
+ * (teapot_mesh.c): bicubic_patch cuts each patch on its own and let rays
+ * slip through the seams. POV-Ray keeps one copy of a mesh for every
+ * object{} placing it (docs/mapping.md). */
 #define TEAPOT_STEPS 5
 
-void povwrite_solid_declares(outbuf *ob, const scene *s)
+static void put_fxyz(outbuf *ob, const float v[3]) { put_xyz(ob, v[0], v[1], v[2]); }
+
+/* The patches as bicubic_patch objects: when the mesh cannot be built. */
+static void teapot_patches(outbuf *ob)
 {
-    bool any = false;
-    for (size_t i = 0; i < s->nsolids && !any; i++)
-        any = s->solids[i].kind == SCENE_SOLID_TEAPOT;
-    if (!any)
-        return;
     outbuf_puts(ob, "#declare RGL_Teapot=union{\n");
     for (int p = 0; p < TEAPOT_PATCHES; p++) {
         double cp[16][3];
@@ -154,6 +165,45 @@ void povwrite_solid_declares(outbuf *ob, const scene *s)
         outbuf_puts(ob, "}\n");
     }
     outbuf_puts(ob, "}\n");
+}
+
+void povwrite_solid_declares(outbuf *ob, const scene *s)
+{
+    bool any = false;
+    for (size_t i = 0; i < s->nsolids && !any; i++)
+        any = s->solids[i].kind == SCENE_SOLID_TEAPOT;
+    if (!any)
+        return;
+    teapot_mesh m;
+    if (teapot_mesh_build(&m, 1 << TEAPOT_STEPS) != 0) {
+        teapot_patches(ob);
+        return;
+    }
+    outbuf_puts(ob, "#declare RGL_Teapot=mesh2{\nvertex_vectors{");
+    outbuf_u64(ob, m.nverts);
+    for (size_t v = 0; v < m.nverts; v++) {
+        outbuf_puts(ob, v % 4 ? "," : ",\n");
+        put_fxyz(ob, m.pos[v]);
+    }
+    outbuf_puts(ob, "}\nnormal_vectors{");
+    outbuf_u64(ob, m.nverts);
+    for (size_t v = 0; v < m.nverts; v++) {
+        outbuf_puts(ob, v % 4 ? "," : ",\n");
+        put_fxyz(ob, m.normal[v]);
+    }
+    outbuf_puts(ob, "}\nface_indices{");
+    outbuf_u64(ob, m.ntris);
+    for (size_t t = 0; t < m.ntris; t++) {
+        outbuf_puts(ob, t % 8 ? ",<" : ",\n<");
+        for (int k = 0; k < 3; k++) {
+            if (k)
+                outbuf_putc(ob, ',');
+            outbuf_u64(ob, m.tri[t][k]);
+        }
+        outbuf_putc(ob, '>');
+    }
+    outbuf_puts(ob, "}\n}\n");
+    teapot_mesh_free(&m);
 }
 
 void povwrite_scissor(outbuf *ob, const scene *s, const scene_look *look)

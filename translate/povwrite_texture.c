@@ -17,7 +17,10 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "numfmt.h"
 #include "talloc.h"
+
+static float clamp01(float x) { return x > 0 ? (x < 1 ? x : 1) : 0; /* NaN: 0 */ }
 
 /* A clamped axis spans at most this many tiles; coordinates further out
  * are clamped to it (the texture's edge shows there anyway). */
@@ -68,10 +71,17 @@ static void tiles(float a, float b, int32_t *lo, int32_t *hi)
 }
 
 int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const float uvhi[2],
-               bool keep_alpha, float scale[2], float offset[2])
+               bool keep_alpha, const float tint[3], float scale[2], float offset[2])
 {
     const scene_texture *tx = &s->textures[t];
     bool clamp[2] = {!tx->repeat_s, !tx->repeat_t};
+    /* GL_MIRRORED_REPEAT: the file holds the texture and its mirror image,
+     * a period of two tiles that image_map repeats. */
+    bool mirror[2] = {tx->repeat_s && tx->mirror_s, tx->repeat_t && tx->mirror_t};
+    uint8_t tint8[3] = {255, 255, 255};
+    if (tint)
+        for (int k = 0; k < 3; k++)
+            tint8[k] = (uint8_t)(clamp01(tint[k]) * 255.0f + 0.5f);
     int size[2] = {tx->width, tx->height};
     int32_t lo[2] = {0, 0}, hi[2] = {1, 1};
     int pad[2] = {0, 0}, out[2];
@@ -86,7 +96,7 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
             }
             pad[k] = 1;
         }
-        out[k] = (hi[k] - lo[k]) * size[k] + 2 * pad[k];
+        out[k] = (hi[k] - lo[k]) * size[k] * (mirror[k] ? 2 : 1) + 2 * pad[k];
         /* texel x of the file is texel x - pad + lo * size of the texture */
         scale[k] = (float)((double)size[k] / out[k]);
         offset[k] = (float)(((double)pad[k] - (double)lo[k] * size[k]) / out[k]);
@@ -95,7 +105,7 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
         const povtex_image *im = &pt->imgs[i];
         if (im->texture == t && im->keep_alpha == keep_alpha && im->lo[0] == lo[0] &&
             im->lo[1] == lo[1] &&
-            im->hi[0] == hi[0] && im->hi[1] == hi[1])
+            im->hi[0] == hi[0] && im->hi[1] == hi[1] && memcmp(im->tint, tint8, 3) == 0)
             return (int)i;
     }
     if (tr_grow((void **)&pt->imgs, &pt->cap, pt->n + 1, sizeof *pt->imgs) != 0)
@@ -119,6 +129,8 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
         bool outy = sy < 0 || sy >= size[1];
         if (clamp[1])
             sy = sy < 0 ? 0 : sy >= size[1] ? size[1] - 1 : sy;
+        else if (mirror[1])
+            sy = sy < size[1] ? sy : 2 * (int64_t)size[1] - 1 - sy;
         else
             sy = ((sy % size[1]) + size[1]) % size[1];
         for (int x = 0; x < out[0]; x++) {
@@ -126,16 +138,31 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
             bool outx = sx < 0 || sx >= size[0];
             if (clamp[0])
                 sx = sx < 0 ? 0 : sx >= size[0] ? size[0] - 1 : sx;
+            else if (mirror[0])
+                sx = sx < size[0] ? sx : 2 * (int64_t)size[0] - 1 - sx;
             else
                 sx = ((sx % size[0]) + size[0]) % size[0];
             const uint8_t *src = tx->rgba + ((size_t)sy * (size_t)size[0] + (size_t)sx) * 4;
             uint8_t *d = px + ((size_t)y * (size_t)out[0] + (size_t)x) * 4;
             memcpy(d, src, 4);
+            for (int k = 0; k < 3; k++) /* rounded product: 255 keeps the texel */
+                d[k] = (uint8_t)((d[k] * tint8[k] + 127) / 255);
             for (int k = 0; k < 4; k++) {
                 if (mix[0] && outx)
                     d[k] = (uint8_t)((d[k] + border[k] + 1) / 2);
                 if (mix[1] && outy)
                     d[k] = (uint8_t)((d[k] + border[k] + 1) / 2);
+            }
+            if (scene_alpha_crisp(tx)) {
+                if (!keep_alpha) /* the test is the pigment's (povtex_alpha_pigment) */
+                    d[3] = 255;
+            } else if (tx->alpha_func) {
+                /* GL discards the fragment: transmit 1, crisp under GL_NEAREST. */
+                float fa = d[3] / 255.0f * (tx->alpha_uses_af ? tx->alpha_af : 1.0f);
+                if (!scene_alpha_pass(tx->alpha_func, fa, tx->alpha_ref))
+                    d[3] = 0;
+                else if (!keep_alpha)
+                    d[3] = 255;
             }
             alpha = alpha || d[3] != 255;
         }
@@ -145,11 +172,12 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
     im->rgba = px;
     im->width = out[0];
     im->height = out[1];
-    im->alpha = alpha && keep_alpha;
+    im->alpha = alpha && (keep_alpha || tx->alpha_func);
     im->keep_alpha = keep_alpha;
     im->texture = t;
     memcpy(im->lo, lo, sizeof lo);
     memcpy(im->hi, hi, sizeof hi);
+    memcpy(im->tint, tint8, sizeof tint8);
     snprintf(im->name, sizeof im->name, "rgl-tex-%016llx.png",
              (unsigned long long)content_hash(px, out[0], out[1], im->alpha));
     return (int)(pt->n - 1);
@@ -188,6 +216,39 @@ size_t povtex_image_pigment(const povtex *pt, size_t i, bool linear,
     int n = snprintf(buf, POVTEX_PIGMENT_MAX, "uv_mapping image_map{png \"" POVTEX_DIR "/%s\" gamma 2.2%s}",
                      pt->imgs[i].name, linear ? " interpolate 2" : "");
     return n > 0 && n < POVTEX_PIGMENT_MAX ? (size_t)n : 0;
+}
+
+int povtex_alpha_pigment(outbuf *ob, povtex *pt, const scene *s, int32_t t, size_t img,
+                         const float uvlo[2], const float uvhi[2], unsigned id, char *buf,
+                         size_t cap)
+{
+    const scene_texture *tx = &s->textures[t];
+    float sc[2], off[2];
+    int ai = povtex_map(pt, s, t, uvlo, uvhi, true, NULL, sc, off);
+    char raw[POVTEX_PIGMENT_MAX], col[POVTEX_PIGMENT_MAX];
+    if (ai < 0 || povtex_image_pigment(pt, (size_t)ai, true, raw) == 0 ||
+        povtex_image_pigment(pt, img, true, col) == 0)
+        return -1;
+    const char *rb = strncmp(raw, "uv_mapping ", 11) == 0 ? raw + 11 : raw;
+    const char *cb = strncmp(col, "uv_mapping ", 11) == 0 ? col + 11 : col;
+    char decl[POVTEX_PIGMENT_MAX + 64];
+    snprintf(decl, sizeof decl, "#declare rgl_at%u=function{pigment{%s}}\n", id, rb);
+    outbuf_puts(ob, decl);
+    /* GL tests the filtered alpha At (times the vertex alpha Af): passes
+     * where At > ref / Af (GL_GREATER, GL_GEQUAL), i.e. transmit below
+     * 1 - ref / Af; GL_LESS, GL_LEQUAL the other side. */
+    double af = tx->alpha_uses_af ? tx->alpha_af : 1;
+    double th = af > 0 ? 1 - tx->alpha_ref / af : 0;
+    th = th < 0 ? 0 : th > 1 ? 1 : th;
+    bool below = tx->alpha_func == GL_GREATER || tx->alpha_func == GL_GEQUAL;
+    const char *a = below ? cb : "rgbt<1,1,1,1>", *b = below ? "rgbt<1,1,1,1>" : cb;
+    char ts[NUMFMT_F32_ROOM];
+    ts[numfmt_f32(ts, (float)th)] = '\0';
+    int n = snprintf(buf, cap,
+                     "uv_mapping function{rgl_at%u(x,y,z).transmit}pigment_map{[0 %s][%s %s][%s "
+                     "%s][1 %s]}",
+                     id, a, ts, a, ts, b, b);
+    return n > 0 && (size_t)n < cap ? 0 : -1;
 }
 
 size_t povtex_pigment(const povtex *pt, size_t i, const scene_texture *t,

@@ -26,6 +26,7 @@ typedef struct povtex_image {
     int32_t texture;
     int32_t lo[2], hi[2]; /* tile range of each clamped axis; 0, 1 otherwise */
     bool keep_alpha;
+    uint8_t tint[3]; /* what the texels' colour was multiplied by (/255) */
 } povtex_image;
 
 typedef struct povtex {
@@ -41,9 +42,15 @@ void povtex_finish(povtex *pt);
  * over the tiles the coordinates [uvlo, uvhi] reach (POV-Ray's image_map
  * only repeats), and u' = u * scale + offset. Returns the image's index
  * in pt, or -1 when memory ran out. keep_alpha: the file keeps the
- * texels' alpha (when some is below 1), which POV-Ray reads as transmit. */
+ * texels' alpha (when some is below 1), which POV-Ray reads as transmit.
+ * tint (NULL: none): the texels' colour is multiplied by it per channel
+ * (0..1), GL_MODULATE's product with a coloured material made in the image
+ * (docs/mapping.md section 27). With the texture's alpha test
+ * (alpha_func), texels whose alpha (times alpha_af when alpha_uses_af)
+ * fails are made fully transparent, the others keep their alpha
+ * (keep_alpha) or become opaque. */
 int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const float uvhi[2],
-               bool keep_alpha, float scale[2], float offset[2]);
+               bool keep_alpha, const float tint[3], float scale[2], float offset[2]);
 
 /* The text inside pigment{ } that samples image i of pt as GL samples
  * texture t: `uv_mapping image_map{png "NAME" gamma 2.2 interpolate 2}`.
@@ -51,6 +58,16 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
 #define POVTEX_PIGMENT_MAX 128
 size_t povtex_pigment(const povtex *pt, size_t i, const scene_texture *t,
                       char buf[POVTEX_PIGMENT_MAX]);
+
+/* The alpha test of texture t on its filtered alpha (scene_alpha_crisp):
+ * declares (before the mesh) a function rgl_at<id> of t's image with its
+ * alpha, and puts into buf a pigment of image img (the colours) where the
+ * filtered alpha passes and fully transparent elsewhere, an edge as crisp
+ * as GL's per-fragment test. Returns 0, or -1 when memory ran out or buf
+ * is too small. */
+int povtex_alpha_pigment(outbuf *ob, povtex *pt, const scene *s, int32_t t, size_t img,
+                         const float uvlo[2], const float uvhi[2], unsigned id, char *buf,
+                         size_t cap);
 
 /* The same for an image that is not a GL texture (filtering linear or
  * nearest). */

@@ -42,6 +42,8 @@ void scene_finish(scene *s)
     tr_free(s->materials);
     tr_free(s->overlay);
     tr_free(s->names);
+    tr_free(s->clips);
+    tr_free(s->stencil_tris);
     memset(s, 0, sizeof *s);
 }
 
@@ -51,6 +53,8 @@ void scene_reset(scene *s)
     s->nlights = 0;
     s->nmaterials = 0;
     s->nnames = s->names_last = 0;
+    s->nclips = s->clips_last = 0;
+    s->nstencil = 0;
     s->lights_fixed = false;
     s->nlightsets = 0;
     memset(&s->fog, 0, sizeof s->fog);
@@ -221,6 +225,11 @@ static bool texture_same(const scene_texture *a, const scene_texture *b)
            memcmp(a->border, b->border, sizeof a->border) == 0 &&
            a->env_mode == b->env_mode && a->colour_is_texel == b->colour_is_texel &&
            memcmp(a->env_color, b->env_color, sizeof a->env_color) == 0 &&
+           a->mirror_s == b->mirror_s && a->mirror_t == b->mirror_t &&
+           a->alpha_func == b->alpha_func && a->alpha_ref == b->alpha_ref &&
+           a->alpha_af == b->alpha_af && a->alpha_uses_af == b->alpha_uses_af &&
+           a->mip_next == b->mip_next && a->mip_filter == b->mip_filter &&
+           a->min_lod == b->min_lod && a->max_lod == b->max_lod && a->cube == b->cube &&
            memcmp(a->rgba, b->rgba, (size_t)a->width * (size_t)a->height * 4) == 0;
 }
 

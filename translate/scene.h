@@ -71,6 +71,17 @@ typedef struct scene_look {
     int32_t texture1;  /* a second texture unit's, combined with the result of
                           the first by its env_mode (GL 2.1 3.8.13), or -1 */
     float alpha_ref;   /* the alpha test's reference, for SCENE_ALPHA_ABOVE */
+    uint32_t clip;     /* its user clip planes: 1 + their set's place in
+                          scene.clips (scene_clip_index), 0: none */
+    uint32_t stencil_first, stencil_n; /* the stencil test keeps it to the
+                          window region of scene.stencil_tris [first, first +
+                          n) (or outside it, stencil_out); n 0: none */
+    float fog_f;       /* with fog_fixed: the fog factor of the whole draw (one
+                          fog coordinate for all its vertices) */
+    uint8_t stencil_out, fog_fixed;
+    uint8_t fog_own, pad2_[1]; /* fogged by fog_plane, not by the eye-plane distance */
+    float fog_plane[4]; /* GL's fog coordinate a.p + d over the mesh's own space,
+                           for faces reaching behind the eye (interp_fogbehind.c) */
 } scene_look;
 
 /* The alpha test of a look (glAlphaFunc with GL_ALPHA_TEST on). */
@@ -221,6 +232,7 @@ typedef struct scene_texture {
     int width, height;
     uint64_t hash;
     bool repeat_s, repeat_t; /* GL_REPEAT; else clamped */
+    bool mirror_s, mirror_t; /* repeated as GL_MIRRORED_REPEAT */
     bool border_s, border_t; /* clamped as GL_CLAMP (the border colour counts
                                 under linear filtering), not GL_CLAMP_TO_EDGE */
     float border[4];         /* GL_TEXTURE_BORDER_COLOR */
@@ -229,7 +241,49 @@ typedef struct scene_texture {
     float env_color[4];
     bool colour_is_texel;    /* the texel's colour replaces the fragment's
                                 (REPLACE or DECAL of a colour format) */
+    /* The alpha test per texel (interp_alphatest.c), when the texel's
+     * alpha counts: GL_NEVER..GL_NOTEQUAL, 0 for none; the fragment's
+     * alpha is the texel's times the vertex alpha when alpha_uses_af. */
+    uint32_t alpha_func;
+    float alpha_ref, alpha_af; /* alpha_af: the draw's vertex alpha */
+    bool alpha_uses_af;
+    /* Mipmapped minification (issue 14): the minification filter when it
+     * mipmaps (GL_*_MIPMAP_*, else 0), the scene texture of the next level
+     * (-1 at the last; each level an image of its own, same sampling), and
+     * the LOD clamps (GL_TEXTURE_MIN_LOD, MAX_LOD, relative to this level). */
+    uint32_t mip_filter;
+    int32_t mip_next;
+    float min_lod, max_lod;
+    /* A cube map (GL_TEXTURE_CUBE_MAP): this is face +X, and mip_next
+     * links -X, +Y, -Y, +Z, -Z in turn (mip_filter 0); the coordinates are
+     * the vertices' (tex[0], tex[1], tex1[0]) = (s, t, r). */
+    bool cube;
 } scene_texture;
+
+/* Whether a texture's alpha test is drawn on the filtered alpha (GL_LINEAR
+ * and a comparison with a side: the writer's pigment_map by transmit),
+ * rather than texel by texel in the image. */
+static inline bool scene_alpha_crisp(const scene_texture *t)
+{
+    return t->linear && !t->mip_filter && !t->cube && t->alpha_func >= 0x0201 && t->alpha_func <= 0x0206 &&
+           t->alpha_func != 0x0202 && t->alpha_func != 0x0205;
+}
+
+/* Whether alpha a passes the alpha test func (GL_NEVER..GL_ALWAYS)
+ * against ref (GL 1.x 4.1.4). */
+static inline bool scene_alpha_pass(uint32_t func, float a, float ref)
+{
+    switch (func) {
+    case 0x0200: return false;    /* GL_NEVER */
+    case 0x0201: return a < ref;  /* GL_LESS */
+    case 0x0202: return a == ref; /* GL_EQUAL */
+    case 0x0203: return a <= ref; /* GL_LEQUAL */
+    case 0x0204: return a > ref;  /* GL_GREATER */
+    case 0x0205: return a != ref; /* GL_NOTEQUAL */
+    case 0x0206: return a >= ref; /* GL_GEQUAL */
+    default: return true;         /* GL_ALWAYS */
+    }
+}
 
 /* A GLU/GLUT solid with an exact POV-Ray counterpart (issue 5), in its
  * object space (GL's axis conventions), placed by to_eye:
@@ -285,6 +339,12 @@ typedef struct scene {
     size_t ntextures, cap_textures;
     scene_material *materials; /* lit runs refer to these by index */
     size_t nmaterials, cap_materials;
+    double (*stencil_tris)[9]; /* eye-space triangles drawn into the stencil
+                                  buffer (interp_stencil.c) */
+    size_t nstencil, cap_stencil;
+    double (*clips)[4]; /* user clip plane sets that looks refer to: a row
+                           {count}, then that many eye-space planes */
+    size_t nclips, cap_clips, clips_last;
     uint32_t *names; /* name stacks that looks refer to: a count, then the names */
     size_t nnames, cap_names, names_last; /* names_last: 1 + where the last one starts */
     bool lights_fixed; /* lights hold the GL lights of the first lit draw */
@@ -301,6 +361,10 @@ typedef struct scene {
      * unlit, casting no shadow. NULL: none in this frame. */
     uint8_t *overlay;
     int overlay_w, overlay_h;
+    /* Set: the overlay lies in the eye-space plane p . e + p[3] = 0 (its
+     * pixels' depth, interp_pixdepth.c) instead of in front. */
+    bool overlay_at_depth;
+    double overlay_plane[4];
     /* What the frame's accumulation-buffer passes add to the one pass the
      * scene holds (interp_accum.c): POV-Ray's antialiasing at this depth
      * (0: none), and focal blur around focal_point (eye space) through a
@@ -385,6 +449,14 @@ uint32_t scene_names_index(scene *s, const uint32_t *names, uint32_t n);
 /* The names of look.names value id and their count in *n; NULL (and 0)
  * for 0 or a value the scene does not hold. */
 const uint32_t *scene_names(const scene *s, uint32_t id, uint32_t *n);
+
+/* User clip plane sets (scene_clip.c). scene_clip_index stores n planes
+ * (a, b, c, d: eye-space points with a x + b y + c z + d >= 0 are kept)
+ * and returns the id a look refers to them by (the last set again when
+ * equal); 0 when n is 0 or on failure (the scene's failed flag set).
+ * scene_clip_set: the planes of id (NULL, *n = 0 for none or a bad id). */
+uint32_t scene_clip_index(scene *s, const double (*planes)[4], uint32_t n);
+const double (*scene_clip_set(const scene *s, uint32_t id, uint32_t *n))[4];
 
 /* Camera from a GL projection matrix and viewport (x, y, width, height).
  * Handles any projection with a centre (perspective, off-axis frustum,

@@ -503,6 +503,131 @@ static int write_texcopy(const char *dir)
     return rc;
 }
 
+/* ---- Shapes and per-fragment tests: clip planes, offsets, masks, quadrics -------- */
+
+static int write_shapes(const char *dir)
+{
+    eval_len = 0;
+    EV(Translatef, 1, 0, -5);
+    EV(ClipPlane, 0x3000, 1, 0, 0, 0.5); /* GL_CLIP_PLANE0 */
+    EV(ClipPlane, 0x3007, 0, -1, 0, 1);
+    EV(ClipPlane, 0x3008, 0, 0, 1, 0); /* past the eighth: rejected */
+    EV(Enable, 0x3000);
+    EV(Enable, 0x3007);
+    EV(Enable, 0x8037); /* GL_POLYGON_OFFSET_FILL */
+    EV(PolygonOffset, 1, 1);
+    EV(NewQuadric, 1);
+    EV(QuadricDrawStyle, 1, 100012); /* GLU_LINE */
+    EV(Sphere, 1, 1, 8, 4);
+    EV(SolidTeapot, 1);
+    EV(Enable, 0x0B24); /* GL_LINE_STIPPLE */
+    EV(LineStipple, 3, 0x1C47);
+    EV(Begin, 0x0003); /* GL_LINE_STRIP */
+    EV(Vertex2f, -2, 0);
+    EV(Vertex2f, 2, 1);
+    EV(Vertex2f, 0, -3);
+    eval_cmd(RGL_OP_End, NULL, 0, NULL, 0);
+    EV(Begin, 0x0000); /* GL_POINTS */
+    EV(Vertex2f, -0.75, 0);
+    EV(Vertex2f, 0.75, 0);
+    eval_cmd(RGL_OP_End, NULL, 0, NULL, 0);
+    EV(ClearStencil, 0);
+    EV(Clear, 0x0400); /* GL_STENCIL_BUFFER_BIT */
+    EV(Enable, 0x0B90); /* GL_STENCIL_TEST */
+    EV(StencilFunc, 0x0207, 1, 255); /* GL_ALWAYS */
+    EV(StencilOp, 0x1E00, 0x1E00, 0x1E01); /* GL_KEEP, GL_KEEP, GL_REPLACE */
+    EV(StencilMask, 255);
+    EV(ColorMask, 0, 0, 0, 0);
+    EV(Rectf, -1, -1, 1, 1);
+    EV(ColorMask, 1, 1, 1, 1);
+    EV(StencilFunc, 0x0202, 1, 255); /* GL_EQUAL */
+    EV(Rectf, -2, -2, 2, 2);
+    EV(StencilFunc, 0x0205, 1, 255); /* GL_NOTEQUAL */
+    EV(SolidSphere, 1, 12, 8);
+    return write_file(dir, "shapes.bin", seq, eval_len);
+}
+
+/* ---- Fog coordinates, secondary colours and their arrays; lit raster ------------ */
+
+static int write_fogsec(const char *dir)
+{
+    static const double quad[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+    static const double fog[4] = {0, 3, 6, 12};
+    static const double sec[12] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 0.5, 0.5, 0.5};
+    eval_len = 0;
+    EV(Ortho, -1, 2, -1, 2, -1, 1);
+    EV(Fogi, 0x8450, 0x8451); /* GL_FOG_COORD_SRC GL_FOG_COORD */
+    EV(Fogi, 0x0B65, 0x2601); /* GL_LINEAR */
+    EV(Enable, 0x0B60);       /* GL_FOG */
+    EV(Enable, 0x8458);       /* GL_COLOR_SUM */
+    EV(Begin, 0x0004);
+    EV(FogCoordf, 2);
+    EV(SecondaryColor3f, 0.2, 0.1, 0);
+    EV(Vertex2f, 0, 0);
+    EV(FogCoorddEXT, 5);
+    EV(Vertex2f, 1, 0);
+    EV(Vertex2f, 0, 1);
+    eval_cmd(RGL_OP_End, NULL, 0, NULL, 0);
+    EV(FogCoordPointer, 0x1406, 0);
+    EV(SecondaryColorPointerEXT, 3, 0x1406, 0);
+    EV(EnableClientState, 0x8457);
+    EV(EnableClientState, 0x845E);
+    eval_cmd(RGL_OP_ArrayData, (const double[]){0x8074, 0, 2, 0x1406}, 4, quad, 8);
+    eval_cmd(RGL_OP_ArrayData, (const double[]){0x8457, 0, 1, 0x1406}, 4, fog, 4);
+    eval_cmd(RGL_OP_ArrayData, (const double[]){0x845E, 0, 3, 0x1406}, 4, sec, 12);
+    EV(DrawArrays, 0x0007, 0, 4);
+    EV(Enable, 0x0B50); /* GL_LIGHTING: a lit raster position */
+    EV(Enable, 0x4000);
+    EV(RasterPos3f, 0.5, 0.5, 0);
+    EV(Enable, 0x0B71); /* GL_DEPTH_TEST */
+    EV(SolidSphere, 0.5, 16, 8);
+    return write_file(dir, "fogsec.bin", seq, eval_len);
+}
+
+/* ---- EXT names of texture calls; cube-map and per-unit snapshot bindings ---- */
+
+static int write_snaptex(const char *dir)
+{
+    static const uint8_t rgba[16] = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 9, 9, 9, 9};
+    rgl_trace_builder *b = rgl_trace_builder_create();
+    uint32_t px = 0;
+    const uint8_t *data;
+    size_t size;
+    int rc = 1;
+    if (!b)
+        return 1;
+    rgl_trace_builder_resource(b, RGL_RES_BYTES, rgba, sizeof rgba, &px);
+    eval_len = 0;
+    EV(Ortho, -1, 2, -1, 2, -1, 1);
+    EV(BindTextureEXT, 0x0DE1, 1);
+    EV(TexParameteri, 0x0DE1, 0x2801, 0x2600); /* GL_NEAREST */
+    EV(CopyTexImage2DEXT, 0x0DE1, 0, 0x1908, 0, 0, 2, 2, 0, px);
+    EV(CopyTexSubImage2DEXT, 0x0DE1, 0, 1, 1, 0, 0, 1, 1, px);
+    EV(TexSubImage2DEXT, 0x0DE1, 0, 0, 0, 1, 1, 0x1908, 0x1401, px);
+    EV(CopyTexImage1DEXT, 0x0DE0, 0, 0x1908, 0, 0, 4, 0, px);
+    EV(CopyTexSubImage1DEXT, 0x0DE0, 0, 0, 0, 0, 1, 0);
+    EV(BindTextureEXT, 0x806F, 2); /* GL_TEXTURE_3D */
+    EV(TexImage3DEXT, 0x806F, 0, 0x1908, 2, 1, 2, 0, 0x1908, 0x1401, px);
+    EV(TexSubImage3DEXT, 0x806F, 0, 0, 0, 1, 1, 1, 1, 0x1908, 0x1401, px);
+    EV(CopyTexSubImage3DEXT, 0x806F, 0, 0, 0, 0, 0, 0, 1, 1, 0);
+    EV(BlendEquationEXT, 0x8006); /* GL_FUNC_ADD */
+    /* A snapshot's cube map and a binding on unit 1. */
+    EV(BindTexture, 0x8513, 3);
+    EV(TexImage2D, 0x8515, 0, 0x1908, 1, 1, 0, 0x1908, 0x1401, px);
+    EV(TexImage2D, 0x851A, 0, 0x1908, 1, 1, 0, 0x1908, 0x1401, px);
+    EV(ActiveTexture, 0x84C1);
+    EV(BindTexture, 0x806F, 2);
+    EV(Enable, 0x806F);
+    EV(ActiveTexture, 0x84C0);
+    EV(Enable, 0x0DE1);
+    EV(Rectf, -1, -1, 1, 1);
+    if (rgl_trace_builder_frame(b, 0, 0, 0, 0, seq, eval_len) == RGL_OK &&
+        rgl_trace_builder_finish(b, true, &data, &size) == RGL_OK)
+        rc = write_file(dir, "snaptex.bin", data, size);
+    rgl_trace_builder_destroy(b);
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
     rng r = {0x5eed5eed12345678ull};
@@ -531,5 +656,8 @@ int main(int argc, char **argv)
     rc |= write_mtex(argv[1]);
     rc |= write_nurbs(argv[1]);
     rc |= write_texcopy(argv[1]);
+    rc |= write_shapes(argv[1]);
+    rc |= write_fogsec(argv[1]);
+    rc |= write_snaptex(argv[1]);
     return rc;
 }

@@ -84,6 +84,13 @@ case $outdir in
 esac
 
 dir=$outdir/$name
+# Runs of one test at once (meson test --repeat starts them in parallel)
+# share its directory: they take turns.
+mkdir -p "$outdir" || exit 1
+if command -v flock >/dev/null 2>&1; then
+    exec 9>"$outdir/$name.lock"
+    flock 9
+fi
 rm -rf "$dir"
 mkdir -p "$dir" || exit 1
 fail() {

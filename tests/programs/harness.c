@@ -121,8 +121,9 @@ int rgl_test_init(rgl_test *t, int argc, char **argv)
     }
     return 0;
 #else
-    /* 16-bit accumulation channels: the accum_*.c programs use them. */
-    t->ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 16, NULL);
+    /* 16-bit accumulation channels: the accum_*.c programs use them; 8
+     * stencil bits: shapes_stencil.c does. */
+    t->ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 16, NULL);
     if (!t->ctx) {
         fprintf(stderr, "%s: OSMesaCreateContextExt failed\n", t->name);
         goto fail_pixels;

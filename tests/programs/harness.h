@@ -38,7 +38,8 @@ typedef struct rgl_test {
 } rgl_test;
 
 /* Parses the command line, creates an OSMesa RGBA context with a 24-bit
- * depth buffer and a 16-bit accumulation buffer, makes it current on a
+ * depth buffer, an 8-bit stencil buffer and a 16-bit accumulation buffer,
+ * makes it current on a
  * buffer of the requested size (filled with a sentinel pattern, so an image
  * GL never drew into is detected) and opens the trace with
  * rayglRecordOpen(). Returns 0, or the exit status the program should

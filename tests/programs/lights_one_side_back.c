@@ -3,8 +3,9 @@
  * as given, pointing away from the viewer, so GL_LIGHT0 on the viewer's
  * side leaves the top quad dark and GL_LIGHT1 behind the scene lights the
  * bottom one. POV-Ray turns every shading normal toward the viewer and
- * does the opposite: a known failure (tests/image/meson.build,
- * docs/mapping.md section 22).
+ * would do the opposite: the translator draws back faces with GL's own
+ * per-vertex colours (translate/interp_relit.c, docs/mapping.md "Faces
+ * lit and fogged as GL does them").
  */
 #include "lights_conform.h"
 

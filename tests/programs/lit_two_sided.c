@@ -73,6 +73,9 @@ static int draw(int w, int h)
     lit_begin(w, h);
     glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, GL_TRUE);
     glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+#ifdef LIT_TWO_SIDED_EXTRA
+    LIT_TWO_SIDED_EXTRA;
+#endif
     GLfloat pos[4] = {0.5f, 2.0f, 0.5f, 1.0f};
     glLightfv(GL_LIGHT0, GL_POSITION, pos);
     glEnable(GL_LIGHT0);
@@ -84,6 +87,9 @@ static int draw(int w, int h)
     glMaterialfv(GL_BACK, GL_SPECULAR, bs);
     glMaterialf(GL_FRONT, GL_SHININESS, 30.0f);
     glMaterialf(GL_BACK, GL_SHININESS, 10.0f);
+#ifdef LIT_TWO_SIDED_MATERIALS
+    LIT_TWO_SIDED_MATERIALS;
+#endif
     half_sphere(-0.9f, 0.1f, -5.0f, 0.85f);
     tube(1.0f, 0.0f, -5.5f, 0.5f, 1.6f);
     return 0;

@@ -193,6 +193,26 @@ void glEdgeFlagPointer(GLsizei stride, const GLvoid *ptr)
     LOGV("glEdgeFlagPointer", stride);
     arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], ptr);
 }
+void glFogCoordPointer(GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+    LOGV("glFogCoordPointer", type, stride);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], ptr);
+}
+void glFogCoordPointerEXT(GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+    LOGV("glFogCoordPointerEXT", type, stride);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], ptr);
+}
+void glSecondaryColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+    LOGV("glSecondaryColorPointer", size, type, stride);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], ptr);
+}
+void glSecondaryColorPointerEXT(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+    LOGV("glSecondaryColorPointerEXT", size, type, stride);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], ptr);
+}
 void glInterleavedArrays(GLenum format, GLsizei stride, const GLvoid *pointer)
 {
     LOGV("glInterleavedArrays", format, stride);
@@ -329,6 +349,7 @@ void glGetDoublev(GLenum pname, GLdouble *v) { (void)pname, (void)v; }
 void glGetBooleanv(GLenum pname, GLboolean *v) { (void)pname, (void)v; }
 void glGetLightfv(GLenum l, GLenum pname, GLfloat *v) { (void)l, (void)pname, (void)v; }
 void glGetMapdv(GLenum t, GLenum q, GLdouble *v) { (void)t, (void)q, (void)v; }
+void glGetClipPlane(GLenum p, GLdouble *v) { (void)p, (void)v; }
 void glGetMapiv(GLenum t, GLenum q, GLint *v) { (void)t, (void)q, (void)v; }
 void glGetMaterialfv(GLenum f, GLenum pname, GLfloat *v) { (void)f, (void)pname, (void)v; }
 void glGetTexGenfv(GLenum c, GLenum pname, GLfloat *v) { (void)c, (void)pname, (void)v; }

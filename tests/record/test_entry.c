@@ -33,6 +33,8 @@ void test_pbo(const char *dir);
 void test_live_bindings(const char *dir);
 void test_reopen(const char *dir);
 void test_buffer_rules(const char *dir);
+void test_fogsec_arrays(const char *dir);
+void test_snaptex_support(const char *dir);
 
 /* ---- Deterministic values ------------------------------------------------------- */
 
@@ -293,6 +295,8 @@ int main(void)
     test_live_bindings(dir);
     test_reopen(dir);
     test_buffer_rules(dir);
+    test_fogsec_arrays(dir);
+    test_snaptex_support(dir);
     if (!check_failures)
         rmdir(dir);
     return check_exit();

@@ -508,6 +508,88 @@ static void test_eval_snapshot(const char *path)
     rgl_reader_destroy(r);
 }
 
+/* Per-unit texture state reaches the next frame's snapshot: each unit's
+ * enables, environment, coordinates and texture matrix after a
+ * glActiveTexture naming it, the program's active unit (here unit 2) first
+ * and last. */
+static void test_unit_snapshot(const char *path)
+{
+    CHECK(rayglRecordOpen(path) == 0);
+    rayglActiveTexture(GL_TEXTURE3);
+    rayglTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
+    rayglTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_SUBTRACT);
+    rayglTexEnvf(GL_TEXTURE_ENV, GL_RGB_SCALE, 2);
+    rayglActiveTexture(GL_TEXTURE1);
+    rayglEnable(GL_TEXTURE_2D);
+    rayglTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);
+    rayglMatrixMode(GL_TEXTURE);
+    rayglTranslatef(0.5f, 0, 0);
+    rayglMatrixMode(GL_MODELVIEW);
+    rayglMultiTexCoord2f(GL_TEXTURE1, 0.25f, 0.75f);
+    rayglActiveTexture(GL_TEXTURE2);
+    rayglMultiTexCoord2f(GL_TEXTURE2, 0.5f, 0.125f);
+    rayglutSwapBuffers();
+    rayglBegin(GL_POINTS);
+    rayglVertex2f(0, 0);
+    rayglEnd();
+    rayglutSwapBuffers();
+    rayglRecordClose();
+    rayglActiveTexture(GL_TEXTURE3);
+    rayglTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    rayglTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_MODULATE);
+    rayglTexEnvf(GL_TEXTURE_ENV, GL_RGB_SCALE, 1);
+    rayglActiveTexture(GL_TEXTURE1);
+    rayglDisable(GL_TEXTURE_2D);
+    rayglTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    rayglMatrixMode(GL_TEXTURE);
+    rayglLoadIdentity();
+    rayglMatrixMode(GL_MODELVIEW);
+    rayglActiveTexture(GL_TEXTURE0);
+
+    rgl_reader *r = trace_open(path);
+    if (!r)
+        return;
+    rgl_frame_info fi;
+    if (CHECK(rgl_reader_frame_count(r) == 2) &&
+        CHECK(rgl_reader_frame(r, 1, &fi, NULL) == RGL_OK) && CHECK(fi.state != 0)) {
+        trace_cmds s = trace_resource_cmds(r, fi.state);
+        CHECK(trace_cmds_find(&s, 0, "glActiveTexture(texture=GL_TEXTURE2)") == 2);
+        /* The active unit's current coordinates go to that unit. */
+        CHECK(trace_cmds_find(&s, 0, "glMultiTexCoord4f(target=GL_TEXTURE2, s=0.5, t=0.125, r=0, q=1)") > 2);
+        long u1 = trace_cmds_find(&s, 0, "glActiveTexture(texture=GL_TEXTURE1)");
+        long u3 = trace_cmds_find(&s, 0, "glActiveTexture(texture=GL_TEXTURE3)");
+        CHECK(u1 > 2 && u3 > u1);
+        long en = trace_cmds_find(&s, (size_t)(u1 > 0 ? u1 : 0), "glEnable(cap=GL_TEXTURE_2D)");
+        CHECK(en > u1 && en < u3);
+        long env = trace_cmds_find(&s, (size_t)(u1 > 0 ? u1 : 0),
+                                   "glTexEnvi(target=GL_TEXTURE_ENV, pname=GL_TEXTURE_ENV_MODE, param=260)");
+        CHECK(env > u1 && env < u3);
+        long tc = trace_cmds_find(&s, (size_t)(u1 > 0 ? u1 : 0),
+                                  "glMultiTexCoord4f(target=GL_TEXTURE1, s=0.25, t=0.75, r=0, q=1)");
+        CHECK(tc > u1 && tc < u3);
+        long tm = trace_cmds_find(&s, (size_t)(u1 > 0 ? u1 : 0),
+                                  "glLoadMatrixf(m=[1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0.5, 0, 0, 1])");
+        CHECK(tm > u1 && tm < u3);
+        /* Unit 3's combiner, only where GL_COMBINE is the mode. */
+        long u4 = trace_cmds_find(&s, (size_t)(u3 > 0 ? u3 : 0), "glActiveTexture(texture=GL_TEXTURE4)");
+        long sub = trace_cmds_find(&s, 0, "glTexEnvi(target=GL_TEXTURE_ENV, pname=GL_COMBINE_RGB, param=34023)");
+        CHECK(sub > u3 && sub < u4);
+        long sc = trace_cmds_find(&s, 0, "glTexEnvf(target=GL_TEXTURE_ENV, pname=GL_RGB_SCALE, param=2)");
+        CHECK(sc > u3 && sc < u4);
+        CHECK(trace_cmds_count(&s, RGL_OP_TexEnvf) == 2);
+        /* The active unit again before the final matrices. */
+        long last = -1;
+        for (size_t i = 0; i < s.count; i++)
+            if (strncmp(s.lines[i], "glActiveTexture(", 16) == 0)
+                last = (long)i;
+        CHECK(last > u3 && strcmp(s.lines[last], "glActiveTexture(texture=GL_TEXTURE2)") == 0);
+        if (check_failures)
+            trace_cmds_print(&s, "unit snapshot");
+        trace_cmds_free(&s);
+    }
+    rgl_reader_destroy(r);
+}
+
 int main(void)
 {
     OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 16, 0, 0, NULL);
@@ -516,7 +598,8 @@ int main(void)
     char dir[] = "/tmp/raygl-osmesa-XXXXXX";
     if (!CHECK(mkdtemp(dir) != NULL))
         return check_exit();
-    char p1[64], p2[64], p3[64], p4[64], p5[64];
+    char p1[64], p2[64], p3[64], p4[64], p5[64], p6[64];
+    snprintf(p6, sizeof p6, "%s/units.raygl", dir);
     snprintf(p4, sizeof p4, "%s/snapshots.raygl", dir);
     snprintf(p5, sizeof p5, "%s/eval.raygl", dir);
     snprintf(p1, sizeof p1, "%s/two.raygl", dir);
@@ -527,6 +610,7 @@ int main(void)
     test_texture_updates(p3);
     test_snapshots(p4);
     test_eval_snapshot(p5);
+    test_unit_snapshot(p6);
     /* This Mesa faults destroying a context with drawing still queued. */
     glFinish();
     OSMesaDestroyContext(ctx);
@@ -536,6 +620,7 @@ int main(void)
         unlink(p3);
         unlink(p4);
         unlink(p5);
+        unlink(p6);
         rmdir(dir);
     }
     return check_exit();

@@ -541,6 +541,94 @@ static void test_point_parameters(void)
     interp_destroy(ip);
 }
 
+/* ---- With issue 14's levels and cube maps ----------------------------------- */
+
+/* Where these targets meet the levels and cube maps: GL's target priority
+ * (GL 2.1 3.8.15 with ARB_texture_rectangle: cube map, 3D, rectangle, 2D,
+ * 1D), a rectangle's single level, copies into a level and into cube-map
+ * faces, a depth texture's levels. */
+static void test_with_levels(void)
+{
+    const uint8_t fb[16] = {200, 10, 20, 255, 30, 40, 50, 255, 60, 70, 80, 255, 90, 100, 110, 255};
+    uint32_t id = add_bytes(fb, sizeof fb);
+    const uint8_t one[4] = {9, 8, 7, 255};
+    uint32_t id1 = add_bytes(one, sizeof one);
+    uint8_t px[4 * 2 * 3];
+    for (size_t i = 0; i < sizeof px; i++)
+        px[i] = (uint8_t)(i * 10);
+    uint32_t idr = add_bytes(px, sizeof px);
+    const float d[2] = {0.5f, 1.0f};
+    uint32_t idd = add_bytes(d, sizeof d), idd1 = add_bytes(d, sizeof d[0]);
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    setup(&s, GL_TEXTURE_2D, 1);
+    CMD(&s, TexImage2D, GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, id);
+    setup(&s, GL_TEXTURE_RECTANGLE, 2);
+    CMD(&s, TexImage2D, GL_TEXTURE_RECTANGLE, 0, GL_RGB, 4, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, idr);
+    triangle(&s, 1, 1);
+    run(ip, &s);
+    const scene_texture *t = drawn();
+    CHECK(t && t->width == 4 && t->height == 2); /* the rectangle over 2D */
+
+    /* The cube map over the rectangle: incomplete, the unit draws
+     * untextured; its faces copied, it draws. */
+    seq_init(&s);
+    CMD(&s, BindTexture, GL_TEXTURE_CUBE_MAP, 3);
+    CMD(&s, Enable, GL_TEXTURE_CUBE_MAP);
+    triangle(&s, 1, 1);
+    run(ip, &s);
+    CHECK(sc.nmeshes > 0 && sc.meshes[sc.nmeshes - 1].look.texture < 0);
+    seq_init(&s);
+    for (GLenum f = GL_TEXTURE_CUBE_MAP_POSITIVE_X; f <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z; f++)
+        CMD(&s, CopyTexImage2D, f, 0, GL_RGB, 0, 0, 1, 1, 0, id1);
+    triangle(&s, 1, 1);
+    run(ip, &s);
+    t = drawn();
+    CHECK(t && t->cube);
+    check_texel(t, 0, 0, 9, 8, 7, 255);
+
+    /* A rectangle's base level stays 0. */
+    seq_init(&s);
+    CMD(&s, Disable, GL_TEXTURE_CUBE_MAP);
+    CMD(&s, TexParameteri, GL_TEXTURE_RECTANGLE, GL_TEXTURE_BASE_LEVEL, 1);
+    CMD(&s, Disable, GL_TEXTURE_RECTANGLE);
+    /* A copy into level 1 completes the 2D texture's chain. */
+    CMD(&s, CopyTexImage2D, GL_TEXTURE_2D, 1, GL_RGB, 0, 0, 1, 1, 0, id1);
+    CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    triangle(&s, 1, 1);
+    run(ip, &s);
+    t = drawn();
+    CHECK(t && t->width == 2 && t->mip_next >= 0 && (size_t)t->mip_next < sc.ntextures);
+    if (t && t->mip_next >= 0 && (size_t)t->mip_next < sc.ntextures)
+        check_texel(&sc.textures[t->mip_next], 0, 0, 9, 8, 7, 255);
+
+    /* A depth texture's levels all follow GL_DEPTH_TEXTURE_MODE; a cube
+     * map's face is never a depth image (GL 2.1 3.8.1). */
+    seq_init(&s);
+    CMD(&s, BindTexture, GL_TEXTURE_2D, 4);
+    CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    CMD(&s, TexImage2D, GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, 2, 1, 0, GL_DEPTH_COMPONENT,
+        GL_FLOAT, idd);
+    CMD(&s, TexImage2D, GL_TEXTURE_2D, 1, GL_DEPTH_COMPONENT, 1, 1, 0, GL_DEPTH_COMPONENT,
+        GL_FLOAT, idd1);
+    CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE, GL_ALPHA);
+    triangle(&s, 1, 1);
+    CMD(&s, TexImage2D, GL_TEXTURE_CUBE_MAP_POSITIVE_X, 0, GL_DEPTH_COMPONENT, 1, 1, 0,
+        GL_DEPTH_COMPONENT, GL_FLOAT, idd1);
+    run(ip, &s);
+    t = drawn();
+    CHECK(t && t->mip_next >= 0 && (size_t)t->mip_next < sc.ntextures);
+    check_texel(t, 1, 0, 255, 255, 255, 255);
+    if (t && t->mip_next >= 0 && (size_t)t->mip_next < sc.ntextures)
+        check_texel(&sc.textures[t->mip_next], 0, 0, 255, 255, 255, 128);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_VALUE), 1);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_OPERATION), 1);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 0);
+    interp_destroy(ip);
+    free_res();
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -553,6 +641,7 @@ int main(void)
     test_texenv_targets();
     test_provoking();
     test_point_parameters();
+    test_with_levels();
     scene_finish(&sc);
     return CHECK_RESULT("test_texcopy");
 }

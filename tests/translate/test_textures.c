@@ -246,9 +246,14 @@ static void test_completeness(void)
     CMD(&s, Build2DMipmaps, GL_TEXTURE_2D, GL_RGB, 6, 4, GL_RGB, GL_UNSIGNED_BYTE, id);
     triangle(&s);
     run(ip, &s);
-    CHECK_EQ_U(last_texture(), 0);
-    if (sc.ntextures == 1) /* 6 is scaled to 8 (nearest power in log scale), 4 stays */
-        CHECK(sc.textures[0].width == 8 && sc.textures[0].height == 4);
+    /* The levels are scene textures of their own, the last first: 1 x 1,
+     * 2 x 1, 4 x 2, then level 0, linked by mip_next. */
+    CHECK_EQ_U(last_texture(), 3);
+    if (sc.ntextures == 4) { /* 6 is scaled to 8 (nearest power in log scale), 4 stays */
+        CHECK(sc.textures[3].width == 8 && sc.textures[3].height == 4);
+        CHECK(sc.textures[3].mip_next == 2 && sc.textures[2].width == 4);
+        CHECK(sc.textures[0].mip_next == -1 && sc.textures[0].width == 1);
+    }
     interp_destroy(ip);
     free_res();
 }
@@ -504,7 +509,7 @@ static void test_images(void)
     povtex pt;
     memset(&pt, 0, sizeof pt);
     float lo[2] = {-0.5f, -0.5f}, hi[2] = {1.5f, 1.5f}, scale[2], off[2];
-    CHECK(povtex_map(&pt, &sc, 0, lo, hi, false, scale, off) == 0);
+    CHECK(povtex_map(&pt, &sc, 0, lo, hi, false, NULL, scale, off) == 0);
     if (pt.n == 1) {
         CHECK(pt.imgs[0].width == 8 && pt.imgs[0].height == 2);
         CHECK_NEAR(0 * scale[0] + off[0], 3.0 / 8, 1e-6); /* s = 0: after 1 + 2 texels */

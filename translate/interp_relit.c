@@ -1,0 +1,87 @@
+/* interp_relit.c: GL's own per-vertex lighting for the faces POV-Ray
+ * cannot light as GL does (docs/mapping.md "Faces lit as GL lights them").
+ *
+ * Back faces under one-sided lighting: GL lights them with the front
+ * material and the normal as given, pointing away from the viewer, where
+ * POV-Ray turns every normal toward the viewer. Textured GL_MODULATE
+ * surfaces lit past white: GL clamps the lit colour per vertex before the
+ * texture multiplies it, POV-Ray does not. For those faces the primitive's
+ * vertices are copied with GL's lit colour (as --vertex-lighting does,
+ * interp_gouraud.c) into a second, unlit mesh; the other faces keep
+ * POV-Ray's lighting.
+ */
+#include "interp_internal.h"
+#include "talloc.h"
+
+#include <string.h>
+
+bool interp_relit_wanted(const interp *ip)
+{
+    const gl_attribs *a = &ip->st.a;
+    return ip->scene && a->caps[INTERP_CAP_LIGHTING] && !a->lighting.two_side &&
+           !interp_vertex_lit(ip) && ip->prim_mode > GL_LINE_STRIP;
+}
+
+void interp_relit_store(interp *ip, size_t k, const float colour[4], double peak)
+{
+    if (k >= ip->cap_relit &&
+        tr_grow((void **)&ip->relit_col, &ip->cap_relit, k + 1, sizeof *ip->relit_col) != 0) {
+        ip->scene->failed = true;
+        return;
+    }
+    memcpy(ip->relit_col[k], colour, sizeof ip->relit_col[k]);
+    if (k == 0)
+        ip->relit_over = false;
+    /* GL clamps each channel to 1 (2.14.8); a little past it is rounding. */
+    if (peak > 1 + 0.5 / 255)
+        ip->relit_over = true;
+}
+
+int interp_relit_split(interp *ip, const scene_look *look)
+{
+    if (!look->lit || !interp_relit_wanted(ip))
+        return 0;
+    /* GL_SEPARATE_SPECULAR_COLOR adds the highlight after the texture: an
+     * unlit copy cannot carry it (interp_lit_color sums it in). */
+    const gl_attribs *a = &ip->st.a;
+    const float *ks = a->lighting.material[0].specular;
+    if (look->texture >= 0 && a->lighting.color_control != GL_SINGLE_COLOR &&
+        (ks[0] > 0 || ks[1] > 0 || ks[2] > 0)) {
+        if (ip->relit_over)
+            interp_note(ip, DIAG_NOTE_RELIT_SPECULAR);
+        return INTERP_RELIT_PROBE; /* back faces are noted, not moved */
+    }
+    if (ip->relit_over && look->texture >= 0) {
+        const scene_texture *t = &ip->scene->textures[look->texture];
+        if (t->env_mode == GL_MODULATE && !t->colour_is_texel)
+            return INTERP_RELIT_ALL;
+    }
+    return INTERP_RELIT_BACK;
+}
+
+long interp_relit_vertices(interp *ip, uint32_t n)
+{
+    scene *s = ip->scene;
+    if (n > ip->cap_relit || s->nverts != ip->prim_first + n)
+        return -1;
+    for (uint32_t i = 0; i < n; i++)
+        if (!interp_budget_vertex(ip))
+            return -1;
+    scene_vertex *v = scene_reserve_vertices(s, n);
+    if (!v)
+        return -1;
+    const scene_vertex *src = s->verts + ip->prim_first;
+    for (uint32_t i = 0; i < n; i++) {
+        v[i] = src[i];
+        memcpy(v[i].color, ip->relit_col[i], sizeof v[i].color);
+    }
+    long first = (long)s->nverts;
+    scene_commit_vertices(s, n);
+    return first;
+}
+
+void interp_relit_done(interp *ip)
+{
+    ip->relit_over = false;
+    ip->prim_relit = false;
+}
