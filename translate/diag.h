@@ -40,6 +40,7 @@
     X(NOTE_ALPHA_TEST, "approximated: alpha test of lines and points (drawn whole), of faces whose vertex alphas lie on both sides of the reference (drawn whole), of a texture with vertex alphas that vary (the first vertex's alpha) or with GL_EQUAL or GL_NOTEQUAL and GL_LINEAR filtering (the texels tested one by one)") \
     X(NOTE_TEXTURE, "approximated: texture environment GL_COMBINE drawn as GL_MODULATE (a cube map's GL_DECAL, GL_BLEND and GL_ADD too), GL_BLEND and GL_ADD drawn opaque") \
     X(NOTE_TEX_SAMPLING, "approximated: a texture whose minification filter (without mipmaps) differs from its magnification filter is sampled with the magnification filter") \
+    X(NOTE_TEX_CLAMP_BORDER, "approximated: GL_CLAMP with linear filtering: the edge texels' outer half, which OpenGL blends with the border colour, drawn as the edge texels") \
     X(NOTE_TEX_MIPMAP, "approximated: mipmapped textures take GL's level of detail per pixel on flat runs of faces only: one level per group of faces on curved meshes, the base level in display-list copies and with two texture units, level 0 of cube maps and 3D textures") \
     X(NOTE_LISTS, "not translated yet: display lists (calls skipped)") \
     X(NOTE_ARRAYS, "not translated yet: vertex arrays (draws skipped)") \

@@ -1631,6 +1631,13 @@ int32_t interp_texture_for_unit(interp *ip, int k)
         interp_note(ip, DIAG_NOTE_TEX_MIPMAP);
     else if (o->min_filter != o->mag_filter)
         interp_note(ip, DIAG_NOTE_TEX_SAMPLING);
+    /* GL_CLAMP under a linear filter blends the border colour into the
+     * outer half of the edge texels (GL 2.1 3.8.8); the image written is
+     * padded with its edge texels instead (docs/mapping.md "Wrap"). */
+    bool linear = o->mag_filter == GL_LINEAR || o->min_filter == GL_LINEAR ||
+                  o->min_filter == GL_LINEAR_MIPMAP_NEAREST || o->min_filter == GL_LINEAR_MIPMAP_LINEAR;
+    if (linear && (o->wrap_s == GL_CLAMP || (o->target != GL_TEXTURE_1D && o->wrap_t == GL_CLAMP)))
+        interp_note(ip, DIAG_NOTE_TEX_CLAMP_BORDER);
     const gl_attribs *ga = &ip->st.a;
     GLenum cmm = ga->lighting.color_material_mode;
     if (env == GL_MODULATE && ga->caps[INTERP_CAP_LIGHTING] && ga->caps[INTERP_CAP_COLOR_MATERIAL] &&

@@ -621,6 +621,27 @@ static void test_cube(void)
     free_res();
 }
 
+/* GL_CLAMP blends the border under a linear filter: noted; GL_CLAMP_TO_EDGE
+ * and GL_CLAMP under GL_NEAREST are exact: no note. */
+static void test_clamp_border(void)
+{
+    static const GLenum wraps[3] = {GL_CLAMP, GL_CLAMP_TO_EDGE, GL_CLAMP};
+    static const GLenum filters[3] = {GL_LINEAR, GL_LINEAR, GL_NEAREST};
+    uint32_t id = add_bytes(px, sizeof px);
+    for (int c = 0; c < 3; c++) {
+        interp *ip = fresh();
+        seq s;
+        seq_init(&s);
+        texture(&s, id, GL_REPLACE, wraps[c]);
+        CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filters[c]);
+        CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filters[c]);
+        triangle(&s);
+        run(ip, &s);
+        CHECK_EQ_U(count(DIAG_NOTE_TEX_CLAMP_BORDER), c == 0 ? 1 : 0);
+        interp_destroy(ip);
+    }
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -631,6 +652,7 @@ int main(void)
     test_levels();
     test_mip_runs();
     test_cube();
+    test_clamp_border();
     scene_finish(&sc);
     return CHECK_RESULT("test_tex_env");
 }
