@@ -113,8 +113,17 @@ static void test_objects(const char *path)
         CHECK(trace_cmds_find(&s, (size_t)u0, "glEnable(cap=GL_TEXTURE_RECTANGLE") < u1);
         snprintf(want, sizeof want, "glBindTexture(target=GL_TEXTURE_3D, texture=%u)", tex[1]);
         long b = trace_cmds_find(&s, (size_t)u1, want);
-        CHECK(b > u1 && trace_cmds_find(&s, (size_t)u1 + 1, "glActiveTexture(") > b);
-        CHECK(trace_cmds_find(&s, (size_t)u1, "glEnable(cap=GL_TEXTURE_3D)") == b + 1);
+        long next = trace_cmds_find(&s, (size_t)u1 + 1, "glActiveTexture(");
+        CHECK(b > u1 && next > b);
+        long en = trace_cmds_find(&s, (size_t)u1, "glEnable(cap=GL_TEXTURE_3D)");
+        CHECK(en > u1 && en < next);
+        /* Each unit named once (and the active unit again at the end),
+         * each enable once. */
+        GLint nunits = 1;
+        glGetIntegerv(GL_MAX_TEXTURE_UNITS, &nunits);
+        CHECK(trace_cmds_count(&s, RGL_OP_ActiveTexture) == (size_t)nunits + 1);
+        CHECK(trace_cmds_find(&s, (size_t)en + 1, "glEnable(cap=GL_TEXTURE_3D)") < 0);
+        CHECK(trace_cmds_find(&s, (size_t)u1, "glEnable(cap=GL_TEXTURE_RECTANGLE") < 0);
     }
     long last = find_last(&s, s.count, "glActiveTexture(");
     CHECK(last >= 0 && strcmp(s.lines[last], "glActiveTexture(texture=GL_TEXTURE1)") == 0);
