@@ -400,7 +400,8 @@ uint32_t rgl_tex_slot_target(int slot);
  * without multitexture, inside glBegin/glEnd, or past RGL_MAX_TEX_UNITS). */
 uint32_t rgl_tex_active_unit(const rgl_stream *s);
 
-/* The snapshot's texture objects and every unit's bindings (snaptex.c). */
+/* The snapshot's texture objects, then every unit's state in one block
+ * after one glActiveTexture, the active unit last (snaptex.c). */
 void rgl_snap_textures(rgl_stream *s, rgl_buf *out);
 
 /* Whether target is a proxy texture target (GL reads no pixels for it). */

@@ -6,13 +6,13 @@
  * deduplicated resource that the frame references, so each frame can be
  * translated without the frames before it (docs/design.md, "Resolved state").
  *
- * Only side-effect-free queries are used, except for texture parameters
- * and bindings (snaptex.c): the texture is bound, or the unit made active,
- * to read them, and what GL had is restored.
+ * Only side-effect-free queries are used, except for the texture part
+ * (snaptex.c): texture objects are bound to read their parameters, and
+ * each texture unit made active in turn to read its state; what GL had is
+ * restored.
  */
 #include <string.h>
 
-#define GL_GLEXT_PROTOTYPES 1 /* glActiveTexture (GL 1.3) */
 #include <GL/gl.h>
 #include <GL/glext.h>
 
@@ -22,14 +22,13 @@
 
 static const GLenum light_names[8] = {GL_LIGHT0, GL_LIGHT1, GL_LIGHT2, GL_LIGHT3,
                                       GL_LIGHT4, GL_LIGHT5, GL_LIGHT6, GL_LIGHT7};
-static const GLenum texgen_coords[4] = {GL_S, GL_T, GL_R, GL_Q};
 
-/* Capabilities that change what a frame shows, all off by default. */
+/* Capabilities that change what a frame shows, all off by default (the
+ * texture units' are snaptex.c's). */
 static const GLenum caps_off[] = {
     GL_LIGHTING, GL_LIGHT0, GL_LIGHT1, GL_LIGHT2, GL_LIGHT3, GL_LIGHT4, GL_LIGHT5, GL_LIGHT6,
     GL_LIGHT7, GL_COLOR_MATERIAL, GL_CULL_FACE, GL_DEPTH_TEST, GL_BLEND, GL_ALPHA_TEST, GL_FOG,
-    GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_GEN_S,
-    GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q, GL_POLYGON_OFFSET_FILL,
+    GL_NORMALIZE, GL_RESCALE_NORMAL, GL_POLYGON_OFFSET_FILL,
     GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT, GL_LINE_SMOOTH, GL_POINT_SMOOTH,
     GL_POLYGON_SMOOTH, GL_AUTO_NORMAL, GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL,
     GL_MAP1_TEXTURE_COORD_1, GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3,
@@ -54,8 +53,8 @@ static GLfloat get_f(GLenum pname)
 
 static void snap_lights_eye(rgl_buf *b)
 {
-    /* GL keeps light positions, spot directions and eye planes in eye space
-     * (transformed by the modelview current at the glLight/glTexGen call):
+    /* GL keeps light positions and spot directions in eye space
+     * (transformed by the modelview current at the glLight call):
      * replayed under an identity modelview they stay as read back. */
     for (int l = 0; l < 8; l++) {
         GLfloat v[4] = {0, 0, 1, 0};
@@ -64,11 +63,6 @@ static void snap_lights_eye(rgl_buf *b)
         GLfloat d[4] = {0, 0, -1, 0};
         glGetLightfv(light_names[l], GL_SPOT_DIRECTION, d);
         rgl_emit(b, RGL_OP_Lightfv, "eeN", light_names[l], GL_SPOT_DIRECTION, d, 3);
-    }
-    for (int c = 0; c < 4; c++) {
-        GLfloat v[4] = {0};
-        glGetTexGenfv(texgen_coords[c], GL_EYE_PLANE, v);
-        rgl_emit(b, RGL_OP_TexGenfv, "eeN", texgen_coords[c], GL_EYE_PLANE, v, 4);
     }
 }
 
@@ -102,21 +96,15 @@ static void snap_lights(rgl_buf *b)
         rgl_emit(b, RGL_OP_LightModeli, "ei", GL_LIGHT_MODEL_COLOR_CONTROL, cc[0]);
 }
 
-static void snap_current(rgl_buf *b, GLint active)
+/* The current colour and normal; each unit's texture coordinates are
+ * snaptex.c's. */
+static void snap_current(rgl_buf *b)
 {
-    GLfloat c[4] = {1, 1, 1, 1}, n[4] = {0, 0, 1, 0}, t[4] = {0, 0, 0, 1};
+    GLfloat c[4] = {1, 1, 1, 1}, n[4] = {0, 0, 1, 0};
     glGetFloatv(GL_CURRENT_COLOR, c);
     glGetFloatv(GL_CURRENT_NORMAL, n);
-    glGetFloatv(GL_CURRENT_TEXTURE_COORDS, t);
     rgl_emit(b, RGL_OP_Color4f, "ffff", (double)c[0], (double)c[1], (double)c[2], (double)c[3]);
     rgl_emit(b, RGL_OP_Normal3f, "fff", (double)n[0], (double)n[1], (double)n[2]);
-    /* GL_CURRENT_TEXTURE_COORDS is the active unit's; glTexCoord unit 0's. */
-    if (active == GL_TEXTURE0)
-        rgl_emit(b, RGL_OP_TexCoord4f, "ffff", (double)t[0], (double)t[1], (double)t[2],
-                 (double)t[3]);
-    else
-        rgl_emit(b, RGL_OP_MultiTexCoord4f, "effff", (uint32_t)active, (double)t[0],
-                 (double)t[1], (double)t[2], (double)t[3]);
 }
 
 static void snap_materials(rgl_buf *b)
@@ -293,101 +281,6 @@ static void snap_raster(rgl_buf *b)
     rgl_emit(b, RGL_OP_DepthRange, "dd", dr[0], dr[1]);
 }
 
-static void snap_texenv(rgl_buf *b)
-{
-    GLint mode = GL_MODULATE;
-    GLfloat color[4] = {0};
-    glGetTexEnviv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, &mode);
-    glGetTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, color);
-    rgl_emit(b, RGL_OP_TexEnvi, "eei", GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, mode);
-    rgl_emit(b, RGL_OP_TexEnvfv, "eeN", GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, color, 4);
-    if (mode == GL_COMBINE) { /* the combiner (GL 1.3), only where it is used */
-        static const GLenum ipn[] = {GL_COMBINE_RGB, GL_COMBINE_ALPHA, GL_SOURCE0_RGB,
-                                     GL_SOURCE1_RGB, GL_SOURCE2_RGB, GL_OPERAND0_RGB,
-                                     GL_OPERAND1_RGB, GL_OPERAND2_RGB, GL_SOURCE0_ALPHA,
-                                     GL_SOURCE1_ALPHA, GL_SOURCE2_ALPHA, GL_OPERAND0_ALPHA,
-                                     GL_OPERAND1_ALPHA, GL_OPERAND2_ALPHA};
-        for (size_t k = 0; k < sizeof ipn / sizeof ipn[0]; k++) {
-            GLint v = SENTINEL_I;
-            glGetTexEnviv(GL_TEXTURE_ENV, ipn[k], &v);
-            if (v != SENTINEL_I)
-                rgl_emit(b, RGL_OP_TexEnvi, "eei", GL_TEXTURE_ENV, ipn[k], v);
-        }
-        static const GLenum fpn[] = {GL_RGB_SCALE, GL_ALPHA_SCALE};
-        for (size_t k = 0; k < 2; k++) {
-            GLfloat f = 1;
-            glGetTexEnvfv(GL_TEXTURE_ENV, fpn[k], &f);
-            rgl_emit(b, RGL_OP_TexEnvf, "eef", GL_TEXTURE_ENV, fpn[k], (double)f);
-        }
-    }
-    for (int c = 0; c < 4; c++) {
-        GLint gm = GL_EYE_LINEAR;
-        GLfloat plane[4] = {0};
-        glGetTexGeniv(texgen_coords[c], GL_TEXTURE_GEN_MODE, &gm);
-        glGetTexGenfv(texgen_coords[c], GL_OBJECT_PLANE, plane);
-        rgl_emit(b, RGL_OP_TexGeni, "eei", texgen_coords[c], GL_TEXTURE_GEN_MODE, gm);
-        rgl_emit(b, RGL_OP_TexGenfv, "eeN", texgen_coords[c], GL_OBJECT_PLANE, plane, 4);
-    }
-}
-
-/* Multitexture (GL 1.3): what the calls above read is the active unit's,
- * replayed on the unit the snapshot's first glActiveTexture names. The
- * other units' state follows, each read with its unit made active and
- * written after a glActiveTexture naming it, and the program's active unit
- * is restored at the end, in GL and in the replay. Not while GL compiles
- * a list: glActiveTexture would go into it (the other units are then
- * left out, as before multitexture). */
-static GLint active_unit(GLint *nunits)
-{
-    GLint active = GL_TEXTURE0, n = 1;
-    glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
-    glGetIntegerv(GL_MAX_TEXTURE_UNITS, &n);
-    if (active < GL_TEXTURE0 || active >= GL_TEXTURE0 + RGL_MAX_TEX_UNITS)
-        active = GL_TEXTURE0;
-    *nunits = n < 1 ? 1 : n > RGL_MAX_TEX_UNITS ? RGL_MAX_TEX_UNITS : n;
-    return active;
-}
-
-static void snap_unit(rgl_buf *b, GLint u)
-{
-    static const GLenum caps_unit[] = {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_GEN_S,
-                                       GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q};
-    for (size_t k = 0; k < sizeof caps_unit / sizeof caps_unit[0]; k++)
-        if (glIsEnabled(caps_unit[k]))
-            rgl_emit(b, RGL_OP_Enable, "e", caps_unit[k]);
-    snap_texenv(b);
-    for (int c = 0; c < 4; c++) { /* under the snapshot's identity modelview */
-        GLfloat v[4] = {0};
-        glGetTexGenfv(texgen_coords[c], GL_EYE_PLANE, v);
-        rgl_emit(b, RGL_OP_TexGenfv, "eeN", texgen_coords[c], GL_EYE_PLANE, v, 4);
-    }
-    rgl_emit(b, RGL_OP_BindTexture, "ee", GL_TEXTURE_1D, (uint32_t)get_i(GL_TEXTURE_BINDING_1D));
-    rgl_emit(b, RGL_OP_BindTexture, "ee", GL_TEXTURE_2D, (uint32_t)get_i(GL_TEXTURE_BINDING_2D));
-    GLfloat t[4] = {0, 0, 0, 1}; /* glTexCoord is unit 0's: the unit named */
-    glGetFloatv(GL_CURRENT_TEXTURE_COORDS, t);
-    rgl_emit(b, RGL_OP_MultiTexCoord4f, "effff", (uint32_t)(GL_TEXTURE0 + u), (double)t[0],
-             (double)t[1], (double)t[2], (double)t[3]);
-    GLfloat m[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    glGetFloatv(GL_TEXTURE_MATRIX, m);
-    rgl_emit(b, RGL_OP_MatrixMode, "e", GL_TEXTURE);
-    rgl_emit(b, RGL_OP_LoadMatrixf, "A", m, 16);
-}
-
-static void snap_other_units(rgl_buf *b, GLint active, GLint nunits)
-{
-    if (nunits < 2 || get_i(GL_LIST_INDEX) != 0)
-        return;
-    for (GLint u = 0; u < nunits; u++) {
-        if (GL_TEXTURE0 + u == active)
-            continue;
-        glActiveTexture((GLenum)(GL_TEXTURE0 + u));
-        rgl_emit(b, RGL_OP_ActiveTexture, "e", (uint32_t)(GL_TEXTURE0 + u));
-        snap_unit(b, u);
-    }
-    glActiveTexture((GLenum)active);
-    rgl_emit(b, RGL_OP_ActiveTexture, "e", (uint32_t)active);
-}
-
 static void snap_lists(rgl_stream *s, rgl_buf *b)
 {
     for (size_t k = 0; k < s->objs.nlists; k++) {
@@ -399,10 +292,10 @@ static void snap_lists(rgl_stream *s, rgl_buf *b)
 
 static void snap_matrices(rgl_buf *b, GLint mode)
 {
-    static const GLenum modes[3] = {GL_TEXTURE, GL_PROJECTION, GL_MODELVIEW};
-    static const GLenum pnames[3] = {GL_TEXTURE_MATRIX, GL_PROJECTION_MATRIX,
-                                     GL_MODELVIEW_MATRIX};
-    for (int k = 0; k < 3; k++) {
+    /* The texture matrices are each unit's (snaptex.c). */
+    static const GLenum modes[2] = {GL_PROJECTION, GL_MODELVIEW};
+    static const GLenum pnames[2] = {GL_PROJECTION_MATRIX, GL_MODELVIEW_MATRIX};
+    for (int k = 0; k < 2; k++) {
         GLfloat m[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
         glGetFloatv(pnames[k], m);
         rgl_emit(b, RGL_OP_MatrixMode, "e", modes[k]);
@@ -431,27 +324,21 @@ bool rgl_snapshot_take(rgl_stream *s, rgl_buf *out)
     if (!matrix_mode(&mode))
         return false;
     out->size = 0;
-    GLint nunits;
-    GLint active = active_unit(&nunits);
     rgl_emit(out, RGL_OP_MatrixMode, "e", GL_MODELVIEW);
     rgl_emit(out, RGL_OP_LoadIdentity, "");
-    if (active != GL_TEXTURE0) /* the unit the state read below belongs to */
-        rgl_emit(out, RGL_OP_ActiveTexture, "e", (uint32_t)active);
     snap_lights_eye(out);
     snap_clip_planes(out);
     snap_stencil(out);
     snap_lights(out);
-    snap_current(out, active);
+    snap_current(out);
     snap_materials(out);
     snap_enables(out);
     snap_eval(out);
     snap_raster(out);
-    snap_texenv(out);
     rgl_emit(out, RGL_OP_ListBase, "e", (uint32_t)get_i(GL_LIST_BASE));
-    rgl_snap_textures(s, out);
+    rgl_snap_textures(s, out); /* the objects, then every unit's state */
     rgl_quadrics_snapshot(out);
     snap_lists(s, out);
-    snap_other_units(out, active, nunits);
     snap_matrices(out, mode);
     return true;
 }

@@ -1,15 +1,17 @@
-/* snaptex.c: texture objects and bindings in the frame-start snapshot.
+/* snaptex.c: texture objects and texture units in the frame-start snapshot.
  *
  * Every texture object RayGL saw made -- 1D, 2D, rectangle, 3D, cube map --
  * is re-created from its recorded definition (entry_custom.c keeps them),
- * then each texture unit gets the bindings GL has now, and the enables of
- * the rectangle, 3D and cube-map targets. Only what the context supports is
+ * then each texture unit gets one block after one glActiveTexture: its
+ * enables, environment, texgen, bindings, current coordinates and texture
+ * matrix as GL has them now. Only what the context supports is
  * queried (its version and extension strings), so the snapshot raises no
  * GL error in the host program (STYLE.md, section 4).
  */
 #include <stdio.h>
 #include <string.h>
 
+#define GL_GLEXT_PROTOTYPES 1 /* glActiveTexture (GL 1.3) */
 #include <GL/gl.h>
 #include <GL/glext.h>
 
@@ -120,74 +122,201 @@ static void snap_object(rgl_buf *b, const rgl_texture *tex, bool may_bind)
     }
 }
 
-void rgl_snap_textures(rgl_stream *s, rgl_buf *b)
+static const GLenum texgen_coords[4] = {GL_S, GL_T, GL_R, GL_Q};
+
+static bool all_equal(const GLfloat *v, const GLfloat *w, int n)
 {
-    bool has[RGL_TEX_TARGETS] = {
-        true,
-        true,
-        gl_has(3, 1, "GL_ARB_texture_rectangle") || gl_has(3, 1, "GL_NV_texture_rectangle"),
-        gl_has(1, 2, "GL_EXT_texture3D"),
-        gl_has(1, 3, "GL_ARB_texture_cube_map"),
-    };
-    bool multi = has_multitexture();
-    /* While GL compiles a list, glBindTexture and glActiveTexture would go
-     * into it: then other units' bindings come from tracking, and their
-     * enables are left as GL's initial ones. */
-    GLint list = 0;
-    glGetIntegerv(GL_LIST_INDEX, &list);
-    bool may_bind = list == 0;
-    uint32_t active = rgl_tex_active_unit(s), units = 1;
-    if (multi) {
-        GLint n = 1;
-        glGetIntegerv(GL_MAX_TEXTURE_UNITS, &n);
-        units = n < 1 ? 1 : n > RGL_MAX_TEX_UNITS ? RGL_MAX_TEX_UNITS : (uint32_t)n;
-        if (active >= units)
-            active = 0;
-    }
-    uint32_t bound[RGL_MAX_TEX_UNITS][RGL_TEX_TARGETS];
-    bool on[RGL_MAX_TEX_UNITS][RGL_TEX_TARGETS];
-    memset(on, 0, sizeof on);
-    for (uint32_t u = 0; u < units; u++) {
-        bool live = u == active || may_bind;
-        if (multi && may_bind)
-            glActiveTexture(GL_TEXTURE0 + u);
-        for (int k = 0; k < RGL_TEX_TARGETS; k++) {
-            bound[u][k] = s->objs.bound[u][k];
-            if (!has[k] || !live)
-                continue;
-            GLint v = 0;
-            glGetIntegerv(binding_pnames[k], &v);
-            bound[u][k] = (uint32_t)v;
-            /* 1D and 2D enables are snapshot.c's. */
-            on[u][k] = k >= RGL_TEX_SLOT_RECT && glIsEnabled(tex_targets[k]);
+    for (int k = 0; k < n; k++)
+        if (v[k] != w[k])
+            return false;
+    return true;
+}
+
+/* The active unit's environment and texgen, only what differs from GL's
+ * initial state (the replay starts from it). */
+static void snap_texenv(rgl_buf *b)
+{
+    static const GLfloat zero[4] = {0, 0, 0, 0};
+    GLint mode = GL_MODULATE;
+    GLfloat color[4] = {0};
+    glGetTexEnviv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, &mode);
+    glGetTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, color);
+    if (mode != GL_MODULATE)
+        rgl_emit(b, RGL_OP_TexEnvi, "eei", GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, mode);
+    if (!all_equal(color, zero, 4))
+        rgl_emit(b, RGL_OP_TexEnvfv, "eeN", GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, color, 4);
+    if (mode == GL_COMBINE) { /* the combiner (GL 1.3), only where it is used */
+        static const GLenum ipn[] = {GL_COMBINE_RGB, GL_COMBINE_ALPHA, GL_SOURCE0_RGB,
+                                     GL_SOURCE1_RGB, GL_SOURCE2_RGB, GL_OPERAND0_RGB,
+                                     GL_OPERAND1_RGB, GL_OPERAND2_RGB, GL_SOURCE0_ALPHA,
+                                     GL_SOURCE1_ALPHA, GL_SOURCE2_ALPHA, GL_OPERAND0_ALPHA,
+                                     GL_OPERAND1_ALPHA, GL_OPERAND2_ALPHA};
+        for (size_t k = 0; k < sizeof ipn / sizeof ipn[0]; k++) {
+            GLint v = SENTINEL_I;
+            glGetTexEnviv(GL_TEXTURE_ENV, ipn[k], &v);
+            if (v != SENTINEL_I)
+                rgl_emit(b, RGL_OP_TexEnvi, "eei", GL_TEXTURE_ENV, ipn[k], v);
+        }
+        static const GLenum fpn[] = {GL_RGB_SCALE, GL_ALPHA_SCALE};
+        for (size_t k = 0; k < 2; k++) {
+            GLfloat f = 1;
+            glGetTexEnvfv(GL_TEXTURE_ENV, fpn[k], &f);
+            rgl_emit(b, RGL_OP_TexEnvf, "eef", GL_TEXTURE_ENV, fpn[k], (double)f);
         }
     }
-    if (multi && may_bind)
-        glActiveTexture(GL_TEXTURE0 + active);
+    /* GL keeps eye planes in eye space: under the snapshot's identity
+     * modelview they go in as read back. */
+    static const GLfloat initial_plane[4][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0}, {0}};
+    for (int c = 0; c < 4; c++) {
+        GLint gm = GL_EYE_LINEAR;
+        GLfloat obj[4], eye[4];
+        memcpy(obj, initial_plane[c], sizeof obj);
+        memcpy(eye, initial_plane[c], sizeof eye);
+        glGetTexGeniv(texgen_coords[c], GL_TEXTURE_GEN_MODE, &gm);
+        glGetTexGenfv(texgen_coords[c], GL_OBJECT_PLANE, obj);
+        glGetTexGenfv(texgen_coords[c], GL_EYE_PLANE, eye);
+        if (gm != GL_EYE_LINEAR)
+            rgl_emit(b, RGL_OP_TexGeni, "eei", texgen_coords[c], GL_TEXTURE_GEN_MODE, gm);
+        if (!all_equal(obj, initial_plane[c], 4))
+            rgl_emit(b, RGL_OP_TexGenfv, "eeN", texgen_coords[c], GL_OBJECT_PLANE, obj, 4);
+        if (!all_equal(eye, initial_plane[c], 4))
+            rgl_emit(b, RGL_OP_TexGenfv, "eeN", texgen_coords[c], GL_EYE_PLANE, eye, 4);
+    }
+}
 
+/* What the snapshot knows of the context's texturing. */
+typedef struct {
+    bool has[RGL_TEX_TARGETS]; /* targets the context supports */
+    bool multi;                /* glActiveTexture (GL 1.3, ARB_multitexture) */
+    bool may_bind;             /* no list being compiled */
+    uint32_t active, units;
+    uint32_t replay[RGL_TEX_TARGETS]; /* unit 0's bindings in the replay so far */
+    bool texture_mode;                /* the replay's matrix mode is GL_TEXTURE */
+} snap_units;
+
+/* Unit u's block, read from GL with u the active unit: enables, environment,
+ * texgen, bindings, current coordinates, texture matrix; each only where it
+ * differs from what the replay has. */
+static void snap_unit_live(rgl_buf *b, snap_units *su, uint32_t u)
+{
+    static const GLenum gen_caps[4] = {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R,
+                                       GL_TEXTURE_GEN_Q};
+    for (int k = 0; k < RGL_TEX_TARGETS; k++)
+        if (su->has[k] && glIsEnabled(tex_targets[k]))
+            rgl_emit(b, RGL_OP_Enable, "e", tex_targets[k]);
+    for (int c = 0; c < 4; c++)
+        if (glIsEnabled(gen_caps[c]))
+            rgl_emit(b, RGL_OP_Enable, "e", gen_caps[c]);
+    snap_texenv(b);
+    for (int k = 0; k < RGL_TEX_TARGETS; k++) {
+        if (!su->has[k])
+            continue;
+        GLint v = 0;
+        glGetIntegerv(binding_pnames[k], &v);
+        if ((uint32_t)v != (u == 0 ? su->replay[k] : 0))
+            rgl_emit(b, RGL_OP_BindTexture, "ee", tex_targets[k], (uint32_t)v);
+    }
+    static const GLfloat t0[4] = {0, 0, 0, 1};
+    GLfloat t[4] = {0, 0, 0, 1};
+    glGetFloatv(GL_CURRENT_TEXTURE_COORDS, t);
+    if (!all_equal(t, t0, 4)) {
+        if (su->multi) /* glTexCoord is unit 0's: the unit named */
+            rgl_emit(b, RGL_OP_MultiTexCoord4f, "effff", GL_TEXTURE0 + u, (double)t[0],
+                     (double)t[1], (double)t[2], (double)t[3]);
+        else
+            rgl_emit(b, RGL_OP_TexCoord4f, "ffff", (double)t[0], (double)t[1], (double)t[2],
+                     (double)t[3]);
+    }
+    static const GLfloat id[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    GLfloat m[16];
+    memcpy(m, id, sizeof m);
+    glGetFloatv(GL_TEXTURE_MATRIX, m);
+    if (!all_equal(m, id, 16)) {
+        if (!su->texture_mode)
+            rgl_emit(b, RGL_OP_MatrixMode, "e", GL_TEXTURE);
+        su->texture_mode = true;
+        rgl_emit(b, RGL_OP_LoadMatrixf, "A", m, 16);
+    }
+}
+
+/* A unit GL cannot make active (a list is being compiled): the bindings
+ * RayGL tracked; the rest is left as GL's initial state. */
+static void snap_unit_tracked(rgl_stream *s, rgl_buf *b, const snap_units *su, uint32_t u)
+{
+    for (int k = 0; k < RGL_TEX_TARGETS; k++)
+        if (su->has[k] && s->objs.bound[u][k] != (u == 0 ? su->replay[k] : 0))
+            rgl_emit(b, RGL_OP_BindTexture, "ee", tex_targets[k], s->objs.bound[u][k]);
+}
+
+/* The texture objects, then one block per unit in unit order, each after
+ * one glActiveTexture naming it (in GL and in the replay, which starts on
+ * unit 0), then the program's active unit once, if it is not the last
+ * one named. Without multitexture: unit 0's block alone, no
+ * glActiveTexture. The caller restores GL's matrix mode in the replay. */
+void rgl_snap_textures(rgl_stream *s, rgl_buf *b)
+{
+    snap_units su = {
+        .has = {true, true,
+                gl_has(3, 1, "GL_ARB_texture_rectangle") ||
+                    gl_has(3, 1, "GL_NV_texture_rectangle"),
+                gl_has(1, 2, "GL_EXT_texture3D"), gl_has(1, 3, "GL_ARB_texture_cube_map")},
+        .multi = has_multitexture(),
+        .units = 1,
+    };
+    /* While GL compiles a list, glBindTexture and glActiveTexture would go
+     * into it. */
+    GLint list = 0;
+    glGetIntegerv(GL_LIST_INDEX, &list);
+    su.may_bind = list == 0;
+    su.active = rgl_tex_active_unit(s);
+    if (su.multi) {
+        GLint n = 1;
+        glGetIntegerv(GL_MAX_TEXTURE_UNITS, &n);
+        su.units = n < 1 ? 1 : n > RGL_MAX_TEX_UNITS ? RGL_MAX_TEX_UNITS : (uint32_t)n;
+        if (su.active >= su.units)
+            su.active = 0;
+    }
+
+    /* The objects, bound on the active unit to read their live parameters;
+     * its bindings put back after. */
+    GLint active_bound[RGL_TEX_TARGETS] = {0};
+    for (int k = 0; k < RGL_TEX_TARGETS; k++)
+        if (su.has[k])
+            glGetIntegerv(binding_pnames[k], &active_bound[k]);
+    bool bound_any = false;
     for (size_t t = 0; t < s->objs.ntextures; t++) {
         const rgl_texture *tex = &s->objs.textures[t];
         int slot = rgl_tex_slot(tex->target);
-        if (slot >= 0 && has[slot])
-            snap_object(b, tex, may_bind);
+        if (slot < 0 || !su.has[slot])
+            continue;
+        snap_object(b, tex, su.may_bind);
+        su.replay[slot] = tex->name;
+        bound_any = true;
     }
-    if (may_bind)
+    if (su.may_bind && bound_any)
         for (int k = 0; k < RGL_TEX_TARGETS; k++)
-            if (has[k])
-                glBindTexture(tex_targets[k], bound[active][k]);
+            if (su.has[k])
+                glBindTexture(tex_targets[k], (GLuint)active_bound[k]);
 
-    /* Replayed from GL's initial state, where unit 0 is active. */
-    for (uint32_t u = 0; u < units; u++) {
-        if (multi)
-            rgl_emit(b, RGL_OP_ActiveTexture, "e", GL_TEXTURE0 + u);
-        for (int k = 0; k < RGL_TEX_TARGETS; k++) {
-            if (!has[k])
-                continue;
-            rgl_emit(b, RGL_OP_BindTexture, "ee", tex_targets[k], bound[u][k]);
-            if (on[u][k])
-                rgl_emit(b, RGL_OP_Enable, "e", tex_targets[k]);
-        }
+    if (!su.multi) {
+        snap_unit_live(b, &su, 0);
+        return;
     }
-    if (multi)
-        rgl_emit(b, RGL_OP_ActiveTexture, "e", GL_TEXTURE0 + active);
+    uint32_t last = 0;
+    for (uint32_t u = 0; u < su.units; u++) {
+        bool live = su.may_bind || u == su.active;
+        if (su.may_bind)
+            glActiveTexture(GL_TEXTURE0 + u);
+        rgl_emit(b, RGL_OP_ActiveTexture, "e", GL_TEXTURE0 + u);
+        last = u;
+        if (live)
+            snap_unit_live(b, &su, u);
+        else
+            snap_unit_tracked(s, b, &su, u);
+    }
+    if (last != su.active) {
+        if (su.may_bind)
+            glActiveTexture(GL_TEXTURE0 + su.active);
+        rgl_emit(b, RGL_OP_ActiveTexture, "e", GL_TEXTURE0 + su.active);
+    }
 }

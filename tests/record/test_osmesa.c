@@ -508,10 +508,19 @@ static void test_eval_snapshot(const char *path)
     rgl_reader_destroy(r);
 }
 
-/* Per-unit texture state reaches the next frame's snapshot: each unit's
- * enables, environment, coordinates and texture matrix after a
- * glActiveTexture naming it, the program's active unit (here unit 2) first
- * and last. */
+/* Index of the last line before `to` that starts with prefix, or -1. */
+static long find_prev(const trace_cmds *c, size_t to, const char *prefix)
+{
+    for (long k = (long)(to < c->count ? to : c->count) - 1; k >= 0; k--)
+        if (strncmp(c->lines[k], prefix, strlen(prefix)) == 0)
+            return k;
+    return -1;
+}
+
+/* Per-unit texture state reaches the next frame's snapshot: one block per
+ * unit in unit order, each unit's enables, environment, coordinates and
+ * texture matrix after the one glActiveTexture naming it, and the
+ * program's active unit (here unit 2) named again last. */
 static void test_unit_snapshot(const char *path)
 {
     CHECK(rayglRecordOpen(path) == 0);
@@ -553,25 +562,36 @@ static void test_unit_snapshot(const char *path)
     if (CHECK(rgl_reader_frame_count(r) == 2) &&
         CHECK(rgl_reader_frame(r, 1, &fi, NULL) == RGL_OK) && CHECK(fi.state != 0)) {
         trace_cmds s = trace_resource_cmds(r, fi.state);
-        CHECK(trace_cmds_find(&s, 0, "glActiveTexture(texture=GL_TEXTURE2)") == 2);
-        /* The active unit's current coordinates go to that unit. */
-        CHECK(trace_cmds_find(&s, 0, "glMultiTexCoord4f(target=GL_TEXTURE2, s=0.5, t=0.125, r=0, q=1)") > 2);
+        /* One block per unit, in unit order, each after one glActiveTexture. */
+        GLint nunits = 1;
+        glGetIntegerv(GL_MAX_TEXTURE_UNITS, &nunits);
+        CHECK(nunits >= 5);
+        long u0 = trace_cmds_find(&s, 0, "glActiveTexture(texture=GL_TEXTURE0)");
         long u1 = trace_cmds_find(&s, 0, "glActiveTexture(texture=GL_TEXTURE1)");
+        long u2 = trace_cmds_find(&s, 0, "glActiveTexture(texture=GL_TEXTURE2)");
         long u3 = trace_cmds_find(&s, 0, "glActiveTexture(texture=GL_TEXTURE3)");
-        CHECK(u1 > 2 && u3 > u1);
+        long u4 = trace_cmds_find(&s, 0, "glActiveTexture(texture=GL_TEXTURE4)");
+        CHECK(u0 > 0 && u1 > u0 && u2 > u1 && u3 > u2 && u4 > u3);
+        /* Every unit named once, the active one again at the end. */
+        CHECK(trace_cmds_count(&s, RGL_OP_ActiveTexture) == (size_t)nunits + 1);
+        /* The active unit's current coordinates go to that unit. */
+        long tc2 = trace_cmds_find(&s, 0, "glMultiTexCoord4f(target=GL_TEXTURE2, s=0.5, t=0.125, r=0, q=1)");
+        CHECK(tc2 > u2 && tc2 < u3);
         long en = trace_cmds_find(&s, (size_t)(u1 > 0 ? u1 : 0), "glEnable(cap=GL_TEXTURE_2D)");
-        CHECK(en > u1 && en < u3);
-        long env = trace_cmds_find(&s, (size_t)(u1 > 0 ? u1 : 0),
+        CHECK(en > u1 && en < u2);
+        CHECK(trace_cmds_find(&s, (size_t)(u2 > 0 ? u2 : 0), "glEnable(cap=GL_TEXTURE_2D)") < 0);
+        long env = trace_cmds_find(&s, 0,
                                    "glTexEnvi(target=GL_TEXTURE_ENV, pname=GL_TEXTURE_ENV_MODE, param=260)");
-        CHECK(env > u1 && env < u3);
-        long tc = trace_cmds_find(&s, (size_t)(u1 > 0 ? u1 : 0),
+        CHECK(env > u1 && env < u2);
+        long tc = trace_cmds_find(&s, 0,
                                   "glMultiTexCoord4f(target=GL_TEXTURE1, s=0.25, t=0.75, r=0, q=1)");
-        CHECK(tc > u1 && tc < u3);
-        long tm = trace_cmds_find(&s, (size_t)(u1 > 0 ? u1 : 0),
+        CHECK(tc > u1 && tc < u2);
+        long tm = trace_cmds_find(&s, 0,
                                   "glLoadMatrixf(m=[1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0.5, 0, 0, 1])");
-        CHECK(tm > u1 && tm < u3);
+        CHECK(tm > u1 && tm < u2);
+        long mm = find_prev(&s, (size_t)(tm > 0 ? tm : 0), "glMatrixMode(");
+        CHECK(mm >= 0 && strcmp(s.lines[mm], "glMatrixMode(mode=GL_TEXTURE)") == 0);
         /* Unit 3's combiner, only where GL_COMBINE is the mode. */
-        long u4 = trace_cmds_find(&s, (size_t)(u3 > 0 ? u3 : 0), "glActiveTexture(texture=GL_TEXTURE4)");
         long sub = trace_cmds_find(&s, 0, "glTexEnvi(target=GL_TEXTURE_ENV, pname=GL_COMBINE_RGB, param=34023)");
         CHECK(sub > u3 && sub < u4);
         long sc = trace_cmds_find(&s, 0, "glTexEnvf(target=GL_TEXTURE_ENV, pname=GL_RGB_SCALE, param=2)");
@@ -582,7 +602,10 @@ static void test_unit_snapshot(const char *path)
         for (size_t i = 0; i < s.count; i++)
             if (strncmp(s.lines[i], "glActiveTexture(", 16) == 0)
                 last = (long)i;
-        CHECK(last > u3 && strcmp(s.lines[last], "glActiveTexture(texture=GL_TEXTURE2)") == 0);
+        CHECK(last > u4 && strcmp(s.lines[last], "glActiveTexture(texture=GL_TEXTURE2)") == 0);
+        /* Units at GL's initial state add nothing past their glActiveTexture. */
+        long u5 = trace_cmds_find(&s, 0, "glActiveTexture(texture=GL_TEXTURE5)");
+        CHECK(u5 > u4 && u5 == u4 + 1);
         if (check_failures)
             trace_cmds_print(&s, "unit snapshot");
         trace_cmds_free(&s);

@@ -113,8 +113,17 @@ static void test_objects(const char *path)
         CHECK(trace_cmds_find(&s, (size_t)u0, "glEnable(cap=GL_TEXTURE_RECTANGLE") < u1);
         snprintf(want, sizeof want, "glBindTexture(target=GL_TEXTURE_3D, texture=%u)", tex[1]);
         long b = trace_cmds_find(&s, (size_t)u1, want);
-        CHECK(b > u1 && trace_cmds_find(&s, (size_t)u1 + 1, "glActiveTexture(") > b);
-        CHECK(trace_cmds_find(&s, (size_t)u1, "glEnable(cap=GL_TEXTURE_3D)") == b + 1);
+        long next = trace_cmds_find(&s, (size_t)u1 + 1, "glActiveTexture(");
+        CHECK(b > u1 && next > b);
+        long en = trace_cmds_find(&s, (size_t)u1, "glEnable(cap=GL_TEXTURE_3D)");
+        CHECK(en > u1 && en < next);
+        /* Each unit named once (and the active unit again at the end),
+         * each enable once. */
+        GLint nunits = 1;
+        glGetIntegerv(GL_MAX_TEXTURE_UNITS, &nunits);
+        CHECK(trace_cmds_count(&s, RGL_OP_ActiveTexture) == (size_t)nunits + 1);
+        CHECK(trace_cmds_find(&s, (size_t)en + 1, "glEnable(cap=GL_TEXTURE_3D)") < 0);
+        CHECK(trace_cmds_find(&s, (size_t)u1, "glEnable(cap=GL_TEXTURE_RECTANGLE") < 0);
     }
     long last = find_last(&s, s.count, "glActiveTexture(");
     CHECK(last >= 0 && strcmp(s.lines[last], "glActiveTexture(texture=GL_TEXTURE1)") == 0);
@@ -292,6 +301,71 @@ static void test_updates(const char *path)
     rgl_reader_destroy(r);
 }
 
+/* A frame starting while the program compiles a list: GL's unit is not
+ * changed and nothing goes into the list; the active unit (0) is read
+ * back, unit 1's block holds the binding RayGL tracked. */
+static void test_in_list(const char *path)
+{
+    CHECK(rayglRecordOpen(path) == 0);
+    GLuint tex;
+    rayglGenTextures(1, &tex);
+    GLubyte px[2 * 2 * 4] = {0};
+    rayglActiveTexture(GL_TEXTURE1);
+    rayglBindTexture(GL_TEXTURE_2D, tex);
+    rayglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    rayglActiveTexture(GL_TEXTURE0);
+    rayglEnable(GL_TEXTURE_GEN_S);
+    GLint b2d0 = -1;
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &b2d0);
+    GLuint list = rayglGenLists(1);
+    rayglNewList(list, GL_COMPILE);
+    rayglutSwapBuffers();
+    rayglColor3f(1, 0, 0); /* frame 1 starts in the list: its snapshot */
+    rayglEndList();
+    CHECKM(glGetError() == GL_NO_ERROR, "the snapshot left a GL error");
+    GLint active = 0, b2d = -1;
+    glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &b2d);
+    CHECK(active == GL_TEXTURE0 && b2d == b2d0);
+    /* The list holds the colour alone: unit 1 stays as it was. */
+    rayglCallList(list);
+    glActiveTexture(GL_TEXTURE1);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &b2d);
+    glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
+    CHECK(b2d == (GLint)tex && active == GL_TEXTURE1);
+    glActiveTexture(GL_TEXTURE0);
+    rayglDisable(GL_TEXTURE_GEN_S);
+    rayglDeleteLists(list, 1);
+    rayglutSwapBuffers();
+    rayglRecordClose();
+
+    rgl_reader *r = trace_open(path);
+    if (!r)
+        return;
+    rgl_frame_info fi;
+    trace_cmds c = trace_frame(r, 1, &fi);
+    trace_cmds s = trace_resource_cmds(r, fi.state);
+    CHECK(c.clean && s.clean && fi.state != 0);
+    long u0 = trace_cmds_find(&s, 0, "glActiveTexture(texture=GL_TEXTURE0)");
+    long u1 = trace_cmds_find(&s, 0, "glActiveTexture(texture=GL_TEXTURE1)");
+    long u2 = trace_cmds_find(&s, 0, "glActiveTexture(texture=GL_TEXTURE2)");
+    CHECK(u0 >= 0 && u1 > u0 && u2 > u1);
+    long gen = trace_cmds_find(&s, 0, "glEnable(cap=GL_TEXTURE_GEN_S)");
+    CHECK(gen > u0 && gen < u1);
+    char want[96];
+    snprintf(want, sizeof want, "glBindTexture(target=GL_TEXTURE_2D, texture=%u)", tex);
+    long b = trace_cmds_find(&s, (size_t)(u1 > 0 ? u1 : 0), want);
+    CHECK(b > u1 && b < u2);
+    /* Unit 0 is the program's: named last. */
+    long last = find_last(&s, s.count, "glActiveTexture(");
+    CHECK(last > u2 && strcmp(s.lines[last], "glActiveTexture(texture=GL_TEXTURE0)") == 0);
+    if (check_failures)
+        trace_cmds_print(&s, "in-list snapshot");
+    trace_cmds_free(&s);
+    trace_cmds_free(&c);
+    rgl_reader_destroy(r);
+}
+
 int main(void)
 {
     OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 16, 0, 0, NULL);
@@ -300,19 +374,22 @@ int main(void)
     char dir[] = "/tmp/raygl-snaptex-XXXXXX";
     if (!CHECK(mkdtemp(dir) != NULL))
         return check_exit();
-    char p1[64], p2[64], p3[64];
+    char p1[64], p2[64], p3[64], p4[64];
     snprintf(p1, sizeof p1, "%s/objects.raygl", dir);
     snprintf(p2, sizeof p2, "%s/ext.raygl", dir);
     snprintf(p3, sizeof p3, "%s/updates.raygl", dir);
+    snprintf(p4, sizeof p4, "%s/inlist.raygl", dir);
     test_objects(p1);
     test_ext(p2);
     test_updates(p3);
+    test_in_list(p4);
     glFinish();
     OSMesaDestroyContext(ctx);
     if (!check_failures) {
         unlink(p1);
         unlink(p2);
         unlink(p3);
+        unlink(p4);
         rmdir(dir);
     }
     return check_exit();
