@@ -168,6 +168,7 @@ void interp_default_state(gl_state *st)
     a->stencil.value_mask = a->stencil.write_mask = 0xffffffffu;
     a->line.stipple_factor = 1;
     a->line.stipple_pattern = 0xffff;
+    memset(a->polygon.stipple, 0xff, sizeof a->polygon.stipple);
     a->depth.func = GL_LESS;
     a->depth.mask = true;
     a->depth.clear = 1;
