@@ -475,6 +475,11 @@ void glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const GLvoid
     LOGV("glDrawPixels", w, h, format, type);
     arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], pixels);
 }
+void glPolygonStipple(const GLubyte *mask)
+{
+    LOG0("glPolygonStipple");
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], mask);
+}
 void glCopyPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type)
 {
     LOGV("glCopyPixels", x, y, w, h, type);
