@@ -350,6 +350,13 @@ void glGetBooleanv(GLenum pname, GLboolean *v) { (void)pname, (void)v; }
 void glGetLightfv(GLenum l, GLenum pname, GLfloat *v) { (void)l, (void)pname, (void)v; }
 void glGetMapdv(GLenum t, GLenum q, GLdouble *v) { (void)t, (void)q, (void)v; }
 void glGetClipPlane(GLenum p, GLdouble *v) { (void)p, (void)v; }
+unsigned char stub_pstipple_holes[128];
+void glGetPolygonStipple(GLubyte *mask)
+{
+    LOG0("glGetPolygonStipple");
+    for (int i = 0; i < 128; i++)
+        mask[i] = (GLubyte)~stub_pstipple_holes[i];
+}
 void glGetMapiv(GLenum t, GLenum q, GLint *v) { (void)t, (void)q, (void)v; }
 void glGetMaterialfv(GLenum f, GLenum pname, GLfloat *v) { (void)f, (void)pname, (void)v; }
 void glGetTexGenfv(GLenum c, GLenum pname, GLfloat *v) { (void)c, (void)pname, (void)v; }

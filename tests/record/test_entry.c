@@ -36,6 +36,7 @@ void test_buffer_rules(const char *dir);
 void test_fogsec_arrays(const char *dir);
 void test_snaptex_support(const char *dir);
 void test_pstipple(const char *dir);
+void test_pstipple_snapshot(const char *dir);
 
 /* ---- Deterministic values ------------------------------------------------------- */
 
@@ -299,6 +300,7 @@ int main(void)
     test_fogsec_arrays(dir);
     test_snaptex_support(dir);
     test_pstipple(dir);
+    test_pstipple_snapshot(dir);
     if (!check_failures)
         rmdir(dir);
     return check_exit();

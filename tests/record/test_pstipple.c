@@ -121,3 +121,84 @@ void test_pstipple(const char *dir)
     trace_cmds_free(&c);
     rgl_reader_destroy(r);
 }
+
+/* The frame-start snapshot (record/snapshot.c): GL's all-ones mask is left
+ * out; another is read back with the pack state at its defaults and no
+ * pack buffer bound (both put back after), and comes as a glPolygonStipple
+ * of its bytes, with the enable. */
+void test_pstipple_snapshot(const char *dir)
+{
+    char path[128];
+    snprintf(path, sizeof path, "%s/pstipple-snap.raygl", dir);
+    stub_version = "2.1 Mesa";
+    stub_ints[0] = (stub_int){GL_MATRIX_MODE, GL_MODELVIEW};
+    stub_ints[1] = (stub_int){GL_PACK_ALIGNMENT, 8};
+    stub_ints[2] = (stub_int){GL_PACK_LSB_FIRST, GL_TRUE};
+    stub_nints = 3;
+    memset(stub_pstipple_holes, 0, sizeof stub_pstipple_holes);
+    CHECK(rayglRecordOpen(path) == 0);
+    rayglFrameEnd();
+    stub_reset();
+    rayglFlush(); /* frame 1 starts: its snapshot, GL's mask */
+    GLuint b[1] = {0};
+    rayglGenBuffers(1, b);
+    rayglBindBuffer(GL_PIXEL_PACK_BUFFER, b[0]);
+    rayglFrameEnd();
+    for (int i = 0; i < 128; i++)
+        stub_pstipple_holes[i] = (uint8_t)(i % 4 == 0 ? 0xf0 : 0);
+    stub_reset();
+    rayglFlush(); /* frame 2: the mask */
+    /* The pack state set for the read and put back, the buffer too. */
+    size_t set_align = 0, put_align = 0, unbind = 0, rebind = 0, got = 0;
+    for (size_t i = 0; i < stub_nlog && i < STUB_LOG_MAX; i++) {
+        const stub_call *c = &stub_log[i];
+        if (strcmp(c->name, "glPixelStorei") == 0 && c->v[0] == GL_PACK_ALIGNMENT) {
+            set_align += c->v[1] == 4;
+            put_align += c->v[1] == 8;
+        }
+        if (strcmp(c->name, "glBindBuffer") == 0 && c->v[0] == GL_PIXEL_PACK_BUFFER) {
+            unbind += c->v[1] == 0;
+            rebind += c->v[1] == b[0];
+        }
+        if (strcmp(c->name, "glGetPolygonStipple") == 0)
+            got++;
+    }
+    CHECKM(set_align == 1 && put_align == 1 && unbind == 1 && rebind == 1 && got == 1,
+           "%zu %zu %zu %zu %zu", set_align, put_align, unbind, rebind, got);
+    rayglBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    rayglDeleteBuffers(1, b);
+    rayglFrameEnd();
+    rayglRecordClose();
+    stub_nints = 0;
+    stub_version = NULL;
+    memset(stub_pstipple_holes, 0, sizeof stub_pstipple_holes);
+
+    rgl_reader *r = trace_open(path);
+    if (!r)
+        return;
+    for (size_t f = 1; f <= 2; f++) {
+        rgl_frame_info fi;
+        trace_cmds c = trace_frame(r, f, &fi);
+        trace_cmds s = trace_resource_cmds(r, fi.state);
+        CHECK(s.clean && s.count > 0);
+        long at = trace_cmds_find(&s, 0, "glPolygonStipple(");
+        if (f == 1) {
+            CHECK(at < 0);
+        } else if (CHECK(at >= 0)) {
+            uint8_t got_mask[128];
+            if (mask_of(r, &s, 0, got_mask)) {
+                bool same = true;
+                for (int i = 0; i < 128; i++)
+                    same = same && got_mask[i] == (uint8_t)(i % 4 == 0 ? 0x0f : 0xff);
+                CHECKM(same, "the snapshot's mask");
+            }
+        }
+        if (check_failures)
+            trace_cmds_print(&s, "snapshot");
+        trace_cmds_free(&s);
+        trace_cmds_free(&c);
+    }
+    rgl_reader_destroy(r);
+    if (!check_failures)
+        unlink(path);
+}
