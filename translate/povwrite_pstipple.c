@@ -13,11 +13,21 @@
 #include <math.h>
 #include <stdio.h>
 
+/* A double as the sum of two singles (outbuf's numbers are locale-free
+ * singles): about 1e-14 relative, far below a pixel at any image size. */
 static void put_num(outbuf *ob, double v)
 {
-    char buf[40];
-    snprintf(buf, sizeof buf, v < 0 ? "(%.17g)" : "%.17g", isfinite(v) ? v : 0.0);
-    outbuf_puts(ob, buf);
+    if (!isfinite(v) || fabs(v) > 1e30)
+        v = 0;
+    float hi = (float)v, lo = (float)(v - (double)hi);
+    outbuf_putc(ob, '(');
+    outbuf_f32(ob, hi);
+    if (lo != 0) {
+        if (!(lo < 0))
+            outbuf_putc(ob, '+');
+        outbuf_f32(ob, lo);
+    }
+    outbuf_putc(ob, ')');
 }
 
 /* Rows lo..hi-1 of the mask as 32-bit numbers (bit i: window x mod 32 = i),
