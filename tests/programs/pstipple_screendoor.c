@@ -2,8 +2,8 @@
  * transparency". A lit sphere behind an unlit quad stippled with a 50%
  * checkerboard, which shows the sphere through every other pixel; a
  * second quad with a halftone mask of dots (a 25% pattern, rows differing)
- * under a perspective tilt, which GL keeps to window pixels; and a quad
- * drawn with the stipple off (whole). The mask is passed under a non-
+ * under a perspective tilt, which GL keeps to window pixels, and a GLU
+ * sphere under it; and a triangle drawn with the stipple off (whole). The mask is passed under a non-
  * default unpack state (GL_UNPACK_LSB_FIRST, a row length and skipped
  * rows) to exercise the recorder's read of it. */
 #include "lit_scene.h"
@@ -55,6 +55,16 @@ static int draw(int w, int h)
     glVertex3f(0.1f, 1.5f, -4.5f);
     glEnd();
 
+    /* A GLU sphere (a POV-Ray solid) under the halftone. */
+    GLUquadric *q = gluNewQuadric();
+    if (q) {
+        glColor3f(0.4f, 1.0f, 0.4f);
+        glPushMatrix();
+        glTranslatef(1.9f, -1.3f, -4.2f);
+        gluSphere(q, 0.35, 32, 16);
+        glPopMatrix();
+        gluDeleteQuadric(q);
+    }
     glDisable(GL_POLYGON_STIPPLE);
     glColor3f(0.9f, 0.4f, 0.9f);
     glBegin(GL_TRIANGLES);
