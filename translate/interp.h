@@ -143,7 +143,7 @@ typedef struct gl_attribs {
         float offset_factor, offset_units;
         uint8_t stipple[128]; /* glPolygonStipple: 32 rows of 4 bytes, bottom
                                  row first, most significant bit first */
-    } polygon; /* GL_POLYGON_BIT (and GL_POLYGON_STIPPLE_BIT) */
+    } polygon; /* GL_POLYGON_BIT; stipple: GL_POLYGON_STIPPLE_BIT */
     struct {
         float width;
         int32_t stipple_factor;    /* glLineStipple, clamped to [1, 256] */

@@ -152,6 +152,39 @@ static void test_look(void)
     interp_destroy(ip);
 }
 
+/* The mask is GL_POLYGON_STIPPLE_BIT's (GL 2.1 table 6.16), not
+ * GL_POLYGON_BIT's. */
+static void test_attrib(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Enable, GL_POLYGON_STIPPLE);
+    CMD(&s, PolygonStipple, 1);
+    CMD(&s, PushAttrib, GL_POLYGON_BIT);
+    CMD(&s, PolygonStipple, 2);
+    CMD0(&s, PopAttrib); /* the all-ones mask stays */
+    tri(&s, 0);
+    CMD(&s, PushAttrib, GL_POLYGON_STIPPLE_BIT);
+    CMD(&s, PolygonStipple, 1);
+    CMD0(&s, PopAttrib); /* back to all ones */
+    tri(&s, 0.1);
+    CMD(&s, PolygonStipple, 1);
+    CMD(&s, PushAttrib, GL_POLYGON_STIPPLE_BIT);
+    CMD(&s, PolygonStipple, 2);
+    CMD0(&s, PopAttrib); /* back to the checkerboard */
+    tri(&s, 0.2);
+    run(ip, &s);
+    interp_end_frame(ip);
+    CHECK_EQ_U(sc.nmeshes, 3); /* one per draw: no depth test */
+    if (sc.nmeshes == 3) {
+        CHECK(!sc.meshes[0].look.pstipple_on && !sc.meshes[1].look.pstipple_on);
+        CHECK(sc.meshes[2].look.pstipple_on &&
+              memcmp(sc.meshes[2].look.pstipple, masks[0], 128) == 0);
+    }
+    interp_destroy(ip);
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -160,6 +193,7 @@ int main(void)
             masks[0][r * 4 + b] = (r % 2) ? 0x55 : 0xAA;
     memset(masks[1], 0xff, 128);
     test_look();
+    test_attrib();
     scene_finish(&sc);
     return CHECK_RESULT("test_pstipple");
 }
