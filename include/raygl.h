@@ -211,6 +211,8 @@ RAYGL_API void rayglBitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat
 RAYGL_API void rayglDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type,
                                const GLvoid *pixels);
 RAYGL_API void rayglCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type);
+/* The polygon stipple: its 32 x 32 mask read as glBitmap's bits. */
+RAYGL_API void rayglPolygonStipple(const GLubyte *mask);
 
 /* Texture copies, their framebuffer rectangle read back at the call; 3D
  * textures, their pixels read as glTexImage2D's (unpack image height and

@@ -76,3 +76,17 @@ RGL_EXPORT void rayglCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height,
     }
     glCopyPixels(x, y, width, height, type);
 }
+
+/* The 32 x 32 mask is read under the unpack state as glBitmap's is (GL 2.1
+ * 3.6.4); GL rejects the call only between glBegin and glEnd. */
+RGL_EXPORT void rayglPolygonStipple(const GLubyte *mask)
+{
+    rgl_stream *s;
+    if (rgl_reserve(&s, 1) && !raster_in_begin(s)) {
+        int64_t id = rgl_pixels_put(s, GL_COLOR_INDEX, GL_BITMAP, 32, 32, mask, false);
+        rgl_note_skipped(RGL_OP_PolygonStipple, id);
+        if (id >= 0)
+            rgl_record(RGL_OP_PolygonStipple, "e", (uint32_t)id);
+    }
+    glPolygonStipple(mask);
+}

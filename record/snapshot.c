@@ -13,6 +13,7 @@
  */
 #include <string.h>
 
+#define GL_GLEXT_PROTOTYPES 1 /* glBindBuffer (GL 1.5): the stipple read-back sets the pack buffer aside */
 #include <GL/gl.h>
 #include <GL/glext.h>
 
@@ -34,7 +35,7 @@ static const GLenum caps_off[] = {
     GL_MAP1_TEXTURE_COORD_1, GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3,
     GL_MAP1_TEXTURE_COORD_4, GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP2_COLOR_4, GL_MAP2_INDEX,
     GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1, GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3,
-    GL_MAP2_TEXTURE_COORD_4, GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4,
+    GL_MAP2_TEXTURE_COORD_4, GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_POLYGON_STIPPLE,
 };
 
 static GLint get_i(GLenum pname)
@@ -171,6 +172,40 @@ static void snap_stencil(rgl_buf *b)
     rgl_emit(b, RGL_OP_ClearStencil, "i", v[7]);
     if (glIsEnabled(GL_STENCIL_TEST))
         rgl_emit(b, RGL_OP_Enable, "e", GL_STENCIL_TEST);
+}
+
+/* The polygon stipple mask, unless it is GL's (all ones). glGetPolygonStipple
+ * packs it as the pack state says and into a bound pack buffer: both are
+ * set aside for the read (the program's own reads stay as they were), so
+ * the bytes come in the trace's layout (bottom row first, MSB first). */
+static void snap_pstipple(const rgl_stream *s, rgl_buf *b)
+{
+    static const GLenum pn[5] = {GL_PACK_ROW_LENGTH, GL_PACK_SKIP_ROWS, GL_PACK_SKIP_PIXELS,
+                                 GL_PACK_LSB_FIRST, GL_PACK_ALIGNMENT};
+    static const GLint def[5] = {0, 0, 0, GL_FALSE, 4};
+    GLint v[5];
+    for (int k = 0; k < 5; k++) {
+        v[k] = def[k];
+        glGetIntegerv(pn[k], &v[k]);
+        if (v[k] != def[k])
+            glPixelStorei(pn[k], def[k]);
+    }
+    if (s->pack_buffer)
+        glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    GLubyte m[128];
+    memset(m, 0xff, sizeof m);
+    glGetPolygonStipple(m);
+    if (s->pack_buffer)
+        glBindBuffer(GL_PIXEL_PACK_BUFFER, s->pack_buffer);
+    for (int k = 0; k < 5; k++)
+        if (v[k] != def[k])
+            glPixelStorei(pn[k], v[k]);
+    bool all = true;
+    for (size_t i = 0; i < sizeof m && all; i++)
+        all = m[i] == 0xff;
+    uint32_t id = all ? 0 : rgl_resource_put(RGL_RES_BYTES, m, sizeof m);
+    if (id)
+        rgl_emit(b, RGL_OP_PolygonStipple, "e", id);
 }
 
 /* Evaluators: the grids, and every map that is not GL's initial one (order
@@ -335,6 +370,7 @@ bool rgl_snapshot_take(rgl_stream *s, rgl_buf *out)
     snap_enables(out);
     snap_eval(out);
     snap_raster(out);
+    snap_pstipple(s, out);
     rgl_emit(out, RGL_OP_ListBase, "e", (uint32_t)get_i(GL_LIST_BASE));
     rgl_snap_textures(s, out); /* the objects, then every unit's state */
     rgl_quadrics_snapshot(out);

@@ -168,6 +168,7 @@ void interp_default_state(gl_state *st)
     a->stencil.value_mask = a->stencil.write_mask = 0xffffffffu;
     a->line.stipple_factor = 1;
     a->line.stipple_pattern = 0xffff;
+    memset(a->polygon.stipple, 0xff, sizeof a->polygon.stipple);
     a->depth.func = GL_LESS;
     a->depth.mask = true;
     a->depth.clear = 1;
@@ -583,8 +584,14 @@ void interp_popattrib(interp *ip, const rgl_cmd *cmd)
         a->current = s->current;
     if (m & GL_LIGHTING_BIT)
         a->lighting = s->lighting;
-    if (m & GL_POLYGON_BIT)
+    if (m & GL_POLYGON_BIT) { /* the stipple mask is GL_POLYGON_STIPPLE_BIT's alone */
+        uint8_t mask[sizeof a->polygon.stipple];
+        memcpy(mask, a->polygon.stipple, sizeof mask);
         a->polygon = s->polygon;
+        memcpy(a->polygon.stipple, mask, sizeof mask);
+    }
+    if (m & GL_POLYGON_STIPPLE_BIT)
+        memcpy(a->polygon.stipple, s->polygon.stipple, sizeof a->polygon.stipple);
     if (m & GL_LINE_BIT)
         a->line = s->line;
     if (m & GL_POINT_BIT)

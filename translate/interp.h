@@ -141,7 +141,9 @@ typedef struct gl_attribs {
         GLenum front_face, cull_mode;
         GLenum mode[2]; /* front, back: GL_FILL, GL_LINE, GL_POINT */
         float offset_factor, offset_units;
-    } polygon; /* GL_POLYGON_BIT */
+        uint8_t stipple[128]; /* glPolygonStipple: 32 rows of 4 bytes, bottom
+                                 row first, most significant bit first */
+    } polygon; /* GL_POLYGON_BIT; stipple: GL_POLYGON_STIPPLE_BIT */
     struct {
         float width;
         int32_t stipple_factor;    /* glLineStipple, clamped to [1, 256] */

@@ -603,6 +603,9 @@ bool interp_masks_hide(interp *ip);
  * segment in eye space (at most max), GL's counter starting at *counter
  * and advanced past the segment. */
 bool interp_stipple_on(const interp *ip);
+/* Polygon stipple (interp_pstipple.c): the look of a filled draw made now
+ * takes the stipple when GL_POLYGON_STIPPLE is on and the mask has a hole. */
+void interp_pstipple_look(const interp *ip, scene_look *look);
 size_t interp_stipple_dashes(const interp *ip, const scene_camera *cam, const double p0[3],
                              const double p1[3], const double w0[2], const double w1[2],
                              uint64_t *counter, double (*dash)[2], size_t max);

@@ -99,8 +99,7 @@ static void draw_notes(interp *ip)
         interp_note(ip, DIAG_NOTE_ALPHA_TEST); /* polygons: interp_alpha_face */
     /* Cube maps and 3D textures are drawn (interp_texture.c): their notes
      * come with the texture, as the environment's do. */
-    if (c[INTERP_CAP_POLYGON_STIPPLE] && ip->prim_mode > GL_LINE_STRIP)
-        interp_note(ip, DIAG_NOTE_STIPPLE); /* line stipple: interp_stipple.c */
+    /* Polygon stipple: interp_pstipple.c; line stipple: interp_stipple.c. */
     if (interp_scissor_cuts(ip, a->viewport.rect) && ip->prim_mode <= GL_LINE_STRIP)
         interp_note(ip, DIAG_NOTE_SCISSOR); /* lines and points: drawn whole */
     if (c[INTERP_CAP_BLEND] && a->color_buffer.blend_equation != GL_FUNC_ADD)
@@ -1060,6 +1059,7 @@ scene_look interp_current_look(interp *ip)
     }
     look.names = interp_names_for_draw(ip);
     interp_scissor_look(ip, &look);
+    interp_pstipple_look(ip, &look);
     look.clip = interp_clip_look(ip);
     interp_stencil_look(ip, &look);
     interp_lightset_textured(ip, &look);

@@ -27,6 +27,7 @@
 #include "dedup.h"
 #include "povwrite_light.h"
 #include "povwrite_clip.h"
+#include "povwrite_pstipple.h"
 #include "povwrite_solid.h"
 #include "povwrite_cube.h"
 #include "povwrite_mipmap.h"
@@ -945,6 +946,7 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         povwrite_scissor(ob, sc, look); /* after the matrix: in eye space */
         povwrite_clip(ob, sc, look);
         povwrite_stencil(ob, sc, look);
+        povwrite_pstipple(ob, sc, look);
     }
     if (w->mesh_no_shadow)
         outbuf_puts(ob, "no_shadow\n");

@@ -12,6 +12,7 @@
 #include <math.h>
 
 #include "povwrite_clip.h"
+#include "povwrite_pstipple.h"
 #include "povwrite_fogsec.h"
 #include "teapot.h"
 #include "teapot_mesh.h"
@@ -131,6 +132,7 @@ static void write_solid(outbuf *ob, const scene *s, const scene_solid *so, const
     povwrite_scissor(ob, s, &so->look);
     povwrite_clip(ob, s, &so->look);
     povwrite_stencil(ob, s, &so->look);
+    povwrite_pstipple(ob, s, &so->look);
     outbuf_puts(ob, "}\n");
 }
 

@@ -82,6 +82,10 @@ typedef struct scene_look {
     uint8_t fog_own, pad2_[1]; /* fogged by fog_plane, not by the eye-plane distance */
     float fog_plane[4]; /* GL's fog coordinate a.p + d over the mesh's own space,
                            for faces reaching behind the eye (interp_fogbehind.c) */
+    uint8_t pstipple_on;  /* polygon stipple: only window pixels whose bit is set */
+    uint8_t pstipple_org[2]; /* the window position of the image's lower left, mod 32 */
+    uint8_t pstipple[128];   /* the mask (interp.h's gl_attribs.polygon.stipple) */
+    uint8_t pad3_[1];
 } scene_look;
 
 /* The alpha test of a look (glAlphaFunc with GL_ALPHA_TEST on). */

@@ -547,6 +547,45 @@ static int write_shapes(const char *dir)
     return write_file(dir, "shapes.bin", seq, eval_len);
 }
 
+/* ---- Polygon stipple: a mask resource, stippled faces and solids ---------------- */
+
+static int write_pstipple(const char *dir)
+{
+    uint8_t mask[128];
+    for (int i = 0; i < 128; i++)
+        mask[i] = (i / 4) % 2 ? 0x55 : 0xaa;
+    rgl_trace_builder *b = rgl_trace_builder_create();
+    uint32_t m = 0;
+    const uint8_t *data;
+    size_t size;
+    int rc = 1;
+    if (!b)
+        return 1;
+    rgl_trace_builder_resource(b, RGL_RES_BYTES, mask, sizeof mask, &m);
+    eval_len = 0;
+    EV(Viewport, 5, 40, 64, 48);
+    EV(Frustum, -1, 1, -1, 1, 1, 10);
+    EV(Enable, 0x0B42); /* GL_POLYGON_STIPPLE */
+    EV(PolygonStipple, m);
+    EV(Rectf, -3, -3, 3, 3);
+    EV(Begin, 0x0004); /* GL_TRIANGLES; the call inside is refused */
+    EV(PolygonStipple, 0);
+    EV(Vertex3f, -1, -1, -3);
+    EV(Vertex3f, 1, -1, -4);
+    EV(Vertex3f, 0, 1, -5);
+    eval_cmd(RGL_OP_End, NULL, 0, NULL, 0);
+    EV(SolidSphere, 1, 12, 8);
+    EV(PolygonStipple, 0);
+    EV(PolygonStipple, m + 7); /* no such resource */
+    EV(Disable, 0x0B42);
+    EV(Rectf, -1, -1, 1, 1);
+    if (rgl_trace_builder_frame(b, 0, 0, 0, 0, seq, eval_len) == RGL_OK &&
+        rgl_trace_builder_finish(b, true, &data, &size) == RGL_OK)
+        rc = write_file(dir, "pstipple.bin", data, size);
+    rgl_trace_builder_destroy(b);
+    return rc;
+}
+
 /* ---- Fog coordinates, secondary colours and their arrays; lit raster ------------ */
 
 static int write_fogsec(const char *dir)
@@ -659,5 +698,6 @@ int main(int argc, char **argv)
     rc |= write_shapes(argv[1]);
     rc |= write_fogsec(argv[1]);
     rc |= write_snaptex(argv[1]);
+    rc |= write_pstipple(argv[1]);
     return rc;
 }

@@ -350,6 +350,13 @@ void glGetBooleanv(GLenum pname, GLboolean *v) { (void)pname, (void)v; }
 void glGetLightfv(GLenum l, GLenum pname, GLfloat *v) { (void)l, (void)pname, (void)v; }
 void glGetMapdv(GLenum t, GLenum q, GLdouble *v) { (void)t, (void)q, (void)v; }
 void glGetClipPlane(GLenum p, GLdouble *v) { (void)p, (void)v; }
+unsigned char stub_pstipple_holes[128];
+void glGetPolygonStipple(GLubyte *mask)
+{
+    LOG0("glGetPolygonStipple");
+    for (int i = 0; i < 128; i++)
+        mask[i] = (GLubyte)~stub_pstipple_holes[i];
+}
 void glGetMapiv(GLenum t, GLenum q, GLint *v) { (void)t, (void)q, (void)v; }
 void glGetMaterialfv(GLenum f, GLenum pname, GLfloat *v) { (void)f, (void)pname, (void)v; }
 void glGetTexGenfv(GLenum c, GLenum pname, GLfloat *v) { (void)c, (void)pname, (void)v; }
@@ -474,6 +481,11 @@ void glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const GLvoid
 {
     LOGV("glDrawPixels", w, h, format, type);
     arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], pixels);
+}
+void glPolygonStipple(const GLubyte *mask)
+{
+    LOG0("glPolygonStipple");
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], mask);
 }
 void glCopyPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type)
 {

@@ -36,6 +36,8 @@ void stub_log_name(const char *name);
 
 /* What the stub's glMapBuffer returns. */
 extern unsigned char stub_mapped[4096];
+/* glGetPolygonStipple answers the complement (0: GL's mask, all ones). */
+extern unsigned char stub_pstipple_holes[128];
 
 /* A context as far as the buffer queries go: glGetString(GL_VERSION)
  * returns stub_version (NULL: none), glGetIntegerv answers the pnames in

@@ -35,6 +35,8 @@ void test_reopen(const char *dir);
 void test_buffer_rules(const char *dir);
 void test_fogsec_arrays(const char *dir);
 void test_snaptex_support(const char *dir);
+void test_pstipple(const char *dir);
+void test_pstipple_snapshot(const char *dir);
 
 /* ---- Deterministic values ------------------------------------------------------- */
 
@@ -297,6 +299,8 @@ int main(void)
     test_buffer_rules(dir);
     test_fogsec_arrays(dir);
     test_snaptex_support(dir);
+    test_pstipple(dir);
+    test_pstipple_snapshot(dir);
     if (!check_failures)
         rmdir(dir);
     return check_exit();
