@@ -303,7 +303,7 @@ static void share_output(interp *ip, uint32_t body, const call_mark *mk)
      * function of the eye distance that differs per call. */
     for (size_t k = 0; k < nm; k++) {
         const scene_look *lk = &s->meshes[mk->m0 + k].look;
-        if (lk->scissored || lk->clip || lk->stencil_n || lk->fog || lk->pstipple_on)
+        if (lk->scissored || lk->clip || lk->stencil_n || lk->fog || lk->pstipple)
             return;
     }
     mat4 call, inv;

@@ -34,8 +34,11 @@ void interp_pstipple_look(const interp *ip, scene_look *look)
         all = a->polygon.stipple[i] == 0xff;
     if (all)
         return;
-    look->pstipple_on = 1;
-    memcpy(look->pstipple, a->polygon.stipple, 128);
+    if (!ip->scene)
+        return;
+    look->pstipple = scene_pstipple_index(ip->scene, a->polygon.stipple);
+    if (!look->pstipple)
+        return; /* out of memory: the scene is failed */
     for (int k = 0; k < 2; k++) {
         int64_t o = (int64_t)ip->cam_viewport[k] % 32;
         look->pstipple_org[k] = (uint8_t)(o < 0 ? o + 32 : o);

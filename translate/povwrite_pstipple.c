@@ -73,7 +73,8 @@ static void put_coord(outbuf *ob, const scene_camera *cam, const double row[3], 
 void povwrite_pstipple(outbuf *ob, const scene *s, const scene_look *look)
 {
     const scene_camera *cam = &s->camera;
-    if (!look->pstipple_on || cam->width <= 0 || cam->height <= 0)
+    const uint8_t *mask = scene_pstipple_mask(s, look->pstipple);
+    if (!mask || cam->width <= 0 || cam->height <= 0)
         return;
     /* p - location = t direction + a right + b up: the rows of the inverse
      * of the matrix whose columns are direction, right, up. */
@@ -90,7 +91,7 @@ void povwrite_pstipple(outbuf *ob, const scene *s, const scene_look *look)
      * frame's file), declared once: POV-Ray refuses to redeclare one. */
     uint64_t hash = 1469598103934665603ull;
     for (int i = 0; i < 130; i++) {
-        hash ^= i < 128 ? look->pstipple[i] : look->pstipple_org[i - 128];
+        hash ^= i < 128 ? mask[i] : look->pstipple_org[i - 128];
         hash *= 1099511628211ull;
     }
     char name[40];
@@ -100,7 +101,7 @@ void povwrite_pstipple(outbuf *ob, const scene *s, const scene_look *look)
     outbuf_puts(ob, ")\n#declare ");
     outbuf_puts(ob, name);
     outbuf_puts(ob, "_row=function(J){");
-    put_rows(ob, look->pstipple, 0, 32);
+    put_rows(ob, mask, 0, 32);
     outbuf_puts(ob, "}\n#declare ");
     outbuf_puts(ob, name);
     outbuf_puts(ob, "=function(PX,PY){1-mod(floor(");

@@ -43,6 +43,7 @@ void scene_finish(scene *s)
     tr_free(s->overlay);
     tr_free(s->names);
     tr_free(s->clips);
+    tr_free(s->pstipples);
     tr_free(s->stencil_tris);
     memset(s, 0, sizeof *s);
 }
@@ -54,6 +55,7 @@ void scene_reset(scene *s)
     s->nmaterials = 0;
     s->nnames = s->names_last = 0;
     s->nclips = s->clips_last = 0;
+    s->npstipples = 0;
     s->nstencil = 0;
     s->lights_fixed = false;
     s->nlightsets = 0;

@@ -82,10 +82,11 @@ typedef struct scene_look {
     uint8_t fog_own, pad2_[1]; /* fogged by fog_plane, not by the eye-plane distance */
     float fog_plane[4]; /* GL's fog coordinate a.p + d over the mesh's own space,
                            for faces reaching behind the eye (interp_fogbehind.c) */
-    uint8_t pstipple_on;  /* polygon stipple: only window pixels whose bit is set */
+    uint32_t pstipple; /* polygon stipple: only window pixels whose bit is set
+                          in the mask at 1 + its place in scene.pstipples
+                          (scene_pstipple_index); 0: none */
     uint8_t pstipple_org[2]; /* the window position of the image's lower left, mod 32 */
-    uint8_t pstipple[128];   /* the mask (interp.h's gl_attribs.polygon.stipple) */
-    uint8_t pad3_[1];
+    uint8_t pad3_[2];
 } scene_look;
 
 /* The alpha test of a look (glAlphaFunc with GL_ALPHA_TEST on). */
@@ -346,6 +347,9 @@ typedef struct scene {
     double (*stencil_tris)[9]; /* eye-space triangles drawn into the stencil
                                   buffer (interp_stencil.c) */
     size_t nstencil, cap_stencil;
+    uint8_t (*pstipples)[128]; /* polygon stipple masks that looks refer to
+                                  (kept apart: a look is per mesh) */
+    size_t npstipples, cap_pstipples;
     double (*clips)[4]; /* user clip plane sets that looks refer to: a row
                            {count}, then that many eye-space planes */
     size_t nclips, cap_clips, clips_last;
@@ -460,6 +464,12 @@ const uint32_t *scene_names(const scene *s, uint32_t id, uint32_t *n);
  * equal); 0 when n is 0 or on failure (the scene's failed flag set).
  * scene_clip_set: the planes of id (NULL, *n = 0 for none or a bad id). */
 uint32_t scene_clip_index(scene *s, const double (*planes)[4], uint32_t n);
+
+/* Polygon stipple masks (scene_clip.c): the id a look refers to mask by (the
+ * last mask's again when equal), 0 on failure (the scene's failed flag
+ * set); scene_pstipple_mask: the mask of id, NULL for a bad id. */
+uint32_t scene_pstipple_index(scene *s, const uint8_t mask[128]);
+const uint8_t *scene_pstipple_mask(const scene *s, uint32_t id);
 const double (*scene_clip_set(const scene *s, uint32_t id, uint32_t *n))[4];
 
 /* Camera from a GL projection matrix and viewport (x, y, width, height).

@@ -1,5 +1,6 @@
-/* scene_clip.c: the scene's user clip plane sets (scene.h), which meshes
- * and solids refer to from their look, as name stacks are referred to. */
+/* scene_clip.c: the scene's user clip plane sets and polygon stipple masks
+ * (scene.h), which meshes and solids refer to from their look, as name
+ * stacks are referred to. */
 #include <string.h>
 
 #include "scene.h"
@@ -37,4 +38,25 @@ const double (*scene_clip_set(const scene *s, uint32_t id, uint32_t *n))[4]
         return NULL;
     *n = (uint32_t)c;
     return (const double(*)[4])(s->clips + id);
+}
+
+uint32_t scene_pstipple_index(scene *s, const uint8_t mask[128])
+{
+    if (s->failed)
+        return 0;
+    if (s->npstipples && memcmp(s->pstipples[s->npstipples - 1], mask, 128) == 0)
+        return (uint32_t)s->npstipples;
+    if (s->npstipples + 1 > UINT32_MAX / 2 ||
+        tr_grow((void **)&s->pstipples, &s->cap_pstipples, s->npstipples + 1, sizeof *s->pstipples) !=
+            0) {
+        s->failed = true;
+        return 0;
+    }
+    memcpy(s->pstipples[s->npstipples++], mask, 128);
+    return (uint32_t)s->npstipples;
+}
+
+const uint8_t *scene_pstipple_mask(const scene *s, uint32_t id)
+{
+    return id == 0 || id > s->npstipples ? NULL : s->pstipples[id - 1];
 }

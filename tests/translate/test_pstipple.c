@@ -115,14 +115,14 @@ static void test_look(void)
     interp_end_frame(ip);
     CHECK_EQ_U(sc.nmeshes, 4);
     if (sc.nmeshes == 4) {
-        CHECK(!sc.meshes[0].look.pstipple_on);
+        CHECK(!sc.meshes[0].look.pstipple);
         for (int m = 1; m <= 2; m++) {
             const scene_look *lk = &sc.meshes[m].look;
-            CHECK(lk->pstipple_on);
-            CHECK(memcmp(lk->pstipple, masks[0], 128) == 0);
+            CHECK(lk->pstipple);
+            CHECK(memcmp(scene_pstipple_mask(&sc, lk->pstipple), masks[0], 128) == 0);
             CHECK(lk->pstipple_org[0] == 45 % 32 && lk->pstipple_org[1] == 70 % 32);
         }
-        CHECK(!sc.meshes[3].look.pstipple_on);
+        CHECK(!sc.meshes[3].look.pstipple);
     }
     CHECK_EQ_U(dlog.e[DIAG_NOTE_STIPPLE].count, 0);
     CHECK(dlog.e[DIAG_GL_INVALID_OPERATION].count >= 1);
@@ -148,7 +148,7 @@ static void test_look(void)
     tri(&s, 0);
     run(ip, &s);
     interp_end_frame(ip);
-    CHECK(sc.nmeshes == 1 && !sc.meshes[0].look.pstipple_on);
+    CHECK(sc.nmeshes == 1 && !sc.meshes[0].look.pstipple);
     interp_destroy(ip);
 }
 
@@ -178,9 +178,9 @@ static void test_attrib(void)
     interp_end_frame(ip);
     CHECK_EQ_U(sc.nmeshes, 3); /* one per draw: no depth test */
     if (sc.nmeshes == 3) {
-        CHECK(!sc.meshes[0].look.pstipple_on && !sc.meshes[1].look.pstipple_on);
-        CHECK(sc.meshes[2].look.pstipple_on &&
-              memcmp(sc.meshes[2].look.pstipple, masks[0], 128) == 0);
+        CHECK(!sc.meshes[0].look.pstipple && !sc.meshes[1].look.pstipple);
+        CHECK(sc.meshes[2].look.pstipple &&
+              memcmp(scene_pstipple_mask(&sc, sc.meshes[2].look.pstipple), masks[0], 128) == 0);
     }
     interp_destroy(ip);
 }
