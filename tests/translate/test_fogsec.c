@@ -14,78 +14,12 @@
 #include <string.h>
 
 #include "check.h"
+#include "interp_fixture.h"
 #include "interp.h"
 #include "interp_internal.h"
 #include "outbuf.h"
 #include "povwrite.h"
 #include "tracegen.h"
-
-static scene sc;
-static diag_log dlog;
-
-static seq bodies[2];
-static size_t nbodies;
-
-static rgl_status fetch(void *ctx, uint32_t id, rgl_resource *out, rgl_error *err)
-{
-    (void)ctx;
-    if (id == 0 || id > nbodies) {
-        err->status = RGL_E_RESOURCE;
-        return RGL_E_RESOURCE;
-    }
-    memset(out, 0, sizeof *out);
-    out->id = id;
-    out->kind = RGL_RES_COMMANDS;
-    out->data = bodies[id - 1].data;
-    out->size = bodies[id - 1].len;
-    return RGL_OK;
-}
-
-static interp *fresh(void)
-{
-    scene_reset(&sc);
-    diag_clear(&dlog);
-    interp *ip = interp_create(&sc, &dlog);
-    interp_set_resources(ip, fetch, NULL);
-    interp_begin_frame(ip);
-    return ip;
-}
-
-static void run(interp *ip, seq *s)
-{
-    rgl_error err;
-    CHECK(interp_run(ip, s->data, s->len, 0, &err) == RGL_OK);
-    seq_free(s);
-}
-
-static uint64_t count(diag_kind k) { return dlog.e[k].count; }
-
-static char sdl[1 << 16];
-static size_t nsdl;
-
-static int keep(void *user, const char *p, size_t n)
-{
-    (void)user;
-    if (nsdl + n >= sizeof sdl)
-        return -1;
-    memcpy(sdl + nsdl, p, n);
-    nsdl += n;
-    sdl[nsdl] = 0;
-    return 0;
-}
-
-static void write_sdl(void)
-{
-    povwriter *w = povwriter_create();
-    outbuf ob;
-    nsdl = 0;
-    sdl[0] = 0;
-    CHECK(w != NULL && outbuf_init(&ob, 1 << 12, keep, NULL) == 0);
-    CHECK(povwriter_scene(w, &ob, &sc, NULL) == 0);
-    CHECK(outbuf_flush(&ob) == 0);
-    outbuf_finish(&ob);
-    povwriter_destroy(w);
-}
 
 /* A red triangle at z = -5 with fog coordinates 0, 5 and 10. */
 static void fog_tri(seq *s)
@@ -579,6 +513,7 @@ static void test_pixels_depth(void)
 int main(void)
 {
     scene_init(&sc);
+    fx_fetch = fetch_bodies;
     test_fog_coord_linear();
     test_fog_coord_exp();
     test_fog_coord_lit();

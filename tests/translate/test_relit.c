@@ -9,12 +9,10 @@
 #include <string.h>
 
 #include "check.h"
+#include "interp_fixture.h"
 #include "interp.h"
 #include "interp_internal.h"
 #include "tracegen.h"
-
-static scene sc;
-static diag_log dlog;
 static uint8_t *texels;
 
 static rgl_status fetch(void *ctx, uint32_t id, rgl_resource *out, rgl_error *err)
@@ -32,30 +30,16 @@ static rgl_status fetch(void *ctx, uint32_t id, rgl_resource *out, rgl_error *er
     return RGL_OK;
 }
 
-static interp *fresh(void)
+/* A fresh interpreter, depth-tested as the programs are (no draw-order note). */
+static interp *fresh_depth(void)
 {
-    scene_reset(&sc);
-    diag_clear(&dlog);
-    interp *ip = interp_create(&sc, &dlog);
-    interp_set_resources(ip, fetch, NULL);
-    interp_begin_frame(ip);
-    seq s; /* depth-tested, as the programs are (no draw-order note) */
+    interp *ip = fresh();
+    seq s;
     seq_init(&s);
     CMD(&s, Enable, GL_DEPTH_TEST);
-    rgl_error err;
-    CHECK(interp_run(ip, s.data, s.len, 0, &err) == RGL_OK);
-    seq_free(&s);
+    run(ip, &s);
     return ip;
 }
-
-static void run(interp *ip, seq *s)
-{
-    rgl_error err;
-    CHECK(interp_run(ip, s->data, s->len, 0, &err) == RGL_OK);
-    seq_free(s);
-}
-
-static uint64_t count(diag_kind k) { return dlog.e[k].count; }
 
 static size_t notes(void)
 {
@@ -95,7 +79,7 @@ static void lit(seq *s)
 static void test_back_faces(void)
 {
     for (int c = 0; c < 5; c++) {
-        interp *ip = fresh();
+        interp *ip = fresh_depth();
         interp_set_vertex_lighting(ip, c == 4);
         seq s;
         seq_init(&s);
@@ -129,7 +113,7 @@ static void test_back_faces(void)
 static void test_mixed_strip(void)
 {
     for (int cw = 0; cw < 2; cw++) {
-        interp *ip = fresh();
+        interp *ip = fresh_depth();
         seq s;
         seq_init(&s);
         lit(&s);
@@ -172,7 +156,7 @@ static void test_modulate_past_white(void)
     static uint8_t rgb[12] = {200, 150, 90, 200, 150, 90, 200, 150, 90, 200, 150, 90};
     texels = rgb;
     for (int c = 0; c < 5; c++) {
-        interp *ip = fresh();
+        interp *ip = fresh_depth();
         seq s;
         seq_init(&s);
         lit(&s);
@@ -212,7 +196,7 @@ static void test_separate_specular_back(void)
     static uint8_t rgb[12] = {200, 150, 90, 200, 150, 90, 200, 150, 90, 200, 150, 90};
     texels = rgb;
     for (int back = 0; back < 2; back++) {
-        interp *ip = fresh();
+        interp *ip = fresh_depth();
         seq s;
         seq_init(&s);
         lit(&s);
@@ -239,7 +223,7 @@ static void test_separate_specular_back(void)
 static void test_fog_behind(void)
 {
     for (int c = 0; c < 5; c++) {
-        interp *ip = fresh();
+        interp *ip = fresh_depth();
         seq s;
         seq_init(&s);
         CMD(&s, MatrixMode, GL_PROJECTION);
@@ -283,6 +267,7 @@ static void test_fog_behind(void)
 int main(void)
 {
     scene_init(&sc);
+    fx_fetch = fetch;
     test_back_faces();
     test_mixed_strip();
     test_modulate_past_white();

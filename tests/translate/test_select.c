@@ -11,32 +11,12 @@
 #include <string.h>
 
 #include "check.h"
+#include "interp_fixture.h"
 #include "interp.h"
 #include "interp_internal.h"
 #include "outbuf.h"
 #include "povwrite.h"
 #include "tracegen.h"
-
-static scene sc;
-static diag_log dlog;
-
-static interp *fresh(void)
-{
-    scene_reset(&sc);
-    diag_clear(&dlog);
-    interp *ip = interp_create(&sc, &dlog);
-    interp_begin_frame(ip);
-    return ip;
-}
-
-static void run(interp *ip, seq *s)
-{
-    rgl_error err;
-    CHECK(interp_run(ip, s->data, s->len, 0, &err) == RGL_OK);
-    seq_free(s);
-}
-
-static uint64_t count(diag_kind k) { return dlog.e[k].count; }
 
 static void triangle(seq *s)
 {
@@ -54,20 +34,6 @@ static bool names_are(uint32_t id, const uint32_t *want, uint32_t n)
     if (n == 0)
         return v == NULL && got == 0;
     return v && got == n && memcmp(v, want, n * sizeof *v) == 0;
-}
-
-static char sdl[1 << 16];
-static size_t nsdl;
-
-static int keep(void *user, const char *p, size_t n)
-{
-    (void)user;
-    if (nsdl + n >= sizeof sdl)
-        return -1;
-    memcpy(sdl + nsdl, p, n);
-    nsdl += n;
-    sdl[nsdl] = 0;
-    return 0;
 }
 
 /* A picking pass, then the real draw: only the real draw is in the scene,
