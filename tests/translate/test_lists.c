@@ -454,11 +454,8 @@ static void test_colour_image(void)
     CHECK_EQ_U(sc.nprotos, 2);
 
     povwriter *w = povwriter_create();
-    outbuf ob;
-    nsdl = 0;
-    CHECK(w != NULL && outbuf_init(&ob, 1 << 12, keep, NULL) == 0);
-    CHECK(povwriter_scene(w, &ob, &sc, NULL) == 0);
-    CHECK(outbuf_flush(&ob) == 0);
+    CHECK(w != NULL);
+    write_sdl_with(w, NULL);
     /* The soft prototype: its colours as an image, each corner at the
      * centre of its texel; the RGB one keeps its texture_list. */
     CHECK_EQ_U(occurrences(sdl, "image_map{png"), 1);
@@ -479,7 +476,6 @@ static void test_colour_image(void)
             CHECK(d[k] == b[k] + c[k] - a[k]);
         }
     }
-    outbuf_finish(&ob);
     povwriter_destroy(w);
     interp_destroy(ip);
     free_bodies();

@@ -125,19 +125,12 @@ static void test_names(void)
     if (sc.nsolids == 1)
         CHECK(names_are(sc.solids[0].look.names, n7, 1));
 
-    povwriter *w = povwriter_create();
-    outbuf ob;
-    nsdl = 0;
-    CHECK(w != NULL && outbuf_init(&ob, 1 << 12, keep, NULL) == 0);
-    CHECK(povwriter_scene(w, &ob, &sc, NULL) == 0);
-    CHECK(outbuf_flush(&ob) == 0);
+    write_sdl();
     const char *a = strstr(sdl, "// names: 1 4\n"), *b = strstr(sdl, "// names: 1 5\n");
     const char *c = strstr(sdl, "// names: 7\n");
     CHECK(a && b && c && a < b);
     CHECK(a && strstr(a, "mesh2") != NULL);
     CHECK(c && strncmp(c + strlen("// names: 7\n"), "sphere", 6) == 0);
-    outbuf_finish(&ob);
-    povwriter_destroy(w);
     interp_destroy(ip);
 }
 
@@ -305,20 +298,13 @@ static void test_scissor_clear(void)
     }
     /* The writer clips the scissored run to x > 0.5, y > 0 (the box from
      * window 150, 50 in the identity camera's 200 x 100 image). */
-    povwriter *w = povwriter_create();
-    outbuf ob;
-    nsdl = 0;
-    CHECK(w != NULL && outbuf_init(&ob, 1 << 12, keep, NULL) == 0);
-    CHECK(povwriter_scene(w, &ob, &sc, NULL) == 0);
-    CHECK(outbuf_flush(&ob) == 0);
+    write_sdl();
     const char *clip = strstr(sdl, "clipped_by{plane{<-1,0,0>,-0.5}plane{<1,0,0>,1.5}"
                                    "plane{<0,-1,0>,0}plane{<0,1,0>,2}}");
     CHECK(clip != NULL);
     if (!clip)
         fprintf(stderr, "%s\n", sdl);
     CHECK(clip && !strstr(clip + 1, "clipped_by{plane{<-1"));
-    outbuf_finish(&ob);
-    povwriter_destroy(w);
     interp_destroy(ip);
 }
 

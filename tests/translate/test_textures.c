@@ -500,12 +500,7 @@ static void test_multitex(void)
             CHECK_EQ_U(sc.textures[sc.meshes[0].look.texture1].env_mode, GL_ADD);
     }
     interp_end_frame(ip);
-    povwriter *w = povwriter_create();
-    outbuf ob;
-    nsdl = 0;
-    CHECK(outbuf_init(&ob, 1 << 12, keep, NULL) == 0);
-    CHECK(povwriter_scene(w, &ob, &sc, NULL) == 0);
-    CHECK(outbuf_flush(&ob) == 0);
+    write_sdl();
     CHECK_EQ_U(occurrences(sdl, "mesh2{"), 2);
     CHECK_EQ_U(occurrences(sdl, "#declare rgl_mt0a=function{pigment{image_map{"), 1);
     CHECK_EQ_U(occurrences(sdl, "#declare rgl_mt1b=function{pigment{image_map{"), 1);
@@ -536,8 +531,6 @@ static void test_multitex(void)
         CHECK_NEAR(sc.verts[2].tex[1], 1, 0);
     }
     interp_destroy(ip);
-    povwriter_destroy(w);
-    outbuf_finish(&ob);
     free_res();
 }
 
