@@ -424,27 +424,14 @@ static void test_combine(void)
 
 static const uint8_t one_bit = 0x80;
 
-static rgl_status bits_fetch(void *ctx, uint32_t id, rgl_resource *out, rgl_error *err)
-{
-    (void)ctx;
-    if (id != 1) {
-        err->status = RGL_E_RESOURCE;
-        return RGL_E_RESOURCE;
-    }
-    memset(out, 0, sizeof *out);
-    out->id = id;
-    out->kind = RGL_RES_BYTES;
-    out->data = &one_bit;
-    out->size = 1;
-    return RGL_OK;
-}
-
 /* A perspective camera fixed by a triangle at depth 10, then what `tail`
  * adds; the frame ends. */
 static interp *pixels_frame(bool depth_test, const double *zs, int nz, bool after)
 {
+    free_res();
+    add_bytes(&one_bit, 1); /* the bitmap, id 1 */
     interp *ip = fresh();
-    interp_set_resources(ip, bits_fetch, NULL);
+    interp_set_resources(ip, fetch_res, NULL);
     seq s;
     seq_init(&s);
     CMD(&s, Viewport, 0, 0, 40, 30);
@@ -526,5 +513,6 @@ int main(void)
     test_combine();
     test_fogged_lines();
     scene_finish(&sc);
+    free_res();
     return CHECK_RESULT("test_fogsec");
 }

@@ -13,22 +13,6 @@
 #include "interp.h"
 #include "interp_internal.h"
 #include "tracegen.h"
-static uint8_t *texels;
-
-static rgl_status fetch(void *ctx, uint32_t id, rgl_resource *out, rgl_error *err)
-{
-    (void)ctx;
-    if (id != 1) {
-        err->status = RGL_E_RESOURCE;
-        return RGL_E_RESOURCE;
-    }
-    memset(out, 0, sizeof *out);
-    out->id = id;
-    out->kind = RGL_RES_BYTES;
-    out->data = texels;
-    out->size = 4 * 3;
-    return RGL_OK;
-}
 
 /* A fresh interpreter, depth-tested as the programs are (no draw-order note). */
 static interp *fresh_depth(void)
@@ -154,7 +138,8 @@ static void test_mixed_strip(void)
 static void test_modulate_past_white(void)
 {
     static uint8_t rgb[12] = {200, 150, 90, 200, 150, 90, 200, 150, 90, 200, 150, 90};
-    texels = rgb;
+    free_res();
+    add_bytes(rgb, sizeof rgb); /* the texels, id 1 */
     for (int c = 0; c < 5; c++) {
         interp *ip = fresh_depth();
         seq s;
@@ -194,7 +179,8 @@ static void test_modulate_past_white(void)
 static void test_separate_specular_back(void)
 {
     static uint8_t rgb[12] = {200, 150, 90, 200, 150, 90, 200, 150, 90, 200, 150, 90};
-    texels = rgb;
+    free_res();
+    add_bytes(rgb, sizeof rgb); /* the texels, id 1 */
     for (int back = 0; back < 2; back++) {
         interp *ip = fresh_depth();
         seq s;
@@ -267,12 +253,13 @@ static void test_fog_behind(void)
 int main(void)
 {
     scene_init(&sc);
-    fx_fetch = fetch;
+    fx_fetch = fetch_res;
     test_back_faces();
     test_mixed_strip();
     test_modulate_past_white();
     test_separate_specular_back();
     test_fog_behind();
     scene_finish(&sc);
+    free_res();
     return CHECK_RESULT("test_relit");
 }
