@@ -151,40 +151,47 @@ static void nurbs_draw_mark(uint32_t op, const GLUnurbs *nurb, bool *tess)
     nurbs_mark(op, nurb, tess);
 }
 
-RGL_EXPORT void raygluBeginSurface(GLUnurbs *nurb)
+/* glu{Begin,End}{Surface,Curve} as op: the record (an End draws now, with
+ * the current matrices), then GLU's own call, outside the recorder's guard
+ * when the object is a tessellator. The glu* calls are spelt out: in the
+ * preload library each is a macro to the real GLU. */
+static void nurbs_bracket(uint32_t op, GLUnurbs *nurb)
 {
     bool t;
-    nurbs_mark(RGL_OP_BeginSurface, nurb, &t);
+    if (op == RGL_OP_EndSurface || op == RGL_OP_EndCurve)
+        nurbs_draw_mark(op, nurb, &t);
+    else
+        nurbs_mark(op, nurb, &t);
     TESS_UNGUARD(t);
-    gluBeginSurface(nurb);
+    if (op == RGL_OP_BeginSurface)
+        gluBeginSurface(nurb);
+    else if (op == RGL_OP_EndSurface)
+        gluEndSurface(nurb);
+    else if (op == RGL_OP_BeginCurve)
+        gluBeginCurve(nurb);
+    else
+        gluEndCurve(nurb);
     TESS_REGUARD(t);
+}
+
+RGL_EXPORT void raygluBeginSurface(GLUnurbs *nurb)
+{
+    nurbs_bracket(RGL_OP_BeginSurface, nurb);
 }
 
 RGL_EXPORT void raygluEndSurface(GLUnurbs *nurb)
 {
-    bool t;
-    nurbs_draw_mark(RGL_OP_EndSurface, nurb, &t);
-    TESS_UNGUARD(t);
-    gluEndSurface(nurb);
-    TESS_REGUARD(t);
+    nurbs_bracket(RGL_OP_EndSurface, nurb);
 }
 
 RGL_EXPORT void raygluBeginCurve(GLUnurbs *nurb)
 {
-    bool t;
-    nurbs_mark(RGL_OP_BeginCurve, nurb, &t);
-    TESS_UNGUARD(t);
-    gluBeginCurve(nurb);
-    TESS_REGUARD(t);
+    nurbs_bracket(RGL_OP_BeginCurve, nurb);
 }
 
 RGL_EXPORT void raygluEndCurve(GLUnurbs *nurb)
 {
-    bool t;
-    nurbs_draw_mark(RGL_OP_EndCurve, nurb, &t);
-    TESS_UNGUARD(t);
-    gluEndCurve(nurb);
-    TESS_REGUARD(t);
+    nurbs_bracket(RGL_OP_EndCurve, nurb);
 }
 
 RGL_EXPORT void raygluBeginTrim(GLUnurbs *nurb)

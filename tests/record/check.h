@@ -48,6 +48,9 @@ size_t trace_cmds_count(const trace_cmds *c, uint32_t opcode);
 
 /* Prints the lines (for a failing test's log). */
 void trace_cmds_print(const trace_cmds *c, const char *title);
+/* The end of a decoded trace's checks: c printed under title when any
+ * check has failed so far, then freed. */
+void trace_cmds_done(trace_cmds *c, const char *title);
 
 /* Opens path with rgl_reader_open_file (CHECKs success). */
 rgl_reader *trace_open(const char *path);

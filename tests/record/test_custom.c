@@ -698,9 +698,7 @@ void test_texcopy_nocontext(const char *dir)
     snprintf(skipped, sizeof skipped, "@Skipped(opcode=0x%x, reason=0x%x)",
              (unsigned)RGL_OP_TexImage3D, (unsigned)RGL_SKIP_UNKNOWN_ENUM);
     CHECK(count_lines(&c, skipped) == 1);
-    if (check_failures)
-        trace_cmds_print(&c, "texcopy");
-    trace_cmds_free(&c);
+    trace_cmds_done(&c, "texcopy");
     rgl_resource res;
     if (CHECK(rgl_reader_resource(r, 1, &res, NULL) == RGL_OK))
         CHECK(res.kind == RGL_RES_BYTES && res.size == 12 && res.data[0] == 40 &&

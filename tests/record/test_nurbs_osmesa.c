@@ -112,9 +112,7 @@ int main(void)
         CHECK(trace_cmds_count(&c, RGL_OP_EvalMesh2) == 0);
         CHECK(trace_cmds_count(&c, RGL_OP_EvalCoord2f) == 0);
         CHECK(trace_cmds_count(&c, RGL_OP_Vertex3f) == 0);
-        if (check_failures)
-            trace_cmds_print(&c, "frame 0");
-        trace_cmds_free(&c);
+        trace_cmds_done(&c, "frame 0");
 
         c = trace_frame(r, 1, &fi);
         CHECK(c.clean);
@@ -123,9 +121,7 @@ int main(void)
         /* The callbacks' calls are the program's own. */
         CHECK(trace_cmds_count(&c, RGL_OP_Begin) > 0);
         CHECK(trace_cmds_count(&c, RGL_OP_Vertex3fv) == (size_t)tess_vertices);
-        if (check_failures)
-            trace_cmds_print(&c, "frame 1");
-        trace_cmds_free(&c);
+        trace_cmds_done(&c, "frame 1");
         rgl_reader_destroy(r);
     }
     unlink(path);

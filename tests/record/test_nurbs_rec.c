@@ -93,9 +93,7 @@ void test_nurbs_rec(const char *dir)
         CHECK(trace_cmds_count(&tc, RGL_OP_NurbsCurve) == 0);
         CHECK(trace_cmds_find(&tc, 0, "gluNewNurbsRenderer(nurb=#") == 0);
         CHECK(trace_cmds_find(&tc, 0, "gluDeleteNurbsRenderer(nurb=#") > 0);
-        if (check_failures)
-            trace_cmds_print(&tc, "nurbs");
-        trace_cmds_free(&tc);
+        trace_cmds_done(&tc, "nurbs");
 
         rgl_cmd_iter it;
         rgl_cmd cmd;

@@ -134,9 +134,7 @@ static void test_two_frames(const char *path)
                                         "0, 0, 1, 0, 1, 0, -5, 1])");
             CHECK(trace_cmds_find(&c, 0, want) >= 0);
         }
-        if (check_failures)
-            trace_cmds_print(&c, "frame");
-        trace_cmds_free(&c);
+        trace_cmds_done(&c, "frame");
     }
     rgl_frame_info fi;
     trace_cmds last = trace_frame(r, 2, &fi);
@@ -167,9 +165,7 @@ static void test_two_frames(const char *path)
             CHECK(trace_cmds_find(&s, 0, "glTexParameteri(target=GL_TEXTURE_2D, pname=GL_TEXTURE_MIN_FILTER, param=") >= 0);
             CHECK(trace_cmds_find(&s, 0, "glBindTexture(target=GL_TEXTURE_2D, texture=1)") >= 0);
         }
-        if (check_failures)
-            trace_cmds_print(&s, "snapshot");
-        trace_cmds_free(&s);
+        trace_cmds_done(&s, "snapshot");
     }
     /* The texels went in tightly packed. */
     rgl_resource res;
@@ -606,9 +602,7 @@ static void test_unit_snapshot(const char *path)
         /* Units at GL's initial state add nothing past their glActiveTexture. */
         long u5 = trace_cmds_find(&s, 0, "glActiveTexture(texture=GL_TEXTURE5)");
         CHECK(u5 > u4 && u5 == u4 + 1);
-        if (check_failures)
-            trace_cmds_print(&s, "unit snapshot");
-        trace_cmds_free(&s);
+        trace_cmds_done(&s, "unit snapshot");
     }
     rgl_reader_destroy(r);
 }

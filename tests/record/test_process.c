@@ -448,9 +448,7 @@ static void test_dropin(const char *program)
     CHECK(trace_cmds_find(&c, 0, "@NotRecorded(name=\"glIndexf\", count=2)") == (long)c.count - 2);
     CHECK(trace_cmds_find(&c, 0, "@NotRecorded(name=\"glIndexi\", count=1)") ==
           (long)c.count - 1);
-    if (check_failures)
-        trace_cmds_print(&c, "dropin frame 1");
-    trace_cmds_free(&c);
+    trace_cmds_done(&c, "dropin frame 1");
     rgl_reader_destroy(r);
     unlink(path);
 }

@@ -89,9 +89,7 @@ static void test_lists(const char *path)
         long nl = trace_cmds_find(&snap, 0, "glNewList(list=1,");
         CHECK(nq >= 0 && ds > nq && nl > ds);
         CHECK(trace_cmds_find(&snap, 0, "gluQuadricNormals(quad=#1, normal=GLU_NONE)") > nq);
-        if (check_failures)
-            trace_cmds_print(&snap, "snapshot");
-        trace_cmds_free(&snap);
+        trace_cmds_done(&snap, "snapshot");
     }
     rgl_reader_destroy(r);
 }
@@ -125,9 +123,7 @@ static void test_clip_snapshot(const char *path)
         CHECK(trace_cmds_find(&snap, 0, "glClipPlane(plane=GL_CLIP_PLANE1, equation=[0, 0, 1, 5])") >= 0);
         CHECK(trace_cmds_find(&snap, 0, "glEnable(cap=GL_CLIP_PLANE1)") >= 0);
         CHECK(trace_cmds_find(&snap, 0, "glClipPlane(plane=GL_CLIP_PLANE0,") < 0);
-        if (check_failures)
-            trace_cmds_print(&snap, "snapshot");
-        trace_cmds_free(&snap);
+        trace_cmds_done(&snap, "snapshot");
     }
     rgl_reader_destroy(r);
 }

@@ -127,9 +127,7 @@ static void test_objects(const char *path)
     }
     long last = find_last(&s, s.count, "glActiveTexture(");
     CHECK(last >= 0 && strcmp(s.lines[last], "glActiveTexture(texture=GL_TEXTURE1)") == 0);
-    if (check_failures)
-        trace_cmds_print(&s, "snapshot");
-    trace_cmds_free(&s);
+    trace_cmds_done(&s, "snapshot");
     rgl_reader_destroy(r);
 }
 
@@ -215,9 +213,7 @@ static void test_ext(const char *path)
                trace_cmds_count(&c, want[k].op));
     long k = trace_cmds_find(&c, 0, "glCopyTexImage2DEXT(target=GL_TEXTURE_2D, level=0");
     CHECK(k >= 0 && strstr(c.lines[k], "pixels=#") && !strstr(c.lines[k], "pixels=#0"));
-    if (check_failures)
-        trace_cmds_print(&c, "EXT");
-    trace_cmds_free(&c);
+    trace_cmds_done(&c, "EXT");
     /* The next frame's snapshot re-creates the textures from them. */
     c = trace_frame(r, 1, &fi);
     trace_cmds s = trace_resource_cmds(r, fi.state);
@@ -226,9 +222,7 @@ static void test_ext(const char *path)
     CHECK(trace_cmds_find(&s, 0, "glCopyTexImage1DEXT(target=GL_TEXTURE_1D") >= 0);
     CHECK(trace_cmds_find(&s, 0, "glTexImage3DEXT(target=GL_TEXTURE_3D") >= 0);
     CHECK(trace_cmds_find(&s, 0, "glTexSubImage3DEXT(target=GL_TEXTURE_3D") >= 0);
-    if (check_failures)
-        trace_cmds_print(&s, "EXT snapshot");
-    trace_cmds_free(&s);
+    trace_cmds_done(&s, "EXT snapshot");
     trace_cmds_free(&c);
     rgl_reader_destroy(r);
 }
@@ -294,9 +288,7 @@ static void test_updates(const char *path)
                      rgl_enum_name(f, "target"));
             CHECKM(trace_cmds_find(&s, 0, want) >= 0, "%s", want);
         }
-        if (check_failures)
-            trace_cmds_print(&s, "updated");
-        trace_cmds_free(&s);
+        trace_cmds_done(&s, "updated");
     }
     rgl_reader_destroy(r);
 }
@@ -359,9 +351,7 @@ static void test_in_list(const char *path)
     /* Unit 0 is the program's: named last. */
     long last = find_last(&s, s.count, "glActiveTexture(");
     CHECK(last > u2 && strcmp(s.lines[last], "glActiveTexture(texture=GL_TEXTURE0)") == 0);
-    if (check_failures)
-        trace_cmds_print(&s, "in-list snapshot");
-    trace_cmds_free(&s);
+    trace_cmds_done(&s, "in-list snapshot");
     trace_cmds_free(&c);
     rgl_reader_destroy(r);
 }

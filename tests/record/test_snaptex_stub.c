@@ -105,9 +105,7 @@ void test_snaptex_support(const char *dir)
                     last = (long)i;
             CHECK(last == u1);
         }
-        if (check_failures)
-            trace_cmds_print(&s, "snapshot");
-        trace_cmds_free(&s);
+        trace_cmds_done(&s, "snapshot");
         trace_cmds_free(&c);
     }
     rgl_reader_destroy(r);

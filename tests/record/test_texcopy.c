@@ -112,9 +112,7 @@ static void test_copies(const char *path)
     CHECK(trace_cmds_find(&c, 0, "glProvokingVertex(mode=GL_FIRST_VERTEX_CONVENTION)") >= 0);
     CHECK(trace_cmds_find(&c, 0, "glPointParameterfv(pname=GL_POINT_DISTANCE_ATTENUATION, "
                                  "params=[1, 0.5, 0.25])") >= 0);
-    if (check_failures)
-        trace_cmds_print(&c, "copies");
-    trace_cmds_free(&c);
+    trace_cmds_done(&c, "copies");
     rgl_reader_destroy(r);
 }
 
@@ -156,9 +154,7 @@ static void test_teximage3d(const char *path)
     if (CHECK(k >= 0))
         CHECKM(resource_is(r, arg_id(c.lines[k], "pixels"), want, sizeof want), "%s",
                c.lines[k]);
-    if (check_failures)
-        trace_cmds_print(&c, "3D");
-    trace_cmds_free(&c);
+    trace_cmds_done(&c, "3D");
     rgl_reader_destroy(r);
 }
 

@@ -101,6 +101,13 @@ void trace_cmds_print(const trace_cmds *c, const char *title)
         fprintf(stderr, "  %s\n", c->lines[i]);
 }
 
+void trace_cmds_done(trace_cmds *c, const char *title)
+{
+    if (check_failures)
+        trace_cmds_print(c, title);
+    trace_cmds_free(c);
+}
+
 rgl_reader *trace_open(const char *path)
 {
     rgl_reader *r = NULL;

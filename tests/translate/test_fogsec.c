@@ -14,78 +14,12 @@
 #include <string.h>
 
 #include "check.h"
+#include "interp_fixture.h"
 #include "interp.h"
 #include "interp_internal.h"
 #include "outbuf.h"
 #include "povwrite.h"
 #include "tracegen.h"
-
-static scene sc;
-static diag_log dlog;
-
-static seq bodies[2];
-static size_t nbodies;
-
-static rgl_status fetch(void *ctx, uint32_t id, rgl_resource *out, rgl_error *err)
-{
-    (void)ctx;
-    if (id == 0 || id > nbodies) {
-        err->status = RGL_E_RESOURCE;
-        return RGL_E_RESOURCE;
-    }
-    memset(out, 0, sizeof *out);
-    out->id = id;
-    out->kind = RGL_RES_COMMANDS;
-    out->data = bodies[id - 1].data;
-    out->size = bodies[id - 1].len;
-    return RGL_OK;
-}
-
-static interp *fresh(void)
-{
-    scene_reset(&sc);
-    diag_clear(&dlog);
-    interp *ip = interp_create(&sc, &dlog);
-    interp_set_resources(ip, fetch, NULL);
-    interp_begin_frame(ip);
-    return ip;
-}
-
-static void run(interp *ip, seq *s)
-{
-    rgl_error err;
-    CHECK(interp_run(ip, s->data, s->len, 0, &err) == RGL_OK);
-    seq_free(s);
-}
-
-static uint64_t count(diag_kind k) { return dlog.e[k].count; }
-
-static char sdl[1 << 16];
-static size_t nsdl;
-
-static int keep(void *user, const char *p, size_t n)
-{
-    (void)user;
-    if (nsdl + n >= sizeof sdl)
-        return -1;
-    memcpy(sdl + nsdl, p, n);
-    nsdl += n;
-    sdl[nsdl] = 0;
-    return 0;
-}
-
-static void write_sdl(void)
-{
-    povwriter *w = povwriter_create();
-    outbuf ob;
-    nsdl = 0;
-    sdl[0] = 0;
-    CHECK(w != NULL && outbuf_init(&ob, 1 << 12, keep, NULL) == 0);
-    CHECK(povwriter_scene(w, &ob, &sc, NULL) == 0);
-    CHECK(outbuf_flush(&ob) == 0);
-    outbuf_finish(&ob);
-    povwriter_destroy(w);
-}
 
 /* A red triangle at z = -5 with fog coordinates 0, 5 and 10. */
 static void fog_tri(seq *s)
@@ -490,27 +424,14 @@ static void test_combine(void)
 
 static const uint8_t one_bit = 0x80;
 
-static rgl_status bits_fetch(void *ctx, uint32_t id, rgl_resource *out, rgl_error *err)
-{
-    (void)ctx;
-    if (id != 1) {
-        err->status = RGL_E_RESOURCE;
-        return RGL_E_RESOURCE;
-    }
-    memset(out, 0, sizeof *out);
-    out->id = id;
-    out->kind = RGL_RES_BYTES;
-    out->data = &one_bit;
-    out->size = 1;
-    return RGL_OK;
-}
-
 /* A perspective camera fixed by a triangle at depth 10, then what `tail`
  * adds; the frame ends. */
 static interp *pixels_frame(bool depth_test, const double *zs, int nz, bool after)
 {
+    free_res();
+    add_bytes(&one_bit, 1); /* the bitmap, id 1 */
     interp *ip = fresh();
-    interp_set_resources(ip, bits_fetch, NULL);
+    interp_set_resources(ip, fetch_res, NULL);
     seq s;
     seq_init(&s);
     CMD(&s, Viewport, 0, 0, 40, 30);
@@ -579,6 +500,7 @@ static void test_pixels_depth(void)
 int main(void)
 {
     scene_init(&sc);
+    fx_fetch = fetch_bodies;
     test_fog_coord_linear();
     test_fog_coord_exp();
     test_fog_coord_lit();
@@ -591,5 +513,6 @@ int main(void)
     test_combine();
     test_fogged_lines();
     scene_finish(&sc);
+    free_res();
     return CHECK_RESULT("test_fogsec");
 }

@@ -10,33 +10,13 @@
 #include <string.h>
 
 #include "check.h"
+#include "interp_fixture.h"
 #include "frame.h"
 #include "interp.h"
 #include "interp_internal.h"
 #include "talloc.h"
 #include "scenes.h"
 #include "tracegen.h"
-
-static scene sc;
-static diag_log dlog;
-
-static interp *fresh(void)
-{
-    scene_reset(&sc);
-    diag_clear(&dlog);
-    interp *ip = interp_create(&sc, &dlog);
-    interp_begin_frame(ip);
-    return ip;
-}
-
-static void run(interp *ip, seq *s)
-{
-    rgl_error err;
-    CHECK(interp_run(ip, s->data, s->len, 0, &err) == RGL_OK);
-    seq_free(s);
-}
-
-static uint64_t count(diag_kind k) { return dlog.e[k].count; }
 
 static void check_matrix(const mat4 *m, const double *expect, double eps)
 {
@@ -1278,7 +1258,6 @@ static void test_eval_rejected(void)
         CHECK_NEAR(sc.points[0].p[0], sc.points[1].p[0], 1e-6);
     interp_destroy(ip);
 }
-
 
 /* ---- Raster positions and pixel rectangles ------------------------------------------ */
 

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "interp_fixture.h"
 #include "interp.h"
 #include "interp_internal.h"
 #include "outbuf.h"
@@ -15,63 +16,13 @@
 #include "scene.h"
 #include "tracegen.h"
 
-static scene sc;
-static diag_log dlog;
-static char sdl[1 << 16];
-static size_t sdl_len;
-
-static interp *fresh(void)
-{
-    scene_reset(&sc);
-    diag_clear(&dlog);
-    interp *ip = interp_create(&sc, &dlog);
-    interp_begin_frame(ip);
-    return ip;
-}
-
-static void run(interp *ip, seq *s)
-{
-    rgl_error err;
-    CHECK(interp_run(ip, s->data, s->len, 0, &err) == RGL_OK);
-    seq_free(s);
-}
-
-static uint64_t count(diag_kind k) { return dlog.e[k].count; }
-
-static int keep(void *user, const char *p, size_t n)
-{
-    (void)user;
-    if (sdl_len + n < sizeof sdl) {
-        memcpy(sdl + sdl_len, p, n);
-        sdl_len += n;
-        sdl[sdl_len] = 0;
-    }
-    return 0;
-}
-
-static size_t occurrences(const char *hay, const char *needle)
-{
-    size_t n = 0;
-    for (const char *p = strstr(hay, needle); p; p = strstr(p + 1, needle))
-        n++;
-    return n;
-}
-
 static void write_scene(bool no_shadows)
 {
-    povwriter *w = povwriter_create();
-    outbuf ob;
     pov_options opt = {no_shadows, 0, 0};
     pov_frame_info info;
     memset(&info, 0, sizeof info);
     info.options = &opt;
-    sdl_len = 0;
-    sdl[0] = 0;
-    CHECK(outbuf_init(&ob, 1 << 12, keep, NULL) == 0);
-    CHECK(povwriter_scene(w, &ob, &sc, &info) == 0);
-    CHECK(outbuf_flush(&ob) == 0);
-    outbuf_finish(&ob);
-    povwriter_destroy(w);
+    write_sdl_with(NULL, &info);
 }
 
 static void tri(seq *s, float z)

@@ -17,65 +17,12 @@
 #include <string.h>
 
 #include "check.h"
+#include "interp_fixture.h"
 #include "interp.h"
 #include "outbuf.h"
 #include "povwrite.h"
 #include "povwrite_texture.h"
 #include "tracegen.h"
-
-static scene sc;
-static diag_log dlog;
-
-/* Resources of the test: id k is bodies[k - 1]. */
-static seq bodies[8];
-static size_t nbodies;
-
-static rgl_status fetch(void *ctx, uint32_t id, rgl_resource *out, rgl_error *err)
-{
-    (void)ctx;
-    if (id == 0 || id > nbodies) {
-        err->status = RGL_E_RESOURCE;
-        return RGL_E_RESOURCE;
-    }
-    memset(out, 0, sizeof *out);
-    out->id = id;
-    out->kind = RGL_RES_COMMANDS;
-    out->data = bodies[id - 1].data;
-    out->size = bodies[id - 1].len;
-    return RGL_OK;
-}
-
-static uint32_t add_body(seq *s)
-{
-    bodies[nbodies] = *s;
-    return (uint32_t)++nbodies;
-}
-
-static void free_bodies(void)
-{
-    for (size_t i = 0; i < nbodies; i++)
-        seq_free(&bodies[i]);
-    nbodies = 0;
-}
-
-static interp *fresh(void)
-{
-    scene_reset(&sc);
-    diag_clear(&dlog);
-    interp *ip = interp_create(&sc, &dlog);
-    interp_set_resources(ip, fetch, NULL);
-    interp_begin_frame(ip);
-    return ip;
-}
-
-static void run(interp *ip, seq *s)
-{
-    rgl_error err;
-    CHECK(interp_run(ip, s->data, s->len, 0, &err) == RGL_OK);
-    seq_free(s);
-}
-
-static uint64_t count(diag_kind k) { return dlog.e[k].count; }
 
 /* A body: one triangle in the current colour, then a move of +10 in x. */
 static uint32_t tri_body(void)
@@ -273,7 +220,7 @@ static void test_nesting_and_delete(void)
 
     /* The table is context state: a copy carries it. */
     interp *other = interp_create(NULL, NULL);
-    interp_set_resources(other, fetch, NULL);
+    interp_set_resources(other, fetch_bodies, NULL);
     interp_copy_state(other, ip);
     seq_init(&s);
     CMD(&s, CallList, 7);
@@ -456,29 +403,6 @@ static void test_arrays(void)
     interp_destroy(ip);
 }
 
-/* The SDL of a frame, kept in memory. */
-static char sdl[1 << 16];
-static size_t nsdl;
-
-static int keep(void *user, const char *p, size_t n)
-{
-    (void)user;
-    if (nsdl + n >= sizeof sdl)
-        return -1;
-    memcpy(sdl + nsdl, p, n);
-    nsdl += n;
-    sdl[nsdl] = 0;
-    return 0;
-}
-
-static size_t occurrences(const char *hay, const char *needle)
-{
-    size_t n = 0;
-    for (const char *p = hay; (p = strstr(p, needle)) != NULL; p++)
-        n++;
-    return n;
-}
-
 static int texel(float c) { return (int)(c * 255.0f + 0.5f); }
 
 /* One triangle with three colours, then a move of +10 in x. */
@@ -530,11 +454,8 @@ static void test_colour_image(void)
     CHECK_EQ_U(sc.nprotos, 2);
 
     povwriter *w = povwriter_create();
-    outbuf ob;
-    nsdl = 0;
-    CHECK(w != NULL && outbuf_init(&ob, 1 << 12, keep, NULL) == 0);
-    CHECK(povwriter_scene(w, &ob, &sc, NULL) == 0);
-    CHECK(outbuf_flush(&ob) == 0);
+    CHECK(w != NULL);
+    write_sdl_with(w, NULL);
     /* The soft prototype: its colours as an image, each corner at the
      * centre of its texel; the RGB one keeps its texture_list. */
     CHECK_EQ_U(occurrences(sdl, "image_map{png"), 1);
@@ -555,7 +476,6 @@ static void test_colour_image(void)
             CHECK(d[k] == b[k] + c[k] - a[k]);
         }
     }
-    outbuf_finish(&ob);
     povwriter_destroy(w);
     interp_destroy(ip);
     free_bodies();
@@ -564,6 +484,7 @@ static void test_colour_image(void)
 int main(void)
 {
     scene_init(&sc);
+    fx_fetch = fetch_bodies;
     test_calls_and_sharing();
     test_single_call_inline();
     test_absolute_matrix_inline();

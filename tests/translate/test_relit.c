@@ -9,53 +9,21 @@
 #include <string.h>
 
 #include "check.h"
+#include "interp_fixture.h"
 #include "interp.h"
 #include "interp_internal.h"
 #include "tracegen.h"
 
-static scene sc;
-static diag_log dlog;
-static uint8_t *texels;
-
-static rgl_status fetch(void *ctx, uint32_t id, rgl_resource *out, rgl_error *err)
+/* A fresh interpreter, depth-tested as the programs are (no draw-order note). */
+static interp *fresh_depth(void)
 {
-    (void)ctx;
-    if (id != 1) {
-        err->status = RGL_E_RESOURCE;
-        return RGL_E_RESOURCE;
-    }
-    memset(out, 0, sizeof *out);
-    out->id = id;
-    out->kind = RGL_RES_BYTES;
-    out->data = texels;
-    out->size = 4 * 3;
-    return RGL_OK;
-}
-
-static interp *fresh(void)
-{
-    scene_reset(&sc);
-    diag_clear(&dlog);
-    interp *ip = interp_create(&sc, &dlog);
-    interp_set_resources(ip, fetch, NULL);
-    interp_begin_frame(ip);
-    seq s; /* depth-tested, as the programs are (no draw-order note) */
+    interp *ip = fresh();
+    seq s;
     seq_init(&s);
     CMD(&s, Enable, GL_DEPTH_TEST);
-    rgl_error err;
-    CHECK(interp_run(ip, s.data, s.len, 0, &err) == RGL_OK);
-    seq_free(&s);
+    run(ip, &s);
     return ip;
 }
-
-static void run(interp *ip, seq *s)
-{
-    rgl_error err;
-    CHECK(interp_run(ip, s->data, s->len, 0, &err) == RGL_OK);
-    seq_free(s);
-}
-
-static uint64_t count(diag_kind k) { return dlog.e[k].count; }
 
 static size_t notes(void)
 {
@@ -95,7 +63,7 @@ static void lit(seq *s)
 static void test_back_faces(void)
 {
     for (int c = 0; c < 5; c++) {
-        interp *ip = fresh();
+        interp *ip = fresh_depth();
         interp_set_vertex_lighting(ip, c == 4);
         seq s;
         seq_init(&s);
@@ -129,7 +97,7 @@ static void test_back_faces(void)
 static void test_mixed_strip(void)
 {
     for (int cw = 0; cw < 2; cw++) {
-        interp *ip = fresh();
+        interp *ip = fresh_depth();
         seq s;
         seq_init(&s);
         lit(&s);
@@ -170,9 +138,10 @@ static void test_mixed_strip(void)
 static void test_modulate_past_white(void)
 {
     static uint8_t rgb[12] = {200, 150, 90, 200, 150, 90, 200, 150, 90, 200, 150, 90};
-    texels = rgb;
+    free_res();
+    add_bytes(rgb, sizeof rgb); /* the texels, id 1 */
     for (int c = 0; c < 5; c++) {
-        interp *ip = fresh();
+        interp *ip = fresh_depth();
         seq s;
         seq_init(&s);
         lit(&s);
@@ -210,9 +179,10 @@ static void test_modulate_past_white(void)
 static void test_separate_specular_back(void)
 {
     static uint8_t rgb[12] = {200, 150, 90, 200, 150, 90, 200, 150, 90, 200, 150, 90};
-    texels = rgb;
+    free_res();
+    add_bytes(rgb, sizeof rgb); /* the texels, id 1 */
     for (int back = 0; back < 2; back++) {
-        interp *ip = fresh();
+        interp *ip = fresh_depth();
         seq s;
         seq_init(&s);
         lit(&s);
@@ -239,7 +209,7 @@ static void test_separate_specular_back(void)
 static void test_fog_behind(void)
 {
     for (int c = 0; c < 5; c++) {
-        interp *ip = fresh();
+        interp *ip = fresh_depth();
         seq s;
         seq_init(&s);
         CMD(&s, MatrixMode, GL_PROJECTION);
@@ -283,11 +253,13 @@ static void test_fog_behind(void)
 int main(void)
 {
     scene_init(&sc);
+    fx_fetch = fetch_res;
     test_back_faces();
     test_mixed_strip();
     test_modulate_past_white();
     test_separate_specular_back();
     test_fog_behind();
     scene_finish(&sc);
+    free_res();
     return CHECK_RESULT("test_relit");
 }

@@ -11,32 +11,12 @@
 #include <string.h>
 
 #include "check.h"
+#include "interp_fixture.h"
 #include "interp.h"
 #include "interp_internal.h"
 #include "outbuf.h"
 #include "povwrite.h"
 #include "tracegen.h"
-
-static scene sc;
-static diag_log dlog;
-
-static interp *fresh(void)
-{
-    scene_reset(&sc);
-    diag_clear(&dlog);
-    interp *ip = interp_create(&sc, &dlog);
-    interp_begin_frame(ip);
-    return ip;
-}
-
-static void run(interp *ip, seq *s)
-{
-    rgl_error err;
-    CHECK(interp_run(ip, s->data, s->len, 0, &err) == RGL_OK);
-    seq_free(s);
-}
-
-static uint64_t count(diag_kind k) { return dlog.e[k].count; }
 
 static void triangle(seq *s)
 {
@@ -54,20 +34,6 @@ static bool names_are(uint32_t id, const uint32_t *want, uint32_t n)
     if (n == 0)
         return v == NULL && got == 0;
     return v && got == n && memcmp(v, want, n * sizeof *v) == 0;
-}
-
-static char sdl[1 << 16];
-static size_t nsdl;
-
-static int keep(void *user, const char *p, size_t n)
-{
-    (void)user;
-    if (nsdl + n >= sizeof sdl)
-        return -1;
-    memcpy(sdl + nsdl, p, n);
-    nsdl += n;
-    sdl[nsdl] = 0;
-    return 0;
 }
 
 /* A picking pass, then the real draw: only the real draw is in the scene,
@@ -159,19 +125,12 @@ static void test_names(void)
     if (sc.nsolids == 1)
         CHECK(names_are(sc.solids[0].look.names, n7, 1));
 
-    povwriter *w = povwriter_create();
-    outbuf ob;
-    nsdl = 0;
-    CHECK(w != NULL && outbuf_init(&ob, 1 << 12, keep, NULL) == 0);
-    CHECK(povwriter_scene(w, &ob, &sc, NULL) == 0);
-    CHECK(outbuf_flush(&ob) == 0);
+    write_sdl();
     const char *a = strstr(sdl, "// names: 1 4\n"), *b = strstr(sdl, "// names: 1 5\n");
     const char *c = strstr(sdl, "// names: 7\n");
     CHECK(a && b && c && a < b);
     CHECK(a && strstr(a, "mesh2") != NULL);
     CHECK(c && strncmp(c + strlen("// names: 7\n"), "sphere", 6) == 0);
-    outbuf_finish(&ob);
-    povwriter_destroy(w);
     interp_destroy(ip);
 }
 
@@ -339,20 +298,13 @@ static void test_scissor_clear(void)
     }
     /* The writer clips the scissored run to x > 0.5, y > 0 (the box from
      * window 150, 50 in the identity camera's 200 x 100 image). */
-    povwriter *w = povwriter_create();
-    outbuf ob;
-    nsdl = 0;
-    CHECK(w != NULL && outbuf_init(&ob, 1 << 12, keep, NULL) == 0);
-    CHECK(povwriter_scene(w, &ob, &sc, NULL) == 0);
-    CHECK(outbuf_flush(&ob) == 0);
+    write_sdl();
     const char *clip = strstr(sdl, "clipped_by{plane{<-1,0,0>,-0.5}plane{<1,0,0>,1.5}"
                                    "plane{<0,-1,0>,0}plane{<0,1,0>,2}}");
     CHECK(clip != NULL);
     if (!clip)
         fprintf(stderr, "%s\n", sdl);
     CHECK(clip && !strstr(clip + 1, "clipped_by{plane{<-1"));
-    outbuf_finish(&ob);
-    povwriter_destroy(w);
     interp_destroy(ip);
 }
 

@@ -38,6 +38,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "interp_fixture.h"
 #include "interp.h"
 #include "outbuf.h"
 #include "povwrite_clip.h"
@@ -45,48 +46,12 @@
 #include "teapot_mesh.h"
 #include "tracegen.h"
 
-static scene sc;
-static diag_log dlog;
-static seq body;
-
-static rgl_status fetch(void *ctx, uint32_t id, rgl_resource *out, rgl_error *err)
-{
-    (void)ctx;
-    if (id != 1) {
-        err->status = RGL_E_RESOURCE;
-        return RGL_E_RESOURCE;
-    }
-    memset(out, 0, sizeof *out);
-    out->id = id;
-    out->kind = RGL_RES_COMMANDS;
-    out->data = body.data;
-    out->size = body.len;
-    return RGL_OK;
-}
-
-static interp *fresh(void)
-{
-    scene_reset(&sc);
-    diag_clear(&dlog);
-    interp *ip = interp_create(&sc, &dlog);
-    interp_set_resources(ip, fetch, NULL);
-    interp_begin_frame(ip);
-    return ip;
-}
-
-static void run(interp *ip, seq *s)
-{
-    rgl_error err;
-    CHECK(interp_run(ip, s->data, s->len, 0, &err) == RGL_OK);
-    seq_free(s);
-}
-
 static void test_quadric_state_in_list(void)
 {
     interp *ip = fresh();
-    seq_init(&body);
-    CMD(&body, QuadricDrawStyle, 1, GLU_LINE);
-    CMD(&body, Disk, 1, 0.25, 1.0, 8, 2);
+    seq_init(&bodies[0]);
+    CMD(&bodies[0], QuadricDrawStyle, 1, GLU_LINE);
+    CMD(&bodies[0], Disk, 1, 0.25, 1.0, 8, 2);
     seq s;
     seq_init(&s);
     CMD(&s, Viewport, 0, 0, 64, 64);
@@ -105,7 +70,7 @@ static void test_quadric_state_in_list(void)
     CHECK_EQ_U(sc.nlines, lines);
     CHECK_EQ_U(sc.nsolids, 1); /* a full filled disk is an exact disc */
     interp_destroy(ip);
-    seq_free(&body);
+    seq_free(&bodies[0]);
 }
 
 /* The eye-space z of the first vertex of mesh m. */
@@ -495,6 +460,8 @@ static void test_stencil(void)
 int main(void)
 {
     scene_init(&sc);
+    fx_fetch = fetch_bodies;
+    nbodies = 1; /* the one list body, bodies[0] */
     test_quadric_state_in_list();
     test_polygon_offset();
     test_teapot_mesh();

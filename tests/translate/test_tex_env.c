@@ -13,104 +13,13 @@
 #include <string.h>
 
 #include "check.h"
+#include "interp_fixture.h"
 #include "interp.h"
 #include "outbuf.h"
 #include "povwrite.h"
 #include "povwrite_mipmap.h"
 #include "povwrite_texture.h"
 #include "tracegen.h"
-
-static scene sc;
-static diag_log dlog;
-
-/* Resources: id k is res[k - 1], bytes. */
-static struct {
-    uint8_t *data;
-    size_t size;
-} res[8];
-static size_t nres;
-
-static rgl_status fetch(void *ctx, uint32_t id, rgl_resource *out, rgl_error *err)
-{
-    (void)ctx;
-    if (id == 0 || id > nres) {
-        err->status = RGL_E_RESOURCE;
-        return RGL_E_RESOURCE;
-    }
-    memset(out, 0, sizeof *out);
-    out->id = id;
-    out->kind = RGL_RES_BYTES;
-    out->data = res[id - 1].data;
-    out->size = res[id - 1].size;
-    return RGL_OK;
-}
-
-static uint32_t add_bytes(const void *p, size_t n)
-{
-    res[nres].data = malloc(n);
-    memcpy(res[nres].data, p, n);
-    res[nres].size = n;
-    return (uint32_t)++nres;
-}
-
-static void free_res(void)
-{
-    for (size_t i = 0; i < nres; i++)
-        free(res[i].data);
-    nres = 0;
-}
-
-static interp *fresh(void)
-{
-    scene_reset(&sc);
-    diag_clear(&dlog);
-    interp *ip = interp_create(&sc, &dlog);
-    interp_set_resources(ip, fetch, NULL);
-    interp_begin_frame(ip);
-    return ip;
-}
-
-static void run(interp *ip, seq *s)
-{
-    rgl_error err;
-    CHECK(interp_run(ip, s->data, s->len, 0, &err) == RGL_OK);
-    seq_free(s);
-}
-
-/* The SDL of the scene, in sdl. */
-static char sdl[1 << 16];
-static size_t sdl_len;
-static int keep(void *user, const char *p, size_t n)
-{
-    (void)user;
-    if (sdl_len + n < sizeof sdl) {
-        memcpy(sdl + sdl_len, p, n);
-        sdl_len += n;
-        sdl[sdl_len] = '\0';
-    }
-    return 0;
-}
-
-static void write_scene(povwriter *w)
-{
-    outbuf ob;
-    sdl_len = 0;
-    sdl[0] = '\0';
-    CHECK(outbuf_init(&ob, 1 << 12, keep, NULL) == 0);
-    CHECK(povwriter_scene(w, &ob, &sc, NULL) == 0);
-    CHECK(outbuf_flush(&ob) == 0);
-    outbuf_finish(&ob);
-}
-
-static uint64_t count(diag_kind k) { return dlog.e[k].count; }
-
-static size_t occurrences(const char *hay, const char *needle)
-{
-    size_t n = 0;
-    for (const char *p = hay; (p = strstr(p, needle)); p++)
-        n++;
-    return n;
-}
 
 /* A 2 x 1 RGBA texture (red, green; alpha 255, 100) bound as name 1,
  * nearest, with env mode env, enabled. */
@@ -200,7 +109,7 @@ static void test_modulate_tint(void)
         run(ip, &s);
         interp_end_frame(ip);
         povwriter *w = povwriter_create();
-        write_scene(w);
+        write_sdl_with(w, NULL);
         if (gold) {
             CHECK(strstr(sdl, "finish{diffuse 0.8 ") != NULL);
             CHECK(povwriter_image(w, 0) != NULL);
@@ -238,7 +147,7 @@ static void test_modulate_tint(void)
     CHECK_EQ_U(count(DIAG_NOTE_TEX_MODULATE_CM), 0);
     interp_end_frame(ip);
     povwriter *w = povwriter_create();
-    write_scene(w);
+    write_sdl_with(w, NULL);
     CHECK(strstr(sdl, "#declare rgl_mt0a=function{pigment{image_map{") != NULL);
     CHECK(strstr(sdl, "rgl_mt0a(x,y,z).red*(1)") != NULL);  /* (1, 0.5, 0): red the largest */
     CHECK(strstr(sdl, "rgl_mt0a(x,y,z).blue*(1)") != NULL); /* (0, 0.5, 1) */
@@ -275,7 +184,7 @@ static void test_blend_add(void)
             CHECK_EQ_U(count(DIAG_NOTE_TEXTURE), 0);
             interp_end_frame(ip);
             povwriter *w = povwriter_create();
-            write_scene(w);
+            write_sdl_with(w, NULL);
             if (!lit) {
                 CHECK_EQ_U(strstr(sdl, "#declare rgl_mt0a=function{pigment{image_map{") != NULL, 1);
                 CHECK(strstr(sdl, "uv_mapping average pigment_map{") != NULL);
@@ -366,7 +275,7 @@ static void test_alpha_test(void)
     CHECK_EQ_U(count(DIAG_NOTE_ALPHA_TEST), 0);
     interp_end_frame(ip);
     povwriter *w = povwriter_create();
-    write_scene(w);
+    write_sdl_with(w, NULL);
     CHECK(strstr(sdl, "#declare rgl_at0=function{pigment{image_map{") != NULL);
     CHECK(strstr(sdl, "uv_mapping function{rgl_at0(x,y,z).transmit}pigment_map{[0 image_map{") != NULL);
     CHECK(strstr(sdl, "[0.5 rgbt<1,1,1,1>][1 rgbt<1,1,1,1>]}") != NULL);
@@ -515,7 +424,7 @@ static void test_mip_runs(void)
     }
     interp_end_frame(ip);
     povwriter *w = povwriter_create();
-    write_scene(w);
+    write_sdl_with(w, NULL);
     CHECK(strstr(sdl, "#declare rgl_mip0l=function(x,y){ln(") != NULL);
     CHECK(strstr(sdl, "uv_mapping function{(min(") != NULL);
     CHECK_EQ_U(povwriter_image(w, 4) != NULL, 1); /* 16, 8, 4, 2, 1 */
@@ -579,7 +488,7 @@ static void test_cube(void)
     }
     interp_end_frame(ip);
     povwriter *w = povwriter_create();
-    write_scene(w);
+    write_sdl_with(w, NULL);
     CHECK(strstr(sdl, "#declare rgl_cube0f5=function{pigment{image_map{") != NULL);
     CHECK(strstr(sdl, "#declare rgl_cube0c2=function(x,y,z){select(min(abs(x)-abs(y),abs(x)-abs(z))") != NULL);
     CHECK_EQ_U(occurrences(sdl, "#declare rgl_cube0c"), 3); /* once per cube, not per run */
@@ -645,6 +554,7 @@ static void test_clamp_border(void)
 int main(void)
 {
     scene_init(&sc);
+    fx_fetch = fetch_res;
     test_mirrored();
     test_modulate_tint();
     test_blend_add();

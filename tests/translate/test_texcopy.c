@@ -9,68 +9,10 @@
 #include <string.h>
 
 #include "check.h"
+#include "interp_fixture.h"
 #include "interp.h"
 #include "interp_internal.h"
 #include "tracegen.h"
-
-static scene sc;
-static diag_log dlog;
-
-/* Resources: id k is res[k - 1]. */
-static struct {
-    uint8_t *data;
-    size_t size;
-} res[16];
-static size_t nres;
-
-static rgl_status fetch(void *ctx, uint32_t id, rgl_resource *out, rgl_error *err)
-{
-    (void)ctx;
-    if (id == 0 || id > nres) {
-        err->status = RGL_E_RESOURCE;
-        return RGL_E_RESOURCE;
-    }
-    memset(out, 0, sizeof *out);
-    out->id = id;
-    out->kind = RGL_RES_BYTES;
-    out->data = res[id - 1].data;
-    out->size = res[id - 1].size;
-    return RGL_OK;
-}
-
-static uint32_t add_bytes(const void *p, size_t n)
-{
-    res[nres].data = malloc(n ? n : 1);
-    memcpy(res[nres].data, p, n);
-    res[nres].size = n;
-    return (uint32_t)++nres;
-}
-
-static void free_res(void)
-{
-    for (size_t i = 0; i < nres; i++)
-        free(res[i].data);
-    nres = 0;
-}
-
-static interp *fresh(void)
-{
-    scene_reset(&sc);
-    diag_clear(&dlog);
-    interp *ip = interp_create(&sc, &dlog);
-    interp_set_resources(ip, fetch, NULL);
-    interp_begin_frame(ip);
-    return ip;
-}
-
-static void run(interp *ip, seq *s)
-{
-    rgl_error err;
-    CHECK(interp_run(ip, s->data, s->len, 0, &err) == RGL_OK);
-    seq_free(s);
-}
-
-static uint64_t count(diag_kind k) { return dlog.e[k].count; }
 
 static void setup(seq *s, GLenum target, uint32_t name)
 {
@@ -632,6 +574,7 @@ static void test_with_levels(void)
 int main(void)
 {
     scene_init(&sc);
+    fx_fetch = fetch_res;
     test_copy();
     test_3d();
     test_packed();

@@ -19,82 +19,13 @@
 #include <unistd.h>
 
 #include "check.h"
+#include "interp_fixture.h"
 #include "interp.h"
 #include "outbuf.h"
 #include "pngout.h"
 #include "povwrite.h"
 #include "povwrite_texture.h"
 #include "tracegen.h"
-
-static scene sc;
-static diag_log dlog;
-
-/* Resources: id k is res[k - 1], commands or bytes. */
-typedef struct res_item {
-    uint32_t kind;
-    uint8_t *data;
-    size_t size;
-} res_item;
-static res_item res[16];
-static size_t nres;
-
-static rgl_status fetch(void *ctx, uint32_t id, rgl_resource *out, rgl_error *err)
-{
-    (void)ctx;
-    if (id == 0 || id > nres) {
-        err->status = RGL_E_RESOURCE;
-        return RGL_E_RESOURCE;
-    }
-    memset(out, 0, sizeof *out);
-    out->id = id;
-    out->kind = res[id - 1].kind;
-    out->data = res[id - 1].data;
-    out->size = res[id - 1].size;
-    return RGL_OK;
-}
-
-static uint32_t add_bytes(const void *p, size_t n)
-{
-    res[nres].kind = RGL_RES_BYTES;
-    res[nres].data = malloc(n ? n : 1);
-    memcpy(res[nres].data, p, n);
-    res[nres].size = n;
-    return (uint32_t)++nres;
-}
-
-static uint32_t add_body(seq *s)
-{
-    res[nres].kind = RGL_RES_COMMANDS;
-    res[nres].data = s->data;
-    res[nres].size = s->len;
-    return (uint32_t)++nres;
-}
-
-static void free_res(void)
-{
-    for (size_t i = 0; i < nres; i++)
-        free(res[i].data);
-    nres = 0;
-}
-
-static interp *fresh(void)
-{
-    scene_reset(&sc);
-    diag_clear(&dlog);
-    interp *ip = interp_create(&sc, &dlog);
-    interp_set_resources(ip, fetch, NULL);
-    interp_begin_frame(ip);
-    return ip;
-}
-
-static void run(interp *ip, seq *s)
-{
-    rgl_error err;
-    CHECK(interp_run(ip, s->data, s->len, 0, &err) == RGL_OK);
-    seq_free(s);
-}
-
-static uint64_t count(diag_kind k) { return dlog.e[k].count; }
 
 /* Nearest filters (a complete texture without mipmaps), texturing on. */
 static void setup(seq *s, GLenum target, uint32_t name)
@@ -269,7 +200,7 @@ static void test_copies_lists(void)
     seq_init(&body);
     setup(&body, GL_TEXTURE_2D, 7);
     CMD(&body, TexImage2D, GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, idb);
-    uint32_t list = add_body(&body);
+    uint32_t list = add_res_body(&body);
 
     interp *a = fresh();
     seq s;
@@ -288,7 +219,7 @@ static void test_copies_lists(void)
         CHECK(sc.textures[0].rgba[2] == 255 && sc.textures[0].rgba[0] == 0);
 
     interp *b = interp_create(NULL, NULL);
-    interp_set_resources(b, fetch, NULL);
+    interp_set_resources(b, fetch_res, NULL);
     interp_copy_state(b, a);
     seq_init(&s);
     CMD(&s, TexSubImage2D, GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, idr);
@@ -526,28 +457,6 @@ static void test_images(void)
     free_res();
 }
 
-/* The SDL a scene is written as, in buf. */
-static char sdl[1 << 16];
-static size_t sdl_len;
-static int keep(void *user, const char *p, size_t n)
-{
-    (void)user;
-    if (sdl_len + n < sizeof sdl) {
-        memcpy(sdl + sdl_len, p, n);
-        sdl_len += n;
-        sdl[sdl_len] = 0;
-    }
-    return 0;
-}
-
-static size_t occurrences(const char *hay, const char *needle)
-{
-    size_t n = 0;
-    for (const char *p = hay; (p = strstr(p, needle)); p++)
-        n++;
-    return n;
-}
-
 /* Two units: the look holds both textures, the writer one pigment
  * combining them (a function per image), one mesh2 per run of triangles
  * whose unit 1 coordinates follow one affine map of unit 0's; a unit 0
@@ -591,12 +500,7 @@ static void test_multitex(void)
             CHECK_EQ_U(sc.textures[sc.meshes[0].look.texture1].env_mode, GL_ADD);
     }
     interp_end_frame(ip);
-    povwriter *w = povwriter_create();
-    outbuf ob;
-    sdl_len = 0;
-    CHECK(outbuf_init(&ob, 1 << 12, keep, NULL) == 0);
-    CHECK(povwriter_scene(w, &ob, &sc, NULL) == 0);
-    CHECK(outbuf_flush(&ob) == 0);
+    write_sdl();
     CHECK_EQ_U(occurrences(sdl, "mesh2{"), 2);
     CHECK_EQ_U(occurrences(sdl, "#declare rgl_mt0a=function{pigment{image_map{"), 1);
     CHECK_EQ_U(occurrences(sdl, "#declare rgl_mt1b=function{pigment{image_map{"), 1);
@@ -627,14 +531,13 @@ static void test_multitex(void)
         CHECK_NEAR(sc.verts[2].tex[1], 1, 0);
     }
     interp_destroy(ip);
-    povwriter_destroy(w);
-    outbuf_finish(&ob);
     free_res();
 }
 
 int main(void)
 {
     scene_init(&sc);
+    fx_fetch = fetch_res;
     test_formats();
     test_hostile_sizes();
     test_completeness();
