@@ -1122,6 +1122,9 @@ static void end_primitive(interp *ip)
     as.swap = a->polygon.front_face == GL_CW;
     as.line_smooth = a->caps[INTERP_CAP_LINE_SMOOTH];
     as.stipple = interp_stipple_on(ip);
+    if (as.stipple && (ip->prim_mode <= GL_LINE_STRIP || a->polygon.mode[0] == GL_LINE ||
+                       a->polygon.mode[1] == GL_LINE))
+        interp_note(ip, DIAG_NOTE_STIPPLE);
     as.point_smooth = a->caps[INTERP_CAP_POINT_SMOOTH];
     as.line_width = raster_width(a->line.width, as.line_smooth);
     as.point_size = raster_width(a->point.size, as.point_smooth);

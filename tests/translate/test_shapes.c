@@ -398,7 +398,9 @@ static void test_line_stipple(void)
         CHECK_NEAR(sc.lines[before].p[0][0], 0, 1e-4);
         CHECK_NEAR(sc.lines[before].p[1][0], 100, 1e-4);
     }
-    CHECK_EQ_U(dlog.e[DIAG_NOTE_STIPPLE].count, 0);
+    /* Dash ends within a pixel of GL's fragments: said (shapes_line_stipple's
+     * silhouette 0.935). */
+    CHECK(dlog.e[DIAG_NOTE_STIPPLE].count > 0);
     interp_destroy(ip);
 }
 
