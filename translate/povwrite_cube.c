@@ -13,20 +13,11 @@
 #include "povwrite_cube.h"
 
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "numfmt.h"
-
-static const char *num(char out[NUMFMT_F32_ROOM + 3], double v)
-{
-    out[0] = '(';
-    size_t n = numfmt_f32(out + 1, isfinite(v) ? (float)v : 0.0f);
-    out[1 + n] = ')';
-    out[2 + n] = '\0';
-    return out;
-}
+#include "sdltext.h"
 
 int povcube_declare(outbuf *ob, povtex *pt, const scene *s, int32_t t, unsigned id, povcube *c)
 {
@@ -59,8 +50,8 @@ int povcube_declare(outbuf *ob, povtex *pt, const scene *s, int32_t t, unsigned 
         for (int k = 0; k < 6; k++)
             snprintf(face[k], sizeof face[k],
                      "rgl_cube%uf%d((%s/max(1e-30,abs(%s))+1)/2*%s+%s,(%s/max(1e-30,abs(%s))+1)/2*%s+%s,0).%s", id, k,
-                     sc[k], ma[k], num(n[0], c->scale[k][0]), num(n[1], c->offset[k][0]), tc[k],
-                     ma[k], num(n[2], c->scale[k][1]), num(n[3], c->offset[k][1]), chan[ch]);
+                     sc[k], ma[k], sdl_num(n[0], c->scale[k][0]), sdl_num(n[1], c->offset[k][0]), tc[k],
+                     ma[k], sdl_num(n[2], c->scale[k][1]), sdl_num(n[3], c->offset[k][1]), chan[ch]);
         char decl[2400];
         snprintf(decl, sizeof decl,
                  "#declare rgl_cube%uc%d=function(x,y,z){select(min(abs(x)-abs(y),abs(x)-abs(z)),"
@@ -71,32 +62,19 @@ int povcube_declare(outbuf *ob, povtex *pt, const scene *s, int32_t t, unsigned 
     return 0;
 }
 
-/* Appends to buf (at *len), failing once full. */
-static bool put(char *buf, size_t cap, size_t *len, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    int n = vsnprintf(buf + *len, cap - *len, fmt, ap);
-    va_end(ap);
-    if (n < 0 || (size_t)n >= cap - *len)
-        return false;
-    *len += (size_t)n;
-    return true;
-}
-
 int povcube_pigment(const povcube *c, const double map[6], char *buf, size_t cap)
 {
     char f[3][NUMFMT_F32_ROOM + 3];
     char r[160];
-    snprintf(r, sizeof r, "%s*x+%s*y+%s", num(f[0], map[0]), num(f[1], map[1]), num(f[2], map[2]));
+    snprintf(r, sizeof r, "%s*x+%s*y+%s", sdl_num(f[0], map[0]), sdl_num(f[1], map[1]), sdl_num(f[2], map[2]));
     static const char *const prim[3] = {"<3,0,0>", "<0,3,0>", "<0,0,3>"};
     size_t len = 0;
-    if (!put(buf, cap, &len, "uv_mapping average pigment_map{"))
+    if (!sdl_put(buf, cap, &len, "uv_mapping average pigment_map{"))
         return -1;
     for (int ch = 0; ch < 3; ch++)
-        if (!put(buf, cap, &len,
+        if (!sdl_put(buf, cap, &len,
                  "[1 function{min(1,max(0,rgl_cube%uc%d(x,y,%s)))*0.5}colour_map{[0 rgb 0][0.5 rgb %s]}]",
                  c->id, ch, r, prim[ch]))
             return -1;
-    return put(buf, cap, &len, "}") ? 0 : -1;
+    return sdl_put(buf, cap, &len, "}") ? 0 : -1;
 }

@@ -19,11 +19,11 @@
 
 #include <GL/gl.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "numfmt.h"
+#include "sdltext.h"
 
 /* Triangles share a plane map when their coefficients agree this closely. */
 #define MAP_EPS 1e-4
@@ -147,29 +147,6 @@ size_t povmip_split(const scene_camera *cam, const mat4 *to_eye, const scene_ver
     return 1;
 }
 
-/* Appends to buf (at *len), failing once full. */
-static bool put(char *buf, size_t cap, size_t *len, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    int n = vsnprintf(buf + *len, cap - *len, fmt, ap);
-    va_end(ap);
-    if (n < 0 || (size_t)n >= cap - *len)
-        return false;
-    *len += (size_t)n;
-    return true;
-}
-
-/* A number as SDL, parenthesised (it may be negative). */
-static const char *num(char out[NUMFMT_F32_ROOM + 3], double v)
-{
-    out[0] = '(';
-    size_t n = numfmt_f32(out + 1, isfinite(v) ? (float)v : 0.0f);
-    out[1 + n] = ')';
-    out[2 + n] = '\0';
-    return out;
-}
-
 #define MIP_LEVELS 15
 
 int povmip_pigment(outbuf *ob, povtex *pt, const scene *s, int32_t t, const povmip_run *r,
@@ -200,9 +177,9 @@ int povmip_pigment(outbuf *ob, povtex *pt, const scene *s, int32_t t, const povm
                  "#declare rgl_mip%ua=function(x,y){%s*x+%s*y+%s}\n"
                  "#declare rgl_mip%ub=function(x,y){%s*x+%s*y+%s}\n"
                  "#declare rgl_mip%uc=function(x,y){%s*x+%s*y+%s}\n",
-                 id, num(f[0], r->a[0]), num(f[1], r->a[1]), num(f[2], r->a[2]), id,
-                 num(f[3], r->b[0]), num(f[4], r->b[1]), num(f[5], r->b[2]), id,
-                 num(f[6], r->c[0]), num(f[7], r->c[1]), num(f[8], r->c[2]));
+                 id, sdl_num(f[0], r->a[0]), sdl_num(f[1], r->a[1]), sdl_num(f[2], r->a[2]), id,
+                 sdl_num(f[3], r->b[0]), sdl_num(f[4], r->b[1]), sdl_num(f[5], r->b[2]), id,
+                 sdl_num(f[6], r->c[0]), sdl_num(f[7], r->c[1]), sdl_num(f[8], r->c[2]));
         outbuf_puts(ob, tmp);
         /* d(image)/du, dv in pixels: W (a_u C - A c_u) / C^2, ... */
         const char *name[4] = {"xu", "xv", "yu", "yv"};
@@ -213,13 +190,13 @@ int povmip_pigment(outbuf *ob, povtex *pt, const scene *s, int32_t t, const povm
             snprintf(tmp, sizeof tmp,
                      "#declare rgl_mip%u%s=function(x,y){%s*(%s*rgl_mip%uc(x,y)-rgl_mip%u%s(x,y)*%s)"
                      "/max(1e-12,pow(rgl_mip%uc(x,y),2))}\n",
-                     id, name[k], num(f[0], k < 2 ? W : H), num(f[1], co[k][d]), id, id, fn[k],
-                     num(f[2], r->c[d]), id);
+                     id, name[k], sdl_num(f[0], k < 2 ? W : H), sdl_num(f[1], co[k][d]), id, id, fn[k],
+                     sdl_num(f[2], r->c[d]), id);
             outbuf_puts(ob, tmp);
         }
         char tws[NUMFMT_F32_ROOM + 3], ths[NUMFMT_F32_ROOM + 3];
-        num(tws, base->width);
-        num(ths, base->height);
+        sdl_num(tws, base->width);
+        sdl_num(ths, base->height);
         snprintf(tmp, sizeof tmp,
                  "#declare rgl_mip%ul=function(x,y){ln(max(1e-9,max(sqrt(pow(rgl_mip%uyv(x,y)*%s,2)+"
                  "pow(rgl_mip%uyu(x,y)*%s,2)),sqrt(pow(rgl_mip%uxv(x,y)*%s,2)+pow(rgl_mip%uxu(x,y)*%s,2)))"
@@ -227,15 +204,15 @@ int povmip_pigment(outbuf *ob, povtex *pt, const scene *s, int32_t t, const povm
                  "/0.6931471805599453}\n",
                  id, id, tws, id, ths, id, tws, id, ths, id, id, id, id);
         outbuf_puts(ob, tmp);
-        snprintf(lam, sizeof lam, "function{(min(%s,max(%s,rgl_mip%ul(x,y)))-%s)/%s}", num(f[0], hi),
-                 num(f[1], lo), id, num(f[2], lo), num(f[3], n > 1 ? n - 1 : 1));
+        snprintf(lam, sizeof lam, "function{(min(%s,max(%s,rgl_mip%ul(x,y)))-%s)/%s}", sdl_num(f[0], hi),
+                 sdl_num(f[1], lo), id, sdl_num(f[2], lo), sdl_num(f[3], n > 1 ? n - 1 : 1));
     } else {
         double l = fmin(hi, fmax(lo, r->lambda));
-        snprintf(lam, sizeof lam, "function{%s}", num(f[0], (l - lo) / (n > 1 ? n - 1 : 1)));
+        snprintf(lam, sizeof lam, "function{%s}", sdl_num(f[0], (l - lo) / (n > 1 ? n - 1 : 1)));
     }
     (void)lam;
     size_t len = 0;
-    if (!put(buf, cap, &len, "uv_mapping %s pigment_map{", lam))
+    if (!sdl_put(buf, cap, &len, "uv_mapping %s pigment_map{", lam))
         return -1;
     bool nearest_levels = base->mip_filter == GL_NEAREST_MIPMAP_NEAREST ||
                           base->mip_filter == GL_LINEAR_MIPMAP_NEAREST;
@@ -253,8 +230,8 @@ int povmip_pigment(outbuf *ob, povtex *pt, const scene *s, int32_t t, const povm
             return -1;
         const char *body = strncmp(im, "uv_mapping ", 11) == 0 ? im + 11 : im;
         char xf[200];
-        snprintf(xf, sizeof xf, "translate<%s,%s,0>scale<%s,%s,1>", num(f[0], -off[0]),
-                 num(f[1], -off[1]), num(f[2], 1.0 / sc[0]), num(f[3], 1.0 / sc[1]));
+        snprintf(xf, sizeof xf, "translate<%s,%s,0>scale<%s,%s,1>", sdl_num(f[0], -off[0]),
+                 sdl_num(f[1], -off[1]), sdl_num(f[2], 1.0 / sc[0]), sdl_num(f[3], 1.0 / sc[1]));
         /* GL_*_MIPMAP_NEAREST: level k for lambda in (k - 1/2, k + 1/2]. */
         double at[2] = {k, k};
         if (nearest_levels) {
@@ -263,9 +240,9 @@ int povmip_pigment(outbuf *ob, povtex *pt, const scene *s, int32_t t, const povm
         }
         for (int e = 0; e < (nearest_levels ? 2 : 1); e++) {
             double x = at[e] / span;
-            if (!put(buf, cap, &len, "[%s %s %s]", num(f[4], x > 1 ? 1 : x), body, xf))
+            if (!sdl_put(buf, cap, &len, "[%s %s %s]", sdl_num(f[4], x > 1 ? 1 : x), body, xf))
                 return -1;
         }
     }
-    return put(buf, cap, &len, "}") ? 0 : -1;
+    return sdl_put(buf, cap, &len, "}") ? 0 : -1;
 }

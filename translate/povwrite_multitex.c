@@ -15,11 +15,11 @@
 
 #include <GL/gl.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "numfmt.h"
+#include "sdltext.h"
 
 /* Runs share a map when their coefficients agree this closely. */
 #define MAP_EPS 1e-4
@@ -85,30 +85,6 @@ bool povmt_texel(const scene_texture *t0, const scene_texture *t1)
     return !(t0->env_mode == GL_MODULATE && !t0->colour_is_texel && t1->env_mode == GL_MODULATE);
 }
 
-/* Appends to buf (at *len), failing once full. */
-static bool put(char *buf, size_t cap, size_t *len, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    int n = vsnprintf(buf + *len, cap - *len, fmt, ap);
-    va_end(ap);
-    if (n < 0 || (size_t)n >= cap - *len)
-        return false;
-    *len += (size_t)n;
-    return true;
-}
-
-/* A number as SDL text, in parentheses (a negative one follows an
- * operator). */
-static const char *num(char out[NUMFMT_F32_ROOM + 3], double v)
-{
-    out[0] = '(';
-    size_t n = numfmt_f32(out + 1, (float)v);
-    out[1 + n] = ')';
-    out[2 + n] = '\0';
-    return out;
-}
-
 /* The `image_map{...}` of image i: its pigment text past `uv_mapping `. */
 static bool image_map(const povtex *pt, size_t i, bool linear, char out[POVTEX_PIGMENT_MAX])
 {
@@ -138,7 +114,7 @@ static void env_channel(char *out, size_t cap, const scene_texture *t, int k, co
         snprintf(out, cap, "(%s*%s.transmit+%s.%s*(1-%s.transmit))", e0, at, at, ch, at);
         break;
     case GL_BLEND:
-        snprintf(out, cap, "(%s*(1-%s.%s)+%s*%s.%s)", e0, at, ch, num(g, t->env_color[k]), at,
+        snprintf(out, cap, "(%s*(1-%s.%s)+%s*%s.%s)", e0, at, ch, sdl_num(g, t->env_color[k]), at,
                  ch);
         break;
     case GL_REPLACE: /* of an alpha texture: the colour goes on */
@@ -178,15 +154,15 @@ int povmt_pigment(outbuf *ob, const povtex *pt, size_t img0, size_t img1,
     }
     char n[6][NUMFMT_F32_ROOM + 3];
     char at1[256];
-    snprintf(at1, sizeof at1, "rgl_mt%ub(%s*x+%s*y+%s,%s*x+%s*y+%s,0)", id, num(n[0], c[0]),
-             num(n[1], c[1]), num(n[2], c[2]), num(n[3], c[3]), num(n[4], c[4]),
-             num(n[5], c[5]));
+    snprintf(at1, sizeof at1, "rgl_mt%ub(%s*x+%s*y+%s,%s*x+%s*y+%s,0)", id, sdl_num(n[0], c[0]),
+             sdl_num(n[1], c[1]), sdl_num(n[2], c[2]), sdl_num(n[3], c[3]), sdl_num(n[4], c[4]),
+             sdl_num(n[5], c[5]));
     char at0[64];
     snprintf(at0, sizeof at0, "rgl_mt%ua(x,y,z)", id);
 
     bool texel = povmt_texel(t0, t1);
     size_t len = 0;
-    if (!put(buf, cap, &len, "uv_mapping average pigment_map{"))
+    if (!sdl_put(buf, cap, &len, "uv_mapping average pigment_map{"))
         return -1;
     for (int k = 0; k < 3; k++) {
         const char *ch = chan[k];
@@ -195,18 +171,18 @@ int povmt_pigment(outbuf *ob, const povtex *pt, size_t img0, size_t img1,
         if (!texel || t0->colour_is_texel)
             snprintf(e0, sizeof e0, "%s.%s", at0, ch);
         else if (t0->env_mode == GL_DECAL) /* RGBA: by the texel's alpha (1 - transmit) */
-            snprintf(e0, sizeof e0, "(%s*%s.transmit+%s.%s*(1-%s.transmit))", num(f, cf[k]), at0,
+            snprintf(e0, sizeof e0, "(%s*%s.transmit+%s.%s*(1-%s.transmit))", sdl_num(f, cf[k]), at0,
                      at0, ch, at0);
         else if (t0->env_mode == GL_REPLACE) /* of an alpha texture: the colour */
-            snprintf(e0, sizeof e0, "%s", num(f, cf[k]));
+            snprintf(e0, sizeof e0, "%s", sdl_num(f, cf[k]));
         else
-            snprintf(e0, sizeof e0, "(%s*%s.%s)", num(f, cf[k]), at0, ch);
+            snprintf(e0, sizeof e0, "(%s*%s.%s)", sdl_num(f, cf[k]), at0, ch);
         env_channel(e1, sizeof e1, t1, k, e0, at1);
-        if (!put(buf, cap, &len, "[1 function{min(1,max(0,%s))*0.5}colour_map{[0 rgb 0][0.5 rgb %s]}]",
+        if (!sdl_put(buf, cap, &len, "[1 function{min(1,max(0,%s))*0.5}colour_map{[0 rgb 0][0.5 rgb %s]}]",
                  e1, prim[k]))
             return -1;
     }
-    return put(buf, cap, &len, "}") ? 0 : -1;
+    return sdl_put(buf, cap, &len, "}") ? 0 : -1;
 }
 
 int povmt_env_texture(outbuf *ob, const scene_texture *t, unsigned id, const float cf[4])
@@ -214,17 +190,17 @@ int povmt_env_texture(outbuf *ob, const scene_texture *t, unsigned id, const flo
     char at[64], buf[POVMT_PIGMENT_MAX];
     snprintf(at, sizeof at, "rgl_mt%ua(x,y,z)", id);
     size_t len = 0;
-    if (!put(buf, sizeof buf, &len, "texture{pigment{uv_mapping average pigment_map{"))
+    if (!sdl_put(buf, sizeof buf, &len, "texture{pigment{uv_mapping average pigment_map{"))
         return -1;
     for (int k = 0; k < 3; k++) {
         char e0[NUMFMT_F32_ROOM + 3], e1[1400];
-        env_channel(e1, sizeof e1, t, k, num(e0, cf[k]), at);
-        if (!put(buf, sizeof buf, &len,
+        env_channel(e1, sizeof e1, t, k, sdl_num(e0, cf[k]), at);
+        if (!sdl_put(buf, sizeof buf, &len,
                  "[1 function{min(1,max(0,%s))*0.5}colour_map{[0 rgb 0][0.5 rgb %s]}]", e1,
                  prim[k]))
             return -1;
     }
-    if (!put(buf, sizeof buf, &len, "}}}"))
+    if (!sdl_put(buf, sizeof buf, &len, "}}}"))
         return -1;
     outbuf_puts(ob, buf);
     return 0;
@@ -235,14 +211,14 @@ int povmt_env_texture(outbuf *ob, const scene_texture *t, unsigned id, const flo
 static int channels(char *buf, size_t cap, char e[3][600])
 {
     size_t len = 0;
-    if (!put(buf, cap, &len, "uv_mapping average pigment_map{"))
+    if (!sdl_put(buf, cap, &len, "uv_mapping average pigment_map{"))
         return -1;
     for (int k = 0; k < 3; k++)
-        if (!put(buf, cap, &len,
+        if (!sdl_put(buf, cap, &len,
                  "[1 function{min(1,max(0,%s))*0.5}colour_map{[0 rgb 0][0.5 rgb %s]}]", e[k],
                  prim[k]))
             return -1;
-    return put(buf, cap, &len, "}") ? 0 : -1;
+    return sdl_put(buf, cap, &len, "}") ? 0 : -1;
 }
 
 int povmt_env_lit(const scene_texture *t, unsigned id, const float tint[3], char *lit, size_t lcap,
@@ -252,8 +228,8 @@ int povmt_env_lit(const scene_texture *t, unsigned id, const float tint[3], char
     snprintf(at, sizeof at, "rgl_mt%ua(x,y,z)", id);
     for (int k = 0; k < 3; k++) {
         if (t->env_mode == GL_BLEND) { /* Cf (1 - Ct) + Cc Ct */
-            snprintf(a[k], sizeof a[k], "(1-%s.%s)*%s", at, chan[k], num(f[0], tint ? tint[k] : 1));
-            snprintf(b[k], sizeof b[k], "%s*%s.%s", num(f[1], t->env_color[k]), at, chan[k]);
+            snprintf(a[k], sizeof a[k], "(1-%s.%s)*%s", at, chan[k], sdl_num(f[0], tint ? tint[k] : 1));
+            snprintf(b[k], sizeof b[k], "%s*%s.%s", sdl_num(f[1], t->env_color[k]), at, chan[k]);
         } else { /* GL_ADD: Cf + Ct */
             snprintf(b[k], sizeof b[k], "%s.%s", at, chan[k]);
         }
@@ -271,7 +247,7 @@ int povmt_tinted(const scene_texture *t, unsigned id, const float tint[3], char 
     char at[64], e[3][600], f[NUMFMT_F32_ROOM + 3];
     snprintf(at, sizeof at, "rgl_mt%ua(x,y,z)", id);
     for (int k = 0; k < 3; k++)
-        snprintf(e[k], sizeof e[k], "%s.%s*%s", at, chan[k], num(f, tint[k]));
+        snprintf(e[k], sizeof e[k], "%s.%s*%s", at, chan[k], sdl_num(f, tint[k]));
     return channels(buf, cap, e);
 }
 
