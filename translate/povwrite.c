@@ -510,8 +510,10 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     /* Textured: the image and how the coordinates map into it. */
     int img = -1;
     float uv_scale[2] = {1, 1}, uv_off[2] = {0, 0};
+    /* The run's texture-coordinate range: where the image map goes, and the
+     * range the alpha-test and mipmap pigments below cover. */
+    float uvlo[2] = {INFINITY, INFINITY}, uvhi[2] = {-INFINITY, -INFINITY};
     if (tx) {
-        float uvlo[2] = {INFINITY, INFINITY}, uvhi[2] = {-INFINITY, -INFINITY};
         for (size_t i = 0; i < nt; i++)
             for (int k = 0; k < 3; k++) {
                 const float *uv = verts[tris[i].v[k]].tex;
@@ -537,16 +539,6 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     if (tx && !tx1 && !w->cube && !w->mip && !w->per_entry && scene_alpha_crisp(tx) &&
         tx->env_mode != GL_BLEND && tx->env_mode != GL_ADD) {
         /* The alpha test on the filtered alpha, as GL's per fragment. */
-        float uvlo[2] = {INFINITY, INFINITY}, uvhi[2] = {-INFINITY, -INFINITY};
-        for (size_t i = 0; i < nt; i++)
-            for (int k = 0; k < 3; k++)
-                for (int a = 0; a < 2; a++) {
-                    float u = verts[tris[i].v[k]].tex[a];
-                    if (isfinite(u)) {
-                        uvlo[a] = u < uvlo[a] ? u : uvlo[a];
-                        uvhi[a] = u > uvhi[a] ? u : uvhi[a];
-                    }
-                }
         if (povtex_alpha_pigment(ob, &w->tex, sc, look->texture, (size_t)img, uvlo, uvhi,
                                  w->mt_count++, pigment, sizeof pigment) != 0)
             return -1;
@@ -560,16 +552,6 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     }
     if (tx && !tx1 && w->mip) {
         /* Mipmapped: the levels by GL's level of detail, at the mesh's own uv. */
-        float uvlo[2] = {INFINITY, INFINITY}, uvhi[2] = {-INFINITY, -INFINITY};
-        for (size_t i = 0; i < nt; i++)
-            for (int k = 0; k < 3; k++)
-                for (int a = 0; a < 2; a++) {
-                    float u = verts[tris[i].v[k]].tex[a];
-                    if (isfinite(u)) {
-                        uvlo[a] = u < uvlo[a] ? u : uvlo[a];
-                        uvhi[a] = u > uvhi[a] ? u : uvhi[a];
-                    }
-                }
         bool keep_alpha = (tx->env_mode == GL_DECAL && !tx->colour_is_texel) ||
                           look->blend == SCENE_BLEND_ALPHA;
         if (povmip_pigment(ob, &w->tex, sc, look->texture, w->mip, w->mt_count++, uvlo, uvhi,
