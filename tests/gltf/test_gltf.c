@@ -1,4 +1,4 @@
-/* test_gltf.c: the glTF writer (translate/gltfwrite.c) on scenes built by
+/* test_gltf.c: the glTF writer (translate/gltf/gltfwrite.c) on scenes built by
  * hand: the GLB container, accessor bounds, one mesh placed by many nodes
  * for a display-list prototype, the material mapping, the camera against
  * the GL projection, lights, determinism, hostile names and allocation

@@ -4,7 +4,7 @@
  * side leaves the top quad dark and GL_LIGHT1 behind the scene lights the
  * bottom one. POV-Ray turns every shading normal toward the viewer and
  * would do the opposite: the translator draws back faces with GL's own
- * per-vertex colours (translate/interp_relit.c, docs/mapping.md "Faces
+ * per-vertex colours (translate/gl/interp_relit.c, docs/mapping.md "Faces
  * lit and fogged as GL does them").
  */
 #include "lights_conform.h"

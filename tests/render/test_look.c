@@ -1,4 +1,4 @@
-/* test_look.c: the camera, light and size overrides (translate/look.c).
+/* test_look.c: the camera, light and size overrides (translate/cli/look.c).
  *
  * The animated trace's frames use gluLookAt(0,3,7 -> 0,0,0) and
  * gluPerspective(45): overriding the camera with those same values in world

@@ -1,4 +1,4 @@
-/* test_nurbs.c: GLU NURBS in the translator (translate/interp_nurbs.c).
+/* test_nurbs.c: GLU NURBS in the translator (translate/gl/interp_nurbs.c).
  *
  * The evaluation against values worked out by hand (the classic hill's
  * top, a uniform B-spline at a knot, a rational quarter circle) and against

@@ -1,4 +1,4 @@
-/* test_pstipple.c: polygon stipple (translate/interp_pstipple.c,
+/* test_pstipple.c: polygon stipple (translate/gl/interp_pstipple.c,
  * povwrite_pstipple.c).
  *
  * A filled draw with GL_POLYGON_STIPPLE on carries the mask and the

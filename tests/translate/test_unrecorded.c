@@ -1,4 +1,4 @@
-/* test_unrecorded.c: the tables of calls not recorded (translate/unrecorded.h)
+/* test_unrecorded.c: the tables of calls not recorded (translate/gl/unrecorded.h)
  * against hostile input: long names, bytes outside the name alphabet, more
  * names than the bound, counts that overflow; the report's order and text. */
 #include <stdint.h>
