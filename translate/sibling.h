@@ -17,4 +17,10 @@
  * is none or the path does not fit. */
 char *sibling_path(const char *name, char *buf, size_t cap);
 
+/* Likewise for a data file NAME installed with the programs (the Blender
+ * import script): PREFIX/share/raygl/NAME beside PREFIX/bin, else NAME
+ * beside this program (the build tree copies it there). Returns buf, or
+ * NULL when there is none (a readable regular file) or it does not fit. */
+char *sibling_data(const char *name, char *buf, size_t cap);
+
 #endif

@@ -77,8 +77,8 @@ static void print_help(void)
 /* The options that only a POV-Ray scene can use, or NULL. */
 static const char *pov_only_option(const options *o)
 {
-    if (render_wanted(&o->render))
-        return "--render (and --video, --slurm, --sshloginfile)";
+    if (render_wanted(&o->render) && o->render.engine == RENDER_ENGINE_POVRAY)
+        return "--engine povray";
     if (o->look.nincludes)
         return "--include";
     if (o->look.antialias)
@@ -127,6 +127,10 @@ static void parse_args(int argc, char **argv, options *o)
     }
     if (render_wanted(&o->render) && !o->outdir)
         usage_error("rendering needs an output folder (-o DIR)");
+    /* Each format has its engine: .glb frames render with Blender. */
+    if (!o->gltf && o->render.engine == RENDER_ENGINE_BLENDER)
+        usage_error("--engine blender renders glTF frames: add --format gltf");
+    o->render.engine = o->gltf ? RENDER_ENGINE_BLENDER : RENDER_ENGINE_POVRAY;
     if (o->render.video && !o->render.render && !o->render.sshloginfile)
         o->render.render = true; /* a video needs the PNGs */
     if (render_wanted(&o->render) && render_check_tools(&o->render, PROG) != 0)

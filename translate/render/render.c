@@ -1,4 +1,7 @@
-/* render.c: POV-Ray over the frames, here, on Slurm or over SSH (render.h). */
+/* render.c: POV-Ray or Blender over the frames, here, on Slurm or over SSH
+ * (render.h). The engines differ in the scene file a frame is (STEM.ini or
+ * STEM.glb), the command that renders it (start_frame) and the line of
+ * its log that explains a failure (log_error); all else is shared. */
 #include "render.h"
 
 #include <errno.h>
@@ -91,6 +94,27 @@ static char *find_program(const char *name)
     return NULL;
 }
 
+static bool is_blender(const render_settings *r) { return r->engine == RENDER_ENGINE_BLENDER; }
+
+/* The file of a frame an engine renders: STEM.ini or STEM.glb. */
+static const char *frame_ext(const render_settings *r) { return is_blender(r) ? ".glb" : ".ini"; }
+
+static const char *engine_program(const render_settings *r)
+{
+    if (is_blender(r))
+        return r->blender ? r->blender : "blender";
+    return r->povray ? r->povray : "povray";
+}
+
+#define BLENDER_SCRIPT "raygl-blender.py"
+
+/* The installed import script (sibling.h), or NULL. */
+static char *blender_script(void)
+{
+    char buf[PATH_MAX];
+    return sibling_data(BLENDER_SCRIPT, buf, sizeof buf) ? aprintf("%s", buf) : NULL;
+}
+
 /* 'text' for sh, with ' as '\''. */
 static char *sh_quote(const char *s)
 {
@@ -170,15 +194,17 @@ static void scan_includes(const char *dir)
     closedir(d);
 }
 
-/* STEM.png exists and is newer than STEM.pov, STEM.ini and the includes. */
-static bool up_to_date(const char *stem)
+/* STEM.png exists and is newer than STEM.pov, STEM.ini and the includes
+ * (with Blender: than STEM.glb). */
+static bool up_to_date(const render_settings *r, const char *stem)
 {
     char *png = aprintf("%s.png", stem), *pov = aprintf("%s.pov", stem),
-         *ini = aprintf("%s.ini", stem);
+         *ini = aprintf("%s%s", stem, frame_ext(r));
     struct stat sp, sv, si;
-    bool ok = png && pov && ini && stat(png, &sp) == 0 && sp.st_size > 0 && stat(pov, &sv) == 0 &&
-              stat(ini, &si) == 0 && newer(&sp, &sv) && newer(&sp, &si) &&
-              !newer(&include_time, &sp);
+    bool ok = png && pov && ini && stat(png, &sp) == 0 && sp.st_size > 0 &&
+              stat(ini, &si) == 0 && newer(&sp, &si) &&
+              (is_blender(r) || (stat(pov, &sv) == 0 && newer(&sp, &sv) &&
+                                 !newer(&include_time, &sp)));
     tr_free(png);
     tr_free(pov);
     tr_free(ini);
@@ -205,9 +231,23 @@ bool render_wanted(const render_settings *r)
 
 int render_check_tools(const render_settings *r, const char *prog)
 {
-    const char *pov = r->povray ? r->povray : "povray";
+    const char *pov = engine_program(r);
     char *p;
-    if (r->render || r->video || r->task >= 0) {
+    if ((r->render || r->video || r->task >= 0) && is_blender(r)) {
+        if (!(p = find_program(pov))) {
+            say(prog, "%s: Blender not found%s (install Blender 3.4 or later with numpy, e.g. "
+                      "apt-get install blender python3-numpy, or give --blender PATH)", pov,
+                strchr(pov, '/') ? "" : " in PATH");
+            return 1;
+        }
+        tr_free(p);
+        if (!(p = blender_script())) {
+            say(prog, BLENDER_SCRIPT ": Blender's import script is not installed beside this "
+                      "program (share/raygl/" BLENDER_SCRIPT ")");
+            return 1;
+        }
+        tr_free(p);
+    } else if (r->render || r->video || r->task >= 0) {
         if (!(p = find_program(pov))) {
             say(prog, "%s: POV-Ray not found%s (install POV-Ray 3.7, e.g. apt-get install povray, "
                       "or give --povray PATH)", pov, strchr(pov, '/') ? "" : " in PATH");
@@ -378,12 +418,14 @@ static bool transient_failure(int st, const char *log)
     return found;
 }
 
-/* Starts povray for stem in r, dropping the names of an earlier attempt;
- * 0, or -1 (message printed) with r emptied. The partial files and the
- * child are registered for a stop (cleanup.h) before they exist. */
-static int start_frame(const char *prog, const char *povray, const char *stem, int threads,
+/* Starts the engine's program for stem in r, dropping the names of an
+ * earlier attempt; 0, or -1 (message printed) with r emptied. The partial
+ * files and the child are registered for a stop (cleanup.h) before they
+ * exist. */
+static int start_frame(const char *prog, const render_settings *rs, const char *stem, int threads,
                        running *r)
 {
+    const char *povray = engine_program(rs);
     cleanup_lock();
     forget(r);
     tr_free(r->tmp_png);
@@ -397,15 +439,19 @@ static int start_frame(const char *prog, const char *povray, const char *stem, i
         r->ids[1] = cleanup_file(r->tmp_log);
         r->ids[2] = cleanup_file(r->tmp_state);
     }
-    char *ini = aprintf("%s.ini", stem), *oarg = r->tmp_png ? aprintf("+O%s", r->tmp_png) : NULL,
-         *wt = aprintf("+WT%d", threads);
+    char *ini = aprintf("%s%s", stem, frame_ext(rs)),
+         *oarg = r->tmp_png ? aprintf(is_blender(rs) ? "%s" : "+O%s", r->tmp_png) : NULL,
+         *wt = aprintf(is_blender(rs) ? "%d" : "+WT%d", threads),
+         *script = is_blender(rs) ? blender_script() : aprintf("-");
+    char samples[24];
+    snprintf(samples, sizeof samples, "%d", rs->samples > 0 ? rs->samples : RENDER_BLENDER_SAMPLES);
     /* The stem's folder as a library path too: the .ini's own Library_Path
      * is relative to the folder raygl2pov ran in, this one to ours. */
     const char *slash = strrchr(stem, '/');
     char *larg = slash ? aprintf("+L%.*s", (int)(slash - stem), stem) : aprintf("+L.");
     int rc = -1;
-    if (ini && oarg && wt && larg && r->tmp_state && r->ids[0] >= 0 && r->ids[1] >= 0 &&
-        r->ids[2] >= 0) {
+    if (ini && oarg && wt && larg && script && r->tmp_state && r->ids[0] >= 0 &&
+        r->ids[1] >= 0 && r->ids[2] >= 0) {
         posix_spawn_file_actions_t fa;
         posix_spawn_file_actions_init(&fa);
         posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
@@ -415,7 +461,12 @@ static int start_frame(const char *prog, const char *povray, const char *stem, i
         posix_spawnattr_t at;
         posix_spawnattr_init(&at);
         cleanup_spawnattr(&at);
-        char *argv[] = {(char *)povray, ini, larg, wt, oarg, "-D", NULL};
+        char *pargv[] = {(char *)povray, ini, larg, wt, oarg, "-D", NULL};
+        /* Blender's own options first, the script's after "--". */
+        char *bargv[] = {(char *)povray, "-b", "-noaudio", "--factory-startup",
+                         "--python-exit-code", "1", "-P", script, "--", "--input", ini,
+                         "--output", oarg, "--samples", samples, "--threads", wt, NULL};
+        char **argv = is_blender(rs) ? bargv : pargv;
         int e = posix_spawnp(&r->pid, povray, &fa, &at, argv, environ);
         posix_spawnattr_destroy(&at);
         posix_spawn_file_actions_destroy(&fa);
@@ -425,9 +476,12 @@ static int start_frame(const char *prog, const char *povray, const char *stem, i
         } else {
             say(prog, "%s: cannot run %s: %s", ini, povray, strerror(e));
         }
+    } else if (ini && oarg && wt && larg && !script) {
+        say(prog, "%s: " BLENDER_SCRIPT " is not installed beside this program", ini);
     } else if (ini && oarg && wt && larg) {
         say(prog, "out of memory");
     }
+    tr_free(script);
     tr_free(ini);
     tr_free(oarg);
     tr_free(wt);
@@ -444,12 +498,36 @@ static int start_frame(const char *prog, const char *povray, const char *stem, i
     return rc;
 }
 
-/* POV-Ray's own error: the first line of the log that says "Error" with
- * its continuation lines (they start with a blank), else the log's last
- * non-empty line. */
-static void log_error(const char *log, char *out, size_t cap)
+/* The import script's own one-line error ("raygl-blender: FILE: why"),
+ * without the prefix, when the log holds one. */
+static bool script_error(const char *log, char *out, size_t cap)
 {
-    snprintf(out, cap, "no message from POV-Ray");
+    FILE *f = fopen(log, "r");
+    if (!f)
+        return false;
+    char line[1024];
+    bool found = false;
+    while (!found && fgets(line, sizeof line, f)) {
+        line[strcspn(line, "\r\n")] = '\0';
+        if (strncmp(line, "raygl-blender: ", 15) == 0) {
+            /* The frame is named by the caller's message already. */
+            const char *why = strstr(line + 15, ": ");
+            snprintf(out, cap, "%s", why ? why + 2 : line + 15);
+            found = true;
+        }
+    }
+    fclose(f);
+    return found;
+}
+
+/* The engine's own error: the import script's line; else the first line
+ * of the log that says "Error" with its continuation lines (they start
+ * with a blank), else the log's last non-empty line. */
+static void log_error(const render_settings *rs, const char *log, char *out, size_t cap)
+{
+    snprintf(out, cap, "no message from %s", is_blender(rs) ? "Blender" : "POV-Ray");
+    if (is_blender(rs) && script_error(log, out, cap))
+        return;
     FILE *f = fopen(log, "r");
     if (!f)
         return;
@@ -476,8 +554,10 @@ static void log_error(const char *log, char *out, size_t cap)
 
 /* After povray ended with status st: the PNG into place, or the failure
  * reported with the log kept as STEM.log. Returns true on success. */
-static bool finish_frame(const char *prog, const char *stem, int st, running *r)
+static bool finish_frame(const char *prog, const render_settings *rs, const char *stem, int st,
+                         running *r)
 {
+    const char *ext = frame_ext(rs), *tool = is_blender(rs) ? "blender" : "povray";
     char *png = aprintf("%s.png", stem), *log = aprintf("%s.log", stem);
     struct stat sb;
     bool ok = WIFEXITED(st) && WEXITSTATUS(st) == 0 && r->tmp_png && stat(r->tmp_png, &sb) == 0 &&
@@ -489,7 +569,7 @@ static bool finish_frame(const char *prog, const char *stem, int st, running *r)
         unlink(log); /* an earlier failure's */
     } else if (!ok) {
         char msg[1024], why[64];
-        log_error(r->tmp_log, msg, sizeof msg);
+        log_error(rs, r->tmp_log, msg, sizeof msg);
         if (WIFEXITED(st))
             snprintf(why, sizeof why, "exit status %d", WEXITSTATUS(st));
         else if (WIFSIGNALED(st))
@@ -501,12 +581,12 @@ static bool finish_frame(const char *prog, const char *stem, int st, running *r)
         if (WIFSIGNALED(st) && (WTERMSIG(st) == SIGINT || WTERMSIG(st) == SIGTERM ||
                                 WTERMSIG(st) == SIGHUP)) {
             /* Stopped, as by Ctrl-C to the group: no failure log to keep. */
-            say(prog, "%s.ini: povray stopped (signal %d)", stem, WTERMSIG(st));
+            say(prog, "%s%s: %s stopped (signal %d)", stem, ext, tool, WTERMSIG(st));
             goto clean;
         }
         bool kept = log && rename(r->tmp_log, log) == 0;
-        say(prog, "%s.ini: povray failed (%s): %s%s%s%s", stem, why, msg, kept ? " (log: " : "",
-            kept ? log : "", kept ? ")" : "");
+        say(prog, "%s%s: %s failed (%s): %s%s%s%s", stem, ext, tool, why, msg,
+            kept ? " (log: " : "", kept ? log : "", kept ? ")" : "");
     }
 clean:
     if (r->tmp_png)
@@ -588,11 +668,11 @@ static void summary(const render_job *j, size_t rendered, double dt, const char 
 
 static int render_local(const render_job *j, size_t *nfailed)
 {
-    const char *povray = j->r->povray ? j->r->povray : "povray";
     int jobs = j->jobs > 0 ? j->jobs : cores();
     if (jobs > RENDER_MAX_JOBS)
         jobs = RENDER_MAX_JOBS;
-    /* POV-Ray threads itself: the cores are shared among the processes. */
+    /* POV-Ray and Cycles thread themselves: the cores are shared among the
+     * processes. */
     int threads = cores() / jobs > 0 ? cores() / jobs : 1;
     running *run = tr_realloc(NULL, (size_t)jobs * sizeof *run);
     if (!run) {
@@ -612,7 +692,7 @@ static int render_local(const render_job *j, size_t *nfailed)
     while (next < j->nstems || active > 0) {
         while (!stop && active < jobs && next < j->nstems) {
             size_t i = next++;
-            if (up_to_date(j->stems[i])) {
+            if (up_to_date(j->r, j->stems[i])) {
                 skipped++;
                 done++;
                 continue;
@@ -622,10 +702,10 @@ static int render_local(const render_job *j, size_t *nfailed)
                 slot++;
             run[slot].index = i;
             run[slot].retried = 0;
-            if (start_frame(j->prog, povray, j->stems[i], threads, &run[slot]) != 0) {
+            if (start_frame(j->prog, j->r, j->stems[i], threads, &run[slot]) != 0) {
                 failed++;
                 done++;
-                stop = true; /* povray cannot be started: the next would fail alike */
+                stop = true; /* the engine cannot be started: the next would fail alike */
                 continue;
             }
             active++;
@@ -646,16 +726,16 @@ static int render_local(const render_job *j, size_t *nfailed)
             if (run[s].pid != pid)
                 continue;
             reaped(&run[s]);
-            if (!run[s].retried && transient_failure(st, run[s].tmp_log)) {
+            if (!run[s].retried && !is_blender(j->r) && transient_failure(st, run[s].tmp_log)) {
                 run[s].retried = 1;
-                if (start_frame(j->prog, povray, j->stems[run[s].index], threads, &run[s]) == 0)
+                if (start_frame(j->prog, j->r, j->stems[run[s].index], threads, &run[s]) == 0)
                     break; /* still active */
                 active--;
                 done++;
                 failed++;
                 break;
             }
-            if (finish_frame(j->prog, j->stems[run[s].index], st, &run[s]))
+            if (finish_frame(j->prog, j->r, j->stems[run[s].index], st, &run[s]))
                 rendered++;
             else
                 failed++;
@@ -797,6 +877,25 @@ static int make_video(const render_job *j)
 
 /* ---- Slurm and GNU parallel -------------------------------------------------------------------- */
 
+/* The options a task needs to render as this run does, for sh: the
+ * engine, its program, the samples (each starting with a space). */
+static char *task_options(const render_settings *r)
+{
+    const char *prog = is_blender(r) ? r->blender : r->povray;
+    char *q = prog ? sh_quote(prog) : NULL;
+    char *out = NULL;
+    if (prog && !q)
+        return NULL;
+    if (is_blender(r))
+        out = aprintf(" --engine blender --samples %d%s%s",
+                      r->samples > 0 ? r->samples : RENDER_BLENDER_SAMPLES, q ? " --blender " : "",
+                      q ? q : "");
+    else
+        out = aprintf("%s%s", q ? " --povray " : "", q ? q : "");
+    tr_free(q);
+    return out;
+}
+
 static char *cwd_now(void)
 {
     char *c = getcwd(NULL, 0);
@@ -822,11 +921,11 @@ static int write_slurm(const render_job *j, char **script_out)
     /* Slurm's %A (job) and %a (task), spelt out of a format string. */
     static const char ids[] = {'%', 'A', '_', '%', 'a', '\0'};
     char *qlog = absdir ? aprintf("%s%sslurm-%s.log", absdir, sep, ids) : NULL;
-    char *qpov = j->r->povray ? sh_quote(j->r->povray) : NULL;
+    char *topt = task_options(j->r);
     int rc = -1;
     cleanup_lock();
     long id = tmp ? cleanup_file(tmp) : -1;
-    FILE *f = (id >= 0 && path && qcwd && qcmd && qdir && qlog) ? fopen(tmp, "w") : NULL;
+    FILE *f = (id >= 0 && path && qcwd && qcmd && qdir && qlog && topt) ? fopen(tmp, "w") : NULL;
     cleanup_unlock();
     if (f) {
         size_t last = j->nstems < SLURM_ARRAY_CHUNK ? j->nstems - 1 : SLURM_ARRAY_CHUNK - 1;
@@ -834,7 +933,7 @@ static int write_slurm(const render_job *j, char **script_out)
                 "#!/bin/sh\n"
                 "# Written by raygl2pov: renders the frames of render.list, one per task of a\n"
                 "# Slurm job array. The output folder must be on storage every node shares,\n"
-                "# at the same path, and raygl-render and povray installed on every node.\n"
+                "# at the same path, and raygl-render and %s installed on every node.\n"
                 "#   sbatch %s\n"
                 "# renders frames 0-%zu; for more than %d frames submit once per chunk:\n"
                 "#   sbatch --array=0-999 --export=ALL,RAYGL_OFFSET=1000 %s\n"
@@ -846,9 +945,9 @@ static int write_slurm(const render_job *j, char **script_out)
                 "#SBATCH --cpus-per-task=1\n"
                 "#SBATCH --output=%s\n"
                 "cd %s || exit 1\n"
-                "exec %s %s --task \"$((${RAYGL_OFFSET:-0} + SLURM_ARRAY_TASK_ID))\"%s%s\n",
-                path, last, SLURM_ARRAY_CHUNK, path, last, qlog, qcwd, qcmd, qdir,
-                qpov ? " --povray " : "", qpov ? qpov : "");
+                "exec %s %s --task \"$((${RAYGL_OFFSET:-0} + SLURM_ARRAY_TASK_ID))\"%s\n",
+                is_blender(j->r) ? "blender" : "povray", path, last, SLURM_ARRAY_CHUNK, path,
+                last, qlog, qcwd, qcmd, qdir, topt);
         rc = ferror(f) ? -1 : 0;
         if (fclose(f) != 0)
             rc = -1;
@@ -875,7 +974,7 @@ static int write_slurm(const render_job *j, char **script_out)
     tr_free(qdir);
     tr_free(absdir);
     tr_free(qlog);
-    tr_free(qpov);
+    tr_free(topt);
     return rc;
 }
 
@@ -903,10 +1002,8 @@ static int render_parallel(const render_job *j)
 {
     char *cwd = cwd_now(), *cmd = render_command();
     char *qcmd = cmd ? sh_quote(cmd) : NULL, *qdir = sh_quote(j->dir);
-    char *qpov = j->r->povray ? sh_quote(j->r->povray) : NULL;
-    char *line = (qcmd && qdir) ? aprintf("%s %s%s%s --task {}", qcmd, qdir,
-                                          qpov ? " --povray " : "", qpov ? qpov : "")
-                                : NULL;
+    char *topt = task_options(j->r);
+    char *line = (qcmd && qdir && topt) ? aprintf("%s %s%s --task {}", qcmd, qdir, topt) : NULL;
     char *last = aprintf("%zu", j->nstems - 1);
     int rc = 1;
     /* The summary counts PNGs up to date before and after, as the hosts'
@@ -914,7 +1011,7 @@ static int render_parallel(const render_job *j)
     scan_includes(j->dir);
     size_t before = 0;
     for (size_t i = 0; i < j->nstems; i++)
-        before += up_to_date(j->stems[i]);
+        before += up_to_date(j->r, j->stems[i]);
     double t0 = now();
     if (cwd && line && last) {
         char *argv[] = {"parallel", "--will-cite", "--halt", "never", "--sshloginfile",
@@ -937,7 +1034,7 @@ static int render_parallel(const render_job *j)
             rc = st == 0 ? 0 : 1;
             size_t after = 0;
             for (size_t i = 0; i < j->nstems; i++)
-                after += up_to_date(j->stems[i]);
+                after += up_to_date(j->r, j->stems[i]);
             size_t rendered = after > before ? after - before : 0;
             summary(j, rendered, now() - t0, "over SSH", before, j->nstems - after, 0);
         }
@@ -948,7 +1045,7 @@ static int render_parallel(const render_job *j)
     tr_free(cmd);
     tr_free(qcmd);
     tr_free(qdir);
-    tr_free(qpov);
+    tr_free(topt);
     tr_free(line);
     tr_free(last);
     return rc;
@@ -965,14 +1062,13 @@ int render_task(const render_settings *r, const char *prog, const char *dir, lon
         return 1;
     int rc = 0;
     scan_includes(dir);
-    if (!up_to_date(stem)) {
+    if (!up_to_date(r, stem)) {
         running run;
         memset(&run, 0, sizeof run);
         for (int k = 0; k < 4; k++)
             run.ids[k] = -1;
-        const char *povray = r->povray ? r->povray : "povray";
         for (int attempt = 0;; attempt++) {
-            if (start_frame(prog, povray, stem, 1, &run) != 0) {
+            if (start_frame(prog, r, stem, 1, &run) != 0) {
                 rc = 1;
                 break;
             }
@@ -980,9 +1076,9 @@ int render_task(const render_settings *r, const char *prog, const char *dir, lon
             while (waitpid(run.pid, &st, 0) < 0 && errno == EINTR)
                 ;
             reaped(&run);
-            if (attempt == 0 && transient_failure(st, run.tmp_log))
+            if (attempt == 0 && !is_blender(r) && transient_failure(st, run.tmp_log))
                 continue;
-            rc = finish_frame(prog, stem, st, &run) ? 0 : 1;
+            rc = finish_frame(prog, r, stem, st, &run) ? 0 : 1;
             break;
         }
         forget(&run);
@@ -1032,25 +1128,24 @@ static int cmp_str(const void *a, const void *b)
     return strcmp(*(char *const *)a, *(char *const *)b);
 }
 
-int render_scan_dir(const char *prog, const char *dir, char ***stems, size_t *n)
+/* The visible NAME.EXT of dir as stems DIR/NAME (unsorted); 0 or -1. */
+static int scan_ext(const char *prog, const char *dir, const char *ext, char ***stems, size_t *n)
 {
-    *stems = NULL;
-    *n = 0;
     DIR *d = opendir(dir);
     if (!d) {
         say(prog, "%s: cannot read the folder: %s", dir, strerror(errno));
         return -1;
     }
-    size_t cap = 0, dl = strlen(dir);
+    size_t cap = 0, dl = strlen(dir), el = strlen(ext);
     const char *sep = dl && dir[dl - 1] == '/' ? "" : "/";
     struct dirent *e;
     int rc = 0;
     while ((e = readdir(d))) {
         size_t l = strlen(e->d_name);
-        if (e->d_name[0] == '.' || l < 5 || strcmp(e->d_name + l - 4, ".ini") != 0)
+        if (e->d_name[0] == '.' || l <= el || strcmp(e->d_name + l - el, ext) != 0)
             continue;
         if (tr_grow((void **)stems, &cap, *n + 1, sizeof **stems) != 0 ||
-            !((*stems)[*n] = aprintf("%s%s%.*s", dir, sep, (int)(l - 4), e->d_name))) {
+            !((*stems)[*n] = aprintf("%s%s%.*s", dir, sep, (int)(l - el), e->d_name))) {
             say(prog, "out of memory");
             rc = -1;
             break;
@@ -1058,8 +1153,27 @@ int render_scan_dir(const char *prog, const char *dir, char ***stems, size_t *n)
         (*n)++;
     }
     closedir(d);
+    return rc;
+}
+
+int render_scan_dir(render_settings *r, const char *prog, const char *dir, char ***stems,
+                    size_t *n)
+{
+    *stems = NULL;
+    *n = 0;
+    int rc = scan_ext(prog, dir, frame_ext(r), stems, n);
+    if (rc == 0 && *n == 0 && r->engine == RENDER_ENGINE_AUTO) {
+        /* raygl2pov --format gltf's folder: Blender's frames. */
+        rc = scan_ext(prog, dir, ".glb", stems, n);
+        if (rc == 0 && *n > 0)
+            r->engine = RENDER_ENGINE_BLENDER;
+    }
     if (rc == 0 && *n == 0) {
-        say(prog, "%s: no .ini files: translate a trace into it with raygl2pov first", dir);
+        if (is_blender(r))
+            say(prog, "%s: no .glb files: translate a trace into it with raygl2pov --format gltf "
+                      "first", dir);
+        else
+            say(prog, "%s: no .ini files: translate a trace into it with raygl2pov first", dir);
         rc = -1;
     }
     if (rc != 0) {
@@ -1104,6 +1218,25 @@ bool opt_set_povray(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
     return o->render.povray != NULL;
 }
 
+bool opt_set_engine(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
+{
+    if (strcmp(v, "povray") == 0)
+        o->render.engine = RENDER_ENGINE_POVRAY;
+    else if (strcmp(v, "blender") == 0)
+        o->render.engine = RENDER_ENGINE_BLENDER;
+    else
+        return opt_fail(err, "%s '%s': expected povray or blender", ctx->option, v);
+    return true;
+}
+
+bool opt_set_blender(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
+{
+    if (!*v)
+        return opt_fail(err, "%s: empty program name", ctx->option);
+    o->render.blender = strchr(v, '/') ? opt_path(o, v, ctx, err) : opt_strdup(o, v, err);
+    return o->render.blender != NULL;
+}
+
 bool opt_set_video(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
 {
     if (!*v || v[strlen(v) - 1] == '/')
@@ -1137,6 +1270,16 @@ bool opt_set_fps(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
     if (!parse_long(v, 1, 1000, &n))
         return opt_fail(err, "%s '%s': expected frames per second from 1 to 1000", ctx->option, v);
     o->render.fps = (int)n;
+    return true;
+}
+
+bool opt_set_samples(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
+{
+    long n;
+    if (!parse_long(v, 1, 1L << 20, &n))
+        return opt_fail(err, "%s '%s': expected a number of samples from 1 to 1048576", ctx->option,
+                        v);
+    o->render.samples = (int)n;
     return true;
 }
 

@@ -1,7 +1,7 @@
 /* render_main.c: raygl-render, rendering a folder raygl2pov wrote.
  *
  *   raygl-render DIR [--frames LIST] [-j N] [--video FILE] [--slurm|--submit]
- *                [--sshloginfile F]
+ *                [--sshloginfile F] [--engine povray|blender] [--samples N]
  *   raygl-render DIR --task N      (one entry of DIR/render.list: a cluster task)
  *
  * The options are the rendering rows of raygl2pov's table (options.def);
@@ -77,7 +77,8 @@ int main(int argc, char **argv)
     if (o.help) {
         fputs("Usage: " PROG " DIR [OPTION]...\n"
               "Render the scenes raygl2pov wrote into DIR (every DIR/NAME.ini) with POV-Ray,\n"
-              "here, on a Slurm cluster or over SSH. Run it from the folder raygl2pov ran in.\n",
+              "or its glTF frames (every DIR/NAME.glb) with Blender, here, on a Slurm cluster\n"
+              "or over SSH. Run it from the folder raygl2pov ran in.\n",
               stdout);
         opt_print_help(stdout, true);
         fputs("\nExit status: 0 when every frame was rendered (or submitted), 1 when a frame\n"
@@ -106,10 +107,12 @@ int main(int argc, char **argv)
             o.render.render = true;
         char **stems;
         size_t n;
-        rc = render_check_tools(&o.render, PROG);
-        if (rc == 0 && render_scan_dir(PROG, dir, &stems, &n) != 0)
+        /* The folder first: it decides the engine when none is given. */
+        rc = render_scan_dir(&o.render, PROG, dir, &stems, &n) != 0 ? 1 : 0;
+        if (rc == 0 && render_check_tools(&o.render, PROG) != 0) {
+            render_free_stems(stems, n);
             rc = 1;
-        else if (rc == 0 && select_stems(&o, dir, stems, &n) != 0) {
+        } else if (rc == 0 && select_stems(&o, dir, stems, &n) != 0) {
             render_free_stems(stems, n);
             rc = 1;
         } else if (rc == 0) {

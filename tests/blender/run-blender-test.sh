@@ -1,0 +1,48 @@
+#!/bin/sh
+# run-blender-test.sh: one image test, GL frame against Blender's frame.
+#
+#   run-blender-test.sh NAME PROGRAM RAYGL2POV IMGCMP BLENDER OUTDIR SAMPLES
+#                       [IMGCMP-OPTIONS...]
+#
+# 1. PROGRAM --trace DIR/NAME.raygl --png DIR/gl.png  draws one frame with
+#    OSMesa, records it and writes the GL image (DIR = OUTDIR/NAME);
+# 2. in DIR: RAYGL2POV NAME.raygl -o glb --format gltf --render
+#    --samples SAMPLES  translates it and renders glb/frame-00000.glb with
+#    Blender through the render driver (raygl-render --engine blender);
+# 3. IMGCMP [IMGCMP-OPTIONS] --diff DIR/diff.png gl.png glb/frame-00000.png
+#    prints the figures and decides, and the time of step 2 is printed.
+#
+# Exit 0 on PASS, 1 on FAIL, 77 when BLENDER is absent ("none").
+set -u
+[ $# -ge 7 ] || { echo "usage: $0 NAME PROGRAM RAYGL2POV IMGCMP BLENDER OUTDIR SAMPLES [IMGCMP-OPTIONS...]" >&2; exit 2; }
+name=$1 prog=$2 r2p=$3 imgcmp=$4 blender=$5 outdir=$6 samples=$7
+shift 7
+if [ "$blender" = none ] || ! command -v "$blender" >/dev/null 2>&1; then
+    echo "SKIP: no blender (apt-get install blender python3-numpy)"
+    exit 77
+fi
+case $outdir in /*) ;; *) outdir=$PWD/$outdir ;; esac
+dir=$outdir/$name
+rm -rf "$dir"
+mkdir -p "$dir" || exit 1
+fail() {
+    echo "blender test $name: FAIL: $*"
+    exit 1
+}
+echo "blender test $name: $dir"
+
+"$prog" --trace "$dir/$name.raygl" --png "$dir/gl.png" >"$dir/program.log" 2>&1 ||
+    { tail -n 20 "$dir/program.log"; fail "the program failed"; }
+t0=$(date +%s%N)
+# RAYGL2POV's sibling raygl-render and the import script are found beside
+# it; BLENDER is the program the driver runs.
+(cd "$dir" && "$r2p" "$name.raygl" -o glb --format gltf --render --samples "$samples" -j 1 \
+    --blender "$blender") >"$dir/render.log" 2>&1 ||
+    { tail -n 20 "$dir/render.log"; fail "raygl2pov --format gltf --render failed"; }
+t1=$(date +%s%N)
+[ -s "$dir/glb/frame-00000.png" ] || fail "no glb/frame-00000.png"
+# Milliseconds, reported: performance is measured, never asserted.
+echo "blender frame time: $(((t1 - t0) / 1000000)) ms (translate + Blender, $samples samples)"
+"$imgcmp" "$@" --diff "$dir/diff.png" "$dir/gl.png" "$dir/glb/frame-00000.png" ||
+    { echo "blender test $name: FAIL (see $dir/diff.png: GL | Blender | difference)"; exit 1; }
+echo "blender test $name: PASS"
