@@ -8,6 +8,9 @@ PACKAGES="gcc pkg-config meson ninja-build python3 khronos-api libgl-dev libglu1
 libosmesa6-dev libpng-dev zlib1g-dev povray xvfb xauth locales slurm-wlm munge parallel ffmpeg
 libegl-dev libx11-dev mesa-utils xscreensaver-gl man-db groff-base binutils
 build-essential debhelper dpkg-dev fakeroot lintian nodejs"
+# Blender with numpy: raygl-render --engine blender and suite blender
+# (Blender 3.4's glTF importer needs numpy; about 27 MB to download).
+PACKAGES="$PACKAGES blender python3-numpy"
 # Debian's npm, unless a nodejs that bundles its own (and conflicts with
 # Debian's npm package) is installed already.
 command -v npm >/dev/null 2>&1 || PACKAGES="$PACKAGES npm"

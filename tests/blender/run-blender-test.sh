@@ -21,7 +21,15 @@ if [ "$blender" = none ] || ! command -v "$blender" >/dev/null 2>&1; then
     echo "SKIP: no blender (apt-get install blender python3-numpy)"
     exit 77
 fi
-case $outdir in /*) ;; *) outdir=$PWD/$outdir ;; esac
+# The steps run in the test's folder: relative paths made absolute.
+absolute() {
+    case $1 in
+    /*) printf '%s\n' "$1" ;;
+    *) printf '%s/%s\n' "$PWD" "$1" ;;
+    esac
+}
+prog=$(absolute "$prog") r2p=$(absolute "$r2p") imgcmp=$(absolute "$imgcmp")
+outdir=$(absolute "$outdir")
 dir=$outdir/$name
 rm -rf "$dir"
 mkdir -p "$dir" || exit 1

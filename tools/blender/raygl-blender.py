@@ -88,7 +88,11 @@ def glb_json(path):
 
 def shim_numpy():
     # Blender 3.4's glTF importer calls np.bool, gone since numpy 1.24.
-    import numpy as np
+    try:
+        import numpy as np
+    except ImportError:
+        raise Failure("Blender's Python has no numpy, which its glTF importer needs "
+                      "(apt-get install python3-numpy)")
     if "bool" not in np.__dict__:
         np.bool = bool
 
