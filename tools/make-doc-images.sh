@@ -8,6 +8,14 @@
 #   reflection.png       the default | --reflection 0.3
 #   area-lights.png      the default | --area-lights 6 (soft shadows)
 #
+# and, when Blender and ffmpeg are installed, three frames side by side,
+# GL | POV-Ray (--no-shadows, as GL draws none) | Blender (raygl2pov
+# --format gltf --render: Cycles, 16 samples), of three image-test
+# programs: the README's scene, a textured floor and the paper's box:
+#
+#   gl-pov-blender-scene.png, gl-pov-blender-texture.png,
+#   gl-pov-blender-box.png
+#
 # Usage: tools/make-doc-images.sh [BUILD-DIR]   (default: build; it must
 # have been built with the image tests, which need OSMesa and POV-Ray).
 # The option pictures are antialiased; the OpenGL one and its ray-traced
@@ -52,3 +60,28 @@ render reflection --reflection 0.3 --antialias
 pair shadows reflection reflection
 render area --area-lights 6 --antialias
 pair shadows area area-lights
+
+if ! command -v blender >/dev/null || ! command -v ffmpeg >/dev/null; then
+    echo "make-doc-images: blender or ffmpeg not installed: no GL | POV-Ray | Blender pictures" >&2
+    exit 0
+fi
+r2p_abs=$(cd "$(dirname "$r2p")" && pwd)/$(basename "$r2p")
+# three PROGRAM OUT: GL | POV-Ray | Blender of one image-test program
+three() {
+    d=$work/three-$1
+    mkdir -p "$d"
+    "$build/tests/image/imgtest_$1" --trace "$d/t.raygl" --png "$d/gl.png" >/dev/null
+    (cd "$d" && "$r2p_abs" t.raygl -o pov --no-shadows -q &&
+        povray pov/frame-00000.ini -D >povray.log 2>&1 &&
+        "$r2p_abs" t.raygl -o glb --format gltf --render --samples 16 -q) ||
+        { echo "make-doc-images: $1 failed (see $d)" >&2; exit 1; }
+    # A 4-pixel grey line after each of the first two.
+    ffmpeg -nostdin -loglevel error -y -i "$d/gl.png" -i "$d/pov/frame-00000.png" \
+        -i "$d/glb/frame-00000.png" -filter_complex \
+        "[0]pad=iw+4:ih:0:0:color=gray[a];[1]pad=iw+4:ih:0:0:color=gray[b];[a][b][2]hstack=inputs=3" \
+        -frames:v 1 -pix_fmt rgb24 "docs/img/$2.png"
+    echo "docs/img/$2.png ($(wc -c <"docs/img/$2.png") bytes)"
+}
+three example_scene gl-pov-blender-scene
+three tex_lit gl-pov-blender-texture
+three paper_box gl-pov-blender-box
