@@ -8,7 +8,8 @@
 # renders again and the same frame renders to the same pixels (fixed
 # seed); a damaged .glb is reported with the frame and the script's reason
 # while the others render (exit 1); a missing Blender and wrong usage fail
-# clearly; the Slurm script and a task render with Blender; GNU parallel
+# clearly; SIGINT while Blender renders leaves no partial file and no
+# Blender running; the Slurm script and a task render with Blender; GNU parallel
 # (':' is this machine) when installed. Skipped (77) without Blender.
 blender=$5
 if [ "$blender" = none ] || ! command -v "$blender" >/dev/null 2>&1; then
@@ -61,6 +62,27 @@ grep -q "bad/frame-00001.glb: blender failed (exit status 1): not a binary glTF 
 [ -e bad/frame-00001.png ] && fail "a PNG for the damaged frame"
 grep -q "3 frames rendered .* 1 failed" "$work/err" || fail "failure summary: $(cat "$work/err")"
 ls -a bad | grep -q 'partial\|tmp' && fail "partial files left: $(ls -a bad)"
+
+# ---- SIGINT while Blender renders: no partial file, no Blender left
+cp -r f stop
+rm stop/*.png
+"$render" stop -j 2 $opts >stop.log 2>&1 &
+pid=$!
+i=0
+while ! grep -qs "Blender" stop/.*.partial.log && [ $i -lt 600 ]; do
+    i=$((i + 1))
+    sleep 0.1
+done
+kids=$(ps -o pid= --ppid "$pid")
+kill -INT "$pid"
+wait "$pid"
+rc=$?
+[ "$rc" -ne 0 ] && ok "stopped raygl-render exits $rc" || fail "stopped raygl-render exited 0"
+left=$(ls -A stop | grep -v -E '^(frame-[0-9]+\.(glb|png)|render\.list)$')
+[ -z "$left" ] && ok "stopped: nothing partial left" || fail "stopped: left $(echo $left)"
+for k in $kids; do
+    kill -0 "$k" 2>/dev/null && fail "blender $k still runs after the stop"
+done
 
 # ---- a missing Blender; wrong usage
 run "$render" f --blender "$work/no-such-blender" --engine blender

@@ -425,7 +425,7 @@ static bool transient_failure(int st, const char *log)
 static int start_frame(const char *prog, const render_settings *rs, const char *stem, int threads,
                        running *r)
 {
-    const char *povray = engine_program(rs);
+    const char *program = engine_program(rs);
     cleanup_lock();
     forget(r);
     tr_free(r->tmp_png);
@@ -461,20 +461,20 @@ static int start_frame(const char *prog, const render_settings *rs, const char *
         posix_spawnattr_t at;
         posix_spawnattr_init(&at);
         cleanup_spawnattr(&at);
-        char *pargv[] = {(char *)povray, ini, larg, wt, oarg, "-D", NULL};
+        char *pargv[] = {(char *)program, ini, larg, wt, oarg, "-D", NULL};
         /* Blender's own options first, the script's after "--". */
-        char *bargv[] = {(char *)povray, "-b", "-noaudio", "--factory-startup",
+        char *bargv[] = {(char *)program, "-b", "-noaudio", "--factory-startup",
                          "--python-exit-code", "1", "-P", script, "--", "--input", ini,
                          "--output", oarg, "--samples", samples, "--threads", wt, NULL};
         char **argv = is_blender(rs) ? bargv : pargv;
-        int e = posix_spawnp(&r->pid, povray, &fa, &at, argv, environ);
+        int e = posix_spawnp(&r->pid, program, &fa, &at, argv, environ);
         posix_spawnattr_destroy(&at);
         posix_spawn_file_actions_destroy(&fa);
         if (e == 0) {
             rc = 0;
             r->ids[3] = cleanup_child(r->pid);
         } else {
-            say(prog, "%s: cannot run %s: %s", ini, povray, strerror(e));
+            say(prog, "%s: cannot run %s: %s", ini, program, strerror(e));
         }
     } else if (ini && oarg && wt && larg && !script) {
         say(prog, "%s: " BLENDER_SCRIPT " is not installed beside this program", ini);
