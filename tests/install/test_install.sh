@@ -24,9 +24,14 @@ for f in bin/raygl bin/raygl2pov bin/raygl2gltf bin/raygl-render bin/raygl-compa
     "$libdir/libraygl.so" "$libdir/libraygl.so.0" "$libdir/pkgconfig/raygl.pc" \
     "$libdir/raygl/libraygl-preload.so" \
     share/man/man1/raygl.1 share/man/man1/raygl2pov.1 share/man/man1/raygl-render.1 \
-    share/man/man1/raygl-compare.1; do
+    share/man/man1/raygl-compare.1 share/raygl/raygl-blender.py; do
     [ -e "$root/$f" ] || fail "$prefix/$f not installed"
 done
+# The installed raygl-render finds Blender's import script in
+# PREFIX/share/raygl (a task that gets as far as reading render.list).
+"$root/bin/raygl-render" "$t" --engine blender --blender /bin/true --task 0 >"$t/out" 2>&1
+grep -q "render.list: cannot read" "$t/out" ||
+    fail "installed raygl-render --engine blender: $(cat "$t/out")"
 for f in bin/raygl bin/raygl2pov bin/raygl-render bin/raygl-compare; do
     [ -x "$root/$f" ] || fail "$prefix/$f is not executable"
 done
