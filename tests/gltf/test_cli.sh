@@ -92,7 +92,9 @@ grep -a -q 'KHR_lights_punctual' nolights/frame-00000.glb && fail "--no-gl-light
 run "$good" --format obj -o bad
 expect_rc 2 "--format obj"
 one_line "format 'obj': expected pov or gltf"
-for opt in "--render" "--include s.conf" "--antialias" "--quality 3" \
+# (--render renders glTF frames with Blender: tests/blender; POV-Ray
+# rendering is what is refused.)
+for opt in "--engine povray --render" "--include s.conf" "--antialias" "--quality 3" \
     "--radiosity" "--no-shadows" "--reflection 0.5" "--area-lights 4"; do
     # shellcheck disable=SC2086
     set -- $opt
