@@ -222,6 +222,14 @@ def main():
         sys.stderr.write("%s: %s: %s\n" % (PROG, where, e))
         sys.stderr.flush()
         sys.exit(1)
+    except Exception as e:
+        # A failure nobody foresaw: the traceback for the log, then the
+        # one line raygl-render repeats.
+        import traceback
+        traceback.print_exc()
+        sys.stderr.write("%s: %s: %s: %s\n" % (PROG, where, type(e).__name__, e))
+        sys.stderr.flush()
+        sys.exit(1)
 
 
 main()
