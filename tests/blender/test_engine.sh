@@ -8,7 +8,8 @@
 # renders again and the same frame renders to the same pixels (fixed
 # seed); a damaged .glb is reported with the frame and the script's reason
 # while the others render (exit 1); a missing Blender and wrong usage fail
-# clearly; SIGINT while Blender renders leaves no partial file and no
+# clearly; lines and points, which Cycles does not draw, are noted with
+# the frame; SIGINT while Blender renders leaves no partial file and no
 # Blender running; the Slurm script and a task render with Blender; GNU parallel
 # (':' is this machine) when installed. Skipped (77) without Blender.
 blender=$5
@@ -30,6 +31,7 @@ n=$(ls f/*.png 2>/dev/null | wc -l)
 grep -q "4 frames rendered in .* 2 at once), 0 already rendered, 0 failed" "$work/err" &&
     ok "summary" || fail "summary: $(cat "$work/err")"
 ls -a f | grep -q 'partial\|tmp' && fail "partial files left: $(ls -a f)"
+grep -q "note" "$work/err" && fail "a note for frames with no lines or points: $(cat "$work/err")"
 "$imgcmp" --tol 0 --min-match 1 f/frame-00000.png f/frame-00003.png >/dev/null 2>&1 &&
     fail "frames 0 and 3 of the animation are the same picture"
 cp f/frame-00002.png keep.png
@@ -83,6 +85,25 @@ left=$(ls -A stop | grep -v -E '^(frame-[0-9]+\.(glb|png)|render\.list)$')
 for k in $kids; do
     kill -0 "$k" 2>/dev/null && fail "blender $k still runs after the stop"
 done
+
+# ---- points and lines, which Cycles does not draw: a note with the frame
+mkdir pts
+python3 - f/frame-00000.glb pts/frame-00000.glb <<'EOF2'
+import json, struct, sys
+d = open(sys.argv[1], "rb").read()
+n = struct.unpack("<I", d[12:16])[0]
+j = json.loads(d[20:20 + n])
+j["meshes"][0]["primitives"][0]["mode"] = 0
+t = json.dumps(j).encode()
+t += b" " * (-len(t) % 4)
+rest = d[20 + n:]
+out = struct.pack("<III", 0x46546C67, 2, 20 + len(t) + len(rest)) + struct.pack("<II", len(t), 0x4E4F534A) + t + rest
+open(sys.argv[2], "wb").write(out)
+EOF2
+run "$render" pts $opts
+expect_rc 0 "a frame with points"
+grep -q "pts/frame-00000.glb: note: 0 line and 1 point primitive(s) not drawn (Cycles renders no loose edges or vertices)" \
+    "$work/err" && ok "points noted" || fail "no note for points: $(cat "$work/err")"
 
 # ---- a missing Blender; wrong usage
 run "$render" f --blender "$work/no-such-blender" --engine blender

@@ -25,6 +25,8 @@
 #   nobody sees half a file.
 #
 # Errors: one line "raygl-blender: FILE: reason" on stderr, exit status 1.
+# What the render cannot show (GL lines and points) is one line
+# "raygl-blender: FILE: note: ..." on stderr, which raygl-render repeats.
 import json
 import math
 import os
@@ -86,6 +88,22 @@ def glb_json(path):
         raise Failure("damaged JSON chunk: %s" % e)
 
 
+def note_undrawn(path, meta):
+    """Lines and points: Blender imports them as loose edges and vertices,
+    which Cycles does not draw (and their colours, which Blender keeps per
+    face corner, are lost): said as a note, which raygl-render repeats."""
+    lines = points = 0
+    for mesh in meta.get("meshes") or []:
+        for prim in (mesh.get("primitives") or []) if isinstance(mesh, dict) else []:
+            mode = prim.get("mode", 4) if isinstance(prim, dict) else 4
+            lines += mode in (1, 2, 3)
+            points += mode == 0
+    if lines or points:
+        sys.stderr.write("%s: %s: note: %d line and %d point primitive(s) not drawn "
+                         "(Cycles renders no loose edges or vertices)\n"
+                         % (PROG, path, lines, points))
+
+
 def shim_numpy():
     # Blender 3.4's glTF importer calls np.bool, gone since numpy 1.24.
     try:
@@ -133,6 +151,7 @@ def render(opts):
             all(isinstance(v, int) and 0 < v <= 65536 for v in size)):
         raise Failure("no extras.imageSize: not written by raygl2pov --format gltf?")
 
+    note_undrawn(opts["input"], meta)
     import bpy
     shim_numpy()
     # --factory-startup's cube, light and camera go first.

@@ -520,6 +520,24 @@ static bool script_error(const char *log, char *out, size_t cap)
     return found;
 }
 
+/* The import script's notes (what the render cannot show: "raygl-blender:
+ * FILE: note: what"), said with the frame. */
+static void relay_notes(const char *prog, const char *stem, const char *log)
+{
+    FILE *f = fopen(log, "r");
+    if (!f)
+        return;
+    char line[1024];
+    while (fgets(line, sizeof line, f)) {
+        line[strcspn(line, "\r\n")] = '\0';
+        const char *note =
+            strncmp(line, "raygl-blender: ", 15) == 0 ? strstr(line, ": note: ") : NULL;
+        if (note)
+            say(prog, "%s.glb: %s", stem, note + 2);
+    }
+    fclose(f);
+}
+
 /* The engine's own error: the import script's line; else the first line
  * of the log that says "Error" with its continuation lines (they start
  * with a blank), else the log's last non-empty line. */
@@ -552,10 +570,11 @@ static void log_error(const render_settings *rs, const char *log, char *out, siz
     fclose(f);
 }
 
-/* After povray ended with status st: the PNG into place, or the failure
- * reported with the log kept as STEM.log. Returns true on success. */
+/* After the engine ended with status st: the PNG into place (and, unless
+ * quiet, Blender's notes said), or the failure reported with the log kept
+ * as STEM.log. Returns true on success. */
 static bool finish_frame(const char *prog, const render_settings *rs, const char *stem, int st,
-                         running *r)
+                         bool quiet, running *r)
 {
     const char *ext = frame_ext(rs), *tool = is_blender(rs) ? "blender" : "povray";
     char *png = aprintf("%s.png", stem), *log = aprintf("%s.log", stem);
@@ -567,6 +586,8 @@ static bool finish_frame(const char *prog, const render_settings *rs, const char
         ok = false;
     } else if (ok && log) {
         unlink(log); /* an earlier failure's */
+        if (is_blender(rs) && !quiet)
+            relay_notes(prog, stem, r->tmp_log);
     } else if (!ok) {
         char msg[1024], why[64];
         log_error(rs, r->tmp_log, msg, sizeof msg);
@@ -735,7 +756,7 @@ static int render_local(const render_job *j, size_t *nfailed)
                 failed++;
                 break;
             }
-            if (finish_frame(j->prog, j->r, j->stems[run[s].index], st, &run[s]))
+            if (finish_frame(j->prog, j->r, j->stems[run[s].index], st, j->quiet, &run[s]))
                 rendered++;
             else
                 failed++;
@@ -1078,7 +1099,7 @@ int render_task(const render_settings *r, const char *prog, const char *dir, lon
             reaped(&run);
             if (attempt == 0 && !is_blender(r) && transient_failure(st, run.tmp_log))
                 continue;
-            rc = finish_frame(prog, r, stem, st, &run) ? 0 : 1;
+            rc = finish_frame(prog, r, stem, st, false, &run) ? 0 : 1;
             break;
         }
         forget(&run);
