@@ -65,7 +65,7 @@ static void print_help(void)
           "so on (a frame started by rayglFrameBegin(\"name.pov\", ...) is written as\n"
           "DIR/name.pov). Render a frame with:  povray DIR/frame-00000.ini\n"
           "With --format gltf (or run as raygl2gltf): one binary glTF 2.0 file per\n"
-          "frame instead, DIR/frame-00000.glb.\n",
+          "frame instead, DIR/frame-00000.glb; --render then renders them with Blender.\n",
           stdout);
     opt_print_help(stdout, false);
     fputs("\n"
