@@ -52,7 +52,9 @@ async function render(url, width, height) {
     // clears and fogs in the output (sRGB) space, as GL does.
     const bg = Array.isArray(extras.background) ? extras.background : [0, 0, 0, 1];
     renderer.setClearColor(new THREE.Color().setRGB(bg[0], bg[1], bg[2], THREE.SRGBColorSpace), 1);
-    const scene = gltf.scene;
+    // gltf.scene is a Group: fog needs a Scene around it.
+    const scene = new THREE.Scene();
+    scene.add(gltf.scene);
     const fog = extras.fog;
     if (fog) {
         const fc = new THREE.Color().setRGB(fog.color[0], fog.color[1], fog.color[2], THREE.SRGBColorSpace);
