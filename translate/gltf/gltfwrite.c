@@ -290,6 +290,10 @@ static int32_t material_index(writer *w, const scene_look *look, bool lines, boo
     int32_t tex = tx && !lines ? texture_index(w, look->texture) : -1;
     if (tex >= 0 && tx->env_mode == GL_BLEND)
         note(w, "GL_BLEND texture environment: written as GL_MODULATE");
+    else if (tex >= 0 && tx->env_mode != GL_MODULATE && !tx->colour_is_texel)
+        note(w, "a texture environment other than GL_MODULATE, GL_REPLACE or GL_DECAL of a "
+                "colour without alpha (GL_DECAL of RGBA, GL_ADD, GL_COMBINE): written as "
+                "GL_MODULATE");
     if (look->texture1 >= 0 && !lines)
         note(w, "a second texture unit: not written (glTF has one base colour texture)");
     double base[4] = {1, 1, 1, 1};
