@@ -187,7 +187,10 @@ function startChromium(exe, profile) {
         '--force-color-profile=srgb', '--force-device-scale-factor=1',
         'about:blank',
     ];
-    return spawn(exe, args, {stdio: ['ignore', 'ignore', 'pipe', 'pipe', 'pipe']});
+    // TMPDIR: Chromium's own temporary folders go into the profile, which
+    // is removed even when Chromium had to be killed.
+    return spawn(exe, args, {stdio: ['ignore', 'ignore', 'pipe', 'pipe', 'pipe'],
+        env: {...process.env, TMPDIR: profile}});
 }
 
 class Cdp {
@@ -198,6 +201,9 @@ class Cdp {
         this.waiters = [];
         this.events = [];
         let buf = Buffer.alloc(0);
+        // A Chromium that dies closes the pipes: its exit is what is reported.
+        this.out.on('error', () => {});
+        child.stdio[4].on('error', () => {});
         child.stdio[4].on('data', (d) => {
             buf = Buffer.concat([buf, d]);
             let z;
@@ -333,8 +339,13 @@ async function main() {
         for (const n of res.notes)
             console.error(`${PROG}: ${inFile}: note: ${n}`);
         const tmp = `${outFile}.tmp-${process.pid}`;
-        fs.writeFileSync(tmp, encodePng(res.width, res.height, rgba));
-        fs.renameSync(tmp, outFile);
+        try {
+            fs.writeFileSync(tmp, encodePng(res.width, res.height, rgba));
+            fs.renameSync(tmp, outFile);
+        } catch (e) {
+            fs.rmSync(tmp, {force: true});
+            throw new Error(`cannot write ${outFile}: ${e.code || e.message}`);
+        }
         if (process.env.RAYGL_THREE_VERBOSE)
             console.error(`${PROG}: three.js r${res.three} on ${res.renderer}: ${outFile} ${res.width}x${res.height}`);
     } catch (e) {
