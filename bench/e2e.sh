@@ -85,7 +85,7 @@ case $w in '' | *[!0-9]*) usage "--size: WxH" ;; esac
 case $h in '' | *[!0-9]*) usage "--size: WxH" ;; esac
 
 # 10k, 250k, 1M, 2000 -> triangle counts, in the order given.
-tris_list=
+tris_list= labels=
 for s in $(echo "$sizes" | tr ',' ' '); do
     case $s in
     *[kK]) n=${s%?}; mul=1000 ;;
@@ -93,7 +93,9 @@ for s in $(echo "$sizes" | tr ',' ' '); do
     *) n=$s; mul=1 ;;
     esac
     case $n in '' | *[!0-9]*) usage "--sizes: $s is not a count (like 2000, 10k or 1M)" ;; esac
+    case " $tris_list " in *" $((n * mul)) "*) usage "--sizes: $s given twice" ;; esac
     tris_list="$tris_list $((n * mul))"
+    labels="$labels $s"
 done
 [ -n "$tris_list" ] || usage "--sizes: no size"
 
@@ -196,7 +198,7 @@ table=$work/table.md
     echo "Trace to PNG: bench/e2e_torus ($ctx), raygl2pov -j 1, POV-Ray at ${w}x${h} +Q$quality -A${povargs:+ $povargs}; medians of $runs run(s)."
     echo
     printf '| figure |'
-    for tris in $tris_list; do printf ' %s |' "$tris"; done
+    for s in $labels; do printf ' %s |' "$s"; done
     echo
     printf '|---|'
     for tris in $tris_list; do printf '%s' '---:|'; done
@@ -227,7 +229,7 @@ table=$work/table.md
     row 'program recorded: peak MB' mb rec.maxrss_kb
     row 'recording cost: wall s' sec cost.wall
     row 'recording cost: CPU s' sec cost.cpu
-    row 'recording cost: CPU ns per GL call' nscall
+    row 'recording cost: CPU ns per GL call (start-up included)' nscall
     row 'recording cost: peak MB' mb cost.maxrss_kb
     row 'trace bytes' bytes trace.bytes
     row 'raygl2pov -j 1: wall s' sec r2p.wall
