@@ -93,6 +93,7 @@ for s in $(echo "$sizes" | tr ',' ' '); do
     *) n=$s; mul=1 ;;
     esac
     case $n in '' | *[!0-9]*) usage "--sizes: $s is not a count (like 2000, 10k or 1M)" ;; esac
+    [ $((n * mul)) -ge 8 ] || usage "--sizes: $s: 8 triangles at least"
     case " $tris_list " in *" $((n * mul)) "*) usage "--sizes: $s given twice" ;; esac
     tris_list="$tris_list $((n * mul))"
     labels="$labels $s"
@@ -127,13 +128,26 @@ trap 'exit 130' INT TERM
 field() { sed -n "s/.*\\<$1=\\([-0-9.]*\\).*/\\1/p" "$2"; }
 # median FORMAT < numbers, one a line
 median() { sort -g | awk -v f="$1" '{ v[NR] = $1 } END { if (NR == 0) print "n/a"; else printf f "\n", NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+# failrun WHAT: a step of size $tris, run $r, failed; its files (logs,
+# trace, scene) are kept, in --keep's folder or else in the work folder.
+failrun() {
+    if [ -n "$keep" ]; then
+        rm -rf "${keep:?}/$tris"
+        cp -r "$d" "$keep/$tris"
+        where=$keep/$tris
+    else
+        trap - EXIT
+        where=$d
+    fi
+    fail "$tris triangles, run $r: $1 (files in $where)"
+}
 # run STEP DIR STAT LOG COMMAND...: runs it in DIR, its figures to STAT
 run() {
     step=$1 dir=$2 stat=$3 log=$4
     shift 4
     if ! (cd "$dir" && "$runstat" "$stat" "$@") >"$log" 2>&1; then
         tail -n 5 "$log" >&2
-        fail "$step failed (log: $log${keep:+, kept in $keep})"
+        failrun "$step failed (log: ${log##*/})"
     fi
 }
 
@@ -148,21 +162,21 @@ for tris in $tris_list; do
             "$plain" --tris "$tris" --size "$size" $nocontext
         run "the recorded program" "$d" "$d/rec.stat" "$d/rec.log" \
             env RAYGL_TRACE="$d/torus.raygl" "$rec" --tris "$tris" --size "$size" $nocontext
-        cmp -s "$d/plain.log" "$d/rec.log" || fail "the plain and recorded programs printed different lines ($d/plain.log, $d/rec.log)"
-        [ -s "$d/torus.raygl" ] || fail "the recorded program wrote no trace ($d/torus.raygl)"
+        cmp -s "$d/plain.log" "$d/rec.log" || failrun "the plain and recorded programs printed different lines (plain.log, rec.log)"
+        [ -s "$d/torus.raygl" ] || failrun "the recorded program wrote no trace torus.raygl"
         run "raygl2pov" "$d" "$d/r2p.stat" "$d/r2p.log" \
             "$r2p" torus.raygl -o sdl -j 1 -q
-        [ -s "$d/sdl/frame-00000.ini" ] || fail "raygl2pov wrote no frame-00000.ini ($d/sdl)"
+        [ -s "$d/sdl/frame-00000.ini" ] || failrun "raygl2pov wrote no sdl/frame-00000.ini"
         sdl_bytes=$(find "$d/sdl" -type f -exec cat {} + | wc -c)
         sdl_files=$(find "$d/sdl" -type f | wc -l)
         # shellcheck disable=SC2086 # --povray-args is split on purpose
         # The .ini names its paths from the folder raygl2pov ran in.
         run "POV-Ray" "$d" "$d/pov.stat" "$d/pov.log" \
             "$povray" sdl/frame-00000.ini +W"$w" +H"$h" +Q"$quality" -A -D +Oframe.png $povargs
-        [ -s "$d/frame.png" ] || fail "POV-Ray wrote no PNG (log: $d/pov.log)"
+        [ -s "$d/frame.png" ] || failrun "POV-Ray wrote no frame.png (log: pov.log)"
         parse=$(sed -n 's/.*Parse Time:.*(\([0-9.]*\) seconds).*/\1/p' "$d/pov.log" | head -n 1)
         trace=$(sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p' "$d/pov.log" | head -n 1)
-        [ -n "$parse" ] && [ -n "$trace" ] || fail "no Parse Time or Trace Time in POV-Ray's statistics ($d/pov.log)"
+        [ -n "$parse" ] && [ -n "$trace" ] || failrun "no Parse Time or Trace Time in POV-Ray's statistics (pov.log)"
 
         for step in plain rec r2p pov; do
             for f in wall cpu maxrss_kb; do
