@@ -3,6 +3,7 @@
 # several triangle counts, each step's time, peak memory and bytes.
 #
 #   bench/e2e.sh [--build DIR] [--sizes 10k,250k,1M] [--runs 3] [--size 640x480]
+#                [--large-size 320x240] [--large-from 1M]
 #                [--quality 9] [--povray-args ARGS] [--no-context] [--keep DIR]
 #                [--out FILE] [--plain PATH] [--rec PATH] [--raygl2pov PATH]
 #                [--povray PATH] [--runstat PATH]
@@ -22,7 +23,11 @@
 #      and of everything raygl2pov wrote (.pov, .ini, texture PNGs)
 #   3. POV-Ray on frame-00000.ini at --size, +Q<quality>, no antialiasing,
 #      no display: its own Parse Time and Trace Time (wall seconds, as it
-#      prints them), the process's wall, CPU and peak RSS
+#      prints them), the process's wall, CPU and peak RSS. From --large-from
+#      triangles on (default 1M) POV-Ray renders at --large-size instead
+#      (default 320x240, a quarter of the pixels; --large-size 640x480 for
+#      all at one size), so that three runs of 1M stay within minutes: its
+#      render time grows with the strips, see bench/README.md
 #
 # Times and memory come from bench/e2e_runstat (wait4: microseconds, the
 # child's peak RSS). Each figure is the median of --runs runs (recording's
@@ -40,7 +45,7 @@ set -eu
 me=e2e.sh
 usage() {
     echo "$me: $1" >&2
-    echo "usage: $me [--build DIR] [--sizes LIST] [--runs N] [--size WxH] [--quality Q] [--povray-args ARGS] [--no-context] [--keep DIR] [--out FILE] [--plain PATH] [--rec PATH] [--raygl2pov PATH] [--povray PATH] [--runstat PATH]" >&2
+    echo "usage: $me [--build DIR] [--sizes LIST] [--runs N] [--size WxH] [--large-size WxH] [--large-from N] [--quality Q] [--povray-args ARGS] [--no-context] [--keep DIR] [--out FILE] [--plain PATH] [--rec PATH] [--raygl2pov PATH] [--povray PATH] [--runstat PATH]" >&2
     exit 2
 }
 fail() {
@@ -48,12 +53,12 @@ fail() {
     exit 1
 }
 
-build=build sizes=10k,250k,1M runs=3 size=640x480 quality=9 povargs= nocontext= keep= out=
+build=build sizes=10k,250k,1M runs=3 size=640x480 large_size=320x240 large_from=1M quality=9 povargs= nocontext= keep= out=
 plain= rec= r2p= povray= runstat=
 while [ $# -gt 0 ]; do
     case $1 in
     --no-context) nocontext=--no-context; shift; continue ;;
-    --build | --sizes | --runs | --size | --quality | --povray-args | --keep | --out | --plain | \
+    --build | --sizes | --runs | --size | --large-size | --large-from | --quality | --povray-args | --keep | --out | --plain | \
         --rec | --raygl2pov | --povray | --runstat)
         [ $# -ge 2 ] || usage "$1 needs a value" ;;
     -h | --help) usage "the end-to-end table" ;;
@@ -64,6 +69,8 @@ while [ $# -gt 0 ]; do
     --sizes) sizes=$2 ;;
     --runs) runs=$2 ;;
     --size) size=$2 ;;
+    --large-size) large_size=$2 ;;
+    --large-from) large_from=$2 ;;
     --quality) quality=$2 ;;
     --povray-args) povargs=$2 ;;
     --keep) keep=$2 ;;
@@ -80,22 +87,34 @@ done
 case $runs in '' | *[!0-9]*) usage "--runs: a whole number from 1" ;; esac
 [ "$runs" -ge 1 ] || usage "--runs: a whole number from 1"
 case $quality in [0-9] | 1[01]) ;; *) usage "--quality: 0 to 11 (POV-Ray's +Q)" ;; esac
+# wxh OPTION VALUE: VALUE is WxH, two whole numbers, or usage
+wxh() {
+    case $2 in *x*) ;; *) usage "$1: WxH, not $2" ;; esac
+    case ${2%%x*} in '' | *[!0-9]*) usage "$1: WxH, not $2" ;; esac
+    case ${2#*x} in '' | *[!0-9]*) usage "$1: WxH, not $2" ;; esac
+}
+wxh --size "$size"
+wxh --large-size "$large_size"
 w=${size%x*} h=${size#*x}
-case $w in '' | *[!0-9]*) usage "--size: WxH" ;; esac
-case $h in '' | *[!0-9]*) usage "--size: WxH" ;; esac
 
-# 10k, 250k, 1M, 2000 -> triangle counts, in the order given.
+# count S: 10k, 250k, 1M, 2000 -> a triangle count in $n, or usage
+count() {
+    case $1 in
+    *[kK]) n=${1%?}; mul=1000 ;;
+    *M) n=${1%?}; mul=1000000 ;;
+    *) n=$1; mul=1 ;;
+    esac
+    case $n in '' | *[!0-9]*) usage "$2: $1 is not a count (like 2000, 10k or 1M)" ;; esac
+    n=$((n * mul))
+}
+count "$large_from" --large-from
+large_from=$n
 tris_list= labels=
 for s in $(echo "$sizes" | tr ',' ' '); do
-    case $s in
-    *[kK]) n=${s%?}; mul=1000 ;;
-    *M) n=${s%?}; mul=1000000 ;;
-    *) n=$s; mul=1 ;;
-    esac
-    case $n in '' | *[!0-9]*) usage "--sizes: $s is not a count (like 2000, 10k or 1M)" ;; esac
-    [ $((n * mul)) -ge 8 ] || usage "--sizes: $s: 8 triangles at least"
-    case " $tris_list " in *" $((n * mul)) "*) usage "--sizes: $s given twice" ;; esac
-    tris_list="$tris_list $((n * mul))"
+    count "$s" --sizes
+    [ "$n" -ge 8 ] || usage "--sizes: $s: 8 triangles at least"
+    case " $tris_list " in *" $n "*) usage "--sizes: $s given twice" ;; esac
+    tris_list="$tris_list $n"
     labels="$labels $s"
 done
 [ -n "$tris_list" ] || usage "--sizes: no size"
@@ -171,8 +190,13 @@ for tris in $tris_list; do
         sdl_files=$(find "$d/sdl" -type f | wc -l)
         # shellcheck disable=SC2086 # --povray-args is split on purpose
         # The .ini names its paths from the folder raygl2pov ran in.
+        pw=$w ph=$h
+        if [ "$tris" -ge "$large_from" ]; then
+            pw=${large_size%x*} ph=${large_size#*x}
+        fi
+        echo "$((pw * ph))" >"$d/pov.pixels"
         run "POV-Ray" "$d" "$d/pov.stat" "$d/pov.log" \
-            "$povray" sdl/frame-00000.ini +W"$w" +H"$h" +Q"$quality" -A -D +Oframe.png $povargs
+            "$povray" sdl/frame-00000.ini +W"$pw" +H"$ph" +Q"$quality" -A -D +Oframe.png $povargs
         [ -s "$d/frame.png" ] || failrun "POV-Ray wrote no frame.png (log: pov.log)"
         parse=$(sed -n 's/.*Parse Time:.*(\([0-9.]*\) seconds).*/\1/p' "$d/pov.log" | head -n 1)
         trace=$(sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p' "$d/pov.log" | head -n 1)
@@ -209,7 +233,11 @@ table=$work/table.md
 {
     ctx="OSMesa ${w}x${h}"
     [ -z "$nocontext" ] || ctx="no GL context"
-    echo "Trace to PNG: bench/e2e_torus ($ctx), raygl2pov -j 1, POV-Ray at ${w}x${h} +Q$quality -A${povargs:+ $povargs}; medians of $runs run(s)."
+    large=
+    for tris in $tris_list; do
+        [ "$tris" -lt "$large_from" ] || large=" (${large_size} from $large_from triangles on)"
+    done
+    echo "Trace to PNG: bench/e2e_torus ($ctx), raygl2pov -j 1, POV-Ray at ${w}x${h}$large +Q$quality -A${povargs:+ $povargs}; medians of $runs run(s)."
     echo
     printf '| figure |'
     for s in $labels; do printf ' %s |' "$s"; done
@@ -251,6 +279,7 @@ table=$work/table.md
     row 'raygl2pov -j 1: peak MB' mb r2p.maxrss_kb
     row 'SDL bytes (all files written)' bytes sdl.bytes
     row 'SDL files' val sdl.files
+    row 'POV-Ray image pixels' val pov.pixels
     row 'POV-Ray parse s' sec pov.parse
     row 'POV-Ray render s' sec pov.trace
     row 'POV-Ray: wall s' sec pov.wall
