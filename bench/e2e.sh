@@ -22,12 +22,13 @@
 #   2. raygl2pov -j 1 on the trace: wall, CPU, peak RSS; bytes of the trace
 #      and of everything raygl2pov wrote (.pov, .ini, texture PNGs)
 #   3. POV-Ray on frame-00000.ini at --size, +Q<quality>, no antialiasing,
-#      no display: its own Parse Time and Trace Time (wall seconds, as it
-#      prints them), the process's wall, CPU and peak RSS. From --large-from
-#      triangles on (default 1M) POV-Ray renders at --large-size instead
-#      (default 320x240, a quarter of the pixels; --large-size 640x480 for
-#      all at one size), so that three runs of 1M stay within minutes: its
-#      render time grows with the strips, see bench/README.md
+#      no display: its own Parse Time and Trace Time (wall seconds) and the
+#      CPU seconds it prints under each, the process's wall, CPU and peak
+#      RSS. From --large-from triangles on (default 1M) POV-Ray renders at
+#      --large-size instead (default 320x240, a quarter of the pixels;
+#      --large-size 640x480 for one size throughout), so that three runs
+#      of 1M stay within minutes: its render time grows with the number of
+#      meshes the SDL holds (bench/README.md)
 #
 # Times and memory come from bench/e2e_runstat (wait4: microseconds, the
 # child's peak RSS). Each figure is the median of --runs runs (recording's
@@ -200,7 +201,13 @@ for tris in $tris_list; do
         [ -s "$d/frame.png" ] || failrun "POV-Ray wrote no frame.png (log: pov.log)"
         parse=$(sed -n 's/.*Parse Time:.*(\([0-9.]*\) seconds).*/\1/p' "$d/pov.log" | head -n 1)
         trace=$(sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p' "$d/pov.log" | head -n 1)
-        [ -n "$parse" ] && [ -n "$trace" ] || failrun "no Parse Time or Trace Time in POV-Ray's statistics (pov.log)"
+        # The CPU seconds are on the line after each time: on a shared
+        # machine they say more than the wall seconds.
+        cpu_of() { awk -v t="$1 Time:" 'index($0, t) { getline; if (match($0, /with [0-9.]+ CPU/)) print substr($0, RSTART + 5, RLENGTH - 9); exit }' "$d/pov.log"; }
+        parse_cpu=$(cpu_of Parse)
+        trace_cpu=$(cpu_of Trace)
+        [ -n "$parse" ] && [ -n "$trace" ] && [ -n "$parse_cpu" ] && [ -n "$trace_cpu" ] ||
+            failrun "no Parse Time or Trace Time with CPU seconds in POV-Ray's statistics (pov.log)"
 
         for step in plain rec r2p pov; do
             for f in wall cpu maxrss_kb; do
@@ -215,6 +222,8 @@ for tris in $tris_list; do
             'BEGIN { printf "%.6f\n", a + b + c }' >>"$d/total.wall"
         echo "$parse" >>"$d/pov.parse"
         echo "$trace" >>"$d/pov.trace"
+        echo "$parse_cpu" >>"$d/pov.parse_cpu"
+        echo "$trace_cpu" >>"$d/pov.trace_cpu"
         wc -c <"$d/torus.raygl" >>"$d/trace.bytes"
         echo "$sdl_bytes" >>"$d/sdl.bytes"
         echo "$sdl_files" >"$d/sdl.files"
@@ -281,7 +290,9 @@ table=$work/table.md
     row 'SDL files' val sdl.files
     row 'POV-Ray image pixels' val pov.pixels
     row 'POV-Ray parse s' sec pov.parse
+    row 'POV-Ray parse CPU s' sec pov.parse_cpu
     row 'POV-Ray render s' sec pov.trace
+    row 'POV-Ray render CPU s (all threads)' sec pov.trace_cpu
     row 'POV-Ray: wall s' sec pov.wall
     row 'POV-Ray: CPU s' sec pov.cpu
     row 'POV-Ray: peak MB' mb pov.maxrss_kb

@@ -27,7 +27,7 @@ for ctx in osmesa none; do
     for label in 'triangles drawn' 'program alone: CPU s' 'program recorded: CPU s' \
         'program recorded: peak MB' 'recording cost: CPU s' 'trace bytes' \
         'raygl2pov -j 1: wall s' 'raygl2pov -j 1: peak MB' 'SDL bytes (all files written)' \
-        'POV-Ray parse s' 'POV-Ray render s' 'POV-Ray: peak MB' 'trace to PNG: wall s'; do
+        'POV-Ray parse s' 'POV-Ray parse CPU s' 'POV-Ray render s' 'POV-Ray render CPU s' 'POV-Ray: peak MB' 'trace to PNG: wall s'; do
         grep -q "^| $label" "$table" || { echo "e2e_smoke.sh: $table: no row '$label'" >&2; fail=1; }
     done
     # Every row below the header: a label, then one numeric cell per size.
