@@ -54,8 +54,8 @@ fail() {
     exit 1
 }
 
-build=build sizes=10k,250k,1M runs=3 size=640x480 large_size=320x240 large_from=1M quality=9 povargs= nocontext= keep= out=
-plain= rec= r2p= povray= runstat=
+build=build sizes=10k,250k,1M runs=3 size=640x480 large_size=320x240 large_from=1M quality=9
+povargs='' nocontext='' keep='' out='' plain='' rec='' r2p='' povray='' runstat=''
 while [ $# -gt 0 ]; do
     case $1 in
     --no-context) nocontext=--no-context; shift; continue ;;
@@ -110,7 +110,7 @@ count() {
 }
 count "$large_from" --large-from
 large_from=$n
-tris_list= labels=
+tris_list='' labels=''
 for s in $(echo "$sizes" | tr ',' ' '); do
     count "$s" --sizes
     [ "$n" -ge 8 ] || usage "--sizes: $s: 8 triangles at least"
@@ -148,6 +148,9 @@ trap 'exit 130' INT TERM
 field() { sed -n "s/.*\\<$1=\\([-0-9.]*\\).*/\\1/p" "$2"; }
 # median FORMAT < numbers, one a line
 median() { sort -g | awk -v f="$1" '{ v[NR] = $1 } END { if (NR == 0) print "n/a"; else printf f "\n", NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+# cpu_of Parse|Trace: the CPU seconds POV-Ray prints on the line after
+# that time (on a shared machine they say more than its wall seconds)
+cpu_of() { awk -v t="$1 Time:" 'index($0, t) { getline; if (match($0, /with [0-9.]+ CPU/)) print substr($0, RSTART + 5, RLENGTH - 9); exit }' "$d/pov.log"; }
 # failrun WHAT: a step of size $tris, run $r, failed; its files (logs,
 # trace, scene) are kept, in --keep's folder or else in the work folder.
 failrun() {
@@ -189,25 +192,23 @@ for tris in $tris_list; do
         [ -s "$d/sdl/frame-00000.ini" ] || failrun "raygl2pov wrote no sdl/frame-00000.ini"
         sdl_bytes=$(find "$d/sdl" -type f -exec cat {} + | wc -c)
         sdl_files=$(find "$d/sdl" -type f | wc -l)
-        # shellcheck disable=SC2086 # --povray-args is split on purpose
-        # The .ini names its paths from the folder raygl2pov ran in.
         pw=$w ph=$h
         if [ "$tris" -ge "$large_from" ]; then
             pw=${large_size%x*} ph=${large_size#*x}
         fi
         echo "$((pw * ph))" >"$d/pov.pixels"
+        # The .ini names its paths from the folder raygl2pov ran in.
+        # shellcheck disable=SC2086 # --povray-args is split on purpose
         run "POV-Ray" "$d" "$d/pov.stat" "$d/pov.log" \
             "$povray" sdl/frame-00000.ini +W"$pw" +H"$ph" +Q"$quality" -A -D +Oframe.png $povargs
         [ -s "$d/frame.png" ] || failrun "POV-Ray wrote no frame.png (log: pov.log)"
         parse=$(sed -n 's/.*Parse Time:.*(\([0-9.]*\) seconds).*/\1/p' "$d/pov.log" | head -n 1)
         trace=$(sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p' "$d/pov.log" | head -n 1)
-        # The CPU seconds are on the line after each time: on a shared
-        # machine they say more than the wall seconds.
-        cpu_of() { awk -v t="$1 Time:" 'index($0, t) { getline; if (match($0, /with [0-9.]+ CPU/)) print substr($0, RSTART + 5, RLENGTH - 9); exit }' "$d/pov.log"; }
         parse_cpu=$(cpu_of Parse)
         trace_cpu=$(cpu_of Trace)
-        [ -n "$parse" ] && [ -n "$trace" ] && [ -n "$parse_cpu" ] && [ -n "$trace_cpu" ] ||
+        if [ -z "$parse" ] || [ -z "$trace" ] || [ -z "$parse_cpu" ] || [ -z "$trace_cpu" ]; then
             failrun "no Parse Time or Trace Time with CPU seconds in POV-Ray's statistics (pov.log)"
+        fi
 
         for step in plain rec r2p pov; do
             for f in wall cpu maxrss_kb; do
