@@ -104,6 +104,11 @@ struct interp {
     bool prim_skip;     /* vertices are dropped (no scene, or a bad transform) */
     size_t prim_first;  /* first vertex of the primitive in scene->verts */
     mat4 prim_to_eye;   /* object -> camera eye space for this primitive */
+    /* lit_line_colour's last modelview and its inverse (ok: invertible),
+     * kept while the matrix stays bit for bit the same: one inversion per
+     * matrix, not per vertex. */
+    mat4 lit_mv, lit_mv_inv;
+    bool lit_mv_set, lit_mv_ok;
     bool prim_in_eye;   /* prim_to_eye is applied to the vertices themselves */
     uint8_t prim_blend; /* SCENE_BLEND_* of the primitive */
     int draw_unit[2];   /* the draw's first two enabled texture units, or -1 */

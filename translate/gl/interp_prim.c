@@ -407,17 +407,22 @@ static void lit_line_colour(interp *ip, double x, double y, double z, float out[
     mat4_apply(mv, in, o);
     for (int k = 0; k < 3; k++)
         p[k] = o[3] != 0 ? o[k] / o[3] : o[k];
-    mat4 inv;
-    if (mat4_invert(mv, &inv)) {
+    if (!ip->lit_mv_set || memcmp(&ip->lit_mv, mv, sizeof *mv) != 0) {
+        ip->lit_mv = *mv;
+        ip->lit_mv_ok = mat4_invert(mv, &ip->lit_mv_inv);
+        ip->lit_mv_set = true;
+    }
+    const mat4 *inv = &ip->lit_mv_inv;
+    if (ip->lit_mv_ok) {
         const float *cn = a->current.normal;
         for (int k = 0; k < 3; k++) /* n^T M^-1: row k of the inverse's transpose */
-            n[k] = cn[0] * inv.m[k * 4 + 0] + cn[1] * inv.m[k * 4 + 1] + cn[2] * inv.m[k * 4 + 2];
+            n[k] = cn[0] * inv->m[k * 4 + 0] + cn[1] * inv->m[k * 4 + 1] + cn[2] * inv->m[k * 4 + 2];
         double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
         if (a->caps[INTERP_CAP_NORMALIZE] && len > 0) {
             for (int k = 0; k < 3; k++)
                 n[k] /= len;
         } else if (a->caps[INTERP_CAP_RESCALE_NORMAL]) {
-            double r = sqrt(inv.m[2] * inv.m[2] + inv.m[6] * inv.m[6] + inv.m[10] * inv.m[10]);
+            double r = sqrt(inv->m[2] * inv->m[2] + inv->m[6] * inv->m[6] + inv->m[10] * inv->m[10]);
             if (r > 0)
                 for (int k = 0; k < 3; k++)
                     n[k] /= r;
