@@ -480,8 +480,11 @@ size_t numfmt_f32(char *out, float value)
 
     /* Integers below 2^24: their own digits are the shortest (the interval
      * is at most one wide). */
-    if (e2 <= 0 && e2 > -24 && (m & ((1u << -e2) - 1)) == 0)
-        return neg + put_decimal(out, m >> -e2, 0);
+    if (e2 <= 0 && e2 > -24 && (m & ((1u << -e2) - 1)) == 0) {
+        uint32_t iv = m >> -e2;
+        /* Below 10^4 fixed notation is never longer than three past scientific. */
+        return neg + (iv < 10000 ? put_small(out, iv) : put_decimal(out, iv, 0));
+    }
 
     /* The fast path: the nine-digit scaling of the interval, in double. */
     float fa;
