@@ -394,11 +394,16 @@ static inline void put8(char *out, uint64_t w)
 
 static size_t fast_fixed(char *out, uint32_t d, int n, int x)
 {
-    int fixed_len = x >= n - 1 ? x + 1 : (x >= 0 ? n + 1 : n + 1 - x);
-    int ax = x < 0 ? -x : x;
-    int sci_len = n + (n > 1) + 1 + (x < 0) + (ax >= 10 ? 2 : 1);
-    if (fixed_len > sci_len + 3 || x > 8)
-        return 0;
+    int fixed_len;
+    if (x >= 0 && x < n - 1) { /* d.ddd (most numbers): n + 1 long, shorter than d.ddde0 */
+        fixed_len = n + 1;
+    } else {
+        fixed_len = x >= n - 1 ? x + 1 : n + 1 - x;
+        int ax = x < 0 ? -x : x;
+        int sci_len = n + (n > 1) + 1 + (x < 0) + (ax >= 10 ? 2 : 1);
+        if (fixed_len > sci_len + 3 || x > 8)
+            return 0;
+    }
     /* Nine digits, zeros after the n significant ones: c0, then w. */
     uint32_t D = d * pow10_u32[9 - n];
     char c0 = (char)('0' + D / 100000000);
@@ -459,6 +464,17 @@ static size_t general(char *out, uint32_t u)
 }
 
 
+/* [a, b] divided by p when it holds a multiple of p (ceiling, floor). */
+static inline bool drop_digits(uint32_t *a, uint32_t *b, uint32_t p)
+{
+    uint32_t ap = (*a + p - 1) / p, bp = *b / p;
+    if (ap > bp)
+        return false;
+    *a = ap;
+    *b = bp;
+    return true;
+}
+
 size_t numfmt_f32(char *out, float value)
 {
     uint32_t u;
@@ -508,16 +524,17 @@ size_t numfmt_f32(char *out, float value)
         (double)(b + 1) - shi <= eps || a > b || s < 1e8)
         return neg + general(out, u);
 
-    /* Drop trailing digits while [a, b] still holds a multiple of ten. */
+    /* Drop trailing digits while [a, b] still holds a multiple of ten:
+     * one or two at a time (most numbers), then by 10^4, 10^2, 10 for the
+     * round ones (0.2 drops eight): holding a multiple of 10^j is monotone
+     * in j, and ceil(ceil(a/p)/q) = ceil(a/pq), so the greedy steps end
+     * where the loop would. */
     uint32_t a32 = (uint32_t)a, b32 = (uint32_t)b;
     int t = 0;
-    for (;;) {
-        uint32_t a10 = (a32 + 9) / 10, b10 = b32 / 10;
-        if (a10 > b10)
-            break;
-        a32 = a10;
-        b32 = b10;
-        t++;
+    if (drop_digits(&a32, &b32, 10) && ++t && drop_digits(&a32, &b32, 10) && ++t) {
+        t += drop_digits(&a32, &b32, 10000) ? 4 : 0;
+        t += drop_digits(&a32, &b32, 100) ? 2 : 0;
+        t += drop_digits(&a32, &b32, 10) ? 1 : 0;
     }
     uint32_t d = (uint32_t)(s * p10[60 - t] + 0.5);
     d = d < a32 ? a32 : (d > b32 ? b32 : d);
