@@ -290,16 +290,10 @@ rgl_status rgl_cmd_next(rgl_cmd_iter *it, rgl_cmd *cmd)
 uint32_t rgl_cmd_skip_floats(rgl_cmd_iter *it)
 {
     const uint8_t *p = it->pos;
-    if (it->error.status != RGL_OK || p >= it->end || p[0] >= 0x80 || p[0] == 0)
+    if (it->error.status != RGL_OK || p >= it->end || p[0] >= 0x80)
         return 0;
-    const rgl_cmd_info *info = rgl_cmd_info_get(p[0]);
-    if (!info || info->nargs == 0)
-        return 0;
-    for (uint32_t i = 0; i < info->nargs; i++)
-        if (info->args[i].kind != RGL_ARG_SCALAR || info->args[i].type != RGL_T_f)
-            return 0;
-    size_t n = 1 + 4 * (size_t)info->nargs;
-    if ((size_t)(it->end - p) < n)
+    size_t n = rgl_cmd_float_size(p[0]);
+    if (n == 0 || (size_t)(it->end - p) < n)
         return 0;
     it->pos = p + n;
     it->index++;

@@ -116,20 +116,22 @@ int main(void)
     CHECK(rgl_cmd_next(&it, &back) == RGL_END && rgl_cmd_next(&it, &back) == RGL_END);
     printf("  all %zu rows in one sequence of %zu bytes: order, indices, offsets\n", nrows, len);
     /* The same sequence stepped over with rgl_cmd_skip_floats where it
-     * may: exactly the all-float rows, to where rgl_cmd_next goes, and a
+     * may: exactly the all-float calls (no records), to where rgl_cmd_next goes, and a
      * float row cut short is left to rgl_cmd_next. */
     rgl_cmd_iter skip;
     rgl_cmd_iter_init(&skip, buf, len, 5000);
     size_t nskipped = 0;
     for (size_t row = 0; row < nrows; row++) {
         const rgl_cmd_info *info = all[row];
-        bool floats = info->nargs > 0 && info->opcode < 0x80 && info->opcode > 0;
+        bool floats = info->nargs > 0 && info->opcode < 0x80 && info->api != RGL_API_REC;
         for (uint32_t i = 0; i < info->nargs; i++)
             floats = floats && info->args[i].kind == RGL_ARG_SCALAR &&
                      info->args[i].type == RGL_T_f;
         const uint8_t *at = skip.pos;
         uint32_t op = rgl_cmd_skip_floats(&skip);
         CHECKF(op == (floats ? info->opcode : 0u), "%s: skip_floats %u", info->name, op);
+        CHECKF(rgl_cmd_float_size(info->opcode) == (floats ? 1u + 4u * info->nargs : 0u),
+               "%s: float size", info->name);
         if (op) {
             rgl_cmd_iter one;
             rgl_cmd_iter_init(&one, at, (size_t)(buf + len - at), 0);

@@ -20,10 +20,8 @@ front_scan front_scan_frame(const rgl_frame_info *fi)
     rgl_cmd cmd;
     for (;;) {
         /* Vertices, normals and colours are most of a frame: stepped over. */
-        uint32_t skipped = rgl_cmd_skip_floats(&it);
-        if (skipped) {
-            if (rgl_cmd_info_get(skipped)->api != RGL_API_REC)
-                r.flushed = false;
+        if (rgl_cmd_skip_floats(&it)) {
+            r.flushed = false;
             continue;
         }
         if (rgl_cmd_next(&it, &cmd) != RGL_OK)
