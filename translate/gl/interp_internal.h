@@ -121,7 +121,7 @@ struct interp {
     mat4 prim_clip;     /* object -> clip space of the primitive's own projection */
     uint8_t *edge;      /* edge flag of each vertex of the primitive */
     size_t cap_edge;
-    double (*clipv)[3]; /* clip-space x, y, w of each vertex (culling) */
+    double (*clipv)[5]; /* clip-space x, y, w of each vertex (culling), then x/w, y/w */
     size_t cap_clipv;
     float prim_alpha;        /* the first vertex's alpha (interp_alpha_vertex) */
     bool prim_alpha_varies;  /* another vertex's differs */
