@@ -26,7 +26,7 @@ python3 - "$tmp" "$verts" "$runs" "$printf_s" "$build/translate/raygl2pov" $base
 import os, shutil, statistics, subprocess, sys, time
 tmp, verts, runs, printf_s = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), float(sys.argv[4])
 bins = [("new", sys.argv[5])] + ([("base", sys.argv[6])] if len(sys.argv) > 6 else [])
-res = {name: ([], []) for name, _ in bins}
+res = {name: ([], [], [], []) for name, _ in bins}
 size = {}
 for k in range(runs):
     for name, exe in (bins if k % 2 == 0 else bins[::-1]):
@@ -40,6 +40,8 @@ for k in range(runs):
             sys.exit("bench_cli: %s failed (status %d)" % (exe, status))
         res[name][0].append(ru.ru_utime + ru.ru_stime)
         res[name][1].append(wall)
+        res[name][2].append(ru.ru_utime)
+        res[name][3].append(ru.ru_stime)
         size[name] = sum(os.path.getsize(os.path.join(out, f)) for f in os.listdir(out))
 print("raygl2pov -j 1, strips trace: 4 frames, %d vertices sent; medians of %d runs"
       % (verts, runs))
@@ -52,6 +54,8 @@ for name, exe in bins:
     print("  %-4s %s: %.3f s CPU %5.2f M vertices/s, %.3f s wall %5.2f M vertices/s, "
           "%.1f MB written, CPU %.2fx printf" % (name, exe, cpu, verts / cpu / 1e6, wall,
           verts / wall / 1e6, size[name] / 1e6, cpu / printf_s))
+    print("       user %.3f s, system %.3f s" % (statistics.median(res[name][2]),
+          statistics.median(res[name][3])))
 if "base" in med:
     print("  new/base speed: %.2fx CPU, %.2fx wall" % (med["base"][0] / med["new"][0],
           med["base"][1] / med["new"][1]))
