@@ -287,6 +287,19 @@ rgl_status rgl_cmd_next(rgl_cmd_iter *it, rgl_cmd *cmd)
     return RGL_OK;
 }
 
+uint32_t rgl_cmd_skip_floats(rgl_cmd_iter *it)
+{
+    const uint8_t *p = it->pos;
+    if (it->error.status != RGL_OK || p >= it->end || p[0] >= 0x80)
+        return 0;
+    size_t n = rgl_cmd_float_size(p[0]);
+    if (n == 0 || (size_t)(it->end - p) < n)
+        return 0;
+    it->pos = p + n;
+    it->index++;
+    return p[0];
+}
+
 static int64_t double_to_i64(double d)
 {
     if (isnan(d))

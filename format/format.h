@@ -238,6 +238,20 @@ void rgl_cmd_iter_init(rgl_cmd_iter *it, const uint8_t *data, size_t size, uint6
  * re-encodes (rgl_cmd_encode) to exactly its input bytes. */
 rgl_status rgl_cmd_next(rgl_cmd_iter *it, rgl_cmd *cmd);
 
+/* The wire size of a call (a GL, GLU, GLUT or RayGL command, not a
+ * record) whose opcode is one byte and whose arguments are all float
+ * scalars, one at least (glVertex3f, glNormal3f, glColor4f, ...): 1 + 4 per
+ * argument; 0 for any other opcode. */
+uint32_t rgl_cmd_float_size(uint32_t opcode);
+
+/* Steps over the next command without decoding it when it is such a call
+ * (rgl_cmd_float_size): for a scan that looks at the other commands only
+ * (a float argument cannot be malformed, so rgl_cmd_next would read exactly
+ * those bytes). Returns the opcode skipped, or 0 (nothing done: another
+ * command, one cut short, the end, or an error) for the caller to take
+ * rgl_cmd_next. */
+uint32_t rgl_cmd_skip_floats(rgl_cmd_iter *it);
+
 /* A scalar (k = 0) or the k-th element of an array argument (or byte of a
  * blob or string), as double / int64; 0 when k is out of range. rgl_arg_i
  * truncates floating values toward zero, saturates at the int64 limits and

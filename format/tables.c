@@ -89,6 +89,50 @@ const rgl_cmd_info *rgl_cmd_info_get(uint32_t opcode)
     }
 }
 
+/* Per argument: 4 for a float scalar, past any row's size for the others. */
+#define RGL_FSZ_P(t, n) +RGL_FSZ_T_##t
+#define RGL_FSZ_A(t, n, cnt) +1000
+#define RGL_FSZ_N(t, n, cnt) +1000
+#define RGL_FSZ_BLOB(n) +1000
+#define RGL_FSZ_STR(n) +1000
+#define RGL_FSZ_NOARGS +1000
+#define RGL_FSZ_T_f 4
+#define RGL_FSZ_T_b 1000
+#define RGL_FSZ_T_ub 1000
+#define RGL_FSZ_T_s 1000
+#define RGL_FSZ_T_us 1000
+#define RGL_FSZ_T_i 1000
+#define RGL_FSZ_T_sz 1000
+#define RGL_FSZ_T_ui 1000
+#define RGL_FSZ_T_e 1000
+#define RGL_FSZ_T_bf 1000
+#define RGL_FSZ_T_h 1000
+#define RGL_FSZ_T_d 1000
+#define RGL_FSZ_T_bo 1000
+#define RGL_FSZ_T_ip 1000
+#define RGL_FSZ_API_GL 1
+#define RGL_FSZ_API_GLU 1
+#define RGL_FSZ_API_GLUT 1
+#define RGL_FSZ_API_RAY 1
+#define RGL_FSZ_API_REC 0
+
+/* Constant cases: the compiler turns the switch into a table. */
+uint32_t rgl_cmd_float_size(uint32_t opcode)
+{
+    switch (opcode) {
+#define RGL_CMD(op, api, gen, name, handler, ...)                                   \
+    case op:                                                                        \
+        return RGL_FSZ_API_##api && (op) < 0x80 &&                                  \
+                       (0 RGL_MAP(RGL_FSZ_, __VA_ARGS__)) < 1000                    \
+                   ? 1 + (0 RGL_MAP(RGL_FSZ_, __VA_ARGS__))                         \
+                   : 0;
+#include RGL_COMMANDS_DEF
+#undef RGL_CMD
+    default:
+        return 0;
+    }
+}
+
 const rgl_cmd_info *const *rgl_cmd_info_all(size_t *count)
 {
     if (count)

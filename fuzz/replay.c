@@ -1,15 +1,19 @@
-/* replay.c: runs the fuzz target over files, without libFuzzer.
+/* replay.c: runs a fuzz target over files, without libFuzzer.
  *
  * Usage: fuzz-replay PATH...  where each PATH is a file or a directory of
  * files (not recursive). Every input goes through LLVMFuzzerTestOneInput, as
  * under the fuzzer; a failed check aborts. This is how the seed corpus and
- * every minimised crasher run in each `meson test`.
+ * every minimised crasher run in each `meson test`. Linked with each fuzz
+ * target (format's fuzz-replay, the translator's fuzz-translate-replay); the
+ * messages carry the program's own name.
  */
 #include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+
+static const char *prog = "fuzz-replay";
 
 int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size);
 
@@ -19,7 +23,7 @@ static int replay_file(const char *path)
     unsigned char *buf = NULL;
     size_t size = 0, cap = 0, n;
     if (!f) {
-        fprintf(stderr, "fuzz-replay: %s: cannot open\n", path);
+        fprintf(stderr, "%s: %s: cannot open\n", prog, path);
         return -1;
     }
     do {
@@ -45,10 +49,14 @@ static int replay_file(const char *path)
 int main(int argc, char **argv)
 {
     unsigned long count = 0, failed = 0;
+    if (argc > 0 && argv[0][0]) {
+        const char *slash = strrchr(argv[0], '/');
+        prog = slash ? slash + 1 : argv[0];
+    }
     for (int i = 1; i < argc; i++) {
         struct stat sb;
         if (stat(argv[i], &sb) != 0) {
-            fprintf(stderr, "fuzz-replay: %s: not found\n", argv[i]);
+            fprintf(stderr, "%s: %s: not found\n", prog, argv[i]);
             failed++;
             continue;
         }
@@ -75,6 +83,6 @@ int main(int argc, char **argv)
         }
         closedir(d);
     }
-    printf("fuzz-replay: %lu inputs replayed, %lu unreadable\n", count, failed);
+    printf("%s: %lu inputs replayed, %lu unreadable\n", prog, count, failed);
     return failed || count == 0 ? 1 : 0;
 }

@@ -7,18 +7,20 @@ set -eu
 PACKAGES="gcc pkg-config meson ninja-build python3 khronos-api libgl-dev libglu1-mesa-dev freeglut3-dev
 libosmesa6-dev libpng-dev zlib1g-dev povray xvfb xauth locales slurm-wlm munge parallel ffmpeg
 libegl-dev libx11-dev mesa-utils xscreensaver-gl man-db groff-base binutils
-build-essential debhelper dpkg-dev fakeroot lintian nodejs"
+build-essential debhelper dpkg-dev fakeroot lintian nodejs chromium"
 # Blender with numpy: raygl-render --engine blender and suite blender
 # (Blender 3.4's glTF importer needs numpy; about 27 MB to download).
 PACKAGES="$PACKAGES blender python3-numpy"
 # Debian's npm, unless a nodejs that bundles its own (and conflicts with
 # Debian's npm package) is installed already.
 command -v npm >/dev/null 2>&1 || PACKAGES="$PACKAGES npm"
-# The glTF tests' validator (npm package gltf-validator, pinned in
-# tools/node/package-lock.json), installed into tools/node/node_modules.
+# The glTF tests' validator and three.js (npm packages gltf-validator and
+# three, pinned in tools/node/package-lock.json; three.js renders .glb
+# frames in chromium for suite gltf-image), installed into
+# tools/node/node_modules.
 node_tools() {
     dir="$(dirname "$0")/node"
-    [ -d "$dir/node_modules/gltf-validator" ] && return 0
+    [ -d "$dir/node_modules/gltf-validator" ] && [ -d "$dir/node_modules/three" ] && return 0
     command -v npm >/dev/null 2>&1 || return 0
     (cd "$dir" && npm ci --no-audit --no-fund --loglevel=error)
 }

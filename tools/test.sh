@@ -57,12 +57,19 @@ run_suite() { # build-dir, meson setup options...
     counts=$(python3 - "$dir/meson-logs/testlog.json" <<'PY'
 import json, sys
 ok = bad = 0
+skipped = []
 for line in open(sys.argv[1]):
-    r = json.loads(line)["result"]
+    t = json.loads(line)
+    r = t["result"]
     if r in ("OK", "EXPECTEDFAIL", "SKIP"):
         ok += r != "SKIP"
+        if r == "SKIP":
+            skipped.append(t["name"])
     else:
         bad += 1
+# A skip is a tool the machine lacks: say which, so that it is never silent.
+if skipped:
+    print("%d skipped: %s" % (len(skipped), " ".join(skipped)), file=sys.stderr)
 print(ok, bad)
 PY
 ) || counts="0 1"

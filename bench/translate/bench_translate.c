@@ -2,6 +2,8 @@
  *
  *   bench_translate [--frames N] [--tris N] [--runs N] [--povray PATH|none] [--keep DIR]
  *                   [--no-printf] [--layout strips|triangles|strips1]
+ *   bench_translate --write-trace FILE [--frames N] [--tris N] [--layout L]
+ *   bench_translate --printf-positions [--frames N] [--tris N] [--runs N]
  *
  * Builds a trace in memory with rgl_trace_builder: N frames (default 4) of
  * a lit torus (default 262144 triangles per frame, so 1M over the frames),
@@ -24,6 +26,13 @@
  * (64x48, no antialiasing), once with a colour per vertex and once with one
  * colour; POV-Ray's own parse time and the peak memory (/usr/bin/time -v)
  * are reported. Figures only: never pass/fail.
+ *
+ * With --write-trace, the layout's trace (strips unless --layout says) is
+ * written to FILE and nothing is measured: bench/translate/bench_cli.sh
+ * times the raygl2pov command line on it. With --printf-positions, the
+ * median CPU seconds snprintf("%.9g") takes to format the positions of
+ * every vertex sent in the strips trace (three numbers each) is printed:
+ * the issue's printf baseline, beside which that script puts raygl2pov.
  */
 #include <GL/gl.h>
 #include <math.h>
@@ -170,6 +179,31 @@ typedef struct layout_result {
 
 static bool compare_printf = true;
 static const char *only_layout = NULL;
+
+/* The layout's trace as a file, for the command-line benchmark. */
+static int write_trace(const char *path, int strips, int nframes, size_t tris)
+{
+    rgl_trace_builder *tb = rgl_trace_builder_create();
+    size_t verts = 0;
+    for (int f = 0; f < nframes; f++) {
+        buf b = {0};
+        verts += build_frame(&b, tris, strips, 0.1 * f);
+        rgl_trace_builder_frame(tb, 0, (uint32_t)f, 0, 0, b.data, b.len);
+        free(b.data);
+    }
+    const uint8_t *data;
+    size_t size;
+    rgl_trace_builder_finish(tb, true, &data, &size);
+    FILE *f = fopen(path, "wb");
+    int rc = 0;
+    if (!f || fwrite(data, 1, size, f) != size || fclose(f) != 0) {
+        fprintf(stderr, "bench_translate: %s: cannot write\n", path);
+        rc = 1;
+    } else
+        printf("%zu\n", verts);
+    rgl_trace_builder_destroy(tb);
+    return rc;
+}
 
 static void run_layout(const char *name, int strips, int nframes, size_t tris, int runs,
                        const char *keep)
@@ -352,11 +386,43 @@ static void run_povray(const char *povray, size_t tris, const char *dir, bool co
     rgl_trace_builder_destroy(tb);
 }
 
+/* snprintf("%.9g") over the positions of every vertex the strips frames
+ * send, alone: median CPU seconds of `runs`. */
+static double printf_positions(int nframes, size_t tris, int runs)
+{
+    int sides = 256, rings = (int)(tris / (2 * (size_t)sides));
+    if (rings < 3)
+        rings = 3;
+    size_t n = 0, cap = (size_t)nframes * (size_t)rings * (size_t)(sides + 1) * 6;
+    float *pos = malloc(cap * sizeof *pos);
+    for (int f = 0; f < nframes; f++)
+        for (int i = 0; i < rings; i++)
+            for (int j = 0; j <= sides; j++)
+                for (int h = 1; h >= 0; h--) {
+                    double u = 2 * M_PI * (i + h) / rings + 0.1 * f, v = 2 * M_PI * j / sides;
+                    pos[n++] = (float)((2 + 0.7 * cos(v)) * cos(u));
+                    pos[n++] = (float)((2 + 0.7 * cos(v)) * sin(u));
+                    pos[n++] = (float)(0.7 * sin(v));
+                }
+    char text[64];
+    double t[32], sink = 0;
+    for (int k = 0; k < runs; k++) {
+        double t0 = now();
+        for (size_t i = 0; i < n; i++)
+            sink += snprintf(text, sizeof text, "%.9g,", (double)pos[i]);
+        t[k] = now() - t0;
+    }
+    free(pos);
+    fprintf(stderr, "(%zu positions, %.0f bytes)\n", n / 3, sink / runs);
+    return median(t, runs);
+}
+
 int main(int argc, char **argv)
 {
+    bool printf_only = false;
     int nframes = 4, runs = 5;
     size_t tris = 262144;
-    const char *povray = "povray", *keep = NULL;
+    const char *povray = "povray", *keep = NULL, *trace_out = NULL;
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--frames") == 0 && i + 1 < argc)
             nframes = atoi(argv[++i]);
@@ -368,15 +434,30 @@ int main(int argc, char **argv)
             povray = argv[++i];
         else if (strcmp(argv[i], "--keep") == 0 && i + 1 < argc)
             keep = argv[++i];
+        else if (strcmp(argv[i], "--write-trace") == 0 && i + 1 < argc)
+            trace_out = argv[++i];
+        else if (strcmp(argv[i], "--printf-positions") == 0)
+            printf_only = true;
         else if (strcmp(argv[i], "--no-printf") == 0)
             compare_printf = false;
         else if (strcmp(argv[i], "--layout") == 0 && i + 1 < argc)
             only_layout = argv[++i];
         else {
             fprintf(stderr, "usage: bench_translate [--frames N] [--tris N] [--runs N] "
-                            "[--povray PATH|none] [--keep DIR] [--no-printf] [--layout strips|triangles|strips1]\n");
+                            "[--povray PATH|none] [--keep DIR] [--no-printf] [--layout strips|triangles|strips1] "
+                            "[--write-trace FILE] [--printf-positions]\n");
             return 2;
         }
+    }
+    if (printf_only) {
+        printf("%.6f\n", printf_positions(nframes, tris, runs < 1 ? 1 : runs > 32 ? 32 : runs));
+        return 0;
+    }
+    if (trace_out) {
+        /* The vertex count on stdout, for the script's figures. */
+        vary_colour = !only_layout || strcmp(only_layout, "strips1") != 0;
+        return write_trace(trace_out, !only_layout || strcmp(only_layout, "triangles") != 0,
+                           nframes, tris);
     }
     if (runs < 1)
         runs = 1;

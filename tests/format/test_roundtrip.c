@@ -113,9 +113,39 @@ int main(void)
         CHECK(back.opcode == all[row]->opcode && back.index == row);
         CHECK(back.offset == 5000 + starts[row]);
     }
-    free(starts);
     CHECK(rgl_cmd_next(&it, &back) == RGL_END && rgl_cmd_next(&it, &back) == RGL_END);
     printf("  all %zu rows in one sequence of %zu bytes: order, indices, offsets\n", nrows, len);
+    /* The same sequence stepped over with rgl_cmd_skip_floats where it
+     * may: exactly the all-float calls (no records), to where rgl_cmd_next goes, and a
+     * float row cut short is left to rgl_cmd_next. */
+    rgl_cmd_iter skip;
+    rgl_cmd_iter_init(&skip, buf, len, 5000);
+    size_t nskipped = 0;
+    for (size_t row = 0; row < nrows; row++) {
+        const rgl_cmd_info *info = all[row];
+        bool floats = info->nargs > 0 && info->opcode < 0x80 && info->api != RGL_API_REC;
+        for (uint32_t i = 0; i < info->nargs; i++)
+            floats = floats && info->args[i].kind == RGL_ARG_SCALAR &&
+                     info->args[i].type == RGL_T_f;
+        const uint8_t *at = skip.pos;
+        uint32_t op = rgl_cmd_skip_floats(&skip);
+        CHECKF(op == (floats ? info->opcode : 0u), "%s: skip_floats %u", info->name, op);
+        CHECKF(rgl_cmd_float_size(info->opcode) == (floats ? 1u + 4u * info->nargs : 0u),
+               "%s: float size", info->name);
+        if (op) {
+            rgl_cmd_iter one;
+            rgl_cmd_iter_init(&one, at, (size_t)(buf + len - at), 0);
+            CHECK(rgl_cmd_next(&one, &back) == RGL_OK && one.pos == skip.pos);
+            CHECK(skip.index == row + 1);
+            rgl_cmd_iter_init(&one, at, (size_t)(skip.pos - at) - 1, 0);
+            CHECK(rgl_cmd_skip_floats(&one) == 0 && one.pos == at);
+            nskipped++;
+        } else if (!CHECK(rgl_cmd_next(&skip, &back) == RGL_OK)) {
+            break;
+        }
+    }
+    CHECK(nskipped > 0 && rgl_cmd_skip_floats(&skip) == 0 && skip.pos == buf + len);
+    free(starts);
 
     /* The encoder refuses arguments outside their descriptors. */
     rgl_cmd_init(&cmd, RGL_OP_Color3ub);

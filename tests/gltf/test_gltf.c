@@ -164,6 +164,8 @@ static void test_bounds_and_camera(void)
     triangle(&s, &m, &l);
     gltf_stats st;
     char *j = write_glb(&s, "bounds_camera", &st, NULL);
+    /* red, green and blue corners: the interpolation in linear light noted */
+    CHECK(strstr(j, "colours that vary across a face or line") != NULL);
     CHECK_NEAR(jarr(j, "min", 0), -1, 0);
     CHECK_NEAR(jarr(j, "min", 1), 0.5, 0);
     CHECK_NEAR(jarr(j, "min", 2), -5, 0);
@@ -315,16 +317,20 @@ static void test_materials_lights(void)
     CHECK(count(j, "\"mode\":4") == 3); /* the invisible ones dropped */
     /* the alpha test GL_GREATER 0.25 */
     CHECK(strstr(j, "\"alphaMode\":\"MASK\",\"alphaCutoff\":0.25") != NULL);
-    /* lit: diffuse as base colour, (2 / (n + 2))^(1/4) roughness, specular */
-    CHECK_NEAR(jarr(j, "baseColorFactor", 0), 0.7, 1e-6);
-    CHECK_NEAR(jarr(j, "baseColorFactor", 1), 0.25, 1e-6);
+    /* lit: diffuse as base colour (linear: GL's 0.7 is the display value
+     * ((0.7 + 0.055) / 1.055)^2.4 = 0.448), (2 / (n + 2))^(1/4) roughness,
+     * specular 0.3 (linear 0.0732) x 200 / (30 + 2) */
+    CHECK_NEAR(jarr(j, "baseColorFactor", 0), 0.44798841, 1e-6);
+    CHECK_NEAR(jarr(j, "baseColorFactor", 1), 0.05087609, 1e-6);
+    CHECK_NEAR(jarr(j, "baseColorFactor", 3), 1, 0);
     CHECK_NEAR(jnum(j, "roughnessFactor", 0), 0.5, 1e-6);
-    CHECK_NEAR(jarr(j, "specularColorFactor", 0), 0.3, 1e-6);
+    CHECK_NEAR(jarr(j, "specularColorFactor", 0), 0.07323896 * 200 / 32, 1e-6);
     CHECK_NEAR(jnum(j, "specularFactor", 0), 1, 0);
     CHECK_NEAR(jnum(j, "specularFactor", 1), 0, 0);
     /* GL's ambient: model 0.2 x material 0.2 = 0.04 into emissive (the
-     * lights have no ambient) */
-    CHECK_NEAR(jarr(j, "emissiveFactor", 0), 0.04, 1e-6);
+     * lights have no ambient), linear 0.04 / 12.92 */
+    CHECK_NEAR(jarr(j, "emissiveFactor", 0), 0.04 / 12.92, 1e-6);
+    CHECK(strstr(j, "lit surfaces: glTF viewers light in linear light") != NULL);
     CHECK(count(j, "\"alphaMode\":\"BLEND\"") == 1);
     CHECK(count(j, "\"doubleSided\":true") == 3);
     /* colour material: COLOR_0 on the second primitive (and the unlit one) */
@@ -333,7 +339,8 @@ static void test_materials_lights(void)
      * constant attenuation 2 over the fitted 1/d^2 at the scene's centre */
     CHECK(strstr(j, "KHR_lights_punctual") != NULL);
     CHECK_EQ_U(st.lights, 2);
-    CHECK_NEAR(jnum(j, "intensity", 0), 0.5 * PI, 1e-5);
+    /* (GL's 0.5 is linear 0.214) */
+    CHECK_NEAR(jnum(j, "intensity", 0), 0.21404114 * PI, 1e-5);
     /* the first vertices' centre (0, 0, -5.5) lies 46.25^(1/2) from the spot */
     CHECK_NEAR(jnum(j, "intensity", 1), PI * 46.25 / 2, 1e-4);
     CHECK_NEAR(jnum(j, "outerConeAngle", 0), 30 * PI / 180, 1e-6);

@@ -22,54 +22,20 @@ usage() {
     echo "usage: $0 --name NAME --program PROG --raygl2pov R2P --povray POVRAY --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]... [-- IMGCMP-OPTIONS...]" >&2
     exit 2
 }
-name='' prog='' r2p='' povray='' imgcmp='' outdir='' size='' r2p_opts=''
+. "$(dirname "$0")/image-test-args.sh"
 while [ $# -gt 0 ]; do
     case $1 in
     --) shift; break ;;
-    --name|--program|--raygl2pov|--povray|--imgcmp|--outdir|--size|--r2p-opt)
-        [ $# -ge 2 ] || usage
-        case $1 in
-        --name) name=$2 ;;
-        --program) prog=$2 ;;
-        --raygl2pov) r2p=$2 ;;
-        --povray) povray=$2 ;;
-        --imgcmp) imgcmp=$2 ;;
-        --outdir) outdir=$2 ;;
-        --size) size=$2 ;;
-        --r2p-opt)
-            case $2 in
-            *[!A-Za-z0-9.=-]*) echo "$0: --r2p-opt '$2': letters, digits, '.', '=' and '-' only" >&2; exit 2 ;;
-            esac
-            r2p_opts="$r2p_opts $2" ;;
-        esac
-        shift 2 ;;
-    *) echo "$0: unknown argument $1" >&2; usage ;;
     esac
+    common_option "$@" || usage
+    shift 2
 done
-if [ -z "$name" ] || [ -z "$prog" ] || [ -z "$r2p" ] || [ -z "$povray" ] || [ -z "$imgcmp" ] ||
-    [ -z "$outdir" ]; then
-    usage
-fi
-case $name in *[!A-Za-z0-9_-]*) echo "$0: --name '$name': letters, digits, '_' and '-' only" >&2; exit 2 ;; esac
+common_finish
 
 fail() {
     echo "frames $name: FAIL: $*"
     exit 1
 }
-# The steps run in the test's directory: relative paths (as meson passes
-# them) become absolute; a bare name is left to PATH.
-absolute() {
-    case $1 in
-    /*) printf '%s\n' "$1" ;;
-    */*) printf '%s/%s\n' "$PWD" "$1" ;;
-    *) printf '%s\n' "$1" ;;
-    esac
-}
-prog=$(absolute "$prog")
-r2p=$(absolute "$r2p")
-povray=$(absolute "$povray")
-imgcmp=$(absolute "$imgcmp")
-outdir=$(absolute "$outdir")
 dir=$outdir/$name
 if ! rm -rf "$dir" || ! mkdir -p "$dir/pov"; then
     fail "cannot create $dir"

@@ -32,56 +32,19 @@ usage() {
     exit 2
 }
 
-name= prog= r2p= povray= imgcmp= outdir= size= r2p_opts= program_leak_check=1 pov_aa=-A
+. "$(dirname "$0")/image-test-args.sh"
+program_leak_check=1 pov_aa=-A
 while [ $# -gt 0 ]; do
     case $1 in
     --help) usage ;;
     --) shift; break ;;
     --no-program-leak-check) program_leak_check=0; shift; continue ;;
     --ini-antialias) pov_aa=; shift; continue ;;
-    --name|--program|--raygl2pov|--povray|--imgcmp|--outdir|--size|--r2p-opt)
-        [ $# -ge 2 ] || usage
-        case $1 in
-        --name) name=$2 ;;
-        --program) prog=$2 ;;
-        --raygl2pov) r2p=$2 ;;
-        --povray) povray=$2 ;;
-        --imgcmp) imgcmp=$2 ;;
-        --outdir) outdir=$2 ;;
-        --size) size=$2 ;;
-        --r2p-opt)
-            case $2 in
-            *[!A-Za-z0-9.=-]*) echo "$0: --r2p-opt '$2': letters, digits, '.', '=' and '-' only" >&2; exit 2 ;;
-            esac
-            r2p_opts="$r2p_opts $2" ;;
-        esac
-        shift 2 ;;
-    *) echo "$0: unknown argument $1" >&2; usage ;;
     esac
+    common_option "$@" || usage
+    shift 2
 done
-[ -n "$name" ] && [ -n "$prog" ] && [ -n "$r2p" ] && [ -n "$povray" ] &&
-    [ -n "$imgcmp" ] && [ -n "$outdir" ] || usage
-case $name in
-*/*|.*|'') echo "$0: bad test name '$name'" >&2; exit 2 ;;
-esac
-
-# The steps run in the test's directory: make relative paths absolute (a
-# bare name is left to PATH).
-absolute() {
-    case $1 in
-    /*) printf '%s\n' "$1" ;;
-    */*) printf '%s/%s\n' "$PWD" "$1" ;;
-    *) printf '%s\n' "$1" ;;
-    esac
-}
-prog=$(absolute "$prog")
-r2p=$(absolute "$r2p")
-povray=$(absolute "$povray")
-imgcmp=$(absolute "$imgcmp")
-case $outdir in
-/*) ;;
-*) outdir=$PWD/$outdir ;;
-esac
+common_finish
 
 dir=$outdir/$name
 # Runs of one test at once (meson test --repeat starts them in parallel)

@@ -18,7 +18,14 @@ front_scan front_scan_frame(const rgl_frame_info *fi)
     rgl_cmd_iter it;
     rgl_cmd_iter_init(&it, fi->commands, fi->commands_size, fi->commands_offset);
     rgl_cmd cmd;
-    while (rgl_cmd_next(&it, &cmd) == RGL_OK) {
+    for (;;) {
+        /* Vertices, normals and colours are most of a frame: stepped over. */
+        if (rgl_cmd_skip_floats(&it)) {
+            r.flushed = false;
+            continue;
+        }
+        if (rgl_cmd_next(&it, &cmd) != RGL_OK)
+            break;
         const rgl_cmd_info *info = cmd.info;
         if (!info || info->api == RGL_API_REC || info->opcode == RGL_OP_FrameEnd)
             continue;

@@ -104,6 +104,11 @@ struct interp {
     bool prim_skip;     /* vertices are dropped (no scene, or a bad transform) */
     size_t prim_first;  /* first vertex of the primitive in scene->verts */
     mat4 prim_to_eye;   /* object -> camera eye space for this primitive */
+    /* lit_line_colour's last modelview and its inverse (ok: invertible),
+     * kept while the matrix stays bit for bit the same: one inversion per
+     * matrix, not per vertex. */
+    mat4 lit_mv, lit_mv_inv;
+    bool lit_mv_set, lit_mv_ok;
     bool prim_in_eye;   /* prim_to_eye is applied to the vertices themselves */
     uint8_t prim_blend; /* SCENE_BLEND_* of the primitive */
     int draw_unit[2];   /* the draw's first two enabled texture units, or -1 */
@@ -116,7 +121,7 @@ struct interp {
     mat4 prim_clip;     /* object -> clip space of the primitive's own projection */
     uint8_t *edge;      /* edge flag of each vertex of the primitive */
     size_t cap_edge;
-    double (*clipv)[3]; /* clip-space x, y, w of each vertex (culling) */
+    double (*clipv)[5]; /* clip-space x, y, w of each vertex (culling), then x/w, y/w */
     size_t cap_clipv;
     float prim_alpha;        /* the first vertex's alpha (interp_alpha_vertex) */
     bool prim_alpha_varies;  /* another vertex's differs */

@@ -407,17 +407,22 @@ static void lit_line_colour(interp *ip, double x, double y, double z, float out[
     mat4_apply(mv, in, o);
     for (int k = 0; k < 3; k++)
         p[k] = o[3] != 0 ? o[k] / o[3] : o[k];
-    mat4 inv;
-    if (mat4_invert(mv, &inv)) {
+    if (!ip->lit_mv_set || memcmp(&ip->lit_mv, mv, sizeof *mv) != 0) {
+        ip->lit_mv = *mv;
+        ip->lit_mv_ok = mat4_invert(mv, &ip->lit_mv_inv);
+        ip->lit_mv_set = true;
+    }
+    const mat4 *inv = &ip->lit_mv_inv;
+    if (ip->lit_mv_ok) {
         const float *cn = a->current.normal;
         for (int k = 0; k < 3; k++) /* n^T M^-1: row k of the inverse's transpose */
-            n[k] = cn[0] * inv.m[k * 4 + 0] + cn[1] * inv.m[k * 4 + 1] + cn[2] * inv.m[k * 4 + 2];
+            n[k] = cn[0] * inv->m[k * 4 + 0] + cn[1] * inv->m[k * 4 + 1] + cn[2] * inv->m[k * 4 + 2];
         double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
         if (a->caps[INTERP_CAP_NORMALIZE] && len > 0) {
             for (int k = 0; k < 3; k++)
                 n[k] /= len;
         } else if (a->caps[INTERP_CAP_RESCALE_NORMAL]) {
-            double r = sqrt(inv.m[2] * inv.m[2] + inv.m[6] * inv.m[6] + inv.m[10] * inv.m[10]);
+            double r = sqrt(inv->m[2] * inv->m[2] + inv->m[6] * inv->m[6] + inv->m[10] * inv->m[10]);
             if (r > 0)
                 for (int k = 0; k < 3; k++)
                     n[k] /= r;
@@ -745,7 +750,9 @@ static bool crosses_view_volume(const interp *ip, uint32_t n)
     return false;
 }
 
-/* Clip-space x, y, w of every vertex of the primitive, for facing. */
+/* Clip-space x, y, w of every vertex of the primitive, for facing, and
+ * x/w, y/w: each vertex is in up to three triangles of a strip, whose
+ * areas divided by w there for every edge. */
 static bool compute_clip(interp *ip, uint32_t n)
 {
     if (n > ip->cap_clipv &&
@@ -758,6 +765,8 @@ static bool compute_clip(interp *ip, uint32_t n)
         ip->clipv[i][0] = m->m[0] * x + m->m[4] * y + m->m[8] * z + m->m[12];
         ip->clipv[i][1] = m->m[1] * x + m->m[5] * y + m->m[9] * z + m->m[13];
         ip->clipv[i][2] = m->m[3] * x + m->m[7] * y + m->m[11] * z + m->m[15];
+        ip->clipv[i][3] = ip->clipv[i][0] / ip->clipv[i][2];
+        ip->clipv[i][4] = ip->clipv[i][1] / ip->clipv[i][2];
     }
     return true;
 }
@@ -768,7 +777,7 @@ static bool compute_clip(interp *ip, uint32_t n)
  * winding of the visible, clipped part. idx are relative to the base. */
 static bool is_ccw(const interp *ip, const uint32_t *idx, int n)
 {
-    double (*c)[3] = ip->clipv;
+    double (*c)[5] = ip->clipv;
     bool all_front = true;
     for (int k = 0; k < n; k++)
         if (!(c[idx[k]][2] > 0))
@@ -777,7 +786,7 @@ static bool is_ccw(const interp *ip, const uint32_t *idx, int n)
         double area = 0;
         for (int k = 0; k < n; k++) {
             const double *a = c[idx[k]], *b = c[idx[(k + 1) % n]];
-            area += (a[0] / a[2]) * (b[1] / b[2]) - (b[0] / b[2]) * (a[1] / a[2]);
+            area += a[3] * b[4] - b[3] * a[4];
         }
         return area > 0;
     }

@@ -77,6 +77,17 @@ static void *grow(writer *w, void *p, size_t *cap, size_t need, size_t elem)
 static float fin(double v) { return isfinite(v) && fabs(v) < 3e38 ? (float)v : 0.0f; }
 static double clamp01(double v) { return v > 0 ? (v < 1 ? v : 1) : 0; }
 
+/* GL's colours are display values; glTF's factors, vertex colours and light
+ * colours are linear, and viewers encode to sRGB on output: the exact sRGB
+ * EOTF (IEC 61966-2-1) makes an unlit colour come out as GL drew it. Values
+ * above 1 (light colours) follow the same power law. */
+static double srgb_linear(double v)
+{
+    if (!(v > 0) || !isfinite(v))
+        return 0;
+    return v <= 0.04045 ? v / 12.92 : pow((v + 0.055) / 1.055, 2.4);
+}
+
 static void num(outbuf *ob, double v) { outbuf_f32(ob, fin(v)); }
 
 static void nums(outbuf *ob, const double *v, int n)
@@ -279,13 +290,17 @@ static int32_t material_index(writer *w, const scene_look *look, bool lines, boo
     int32_t tex = tx && !lines ? texture_index(w, look->texture) : -1;
     if (tex >= 0 && tx->env_mode == GL_BLEND)
         note(w, "GL_BLEND texture environment: written as GL_MODULATE");
+    else if (tex >= 0 && tx->env_mode != GL_MODULATE && !tx->colour_is_texel)
+        note(w, "a texture environment other than GL_MODULATE, GL_REPLACE or GL_DECAL of a "
+                "colour without alpha (GL_DECAL of RGBA, GL_ADD, GL_COMBINE): written as "
+                "GL_MODULATE");
     if (look->texture1 >= 0 && !lines)
         note(w, "a second texture unit: not written (glTF has one base colour texture)");
     double base[4] = {1, 1, 1, 1};
     *vertex_color = true;
     if (mat && !(mat->color_material[0] & SCENE_CM_DIFFUSE)) {
         for (int c = 0; c < 4; c++)
-            base[c] = clamp01(mat->diffuse[0][c]);
+            base[c] = c < 3 ? srgb_linear(clamp01(mat->diffuse[0][c])) : clamp01(mat->diffuse[0][c]);
         *vertex_color = false;
     }
     if (tex >= 0 && tx->colour_is_texel)
@@ -301,7 +316,7 @@ static int32_t material_index(writer *w, const scene_look *look, bool lines, boo
     double spec[3] = {0, 0, 0};
     if (mat) {
         for (int c = 0; c < 3; c++)
-            spec[c] = clamp01(mat->specular[0][c]);
+            spec[c] = srgb_linear(clamp01(mat->specular[0][c]));
         outbuf_puts(&m, ",\"roughnessFactor\":");
         num(&m, roughness_of(mat->shininess[0]));
     }
@@ -316,7 +331,7 @@ static int32_t material_index(writer *w, const scene_look *look, bool lines, boo
                 if (s->lights[i].aimed || s->lights[i].set == mat->lightset)
                     amb += s->lights[i].ambient[c];
             double ma = mat->color_material[0] & SCENE_CM_AMBIENT ? 0 : mat->ambient[0][c];
-            em[c] = clamp01(mat->emission[0][c] + amb * ma);
+            em[c] = srgb_linear(clamp01(mat->emission[0][c] + amb * ma));
         }
         if (em[0] > 0 || em[1] > 0 || em[2] > 0) {
             outbuf_puts(&m, ",\"emissiveFactor\":");
@@ -341,6 +356,8 @@ static int32_t material_index(writer *w, const scene_look *look, bool lines, boo
         outbuf_puts(&m, ",\"extensions\":{\"KHR_materials_unlit\":{}}");
         w->used_unlit = true;
     } else {
+        note(w, "lit surfaces: glTF viewers light in linear light, GL in display values: "
+                "a surface lit at an angle comes out lighter (exact facing the light)");
         /* No specular in GL: no specular lobe (glTF's default F0 = 0.04
          * would add highlights GL never drew). */
         double f = spec[0] > spec[1] ? spec[0] : spec[1];
@@ -348,8 +365,19 @@ static int32_t material_index(writer *w, const scene_look *look, bool lines, boo
         outbuf_puts(&m, ",\"extensions\":{\"KHR_materials_specular\":{\"specularFactor\":");
         num(&m, f > 0 ? 1 : 0);
         if (f > 0) {
+            /* GL's highlight peaks at the specular colour; a GGX lobe of
+             * alpha^2 = 2 / (n + 2) lit by intensity pi peaks at
+             * F0 (n + 2) / 8 (D = 1 / (pi alpha^2), visibility 1/4 facing
+             * the light), and glTF's F0 is 0.04 x specularColorFactor
+             * (ior 1.5): so the factor is 200 / (n + 2) x the specular
+             * colour, at most 25 (F0 = 1). */
+            double n = mat->shininess[0] > 0 ? mat->shininess[0] : 0, sc[3];
+            for (int c = 0; c < 3; c++) {
+                sc[c] = spec[c] * 200.0 / (n + 2.0);
+                sc[c] = sc[c] < 25 ? sc[c] : 25;
+            }
             outbuf_puts(&m, ",\"specularColorFactor\":");
-            nums(&m, spec, 3);
+            nums(&m, sc, 3);
         }
         outbuf_puts(&m, "}}");
         w->used_specular = true;
@@ -471,13 +499,29 @@ static void push_vertex(writer *w, const double p[3], const double nrm[3], const
     for (int c = 0; c < 3; c++)
         w->nrm[k * 3 + (size_t)c] = (float)(nf[c] / nl);
     for (int c = 0; c < 4; c++)
-        w->col[k * 4 + (size_t)c] = (float)clamp01(col[c]);
+        w->col[k * 4 + (size_t)c] = (float)(c < 3 ? srgb_linear(clamp01(col[c])) : clamp01(col[c]));
     /* GL's t runs up from the image's bottom row, glTF's v down from its top. */
     w->uv[k * 2] = fin(uv[0]);
     w->uv[k * 2 + 1] = fin(1.0 - (double)uv[1]);
 }
 
 static bool finite3(const float p[3]) { return isfinite(p[0]) && isfinite(p[1]) && isfinite(p[2]); }
+
+/* Whether a face (mode 4) or a line (mode 1) of the pending primitive has
+ * vertices of different colours. */
+static bool colours_vary(const writer *w, int mode)
+{
+    size_t per = mode == 4 ? 3 : mode == 1 ? 2 : 0, n = w->ni ? w->ni : w->nv;
+    for (size_t f = 0; per && f + per <= n; f += per) {
+        size_t a = w->ni ? w->idx[f] : f;
+        for (size_t k = 1; k < per; k++) {
+            size_t b = w->ni ? w->idx[f + k] : f + k;
+            if (memcmp(&w->col[a * 4], &w->col[b * 4], 3 * sizeof(float)) != 0)
+                return true;
+        }
+    }
+    return false;
+}
 
 /* Writes the current vertices and indices as a primitive of mode into pj
  * (one JSON object), then empties them. */
@@ -486,6 +530,9 @@ static void flush_prim(writer *w, outbuf *pj, int mode, int32_t material, bool v
 {
     if (w->nv == 0)
         return;
+    if (vertex_color && colours_vary(w, mode))
+        note(w, "colours that vary across a face or line: glTF interpolates them in linear "
+                "light, GL in display values (mid-way colours come out lighter)");
     size_t pa = add_accessor(w, w->pos, w->nv, 3, false, true);
     size_t na = normals ? add_accessor(w, w->nrm, w->nv, 3, false, false) : 0;
     size_t ca = vertex_color ? add_accessor(w, w->col, w->nv, 4, false, false) : 0;
@@ -860,7 +907,7 @@ static void write_lights(writer *w)
         }
         double col[3], mx = 0;
         for (int c = 0; c < 3; c++) {
-            col[c] = l->color[c] > 0 && isfinite(l->color[c]) ? l->color[c] : 0;
+            col[c] = srgb_linear(l->color[c]);
             mx = col[c] > mx ? col[c] : mx;
         }
         if (!(mx > 0))

@@ -84,9 +84,15 @@ static void scene_box(const scene *s, double lo[3], double hi[3])
     }
     for (size_t i = 0; i < s->nmeshes; i++) {
         const scene_mesh *m = &s->meshes[i];
-        for (size_t t = 0; t < m->tri_count; t++)
+        const uint32_t *prev = NULL;
+        for (size_t t = 0; t < m->tri_count; t++, prev = s->tris[m->first_tri + t - 1].v)
             for (int c = 0; c < 3; c++) {
-                const float *p = s->verts[s->tris[m->first_tri + t].v[c]].pos;
+                uint32_t vi = s->tris[m->first_tri + t].v[c];
+                /* A strip's or fan's next triangle shares two corners with
+                 * the one before: taken once (the box is the same). */
+                if (prev && (vi == prev[0] || vi == prev[1] || vi == prev[2]))
+                    continue;
+                const float *p = s->verts[vi].pos;
                 double in[4] = {p[0], p[1], p[2], 1}, o[4];
                 if (m->in_eye)
                     o[0] = p[0], o[1] = p[1], o[2] = p[2], o[3] = 1;

@@ -360,35 +360,65 @@ static size_t put_decimal(char *out, uint64_t d, int k)
     return (size_t)(p - out);
 }
 
+static const uint32_t pow10_u32[10] = {1,      10,      100,      1000,      10000,
+                                       100000, 1000000, 10000000, 100000000, 1000000000};
+
+/* The eight digits of v < 10^8 as ASCII in one word, the first digit in
+ * the lowest byte: v splits into two halves of four digits, each into two
+ * pairs, each into two digits, every lane at once (x / 100 = x * 5243 >> 19
+ * for x < 10^4, x / 10 = x * 103 >> 10 for x < 100). */
+static inline uint64_t digits8(uint32_t v)
+{
+    uint64_t w = v / 10000 | (uint64_t)(v % 10000) << 32;
+    uint64_t q = (w * 5243 >> 19) & 0x0000007f0000007full;
+    w = q | (w - q * 100) << 16;
+    q = (w * 103 >> 10) & 0x000f000f000f000full;
+    w = q | (w - q * 10) << 8;
+    return w | 0x3030303030303030ull;
+}
+
 /* d (n significant digits, n <= 9, d < 10^9) times 10^(x - n + 1), in fixed
  * notation when that is no more than three characters longer than
- * scientific; else 0 (the caller takes put_decimal). The nine digits are
- * made with independent divisions by constants, no loop. */
+ * scientific; else 0 (the caller takes put_decimal). The digits are made in
+ * registers and only stored, never read back: a wide load of narrow stores
+ * just made stalls (store forwarding fails), which cost this function half
+ * its time. Bytes past the length are scratch (NUMFMT_F32_ROOM). */
+/* Stores w's bytes lowest first, whatever the host's byte order. */
+static inline void put8(char *out, uint64_t w)
+{
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
+    w = __builtin_bswap64(w);
+#endif
+    memcpy(out, &w, 8);
+}
+
 static size_t fast_fixed(char *out, uint32_t d, int n, int x)
 {
-    int fixed_len = x >= n - 1 ? x + 1 : (x >= 0 ? n + 1 : n + 1 - x);
-    int ax = x < 0 ? -x : x;
-    int sci_len = n + (n > 1) + 1 + (x < 0) + (ax >= 10 ? 2 : 1);
-    if (fixed_len > sci_len + 3 || x > 8)
-        return 0;
-    char nine[32];
-    uint32_t hi = d / 100000000, lo = d % 100000000;
-    nine[0] = (char)('0' + hi);
-    memcpy(nine + 1, digit_pairs + 2 * (lo / 1000000), 2);
-    memcpy(nine + 3, digit_pairs + 2 * (lo / 10000 % 100), 2);
-    memcpy(nine + 5, digit_pairs + 2 * (lo / 100 % 100), 2);
-    memcpy(nine + 7, digit_pairs + 2 * (lo % 100), 2);
-    memset(nine + 9, '0', 16);
-    const char *dig = nine + 9 - n; /* the n significant digits, zeros after */
-    if (x >= n - 1) { /* an integer: at most 9 digits here */
-        memcpy(out, dig, 16);
-    } else if (x >= 0) { /* d.ddd */
-        memcpy(out, dig, 16);
-        out[x + 1] = '.';
-        memcpy(out + x + 2, dig + x + 1, 16);
+    int fixed_len;
+    if (x >= 0 && x < n - 1) { /* d.ddd (most numbers): n + 1 long, shorter than d.ddde0 */
+        fixed_len = n + 1;
+    } else {
+        fixed_len = x >= n - 1 ? x + 1 : n + 1 - x;
+        int ax = x < 0 ? -x : x;
+        int sci_len = n + (n > 1) + 1 + (x < 0) + (ax >= 10 ? 2 : 1);
+        if (fixed_len > sci_len + 3 || x > 8)
+            return 0;
+    }
+    /* Nine digits, zeros after the n significant ones: c0, then w. */
+    uint32_t D = d * pow10_u32[9 - n];
+    char c0 = (char)('0' + D / 100000000);
+    uint64_t w = digits8(D % 100000000);
+    if (x >= 0) { /* an integer (at most 9 digits), or d.ddd */
+        out[0] = c0;
+        put8(out + 1, w);
+        if (x < n - 1) { /* x <= 7: the digits after the point are w's from byte x */
+            out[x + 1] = '.';
+            put8(out + x + 2, w >> (8 * x));
+        }
     } else { /* 0.000ddd: at most 5 zeros after the point */
-        memcpy(out, "0.00000000", 8);
-        memcpy(out - x + 1, dig, 16);
+        memcpy(out, "0.000000", 8);
+        out[1 - x] = c0;
+        put8(out + 2 - x, w);
     }
     return (size_t)fixed_len;
 }
@@ -433,8 +463,17 @@ static size_t general(char *out, uint32_t u)
     return put_decimal(out, d, k);
 }
 
-static const uint32_t pow10_u32[10] = {1,      10,      100,      1000,      10000,
-                                       100000, 1000000, 10000000, 100000000, 1000000000};
+
+/* [a, b] divided by p when it holds a multiple of p (ceiling, floor). */
+static inline bool drop_digits(uint32_t *a, uint32_t *b, uint32_t p)
+{
+    uint32_t ap = (*a + p - 1) / p, bp = *b / p;
+    if (ap > bp)
+        return false;
+    *a = ap;
+    *b = bp;
+    return true;
+}
 
 size_t numfmt_f32(char *out, float value)
 {
@@ -457,8 +496,11 @@ size_t numfmt_f32(char *out, float value)
 
     /* Integers below 2^24: their own digits are the shortest (the interval
      * is at most one wide). */
-    if (e2 <= 0 && e2 > -24 && (m & ((1u << -e2) - 1)) == 0)
-        return neg + put_decimal(out, m >> -e2, 0);
+    if (e2 <= 0 && e2 > -24 && (m & ((1u << -e2) - 1)) == 0) {
+        uint32_t iv = m >> -e2;
+        /* Below 10^4 fixed notation is never longer than three past scientific. */
+        return neg + (iv < 10000 ? put_small(out, iv) : put_decimal(out, iv, 0));
+    }
 
     /* The fast path: the nine-digit scaling of the interval, in double. */
     float fa;
@@ -482,16 +524,17 @@ size_t numfmt_f32(char *out, float value)
         (double)(b + 1) - shi <= eps || a > b || s < 1e8)
         return neg + general(out, u);
 
-    /* Drop trailing digits while [a, b] still holds a multiple of ten. */
+    /* Drop trailing digits while [a, b] still holds a multiple of ten:
+     * one or two at a time (most numbers), then by 10^4, 10^2, 10 for the
+     * round ones (0.2 drops eight): holding a multiple of 10^j is monotone
+     * in j, and ceil(ceil(a/p)/q) = ceil(a/pq), so the greedy steps end
+     * where the loop would. */
     uint32_t a32 = (uint32_t)a, b32 = (uint32_t)b;
     int t = 0;
-    for (;;) {
-        uint32_t a10 = (a32 + 9) / 10, b10 = b32 / 10;
-        if (a10 > b10)
-            break;
-        a32 = a10;
-        b32 = b10;
-        t++;
+    if (drop_digits(&a32, &b32, 10) && ++t && drop_digits(&a32, &b32, 10) && ++t) {
+        t += drop_digits(&a32, &b32, 10000) ? 4 : 0;
+        t += drop_digits(&a32, &b32, 100) ? 2 : 0;
+        t += drop_digits(&a32, &b32, 10) ? 1 : 0;
     }
     uint32_t d = (uint32_t)(s * p10[60 - t] + 0.5);
     d = d < a32 ? a32 : (d > b32 ? b32 : d);

@@ -1,0 +1,54 @@
+# image-test-args.sh: what run-image-test.sh and run-frames-test.sh share,
+# sourced by both: the options every image test takes, their checks, and
+# absolute paths for the steps that run in the test's directory.
+#
+# common_option OPT VALUE: takes one of --name --program --raygl2pov --povray
+# --imgcmp --outdir --size --r2p-opt (the caller then shifts 2); returns 1 on
+# an unknown option, exits 2 on a bad value.
+name='' prog='' r2p='' povray='' imgcmp='' outdir='' size='' r2p_opts=''
+common_option() {
+    case $1 in
+    --name|--program|--raygl2pov|--povray|--imgcmp|--outdir|--size|--r2p-opt) ;;
+    *) echo "$0: unknown argument $1" >&2; return 1 ;;
+    esac
+    [ $# -ge 2 ] || return 1
+    case $1 in
+    --name) name=$2 ;;
+    --program) prog=$2 ;;
+    --raygl2pov) r2p=$2 ;;
+    --povray) povray=$2 ;;
+    --imgcmp) imgcmp=$2 ;;
+    --outdir) outdir=$2 ;;
+    --size) size=$2 ;;
+    --r2p-opt)
+        case $2 in
+        *[!A-Za-z0-9.=-]*) echo "$0: --r2p-opt '$2': letters, digits, '.', '=' and '-' only" >&2; exit 2 ;;
+        esac
+        r2p_opts="$r2p_opts $2" ;;
+    esac
+}
+
+# common_finish: every required option given (else usage), a plain test name,
+# and the paths made absolute (a bare program name is left to PATH).
+absolute() {
+    case $1 in
+    /*) printf '%s\n' "$1" ;;
+    */*) printf '%s/%s\n' "$PWD" "$1" ;;
+    *) printf '%s\n' "$1" ;;
+    esac
+}
+common_finish() {
+    [ -n "$name" ] && [ -n "$prog" ] && [ -n "$r2p" ] && [ -n "$povray" ] &&
+        [ -n "$imgcmp" ] && [ -n "$outdir" ] || usage
+    case $name in
+    *[!A-Za-z0-9_-]*|'') echo "$0: --name '$name': letters, digits, '_' and '-' only" >&2; exit 2 ;;
+    esac
+    prog=$(absolute "$prog")
+    r2p=$(absolute "$r2p")
+    povray=$(absolute "$povray")
+    imgcmp=$(absolute "$imgcmp")
+    case $outdir in
+    /*) ;;
+    *) outdir=$PWD/$outdir ;;
+    esac
+}
