@@ -64,7 +64,7 @@ for line in open(sys.argv[1]):
     if r in ("OK", "EXPECTEDFAIL", "SKIP"):
         ok += r != "SKIP"
         if r == "SKIP":
-            skipped.append(t["name"])
+            skipped.append(t.get("name", "?"))
     else:
         bad += 1
 # A skip is a tool the machine lacks: say which, so that it is never silent.
