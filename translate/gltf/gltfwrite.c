@@ -48,6 +48,7 @@ typedef struct writer {
     uint32_t *remap, *stamp, gen;
     /* one primitive's vertices */
     float *pos, *nrm, *col, *uv;
+    float solid_colour[4]; /* GL colour of the solid being written */
     size_t nv, cap_v;
     uint32_t *idx;
     size_t ni, cap_i;
@@ -268,8 +269,11 @@ static double roughness_of(double shininess)
 }
 
 /* The material of a look, shared when equal; vertex_color: COLOR_0 carries
- * the base colour. Returns its index, or -1 (no memory). */
-static int32_t material_index(writer *w, const scene_look *look, bool lines, bool *vertex_color)
+ * the base colour. colour: the draw's GL colour (display values), which
+ * GL_COLOR_MATERIAL's ambient term multiplies; NULL for none; varies: it is
+ * a mean of colours that differ. Returns its index, or -1 (no memory). */
+static int32_t material_index(writer *w, const scene_look *look, bool lines, bool *vertex_color,
+                              const float *colour, bool varies)
 {
     const scene *s = w->s;
     outbuf m;
@@ -330,9 +334,16 @@ static int32_t material_index(writer *w, const scene_look *look, bool lines, boo
             for (size_t i = 0; i < s->nlights; i++)
                 if (s->lights[i].aimed || s->lights[i].set == mat->lightset)
                     amb += s->lights[i].ambient[c];
-            double ma = mat->color_material[0] & SCENE_CM_AMBIENT ? 0 : mat->ambient[0][c];
+            /* The ambient term tracking the colour is a constant only
+             * for one colour: glTF's emissive cannot vary per vertex. */
+            double ma = !(mat->color_material[0] & SCENE_CM_AMBIENT) ? mat->ambient[0][c]
+                        : colour && !varies                          ? colour[c]
+                                                                     : 0;
             em[c] = srgb_linear(clamp01(mat->emission[0][c] + amb * ma));
         }
+        if (mat->color_material[0] & SCENE_CM_AMBIENT && varies)
+            note(w, "GL_COLOR_MATERIAL's ambient term of a draw whose colours vary: not "
+                    "written (glTF's emissive is one colour)");
         if (em[0] > 0 || em[1] > 0 || em[2] > 0) {
             outbuf_puts(&m, ",\"emissiveFactor\":");
             nums(&m, em, 3);
@@ -569,6 +580,31 @@ static void flush_prim(writer *w, outbuf *pj, int mode, int32_t material, bool v
     w->nv = w->ni = 0;
 }
 
+/* The mean of a mesh's vertex colours (GL's values), and whether they
+ * differ (then the mean stands for none of them). */
+static void mesh_colour(const scene *s, const scene_mesh *me, float mean[4], bool *varies)
+{
+    double sum[4] = {0, 0, 0, 0};
+    size_t n = 0;
+    const float *first = NULL;
+    for (size_t t = me->first_tri; t < me->first_tri + me->tri_count && t < s->ntris; t++)
+        for (int c = 0; c < 3; c++) {
+            uint32_t g = s->tris[t].v[c];
+            if (g >= s->nverts)
+                continue;
+            const float *col = s->verts[g].color;
+            if (!first)
+                first = col;
+            else if (memcmp(first, col, 4 * sizeof *col) != 0)
+                *varies = true;
+            for (int k = 0; k < 4; k++)
+                sum[k] += isfinite(col[k]) ? col[k] : 0;
+            n++;
+        }
+    for (int k = 0; k < 4; k++)
+        mean[k] = n ? (float)(sum[k] / (double)n) : 0;
+}
+
 /* One scene_mesh as a triangle primitive into pj, baked through m (NULL:
  * its vertices as they are). */
 static void mesh_prim(writer *w, outbuf *pj, const scene_mesh *me, const mat4 *m)
@@ -577,8 +613,10 @@ static void mesh_prim(writer *w, outbuf *pj, const scene_mesh *me, const mat4 *m
     if (me->look.blend == SCENE_BLEND_INVISIBLE || me->look.alpha_test == SCENE_ALPHA_NEVER ||
         me->tri_count == 0)
         return;
-    bool vcol;
-    int32_t mat = material_index(w, &me->look, false, &vcol);
+    bool vcol, varies = false;
+    float mean[4] = {0, 0, 0, 0};
+    mesh_colour(s, me, mean, &varies);
+    int32_t mat = material_index(w, &me->look, false, &vcol, mean, varies);
     bool uvs = me->look.texture >= 0 && (size_t)me->look.texture < s->ntextures;
     double nm[3][3];
     bool have_nm = m && normal_matrix(m, nm);
@@ -1005,7 +1043,7 @@ static void write_lines_points(writer *w)
     static const double zero[3] = {0, 0, 1};
     static const float nouv[2] = {0, 0};
     if (s->nlines) {
-        int32_t mat = material_index(w, &look, true, &vc);
+        int32_t mat = material_index(w, &look, true, &vc, NULL, false);
         for (size_t i = 0; i < s->nlines; i++) {
             const scene_line *l = &s->lines[i];
             if (!finite3(l->p[0]) || !finite3(l->p[1]) || !reserve_v(w, 2))
@@ -1018,7 +1056,7 @@ static void write_lines_points(writer *w)
         flush_prim(w, &pj, 1, mat, true, false, false);
     }
     if (s->npoints) {
-        int32_t mat = material_index(w, &look, true, &vc);
+        int32_t mat = material_index(w, &look, true, &vc, NULL, false);
         for (size_t i = 0; i < s->npoints; i++) {
             const scene_point *pt = &s->points[i];
             if (!finite3(pt->p) || !reserve_v(w, 1))
@@ -1309,6 +1347,7 @@ void gltf_solid_vertex(writer *w, const double p[3], const double n[3], const fl
 {
     static const float uv[2] = {0, 0};
     double nm[3][3];
+    memcpy(w->solid_colour, col, sizeof w->solid_colour);
     push_vertex(w, p, n, col, uv, m, normal_matrix(m, nm) ? nm : NULL);
 }
 void gltf_solid_index(writer *w, uint32_t i) { add_index(w, i); }
@@ -1319,6 +1358,7 @@ void gltf_solid_flush(writer *w, outbuf *pj, const scene_look *look)
         w->nv = w->ni = 0;
         return;
     }
-    int32_t mat = material_index(w, look, false, &vc);
+    /* a solid is drawn in one colour */
+    int32_t mat = material_index(w, look, false, &vc, w->nv ? w->solid_colour : NULL, false);
     flush_prim(w, pj, 4, mat, vc, true, false);
 }
