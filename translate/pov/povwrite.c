@@ -20,6 +20,7 @@
 
 #include <GL/gl.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -94,8 +95,17 @@ struct povwriter {
     float mod_kdp[3], mod_tint[3];
     const float **vcorner; /* colour image: 3 corner colours per kept face */
     size_t cap_vcorner;
-    float *vuv; /* colour image: 3 uv per kept face */
+    float *vuv; /* colour image: uv per grid vertex, then 3 per face off the grid */
     size_t cap_vuv;
+    const float **vcolp; /* colour image: each vertex's colour (in its key) */
+    size_t cap_vcolp;
+    povgrid grid;
+    struct mesh_key *mkeys; /* write_mesh_groups: the pass's meshes by look and transform */
+    size_t cap_mkeys;
+    uint32_t *mgroup; /* per mesh: its group's start in mkeys, if it leads one */
+    size_t cap_mgroup;
+    scene_tri *gtris; /* a group's triangles */
+    size_t cap_gtris;
 };
 
 povwriter *povwriter_create(void)
@@ -106,6 +116,7 @@ povwriter *povwriter_create(void)
     memset(w, 0, sizeof *w);
     dedup_init(&w->vtx, 3);
     dedup_init(&w->col, 4);
+    povgrid_init(&w->grid);
     return w;
 }
 
@@ -120,6 +131,11 @@ void povwriter_destroy(povwriter *w)
     tr_free(w->faces);
     tr_free(w->bverts);
     tr_free(w->btris);
+    tr_free(w->vcolp);
+    povgrid_finish(&w->grid);
+    tr_free(w->mkeys);
+    tr_free(w->mgroup);
+    tr_free(w->gtris);
     tr_free(w->front);
     tr_free(w->eye);
     tr_free(w->vcorner);
@@ -412,7 +428,7 @@ static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const
                             size_t nt, const scene_look *look)
 {
     const scene *s = w->light.s;
-    if (!w->in_proto || !s || look->fog || look->blend != SCENE_BLEND_OPAQUE ||
+    if (!s || look->fog || look->blend != SCENE_BLEND_OPAQUE ||
         nt > COLOUR_IMAGE_MAX_TRIS)
         return false;
     if (look->lit) {
@@ -479,7 +495,10 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     bool vimage = !tx && colour_image_ok(w, verts, tris, nt, look);
     /* A texel colour that replaces the fragment's needs no vertex colour. */
     bool vcolour = !vimage && !look->flat && !(tx && tx->colour_is_texel);
-    uint32_t words = 3 + (normals ? 3 : 0) + (vcolour ? 4 : 0) + (tx ? 2 : 0);
+    /* Smooth colours as an image: a vertex's colour is its texel on the grid. */
+    bool vgrid = vimage && !look->flat;
+    bool key_colour = vcolour || vgrid;
+    uint32_t words = 3 + (normals ? 3 : 0) + (key_colour ? 4 : 0) + (tx ? 2 : 0);
     dedup *vd = &w->vtx;
     if (nt == 0 || (to_eye && !mat4_finite(to_eye)))
         return 0;
@@ -689,7 +708,7 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
                         }
                         nk = 6;
                     }
-                    if (vcolour)
+                    if (key_colour)
                         memcpy(ukey + nk, sv->color, 4 * sizeof *ukey);
                     if (tx) {
                         float uv[2];
@@ -746,16 +765,34 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     if (kept == 0)
         return 0;
     bool colour_list = w->col.count > 1;
+    size_t nleft = kept, nvg = 0; /* faces off the grid; uv of grid vertices */
     if (vimage) {
-        if (tr_grow((void **)&w->vcorner, &w->cap_vcorner, kept * 3, sizeof *w->vcorner) != 0 ||
-            tr_grow((void **)&w->vuv, &w->cap_vuv, kept * 6, sizeof *w->vuv) != 0)
+        if (vgrid) {
+            if (tr_grow((void **)&w->vcolp, &w->cap_vcolp, vd->count, sizeof *w->vcolp) != 0)
+                return -1;
+            for (size_t v = 0; v < vd->count; v++)
+                w->vcolp[v] = (const float *)(const void *)(dedup_key(vd, v) + 3 + (normals ? 3 : 0));
+            if (povgrid_build(&w->grid, w->faces, 6, kept, vd->count, w->vcolp) != 0)
+                return -1;
+            if (w->grid.ncells > 0) {
+                nleft = kept - w->grid.ncells;
+                nvg = vd->count;
+            }
+        }
+        if (tr_grow((void **)&w->vcorner, &w->cap_vcorner, nleft * 3 + 1, sizeof *w->vcorner) != 0 ||
+            tr_grow((void **)&w->vuv, &w->cap_vuv, nvg * 2 + nleft * 6 + 2, sizeof *w->vuv) != 0)
             return -1;
-        for (size_t i = 0; i < kept; i++) {
+        for (size_t i = 0, j = 0; i < kept; i++) {
+            if (nvg && w->grid.in_grid[i])
+                continue;
             const scene_tri *t = &tris[w->faces[i * 6 + 3]];
             for (int k = 0; k < 3; k++)
-                w->vcorner[3 * i + k] = verts[look->flat ? t->provoking : t->v[k]].color;
+                w->vcorner[3 * j + k] = verts[look->flat ? t->provoking : t->v[k]].color;
+            j++;
         }
-        img = povtex_colours(&w->tex, w->vcorner, kept, w->vuv);
+        img = nvg ? povtex_colour_grid(&w->tex, &w->grid, w->vcolp, nvg, w->vuv, w->vcorner,
+                                       nleft, w->vuv + 2 * nvg)
+                  : povtex_colours(&w->tex, w->vcorner, kept, w->vuv);
         if (img < 0 || povtex_image_pigment(&w->tex, (size_t)img, true, pigment) == 0)
             return -1;
     }
@@ -808,10 +845,10 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         }
         outbuf_puts(ob, "}\n");
     }
-    if (vimage) { /* per face corner: taken by uv_indices */
+    if (vimage) { /* a vertex's texel on the grid, then three per face off it */
         outbuf_puts(ob, "uv_vectors{");
-        outbuf_u64(ob, kept * 3);
-        for (size_t i = 0; i < kept * 3; i++) {
+        outbuf_u64(ob, nvg + nleft * 3);
+        for (size_t i = 0; i < nvg + nleft * 3; i++) {
             outbuf_puts(ob, ",\n<");
             outbuf_f32(ob, w->vuv[2 * i]);
             outbuf_putc(ob, ',');
@@ -870,10 +907,10 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         outbuf_commit(ob, (size_t)(q - p));
     }
     outbuf_puts(ob, "}\n");
-    if (vimage) {
+    if (vimage && nleft > 0) { /* all on the grid: the uv go by face_indices */
         outbuf_puts(ob, "uv_indices{");
         outbuf_u64(ob, kept);
-        for (size_t i = 0; i < kept; i++) {
+        for (size_t i = 0, j = 0; i < kept; i++) {
             char *p = outbuf_room(ob, 8 * 12);
             if (!p)
                 return -1;
@@ -881,10 +918,13 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
             *q++ = ',';
             *q++ = '\n';
             *q++ = '<';
+            bool on_grid = nvg && w->grid.in_grid[i];
             for (int k = 0; k < 3; k++) {
-                q += numfmt_u64(q, 3 * i + (size_t)order[k]);
+                q += numfmt_u64(q, on_grid ? w->faces[i * 6 + order[k]]
+                                           : nvg + 3 * j + (size_t)order[k]);
                 *q++ = k < 2 ? ',' : '>';
             }
+            j += !on_grid;
             outbuf_commit(ob, (size_t)(q - p));
         }
         outbuf_puts(ob, "}\n");
@@ -1336,17 +1376,84 @@ static int32_t instance_set(const povwriter *w, const scene *s, const scene_inst
     return POVLIGHT_UNGROUPED;
 }
 
+/* What makes meshes one mesh2: look and transform (at float precision, as
+ * scene_mesh_for joins consecutive draws), then the mesh's place. Built
+ * zeroed, compared bytewise. */
+typedef struct mesh_key {
+    scene_look look;
+    float to_eye[16];
+    uint32_t in_eye;
+    uint32_t index;
+} mesh_key;
+
+static int mesh_key_cmp(const void *a, const void *b)
+{
+    return memcmp(a, b, sizeof(mesh_key));
+}
+
+/* The pass's meshes, those of one look and transform as one mesh2 wherever
+ * they were drawn (the strips of a surface, the lit and relit parts of
+ * each: docs/mapping.md section 4), so that their shared vertices are
+ * written once and POV-Ray builds one object. A group is written where
+ * its first mesh was drawn. */
+static int write_mesh_groups(povwriter *w, outbuf *ob, const scene *s)
+{
+    size_t n = 0;
+    if (tr_grow((void **)&w->mkeys, &w->cap_mkeys, s->nmeshes, sizeof *w->mkeys) != 0 ||
+        tr_grow((void **)&w->mgroup, &w->cap_mgroup, s->nmeshes, sizeof *w->mgroup) != 0)
+        return -1;
+    for (size_t i = 0; i < s->nmeshes; i++) {
+        const scene_mesh *m = &s->meshes[i];
+        w->mgroup[i] = UINT32_MAX;
+        if (m->tri_count == 0 || m->proto || !povlight_in_pass(&w->light, &m->look))
+            continue;
+        mesh_key *k = &w->mkeys[n++];
+        memset(k, 0, sizeof *k);
+        k->look = m->look;
+        for (int e = 0; e < 16; e++)
+            k->to_eye[e] = (float)m->to_eye.m[e];
+        k->in_eye = m->in_eye;
+        k->index = (uint32_t)i;
+    }
+    qsort(w->mkeys, n, sizeof *w->mkeys, mesh_key_cmp);
+    for (size_t a = 0; a < n;) { /* each group's first mesh: where its run starts */
+        size_t b = a + 1;
+        while (b < n && memcmp(&w->mkeys[a], &w->mkeys[b], offsetof(mesh_key, index)) == 0)
+            b++;
+        w->mgroup[w->mkeys[a].index] = (uint32_t)a;
+        a = b;
+    }
+    for (size_t i = 0; i < s->nmeshes; i++) {
+        if (w->mgroup[i] == UINT32_MAX)
+            continue;
+        size_t a = w->mgroup[i], b = a + 1, nt = s->meshes[i].tri_count;
+        while (b < n && memcmp(&w->mkeys[a], &w->mkeys[b], offsetof(mesh_key, index)) == 0)
+            nt += s->meshes[w->mkeys[b++].index].tri_count;
+        const scene_mesh *m = &s->meshes[i];
+        const scene_tri *tris = s->tris + m->first_tri;
+        if (b > a + 1) { /* gather the group's triangles in drawing order */
+            if (tr_grow((void **)&w->gtris, &w->cap_gtris, nt, sizeof *w->gtris) != 0)
+                return -1;
+            size_t t = 0;
+            for (size_t k = a; k < b; k++) {
+                const scene_mesh *g = &s->meshes[w->mkeys[k].index];
+                memcpy(w->gtris + t, s->tris + g->first_tri, g->tri_count * sizeof *w->gtris);
+                t += g->tri_count;
+            }
+            tris = w->gtris;
+        }
+        if (write_mesh2(w, ob, s->verts, tris, nt, &m->look, m->in_eye ? NULL : &m->to_eye) != 0)
+            return -1;
+    }
+    return 0;
+}
+
 /* The meshes, solids and display-list instances of the writer's pass
  * (w->light.pass). */
 static int write_objects(povwriter *w, outbuf *ob, const scene *s)
 {
-    for (size_t i = 0; i < s->nmeshes; i++) {
-        const scene_mesh *m = &s->meshes[i];
-        if (m->tri_count > 0 && !m->proto && povlight_in_pass(&w->light, &m->look) &&
-            write_mesh2(w, ob, s->verts, s->tris + m->first_tri, m->tri_count, &m->look,
-                        m->in_eye ? NULL : &m->to_eye) != 0)
-            return -1;
-    }
+    if (write_mesh_groups(w, ob, s) != 0)
+        return -1;
     povwrite_solids(ob, s, &w->light);
     for (size_t i = 0; i < s->ninstances; i++) {
         const scene_instance *in = &s->instances[i];
