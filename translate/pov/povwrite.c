@@ -1376,19 +1376,35 @@ static int32_t instance_set(const povwriter *w, const scene *s, const scene_inst
     return POVLIGHT_UNGROUPED;
 }
 
-/* What makes meshes one mesh2: look and transform (at float precision, as
- * scene_mesh_for joins consecutive draws), then the mesh's place. Built
- * zeroed, compared bytewise. */
+/* A mesh by what makes meshes one mesh2 (look and transform at float
+ * precision, as scene_mesh_for joins consecutive draws): a hash of those,
+ * then the mesh's place. 16 bytes a mesh: a frame may hold millions. */
 typedef struct mesh_key {
-    scene_look look;
-    float to_eye[16];
-    uint32_t in_eye;
+    uint64_t hash;
     uint32_t index;
+    uint32_t pad_;
 } mesh_key;
 
 static int mesh_key_cmp(const void *a, const void *b)
 {
-    return memcmp(a, b, sizeof(mesh_key));
+    const mesh_key *x = a, *y = b;
+    if (x->hash != y->hash)
+        return x->hash < y->hash ? -1 : 1;
+    return x->index < y->index ? -1 : x->index > y->index;
+}
+
+static uint64_t hash_bytes(uint64_t h, const void *p, size_t n)
+{
+    const unsigned char *c = p;
+    for (size_t i = 0; i < n; i++)
+        h = (h ^ c[i]) * 0x100000001b3ull; /* FNV-1a */
+    return h;
+}
+
+static bool same_group(const scene_mesh *a, const scene_mesh *b)
+{
+    return a->in_eye == b->in_eye && scene_look_equal(&a->look, &b->look) &&
+           mat4_equal_f32(&a->to_eye, &b->to_eye);
 }
 
 /* The pass's meshes, those of one look and transform as one mesh2 wherever
@@ -1407,40 +1423,57 @@ static int write_mesh_groups(povwriter *w, outbuf *ob, const scene *s)
         w->mgroup[i] = UINT32_MAX;
         if (m->tri_count == 0 || m->proto || !povlight_in_pass(&w->light, &m->look))
             continue;
-        mesh_key *k = &w->mkeys[n++];
-        memset(k, 0, sizeof *k);
-        k->look = m->look;
-        for (int e = 0; e < 16; e++)
-            k->to_eye[e] = (float)m->to_eye.m[e];
-        k->in_eye = m->in_eye;
-        k->index = (uint32_t)i;
+        uint64_t h = hash_bytes(0xcbf29ce484222325ull, &m->look, sizeof m->look);
+        for (int e = 0; e < 16; e++) {
+            float f = (float)m->to_eye.m[e];
+            h = hash_bytes(h, &f, sizeof f);
+        }
+        h = hash_bytes(h, &m->in_eye, sizeof m->in_eye);
+        w->mkeys[n].hash = h;
+        w->mkeys[n].index = (uint32_t)i;
+        w->mkeys[n++].pad_ = 0;
     }
     qsort(w->mkeys, n, sizeof *w->mkeys, mesh_key_cmp);
-    for (size_t a = 0; a < n;) { /* each group's first mesh: where its run starts */
+    /* mgroup[i]: for a group's first mesh, where its run of keys starts. */
+    for (size_t a = 0; a < n;) {
         size_t b = a + 1;
-        while (b < n && memcmp(&w->mkeys[a], &w->mkeys[b], offsetof(mesh_key, index)) == 0)
+        while (b < n && w->mkeys[b].hash == w->mkeys[a].hash)
             b++;
         w->mgroup[w->mkeys[a].index] = (uint32_t)a;
         a = b;
     }
+    const uint32_t alone = UINT32_MAX - 1; /* a hash collision: written by itself */
     for (size_t i = 0; i < s->nmeshes; i++) {
         if (w->mgroup[i] == UINT32_MAX)
             continue;
-        size_t a = w->mgroup[i], b = a + 1, nt = s->meshes[i].tri_count;
-        while (b < n && memcmp(&w->mkeys[a], &w->mkeys[b], offsetof(mesh_key, index)) == 0)
-            nt += s->meshes[w->mkeys[b++].index].tri_count;
         const scene_mesh *m = &s->meshes[i];
         const scene_tri *tris = s->tris + m->first_tri;
-        if (b > a + 1) { /* gather the group's triangles in drawing order */
-            if (tr_grow((void **)&w->gtris, &w->cap_gtris, nt, sizeof *w->gtris) != 0)
-                return -1;
-            size_t t = 0;
-            for (size_t k = a; k < b; k++) {
-                const scene_mesh *g = &s->meshes[w->mkeys[k].index];
-                memcpy(w->gtris + t, s->tris + g->first_tri, g->tri_count * sizeof *w->gtris);
-                t += g->tri_count;
+        size_t nt = m->tri_count;
+        if (w->mgroup[i] != alone) {
+            size_t a = w->mgroup[i], members = 1;
+            for (size_t b = a + 1; b < n && w->mkeys[b].hash == w->mkeys[a].hash; b++) {
+                const scene_mesh *g = &s->meshes[w->mkeys[b].index];
+                if (same_group(m, g)) {
+                    nt += g->tri_count;
+                    members++;
+                } else {
+                    w->mgroup[w->mkeys[b].index] = alone;
+                }
             }
-            tris = w->gtris;
+            if (members > 1) { /* gather in drawing order */
+                if (tr_grow((void **)&w->gtris, &w->cap_gtris, nt, sizeof *w->gtris) != 0)
+                    return -1;
+                size_t t = 0;
+                for (size_t b = a; b < n && w->mkeys[b].hash == w->mkeys[a].hash; b++) {
+                    const scene_mesh *g = &s->meshes[w->mkeys[b].index];
+                    if (b == a || same_group(m, g)) {
+                        memcpy(w->gtris + t, s->tris + g->first_tri,
+                               g->tri_count * sizeof *w->gtris);
+                        t += g->tri_count;
+                    }
+                }
+                tris = w->gtris;
+            }
         }
         if (write_mesh2(w, ob, s->verts, tris, nt, &m->look, m->in_eye ? NULL : &m->to_eye) != 0)
             return -1;
