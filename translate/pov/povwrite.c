@@ -415,14 +415,17 @@ static const float *mesh_tint(povwriter *w, const scene_vertex *verts, const sce
     return w->tinted ? w->mod_tint : NULL;
 }
 
-/* Whether a prototype's mesh carries its vertex colours as one image
- * (povtex_colours) rather than a texture_list: each object{} copy of a
- * mesh2 copies and transforms its whole texture_list in POV-Ray, a single
- * texture stays one (docs/mapping.md section 12). The colours must vary,
+/* Whether a mesh carries its vertex colours as one image (povtex_colours,
+ * povtex_colour_grid) rather than a texture_list: a texture object per
+ * colour costs POV-Ray time and memory, and each object{} copy of a
+ * prototype's mesh2 copies and transforms its whole texture_list, a single
+ * texture stays one (docs/mapping.md sections 4 and 12). The colours must
+ * vary (outside a prototype, more than COLOUR_IMAGE_MIN_COLOURS of them),
  * be opaque and need no more clamping than POVTEX_CLAMP_MAX; lit, the
  * colour must be GL_AMBIENT_AND_DIFFUSE's alone (the pigment then scales
  * both as GL's colour does), one-sided. Fog and blending keep the list. */
 #define COLOUR_IMAGE_MAX_TRIS (1u << 22)
+#define COLOUR_IMAGE_MIN_COLOURS 16
 
 static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const scene_tri *tris,
                             size_t nt, const scene_look *look)
@@ -439,23 +442,30 @@ static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const
             m->emission[0][0] != 0 || m->emission[0][1] != 0 || m->emission[0][2] != 0)
             return false;
     }
-    const float *first = NULL;
-    bool differ = false;
+    /* Outside a prototype a few colours stay a texture_list: a handful of
+     * textures costs POV-Ray less than an image and a uv per vertex. */
+    size_t want = w->in_proto ? 2 : COLOUR_IMAGE_MIN_COLOURS + 1;
+    const float *seen[COLOUR_IMAGE_MIN_COLOURS + 1];
+    size_t nseen = 0, last = 0;
     for (size_t i = 0; i < nt; i++) {
         const float *c[3];
         for (int k = 0; k < 3; k++) {
             c[k] = verts[look->flat ? tris[i].provoking : tris[i].v[k]].color;
             if (c[k][3] != 1)
                 return false;
-            if (!first)
-                first = c[k];
-            else if (!differ && memcmp(first, c[k], 3 * sizeof *first) != 0)
-                differ = true;
+            if (nseen < want && (nseen == 0 || memcmp(seen[last], c[k], 3 * sizeof *c[k]) != 0)) {
+                size_t j = 0;
+                while (j < nseen && memcmp(seen[j], c[k], 3 * sizeof *c[k]) != 0)
+                    j++;
+                if (j == nseen)
+                    seen[nseen++] = c[k];
+                last = j;
+            }
         }
         if (!look->flat && povtex_colour_origin(c) < 0)
             return false;
     }
-    return differ;
+    return nseen >= want;
 }
 
 #define UNSET UINT32_MAX
