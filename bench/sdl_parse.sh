@@ -14,6 +14,11 @@
 # ours and the ideal interleaved. Printed: medians of POV-Ray's parse CPU
 # time (its "Parse Time ... CPU-seconds") and of its peak memory
 # (/usr/bin/time -v), and ours / ideal. Figures only: never pass/fail.
+#
+# With BASE=OTHER_BUILD_DIR (a build of an earlier commit), that build's
+# SDL of the same frame is parsed in the same rounds and printed as a
+# "base" row beside ours (its bench_translate needs no --sdl: the frame
+# is taken from --keep).
 set -eu
 [ $# -ge 1 ] || { echo "usage: $0 BUILD_DIR [RUNS] [TRIS...]" >&2; exit 2; }
 build=$(cd "$1" && pwd)
@@ -36,30 +41,46 @@ parse() {
     echo "$cpu $(awk -v k="$kb" 'BEGIN {print k / 1024}')" >>"$2"
 }
 
-printf '%-9s %-3s %9s %9s %6s   %9s %9s %6s   %8s %8s\n' tris col 'ours s' 'ideal s' ratio \
-    'ours MB' 'ideal MB' ratio 'ours SDL' 'ideal'
+base=${BASE:-}
+[ -z "$base" ] || base=$(cd "$base" && pwd)
+kinds="ours"
+[ -z "$base" ] || kinds="base ours"
+printf '%-9s %-3s %-4s %9s %9s %6s   %9s %9s %6s   %8s %8s\n' tris col sdl 'parse s' 'ideal s' ratio \
+    'peak MB' 'ideal MB' ratio 'SDL' 'ideal'
 for n in $sizes; do
     mkdir -p "$n"
     "$build/bench/translate/bench_translate" --frames 1 --tris "$n" --sdl "$work/$n"
+    if [ -n "$base" ]; then
+        "$base/bench/translate/bench_translate" --frames 1 --tris "$n" --runs 1 --no-printf \
+            --povray none --keep "$work/$n" --layout strips >/dev/null
+        "$base/bench/translate/bench_translate" --frames 1 --tris "$n" --runs 1 --no-printf \
+            --povray none --keep "$work/$n" --layout strips1 >/dev/null
+        mv "$n/strips.pov" "$n/base-vc.pov"
+        mv "$n/strips1.pov" "$n/base-1c.pov"
+    fi
     "$build/bench/sdl/ideal" --tris "$n" "$n/ideal-vc.pov"
     "$build/bench/sdl/ideal" --tris "$n" --one-colour "$n/ideal-1c.pov"
     for c in vc 1c; do
-        rm -f "$n/ours-$c.log" "$n/ideal-$c.log"
+        rm -f "$n/ours-$c.log" "$n/base-$c.log" "$n/ideal-$c.log"
     done
     for r in $(seq "$runs"); do
         for c in vc 1c; do
-            (cd "$n" && parse "ours-$c.pov" "ours-$c.log" && parse "ideal-$c.pov" "ideal-$c.log")
+            for k in $kinds ideal; do
+                (cd "$n" && parse "$k-$c.pov" "$k-$c.log")
+            done
         done
     done
     for c in vc 1c; do
-        os=$(cut -d' ' -f1 "$n/ours-$c.log" | median)
         is=$(cut -d' ' -f1 "$n/ideal-$c.log" | median)
-        om=$(cut -d' ' -f2 "$n/ours-$c.log" | median)
         im=$(cut -d' ' -f2 "$n/ideal-$c.log" | median)
-        osz=$(du -k "$n/ours-$c.pov" | cut -f1)
         isz=$(du -k "$n/ideal-$c.pov" | cut -f1)
-        awk -v n="$n" -v c="$c" -v os="$os" -v is="$is" -v om="$om" -v im="$im" -v a="$osz" -v b="$isz" \
-            'BEGIN {printf "%-9s %-3s %9.3f %9.3f %5.2fx   %9.1f %9.1f %5.2fx   %6.1fMB %6.1fMB\n", n, c, os, is, os / is, om, im, om / im, a / 1024, b / 1024}'
+        for k in $kinds; do
+            os=$(cut -d' ' -f1 "$n/$k-$c.log" | median)
+            om=$(cut -d' ' -f2 "$n/$k-$c.log" | median)
+            osz=$(du -k "$n/$k-$c.pov" | cut -f1)
+            awk -v n="$n" -v c="$c" -v k="$k" -v os="$os" -v is="$is" -v om="$om" -v im="$im" -v a="$osz" -v b="$isz" \
+                'BEGIN {printf "%-9s %-3s %-4s %9.3f %9.3f %5.2fx   %9.1f %9.1f %5.2fx   %6.1fMB %6.1fMB\n", n, c, k, os, is, os / is, om, im, om / im, a / 1024, b / 1024}'
+        done
     done
     rm -rf "$n"
 done
