@@ -7,11 +7,12 @@
  * clipped to GL's near and far planes), then the lights.
  *
  * Meshes become mesh2 with shared vertices: equal positions, normals and
- * colours are written once (dedup.h). Per-vertex colours go through
- * texture_list with three indices per face, flat faces take one; in a
- * display list's prototype they go as one image instead (colour_image_ok).
- * Faces are
- * written (v0, v2, v1): POV-Ray then calls GL's front side the outside of
+ * colours are written once (dedup.h), and the meshes of one look and
+ * transform are one mesh2 (write_mesh_groups). A few per-vertex colours
+ * go through texture_list with three indices per face, flat faces take
+ * one; more, or any in a display list's prototype, go as one image
+ * (colour_image_ok), a texel per vertex where the faces form a grid
+ * (povwrite_vgrid.h). Faces are written (v0, v2, v1): POV-Ray then calls GL's front side the outside of
  * the face, which keeps `texture` for GL_FRONT and `interior_texture` for
  * GL_BACK. Degenerate faces, which POV-Ray would reject, are left out, as
  * GL draws nothing for them.
