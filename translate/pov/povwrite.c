@@ -790,20 +790,27 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
                 nvg = vd->count;
             }
         }
-        if (tr_grow((void **)&w->vcorner, &w->cap_vcorner, nleft * 3 + 1, sizeof *w->vcorner) != 0 ||
-            tr_grow((void **)&w->vuv, &w->cap_vuv, nvg * 2 + nleft * 6 + 2, sizeof *w->vuv) != 0)
-            return -1;
-        for (size_t i = 0, j = 0; i < kept; i++) {
-            if (nvg && w->grid.in_grid[i])
-                continue;
-            const scene_tri *t = &tris[w->faces[i * 6 + 3]];
-            for (int k = 0; k < 3; k++)
-                w->vcorner[3 * j + k] = verts[look->flat ? t->provoking : t->v[k]].color;
-            j++;
+        for (;;) {
+            if (tr_grow((void **)&w->vcorner, &w->cap_vcorner, nleft * 3 + 1,
+                        sizeof *w->vcorner) != 0 ||
+                tr_grow((void **)&w->vuv, &w->cap_vuv, nvg * 2 + nleft * 6 + 2, sizeof *w->vuv) != 0)
+                return -1;
+            for (size_t i = 0, j = 0; i < kept; i++) {
+                if (nvg && w->grid.in_grid[i])
+                    continue;
+                const scene_tri *t = &tris[w->faces[i * 6 + 3]];
+                for (int k = 0; k < 3; k++)
+                    w->vcorner[3 * j + k] = verts[look->flat ? t->provoking : t->v[k]].color;
+                j++;
+            }
+            img = nvg ? povtex_colour_grid(&w->tex, &w->grid, w->vcolp, nvg, w->vuv, w->vcorner,
+                                           nleft, w->vuv + 2 * nvg)
+                      : povtex_colours(&w->tex, w->vcorner, kept, w->vuv);
+            if (img != POVTEX_TOO_LARGE || !nvg)
+                break;
+            nvg = 0; /* the grid and the blocks past an image's size: blocks alone */
+            nleft = kept;
         }
-        img = nvg ? povtex_colour_grid(&w->tex, &w->grid, w->vcolp, nvg, w->vuv, w->vcorner,
-                                       nleft, w->vuv + 2 * nvg)
-                  : povtex_colours(&w->tex, w->vcorner, kept, w->vuv);
         if (img < 0 || povtex_image_pigment(&w->tex, (size_t)img, true, pigment) == 0)
             return -1;
     }

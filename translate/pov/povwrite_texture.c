@@ -393,11 +393,11 @@ int povtex_colour_grid(povtex *pt, const povgrid *g, const float *const *vcol, s
         bh = (n + bw - 1) / bw;
         iw = (int)(2 * bw) > gw ? (int)(2 * bw) : gw;
         if (bh * 2 > PADDED_MAX)
-            return -1;
+            return POVTEX_TOO_LARGE;
         ih = gh + (int)(bh * 2);
     }
     if (iw < 1 || ih < 1 || iw > PADDED_MAX || ih > PADDED_MAX)
-        return -1;
+        return POVTEX_TOO_LARGE;
     uint8_t *px = new_image(iw, ih);
     if (!px)
         return -1;

@@ -102,7 +102,9 @@ int povtex_colours(povtex *pt, const float *const *corners, size_t n, float *uv)
  * vcol[v]): its texels first, one per vertex on a cell, whose uv goes to
  * vuv[2 * v] (0, 0 for vertices on no cell), then the blocks of the n
  * faces off the grid as povtex_colours places them. Returns the image's
- * index, -1 when memory ran out or the image would be too large. */
+ * index, -1 when memory ran out, POVTEX_TOO_LARGE when the image would
+ * pass POV-Ray's image size (then povtex_colours alone fits). */
+#define POVTEX_TOO_LARGE (-2)
 int povtex_colour_grid(povtex *pt, const povgrid *g, const float *const *vcol, size_t nv,
                        float *vuv, const float *const *corners, size_t n, float *uv);
 
