@@ -604,6 +604,36 @@ static void test_colour_grid(void)
     CHECK(strstr(sdl, "uv_vectors{38,") != NULL);
     povwriter_destroy(w);
     interp_destroy(ip);
+
+    /* The same black corner in a strip of 60 quads: its 4 faces get copies
+     * of their corners (122 + 12 vertices), the uv stay parallel. */
+    ip = fresh();
+    seq_init(&s);
+    CMD(&s, Enable, GL_DEPTH_TEST);
+    CMD(&s, Translatef, 0, 0, -20);
+    CMD(&s, Begin, GL_TRIANGLE_STRIP);
+    for (int j = 0; j <= 60; j++)
+        for (int r = 1; r >= 0; r--) {
+            float c[3];
+            grid_colour(r, j % 8, c);
+            c[2] = 0.01f * (float)j; /* linear along the strip */
+            if (j == 6 && r == 1)
+                c[0] = c[1] = c[2] = 0;
+            CMD(&s, Color3f, c[0], c[1], c[2]);
+            CMD(&s, Vertex2f, j, r);
+        }
+    CMD0(&s, End);
+    run(ip, &s);
+    interp_end_frame(ip);
+    w = povwriter_create();
+    CHECK(w != NULL);
+    write_sdl_with(w, NULL);
+    CHECK_EQ_U(occurrences(sdl, "uv_indices"), 0);
+    CHECK(strstr(sdl, "vertex_vectors{134,") != NULL);
+    CHECK(strstr(sdl, "uv_vectors{134,") != NULL);
+    CHECK(strstr(sdl, "face_indices{120,") != NULL);
+    povwriter_destroy(w);
+    interp_destroy(ip);
 }
 
 int main(void)

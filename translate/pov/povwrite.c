@@ -837,16 +837,30 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
             outbuf_puts(ob, look->fog ? "texture{rgl_fog}\n" : "\n");
         }
     }
+    /* A few faces off the grid: their corners as vertices of their own,
+     * with their blocks' uv, so that every uv stays parallel to the
+     * vertices and no uv_indices are needed (one index triple a face
+     * costs more text than three more vertices for a twelfth of them). */
+    bool dup = nvg && nleft > 0 && nleft * 12 < kept;
+    size_t ndup = dup ? nleft * 3 : 0;
     outbuf_puts(ob, "mesh2{\nvertex_vectors{");
-    outbuf_u64(ob, vd->count);
+    outbuf_u64(ob, vd->count + ndup);
     for (size_t i = 0; i < vd->count; i++)
         PUT_ENTRY(w, ob, ",\n<", (const float *)(const void *)dedup_key(vd, i), ">");
+    for (size_t i = 0; dup && i < kept; i++)
+        for (int k = 0; k < 3 && !w->grid.in_grid[i]; k++)
+            PUT_ENTRY(w, ob, ",\n<", (const float *)(const void *)dedup_key(vd, w->faces[i * 6 + k]),
+                      ">");
     outbuf_puts(ob, "}\n");
     if (normals) {
         outbuf_puts(ob, "normal_vectors{");
-        outbuf_u64(ob, vd->count);
+        outbuf_u64(ob, vd->count + ndup);
         for (size_t i = 0; i < vd->count; i++)
             PUT_ENTRY(w, ob, ",\n<", (const float *)(const void *)(dedup_key(vd, i) + 3), ">");
+        for (size_t i = 0; dup && i < kept; i++)
+            for (int k = 0; k < 3 && !w->grid.in_grid[i]; k++)
+                PUT_ENTRY(w, ob, ",\n<",
+                          (const float *)(const void *)(dedup_key(vd, w->faces[i * 6 + k]) + 3), ">");
         outbuf_puts(ob, "}\n");
     }
     if (tx) { /* parallel to vertex_vectors: taken by face_indices */
@@ -898,7 +912,7 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     static const int order[3] = {0, 2, 1};
     outbuf_puts(ob, "face_indices{");
     outbuf_u64(ob, kept);
-    for (size_t i = 0; i < kept; i++) {
+    for (size_t i = 0, j = 0; i < kept; i++) {
         const uint32_t *f = w->faces + i * 6;
         char *p = outbuf_room(ob, 8 * 12);
         if (!p)
@@ -907,10 +921,13 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         *q++ = ',';
         *q++ = '\n';
         *q++ = '<';
+        bool own = dup && !w->grid.in_grid[i]; /* its corners' copies */
         for (int k = 0; k < 3; k++) {
-            q += cached_u32(w, q, f[order[k]]);
+            q += own ? numfmt_u64(q, vd->count + 3 * j + (size_t)order[k])
+                     : cached_u32(w, q, f[order[k]]);
             *q++ = k < 2 ? ',' : '>';
         }
+        j += own;
         if (colour_list) {
             if (f[3] == f[4] && f[4] == f[5]) {
                 *q++ = ',';
@@ -925,7 +942,7 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         outbuf_commit(ob, (size_t)(q - p));
     }
     outbuf_puts(ob, "}\n");
-    if (vimage && nleft > 0) { /* all on the grid: the uv go by face_indices */
+    if (vimage && nleft > 0 && !dup) { /* else the uv go by face_indices */
         outbuf_puts(ob, "uv_indices{");
         outbuf_u64(ob, kept);
         for (size_t i = 0, j = 0; i < kept; i++) {
