@@ -1468,7 +1468,8 @@ static int write_mesh_groups(povwriter *w, outbuf *ob, const scene *s)
         w->mkeys[n].index = (uint32_t)i;
         w->mkeys[n++].pad_ = 0;
     }
-    qsort(w->mkeys, n, sizeof *w->mkeys, mesh_key_cmp);
+    if (n > 1)
+        qsort(w->mkeys, n, sizeof *w->mkeys, mesh_key_cmp);
     /* mgroup[i]: for a group's first mesh, where its run of keys starts. */
     for (size_t a = 0; a < n;) {
         size_t b = a + 1;
