@@ -1,7 +1,7 @@
 /* bench_translate.c: translation throughput, and POV-Ray's cost of the output.
  *
  *   bench_translate [--frames N] [--tris N] [--runs N] [--povray PATH|none] [--keep DIR]
- *                   [--no-printf] [--layout strips|triangles|strips1]
+ *                   [--no-printf] [--layout strips|triangles|strips1] [--sdl DIR]
  *   bench_translate --write-trace FILE [--frames N] [--tris N] [--layout L]
  *   bench_translate --printf-positions [--frames N] [--tris N] [--runs N]
  *
@@ -33,6 +33,10 @@
  * median CPU seconds snprintf("%.9g") takes to format the positions of
  * every vertex sent in the strips trace (three numbers each) is printed:
  * the issue's printf baseline, beside which that script puts raygl2pov.
+ *
+ * With --sdl DIR it only writes that frame (--frames x --tris triangles)
+ * as DIR/ours-vc.pov (a colour per vertex) and DIR/ours-1c.pov (one
+ * colour), with their texture images, for bench/sdl_parse.sh.
  */
 #include <GL/gl.h>
 #include <math.h>
@@ -339,8 +343,10 @@ static void run_layout(const char *name, int strips, int nframes, size_t tris, i
     rgl_trace_builder_destroy(tb);
 }
 
-/* One frame of `tris` triangles through POV-Ray: parse time and memory. */
-static void run_povray(const char *povray, size_t tris, const char *dir, bool colours)
+/* One frame of `tris` triangles as SDL in dir/name (and its texture
+ * images in dir/textures). Returns the triangles written, 0 on failure. */
+static size_t write_frame_sdl(size_t tris, const char *dir, const char *name, bool colours,
+                              double *mb)
 {
     vary_colour = colours;
     rgl_trace_builder *tb = rgl_trace_builder_create();
@@ -359,19 +365,35 @@ static void run_povray(const char *povray, size_t tris, const char *dir, bool co
     size_t ntris = translator_scene(t)->ntris;
     outbuf ob;
     outbuf_init(&ob, 1 << 26, NULL, NULL);
-    pov_frame_info info = {"big.pov", "bench.raygl", 0, 0, 0, NULL, NULL, NULL};
+    pov_frame_info info = {name, "bench.raygl", 0, 0, 0, NULL, NULL, NULL};
     translator_write_pov(t, &ob, &info);
-    char path[4096], cmd[8192];
-    snprintf(path, sizeof path, "%s/big.pov", dir);
+    char path[4096];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
     FILE *f = fopen(path, "wb");
-    if (!f) {
+    if (!f || fwrite(ob.buf, 1, ob.len, f) != ob.len || fclose(f) != 0 ||
+        translator_write_images(t, dir) != 0) {
         perror(path);
-        return;
+        ntris = 0;
     }
-    fwrite(ob.buf, 1, ob.len, f);
-    fclose(f);
+    *mb = ob.len / 1e6;
+    outbuf_finish(&ob);
+    translator_destroy(t);
+    rgl_reader_destroy(r);
+    rgl_trace_builder_destroy(tb);
+    vary_colour = true;
+    return ntris;
+}
+
+/* One frame of `tris` triangles through POV-Ray: parse time and memory. */
+static void run_povray(const char *povray, size_t tris, const char *dir, bool colours)
+{
+    double mb;
+    size_t ntris = write_frame_sdl(tris, dir, "big.pov", colours, &mb);
+    if (ntris == 0)
+        return;
+    char cmd[8192];
     printf("POV-Ray on one frame of %zu triangles, %s (%.1f MB of SDL, mesh2):\n", ntris,
-           colours ? "a colour per vertex" : "one colour", ob.len / 1e6);
+           colours ? "a colour per vertex" : "one colour", mb);
     fflush(stdout);
     snprintf(cmd, sizeof cmd,
              "cd '%s' && /usr/bin/time -v '%s' +Ibig.pov +Obig.png +W64 +H48 -D -A "
@@ -380,10 +402,6 @@ static void run_povray(const char *povray, size_t tris, const char *dir, bool co
              dir, povray);
     if (system(cmd) != 0)
         printf("  (povray or /usr/bin/time failed; see %s/pov.log)\n", dir);
-    outbuf_finish(&ob);
-    translator_destroy(t);
-    rgl_reader_destroy(r);
-    rgl_trace_builder_destroy(tb);
 }
 
 /* snprintf("%.9g") over the positions of every vertex the strips frames
@@ -422,7 +440,7 @@ int main(int argc, char **argv)
     bool printf_only = false;
     int nframes = 4, runs = 5;
     size_t tris = 262144;
-    const char *povray = "povray", *keep = NULL, *trace_out = NULL;
+    const char *povray = "povray", *keep = NULL, *trace_out = NULL, *sdl_dir = NULL;
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--frames") == 0 && i + 1 < argc)
             nframes = atoi(argv[++i]);
@@ -438,6 +456,8 @@ int main(int argc, char **argv)
             trace_out = argv[++i];
         else if (strcmp(argv[i], "--printf-positions") == 0)
             printf_only = true;
+        else if (strcmp(argv[i], "--sdl") == 0 && i + 1 < argc)
+            sdl_dir = argv[++i];
         else if (strcmp(argv[i], "--no-printf") == 0)
             compare_printf = false;
         else if (strcmp(argv[i], "--layout") == 0 && i + 1 < argc)
@@ -445,7 +465,7 @@ int main(int argc, char **argv)
         else {
             fprintf(stderr, "usage: bench_translate [--frames N] [--tris N] [--runs N] "
                             "[--povray PATH|none] [--keep DIR] [--no-printf] [--layout strips|triangles|strips1] "
-                            "[--write-trace FILE] [--printf-positions]\n");
+                            "[--write-trace FILE] [--printf-positions] [--sdl DIR]\n");
             return 2;
         }
     }
@@ -458,6 +478,15 @@ int main(int argc, char **argv)
         vary_colour = !only_layout || strcmp(only_layout, "strips1") != 0;
         return write_trace(trace_out, !only_layout || strcmp(only_layout, "triangles") != 0,
                            nframes, tris);
+    }
+    if (sdl_dir) {
+        /* bench/sdl_parse.sh: the strips frame's SDL only, both colourings. */
+        double mb;
+        size_t tot = tris * (size_t)nframes;
+        if (write_frame_sdl(tot, sdl_dir, "ours-vc.pov", true, &mb) == 0 ||
+            write_frame_sdl(tot, sdl_dir, "ours-1c.pov", false, &mb) == 0)
+            return 1;
+        return 0;
     }
     if (runs < 1)
         runs = 1;

@@ -11,9 +11,11 @@
  * glArrayElement, type conversion, and draws the trace cannot supply.
  * The writer: a prototype with a colour per vertex carries its colours as
  * one image (2x2 texels per face), or keeps its texture_list when the
- * fourth texel would need clamping.
+ * fourth texel would need clamping; outside lists, strips of one look are
+ * one mesh2 whose smooth colours are a grid of texels, one per vertex.
  */
 #include <GL/gl.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "check.h"
@@ -481,6 +483,159 @@ static void test_colour_image(void)
     free_bodies();
 }
 
+/* Grid colour (i rows, j columns): linear in both, so each quad's colours
+ * are a parallelogram; sixteen and more of them. */
+static void grid_colour(int i, int j, float c[3])
+{
+    c[0] = 0.1f + 0.1f * (float)i;
+    c[1] = 0.2f + 0.05f * (float)j;
+    c[2] = 0.5f;
+}
+
+/* The numbers after "name{count," in sdl, up to n. */
+static size_t sdl_numbers(const char *name, double *out, size_t n)
+{
+    const char *p = strstr(sdl, name);
+    if (!p)
+        return 0;
+    p = strchr(p, ',');
+    size_t k = 0;
+    while (p && *p && *p != '}' && k < n) {
+        while (*p && strchr(",\n<> ", *p))
+            p++;
+        if (*p == '}' || !*p)
+            break;
+        char *e;
+        out[k++] = strtod(p, &e);
+        p = e;
+    }
+    return k;
+}
+
+static void test_colour_grid(void)
+{
+    /* Five triangle strips over a 6 x 5 grid, each its own glBegin/End,
+     * one look and transform: one mesh2, every vertex once, its colour
+     * one texel of the image at its uv (taken by face_indices). */
+    enum { COLS = 6, ROWS = 5 };
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Enable, GL_DEPTH_TEST);
+    CMD(&s, Translatef, 0, 0, -20);
+    for (int i = 0; i < ROWS; i++) {
+        CMD(&s, Begin, GL_TRIANGLE_STRIP);
+        for (int j = 0; j <= COLS; j++)
+            for (int r = 1; r >= 0; r--) {
+                float c[3];
+                grid_colour(i + r, j, c);
+                CMD(&s, Color3f, c[0], c[1], c[2]);
+                CMD(&s, Vertex2f, j, i + r);
+            }
+        CMD0(&s, End);
+        /* Another look in between: the strips are meshes of their own. */
+        CMD(&s, ShadeModel, GL_FLAT);
+        CMD(&s, Color3f, 0.9, 0.9, 0.9);
+        CMD(&s, Begin, GL_TRIANGLES);
+        CMD(&s, Vertex3f, 10, i, 0);
+        CMD(&s, Vertex3f, 11, i, 0);
+        CMD(&s, Vertex3f, 10, i + 1, 0);
+        CMD0(&s, End);
+        CMD(&s, ShadeModel, GL_SMOOTH);
+    }
+    run(ip, &s);
+    interp_end_frame(ip);
+    CHECK_EQ_U(sc.nmeshes, 2 * ROWS);
+    povwriter *w = povwriter_create();
+    CHECK(w != NULL);
+    write_sdl_with(w, NULL);
+    size_t nv = (COLS + 1) * (ROWS + 1);
+    CHECK_EQ_U(occurrences(sdl, "mesh2{"), 2); /* the strips, the flat triangles */
+    CHECK_EQ_U(occurrences(sdl, "texture_list"), 0);
+    CHECK_EQ_U(occurrences(sdl, "face_indices{60,"), 1);
+    CHECK_EQ_U(occurrences(sdl, "face_indices{5,"), 1);
+    CHECK_EQ_U(occurrences(sdl, "uv_indices"), 0);
+    CHECK_EQ_U(occurrences(sdl, "image_map{png"), 1);
+    double pos[3 * 64], uv[2 * 64];
+    CHECK_EQ_U(sdl_numbers("vertex_vectors{", pos, 3 * 64), 3 * nv);
+    CHECK_EQ_U(sdl_numbers("uv_vectors{", uv, 2 * 64), 2 * nv);
+    const povtex_image *im = povwriter_image(w, 0);
+    CHECK(im != NULL && povwriter_image(w, 1) == NULL);
+    for (size_t v = 0; im && v < nv; v++) {
+        int tx = (int)(uv[2 * v] * im->width), ty = (int)(uv[2 * v + 1] * im->height);
+        CHECK_NEAR(uv[2 * v] * im->width, tx + 0.5, 1e-4); /* the texel's centre */
+        CHECK_NEAR(uv[2 * v + 1] * im->height, ty + 0.5, 1e-4);
+        float c[3];
+        grid_colour((int)pos[3 * v + 1], (int)pos[3 * v], c);
+        const uint8_t *t = im->rgba + ((size_t)ty * (size_t)im->width + (size_t)tx) * 4;
+        for (int k = 0; k < 3 && tx >= 0 && ty >= 0 && tx < im->width && ty < im->height; k++)
+            CHECK(t[k] == texel(c[k]));
+    }
+    /* Texels of the grid's neighbours: the four corners of a face's cell. */
+    CHECK(im && im->width * im->height <= 2 * (int)nv);
+    povwriter_destroy(w);
+    interp_destroy(ip);
+
+    /* A strip whose quads are no parallelograms in colour (one corner
+     * black): those faces keep blocks of their own, through uv_indices. */
+    ip = fresh();
+    seq_init(&s);
+    CMD(&s, Enable, GL_DEPTH_TEST);
+    CMD(&s, Translatef, 0, 0, -20);
+    CMD(&s, Begin, GL_TRIANGLE_STRIP);
+    for (int j = 0; j <= 12; j++)
+        for (int r = 1; r >= 0; r--) {
+            float c[3];
+            grid_colour(r, j, c);
+            if (j == 6 && r == 1)
+                c[0] = c[1] = c[2] = 0;
+            CMD(&s, Color3f, c[0], c[1], c[2]);
+            CMD(&s, Vertex2f, j, r);
+        }
+    CMD0(&s, End);
+    run(ip, &s);
+    interp_end_frame(ip);
+    w = povwriter_create();
+    CHECK(w != NULL);
+    write_sdl_with(w, NULL);
+    CHECK_EQ_U(occurrences(sdl, "uv_indices{24,"), 1);
+    /* 26 vertices on the grid, then 3 texels for each of the 4 faces
+     * that touch the black corner's two quads. */
+    CHECK(strstr(sdl, "uv_vectors{38,") != NULL);
+    povwriter_destroy(w);
+    interp_destroy(ip);
+
+    /* The same black corner in a strip of 60 quads: its 4 faces get copies
+     * of their corners (122 + 12 vertices), the uv stay parallel. */
+    ip = fresh();
+    seq_init(&s);
+    CMD(&s, Enable, GL_DEPTH_TEST);
+    CMD(&s, Translatef, 0, 0, -20);
+    CMD(&s, Begin, GL_TRIANGLE_STRIP);
+    for (int j = 0; j <= 60; j++)
+        for (int r = 1; r >= 0; r--) {
+            float c[3];
+            grid_colour(r, j % 8, c);
+            c[2] = 0.01f * (float)j; /* linear along the strip */
+            if (j == 6 && r == 1)
+                c[0] = c[1] = c[2] = 0;
+            CMD(&s, Color3f, c[0], c[1], c[2]);
+            CMD(&s, Vertex2f, j, r);
+        }
+    CMD0(&s, End);
+    run(ip, &s);
+    interp_end_frame(ip);
+    w = povwriter_create();
+    CHECK(w != NULL);
+    write_sdl_with(w, NULL);
+    CHECK_EQ_U(occurrences(sdl, "uv_indices"), 0);
+    CHECK(strstr(sdl, "vertex_vectors{134,") != NULL);
+    CHECK(strstr(sdl, "uv_vectors{134,") != NULL);
+    CHECK(strstr(sdl, "face_indices{120,") != NULL);
+    povwriter_destroy(w);
+    interp_destroy(ip);
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -495,6 +650,7 @@ int main(void)
     test_missing_body();
     test_arrays();
     test_colour_image();
+    test_colour_grid();
     scene_finish(&sc);
     return CHECK_RESULT("test_lists");
 }

@@ -7,11 +7,12 @@
  * clipped to GL's near and far planes), then the lights.
  *
  * Meshes become mesh2 with shared vertices: equal positions, normals and
- * colours are written once (dedup.h). Per-vertex colours go through
- * texture_list with three indices per face, flat faces take one; in a
- * display list's prototype they go as one image instead (colour_image_ok).
- * Faces are
- * written (v0, v2, v1): POV-Ray then calls GL's front side the outside of
+ * colours are written once (dedup.h), and the meshes of one look and
+ * transform are one mesh2 (write_mesh_groups). A few per-vertex colours
+ * go through texture_list with three indices per face, flat faces take
+ * one; more, or any in a display list's prototype, go as one image
+ * (colour_image_ok), a texel per vertex where the faces form a grid
+ * (povwrite_vgrid.h). Faces are written (v0, v2, v1): POV-Ray then calls GL's front side the outside of
  * the face, which keeps `texture` for GL_FRONT and `interior_texture` for
  * GL_BACK. Degenerate faces, which POV-Ray would reject, are left out, as
  * GL draws nothing for them.
@@ -20,6 +21,7 @@
 
 #include <GL/gl.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -94,8 +96,17 @@ struct povwriter {
     float mod_kdp[3], mod_tint[3];
     const float **vcorner; /* colour image: 3 corner colours per kept face */
     size_t cap_vcorner;
-    float *vuv; /* colour image: 3 uv per kept face */
+    float *vuv; /* colour image: uv per grid vertex, then 3 per face off the grid */
     size_t cap_vuv;
+    const float **vcolp; /* colour image: each vertex's colour (in its key) */
+    size_t cap_vcolp;
+    povgrid grid;
+    struct mesh_key *mkeys; /* write_mesh_groups: the pass's meshes by look and transform */
+    size_t cap_mkeys;
+    uint32_t *mgroup; /* per mesh: its group's start in mkeys, if it leads one */
+    size_t cap_mgroup;
+    scene_tri *gtris; /* a group's triangles */
+    size_t cap_gtris;
 };
 
 povwriter *povwriter_create(void)
@@ -106,6 +117,7 @@ povwriter *povwriter_create(void)
     memset(w, 0, sizeof *w);
     dedup_init(&w->vtx, 3);
     dedup_init(&w->col, 4);
+    povgrid_init(&w->grid);
     return w;
 }
 
@@ -120,6 +132,11 @@ void povwriter_destroy(povwriter *w)
     tr_free(w->faces);
     tr_free(w->bverts);
     tr_free(w->btris);
+    tr_free(w->vcolp);
+    povgrid_finish(&w->grid);
+    tr_free(w->mkeys);
+    tr_free(w->mgroup);
+    tr_free(w->gtris);
     tr_free(w->front);
     tr_free(w->eye);
     tr_free(w->vcorner);
@@ -399,20 +416,23 @@ static const float *mesh_tint(povwriter *w, const scene_vertex *verts, const sce
     return w->tinted ? w->mod_tint : NULL;
 }
 
-/* Whether a prototype's mesh carries its vertex colours as one image
- * (povtex_colours) rather than a texture_list: each object{} copy of a
- * mesh2 copies and transforms its whole texture_list in POV-Ray, a single
- * texture stays one (docs/mapping.md section 12). The colours must vary,
+/* Whether a mesh carries its vertex colours as one image (povtex_colours,
+ * povtex_colour_grid) rather than a texture_list: a texture object per
+ * colour costs POV-Ray time and memory, and each object{} copy of a
+ * prototype's mesh2 copies and transforms its whole texture_list, a single
+ * texture stays one (docs/mapping.md sections 4 and 12). The colours must
+ * vary (outside a prototype, more than COLOUR_IMAGE_MIN_COLOURS of them),
  * be opaque and need no more clamping than POVTEX_CLAMP_MAX; lit, the
  * colour must be GL_AMBIENT_AND_DIFFUSE's alone (the pigment then scales
  * both as GL's colour does), one-sided. Fog and blending keep the list. */
 #define COLOUR_IMAGE_MAX_TRIS (1u << 22)
+#define COLOUR_IMAGE_MIN_COLOURS 16
 
 static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const scene_tri *tris,
                             size_t nt, const scene_look *look)
 {
     const scene *s = w->light.s;
-    if (!w->in_proto || !s || look->fog || look->blend != SCENE_BLEND_OPAQUE ||
+    if (!s || look->fog || look->blend != SCENE_BLEND_OPAQUE ||
         nt > COLOUR_IMAGE_MAX_TRIS)
         return false;
     if (look->lit) {
@@ -423,23 +443,30 @@ static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const
             m->emission[0][0] != 0 || m->emission[0][1] != 0 || m->emission[0][2] != 0)
             return false;
     }
-    const float *first = NULL;
-    bool differ = false;
+    /* Outside a prototype a few colours stay a texture_list: a handful of
+     * textures costs POV-Ray less than an image and a uv per vertex. */
+    size_t want = w->in_proto ? 2 : COLOUR_IMAGE_MIN_COLOURS + 1;
+    const float *seen[COLOUR_IMAGE_MIN_COLOURS + 1];
+    size_t nseen = 0, last = 0;
     for (size_t i = 0; i < nt; i++) {
         const float *c[3];
         for (int k = 0; k < 3; k++) {
             c[k] = verts[look->flat ? tris[i].provoking : tris[i].v[k]].color;
             if (c[k][3] != 1)
                 return false;
-            if (!first)
-                first = c[k];
-            else if (!differ && memcmp(first, c[k], 3 * sizeof *first) != 0)
-                differ = true;
+            if (nseen < want && (nseen == 0 || memcmp(seen[last], c[k], 3 * sizeof *c[k]) != 0)) {
+                size_t j = 0;
+                while (j < nseen && memcmp(seen[j], c[k], 3 * sizeof *c[k]) != 0)
+                    j++;
+                if (j == nseen)
+                    seen[nseen++] = c[k];
+                last = j;
+            }
         }
         if (!look->flat && povtex_colour_origin(c) < 0)
             return false;
     }
-    return differ;
+    return nseen >= want;
 }
 
 #define UNSET UINT32_MAX
@@ -479,7 +506,10 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     bool vimage = !tx && colour_image_ok(w, verts, tris, nt, look);
     /* A texel colour that replaces the fragment's needs no vertex colour. */
     bool vcolour = !vimage && !look->flat && !(tx && tx->colour_is_texel);
-    uint32_t words = 3 + (normals ? 3 : 0) + (vcolour ? 4 : 0) + (tx ? 2 : 0);
+    /* Smooth colours as an image: a vertex's colour is its texel on the grid. */
+    bool vgrid = vimage && !look->flat;
+    bool key_colour = vcolour || vgrid;
+    uint32_t words = 3 + (normals ? 3 : 0) + (key_colour ? 4 : 0) + (tx ? 2 : 0);
     dedup *vd = &w->vtx;
     if (nt == 0 || (to_eye && !mat4_finite(to_eye)))
         return 0;
@@ -689,7 +719,7 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
                         }
                         nk = 6;
                     }
-                    if (vcolour)
+                    if (key_colour)
                         memcpy(ukey + nk, sv->color, 4 * sizeof *ukey);
                     if (tx) {
                         float uv[2];
@@ -746,16 +776,41 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     if (kept == 0)
         return 0;
     bool colour_list = w->col.count > 1;
+    size_t nleft = kept, nvg = 0; /* faces off the grid; uv of grid vertices */
     if (vimage) {
-        if (tr_grow((void **)&w->vcorner, &w->cap_vcorner, kept * 3, sizeof *w->vcorner) != 0 ||
-            tr_grow((void **)&w->vuv, &w->cap_vuv, kept * 6, sizeof *w->vuv) != 0)
-            return -1;
-        for (size_t i = 0; i < kept; i++) {
-            const scene_tri *t = &tris[w->faces[i * 6 + 3]];
-            for (int k = 0; k < 3; k++)
-                w->vcorner[3 * i + k] = verts[look->flat ? t->provoking : t->v[k]].color;
+        if (vgrid) {
+            if (tr_grow((void **)&w->vcolp, &w->cap_vcolp, vd->count, sizeof *w->vcolp) != 0)
+                return -1;
+            for (size_t v = 0; v < vd->count; v++)
+                w->vcolp[v] = (const float *)(const void *)(dedup_key(vd, v) + 3 + (normals ? 3 : 0));
+            if (povgrid_build(&w->grid, w->faces, 6, kept, vd->count, w->vcolp) != 0)
+                return -1;
+            if (w->grid.ncells > 0) {
+                nleft = kept - w->grid.ncells;
+                nvg = vd->count;
+            }
         }
-        img = povtex_colours(&w->tex, w->vcorner, kept, w->vuv);
+        for (;;) {
+            if (tr_grow((void **)&w->vcorner, &w->cap_vcorner, nleft * 3 + 1,
+                        sizeof *w->vcorner) != 0 ||
+                tr_grow((void **)&w->vuv, &w->cap_vuv, nvg * 2 + nleft * 6 + 2, sizeof *w->vuv) != 0)
+                return -1;
+            for (size_t i = 0, j = 0; i < kept; i++) {
+                if (nvg && w->grid.in_grid[i])
+                    continue;
+                const scene_tri *t = &tris[w->faces[i * 6 + 3]];
+                for (int k = 0; k < 3; k++)
+                    w->vcorner[3 * j + k] = verts[look->flat ? t->provoking : t->v[k]].color;
+                j++;
+            }
+            img = nvg ? povtex_colour_grid(&w->tex, &w->grid, w->vcolp, nvg, w->vuv, w->vcorner,
+                                           nleft, w->vuv + 2 * nvg)
+                      : povtex_colours(&w->tex, w->vcorner, kept, w->vuv);
+            if (img != POVTEX_TOO_LARGE || !nvg)
+                break;
+            nvg = 0; /* the grid and the blocks past an image's size: blocks alone */
+            nleft = kept;
+        }
         if (img < 0 || povtex_image_pigment(&w->tex, (size_t)img, true, pigment) == 0)
             return -1;
     }
@@ -782,16 +837,30 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
             outbuf_puts(ob, look->fog ? "texture{rgl_fog}\n" : "\n");
         }
     }
+    /* A few faces off the grid: their corners as vertices of their own,
+     * with their blocks' uv, so that every uv stays parallel to the
+     * vertices and no uv_indices are needed (one index triple a face
+     * costs more text than three more vertices for a twelfth of them). */
+    bool dup = nvg && nleft > 0 && nleft * 12 < kept;
+    size_t ndup = dup ? nleft * 3 : 0;
     outbuf_puts(ob, "mesh2{\nvertex_vectors{");
-    outbuf_u64(ob, vd->count);
+    outbuf_u64(ob, vd->count + ndup);
     for (size_t i = 0; i < vd->count; i++)
         PUT_ENTRY(w, ob, ",\n<", (const float *)(const void *)dedup_key(vd, i), ">");
+    for (size_t i = 0; dup && i < kept; i++)
+        for (int k = 0; k < 3 && !w->grid.in_grid[i]; k++)
+            PUT_ENTRY(w, ob, ",\n<", (const float *)(const void *)dedup_key(vd, w->faces[i * 6 + k]),
+                      ">");
     outbuf_puts(ob, "}\n");
     if (normals) {
         outbuf_puts(ob, "normal_vectors{");
-        outbuf_u64(ob, vd->count);
+        outbuf_u64(ob, vd->count + ndup);
         for (size_t i = 0; i < vd->count; i++)
             PUT_ENTRY(w, ob, ",\n<", (const float *)(const void *)(dedup_key(vd, i) + 3), ">");
+        for (size_t i = 0; dup && i < kept; i++)
+            for (int k = 0; k < 3 && !w->grid.in_grid[i]; k++)
+                PUT_ENTRY(w, ob, ",\n<",
+                          (const float *)(const void *)(dedup_key(vd, w->faces[i * 6 + k]) + 3), ">");
         outbuf_puts(ob, "}\n");
     }
     if (tx) { /* parallel to vertex_vectors: taken by face_indices */
@@ -808,10 +877,10 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         }
         outbuf_puts(ob, "}\n");
     }
-    if (vimage) { /* per face corner: taken by uv_indices */
+    if (vimage) { /* a vertex's texel on the grid, then three per face off it */
         outbuf_puts(ob, "uv_vectors{");
-        outbuf_u64(ob, kept * 3);
-        for (size_t i = 0; i < kept * 3; i++) {
+        outbuf_u64(ob, nvg + nleft * 3);
+        for (size_t i = 0; i < nvg + nleft * 3; i++) {
             outbuf_puts(ob, ",\n<");
             outbuf_f32(ob, w->vuv[2 * i]);
             outbuf_putc(ob, ',');
@@ -843,7 +912,7 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     static const int order[3] = {0, 2, 1};
     outbuf_puts(ob, "face_indices{");
     outbuf_u64(ob, kept);
-    for (size_t i = 0; i < kept; i++) {
+    for (size_t i = 0, j = 0; i < kept; i++) {
         const uint32_t *f = w->faces + i * 6;
         char *p = outbuf_room(ob, 8 * 12);
         if (!p)
@@ -852,10 +921,13 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         *q++ = ',';
         *q++ = '\n';
         *q++ = '<';
+        bool own = dup && !w->grid.in_grid[i]; /* its corners' copies */
         for (int k = 0; k < 3; k++) {
-            q += cached_u32(w, q, f[order[k]]);
+            q += own ? numfmt_u64(q, vd->count + 3 * j + (size_t)order[k])
+                     : cached_u32(w, q, f[order[k]]);
             *q++ = k < 2 ? ',' : '>';
         }
+        j += own;
         if (colour_list) {
             if (f[3] == f[4] && f[4] == f[5]) {
                 *q++ = ',';
@@ -870,10 +942,10 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         outbuf_commit(ob, (size_t)(q - p));
     }
     outbuf_puts(ob, "}\n");
-    if (vimage) {
+    if (vimage && nleft > 0 && !dup) { /* else the uv go by face_indices */
         outbuf_puts(ob, "uv_indices{");
         outbuf_u64(ob, kept);
-        for (size_t i = 0; i < kept; i++) {
+        for (size_t i = 0, j = 0; i < kept; i++) {
             char *p = outbuf_room(ob, 8 * 12);
             if (!p)
                 return -1;
@@ -881,10 +953,13 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
             *q++ = ',';
             *q++ = '\n';
             *q++ = '<';
+            bool on_grid = nvg && w->grid.in_grid[i];
             for (int k = 0; k < 3; k++) {
-                q += numfmt_u64(q, 3 * i + (size_t)order[k]);
+                q += numfmt_u64(q, on_grid ? w->faces[i * 6 + order[k]]
+                                           : nvg + 3 * j + (size_t)order[k]);
                 *q++ = k < 2 ? ',' : '>';
             }
+            j += !on_grid;
             outbuf_commit(ob, (size_t)(q - p));
         }
         outbuf_puts(ob, "}\n");
@@ -1336,17 +1411,118 @@ static int32_t instance_set(const povwriter *w, const scene *s, const scene_inst
     return POVLIGHT_UNGROUPED;
 }
 
+/* A mesh by what makes meshes one mesh2 (look and transform at float
+ * precision, as scene_mesh_for joins consecutive draws): a hash of those,
+ * then the mesh's place. 16 bytes a mesh: a frame may hold millions. */
+typedef struct mesh_key {
+    uint64_t hash;
+    uint32_t index;
+    uint32_t pad_;
+} mesh_key;
+
+static int mesh_key_cmp(const void *a, const void *b)
+{
+    const mesh_key *x = a, *y = b;
+    if (x->hash != y->hash)
+        return x->hash < y->hash ? -1 : 1;
+    return x->index < y->index ? -1 : x->index > y->index;
+}
+
+static uint64_t hash_bytes(uint64_t h, const void *p, size_t n)
+{
+    const unsigned char *c = p;
+    for (size_t i = 0; i < n; i++)
+        h = (h ^ c[i]) * 0x100000001b3ull; /* FNV-1a */
+    return h;
+}
+
+static bool same_group(const scene_mesh *a, const scene_mesh *b)
+{
+    return a->in_eye == b->in_eye && scene_look_equal(&a->look, &b->look) &&
+           mat4_equal_f32(&a->to_eye, &b->to_eye);
+}
+
+/* The pass's meshes, those of one look and transform as one mesh2 wherever
+ * they were drawn (the strips of a surface, the lit and relit parts of
+ * each: docs/mapping.md section 4), so that their shared vertices are
+ * written once and POV-Ray builds one object. A group is written where
+ * its first mesh was drawn. */
+static int write_mesh_groups(povwriter *w, outbuf *ob, const scene *s)
+{
+    size_t n = 0;
+    if (tr_grow((void **)&w->mkeys, &w->cap_mkeys, s->nmeshes, sizeof *w->mkeys) != 0 ||
+        tr_grow((void **)&w->mgroup, &w->cap_mgroup, s->nmeshes, sizeof *w->mgroup) != 0)
+        return -1;
+    for (size_t i = 0; i < s->nmeshes; i++) {
+        const scene_mesh *m = &s->meshes[i];
+        w->mgroup[i] = UINT32_MAX;
+        if (m->tri_count == 0 || m->proto || !povlight_in_pass(&w->light, &m->look))
+            continue;
+        uint64_t h = hash_bytes(0xcbf29ce484222325ull, &m->look, sizeof m->look);
+        for (int e = 0; e < 16; e++) {
+            float f = (float)m->to_eye.m[e];
+            h = hash_bytes(h, &f, sizeof f);
+        }
+        h = hash_bytes(h, &m->in_eye, sizeof m->in_eye);
+        w->mkeys[n].hash = h;
+        w->mkeys[n].index = (uint32_t)i;
+        w->mkeys[n++].pad_ = 0;
+    }
+    if (n > 1)
+        qsort(w->mkeys, n, sizeof *w->mkeys, mesh_key_cmp);
+    /* mgroup[i]: for a group's first mesh, where its run of keys starts. */
+    for (size_t a = 0; a < n;) {
+        size_t b = a + 1;
+        while (b < n && w->mkeys[b].hash == w->mkeys[a].hash)
+            b++;
+        w->mgroup[w->mkeys[a].index] = (uint32_t)a;
+        a = b;
+    }
+    const uint32_t alone = UINT32_MAX - 1; /* a hash collision: written by itself */
+    for (size_t i = 0; i < s->nmeshes; i++) {
+        if (w->mgroup[i] == UINT32_MAX)
+            continue;
+        const scene_mesh *m = &s->meshes[i];
+        const scene_tri *tris = s->tris + m->first_tri;
+        size_t nt = m->tri_count;
+        if (w->mgroup[i] != alone) {
+            size_t a = w->mgroup[i], members = 1;
+            for (size_t b = a + 1; b < n && w->mkeys[b].hash == w->mkeys[a].hash; b++) {
+                const scene_mesh *g = &s->meshes[w->mkeys[b].index];
+                if (same_group(m, g)) {
+                    nt += g->tri_count;
+                    members++;
+                } else {
+                    w->mgroup[w->mkeys[b].index] = alone;
+                }
+            }
+            if (members > 1) { /* gather in drawing order */
+                if (tr_grow((void **)&w->gtris, &w->cap_gtris, nt, sizeof *w->gtris) != 0)
+                    return -1;
+                size_t t = 0;
+                for (size_t b = a; b < n && w->mkeys[b].hash == w->mkeys[a].hash; b++) {
+                    const scene_mesh *g = &s->meshes[w->mkeys[b].index];
+                    if (b == a || same_group(m, g)) {
+                        memcpy(w->gtris + t, s->tris + g->first_tri,
+                               g->tri_count * sizeof *w->gtris);
+                        t += g->tri_count;
+                    }
+                }
+                tris = w->gtris;
+            }
+        }
+        if (write_mesh2(w, ob, s->verts, tris, nt, &m->look, m->in_eye ? NULL : &m->to_eye) != 0)
+            return -1;
+    }
+    return 0;
+}
+
 /* The meshes, solids and display-list instances of the writer's pass
  * (w->light.pass). */
 static int write_objects(povwriter *w, outbuf *ob, const scene *s)
 {
-    for (size_t i = 0; i < s->nmeshes; i++) {
-        const scene_mesh *m = &s->meshes[i];
-        if (m->tri_count > 0 && !m->proto && povlight_in_pass(&w->light, &m->look) &&
-            write_mesh2(w, ob, s->verts, s->tris + m->first_tri, m->tri_count, &m->look,
-                        m->in_eye ? NULL : &m->to_eye) != 0)
-            return -1;
-    }
+    if (write_mesh_groups(w, ob, s) != 0)
+        return -1;
     povwrite_solids(ob, s, &w->light);
     for (size_t i = 0; i < s->ninstances; i++) {
         const scene_instance *in = &s->instances[i];

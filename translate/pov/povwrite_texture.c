@@ -294,44 +294,10 @@ int povtex_colour_origin(const float *const c[3])
     return e <= POVTEX_CLAMP_MAX ? o : -1;
 }
 
-int povtex_colours(povtex *pt, const float *const *corners, size_t n, float *uv)
+/* The image px (iw x ih RGBA, opaque), named by its content and kept
+ * once; takes px. Returns its index, -1 when memory ran out. */
+static int add_colour_image(povtex *pt, uint8_t *px, int iw, int ih)
 {
-    size_t bw = 1;
-    while (bw * bw < n)
-        bw++;
-    size_t bh = n ? (n + bw - 1) / bw : 1;
-    if (bw * 2 > PADDED_MAX || bh * 2 > PADDED_MAX)
-        return -1;
-    int iw = (int)(bw * 2), ih = (int)(bh * 2);
-    uint8_t *px = tr_realloc(NULL, (size_t)iw * (size_t)ih * 4);
-    if (!px)
-        return -1;
-    memset(px, 0, (size_t)iw * (size_t)ih * 4);
-    for (size_t i = 3; i < (size_t)iw * (size_t)ih * 4; i += 4)
-        px[i] = 255;
-    for (size_t j = 0; j < n; j++) {
-        const float *const *c = corners + 3 * j;
-        int e, o = best_origin(c, &e);
-        size_t x = (j % bw) * 2, y = (j / bw) * 2;
-        uint8_t *a = px + (y * (size_t)iw + x) * 4, *b = a + 4, *cc = a + (size_t)iw * 4,
-                *d = cc + 4;
-        for (int k = 0; k < 3; k++) {
-            int va = quantise(c[o][k]), vb = quantise(c[(o + 1) % 3][k]),
-                vc = quantise(c[(o + 2) % 3][k]), vd = vb + vc - va;
-            a[k] = (uint8_t)va;
-            b[k] = (uint8_t)vb;
-            cc[k] = (uint8_t)vc;
-            d[k] = (uint8_t)(vd < 0 ? 0 : vd > 255 ? 255 : vd);
-        }
-        /* Each corner samples its texel's centre, so the face stays in
-         * its block. */
-        static const int du[3] = {0, 1, 0}, dv[3] = {0, 0, 1};
-        for (int r = 0; r < 3; r++) {
-            float *t = uv + 6 * j + 2 * ((o + r) % 3);
-            t[0] = (float)(((double)x + du[r] + 0.5) / iw);
-            t[1] = (float)(((double)y + dv[r] + 0.5) / ih);
-        }
-    }
     char name[POVTEX_NAME_MAX];
     snprintf(name, sizeof name, "rgl-tex-%016llx.png",
              (unsigned long long)content_hash(px, iw, ih, false));
@@ -352,4 +318,101 @@ int povtex_colours(povtex *pt, const float *const *corners, size_t n, float *uv)
     im->height = ih;
     im->texture = -1;
     return (int)(pt->n - 1);
+}
+
+/* An opaque black iw x ih image, or NULL. */
+static uint8_t *new_image(int iw, int ih)
+{
+    uint8_t *px = tr_realloc(NULL, (size_t)iw * (size_t)ih * 4);
+    if (!px)
+        return NULL;
+    memset(px, 0, (size_t)iw * (size_t)ih * 4);
+    for (size_t i = 3; i < (size_t)iw * (size_t)ih * 4; i += 4)
+        px[i] = 255;
+    return px;
+}
+
+/* Face j's 2 x 2 block at block (j % bw, j / bw) from row y0 up, and the
+ * uv of its corners (uv[6 * j + 2 * k]). */
+static void put_blocks(uint8_t *px, int iw, int ih, int y0, size_t bw,
+                       const float *const *corners, size_t n, float *uv)
+{
+    for (size_t j = 0; j < n; j++) {
+        const float *const *c = corners + 3 * j;
+        int e, o = best_origin(c, &e);
+        size_t x = (j % bw) * 2, y = (size_t)y0 + (j / bw) * 2;
+        uint8_t *a = px + (y * (size_t)iw + x) * 4, *b = a + 4, *cc = a + (size_t)iw * 4,
+                *d = cc + 4;
+        for (int k = 0; k < 3; k++) {
+            int va = quantise(c[o][k]), vb = quantise(c[(o + 1) % 3][k]),
+                vc = quantise(c[(o + 2) % 3][k]), vd = vb + vc - va;
+            a[k] = (uint8_t)va;
+            b[k] = (uint8_t)vb;
+            cc[k] = (uint8_t)vc;
+            d[k] = (uint8_t)(vd < 0 ? 0 : vd > 255 ? 255 : vd);
+        }
+        /* Each corner samples its texel's centre, so the face stays in
+         * its block. */
+        static const int du[3] = {0, 1, 0}, dv[3] = {0, 0, 1};
+        for (int r = 0; r < 3; r++) {
+            float *t = uv + 6 * j + 2 * ((o + r) % 3);
+            t[0] = (float)(((double)x + du[r] + 0.5) / iw);
+            t[1] = (float)(((double)y + dv[r] + 0.5) / ih);
+        }
+    }
+}
+
+int povtex_colours(povtex *pt, const float *const *corners, size_t n, float *uv)
+{
+    size_t bw = 1;
+    while (bw * bw < n)
+        bw++;
+    size_t bh = n ? (n + bw - 1) / bw : 1;
+    if (bw * 2 > PADDED_MAX || bh * 2 > PADDED_MAX)
+        return -1;
+    int iw = (int)(bw * 2), ih = (int)(bh * 2);
+    uint8_t *px = new_image(iw, ih);
+    if (!px)
+        return -1;
+    put_blocks(px, iw, ih, 0, bw, corners, n, uv);
+    return add_colour_image(pt, px, iw, ih);
+}
+
+int povtex_colour_grid(povtex *pt, const povgrid *g, const float *const *vcol, size_t nv,
+                       float *vuv, const float *const *corners, size_t n, float *uv)
+{
+    int gw = g->width, gh = g->height;
+    size_t bw = 0, bh = 0;
+    int iw = gw, ih = gh;
+    if (n) {
+        bw = 1;
+        while (bw * bw < n)
+            bw++;
+        if ((size_t)gw > 2 * bw)
+            bw = (size_t)gw / 2;
+        bh = (n + bw - 1) / bw;
+        iw = (int)(2 * bw) > gw ? (int)(2 * bw) : gw;
+        if (bh * 2 > PADDED_MAX)
+            return POVTEX_TOO_LARGE;
+        ih = gh + (int)(bh * 2);
+    }
+    if (iw < 1 || ih < 1 || iw > PADDED_MAX || ih > PADDED_MAX)
+        return POVTEX_TOO_LARGE;
+    uint8_t *px = new_image(iw, ih);
+    if (!px)
+        return -1;
+    for (size_t v = 0; v < nv; v++) {
+        if (g->tx[v] < 0) {
+            vuv[2 * v] = vuv[2 * v + 1] = 0;
+            continue;
+        }
+        uint8_t *t = px + ((size_t)g->ty[v] * (size_t)iw + (size_t)g->tx[v]) * 4;
+        for (int k = 0; k < 3; k++)
+            t[k] = (uint8_t)quantise(vcol[v][k]);
+        vuv[2 * v] = (float)((g->tx[v] + 0.5) / iw);
+        vuv[2 * v + 1] = (float)((g->ty[v] + 0.5) / ih);
+    }
+    if (n)
+        put_blocks(px, iw, ih, gh, bw, corners, n, uv);
+    return add_colour_image(pt, px, iw, ih);
 }

@@ -10,6 +10,7 @@
 #include <stdint.h>
 
 #include "outbuf.h"
+#include "povwrite_vgrid.h"
 #include "scene.h"
 
 /* An image file the scene refers to: RGBA texels, bottom row first, named
@@ -96,5 +97,15 @@ int povtex_colour_origin(const float *const c[3]);
  * uv[6 * j + 2 * k]. Returns the image's index in pt, -1 when memory ran
  * out. Images are marked texture -1. */
 int povtex_colours(povtex *pt, const float *const *corners, size_t n, float *uv);
+
+/* The same with a grid (povgrid_build over nv vertices of colours
+ * vcol[v]): its texels first, one per vertex on a cell, whose uv goes to
+ * vuv[2 * v] (0, 0 for vertices on no cell), then the blocks of the n
+ * faces off the grid as povtex_colours places them. Returns the image's
+ * index, -1 when memory ran out, POVTEX_TOO_LARGE when the image would
+ * pass POV-Ray's image size (then povtex_colours alone fits). */
+#define POVTEX_TOO_LARGE (-2)
+int povtex_colour_grid(povtex *pt, const povgrid *g, const float *const *vcol, size_t nv,
+                       float *vuv, const float *const *corners, size_t n, float *uv);
 
 #endif

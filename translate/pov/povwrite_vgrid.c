@@ -1,0 +1,330 @@
+/* povwrite_vgrid.c: vertex colours on a grid of texels (povwrite_vgrid.h).
+ *
+ * Pairs of consecutive faces that share an edge are quads; quads that
+ * share an edge are neighbours. A breadth-first walk from each quad not yet
+ * placed lays its component on integer texels, each neighbour on the far
+ * side of the shared edge; a quad whose corners are already elsewhere, or
+ * whose texels another vertex holds, stays off the grid. Components are
+ * then packed side by side in rows.
+ */
+#include "povwrite_vgrid.h"
+
+#include <stdbool.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "talloc.h"
+
+#define NONE UINT32_MAX
+#define COORD_BIAS (1 << 21)
+
+void povgrid_init(povgrid *g)
+{
+    memset(g, 0, sizeof *g);
+}
+
+void povgrid_finish(povgrid *g)
+{
+    tr_free(g->tx);
+    tr_free(g->ty);
+    tr_free(g->in_grid);
+    tr_free(g->quad);
+    tr_free(g->qface);
+    tr_free(g->ekey);
+    tr_free(g->eval);
+    tr_free(g->tkey);
+    tr_free(g->comp);
+    tr_free(g->queue);
+    tr_free(g->cbox);
+    memset(g, 0, sizeof *g);
+}
+
+static int q8(float x)
+{
+    return x > 0 ? (x < 1 ? (int)(x * 255.0f + 0.5f) : 255) : 0; /* NaN: 0 */
+}
+
+static inline uint64_t mix(uint64_t k)
+{
+    k ^= k >> 33;
+    k *= 0xff51afd7ed558ccdull;
+    k ^= k >> 33;
+    return k;
+}
+
+/* The slot of an edge (key found or the empty slot for it). */
+static size_t edge_slot(const povgrid *g, size_t cap, uint64_t key)
+{
+    size_t i = (size_t)mix(key) & (cap - 1);
+    while (g->ekey[i] != 0 && g->ekey[i] != key)
+        i = (i + 1) & (cap - 1);
+    return i;
+}
+
+static uint64_t edge_key(uint32_t a, uint32_t b)
+{
+    uint32_t lo = a < b ? a : b, hi = a < b ? b : a;
+    return ((uint64_t)lo << 32 | hi) + 1; /* 0: empty */
+}
+
+static uint64_t texel_key(int32_t comp, int32_t x, int32_t y)
+{
+    return ((uint64_t)comp << 44 | (uint64_t)(x + COORD_BIAS) << 22 | (uint64_t)(y + COORD_BIAS)) +
+           1;
+}
+
+/* The vertex at a texel: slot of key, found or empty. */
+static size_t texel_slot(const povgrid *g, uint64_t key)
+{
+    size_t cap = g->cap_tkey;
+    size_t i = (size_t)mix(key) & (cap - 1);
+    while (g->tkey[i] != 0 && g->tkey[i] != key)
+        i = (i + 1) & (cap - 1);
+    return i;
+}
+
+static void put_vertex(povgrid *g, uint32_t v, int32_t comp, int32_t x, int32_t y)
+{
+    g->tx[v] = x;
+    g->ty[v] = y;
+    g->comp[v] = comp;
+    g->tkey[texel_slot(g, texel_key(comp, x, y))] = texel_key(comp, x, y);
+}
+
+/* Whether v can go to (x, y) of comp: there already, or unplaced and the
+ * texel free. */
+static bool fits(const povgrid *g, uint32_t v, int32_t comp, int32_t x, int32_t y)
+{
+    if (g->tx[v] != -1 || g->comp[v] != -1)
+        return g->comp[v] == comp && g->tx[v] == x && g->ty[v] == y;
+    return g->tkey[texel_slot(g, texel_key(comp, x, y))] == 0;
+}
+
+static size_t pow2_above(size_t n)
+{
+    size_t c = 16;
+    while (c < n * 2)
+        c *= 2;
+    return c;
+}
+
+int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, size_t nv,
+                  const float *const *col)
+{
+    g->width = g->height = 0;
+    g->ncells = 0;
+    if (tr_grow((void **)&g->tx, &g->cap_v, nv ? nv : 1, sizeof *g->tx) != 0 ||
+        tr_grow((void **)&g->ty, &g->cap_ty, nv ? nv : 1, sizeof *g->ty) != 0 ||
+        tr_grow((void **)&g->comp, &g->cap_comp, nv ? nv : 1, sizeof *g->comp) != 0)
+        return -1;
+    if (tr_grow((void **)&g->in_grid, &g->cap_f, n ? n : 1, 1) != 0)
+        return -1;
+    for (size_t v = 0; v < nv; v++)
+        g->tx[v] = g->ty[v] = g->comp[v] = -1;
+    memset(g->in_grid, 0, n);
+    if (n < 2 || n > (1u << 21))
+        return 0;
+
+    /* Quads: consecutive faces sharing an edge, in parallelogram colours. */
+    size_t nq = 0;
+    if (tr_grow((void **)&g->quad, &g->cap_quad, (n / 2) * 4, sizeof *g->quad) != 0 ||
+        tr_grow((void **)&g->qface, &g->cap_qface, n / 2, sizeof *g->qface) != 0)
+        return -1;
+    for (size_t i = 0; i + 1 < n; i++) {
+        const uint32_t *a = faces + stride * i, *b = faces + stride * (i + 1);
+        int sa = -1, sb = -1, shared = 0;
+        for (int k = 0; k < 3; k++) {
+            bool in_b = a[k] == b[0] || a[k] == b[1] || a[k] == b[2];
+            bool in_a = b[k] == a[0] || b[k] == a[1] || b[k] == a[2];
+            shared += in_b;
+            if (!in_b)
+                sa = k;
+            if (!in_a)
+                sb = k;
+        }
+        if (shared != 2 || sa < 0 || sb < 0)
+            continue;
+        uint32_t o1 = a[sa], x = a[(sa + 1) % 3], y = a[(sa + 2) % 3], o2 = b[sb];
+        bool flat = true;
+        for (int k = 0; k < 3 && flat; k++) {
+            int d = q8(col[x][k]) + q8(col[y][k]) - q8(col[o1][k]) - q8(col[o2][k]);
+            flat = d <= POVTEX_GRID_TOL && d >= -POVTEX_GRID_TOL;
+        }
+        if (!flat)
+            continue;
+        uint32_t *q = g->quad + 4 * nq;
+        q[0] = o1, q[1] = x, q[2] = o2, q[3] = y;
+        g->qface[nq++] = (uint32_t)i;
+        i++; /* the pair is taken */
+    }
+    if (nq == 0)
+        return 0;
+
+    /* Edges -> up to two quads. */
+    size_t ecap = pow2_above(nq * 4);
+    if (ecap > g->cap_edge) {
+        uint64_t *k = tr_realloc(g->ekey, ecap * sizeof *k);
+        if (!k)
+            return -1;
+        g->ekey = k;
+        uint32_t *v = tr_realloc(g->eval, ecap * 2 * sizeof *v);
+        if (!v)
+            return -1;
+        g->eval = v;
+        g->cap_edge = ecap;
+    }
+    memset(g->ekey, 0, ecap * sizeof *g->ekey);
+    for (size_t q = 0; q < nq; q++)
+        for (int k = 0; k < 4; k++) {
+            uint64_t key = edge_key(g->quad[4 * q + k], g->quad[4 * q + (k + 1) % 4]);
+            size_t s = edge_slot(g, ecap, key);
+            if (g->ekey[s] == 0) {
+                g->ekey[s] = key;
+                g->eval[2 * s] = (uint32_t)q;
+                g->eval[2 * s + 1] = NONE;
+            } else if (g->eval[2 * s + 1] == NONE && g->eval[2 * s] != q) {
+                g->eval[2 * s + 1] = (uint32_t)q;
+            }
+        }
+
+    /* Texels -> vertices; the walk's queue, whose entries' high bit marks
+     * a quad seen (state per quad kept in qface's high bit). */
+    size_t tcap = pow2_above(nq * 4 + 4);
+    if (tcap > g->cap_tkey) {
+        uint64_t *k = tr_realloc(g->tkey, tcap * sizeof *k);
+        if (!k)
+            return -1;
+        g->tkey = k;
+        g->cap_tkey = tcap;
+    }
+    memset(g->tkey, 0, g->cap_tkey * sizeof *g->tkey);
+    if (tr_grow((void **)&g->queue, &g->cap_queue, nq, sizeof *g->queue) != 0)
+        return -1;
+    const uint32_t SEEN = 1u << 31;
+    int32_t ncomp = 0;
+    size_t placed = 0;
+    for (size_t q0 = 0; q0 < nq; q0++) {
+        if (g->qface[q0] & SEEN)
+            continue;
+        g->qface[q0] |= SEEN;
+        const uint32_t *c = g->quad + 4 * q0;
+        if (g->comp[c[0]] != -1 || g->comp[c[1]] != -1 || g->comp[c[2]] != -1 ||
+            g->comp[c[3]] != -1 || ncomp >= (1 << 19))
+            continue;
+        int32_t k = ncomp++;
+        if (tr_grow((void **)&g->cbox, &g->cap_cbox, (size_t)ncomp * 4, sizeof *g->cbox) != 0)
+            return -1;
+        int32_t *box = g->cbox + 4 * k;
+        box[0] = box[1] = 0, box[2] = box[3] = 1;
+        put_vertex(g, c[0], k, 0, 0);
+        put_vertex(g, c[1], k, 1, 0);
+        put_vertex(g, c[2], k, 1, 1);
+        put_vertex(g, c[3], k, 0, 1);
+        g->in_grid[g->qface[q0] & ~SEEN] = g->in_grid[(g->qface[q0] & ~SEEN) + 1] = 1;
+        placed += 2;
+        size_t head = 0, tail = 0;
+        g->queue[tail++] = (uint32_t)q0;
+        while (head < tail) {
+            uint32_t q = g->queue[head++];
+            const uint32_t *qc = g->quad + 4 * q;
+            int32_t cx = g->tx[qc[0]], cy = g->ty[qc[0]];
+            for (int e = 1; e < 4; e++) {
+                cx = g->tx[qc[e]] < cx ? g->tx[qc[e]] : cx;
+                cy = g->ty[qc[e]] < cy ? g->ty[qc[e]] : cy;
+            }
+            for (int e = 0; e < 4; e++) {
+                uint32_t u = qc[e], w = qc[(e + 1) % 4];
+                size_t s = edge_slot(g, ecap, edge_key(u, w));
+                for (int h = 0; h < 2; h++) {
+                    uint32_t q2 = g->eval[2 * s + h];
+                    if (q2 == NONE || (g->qface[q2] & SEEN))
+                        continue;
+                    g->qface[q2] |= SEEN;
+                    int32_t ux = g->tx[u], uy = g->ty[u], wx = g->tx[w], wy = g->ty[w];
+                    int32_t nx = 0, ny = 0;
+                    if (ux == wx)
+                        nx = ux == cx ? -1 : 1;
+                    else
+                        ny = uy == cy ? -1 : 1;
+                    const uint32_t *d = g->quad + 4 * q2;
+                    int iu = 0;
+                    while (iu < 4 && d[iu] != u)
+                        iu++;
+                    if (iu == 4)
+                        continue;
+                    uint32_t pu, pw;
+                    if (d[(iu + 1) % 4] == w)
+                        pu = d[(iu + 3) % 4], pw = d[(iu + 2) % 4];
+                    else if (d[(iu + 3) % 4] == w)
+                        pu = d[(iu + 1) % 4], pw = d[(iu + 2) % 4];
+                    else
+                        continue;
+                    int32_t pux = ux + nx, puy = uy + ny, pwx = wx + nx, pwy = wy + ny;
+                    if (pux < -COORD_BIAS + 2 || pux > COORD_BIAS - 2 || puy < -COORD_BIAS + 2 ||
+                        puy > COORD_BIAS - 2 || !fits(g, pu, k, pux, puy) ||
+                        !fits(g, pw, k, pwx, pwy))
+                        continue;
+                    if (g->comp[pu] == -1)
+                        put_vertex(g, pu, k, pux, puy);
+                    if (g->comp[pw] == -1)
+                        put_vertex(g, pw, k, pwx, pwy);
+                    int32_t lx = pux < pwx ? pux : pwx, ly = puy < pwy ? puy : pwy;
+                    int32_t hx = pux > pwx ? pux : pwx, hy = puy > pwy ? puy : pwy;
+                    box[0] = lx < box[0] ? lx : box[0];
+                    box[1] = ly < box[1] ? ly : box[1];
+                    box[2] = hx > box[2] ? hx : box[2];
+                    box[3] = hy > box[3] ? hy : box[3];
+                    uint32_t f = g->qface[q2] & ~SEEN;
+                    g->in_grid[f] = g->in_grid[f + 1] = 1;
+                    placed += 2;
+                    g->queue[tail++] = q2;
+                }
+            }
+        }
+    }
+
+    /* Components in rows (shelves) of about the square's width. */
+    double area = 0;
+    int32_t widest = 0;
+    for (int32_t k = 0; k < ncomp; k++) {
+        const int32_t *b = g->cbox + 4 * k;
+        area += (double)(b[2] - b[0] + 1) * (b[3] - b[1] + 1);
+        widest = b[2] - b[0] + 1 > widest ? b[2] - b[0] + 1 : widest;
+    }
+    int32_t target = widest;
+    while ((double)target * target < area)
+        target++;
+    int32_t x = 0, y = 0, shelf = 0, w = 0;
+    for (int32_t k = 0; k < ncomp; k++) {
+        int32_t *b = g->cbox + 4 * k;
+        int32_t bw = b[2] - b[0] + 1, bh = b[3] - b[1] + 1;
+        if (x > 0 && x + bw > target) {
+            y += shelf;
+            x = shelf = 0;
+        }
+        /* x0, y0 become the component's offset */
+        b[0] = x - b[0];
+        b[1] = y - b[1];
+        x += bw;
+        shelf = bh > shelf ? bh : shelf;
+        w = x > w ? x : w;
+    }
+    int32_t h = y + shelf;
+    /* A grid mostly empty, or past an image's size, is no gain. */
+    if (w > 16384 || h > 16384 || (double)w * h > 4.0 * (double)placed + 4096) {
+        memset(g->in_grid, 0, n);
+        for (size_t v = 0; v < nv; v++)
+            g->tx[v] = g->ty[v] = -1;
+        return 0;
+    }
+    for (size_t v = 0; v < nv; v++)
+        if (g->comp[v] != -1) {
+            const int32_t *b = g->cbox + 4 * g->comp[v];
+            g->tx[v] += b[0];
+            g->ty[v] += b[1];
+        }
+    g->width = w;
+    g->height = h;
+    g->ncells = placed;
+    return 0;
+}
