@@ -49,7 +49,9 @@ typedef struct rgl_client_array_state {
                          is then an offset into that buffer */
 } rgl_client_array_state;
 
-/* Buffer: a growable byte buffer that commands are encoded into. */
+/* Buffer: a growable byte buffer that commands are encoded into. Its memory
+ * belongs to rgl_buf_reserve (large ones are mapped apart): move the struct
+ * whole, release it only with rgl_buf_finish. */
 typedef struct rgl_buf {
     uint8_t *data;
     size_t size, cap;
@@ -418,6 +420,10 @@ rgl_texture *rgl_texture_get(rgl_stream *s, uint32_t name, bool create);
 /* Test hook: makes the nth allocation from now on fail (0: none). The
  * RAYGL_TEST_FAIL_ALLOC environment variable sets it at initialisation. */
 void rgl_test_fail_alloc(unsigned long n);
+
+/* Test hook: allocations made so far (rgl_alloc, rgl_realloc and the
+ * recorder's own large buffers), counted from the start of the process. */
+unsigned long rgl_test_alloc_count(void);
 
 /* The one allocation wrapper, so a test can fail the Nth allocation. */
 void *rgl_alloc(size_t size);
