@@ -243,6 +243,11 @@ static bool recording(void) { return atomic_load(&g.status) == RAYGL_RECORDING; 
 
 /* ---- Buffers --------------------------------------------------------------- */
 
+/* Whether b's memory is a mapping of its own (alloc_huge): it starts at
+ * data - pad and holds pad + cap bytes. Smaller buffers are malloc's, with
+ * no pad. */
+static bool buf_mapped(const rgl_buf *b) { return b->pad + b->cap >= RGL_BUF_HUGE; }
+
 uint8_t *rgl_buf_reserve(rgl_buf *b, size_t n)
 {
     if (b->cap - b->size >= n)
@@ -252,20 +257,21 @@ uint8_t *rgl_buf_reserve(rgl_buf *b, size_t n)
         fail_set(EFBIG, "a frame or resource is larger than a chunk can hold");
         return NULL;
     }
-    size_t cap = b->cap ? b->cap : RGL_BUF_INITIAL;
-    while (cap < need)
+    size_t cap = b->pad + b->cap ? b->pad + b->cap : RGL_BUF_INITIAL;
+    while (cap - b->pad < need)
         cap *= 2;
     uint8_t *data;
     if (cap < RGL_BUF_HUGE) {
         data = rgl_realloc(b->data, cap);
     } else {
         /* Kept until the stream ends: later frames reuse these pages. */
-        data = alloc_huge(cap);
+        uint8_t *m = alloc_huge(cap);
+        data = m ? m + b->pad : NULL;
         if (data) {
             if (b->size)
                 memcpy(data, b->data, b->size);
-            if (b->cap >= RGL_BUF_HUGE)
-                munmap(b->data, b->cap);
+            if (buf_mapped(b))
+                munmap(b->data - b->pad, b->pad + b->cap);
             else
                 rgl_free(b->data);
         }
@@ -275,18 +281,29 @@ uint8_t *rgl_buf_reserve(rgl_buf *b, size_t n)
         return NULL;
     }
     b->data = data;
-    b->cap = cap;
+    b->cap = cap - b->pad;
     return data + b->size;
 }
 
 void rgl_buf_finish(rgl_buf *b)
 {
-    if (b->cap >= RGL_BUF_HUGE)
-        munmap(b->data, b->cap);
+    if (buf_mapped(b))
+        munmap(b->data - b->pad, b->pad + b->cap);
     else
         rgl_free(b->data);
     b->data = NULL;
-    b->size = b->cap = 0;
+    b->size = b->cap = b->pad = 0;
+}
+
+/* Moves the start of an empty mapped buffer `pad` bytes into its mapping
+ * (less than a quarter of it); other buffers stay as they are. */
+static void buf_set_pad(rgl_buf *b, size_t pad)
+{
+    if (b->size || !buf_mapped(b) || pad >= (b->pad + b->cap) / 4)
+        return;
+    b->data = b->data - b->pad + pad;
+    b->cap = b->cap + b->pad - pad;
+    b->pad = pad;
 }
 
 /* ---- The file -------------------------------------------------------------- */
@@ -361,13 +378,17 @@ static void direct_close(void)
 }
 
 /* Writes bytes [from, to) of the chunk whose pieces are iov (n of them)
- * at file offset `at` through dfd, copied into the aligned stage. Returns
+ * at file offset `at` through dfd: from src, which holds them at an
+ * aligned address, or else copied into the aligned stage. Returns
  * 0, EINVAL when the file system refuses the direct write (nothing is
  * lost: the caller writes the range through the page cache), or an errno
  * value. from, to and at are multiples of g.dio_align. Under file_mu. */
-static int write_direct(const struct iovec *iov, int n, size_t from, size_t to, uint64_t at)
+static int write_direct(const struct iovec *iov, int n, size_t from, size_t to, uint64_t at,
+                        const uint8_t *src)
 {
     size_t len = to - from;
+    if (src)
+        goto write;
     if (g.stage_cap < len) {
         size_t cap = g.stage_cap ? g.stage_cap : RGL_BUF_HUGE;
         while (cap < len)
@@ -390,9 +411,11 @@ static int write_direct(const struct iovec *iov, int n, size_t from, size_t to, 
         memcpy(g.stage + out, (const uint8_t *)iov[k].iov_base + lo, hi - lo);
         out += hi - lo;
     }
+    src = g.stage;
+write:;
     size_t done = 0;
     while (done < len) {
-        ssize_t w = pwrite(g.dfd, g.stage + done, len - done, (off_t)(at + done));
+        ssize_t w = pwrite(g.dfd, src + done, len - done, (off_t)(at + done));
         if (w < 0 && errno == EINTR)
             continue;
         if (w < 0 && done == 0 && errno == EINVAL)
@@ -421,9 +444,28 @@ static int write_frame_chunk(struct iovec *iov, int n, size_t total)
     size_t a = g.dio_align;
     size_t from = (size_t)((a - g.offset % a) % a);
     size_t to = from + (total - from) / a * a;
+    /* iov[2], the frame's commands, sits in memory where it will in the
+     * file within an aligned block when frame_align() predicted the file's
+     * end right: its aligned middle is written from where it is. */
+    const uint8_t *src = NULL;
+    size_t d0 = iov[0].iov_len + iov[1].iov_len, d1 = d0 + iov[2].iov_len;
+    if (n == 4 && (uintptr_t)iov[2].iov_base % a == (g.offset + d0) % a) {
+        size_t x0 = from, x1 = to;
+        while (x0 < d0)
+            x0 += a;
+        while (x1 > d1 && x1 >= a)
+            x1 -= a;
+        if (x1 > x0) {
+            from = x0;
+            to = x1;
+            src = (const uint8_t *)iov[2].iov_base + (x0 - d0);
+        }
+    }
     /* The head, up to the first aligned offset. */
     struct iovec part[8];
     int np = 0;
+    if (to <= from)
+        return write_iov(iov, n);
     size_t pos = 0;
     for (int k = 0; k < n && np < 8; k++) {
         size_t b = pos + iov[k].iov_len;
@@ -435,7 +477,7 @@ static int write_frame_chunk(struct iovec *iov, int n, size_t total)
     if (err)
         return err;
     uint64_t at = g.offset;
-    err = write_direct(iov, n, from, to, at);
+    err = write_direct(iov, n, from, to, at, src);
     if (err == EINVAL) {
         direct_close(); /* not for this file: the page cache from now on */
         to = from;
@@ -909,6 +951,37 @@ bool rgl_frame_wanted(const rgl_stream *s)
     return !g.sel_signal || atomic_load(&g.sel_armed);
 }
 
+/* The frame payload's prefix: stream, number, flags, state. Returns its
+ * length. */
+static size_t frame_prefix(const rgl_stream *s, uint8_t prefix[RGL_FRAME_PREFIX_MAX])
+{
+    uint8_t *p = rgl_put_varint(prefix, s->id);
+    p = rgl_put_varint(p, s->frame_number);
+    p = rgl_put_varint(p, s->frame_flags);
+    p = rgl_put_varint(p, s->state_resource);
+    return (size_t)(p - prefix);
+}
+
+/* Places the start of the empty frame buffer so that the frame's commands
+ * sit in memory at the offset within an O_DIRECT block that they will have
+ * in the file, as predicted from the file's end now: the frame's middle is
+ * then written from the buffer itself, with no copy (write_frame_chunk). A
+ * chunk written before the frame's (a resource, another thread's frame)
+ * spoils the prediction, and that frame is copied. Under the stream's
+ * lock. */
+static void frame_align(rgl_stream *s)
+{
+    uint8_t prefix[RGL_FRAME_PREFIX_MAX];
+    size_t plen = frame_prefix(s, prefix);
+    pthread_mutex_lock(&g.file_mu);
+    bool direct = g.dfd >= 0;
+    uint64_t at = g.offset + RGL_CHUNK_HEADER_SIZE + plen;
+    size_t a = g.dio_align;
+    pthread_mutex_unlock(&g.file_mu);
+    if (direct)
+        buf_set_pad(&s->frame, (size_t)(at % a));
+}
+
 /* Writes the stream's open frame, if it holds commands. Under the stream's
  * lock, not file_mu. With `reset` (only on the stream's own thread, whose
  * hot path moves pos without a lock) it leaves the frame closed and empty;
@@ -927,15 +1000,11 @@ static bool frame_write(rgl_stream *s, bool reset)
         if (reset && !s->image_taken)
             rgl_unrecorded_flush(s, &s->frame);
         uint8_t prefix[RGL_FRAME_PREFIX_MAX];
-        uint8_t *p = rgl_put_varint(prefix, s->id);
-        p = rgl_put_varint(p, s->frame_number);
-        p = rgl_put_varint(p, s->frame_flags);
-        p = rgl_put_varint(p, s->state_resource);
+        size_t plen = frame_prefix(s, prefix);
         pthread_mutex_lock(&g.file_mu);
         if (recording() && index_add(RGL_CHUNK_FRAME, s->id, s->frame_number, 0)) {
             uint64_t off;
-            if (write_chunk(RGL_CHUNK_FRAME, prefix, (size_t)(p - prefix), s->frame.data,
-                            s->frame.size, &off))
+            if (write_chunk(RGL_CHUNK_FRAME, prefix, plen, s->frame.data, s->frame.size, &off))
                 g.index[g.nindex - 1].offset = off;
             else
                 g.nindex--;
@@ -967,6 +1036,7 @@ static void frame_start(rgl_stream *s)
         s->frame_flags = RGL_FRAME_STATE_CARRIED;
         s->state_resource = 0;
     }
+    frame_align(s);
 }
 
 static void stream_destroy_key(void *arg)

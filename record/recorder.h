@@ -55,6 +55,7 @@ typedef struct rgl_client_array_state {
 typedef struct rgl_buf {
     uint8_t *data;
     size_t size, cap;
+    size_t pad; /* bytes before data in its own mapping (recorder.c) */
 } rgl_buf;
 
 /* Texture and display-list objects created through raygl calls, kept per
