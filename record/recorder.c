@@ -98,8 +98,6 @@ static struct recorder {
     int fd;
     int dfd;           /* the same file opened O_DIRECT, or -1 (write_frame_chunk) */
     size_t dio_align;  /* offset, length and memory alignment of a direct write */
-    uint8_t *stage;    /* aligned copy of a frame's middle for dfd; kept */
-    size_t stage_cap;
     uint64_t offset;
     char path[PATH_MAX];
     uint32_t next_stream_id;
@@ -377,42 +375,13 @@ static void direct_close(void)
     g.dfd = -1;
 }
 
-/* Writes bytes [from, to) of the chunk whose pieces are iov (n of them)
- * at file offset `at` through dfd: from src, which holds them at an
- * aligned address, or else copied into the aligned stage. Returns
- * 0, EINVAL when the file system refuses the direct write (nothing is
- * lost: the caller writes the range through the page cache), or an errno
- * value. from, to and at are multiples of g.dio_align. Under file_mu. */
-static int write_direct(const struct iovec *iov, int n, size_t from, size_t to, uint64_t at,
-                        const uint8_t *src)
+/* Writes len bytes from src, at an aligned address, at file offset `at`
+ * through dfd; len and at are multiples of g.dio_align. Returns 0, EINVAL
+ * when the file system refuses the direct write (nothing was written: the
+ * caller writes the range through the page cache), or an errno value.
+ * Under file_mu. */
+static int write_direct(const uint8_t *src, size_t len, uint64_t at)
 {
-    size_t len = to - from;
-    if (src)
-        goto write;
-    if (g.stage_cap < len) {
-        size_t cap = g.stage_cap ? g.stage_cap : RGL_BUF_HUGE;
-        while (cap < len)
-            cap *= 2;
-        uint8_t *m = alloc_huge(cap);
-        if (!m)
-            return EINVAL; /* the page cache path needs no stage */
-        if (g.stage)
-            munmap(g.stage, g.stage_cap);
-        g.stage = m;
-        g.stage_cap = cap;
-    }
-    size_t pos = 0, out = 0;
-    for (int k = 0; k < n && out < len; k++) {
-        size_t a = pos, b = pos + iov[k].iov_len;
-        pos = b;
-        if (b <= from || a >= to)
-            continue;
-        size_t lo = a < from ? from - a : 0, hi = (b > to ? to : b) - a;
-        memcpy(g.stage + out, (const uint8_t *)iov[k].iov_base + lo, hi - lo);
-        out += hi - lo;
-    }
-    src = g.stage;
-write:;
     size_t done = 0;
     while (done < len) {
         ssize_t w = pwrite(g.dfd, src + done, len - done, (off_t)(at + done));
@@ -420,64 +389,49 @@ write:;
             continue;
         if (w < 0 && done == 0 && errno == EINVAL)
             return EINVAL;
-        if (w <= 0 || (size_t)w % g.dio_align) {
-            /* A short direct write past which nothing aligned is left. */
-            if (w > 0)
-                done += (size_t)w;
+        if (w <= 0 || (size_t)w % g.dio_align) /* nothing aligned left to go on with */
             return w < 0 ? errno : EIO;
-        }
         done += (size_t)w;
     }
     return 0;
 }
 
-/* Writes the chunk in iov (n pieces, total bytes) at g.offset: the pages
- * wholly inside it with O_DIRECT from an aligned copy, which costs the
- * process a copy in its own memory instead of the kernel's copy into new
- * page-cache pages (3 to 10 times the CPU time for a 13 MB frame), the
- * unaligned head and tail through the page cache. Returns 0 or an errno
- * value. Under file_mu. */
-static int write_frame_chunk(struct iovec *iov, int n, size_t total)
+/* Writes a frame chunk, iov = header, prefix, commands, trailer (total
+ * bytes), at g.offset: the commands' whole O_DIRECT blocks straight from
+ * memory, the rest through the page cache. The kernel's copy into new
+ * page-cache pages cost 3 to 30 ms for a 13 MB frame here; the direct
+ * write costs about a millisecond. The commands must sit in memory at the
+ * offset within a block they have in the file: frame_align() arranges it
+ * at the frame's start, and when a chunk written since spoiled that, they
+ * are moved up in the buffer `frame` (NULL: another thread's, which must
+ * not move) when it has the room. Returns 0 or an errno value. Under
+ * file_mu. */
+static int write_frame_chunk(struct iovec iov[4], size_t total, rgl_buf *frame)
 {
     if (g.dfd < 0 || total < RGL_DIRECT_MIN)
-        return write_iov(iov, n);
+        return write_iov(iov, 4);
     size_t a = g.dio_align;
-    size_t from = (size_t)((a - g.offset % a) % a);
-    size_t to = from + (total - from) / a * a;
-    /* iov[2], the frame's commands, sits in memory where it will in the
-     * file within an aligned block when frame_align() predicted the file's
-     * end right: its aligned middle is written from where it is. */
-    const uint8_t *src = NULL;
     size_t d0 = iov[0].iov_len + iov[1].iov_len, d1 = d0 + iov[2].iov_len;
-    if (n == 4 && (uintptr_t)iov[2].iov_base % a == (g.offset + d0) % a) {
-        size_t x0 = from, x1 = to;
-        while (x0 < d0)
-            x0 += a;
-        while (x1 > d1 && x1 >= a)
-            x1 -= a;
-        if (x1 > x0) {
-            from = x0;
-            to = x1;
-            src = (const uint8_t *)iov[2].iov_base + (x0 - d0);
-        }
+    uint8_t *data = iov[2].iov_base;
+    size_t want = (size_t)((g.offset + d0) % a), have = (size_t)((uintptr_t)data % a);
+    if (have != want) {
+        size_t shift = (want + a - have) % a;
+        if (!frame || frame->data != data || frame->cap - frame->size < shift)
+            return write_iov(iov, 4);
+        memmove(data + shift, data, iov[2].iov_len);
+        data += shift;
+        iov[2].iov_base = data;
     }
-    /* The head, up to the first aligned offset. */
-    struct iovec part[8];
-    int np = 0;
+    /* Chunk offsets of the commands' first and last block boundaries. */
+    size_t from = d0 + (a - want) % a, to = d1 - (size_t)((g.offset + d1) % a);
     if (to <= from)
-        return write_iov(iov, n);
-    size_t pos = 0;
-    for (int k = 0; k < n && np < 8; k++) {
-        size_t b = pos + iov[k].iov_len;
-        if (pos < from)
-            part[np++] = (struct iovec){iov[k].iov_base, (b > from ? from : b) - pos};
-        pos = b;
-    }
-    int err = write_iov(part, np);
+        return write_iov(iov, 4);
+    struct iovec head[3] = {iov[0], iov[1], {data, from - d0}};
+    int err = write_iov(head, 3);
     if (err)
         return err;
     uint64_t at = g.offset;
-    err = write_direct(iov, n, from, to, at, src);
+    err = write_direct(data + (from - d0), to - from, at);
     if (err == EINVAL) {
         direct_close(); /* not for this file: the page cache from now on */
         to = from;
@@ -488,25 +442,15 @@ static int write_frame_chunk(struct iovec *iov, int n, size_t total)
         if (lseek(g.fd, (off_t)g.offset, SEEK_SET) < 0)
             return errno;
     }
-    /* The tail, from the end of the direct range. */
-    np = 0;
-    pos = 0;
-    for (int k = 0; k < n && np < 8; k++) {
-        size_t b = pos + iov[k].iov_len;
-        if (b > to) {
-            size_t lo = pos < to ? to - pos : 0;
-            part[np++] = (struct iovec){(uint8_t *)iov[k].iov_base + lo, iov[k].iov_len - lo};
-        }
-        pos = b;
-    }
-    return write_iov(part, np);
+    struct iovec tail[2] = {{data + (to - d0), d1 - to}, iov[3]};
+    return write_iov(tail, 2);
 }
 
 /* Writes one chunk: header, prefix and data as its payload, CRC-32C trailer,
  * in one writev. Under file_mu, recording. On failure the partial chunk is
  * cut off (best effort) and the recorder fails; returns false. */
 static bool write_chunk(uint8_t type, const void *prefix, size_t plen, const void *data,
-                        size_t dlen, uint64_t *chunk_offset)
+                        size_t dlen, uint64_t *chunk_offset, rgl_buf *movable)
 {
     uint8_t header[RGL_CHUNK_HEADER_SIZE], trailer[RGL_CHUNK_TRAILER_SIZE];
     if (!prefix)
@@ -525,7 +469,8 @@ static bool write_chunk(uint8_t type, const void *prefix, size_t plen, const voi
     };
     uint64_t start = g.offset;
     int err = type == RGL_CHUNK_FRAME
-                  ? write_frame_chunk(iov, 4, RGL_CHUNK_HEADER_SIZE + plen + dlen + sizeof trailer)
+                  ? write_frame_chunk(iov, RGL_CHUNK_HEADER_SIZE + plen + dlen + sizeof trailer,
+                                      movable)
                   : write_iov(iov, 4);
     if (err) {
         if (ftruncate(g.fd, (off_t)start) == 0)
@@ -636,7 +581,7 @@ static int open_trace(const char *path)
     int n = snprintf(info, sizeof info, "program=%s\nrecorder=libraygl %s\n", prog, RAYGL_VERSION);
     if (n < 0 || (size_t)n >= sizeof info)
         n = 0;
-    if (!write_chunk(RGL_CHUNK_INFO, NULL, 0, info, (size_t)n, NULL))
+    if (!write_chunk(RGL_CHUNK_INFO, NULL, 0, info, (size_t)n, NULL, NULL))
         return errno ? errno : EIO;
     return 0;
 }
@@ -666,10 +611,10 @@ static void write_index_and_end(void)
     }
     rgl_buf_commit(&b, p);
     uint64_t index_offset;
-    if (write_chunk(RGL_CHUNK_INDEX, NULL, 0, b.data, b.size, &index_offset)) {
+    if (write_chunk(RGL_CHUNK_INDEX, NULL, 0, b.data, b.size, &index_offset, NULL)) {
         uint8_t end[8];
         rgl_put_u64(end, index_offset);
-        write_chunk(RGL_CHUNK_END, NULL, 0, end, sizeof end, NULL);
+        write_chunk(RGL_CHUNK_END, NULL, 0, end, sizeof end, NULL, NULL);
     }
     rgl_buf_finish(&b);
 }
@@ -778,7 +723,7 @@ static uint32_t resource_put(uint32_t kind, const void *data, size_t size)
     uint64_t off;
     if (!index_add(RGL_CHUNK_RESOURCE, g.next_resource_id, kind, 0))
         goto out;
-    if (!write_chunk(RGL_CHUNK_RESOURCE, prefix, plen, data, size, &off)) {
+    if (!write_chunk(RGL_CHUNK_RESOURCE, prefix, plen, data, size, &off, NULL)) {
         g.nindex--;
         goto out;
     }
@@ -1004,7 +949,9 @@ static bool frame_write(rgl_stream *s, bool reset)
         pthread_mutex_lock(&g.file_mu);
         if (recording() && index_add(RGL_CHUNK_FRAME, s->id, s->frame_number, 0)) {
             uint64_t off;
-            if (write_chunk(RGL_CHUNK_FRAME, prefix, plen, s->frame.data, s->frame.size, &off))
+            /* Only the owner, which empties it next, may move its frame. */
+            if (write_chunk(RGL_CHUNK_FRAME, prefix, plen, s->frame.data, s->frame.size, &off,
+                            reset ? &s->frame : NULL))
                 g.index[g.nindex - 1].offset = off;
             else
                 g.nindex--;
