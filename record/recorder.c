@@ -8,9 +8,11 @@
  * takes its lock only in the slow path and at frame end; close and exit take
  * it to write the frames of other threads.
  *
- * The file is written with one writev per chunk under g.file_mu, so a frame
- * is in the kernel when rayglutSwapBuffers returns and survives a SIGKILL
- * right after; nothing is buffered in user space between chunks.
+ * The file is written with one writev per chunk under g.file_mu (a large
+ * frame: its whole O_DIRECT blocks through a second descriptor, the rest
+ * with writev; write_frame_chunk), so a frame is in the kernel when
+ * rayglutSwapBuffers returns and survives a SIGKILL right after; nothing
+ * is buffered in user space between chunks.
  */
 #include <errno.h>
 #include <fcntl.h>
@@ -447,8 +449,10 @@ static int write_frame_chunk(struct iovec iov[4], size_t total, rgl_buf *frame)
 }
 
 /* Writes one chunk: header, prefix and data as its payload, CRC-32C trailer,
- * in one writev. Under file_mu, recording. On failure the partial chunk is
- * cut off (best effort) and the recorder fails; returns false. */
+ * in one writev (a frame: write_frame_chunk; movable is the frame's buffer
+ * when it may be moved, else NULL). Under file_mu, recording. On failure
+ * the partial chunk is cut off (best effort) and the recorder fails;
+ * returns false. */
 static bool write_chunk(uint8_t type, const void *prefix, size_t plen, const void *data,
                         size_t dlen, uint64_t *chunk_offset, rgl_buf *movable)
 {

@@ -212,8 +212,9 @@ static inline uint8_t *rgl_put_opcode(uint8_t *p, uint32_t opcode)
  * ones. No-op without a context, while compiling a list, or not recording. */
 void rgl_resolve_matrices(void);
 
-/* Ends the calling thread's frame: writes the FRAME chunk with one writev
- * under the file lock (the frame's resources are already in the file), so it
+/* Ends the calling thread's frame: writes the FRAME chunk (one writev; a
+ * large frame's whole blocks with O_DIRECT) under the file lock (the
+ * frame's resources are already in the file), so it
  * is in the kernel when this returns and survives a crash right after; then
  * arranges for the next call to start a new frame. A frame with no commands
  * writes nothing. */
