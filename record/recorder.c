@@ -263,6 +263,22 @@ uint8_t *rgl_buf_reserve(rgl_buf *b, size_t n)
     uint8_t *data;
     if (cap < RGL_BUF_HUGE) {
         data = rgl_realloc(b->data, cap);
+    } else if (buf_mapped(b)) {
+        /* The pages move to a larger aligned mapping with no copy, and only
+         * the new half is cleared. */
+        uint8_t *m = alloc_huge(cap);
+        void *moved = m ? mremap(b->data - b->pad, b->pad + b->cap, cap,
+                                 MREMAP_MAYMOVE | MREMAP_FIXED, m)
+                        : MAP_FAILED;
+        data = NULL;
+        if (moved != MAP_FAILED) {
+#ifdef MADV_HUGEPAGE
+            madvise(moved, cap, MADV_HUGEPAGE);
+#endif
+            data = (uint8_t *)moved + b->pad;
+        } else if (m) {
+            munmap(m, cap);
+        }
     } else {
         /* Kept until the stream ends: later frames reuse these pages. */
         uint8_t *m = alloc_huge(cap);
@@ -270,10 +286,7 @@ uint8_t *rgl_buf_reserve(rgl_buf *b, size_t n)
         if (data) {
             if (b->size)
                 memcpy(data, b->data, b->size);
-            if (buf_mapped(b))
-                munmap(b->data - b->pad, b->pad + b->cap);
-            else
-                rgl_free(b->data);
+            rgl_free(b->data);
         }
     }
     if (!data) {
