@@ -22,9 +22,10 @@
  * loading and context creation are left out, and the trace's last write,
  * close and exit are in). For apitrace the figure also holds the `apitrace`
  * launcher's own few milliseconds. The report gives medians per call, the
- * added cost over plain gl, the ratio to apitrace, bytes per call and minor
- * page faults per frame (a recorder that keeps its buffers takes none
- * after the first frame).
+ * added cost over plain gl (the median of each repetition's difference to
+ * its gl run), the ratio to apitrace, bytes per call and minor page faults
+ * per frame (a recorder that keeps its buffers takes none after the first
+ * frame).
  *
  *   bench_record [--calls N] [--frames N] [--reps N] [--before LIBDIR]
  *                [--no-apitrace]
@@ -90,10 +91,13 @@ static double tv_sec(struct timeval tv) { return (double)tv.tv_sec + 1e-6 * (dou
  * far, runs the frames and exits. The parent measures the rest. */
 static int child(enum variant v, enum context c, const char *trace)
 {
-    /* glibc moves its mmap threshold up when a mapped block is freed; fixed
-     * here, Mesa's per-frame allocations take the same path in every
-     * variant whatever the recorder allocates. */
-    mallopt(M_MMAP_THRESHOLD, 128 * 1024);
+    /* glibc raises its mmap and trim thresholds when a mapped block is
+     * freed, so whether Mesa's per-frame buffers are mapped and faulted in
+     * anew each frame depends on what else the process freed before. Fixed
+     * where glibc's own rise ends, every variant allocates alike and
+     * Mesa's frames take no faults (as they settle to in a long run). */
+    mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024);
+    mallopt(M_TRIM_THRESHOLD, 64 * 1024 * 1024);
     static unsigned char pixels[16 * 16 * 4];
     OSMesaContext ctx = NULL;
     if (c == C_MESA) {
@@ -302,7 +306,7 @@ int main(int argc, char **argv)
            "first frame to exit)\n", calls_per_frame, vertices, FIXED_CALLS, frames, reps);
     for (int c = 0; c < C_COUNT; c++) {
         printf("  %s:\n", c == C_NOOP ? "no GL context (no-op dispatch)" : "OSMesa context");
-        double base = 0, added[V_COUNT] = {0};
+        double added[V_COUNT] = {0};
         for (int v = 0; v < V_COUNT; v++) {
             if (!on[v] || failed[c][v])
                 continue;
@@ -315,9 +319,13 @@ int main(int argc, char **argv)
             }
             double total = frames * calls_per_frame;
             double ns = median(cpu, reps) / total * 1e9;
-            if (v == V_GL)
-                base = ns;
-            added[v] = ns - base;
+            /* Added: the median of each repetition's difference to the gl
+             * run next to it in time, which a machine whose load drifts
+             * hurts less than a difference of medians. */
+            double diff[MAX_REPS];
+            for (int k = 0; k < reps; k++)
+                diff[k] = r[c][v][k].cpu - r[c][V_GL][k].cpu;
+            added[v] = on[V_GL] && !failed[c][V_GL] ? median(diff, reps) / total * 1e9 : 0;
             printf("    %-9s %7.2f ns/call (system %6.2f)", variant_name[v], ns,
                    median(sys, reps) / total * 1e9);
             if (v != V_GL)
