@@ -23,9 +23,10 @@
  * close and exit are in). For apitrace the figure also holds the `apitrace`
  * launcher's own few milliseconds. The report gives medians per call, the
  * added cost over plain gl (the median of each repetition's difference to
- * its gl run), the ratio to apitrace, bytes per call and minor page faults
- * per frame (a recorder that keeps its buffers takes none after the first
- * frame).
+ * its gl run), also from the second frame on (buffers grown, pages in: the
+ * steady state of a long recording), the ratio to apitrace, bytes per call
+ * and minor page faults per frame (a recorder that keeps its buffers takes
+ * none after the first frame).
  *
  *   bench_record [--calls N] [--frames N] [--reps N] [--before LIBDIR]
  *                [--no-apitrace]
@@ -121,6 +122,11 @@ static int child(enum variant v, enum context c, const char *trace)
     printf("%.9f %.9f %ld\n", tv_sec(ru.ru_utime), tv_sec(ru.ru_stime), ru.ru_minflt);
     fflush(stdout);
     for (int f = 0; f < frames; f++) {
+        if (f == 1) { /* the steady state starts: buffers grown, pages in */
+            getrusage(RUSAGE_SELF, &ru);
+            printf("%.9f\n", tv_sec(ru.ru_utime) + tv_sec(ru.ru_stime));
+            fflush(stdout);
+        }
         if (rec) {
             DRAW_FRAME(raygl, f);
             rayglFlush();
@@ -144,6 +150,7 @@ static int child(enum variant v, enum context c, const char *trace)
 
 typedef struct result {
     double cpu;   /* seconds, first frame to exit */
+    double later; /* seconds, second frame to exit */
     double sys;   /* of which system time */
     double minflt; /* minor page faults in that span */
     double bytes; /* trace file size */
@@ -190,7 +197,10 @@ static int measure(const char *self, enum variant v, enum context c, const char 
     FILE *in = fdopen(fds[0], "r");
     double start_user = 0, start_sys = 0;
     long flt = 0;
+    double second = 0;
     int got = in ? fscanf(in, "%lf %lf %ld", &start_user, &start_sys, &flt) : 0;
+    if (got == 3 && frames > 1)
+        got += fscanf(in, "%lf", &second);
     if (in)
         fclose(in);
     else
@@ -198,8 +208,9 @@ static int measure(const char *self, enum variant v, enum context c, const char 
     int status;
     struct rusage ru;
     if (wait4(pid, &status, 0, &ru) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0 ||
-        got != 3)
+        got != (frames > 1 ? 4 : 3))
         return -1;
+    out->later = tv_sec(ru.ru_utime) + tv_sec(ru.ru_stime) - second;
     out->cpu = tv_sec(ru.ru_utime) + tv_sec(ru.ru_stime) - start_user - start_sys;
     out->sys = tv_sec(ru.ru_stime) - start_sys;
     out->minflt = (double)(ru.ru_minflt - flt);
@@ -322,17 +333,24 @@ int main(int argc, char **argv)
             /* Added: the median of each repetition's difference to the gl
              * run next to it in time, which a machine whose load drifts
              * hurts less than a difference of medians. */
-            double diff[MAX_REPS];
-            for (int k = 0; k < reps; k++)
+            double diff[MAX_REPS], later[MAX_REPS];
+            for (int k = 0; k < reps; k++) {
                 diff[k] = r[c][v][k].cpu - r[c][V_GL][k].cpu;
-            added[v] = on[V_GL] && !failed[c][V_GL] ? median(diff, reps) / total * 1e9 : 0;
+                later[k] = r[c][v][k].later - r[c][V_GL][k].later;
+            }
+            bool paired = on[V_GL] && !failed[c][V_GL];
+            added[v] = paired ? median(diff, reps) / total * 1e9 : 0;
+            double added_later = paired && frames > 1
+                                     ? median(later, reps) / ((frames - 1) * calls_per_frame) * 1e9
+                                     : 0;
             printf("    %-9s %7.2f ns/call (system %6.2f)", variant_name[v], ns,
                    median(sys, reps) / total * 1e9);
             if (v != V_GL)
-                printf("  added %7.2f  %5.2f bytes/call", added[v], median(bytes, reps) / total);
+                printf("  added %7.2f (frames 2-%d: %7.2f)  %5.2f bytes/call", added[v], frames,
+                       added_later, median(bytes, reps) / total);
             else
-                printf("  %*s", 31, "");
-            printf("  %6.0f minor faults/frame\n", median(flt, reps) / frames);
+                printf("  %*s", 50, "");
+            printf("  %6.0f faults/frame\n", median(flt, reps) / frames);
         }
         if (on[V_APITRACE] && !failed[c][V_APITRACE] && added[V_RAYGL] > 0)
             printf("    apitrace adds %.1fx the CPU time raygl adds\n",
