@@ -8,9 +8,11 @@
  * takes its lock only in the slow path and at frame end; close and exit take
  * it to write the frames of other threads.
  *
- * The file is written with one writev per chunk under g.file_mu, so a frame
- * is in the kernel when rayglutSwapBuffers returns and survives a SIGKILL
- * right after; nothing is buffered in user space between chunks.
+ * The file is written with one writev per chunk under g.file_mu (a large
+ * frame: its whole O_DIRECT blocks through a second descriptor, the rest
+ * with writev; write_frame_chunk), so a frame is in the kernel when
+ * rayglutSwapBuffers returns and survives a SIGKILL right after; nothing
+ * is buffered in user space between chunks.
  */
 #include <errno.h>
 #include <fcntl.h>
@@ -22,6 +24,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <sys/uio.h>
 #include <unistd.h>
@@ -38,6 +41,11 @@
 #endif
 
 #define RGL_BUF_INITIAL (64u * 1024u)
+/* Buffers from this capacity on (frames of more than ~150k calls) are
+ * mapped apart, 2 MiB aligned, with transparent huge pages asked for: a
+ * frame of a million calls is 13 MB, which in 4 KiB pages costs 3,000 page
+ * faults the first time it fills, and 7 in huge pages. */
+#define RGL_BUF_HUGE (2u * 1024u * 1024u)
 #define RGL_DEFAULT_NAME_TRIES 1000
 /* The frame payload prefix: stream, number, flags, state, each a varint. */
 #define RGL_FRAME_PREFIX_MAX (4 * RGL_VARINT32_MAX)
@@ -90,6 +98,8 @@ static struct recorder {
 
     /* Under file_mu. */
     int fd;
+    int dfd;           /* the same file opened O_DIRECT, or -1 (write_frame_chunk) */
+    size_t dio_align;  /* offset, length and memory alignment of a direct write */
     uint64_t offset;
     char path[PATH_MAX];
     uint32_t next_stream_id;
@@ -106,11 +116,13 @@ static struct recorder {
 
     _Atomic unsigned long alloc_count;
     _Atomic unsigned long alloc_fail_at;
+    _Atomic unsigned long allocs; /* every allocation, for tests */
 } g = {
     .once = PTHREAD_ONCE_INIT,
     .list_mu = PTHREAD_MUTEX_INITIALIZER,
     .file_mu = PTHREAD_MUTEX_INITIALIZER,
     .fd = -1,
+    .dfd = -1,
     .sel_last = UINT32_MAX,
     .sel_every = 1,
 };
@@ -122,6 +134,7 @@ static void close_trace(void);
 
 static bool alloc_should_fail(void)
 {
+    atomic_fetch_add_explicit(&g.allocs, 1, memory_order_relaxed);
     unsigned long at = atomic_load_explicit(&g.alloc_fail_at, memory_order_relaxed);
     if (at == 0)
         return false;
@@ -149,6 +162,30 @@ void *rgl_realloc(void *p, size_t size)
 }
 
 void rgl_free(void *p) { free(p); }
+
+unsigned long rgl_test_alloc_count(void) { return atomic_load(&g.allocs); }
+
+/* size bytes of zeroed memory, RGL_BUF_HUGE aligned, huge pages asked for
+ * (a hint: without them it is plain anonymous memory). Freed with
+ * munmap(p, size). */
+static void *alloc_huge(size_t size)
+{
+    if (alloc_should_fail())
+        return NULL;
+    size_t span = size + RGL_BUF_HUGE;
+    uint8_t *m = mmap(NULL, span, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (m == MAP_FAILED)
+        return NULL;
+    uint8_t *p = (uint8_t *)(((uintptr_t)m + RGL_BUF_HUGE - 1) & ~(uintptr_t)(RGL_BUF_HUGE - 1));
+    if (p > m)
+        munmap(m, (size_t)(p - m));
+    if (m + span > p + size)
+        munmap(p + size, (size_t)(m + span - (p + size)));
+#ifdef MADV_HUGEPAGE
+    madvise(p, size, MADV_HUGEPAGE);
+#endif
+    return p;
+}
 
 /* ---- Failure --------------------------------------------------------------- */
 
@@ -206,6 +243,11 @@ static bool recording(void) { return atomic_load(&g.status) == RAYGL_RECORDING; 
 
 /* ---- Buffers --------------------------------------------------------------- */
 
+/* Whether b's memory is a mapping of its own (alloc_huge): it starts at
+ * data - pad and holds pad + cap bytes. Smaller buffers are malloc's, with
+ * no pad. */
+static bool buf_mapped(const rgl_buf *b) { return b->pad + b->cap >= RGL_BUF_HUGE; }
+
 uint8_t *rgl_buf_reserve(rgl_buf *b, size_t n)
 {
     if (b->cap - b->size >= n)
@@ -215,24 +257,66 @@ uint8_t *rgl_buf_reserve(rgl_buf *b, size_t n)
         fail_set(EFBIG, "a frame or resource is larger than a chunk can hold");
         return NULL;
     }
-    size_t cap = b->cap ? b->cap : RGL_BUF_INITIAL;
-    while (cap < need)
+    size_t cap = b->pad + b->cap ? b->pad + b->cap : RGL_BUF_INITIAL;
+    while (cap - b->pad < need)
         cap *= 2;
-    uint8_t *data = rgl_realloc(b->data, cap);
+    uint8_t *data;
+    if (cap < RGL_BUF_HUGE) {
+        data = rgl_realloc(b->data, cap);
+    } else if (buf_mapped(b)) {
+        /* The pages move to a larger aligned mapping with no copy, and only
+         * the new half is cleared. */
+        uint8_t *m = alloc_huge(cap);
+        void *moved = m ? mremap(b->data - b->pad, b->pad + b->cap, cap,
+                                 MREMAP_MAYMOVE | MREMAP_FIXED, m)
+                        : MAP_FAILED;
+        data = NULL;
+        if (moved != MAP_FAILED) {
+#ifdef MADV_HUGEPAGE
+            madvise(moved, cap, MADV_HUGEPAGE);
+#endif
+            data = (uint8_t *)moved + b->pad;
+        } else if (m) {
+            munmap(m, cap);
+        }
+    } else {
+        /* Kept until the stream ends: later frames reuse these pages. */
+        uint8_t *m = alloc_huge(cap);
+        data = m ? m + b->pad : NULL;
+        if (data) {
+            if (b->size)
+                memcpy(data, b->data, b->size);
+            rgl_free(b->data);
+        }
+    }
     if (!data) {
         fail_set(ENOMEM, "allocation failed");
         return NULL;
     }
     b->data = data;
-    b->cap = cap;
+    b->cap = cap - b->pad;
     return data + b->size;
 }
 
 void rgl_buf_finish(rgl_buf *b)
 {
-    rgl_free(b->data);
+    if (buf_mapped(b))
+        munmap(b->data - b->pad, b->pad + b->cap);
+    else
+        rgl_free(b->data);
     b->data = NULL;
-    b->size = b->cap = 0;
+    b->size = b->cap = b->pad = 0;
+}
+
+/* Moves the start of an empty mapped buffer `pad` bytes into its mapping
+ * (less than a quarter of it); other buffers stay as they are. */
+static void buf_set_pad(rgl_buf *b, size_t pad)
+{
+    if (b->size || !buf_mapped(b) || pad >= (b->pad + b->cap) / 4)
+        return;
+    b->data = b->data - b->pad + pad;
+    b->cap = b->cap + b->pad - pad;
+    b->pad = pad;
 }
 
 /* ---- The file -------------------------------------------------------------- */
@@ -264,11 +348,126 @@ static int write_iov(struct iovec *iov, int n)
     return 0;
 }
 
+/* Frames from this size on have their middle written with O_DIRECT. */
+#define RGL_DIRECT_MIN (1u * 1024u * 1024u)
+
+/* Opens the direct-write descriptor of the trace just opened (g.fd, g.path):
+ * a regular file on a file system that takes O_DIRECT. Without one, every
+ * chunk is written through the page cache as before. Under file_mu. */
+static void direct_open(void)
+{
+    g.dfd = -1;
+    struct stat st;
+    const char *v = getenv("RAYGL_DIRECT");
+    if ((v && strcmp(v, "0") == 0) || fstat(g.fd, &st) != 0 || !S_ISREG(st.st_mode))
+        return;
+    g.dio_align = 4096; /* whole pages: the buffered head and tail share none with it */
+#ifdef STATX_DIOALIGN
+    struct statx sx;
+    if (statx(g.fd, "", AT_EMPTY_PATH, STATX_DIOALIGN, &sx) == 0 &&
+        (sx.stx_mask & STATX_DIOALIGN)) {
+        if (sx.stx_dio_offset_align == 0)
+            return; /* the file system has no direct I/O */
+        if (sx.stx_dio_offset_align > g.dio_align)
+            g.dio_align = sx.stx_dio_offset_align;
+        if (sx.stx_dio_mem_align > g.dio_align)
+            g.dio_align = sx.stx_dio_mem_align;
+    }
+#endif
+    if (g.dio_align > RGL_BUF_HUGE)
+        return;
+    char self[64];
+    snprintf(self, sizeof self, "/proc/self/fd/%d", g.fd);
+    g.dfd = open(self, O_WRONLY | O_DIRECT | O_CLOEXEC);
+    if (g.dfd < 0) /* no /proc: the name just opened */
+        g.dfd = open(g.path, O_WRONLY | O_DIRECT | O_CLOEXEC);
+}
+
+static void direct_close(void)
+{
+    if (g.dfd >= 0)
+        close(g.dfd);
+    g.dfd = -1;
+}
+
+/* Writes len bytes from src, at an aligned address, at file offset `at`
+ * through dfd; len and at are multiples of g.dio_align. Returns 0, EINVAL
+ * when the file system refuses the direct write (nothing was written: the
+ * caller writes the range through the page cache), or an errno value.
+ * Under file_mu. */
+static int write_direct(const uint8_t *src, size_t len, uint64_t at)
+{
+    size_t done = 0;
+    while (done < len) {
+        ssize_t w = pwrite(g.dfd, src + done, len - done, (off_t)(at + done));
+        if (w < 0 && errno == EINTR)
+            continue;
+        if (w < 0 && done == 0 && errno == EINVAL)
+            return EINVAL;
+        if (w <= 0 || (size_t)w % g.dio_align) /* nothing aligned left to go on with */
+            return w < 0 ? errno : EIO;
+        done += (size_t)w;
+    }
+    return 0;
+}
+
+/* Writes a frame chunk, iov = header, prefix, commands, trailer (total
+ * bytes), at g.offset: the commands' whole O_DIRECT blocks straight from
+ * memory, the rest through the page cache. The kernel's copy into new
+ * page-cache pages cost 3 to 30 ms for a 13 MB frame here; the direct
+ * write costs about a millisecond. The commands must sit in memory at the
+ * offset within a block they have in the file: frame_align() arranges it
+ * at the frame's start, and when a chunk written since spoiled that, they
+ * are moved up in the buffer `frame` (NULL: another thread's, which must
+ * not move) when it has the room. Returns 0 or an errno value. Under
+ * file_mu. */
+static int write_frame_chunk(struct iovec iov[4], size_t total, rgl_buf *frame)
+{
+    if (g.dfd < 0 || total < RGL_DIRECT_MIN)
+        return write_iov(iov, 4);
+    size_t a = g.dio_align;
+    size_t d0 = iov[0].iov_len + iov[1].iov_len, d1 = d0 + iov[2].iov_len;
+    uint8_t *data = iov[2].iov_base;
+    size_t want = (size_t)((g.offset + d0) % a), have = (size_t)((uintptr_t)data % a);
+    if (have != want) {
+        size_t shift = (want + a - have) % a;
+        if (!frame || frame->data != data || frame->cap - frame->size < shift)
+            return write_iov(iov, 4);
+        memmove(data + shift, data, iov[2].iov_len);
+        data += shift;
+        iov[2].iov_base = data;
+    }
+    /* Chunk offsets of the commands' first and last block boundaries. */
+    size_t from = d0 + (a - want) % a, to = d1 - (size_t)((g.offset + d1) % a);
+    if (to <= from)
+        return write_iov(iov, 4);
+    struct iovec head[3] = {iov[0], iov[1], {data, from - d0}};
+    int err = write_iov(head, 3);
+    if (err)
+        return err;
+    uint64_t at = g.offset;
+    err = write_direct(data + (from - d0), to - from, at);
+    if (err == EINVAL) {
+        direct_close(); /* not for this file: the page cache from now on */
+        to = from;
+    } else if (err) {
+        return err;
+    } else {
+        g.offset = at + (to - from);
+        if (lseek(g.fd, (off_t)g.offset, SEEK_SET) < 0)
+            return errno;
+    }
+    struct iovec tail[2] = {{data + (to - d0), d1 - to}, iov[3]};
+    return write_iov(tail, 2);
+}
+
 /* Writes one chunk: header, prefix and data as its payload, CRC-32C trailer,
- * in one writev. Under file_mu, recording. On failure the partial chunk is
- * cut off (best effort) and the recorder fails; returns false. */
+ * in one writev (a frame: write_frame_chunk; movable is the frame's buffer
+ * when it may be moved, else NULL). Under file_mu, recording. On failure
+ * the partial chunk is cut off (best effort) and the recorder fails;
+ * returns false. */
 static bool write_chunk(uint8_t type, const void *prefix, size_t plen, const void *data,
-                        size_t dlen, uint64_t *chunk_offset)
+                        size_t dlen, uint64_t *chunk_offset, rgl_buf *movable)
 {
     uint8_t header[RGL_CHUNK_HEADER_SIZE], trailer[RGL_CHUNK_TRAILER_SIZE];
     if (!prefix)
@@ -286,7 +485,10 @@ static bool write_chunk(uint8_t type, const void *prefix, size_t plen, const voi
         {trailer, sizeof trailer},
     };
     uint64_t start = g.offset;
-    int err = write_iov(iov, 4);
+    int err = type == RGL_CHUNK_FRAME
+                  ? write_frame_chunk(iov, RGL_CHUNK_HEADER_SIZE + plen + dlen + sizeof trailer,
+                                      movable)
+                  : write_iov(iov, 4);
     if (err) {
         if (ftruncate(g.fd, (off_t)start) == 0)
             g.offset = start;
@@ -381,6 +583,7 @@ static int open_trace(const char *path)
     g.fd = fd;
     g.offset = 0;
     reset_tables();
+    direct_open();
 
     uint8_t header[RGL_FILE_HEADER_SIZE];
     rgl_file_header_encode(header, 0);
@@ -395,7 +598,7 @@ static int open_trace(const char *path)
     int n = snprintf(info, sizeof info, "program=%s\nrecorder=libraygl %s\n", prog, RAYGL_VERSION);
     if (n < 0 || (size_t)n >= sizeof info)
         n = 0;
-    if (!write_chunk(RGL_CHUNK_INFO, NULL, 0, info, (size_t)n, NULL))
+    if (!write_chunk(RGL_CHUNK_INFO, NULL, 0, info, (size_t)n, NULL, NULL))
         return errno ? errno : EIO;
     return 0;
 }
@@ -425,10 +628,10 @@ static void write_index_and_end(void)
     }
     rgl_buf_commit(&b, p);
     uint64_t index_offset;
-    if (write_chunk(RGL_CHUNK_INDEX, NULL, 0, b.data, b.size, &index_offset)) {
+    if (write_chunk(RGL_CHUNK_INDEX, NULL, 0, b.data, b.size, &index_offset, NULL)) {
         uint8_t end[8];
         rgl_put_u64(end, index_offset);
-        write_chunk(RGL_CHUNK_END, NULL, 0, end, sizeof end, NULL);
+        write_chunk(RGL_CHUNK_END, NULL, 0, end, sizeof end, NULL, NULL);
     }
     rgl_buf_finish(&b);
 }
@@ -537,7 +740,7 @@ static uint32_t resource_put(uint32_t kind, const void *data, size_t size)
     uint64_t off;
     if (!index_add(RGL_CHUNK_RESOURCE, g.next_resource_id, kind, 0))
         goto out;
-    if (!write_chunk(RGL_CHUNK_RESOURCE, prefix, plen, data, size, &off)) {
+    if (!write_chunk(RGL_CHUNK_RESOURCE, prefix, plen, data, size, &off, NULL)) {
         g.nindex--;
         goto out;
     }
@@ -710,6 +913,37 @@ bool rgl_frame_wanted(const rgl_stream *s)
     return !g.sel_signal || atomic_load(&g.sel_armed);
 }
 
+/* The frame payload's prefix: stream, number, flags, state. Returns its
+ * length. */
+static size_t frame_prefix(const rgl_stream *s, uint8_t prefix[RGL_FRAME_PREFIX_MAX])
+{
+    uint8_t *p = rgl_put_varint(prefix, s->id);
+    p = rgl_put_varint(p, s->frame_number);
+    p = rgl_put_varint(p, s->frame_flags);
+    p = rgl_put_varint(p, s->state_resource);
+    return (size_t)(p - prefix);
+}
+
+/* Places the start of the empty frame buffer so that the frame's commands
+ * sit in memory at the offset within an O_DIRECT block that they will have
+ * in the file, as predicted from the file's end now: the frame's middle is
+ * then written from the buffer itself, with no copy (write_frame_chunk). A
+ * chunk written before the frame's (a resource, another thread's frame)
+ * spoils the prediction, and that frame is copied. Under the stream's
+ * lock. */
+static void frame_align(rgl_stream *s)
+{
+    uint8_t prefix[RGL_FRAME_PREFIX_MAX];
+    size_t plen = frame_prefix(s, prefix);
+    pthread_mutex_lock(&g.file_mu);
+    bool direct = g.dfd >= 0;
+    uint64_t at = g.offset + RGL_CHUNK_HEADER_SIZE + plen;
+    size_t a = g.dio_align;
+    pthread_mutex_unlock(&g.file_mu);
+    if (direct)
+        buf_set_pad(&s->frame, (size_t)(at % a));
+}
+
 /* Writes the stream's open frame, if it holds commands. Under the stream's
  * lock, not file_mu. With `reset` (only on the stream's own thread, whose
  * hot path moves pos without a lock) it leaves the frame closed and empty;
@@ -728,15 +962,13 @@ static bool frame_write(rgl_stream *s, bool reset)
         if (reset && !s->image_taken)
             rgl_unrecorded_flush(s, &s->frame);
         uint8_t prefix[RGL_FRAME_PREFIX_MAX];
-        uint8_t *p = rgl_put_varint(prefix, s->id);
-        p = rgl_put_varint(p, s->frame_number);
-        p = rgl_put_varint(p, s->frame_flags);
-        p = rgl_put_varint(p, s->state_resource);
+        size_t plen = frame_prefix(s, prefix);
         pthread_mutex_lock(&g.file_mu);
         if (recording() && index_add(RGL_CHUNK_FRAME, s->id, s->frame_number, 0)) {
             uint64_t off;
-            if (write_chunk(RGL_CHUNK_FRAME, prefix, (size_t)(p - prefix), s->frame.data,
-                            s->frame.size, &off))
+            /* Only the owner, which empties it next, may move its frame. */
+            if (write_chunk(RGL_CHUNK_FRAME, prefix, plen, s->frame.data, s->frame.size, &off,
+                            reset ? &s->frame : NULL))
                 g.index[g.nindex - 1].offset = off;
             else
                 g.nindex--;
@@ -768,6 +1000,7 @@ static void frame_start(rgl_stream *s)
         s->frame_flags = RGL_FRAME_STATE_CARRIED;
         s->state_resource = 0;
     }
+    frame_align(s);
 }
 
 static void stream_destroy_key(void *arg)
@@ -823,6 +1056,7 @@ static void fork_child(void)
     if (g.fd >= 0)
         close(g.fd);
     g.fd = -1;
+    direct_close();
     rgl_stream *s = rgl_tls_stream;
     if (s)
         s->end = s->pos;
@@ -1043,6 +1277,7 @@ static void close_trace(void)
     if (g.fd >= 0)
         close(g.fd);
     g.fd = -1;
+    direct_close();
     reset_tables();
     pthread_mutex_unlock(&g.file_mu);
     pthread_mutex_unlock(&g.list_mu);

@@ -49,10 +49,13 @@ typedef struct rgl_client_array_state {
                          is then an offset into that buffer */
 } rgl_client_array_state;
 
-/* Buffer: a growable byte buffer that commands are encoded into. */
+/* Buffer: a growable byte buffer that commands are encoded into. Its memory
+ * belongs to rgl_buf_reserve (large ones are mapped apart): move the struct
+ * whole, release it only with rgl_buf_finish. */
 typedef struct rgl_buf {
     uint8_t *data;
     size_t size, cap;
+    size_t pad; /* bytes before data in its own mapping (recorder.c) */
 } rgl_buf;
 
 /* Texture and display-list objects created through raygl calls, kept per
@@ -209,8 +212,9 @@ static inline uint8_t *rgl_put_opcode(uint8_t *p, uint32_t opcode)
  * ones. No-op without a context, while compiling a list, or not recording. */
 void rgl_resolve_matrices(void);
 
-/* Ends the calling thread's frame: writes the FRAME chunk with one writev
- * under the file lock (the frame's resources are already in the file), so it
+/* Ends the calling thread's frame: writes the FRAME chunk (one writev; a
+ * large frame's whole blocks with O_DIRECT) under the file lock (the
+ * frame's resources are already in the file), so it
  * is in the kernel when this returns and survives a crash right after; then
  * arranges for the next call to start a new frame. A frame with no commands
  * writes nothing. */
@@ -418,6 +422,10 @@ rgl_texture *rgl_texture_get(rgl_stream *s, uint32_t name, bool create);
 /* Test hook: makes the nth allocation from now on fail (0: none). The
  * RAYGL_TEST_FAIL_ALLOC environment variable sets it at initialisation. */
 void rgl_test_fail_alloc(unsigned long n);
+
+/* Test hook: allocations made so far (rgl_alloc, rgl_realloc and the
+ * recorder's own large buffers), counted from the start of the process. */
+unsigned long rgl_test_alloc_count(void);
 
 /* The one allocation wrapper, so a test can fail the Nth allocation. */
 void *rgl_alloc(size_t size);

@@ -2,6 +2,7 @@
  * usual "123456789"), chaining, and the software and SSE4.2 paths agreeing
  * on random buffers at every alignment and many lengths.
  */
+#include <stdlib.h>
 #include "testutil.h"
 
 typedef uint32_t (*crc_fn)(uint32_t, const void *, size_t);
@@ -49,6 +50,33 @@ int main(void)
             CHECK(rgl_crc32c(seed, buf + align, len) == a);
             compared++;
         }
+    }
+    /* Past three lanes the hw path interleaves three CRCs and joins them:
+     * lengths around each multiple of the 3 KiB block, and a megabyte. */
+    size_t big_n = (1u << 20) + 77;
+    uint8_t *big = malloc(big_n + 8);
+    CHECK(big != NULL);
+    if (big) {
+        for (size_t i = 0; i < big_n + 8; i++)
+            big[i] = (uint8_t)rng_next(&r);
+        static const size_t lens[] = {3071, 3072, 3073, 3080, 6143, 6144, 6151, 9216 + 5,
+                                      65536, 100003};
+        for (size_t align = 0; align < 8; align++) {
+            for (size_t i = 0; i < sizeof lens / sizeof lens[0]; i++) {
+                uint32_t seed = (uint32_t)rng_next(&r);
+                uint32_t a = rgl_crc32c_sw(seed, big + align, lens[i]);
+                uint32_t b = rgl_crc32c_hw(seed, big + align, lens[i]);
+                CHECKF(a == b, "sw 0x%08lx != hw 0x%08lx at align %zu len %zu",
+                       (unsigned long)a, (unsigned long)b, align, lens[i]);
+                compared++;
+            }
+        }
+        uint32_t a = rgl_crc32c_sw(0, big, big_n);
+        CHECKF(a == rgl_crc32c_hw(0, big, big_n), "sw != hw over %zu bytes", big_n);
+        /* Chaining across a lane boundary. */
+        CHECK(rgl_crc32c_hw(rgl_crc32c_hw(0, big, 5000), big + 5000, big_n - 5000) == a);
+        compared += 2;
+        free(big);
     }
     printf("  sw and hw paths agree on %lu random buffers (hw %s on this CPU)\n", compared,
            rgl_crc32c_hw_available() ? "available" : "NOT available: fallback compared");

@@ -18,6 +18,7 @@ void test_unpack(const char *dir);
 void test_pixel_rules(const char *dir);
 void test_raster(const char *dir);
 void test_texcopy_nocontext(const char *dir);
+void test_buffer_reuse(const char *dir);
 
 /* The BLOB argument of a decoded command of frame f, command i. */
 static const uint8_t *blob_of(rgl_reader *r, size_t f, size_t i, unsigned arg, size_t *n)
@@ -759,4 +760,100 @@ void test_multitex_arrays(const char *dir)
     expect_lines(&c, f0, sizeof f0 / sizeof f0[0], "multitexture frame");
     trace_cmds_free(&c);
     rgl_reader_destroy(r);
+}
+
+/* One frame of n vertices, each with a colour: 2n + 3 commands (Begin, End,
+ * SwapBuffers). */
+static void big_frame(int n, float tag)
+{
+    rayglBegin(GL_TRIANGLES);
+    for (int v = 0; v < n; v++) {
+        rayglColor3f((float)v, tag, 0.5f);
+        rayglVertex3f(tag, (float)v, 1);
+    }
+    rayglEnd();
+    rayglutSwapBuffers();
+}
+
+/* Frames keep the buffers of the frames before them: after the first frame
+ * of a size (which grows the buffer past the huge-page threshold), frames
+ * of that size allocate nothing; a larger one does (the count can fail).
+ * The frames, checksummed in three lanes, read back whole. */
+void test_buffer_reuse(const char *dir)
+{
+    char path[128];
+    snprintf(path, sizeof path, "%s/reuse.raygl", dir);
+    enum { N = 150000 }; /* 3.9 MB a frame */
+    CHECK(rayglRecordOpen(path) == 0);
+    big_frame(N, 0);
+    unsigned long first = rgl_test_alloc_count();
+    for (int f = 1; f < 4; f++) {
+        big_frame(N, (float)f);
+        CHECKM(rgl_test_alloc_count() == first, "frame %d: %lu allocations after the first frame",
+               f, rgl_test_alloc_count() - first);
+    }
+    big_frame(2 * N, 4);
+    CHECKM(rgl_test_alloc_count() > first, "a larger frame grew the buffer");
+    rayglRecordClose();
+    CHECK(rayglRecordStatus() != RAYGL_FAILED);
+
+    rgl_reader *r = trace_open(path);
+    if (!r)
+        return;
+    CHECK(rgl_reader_frame_count(r) == 5);
+    for (size_t f = 0; f < rgl_reader_frame_count(r); f++) {
+        rgl_frame_info fi;
+        if (!CHECKM(rgl_reader_frame(r, f, &fi, NULL) == RGL_OK, "frame %zu reads", f))
+            continue;
+        rgl_cmd_iter it;
+        rgl_cmd cmd;
+        rgl_cmd_iter_init(&it, fi.commands, fi.commands_size, fi.commands_offset);
+        size_t count = 0;
+        float tag = -1;
+        uint32_t last = 0;
+        rgl_status st;
+        while ((st = rgl_cmd_next(&it, &cmd)) == RGL_OK) {
+            if (cmd.opcode == RGL_OP_Color3f)
+                tag = (float)cmd.arg[1].v.f;
+            last = cmd.opcode;
+            count++;
+        }
+        size_t want = 2 * (size_t)(f == 4 ? 2 * N : N) + 3;
+        CHECKM(st == RGL_END && count == want, "frame %zu: %zu commands, want %zu", f, count,
+               want);
+        CHECKM(tag == (float)f, "frame %zu: last colour tag %g", f, (double)tag);
+        CHECKM(last == RGL_OP_SwapBuffers, "frame %zu: last opcode 0x%x", f, last);
+    }
+    rgl_reader_destroy(r);
+
+    /* Frames past RGL_DIRECT_MIN have their aligned middle written with
+     * O_DIRECT (where the file system takes it); RAYGL_DIRECT=0 writes
+     * everything through the page cache. The bytes are the same. */
+    char path2[128];
+    snprintf(path2, sizeof path2, "%s/reuse-buffered.raygl", dir);
+    setenv("RAYGL_DIRECT", "0", 1);
+    CHECK(rayglRecordOpen(path2) == 0);
+    unsetenv("RAYGL_DIRECT");
+    for (int f = 0; f < 4; f++)
+        big_frame(N, (float)f);
+    big_frame(2 * N, 4);
+    rayglRecordClose();
+    FILE *a = fopen(path, "rb"), *b = fopen(path2, "rb");
+    if (CHECK(a && b)) {
+        size_t n = 0, diff = 0;
+        int ca, cb;
+        do {
+            ca = getc(a);
+            cb = getc(b);
+            diff += ca != cb;
+            n++;
+        } while (ca != EOF && cb != EOF);
+        CHECKM(diff == 0 && n > 20u * N, "%zu of %zu bytes differ", diff, n);
+    }
+    if (a)
+        fclose(a);
+    if (b)
+        fclose(b);
+    unlink(path);
+    unlink(path2);
 }

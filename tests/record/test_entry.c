@@ -24,6 +24,7 @@ void test_nurbs_rec(const char *dir);
 void test_select(const char *dir);
 void test_multitex_arrays(const char *dir);
 void test_alloc_failures(const char *dir);
+void test_buffer_reuse(const char *dir);
 void test_too_large(const char *dir);
 void test_unpack(const char *dir);
 void test_pixel_rules(const char *dir);
@@ -288,6 +289,7 @@ int main(void)
     test_select(dir);
     test_multitex_arrays(dir);
     test_alloc_failures(dir);
+    test_buffer_reuse(dir);
     test_too_large(dir);
     test_unpack(dir);
     test_pixel_rules(dir);
