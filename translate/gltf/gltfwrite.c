@@ -605,31 +605,47 @@ static void mesh_colour(const scene *s, const scene_mesh *me, float mean[4], boo
         mean[k] = n ? (float)(sum[k] / (double)n) : 0;
 }
 
-/* One scene_mesh as a triangle primitive into pj, baked through m (NULL:
- * its vertices as they are). */
-static void mesh_prim(writer *w, outbuf *pj, const scene_mesh *me, const mat4 *m)
+/* The one colour of a face (GL_FLAT: its provoking vertex's), or NULL
+ * when its vertices' colours differ. */
+static const float *face_colour(const scene *s, const scene_mesh *me, const scene_tri *tr)
+{
+    if (me->look.flat)
+        return s->verts[tr->provoking].color;
+    const float *c0 = s->verts[tr->v[0]].color;
+    for (int c = 1; c < 3; c++)
+        if (memcmp(c0, s->verts[tr->v[c]].color, 4 * sizeof *c0) != 0)
+            return NULL;
+    return c0;
+}
+
+static bool tri_ok(const scene *s, const scene_tri *tr)
+{
+    bool ok = tr->provoking < s->nverts;
+    for (int c = 0; c < 3 && ok; c++)
+        ok = tr->v[c] < s->nverts && finite3(s->verts[tr->v[c]].pos);
+    return ok;
+}
+
+/* A mesh's faces into the pending primitive: all of them, or (only != NULL)
+ * those whose face colour is *only. */
+static void mesh_faces(writer *w, const scene_mesh *me, const mat4 *m, double (*nm)[3],
+                       const float *only)
 {
     const scene *s = w->s;
-    if (me->look.blend == SCENE_BLEND_INVISIBLE || me->look.alpha_test == SCENE_ALPHA_NEVER ||
-        me->tri_count == 0)
-        return;
-    bool vcol, varies = false;
-    float mean[4] = {0, 0, 0, 0};
-    mesh_colour(s, me, mean, &varies);
-    int32_t mat = material_index(w, &me->look, false, &vcol, mean, varies);
-    bool uvs = me->look.texture >= 0 && (size_t)me->look.texture < s->ntextures;
-    double nm[3][3];
-    bool have_nm = m && normal_matrix(m, nm);
     if (++w->gen == 0) {
         memset(w->stamp, 0, s->nverts * sizeof *w->stamp);
         w->gen = 1;
     }
     for (size_t t = me->first_tri; t < me->first_tri + me->tri_count && t < s->ntris; t++) {
         const scene_tri *tr = &s->tris[t];
-        bool ok = tr->provoking < s->nverts;
-        for (int c = 0; c < 3 && ok; c++)
-            ok = tr->v[c] < s->nverts && finite3(s->verts[tr->v[c]].pos);
-        if (!ok || !reserve_v(w, 3))
+        if (!tri_ok(s, tr))
+            continue;
+        if (only) {
+            const float *fc = face_colour(s, me, tr);
+            if (!fc || memcmp(fc, only, 4 * sizeof *fc) != 0)
+                continue;
+        }
+        if (!reserve_v(w, 3))
             continue;
         const scene_vertex *pv = &s->verts[tr->provoking];
         for (int c = 0; c < 3; c++) {
@@ -645,7 +661,7 @@ static void mesh_prim(writer *w, outbuf *pj, const scene_mesh *me, const mat4 *m
             const scene_vertex *cv = me->look.flat ? pv : v;
             double n[3] = {cv->normal[0], cv->normal[1], cv->normal[2]};
             uint32_t k = (uint32_t)w->nv;
-            push_vertex(w, p, n, cv->color, v->tex, m, have_nm ? nm : NULL);
+            push_vertex(w, p, n, cv->color, v->tex, m, nm);
             add_index(w, k);
             if (!me->look.flat) {
                 w->stamp[g] = w->gen;
@@ -653,6 +669,69 @@ static void mesh_prim(writer *w, outbuf *pj, const scene_mesh *me, const mat4 *m
             }
         }
     }
+}
+
+/* Up to GLTF_CM_COLOURS colours of a mesh whose every face has one colour
+ * (a cube of coloured faces): their count, or 0 when a face's colours vary
+ * or there are more. */
+#define GLTF_CM_COLOURS 16
+static size_t face_colours(const scene *s, const scene_mesh *me,
+                           const float *out[GLTF_CM_COLOURS])
+{
+    size_t n = 0;
+    for (size_t t = me->first_tri; t < me->first_tri + me->tri_count && t < s->ntris; t++) {
+        const scene_tri *tr = &s->tris[t];
+        if (!tri_ok(s, tr))
+            continue;
+        const float *fc = face_colour(s, me, tr);
+        if (!fc)
+            return 0;
+        size_t k = 0;
+        while (k < n && memcmp(out[k], fc, 4 * sizeof *fc) != 0)
+            k++;
+        if (k == n) {
+            if (n == GLTF_CM_COLOURS)
+                return 0;
+            out[n++] = fc;
+        }
+    }
+    return n;
+}
+
+/* Whether GL_COLOR_MATERIAL's ambient term follows the colour of a lit look. */
+static bool cm_ambient(const scene *s, const scene_look *look)
+{
+    return look->lit && look->material >= 0 && (size_t)look->material < s->nmaterials &&
+           (s->materials[look->material].color_material[0] & SCENE_CM_AMBIENT);
+}
+
+/* One scene_mesh as triangle primitives into pj, baked through m (NULL:
+ * its vertices as they are): one primitive, or one per face colour when
+ * GL_COLOR_MATERIAL's ambient term follows colours that differ from face
+ * to face (glTF's emissive is one colour a material). */
+static void mesh_prim(writer *w, outbuf *pj, const scene_mesh *me, const mat4 *m)
+{
+    const scene *s = w->s;
+    if (me->look.blend == SCENE_BLEND_INVISIBLE || me->look.alpha_test == SCENE_ALPHA_NEVER ||
+        me->tri_count == 0)
+        return;
+    bool vcol, varies = false;
+    float mean[4] = {0, 0, 0, 0};
+    mesh_colour(s, me, mean, &varies);
+    bool uvs = me->look.texture >= 0 && (size_t)me->look.texture < s->ntextures;
+    double nm[3][3];
+    bool have_nm = m && normal_matrix(m, nm);
+    const float *colours[GLTF_CM_COLOURS];
+    size_t ncolours = varies && cm_ambient(s, &me->look) ? face_colours(s, me, colours) : 0;
+    for (size_t k = 0; k < ncolours; k++) {
+        int32_t mat = material_index(w, &me->look, false, &vcol, colours[k], false);
+        mesh_faces(w, me, m, have_nm ? nm : NULL, colours[k]);
+        flush_prim(w, pj, 4, mat, vcol, true, uvs);
+    }
+    if (ncolours)
+        return;
+    int32_t mat = material_index(w, &me->look, false, &vcol, mean, varies);
+    mesh_faces(w, me, m, have_nm ? nm : NULL, NULL);
     flush_prim(w, pj, 4, mat, vcol, true, uvs);
 }
 
