@@ -30,9 +30,10 @@ typedef struct povgrid {
     size_t cap_quad;
     uint32_t *qface;    /* per quad: its first face */
     size_t cap_qface;
-    uint64_t *ekey;     /* edge -> quads (open addressing) */
-    uint32_t *eval;     /* two quads per edge */
-    size_t cap_edge;
+    uint32_t *estart;   /* per vertex: its first entry in eent */
+    size_t cap_estart;
+    uint32_t *eent;     /* edges by their lower vertex: higher vertex, quad */
+    size_t cap_eent;
     uint64_t *tkey;     /* texel -> vertex (open addressing) */
     size_t cap_tkey;
     int32_t *comp;      /* per vertex: its component */
