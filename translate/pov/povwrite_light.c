@@ -554,8 +554,6 @@ void povlight_front_normal(const povlight *pl, const mat4 *to_eye, const mat4 *t
 {
     memcpy(out, n, 3 * sizeof *out);
     double v[3], ne[3];
-    if (!toward_camera(&pl->s->camera, p, v))
-        return;
     if (to_eye) { /* eye normal = M^-T n */
         if (!to_eye_inv)
             return;
@@ -566,6 +564,21 @@ void povlight_front_normal(const povlight *pl, const mat4 *to_eye, const mat4 *t
         for (int k = 0; k < 3; k++)
             ne[k] = n[k];
     }
+    /* Most normals face the camera well past the margin: seen without a
+     * square root or a division, (N.V)^2 >= m^2 |N|^2 |V|^2 with a slack
+     * of 1e-6, far above the rounding of the exact test below, which
+     * decides every case near the margin. */
+    const scene_camera *cam = &pl->s->camera;
+    for (int k = 0; k < 3; k++)
+        v[k] = cam->kind == SCENE_CAMERA_ORTHOGRAPHIC ? -cam->direction[k] : cam->location[k] - p[k];
+    double dot = ne[0] * v[0] + ne[1] * v[1] + ne[2] * v[2];
+    double nn = ne[0] * ne[0] + ne[1] * ne[1] + ne[2] * ne[2];
+    double vv = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    if (dot > 0 && isfinite(dot * dot) && nn * vv > 0 &&
+        dot * dot >= FRONT_MARGIN * FRONT_MARGIN * (1 + 1e-6) * (nn * vv))
+        return;
+    if (!toward_camera(cam, p, v))
+        return;
     double l = len3(ne);
     if (!(l > 0) || !isfinite(l))
         return;
