@@ -84,7 +84,7 @@ static uint64_t texel_key(int32_t comp, int32_t x, int32_t y)
  * reads the same few cache lines where a hash per texel would miss. */
 static size_t texel_slot(const povgrid *g, int32_t comp, int32_t x, int32_t y, uint64_t key)
 {
-    size_t cap = g->cap_tkey;
+    size_t cap = g->ntkey;
     size_t i = ((size_t)mix(texel_key(comp, x & ~7, y & ~7)) << 6 | (size_t)(y & 7) << 3 |
                 (size_t)(x & 7)) &
                (cap - 1);
@@ -193,7 +193,9 @@ int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, si
 
     /* Texels -> vertices; the walk's queue, whose entries' high bit marks
      * a quad seen (state per quad kept in qface's high bit). */
-    size_t tcap = pow2_above(nq * 4 + 4);
+    /* Each vertex takes one texel at most; only the slots this call
+     * needs are cleared, not the largest table an earlier mesh grew. */
+    size_t tcap = pow2_above((nq * 4 < nv ? nq * 4 : nv) + 4);
     if (tcap > g->cap_tkey) {
         uint64_t *k = tr_realloc(g->tkey, tcap * sizeof *k);
         if (!k)
@@ -201,7 +203,8 @@ int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, si
         g->tkey = k;
         g->cap_tkey = tcap;
     }
-    memset(g->tkey, 0, g->cap_tkey * sizeof *g->tkey);
+    g->ntkey = tcap;
+    memset(g->tkey, 0, tcap * sizeof *g->tkey);
     if (tr_grow((void **)&g->queue, &g->cap_queue, nq, sizeof *g->queue) != 0)
         return -1;
     const uint32_t SEEN = 1u << 31;
