@@ -79,14 +79,16 @@ static uint64_t texel_key(int32_t comp, int32_t x, int32_t y)
            1;
 }
 
-/* The vertex at a texel: slot of key, found or empty. Blocks of 8x8
- * texels hash to 64 slots in a row: the walk places neighbours, so it
- * reads the same few cache lines where a hash per texel would miss. */
+/* The vertex at a texel: slot of key, found or empty. Blocks of 4x4
+ * texels hash to 16 slots in a row (two cache lines): the walk places
+ * neighbours, so it reads the same few lines where a hash per texel would
+ * miss the cache at every look-up. The table is kept at most a quarter
+ * full, so that blocks seldom run into each other. */
 static size_t texel_slot(const povgrid *g, int32_t comp, int32_t x, int32_t y, uint64_t key)
 {
     size_t cap = g->ntkey;
-    size_t i = ((size_t)mix(texel_key(comp, x & ~7, y & ~7)) << 6 | (size_t)(y & 7) << 3 |
-                (size_t)(x & 7)) &
+    size_t i = ((size_t)mix(texel_key(comp, x & ~3, y & ~3)) << 4 | (size_t)(y & 3) << 2 |
+                (size_t)(x & 3)) &
                (cap - 1);
     while (g->tkey[i] != 0 && g->tkey[i] != key)
         i = (i + 1) & (cap - 1);
@@ -195,7 +197,7 @@ int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, si
      * a quad seen (state per quad kept in qface's high bit). */
     /* Each vertex takes one texel at most; only the slots this call
      * needs are cleared, not the largest table an earlier mesh grew. */
-    size_t tcap = pow2_above((nq * 4 < nv ? nq * 4 : nv) + 4);
+    size_t tcap = pow2_above(2 * (nq * 4 < nv ? nq * 4 : nv) + 8);
     if (tcap > g->cap_tkey) {
         uint64_t *k = tr_realloc(g->tkey, tcap * sizeof *k);
         if (!k)
