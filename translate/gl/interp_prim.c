@@ -778,6 +778,16 @@ static bool compute_clip(interp *ip, uint32_t n)
 static bool is_ccw(const interp *ip, const uint32_t *idx, int n)
 {
     double (*c)[5] = ip->clipv;
+    if (n == 3) { /* strips and triangles: the loops below unrolled, same sums */
+        const double *a = c[idx[0]], *b = c[idx[1]], *d = c[idx[2]];
+        if (a[2] > 0 && b[2] > 0 && d[2] > 0) {
+            double area = 0;
+            area += a[3] * b[4] - b[3] * a[4];
+            area += b[3] * d[4] - d[3] * b[4];
+            area += d[3] * a[4] - a[3] * d[4];
+            return area > 0;
+        }
+    }
     bool all_front = true;
     for (int k = 0; k < n; k++)
         if (!(c[idx[k]][2] > 0))

@@ -448,10 +448,26 @@ static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const
     size_t want = w->in_proto ? 2 : COLOUR_IMAGE_MIN_COLOURS + 1;
     const float *seen[COLOUR_IMAGE_MIN_COLOURS + 1];
     size_t nseen = 0, last = 0;
+    /* Strips share two corners with the face before: their 8-bit values
+     * are kept for the next face. */
+    const float *qc[4] = {NULL, NULL, NULL, NULL};
+    uint8_t qv[4][3];
+    unsigned qnext = 0;
     for (size_t i = 0; i < nt; i++) {
         const float *c[3];
+        uint8_t q[3][3];
         for (int k = 0; k < 3; k++) {
             c[k] = verts[look->flat ? tris[i].provoking : tris[i].v[k]].color;
+            int j = 0;
+            while (j < 4 && qc[j] != c[k])
+                j++;
+            if (j == 4) {
+                j = (int)(qnext++ & 3);
+                qc[j] = c[k];
+                for (int h = 0; h < 3; h++)
+                    qv[j][h] = povtex_quantise(c[k][h]);
+            }
+            memcpy(q[k], qv[j], 3);
             if (c[k][3] != 1)
                 return false;
             if (nseen < want && (nseen == 0 || memcmp(seen[last], c[k], 3 * sizeof *c[k]) != 0)) {
@@ -463,7 +479,7 @@ static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const
                 last = j;
             }
         }
-        if (!look->flat && povtex_colour_origin(c) < 0)
+        if (!look->flat && povtex_colour_origin_q(q) < 0)
             return false;
     }
     return nseen >= want;

@@ -91,6 +91,13 @@ int povtex_overlay(povtex *pt, const uint8_t *rgba, int w, int h);
  * face is at most a quarter of it, at the middle of the edge B-C). */
 #define POVTEX_CLAMP_MAX 4
 int povtex_colour_origin(const float *const c[3]);
+/* The same from the corners' colours as povtex_quantise gives them. */
+int povtex_colour_origin_q(uint8_t q[3][3]);
+/* A colour channel (0..1) as an 8-bit texel value, NaN as 0. */
+static inline uint8_t povtex_quantise(float x)
+{
+    return (uint8_t)(x > 0 ? (x < 1 ? (int)(x * 255.0f + 0.5f) : 255) : 0);
+}
 
 /* Adds the image of n faces, corners[3 * j + k] the colour of corner k of
  * face j, and writes the uv of each corner (its texel's centre) to
