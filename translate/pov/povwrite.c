@@ -449,25 +449,23 @@ static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const
     const float *seen[COLOUR_IMAGE_MIN_COLOURS + 1];
     size_t nseen = 0, last = 0;
     /* Strips share two corners with the face before: their 8-bit values
-     * are kept for the next face. */
-    const float *qc[4] = {NULL, NULL, NULL, NULL};
-    uint8_t qv[4][3];
-    unsigned qnext = 0;
+     * are taken from it. */
+    const float *pc[3] = {NULL, NULL, NULL};
+    uint8_t pq[3][3];
     for (size_t i = 0; i < nt; i++) {
         const float *c[3];
         uint8_t q[3][3];
         for (int k = 0; k < 3; k++) {
             c[k] = verts[look->flat ? tris[i].provoking : tris[i].v[k]].color;
-            int j = 0;
-            while (j < 4 && qc[j] != c[k])
-                j++;
-            if (j == 4) {
-                j = (int)(qnext++ & 3);
-                qc[j] = c[k];
+            if (c[k] == pc[0])
+                memcpy(q[k], pq[0], 3);
+            else if (c[k] == pc[1])
+                memcpy(q[k], pq[1], 3);
+            else if (c[k] == pc[2])
+                memcpy(q[k], pq[2], 3);
+            else
                 for (int h = 0; h < 3; h++)
-                    qv[j][h] = povtex_quantise(c[k][h]);
-            }
-            memcpy(q[k], qv[j], 3);
+                    q[k][h] = povtex_quantise(c[k][h]);
             if (c[k][3] != 1)
                 return false;
             if (nseen < want && (nseen == 0 || memcmp(seen[last], c[k], 3 * sizeof *c[k]) != 0)) {
@@ -481,6 +479,8 @@ static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const
         }
         if (!look->flat && povtex_colour_origin_q(q) < 0)
             return false;
+        memcpy(pc, c, sizeof pc);
+        memcpy(pq, q, sizeof pq);
     }
     return nseen >= want;
 }

@@ -288,22 +288,6 @@ static int best_origin(const float *const c[3], int *excess)
     return best;
 }
 
-int povtex_colour_origin_q(uint8_t q[3][3])
-{
-    int be = 256, best = 0;
-    for (int o = 0; o < 3 && be > 0; o++) { /* best_origin's order: the first least */
-        int worst = 0;
-        for (int k = 0; k < 3; k++) {
-            int d = q[(o + 1) % 3][k] + q[(o + 2) % 3][k] - q[o][k];
-            int e = d < 0 ? -d : d > 255 ? d - 255 : 0;
-            worst = e > worst ? e : worst;
-        }
-        if (worst < be)
-            best = o, be = worst;
-    }
-    return be <= POVTEX_CLAMP_MAX ? best : -1;
-}
-
 int povtex_colour_origin(const float *const c[3])
 {
     int e, o = best_origin(c, &e);
