@@ -415,9 +415,15 @@ static void lit_line_colour(interp *ip, double x, double y, double z, float out[
     const mat4 *inv = &ip->lit_mv_inv;
     if (ip->lit_mv_ok) {
         const float *cn = a->current.normal;
-        for (int k = 0; k < 3; k++) /* n^T M^-1: row k of the inverse's transpose */
-            n[k] = cn[0] * inv->m[k * 4 + 0] + cn[1] * inv->m[k * 4 + 1] + cn[2] * inv->m[k * 4 + 2];
-        double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        const double *im = inv->m;
+        /* n^T M^-1: row k of the inverse's transpose. In scalars: stored
+         * one by one and read back two at a time, the array stalled on
+         * store forwarding at every vertex. */
+        double n0 = cn[0] * im[0] + cn[1] * im[1] + cn[2] * im[2];
+        double n1 = cn[0] * im[4] + cn[1] * im[5] + cn[2] * im[6];
+        double n2 = cn[0] * im[8] + cn[1] * im[9] + cn[2] * im[10];
+        n[0] = n0, n[1] = n1, n[2] = n2;
+        double len = sqrt(n0 * n0 + n1 * n1 + n2 * n2);
         if (a->caps[INTERP_CAP_NORMALIZE] && len > 0) {
             for (int k = 0; k < 3; k++)
                 n[k] /= len;
