@@ -405,8 +405,11 @@ static void lit_line_colour(interp *ip, double x, double y, double z, float out[
     const mat4 *mv = interp_matrix(ip, INTERP_MV);
     double in[4] = {x, y, z, 1}, o[4], p[3], n[3] = {0, 0, 0};
     mat4_apply(mv, in, o);
-    for (int k = 0; k < 3; k++)
-        p[k] = o[3] != 0 ? o[k] / o[3] : o[k];
+    if (o[3] == 1) /* an affine modelview: x / 1 is x, without three divisions */
+        p[0] = o[0], p[1] = o[1], p[2] = o[2];
+    else
+        for (int k = 0; k < 3; k++)
+            p[k] = o[3] != 0 ? o[k] / o[3] : o[k];
     if (!ip->lit_mv_set || memcmp(&ip->lit_mv, mv, sizeof *mv) != 0) {
         ip->lit_mv = *mv;
         ip->lit_mv_ok = mat4_invert(mv, &ip->lit_mv_inv);
