@@ -426,8 +426,9 @@ static void lit_line_colour(interp *ip, double x, double y, double z, float out[
         double n1 = cn[0] * im[4] + cn[1] * im[5] + cn[2] * im[6];
         double n2 = cn[0] * im[8] + cn[1] * im[9] + cn[2] * im[10];
         n[0] = n0, n[1] = n1, n[2] = n2;
-        double len = sqrt(n0 * n0 + n1 * n1 + n2 * n2);
-        if (a->caps[INTERP_CAP_NORMALIZE] && len > 0) {
+        bool normalize = a->caps[INTERP_CAP_NORMALIZE];
+        double len = normalize ? sqrt(n0 * n0 + n1 * n1 + n2 * n2) : 0; /* only then */
+        if (normalize && len > 0) {
             for (int k = 0; k < 3; k++)
                 n[k] /= len;
         } else if (a->caps[INTERP_CAP_RESCALE_NORMAL]) {
