@@ -42,6 +42,15 @@ typedef struct interp_proj_vote_t {
     uint32_t first_seq, first_depth_seq; /* draw_seq of its first (depth-tested) draw */
 } interp_proj_vote_t;
 
+/* interp_lit_color_peak's terms of one directional light, made once per
+ * position (bit for bit) instead of once per vertex. */
+typedef struct interp_litdir {
+    float pos[3];
+    bool set, h_set;
+    double vp[3], d; /* unit direction, length of the position */
+    double h[3], hl; /* half vector for the infinite viewer, its length */
+} interp_litdir;
+
 struct interp {
     gl_state st;
     interp_quadric quadrics[INTERP_QUADRICS]; /* context state, like st */
@@ -109,6 +118,10 @@ struct interp {
      * matrix, not per vertex. */
     mat4 lit_mv, lit_mv_inv;
     bool lit_mv_set, lit_mv_ok;
+    /* interp_lit_color_peak's per-light terms of a directional light, kept
+     * while its position stays bit for bit the same (a cache: written
+     * through a const interp). */
+    interp_litdir litdir[INTERP_MAX_LIGHTS];
     bool prim_in_eye;   /* prim_to_eye is applied to the vertices themselves */
     uint8_t prim_blend; /* SCENE_BLEND_* of the primitive */
     int draw_unit[2];   /* the draw's first two enabled texture units, or -1 */

@@ -415,26 +415,44 @@ void interp_lit_color_peak(const interp *ip, const double p[3], const double n[3
     double c[3], spec[3] = {0, 0, 0};
     for (int k = 0; k < 3; k++)
         c[k] = m.emission[k] + m.ambient[k] * a->lighting.model_ambient[k];
+    /* A cache of the interp's own (interp_internal.h): every interp is
+     * made writable by interp_create, only this function is handed it const. */
+    interp_litdir *dircache = ((interp *)ip)->litdir;
     for (int i = 0; i < INTERP_MAX_LIGHTS; i++) {
         if (!light_on(a, i))
             continue;
         const gl_light *l = &a->lighting.light[i];
         double vp[3], att = 1, spot = 1, d = 0;
-        if (l->position[3] != 0) {
+        bool dir = l->position[3] == 0;
+        if (!dir) {
             for (int k = 0; k < 3; k++)
                 vp[k] = l->position[k] / l->position[3] - p[k];
             d = sqrt(vp[0] * vp[0] + vp[1] * vp[1] + vp[2] * vp[2]);
             double q = l->attenuation[0] + l->attenuation[1] * d + l->attenuation[2] * d * d;
             att = q > 0 ? 1 / q : 0;
-        } else {
+            if (!(d > 0))
+                continue;
             for (int k = 0; k < 3; k++)
-                vp[k] = l->position[k];
-            d = sqrt(vp[0] * vp[0] + vp[1] * vp[1] + vp[2] * vp[2]);
+                vp[k] /= d;
+        } else {
+            /* The same arithmetic once per position, not per vertex. */
+            if (!dircache[i].set || memcmp(dircache[i].pos, l->position, sizeof dircache[i].pos) != 0) {
+                double *cv = dircache[i].vp;
+                for (int k = 0; k < 3; k++)
+                    cv[k] = l->position[k];
+                dircache[i].d = sqrt(cv[0] * cv[0] + cv[1] * cv[1] + cv[2] * cv[2]);
+                if (dircache[i].d > 0)
+                    for (int k = 0; k < 3; k++)
+                        cv[k] /= dircache[i].d;
+                memcpy(dircache[i].pos, l->position, sizeof dircache[i].pos);
+                dircache[i].set = true;
+                dircache[i].h_set = false;
+            }
+            d = dircache[i].d;
+            if (!(d > 0))
+                continue;
+            memcpy(vp, dircache[i].vp, sizeof vp);
         }
-        if (!(d > 0))
-            continue;
-        for (int k = 0; k < 3; k++)
-            vp[k] /= d;
         if (l->spot_cutoff != 180 && l->position[3] != 0) {
             const float *sd = l->spot_direction;
             double sl = sqrt((double)sd[0] * sd[0] + (double)sd[1] * sd[1] + (double)sd[2] * sd[2]);
@@ -444,16 +462,26 @@ void interp_lit_color_peak(const interp *ip, const double p[3], const double n[3
         double nl = nn[0] * vp[0] + nn[1] * vp[1] + nn[2] * vp[2];
         double sp = 0;
         if (nl > 0) {
-            double h[3];
-            double e[3] = {0, 0, 1};
-            if (a->lighting.local_viewer) {
-                double pl = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+            double h[3], hl;
+            if (dir && !a->lighting.local_viewer && dircache[i].h_set) {
+                memcpy(h, dircache[i].h, sizeof h);
+                hl = dircache[i].hl;
+            } else {
+                double e[3] = {0, 0, 1};
+                if (a->lighting.local_viewer) {
+                    double pl = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+                    for (int k = 0; k < 3; k++)
+                        e[k] = pl > 0 ? -p[k] / pl : 0;
+                }
                 for (int k = 0; k < 3; k++)
-                    e[k] = pl > 0 ? -p[k] / pl : 0;
+                    h[k] = vp[k] + e[k];
+                hl = sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+                if (dir && !a->lighting.local_viewer) {
+                    memcpy(dircache[i].h, h, sizeof h);
+                    dircache[i].hl = hl;
+                    dircache[i].h_set = true;
+                }
             }
-            for (int k = 0; k < 3; k++)
-                h[k] = vp[k] + e[k];
-            double hl = sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
             double nh = hl > 0 ? (nn[0] * h[0] + nn[1] * h[1] + nn[2] * h[2]) / hl : 0;
             sp = nh > 0 ? pow(nh, m.shininess) : (m.shininess == 0 ? 1 : 0);
         }

@@ -405,8 +405,11 @@ static void lit_line_colour(interp *ip, double x, double y, double z, float out[
     const mat4 *mv = interp_matrix(ip, INTERP_MV);
     double in[4] = {x, y, z, 1}, o[4], p[3], n[3] = {0, 0, 0};
     mat4_apply(mv, in, o);
-    for (int k = 0; k < 3; k++)
-        p[k] = o[3] != 0 ? o[k] / o[3] : o[k];
+    if (o[3] == 1) /* an affine modelview: x / 1 is x, without three divisions */
+        p[0] = o[0], p[1] = o[1], p[2] = o[2];
+    else
+        for (int k = 0; k < 3; k++)
+            p[k] = o[3] != 0 ? o[k] / o[3] : o[k];
     if (!ip->lit_mv_set || memcmp(&ip->lit_mv, mv, sizeof *mv) != 0) {
         ip->lit_mv = *mv;
         ip->lit_mv_ok = mat4_invert(mv, &ip->lit_mv_inv);
@@ -415,10 +418,17 @@ static void lit_line_colour(interp *ip, double x, double y, double z, float out[
     const mat4 *inv = &ip->lit_mv_inv;
     if (ip->lit_mv_ok) {
         const float *cn = a->current.normal;
-        for (int k = 0; k < 3; k++) /* n^T M^-1: row k of the inverse's transpose */
-            n[k] = cn[0] * inv->m[k * 4 + 0] + cn[1] * inv->m[k * 4 + 1] + cn[2] * inv->m[k * 4 + 2];
-        double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        if (a->caps[INTERP_CAP_NORMALIZE] && len > 0) {
+        const double *im = inv->m;
+        /* n^T M^-1: row k of the inverse's transpose. In scalars: stored
+         * one by one and read back two at a time, the array stalled on
+         * store forwarding at every vertex. */
+        double n0 = cn[0] * im[0] + cn[1] * im[1] + cn[2] * im[2];
+        double n1 = cn[0] * im[4] + cn[1] * im[5] + cn[2] * im[6];
+        double n2 = cn[0] * im[8] + cn[1] * im[9] + cn[2] * im[10];
+        n[0] = n0, n[1] = n1, n[2] = n2;
+        bool normalize = a->caps[INTERP_CAP_NORMALIZE];
+        double len = normalize ? sqrt(n0 * n0 + n1 * n1 + n2 * n2) : 0; /* only then */
+        if (normalize && len > 0) {
             for (int k = 0; k < 3; k++)
                 n[k] /= len;
         } else if (a->caps[INTERP_CAP_RESCALE_NORMAL]) {
@@ -778,6 +788,16 @@ static bool compute_clip(interp *ip, uint32_t n)
 static bool is_ccw(const interp *ip, const uint32_t *idx, int n)
 {
     double (*c)[5] = ip->clipv;
+    if (n == 3) { /* strips and triangles: the loops below unrolled, same sums */
+        const double *a = c[idx[0]], *b = c[idx[1]], *d = c[idx[2]];
+        if (a[2] > 0 && b[2] > 0 && d[2] > 0) {
+            double area = 0;
+            area += a[3] * b[4] - b[3] * a[4];
+            area += b[3] * d[4] - d[3] * b[4];
+            area += d[3] * a[4] - a[3] * d[4];
+            return area > 0;
+        }
+    }
     bool all_front = true;
     for (int k = 0; k < n; k++)
         if (!(c[idx[k]][2] > 0))

@@ -209,6 +209,23 @@ static inline void put_entry(povwriter *w, outbuf *ob, const char *pre, size_t n
 }
 
 
+/* ",\n<u,v>" (a uv entry) through the float cache: uv on a texel grid
+ * take few distinct values (a column's, a row's), met again and again. */
+static inline void put_uv(povwriter *w, outbuf *ob, float u, float v)
+{
+    char *p = outbuf_room(ob, 2 * NUMFMT_F32_ROOM + 8);
+    if (!p)
+        return;
+    char *q = p;
+    memcpy(q, ",\n<", 3);
+    q += 3;
+    q += cached_f32(w, q, u);
+    *q++ = ',';
+    q += cached_f32(w, q, v);
+    *q++ = '>';
+    outbuf_commit(ob, (size_t)(q - p));
+}
+
 #define PUT_ENTRY(w, ob, pre, v, post) \
     put_entry((w), (ob), (pre), sizeof(pre) - 1, (v), (post), sizeof(post) - 1)
 
@@ -448,10 +465,24 @@ static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const
     size_t want = w->in_proto ? 2 : COLOUR_IMAGE_MIN_COLOURS + 1;
     const float *seen[COLOUR_IMAGE_MIN_COLOURS + 1];
     size_t nseen = 0, last = 0;
+    /* Strips share two corners with the face before: their 8-bit values
+     * are taken from it. */
+    const float *pc[3] = {NULL, NULL, NULL};
+    uint8_t pq[3][3];
     for (size_t i = 0; i < nt; i++) {
         const float *c[3];
+        uint8_t q[3][3];
         for (int k = 0; k < 3; k++) {
             c[k] = verts[look->flat ? tris[i].provoking : tris[i].v[k]].color;
+            if (c[k] == pc[0])
+                memcpy(q[k], pq[0], 3);
+            else if (c[k] == pc[1])
+                memcpy(q[k], pq[1], 3);
+            else if (c[k] == pc[2])
+                memcpy(q[k], pq[2], 3);
+            else
+                for (int h = 0; h < 3; h++)
+                    q[k][h] = povtex_quantise(c[k][h]);
             if (c[k][3] != 1)
                 return false;
             if (nseen < want && (nseen == 0 || memcmp(seen[last], c[k], 3 * sizeof *c[k]) != 0)) {
@@ -463,8 +494,10 @@ static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const
                 last = j;
             }
         }
-        if (!look->flat && povtex_colour_origin(c) < 0)
+        if (!look->flat && povtex_colour_origin_q(q) < 0)
             return false;
+        memcpy(pc, c, sizeof pc);
+        memcpy(pq, q, sizeof pq);
     }
     return nseen >= want;
 }
@@ -869,24 +902,15 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         uint32_t off = 3 + (normals ? 3 : 0) + (vcolour ? 4 : 0);
         for (size_t i = 0; i < vd->count; i++) {
             const float *uv = (const float *)(const void *)(dedup_key(vd, i) + off);
-            outbuf_puts(ob, ",\n<");
-            outbuf_f32(ob, uv[0]);
-            outbuf_putc(ob, ',');
-            outbuf_f32(ob, uv[1]);
-            outbuf_putc(ob, '>');
+            put_uv(w, ob, uv[0], uv[1]);
         }
         outbuf_puts(ob, "}\n");
     }
     if (vimage) { /* a vertex's texel on the grid, then three per face off it */
         outbuf_puts(ob, "uv_vectors{");
         outbuf_u64(ob, nvg + nleft * 3);
-        for (size_t i = 0; i < nvg + nleft * 3; i++) {
-            outbuf_puts(ob, ",\n<");
-            outbuf_f32(ob, w->vuv[2 * i]);
-            outbuf_putc(ob, ',');
-            outbuf_f32(ob, w->vuv[2 * i + 1]);
-            outbuf_putc(ob, '>');
-        }
+        for (size_t i = 0; i < nvg + nleft * 3; i++)
+            put_uv(w, ob, w->vuv[2 * i], w->vuv[2 * i + 1]);
         outbuf_puts(ob, "}\n");
     }
     if (colour_list) {

@@ -515,14 +515,17 @@ void povlight_eye_point(const mat4 *m, const float p[3], double out[3])
 /* Unit vector from eye point p toward the camera. */
 static bool toward_camera(const scene_camera *cam, const double p[3], double v[3])
 {
-    for (int k = 0; k < 3; k++)
-        v[k] = cam->kind == SCENE_CAMERA_ORTHOGRAPHIC ? -cam->direction[k]
-                                                      : cam->location[k] - p[k];
-    double l = len3(v);
+    /* In scalars, as len3 (sqrt of dot3) adds them: an array stored one by
+     * one and read back as pairs stalled on store forwarding. */
+    bool ortho = cam->kind == SCENE_CAMERA_ORTHOGRAPHIC;
+    double v0 = ortho ? -cam->direction[0] : cam->location[0] - p[0];
+    double v1 = ortho ? -cam->direction[1] : cam->location[1] - p[1];
+    double v2 = ortho ? -cam->direction[2] : cam->location[2] - p[2];
+    double l = sqrt(v0 * v0 + v1 * v1 + v2 * v2);
+    v[0] = v0, v[1] = v1, v[2] = v2;
     if (!(l > 0) || !isfinite(l))
         return false;
-    for (int k = 0; k < 3; k++)
-        v[k] /= l;
+    v[0] = v0 / l, v[1] = v1 / l, v[2] = v2 / l;
     return true;
 }
 
@@ -554,24 +557,42 @@ void povlight_front_normal(const povlight *pl, const mat4 *to_eye, const mat4 *t
 {
     memcpy(out, n, 3 * sizeof *out);
     double v[3], ne[3];
-    if (!toward_camera(&pl->s->camera, p, v))
-        return;
+    /* In scalars: arrays stored one by one and read back two at a time
+     * stalled on store forwarding at every vertex. */
+    double e0, e1, e2;
     if (to_eye) { /* eye normal = M^-T n */
         if (!to_eye_inv)
             return;
         const double *inv = to_eye_inv->m;
-        for (int k = 0; k < 3; k++)
-            ne[k] = n[0] * inv[k * 4 + 0] + n[1] * inv[k * 4 + 1] + n[2] * inv[k * 4 + 2];
+        e0 = n[0] * inv[0] + n[1] * inv[1] + n[2] * inv[2];
+        e1 = n[0] * inv[4] + n[1] * inv[5] + n[2] * inv[6];
+        e2 = n[0] * inv[8] + n[1] * inv[9] + n[2] * inv[10];
     } else {
-        for (int k = 0; k < 3; k++)
-            ne[k] = n[k];
+        e0 = n[0], e1 = n[1], e2 = n[2];
     }
-    double l = len3(ne);
+    /* Most normals face the camera well past the margin: seen without a
+     * square root or a division, (N.V)^2 >= m^2 |N|^2 |V|^2 with a slack
+     * of 1e-6, far above the rounding of the exact test below, which
+     * decides every case near the margin. */
+    const scene_camera *cam = &pl->s->camera;
+    bool ortho = cam->kind == SCENE_CAMERA_ORTHOGRAPHIC;
+    double v0 = ortho ? -cam->direction[0] : cam->location[0] - p[0];
+    double v1 = ortho ? -cam->direction[1] : cam->location[1] - p[1];
+    double v2 = ortho ? -cam->direction[2] : cam->location[2] - p[2];
+    double dot = e0 * v0 + e1 * v1 + e2 * v2;
+    double nn = e0 * e0 + e1 * e1 + e2 * e2;
+    double vv = v0 * v0 + v1 * v1 + v2 * v2;
+    if (dot > 0 && isfinite(dot * dot) && nn * vv > 0 &&
+        dot * dot >= FRONT_MARGIN * FRONT_MARGIN * (1 + 1e-6) * (nn * vv))
+        return;
+    if (!toward_camera(cam, p, v))
+        return;
+    double l = sqrt(nn); /* len3(ne) */
     if (!(l > 0) || !isfinite(l))
         return;
-    for (int k = 0; k < 3; k++)
-        ne[k] /= l;
-    double d = ne[0] * v[0] + ne[1] * v[1] + ne[2] * v[2];
+    e0 /= l, e1 /= l, e2 /= l;
+    ne[0] = e0, ne[1] = e1, ne[2] = e2;
+    double d = e0 * v[0] + e1 * v[1] + e2 * v[2];
     if (d >= FRONT_MARGIN)
         return;
     for (int k = 0; k < 3; k++)

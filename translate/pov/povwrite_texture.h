@@ -91,6 +91,39 @@ int povtex_overlay(povtex *pt, const uint8_t *rgba, int w, int h);
  * face is at most a quarter of it, at the middle of the edge B-C). */
 #define POVTEX_CLAMP_MAX 4
 int povtex_colour_origin(const float *const c[3]);
+/* A colour channel (0..1) as an 8-bit texel value, NaN as 0. */
+static inline uint8_t povtex_quantise(float x)
+{
+    return (uint8_t)(x > 0 ? (x < 1 ? (int)(x * 255.0f + 0.5f) : 255) : 0);
+}
+/* How far D = B + C - A leaves 0..255, worst channel. */
+static inline int povtex_excess_q(const uint8_t a[3], const uint8_t b[3], const uint8_t c[3])
+{
+    int worst = 0;
+    for (int k = 0; k < 3; k++) {
+        int d = b[k] + c[k] - a[k];
+        int e = d < 0 ? -d : d > 255 ? d - 255 : 0;
+        worst = e > worst ? e : worst;
+    }
+    return worst;
+}
+/* povtex_colour_origin from the corners as povtex_quantise gives them
+ * (inline: called for every face of a mesh with vertex colours). */
+static inline int povtex_colour_origin_q(uint8_t q[3][3])
+{
+    int be = povtex_excess_q(q[0], q[1], q[2]), best = 0;
+    if (be > 0) {
+        int e = povtex_excess_q(q[1], q[2], q[0]);
+        if (e < be)
+            best = 1, be = e;
+    }
+    if (be > 0) {
+        int e = povtex_excess_q(q[2], q[0], q[1]);
+        if (e < be)
+            best = 2, be = e;
+    }
+    return be <= POVTEX_CLAMP_MAX ? best : -1;
+}
 
 /* Adds the image of n faces, corners[3 * j + k] the colour of corner k of
  * face j, and writes the uv of each corner (its texel's centre) to

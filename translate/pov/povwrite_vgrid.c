@@ -30,8 +30,8 @@ void povgrid_finish(povgrid *g)
     tr_free(g->in_grid);
     tr_free(g->quad);
     tr_free(g->qface);
-    tr_free(g->ekey);
-    tr_free(g->eval);
+    tr_free(g->estart);
+    tr_free(g->eent);
     tr_free(g->tkey);
     tr_free(g->comp);
     tr_free(g->queue);
@@ -52,19 +52,25 @@ static inline uint64_t mix(uint64_t k)
     return k;
 }
 
-/* The slot of an edge (key found or the empty slot for it). */
-static size_t edge_slot(const povgrid *g, size_t cap, uint64_t key)
+/* The first two quads on edge u-w, NONE where there are fewer. The edges
+ * are listed by their lower vertex, in the order the quads were made: strips
+ * number their vertices in order, so the lists are read nearly in order,
+ * where a hash of the edge would miss the cache at every look-up. */
+static void edge_quads(const povgrid *g, uint32_t u, uint32_t w, uint32_t out[2])
 {
-    size_t i = (size_t)mix(key) & (cap - 1);
-    while (g->ekey[i] != 0 && g->ekey[i] != key)
-        i = (i + 1) & (cap - 1);
-    return i;
-}
-
-static uint64_t edge_key(uint32_t a, uint32_t b)
-{
-    uint32_t lo = a < b ? a : b, hi = a < b ? b : a;
-    return ((uint64_t)lo << 32 | hi) + 1; /* 0: empty */
+    uint32_t lo = u < w ? u : w, hi = u < w ? w : u;
+    out[0] = out[1] = NONE;
+    for (uint32_t i = g->estart[lo], end = g->estart[lo + 1]; i < end; i++) {
+        if (g->eent[2 * i] != hi)
+            continue;
+        uint32_t q = g->eent[2 * i + 1];
+        if (out[0] == NONE) {
+            out[0] = q;
+        } else if (q != out[0]) {
+            out[1] = q;
+            return;
+        }
+    }
 }
 
 static uint64_t texel_key(int32_t comp, int32_t x, int32_t y)
@@ -73,11 +79,17 @@ static uint64_t texel_key(int32_t comp, int32_t x, int32_t y)
            1;
 }
 
-/* The vertex at a texel: slot of key, found or empty. */
-static size_t texel_slot(const povgrid *g, uint64_t key)
+/* The vertex at a texel: slot of key, found or empty. Blocks of 4x4
+ * texels hash to 16 slots in a row (two cache lines): the walk places
+ * neighbours, so it reads the same few lines where a hash per texel would
+ * miss the cache at every look-up. The table is kept at most a quarter
+ * full, so that blocks seldom run into each other. */
+static size_t texel_slot(const povgrid *g, int32_t comp, int32_t x, int32_t y, uint64_t key)
 {
-    size_t cap = g->cap_tkey;
-    size_t i = (size_t)mix(key) & (cap - 1);
+    size_t cap = g->ntkey;
+    size_t i = ((size_t)mix(texel_key(comp, x & ~3, y & ~3)) << 4 | (size_t)(y & 3) << 2 |
+                (size_t)(x & 3)) &
+               (cap - 1);
     while (g->tkey[i] != 0 && g->tkey[i] != key)
         i = (i + 1) & (cap - 1);
     return i;
@@ -88,7 +100,7 @@ static void put_vertex(povgrid *g, uint32_t v, int32_t comp, int32_t x, int32_t 
     g->tx[v] = x;
     g->ty[v] = y;
     g->comp[v] = comp;
-    g->tkey[texel_slot(g, texel_key(comp, x, y))] = texel_key(comp, x, y);
+    g->tkey[texel_slot(g, comp, x, y, texel_key(comp, x, y))] = texel_key(comp, x, y);
 }
 
 /* Whether v can go to (x, y) of comp: there already, or unplaced and the
@@ -97,7 +109,7 @@ static bool fits(const povgrid *g, uint32_t v, int32_t comp, int32_t x, int32_t 
 {
     if (g->tx[v] != -1 || g->comp[v] != -1)
         return g->comp[v] == comp && g->tx[v] == x && g->ty[v] == y;
-    return g->tkey[texel_slot(g, texel_key(comp, x, y))] == 0;
+    return g->tkey[texel_slot(g, comp, x, y, texel_key(comp, x, y))] == 0;
 }
 
 static size_t pow2_above(size_t n)
@@ -160,36 +172,32 @@ int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, si
     if (nq == 0)
         return 0;
 
-    /* Edges -> up to two quads. */
-    size_t ecap = pow2_above(nq * 4);
-    if (ecap > g->cap_edge) {
-        uint64_t *k = tr_realloc(g->ekey, ecap * sizeof *k);
-        if (!k)
-            return -1;
-        g->ekey = k;
-        uint32_t *v = tr_realloc(g->eval, ecap * 2 * sizeof *v);
-        if (!v)
-            return -1;
-        g->eval = v;
-        g->cap_edge = ecap;
-    }
-    memset(g->ekey, 0, ecap * sizeof *g->ekey);
+    /* Edges -> quads, listed by the edge's lower vertex (counting sort). */
+    if (tr_grow((void **)&g->estart, &g->cap_estart, nv + 2, sizeof *g->estart) != 0 ||
+        tr_grow((void **)&g->eent, &g->cap_eent, nq * 8, sizeof *g->eent) != 0)
+        return -1;
+    memset(g->estart, 0, (nv + 2) * sizeof *g->estart);
     for (size_t q = 0; q < nq; q++)
         for (int k = 0; k < 4; k++) {
-            uint64_t key = edge_key(g->quad[4 * q + k], g->quad[4 * q + (k + 1) % 4]);
-            size_t s = edge_slot(g, ecap, key);
-            if (g->ekey[s] == 0) {
-                g->ekey[s] = key;
-                g->eval[2 * s] = (uint32_t)q;
-                g->eval[2 * s + 1] = NONE;
-            } else if (g->eval[2 * s + 1] == NONE && g->eval[2 * s] != q) {
-                g->eval[2 * s + 1] = (uint32_t)q;
-            }
+            uint32_t u = g->quad[4 * q + k], w = g->quad[4 * q + (k + 1) % 4];
+            g->estart[(u < w ? u : w) + 2]++;
+        }
+    for (size_t v = 2; v < nv + 2; v++)
+        g->estart[v] += g->estart[v - 1];
+    /* estart[v + 1] is v's fill position now, estart[v + 1] its end after */
+    for (size_t q = 0; q < nq; q++)
+        for (int k = 0; k < 4; k++) {
+            uint32_t u = g->quad[4 * q + k], w = g->quad[4 * q + (k + 1) % 4];
+            uint32_t at = g->estart[(u < w ? u : w) + 1]++;
+            g->eent[2 * at] = u < w ? w : u;
+            g->eent[2 * at + 1] = (uint32_t)q;
         }
 
     /* Texels -> vertices; the walk's queue, whose entries' high bit marks
      * a quad seen (state per quad kept in qface's high bit). */
-    size_t tcap = pow2_above(nq * 4 + 4);
+    /* Each vertex takes one texel at most; only the slots this call
+     * needs are cleared, not the largest table an earlier mesh grew. */
+    size_t tcap = pow2_above(2 * (nq * 4 < nv ? nq * 4 : nv) + 8);
     if (tcap > g->cap_tkey) {
         uint64_t *k = tr_realloc(g->tkey, tcap * sizeof *k);
         if (!k)
@@ -197,7 +205,8 @@ int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, si
         g->tkey = k;
         g->cap_tkey = tcap;
     }
-    memset(g->tkey, 0, g->cap_tkey * sizeof *g->tkey);
+    g->ntkey = tcap;
+    memset(g->tkey, 0, tcap * sizeof *g->tkey);
     if (tr_grow((void **)&g->queue, &g->cap_queue, nq, sizeof *g->queue) != 0)
         return -1;
     const uint32_t SEEN = 1u << 31;
@@ -234,9 +243,10 @@ int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, si
             }
             for (int e = 0; e < 4; e++) {
                 uint32_t u = qc[e], w = qc[(e + 1) % 4];
-                size_t s = edge_slot(g, ecap, edge_key(u, w));
+                uint32_t on_edge[2];
+                edge_quads(g, u, w, on_edge);
                 for (int h = 0; h < 2; h++) {
-                    uint32_t q2 = g->eval[2 * s + h];
+                    uint32_t q2 = on_edge[h];
                     if (q2 == NONE || (g->qface[q2] & SEEN))
                         continue;
                     g->qface[q2] |= SEEN;

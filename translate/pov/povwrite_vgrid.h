@@ -30,11 +30,13 @@ typedef struct povgrid {
     size_t cap_quad;
     uint32_t *qface;    /* per quad: its first face */
     size_t cap_qface;
-    uint64_t *ekey;     /* edge -> quads (open addressing) */
-    uint32_t *eval;     /* two quads per edge */
-    size_t cap_edge;
-    uint64_t *tkey;     /* texel -> vertex (open addressing) */
+    uint32_t *estart;   /* per vertex: its first entry in eent */
+    size_t cap_estart;
+    uint32_t *eent;     /* edges by their lower vertex: higher vertex, quad */
+    size_t cap_eent;
+    uint64_t *tkey;     /* texels taken (open addressing) */
     size_t cap_tkey;
+    size_t ntkey;       /* slots in use this call (a power of two) */
     int32_t *comp;      /* per vertex: its component */
     uint32_t *queue;
     size_t cap_queue;

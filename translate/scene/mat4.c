@@ -110,12 +110,6 @@ bool mat4_invert(const mat4 *a, mat4 *out)
     return true;
 }
 
-void mat4_apply(const mat4 *a, const double in[4], double out[4])
-{
-    for (int r = 0; r < 4; r++)
-        out[r] = M(a, r, 0) * in[0] + M(a, r, 1) * in[1] + M(a, r, 2) * in[2] + M(a, r, 3) * in[3];
-}
-
 mat4 mat4_translate(double x, double y, double z)
 {
     mat4 o = mat4_identity();

@@ -56,7 +56,16 @@ bool mat4_affine(const mat4 *a);
 bool mat4_equal_f32(const mat4 *a, const mat4 *b);
 
 /* out = M (x, y, z, w). */
-void mat4_apply(const mat4 *a, const double in[4], double out[4]);
+/* Inline: called for every vertex, at several stages. */
+static inline void mat4_apply(const mat4 *a, const double in[4], double out[4])
+{
+    const double *m = a->m;
+    double o[4];
+    for (int r = 0; r < 4; r++)
+        o[r] = m[r] * in[0] + m[4 + r] * in[1] + m[8 + r] * in[2] + m[12 + r] * in[3];
+    for (int r = 0; r < 4; r++)
+        out[r] = o[r];
+}
 
 /* glTranslate, glScale. */
 mat4 mat4_translate(double x, double y, double z);
