@@ -351,6 +351,56 @@ static void test_materials_lights(void)
     scene_finish(&s);
 }
 
+/* GL_COLOR_MATERIAL's ambient term follows the colour: one colour a draw
+ * goes to emissive; faces of one colour each (a coloured cube) become one
+ * primitive a colour; colours varying within a face keep none, noted. */
+static void test_colour_material_ambient(void)
+{
+    scene s;
+    scene_init(&s);
+    camera_perspective(&s, 40, 4.0 / 3, 1, 30);
+    scene_look l = unlit();
+    l.lit = 1;
+    l.material = material(&s, 0.5f, 0.5f, 0.5f, 0, 0, SCENE_CM_DIFFUSE | SCENE_CM_AMBIENT);
+    mat4 m = mat4_translate(0, 0, -5);
+    CHECK(scene_mesh_for(&s, &m, false, &l) != NULL);
+    for (int f = 0; f < 2; f++) { /* a red face, then a green one */
+        float r = f == 0, g = f == 1;
+        uint32_t a = vert(&s, 0, 0, (float)f, r, g, 0), b = vert(&s, 1, 0, (float)f, r, g, 0),
+                 c = vert(&s, 0, 1, (float)f, r, g, 0);
+        CHECK(scene_add_tri(&s, a, b, c, c));
+    }
+    gltf_stats st;
+    char *j = write_glb(&s, "cm_ambient_faces", &st, NULL);
+    CHECK(count(j, "\"mode\":4") == 2);
+    CHECK_EQ_U(st.materials, 2);
+    /* model ambient 0.2 x the face's colour 1: display 0.2, linear 0.0331 */
+    double lin02 = pow((0.2 + 0.055) / 1.055, 2.4);
+    CHECK_NEAR(jarr(j, "emissiveFactor", 0), lin02, 1e-6);
+    CHECK_NEAR(jarr(j, "emissiveFactor", 1), 0, 0);
+    const char *second = strstr(strstr(j, "emissiveFactor") + 1, "emissiveFactor");
+    CHECK(second != NULL);
+    if (second) {
+        CHECK_NEAR(jarr(second - 1, "emissiveFactor", 0), 0, 0);
+        CHECK_NEAR(jarr(second - 1, "emissiveFactor", 1), lin02, 1e-6);
+    }
+    CHECK(strstr(j, "ambient term of a draw whose colours vary") == NULL);
+    free(j);
+    scene_finish(&s);
+
+    /* colours varying within a face: no ambient term, and a note */
+    scene_init(&s);
+    camera_perspective(&s, 40, 4.0 / 3, 1, 30);
+    l.material = material(&s, 0.5f, 0.5f, 0.5f, 0, 0, SCENE_CM_DIFFUSE | SCENE_CM_AMBIENT);
+    triangle(&s, &m, &l);
+    j = write_glb(&s, "cm_ambient_varying", &st, NULL);
+    CHECK(count(j, "\"mode\":4") == 1);
+    CHECK(strstr(j, "emissiveFactor") == NULL);
+    CHECK(strstr(j, "ambient term of a draw whose colours vary") != NULL);
+    free(j);
+    scene_finish(&s);
+}
+
 static void test_solids_lines_textures(void)
 {
     scene s;
@@ -505,6 +555,7 @@ int main(int argc, char **argv)
     test_bounds_and_camera();
     test_instancing();
     test_materials_lights();
+    test_colour_material_ambient();
     test_solids_lines_textures();
     test_determinism_and_failures();
     test_from_trace();
