@@ -1,8 +1,7 @@
 /* dedup.c: the insertion-ordered key set (dedup.h).
  *
  * Linear probing over a power-of-two table kept at most half full. Each
- * slot holds the key's place among the live keys and 16 bits of its hash
- * (bits the slot's position does not use), so a probe touches
+ * slot holds the key's index and 32 bits of its hash, so a probe touches
  * the key itself only when the hash bits match. The table stops growing at
  * DEDUP_WINDOW slots, so that it stays in the processor's cache: once that
  * holds DEDUP_WINDOW / 2 keys it is emptied and refilled by the keys that
@@ -33,7 +32,7 @@ void dedup_finish(dedup *d)
 
 static int resize(dedup *d, size_t nslots)
 {
-    uint32_t *s = tr_realloc(d->slots, nslots * sizeof *s);
+    uint64_t *s = tr_realloc(d->slots, nslots * sizeof *s);
     if (!s)
         return -1;
     d->slots = s;
@@ -93,37 +92,31 @@ static inline int same_key(const uint32_t *a, const uint32_t *b, uint32_t words)
     return diff == 0;
 }
 
-_Static_assert(DEDUP_WINDOW / 2 < 0xffff, "a live key's place fits 16 bits");
-
-static inline uint32_t slot_tag(uint64_t h) { return (uint32_t)(h >> 48) << 16; }
-
 /* Re-enters the live keys (the last `live` ones) into the table. */
 static void rehash(dedup *d)
 {
     memset(d->slots, 0, (d->mask + 1) * sizeof *d->slots);
-    size_t base = d->count - d->live;
-    for (size_t i = base; i < d->count; i++) {
+    for (size_t i = d->count - d->live; i < d->count; i++) {
         uint64_t h = hash_key(dedup_key(d, i), d->words);
         size_t at = (size_t)h & d->mask;
         while (d->slots[at])
             at = (at + 1) & d->mask;
-        d->slots[at] = slot_tag(h) | (uint32_t)(i - base + 1);
+        d->slots[at] = (h & 0xffffffff00000000ull) | (uint64_t)(i + 1);
     }
 }
 
 uint32_t dedup_index(dedup *d, const uint32_t *key)
 {
-    uint64_t h = hash_key(key, d->words);
-    uint32_t tag = slot_tag(h);
-    size_t at = (size_t)h & d->mask, base = d->count - d->live;
+    uint64_t h = hash_key(key, d->words), tag = h & 0xffffffff00000000ull;
+    size_t at = (size_t)h & d->mask;
     for (;;) {
-        uint32_t s = d->slots[at];
+        uint64_t s = d->slots[at];
         if (!s)
             break;
-        if ((s & 0xffff0000u) == tag) {
-            size_t i = base + (s & 0xffffu) - 1;
+        if ((s & 0xffffffff00000000ull) == tag) {
+            uint32_t i = (uint32_t)s - 1;
             if (same_key(dedup_key(d, i), key, d->words))
-                return (uint32_t)i;
+                return i;
         }
         at = (at + 1) & d->mask;
     }
@@ -132,8 +125,8 @@ uint32_t dedup_index(dedup *d, const uint32_t *key)
     if (tr_grow((void **)&d->keys, &d->cap_keys, (d->count + 1) * d->words, sizeof *key) != 0)
         return DEDUP_NONE;
     memcpy(d->keys + d->count * d->words, key, d->words * sizeof *key);
-    d->count++;
-    d->slots[at] = tag | (uint32_t)++d->live;
+    d->slots[at] = tag | (uint64_t)(++d->count);
+    d->live++;
     if (d->live * 2 > d->mask + 1) {
         if (d->mask + 1 < DEDUP_WINDOW) {
             if (resize(d, (d->mask + 1) * 2) != 0)

@@ -20,10 +20,7 @@
 
 typedef struct dedup {
     uint32_t words;  /* key size in 32-bit words */
-    /* Open addressing: 16 hash bits << 16 | the key's place among the live
-     * ones + 1; 0 = empty. Half the bytes of a 64-bit slot: the table
-     * misses the cache less (a window holds at most 2^14 live keys). */
-    uint32_t *slots;
+    uint64_t *slots; /* open addressing: hash bits << 32 | index + 1; 0 = empty */
     size_t mask;     /* slot count - 1 */
     uint32_t *keys;  /* count * words, in insertion order */
     size_t count, cap_keys;
