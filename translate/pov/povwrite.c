@@ -44,8 +44,10 @@
 
 /* Formatted floats, by bit pattern: meshes repeat coordinates, normal
  * components and colour channels far more often than whole vertices, and
- * copying 16 bytes is much cheaper than formatting. Direct-mapped. */
-#define FCACHE_BITS 12
+ * copying 16 bytes is much cheaper than formatting. Direct-mapped; 2^14
+ * entries (512 KB, in L2): 1% fewer instructions on the strips trace than
+ * 2^12 (more repeats found), same text. */
+#define FCACHE_BITS 14
 
 typedef struct fcache_entry {
     uint32_t bits;
