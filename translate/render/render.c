@@ -138,31 +138,15 @@ static char *sh_quote(const char *s)
     return q;
 }
 
-/* The folder part of stem "DIR/NAME" and its NAME. */
-static char *partial_png(const char *stem)
+/* DIR/.NAME.partial.SUFFIX for stem DIR/NAME: what a render writes before
+ * its output is complete (png, log; pov-state: POV-Ray's render state,
+ * written all through the render and kept when stopped). */
+static char *partial_file(const char *stem, const char *suffix)
 {
     const char *slash = strrchr(stem, '/');
     if (!slash)
-        return aprintf(".%s.partial.png", stem);
-    return aprintf("%.*s/.%s.partial.png", (int)(slash - stem), stem, slash + 1);
-}
-
-/* POV-Ray's render state file: its output's name with .pov-state for the
- * extension, written all through the render and kept when stopped. */
-static char *partial_state(const char *stem)
-{
-    const char *slash = strrchr(stem, '/');
-    if (!slash)
-        return aprintf(".%s.partial.pov-state", stem);
-    return aprintf("%.*s/.%s.partial.pov-state", (int)(slash - stem), stem, slash + 1);
-}
-
-static char *partial_log(const char *stem)
-{
-    const char *slash = strrchr(stem, '/');
-    if (!slash)
-        return aprintf(".%s.partial.log", stem);
-    return aprintf("%.*s/.%s.partial.log", (int)(slash - stem), stem, slash + 1);
+        return aprintf(".%s.partial.%s", stem, suffix);
+    return aprintf("%.*s/.%s.partial.%s", (int)(slash - stem), stem, slash + 1, suffix);
 }
 
 static bool newer(const struct stat *a, const struct stat *b)
@@ -431,9 +415,9 @@ static int start_frame(const char *prog, const render_settings *rs, const char *
     tr_free(r->tmp_png);
     tr_free(r->tmp_log);
     tr_free(r->tmp_state);
-    r->tmp_png = partial_png(stem);
-    r->tmp_log = partial_log(stem);
-    r->tmp_state = partial_state(stem);
+    r->tmp_png = partial_file(stem, "png");
+    r->tmp_log = partial_file(stem, "log");
+    r->tmp_state = partial_file(stem, "pov-state");
     if (r->tmp_png && r->tmp_log && r->tmp_state) {
         r->ids[0] = cleanup_file(r->tmp_png);
         r->ids[1] = cleanup_file(r->tmp_log);
