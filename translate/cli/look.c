@@ -578,12 +578,11 @@ void look_free_names(char **names, size_t n)
     tr_free(names);
 }
 
-/* Whether files a and b hold the same bytes. */
-static bool same_file(const char *a, const char *b)
+bool files_same(const char *a, const char *b)
 {
     FILE *fa = fopen(a, "rb"), *fb = fa ? fopen(b, "rb") : NULL;
     bool same = fa && fb;
-    char ba[16384], bb[16384];
+    char ba[65536], bb[65536];
     while (same) {
         size_t na = fread(ba, 1, sizeof ba, fa), nb = fread(bb, 1, sizeof bb, fb);
         same = na == nb && memcmp(ba, bb, na) == 0 && !ferror(fa) && !ferror(fb);
@@ -600,7 +599,7 @@ static bool same_file(const char *a, const char *b)
 /* An unchanged copy keeps its time: rendered frames stay up to date. */
 static int copy_file(const char *from, const char *to, char *msg, size_t cap)
 {
-    if (same_file(from, to))
+    if (files_same(from, to))
         return 0;
     char tmp[4200];
     snprintf(tmp, sizeof tmp, "%s.%ld.tmp", to, (long)getpid());

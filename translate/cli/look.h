@@ -79,4 +79,8 @@ int look_copy_includes(const look_settings *l, const char *dir, char ***names, c
                        size_t cap);
 void look_free_names(char **names, size_t n);
 
+/* Whether files a and b hold the same bytes (an unchanged output is left
+ * in place, keeping its time, so what was rendered from it stays up to date). */
+bool files_same(const char *a, const char *b);
+
 #endif

@@ -525,31 +525,12 @@ static void print_diags(const options *o, totals *tot, const diag_log *log)
     }
 }
 
-/* Whether files a and b hold the same bytes. */
-static bool same_file(const char *a, const char *b)
-{
-    FILE *fa = fopen(a, "rb"), *fb = fa ? fopen(b, "rb") : NULL;
-    bool same = fa && fb;
-    char ba[65536], bb[65536];
-    while (same) {
-        size_t na = fread(ba, 1, sizeof ba, fa), nb = fread(bb, 1, sizeof bb, fb);
-        same = na == nb && memcmp(ba, bb, na) == 0 && !ferror(fa) && !ferror(fb);
-        if (na == 0)
-            break;
-    }
-    if (fa)
-        fclose(fa);
-    if (fb)
-        fclose(fb);
-    return same;
-}
-
 /* Renames tmp to fin, unless fin already holds the same bytes: then fin
  * keeps its time, so a PNG rendered from it still counts as up to date
  * (re-running with --render renders only what changed). */
 static int place(const char *tmp, const char *fin)
 {
-    if (same_file(tmp, fin))
+    if (files_same(tmp, fin))
         return unlink(tmp);
     return rename(tmp, fin);
 }
