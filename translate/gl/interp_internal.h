@@ -42,6 +42,14 @@ typedef struct interp_proj_vote_t {
     uint32_t first_seq, first_depth_seq; /* draw_seq of its first (depth-tested) draw */
 } interp_proj_vote_t;
 
+/* One vertex's inputs to GL's lit colour, kept until glEnd shows the
+ * colour is needed (interp_relit.c). */
+typedef struct interp_relit_in {
+    double p[3];
+    float normal[3];
+    float colour[4];
+} interp_relit_in;
+
 /* interp_lit_color_peak's terms of one directional light, made once per
  * position (bit for bit) instead of once per vertex. */
 typedef struct interp_litdir {
@@ -140,6 +148,12 @@ struct interp {
     bool prim_alpha_varies;  /* another vertex's differs */
     float (*relit_col)[4]; /* GL's lit colour of each vertex (interp_relit.c) */
     size_t cap_relit;
+    interp_relit_in *relit_in; /* what that colour is made of, until it is made */
+    size_t cap_relit_in;
+    size_t relit_pending;  /* vertices kept in relit_in */
+    size_t relit_made;     /* of those, the first ones with their colour in relit_col */
+    uint8_t *relit_need;   /* vertex k is a corner of a face left for the GL-lit pass */
+    size_t cap_relit_need;
     bool relit_over;       /* some vertex was lit past 1 in a channel */
     bool prim_relit;       /* the look being made is of GL-lit faces */
     double *fogz;          /* GL's eye z of each vertex, when fogged (interp_fogbehind.c) */
@@ -738,10 +752,15 @@ void interp_lit_color_peak(const interp *ip, const double p[3], const double n[3
  * (interp_relit.c): back faces under one-sided lighting, and textured
  * GL_MODULATE surfaces lit past white (GL clamps before the texture).
  * _wanted: the open filled primitive's vertices need GL's lit colour;
- * _store: vertex k's (post-processed) lit colour and its unclamped peak;
+ * _defer: keeps vertex k's inputs (the current colour and normal) for
+ * _flush, which makes the kept vertices' colours (at a change of material
+ * between vertices, and when glEnd needs them); _colour: one vertex's
+ * (post-processed) lit colour and its unclamped peak;
  * _split: at glEnd, which faces go to a GL-lit mesh (0: none,
- * INTERP_RELIT_BACK: back faces, INTERP_RELIT_ALL: all); _vertices: the
- * primitive's n vertices copied with their GL colours, returning the
+ * INTERP_RELIT_BACK: back faces, INTERP_RELIT_ALL: all); _need_clear:
+ * no vertex marked in relit_need yet (false: out of memory); _vertices: the
+ * primitive's n vertices copied with their GL colours (made only for the
+ * marked ones, the others unused by any face), returning the
  * copies' first index (or -1 on failure); _done: forget the primitive. */
 /* Fog of primitives reaching behind the eye (interp_fogbehind.c). _check:
  * at glEnd of n pool vertices (before they move to eye space), notes a
@@ -757,8 +776,11 @@ scene_mesh *interp_fog_behind_mesh(interp *ip, const scene_look *look, const mat
 #define INTERP_RELIT_ALL 2
 #define INTERP_RELIT_PROBE 3 /* back faces noted (NOTE_RELIT_SPECULAR), drawn as they are */
 bool interp_relit_wanted(const interp *ip);
-void interp_relit_store(interp *ip, size_t k, const float colour[4], double peak);
+void interp_relit_defer(interp *ip, size_t k, double x, double y, double z);
+void interp_relit_flush(interp *ip);
+void interp_relit_colour(interp *ip, const interp_relit_in *in, float c[4], double *peak);
 int interp_relit_split(interp *ip, const scene_look *look);
+bool interp_relit_need_clear(interp *ip, uint32_t n);
 long interp_relit_vertices(interp *ip, uint32_t n);
 void interp_relit_done(interp *ip);
 

@@ -399,7 +399,8 @@ void interp_surface_colour(const interp *ip, float out[4])
  * here (the scene draws them unlit), with the current normal in GL's own
  * eye space (2.11.3: the inverse transpose of the modelview, normalised
  * under GL_NORMALIZE, rescaled under GL_RESCALE_NORMAL). */
-static void lit_line_colour(interp *ip, double x, double y, double z, float out[4], double *peak)
+static void lit_colour_at(interp *ip, double x, double y, double z, const float cn[3],
+                          const float colour[4], float out[4], double *peak)
 {
     const gl_attribs *a = &ip->st.a;
     const mat4 *mv = interp_matrix(ip, INTERP_MV);
@@ -417,7 +418,6 @@ static void lit_line_colour(interp *ip, double x, double y, double z, float out[
     }
     const mat4 *inv = &ip->lit_mv_inv;
     if (ip->lit_mv_ok) {
-        const float *cn = a->current.normal;
         const double *im = inv->m;
         /* n^T M^-1: row k of the inverse's transpose. In scalars: stored
          * one by one and read back two at a time, the array stalled on
@@ -438,7 +438,24 @@ static void lit_line_colour(interp *ip, double x, double y, double z, float out[
                     n[k] /= r;
         }
     }
-    interp_lit_color_peak(ip, p, n, false, a->current.color, out, peak);
+    interp_lit_color_peak(ip, p, n, false, colour, out, peak);
+}
+
+static void lit_line_colour(interp *ip, double x, double y, double z, float out[4], double *peak)
+{
+    const gl_attribs *a = &ip->st.a;
+    lit_colour_at(ip, x, y, z, a->current.normal, a->current.color, out, peak);
+}
+
+void interp_relit_colour(interp *ip, const interp_relit_in *in, float c[4], double *peak)
+{
+    lit_colour_at(ip, in->p[0], in->p[1], in->p[2], in->normal, in->colour, c, peak);
+    if (ip->prim_blend_mapped)
+        map_blend(ip, c);
+    if (ip->prim_blend == SCENE_BLEND_OPAQUE)
+        c[3] = 1;
+    else if (ip->prim_blend == SCENE_BLEND_INVISIBLE)
+        c[3] = 0;
 }
 
 void interp_lit_point_colour(interp *ip, double x, double y, double z, float out[4])
@@ -491,18 +508,8 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
         v->color[3] = 1;
     else if (ip->prim_blend == SCENE_BLEND_INVISIBLE)
         v->color[3] = 0;
-    if (interp_relit_wanted(ip)) { /* GL's colour, should its face need it */
-        float c[4];
-        double peak;
-        lit_line_colour(ip, x, y, z, c, &peak);
-        if (ip->prim_blend_mapped)
-            map_blend(ip, c);
-        if (ip->prim_blend == SCENE_BLEND_OPAQUE)
-            c[3] = 1;
-        else if (ip->prim_blend == SCENE_BLEND_INVISIBLE)
-            c[3] = 0;
-        interp_relit_store(ip, k, c, peak);
-    }
+    if (interp_relit_wanted(ip)) /* GL's colour, should its face need it */
+        interp_relit_defer(ip, k, x, y, z);
     float q = a->current.texcoord[3];
     v->tex1[0] = v->tex1[1] = 0;
     if (ip->draw_unit[0] >= 0) {
@@ -868,6 +875,11 @@ static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t prov
         bool gl_lit = as->relit == INTERP_RELIT_ALL || !front;
         if (gl_lit != as->relit_pass) {
             as->relit_deferred += gl_lit;
+            if (gl_lit) {
+                for (int k = 0; k < n; k++)
+                    ip->relit_need[idx[k]] = 1;
+                ip->relit_need[provoking] = 1;
+            }
             return;
         }
     } else if (as->relit_pass) {
@@ -1209,7 +1221,11 @@ static void end_primitive(interp *ip)
     as.to_eye = ip->prim_in_eye ? &id : &ip->prim_to_eye;
     as.in_eye = ip->prim_in_eye;
     size_t first_tri = s->ntris;
+    if (look.texture >= 0) /* the split reads relit_over, the colours' peak */
+        interp_relit_flush(ip);
     as.relit = interp_relit_split(ip, &look);
+    if (as.relit && as.relit != INTERP_RELIT_PROBE && !interp_relit_need_clear(ip, n))
+        as.relit = 0;
     if (!as.facing && !as.check_bad && a->polygon.mode[0] == GL_FILL && !as.relit)
         assemble_filled(&as, mode, n);
     else

@@ -22,19 +22,48 @@ bool interp_relit_wanted(const interp *ip)
            !interp_vertex_lit(ip) && ip->prim_mode > GL_LINE_STRIP;
 }
 
-void interp_relit_store(interp *ip, size_t k, const float colour[4], double peak)
+void interp_relit_defer(interp *ip, size_t k, double x, double y, double z)
 {
-    if (k >= ip->cap_relit &&
-        tr_grow((void **)&ip->relit_col, &ip->cap_relit, k + 1, sizeof *ip->relit_col) != 0) {
+    if (k == 0)
+        ip->relit_pending = ip->relit_made = 0;
+    if (k != ip->relit_pending)
+        return; /* an earlier vertex was not kept: _vertices will refuse */
+    if (k >= ip->cap_relit_in &&
+        tr_grow((void **)&ip->relit_in, &ip->cap_relit_in, k + 1, sizeof *ip->relit_in) != 0) {
         ip->scene->failed = true;
         return;
     }
-    memcpy(ip->relit_col[k], colour, sizeof ip->relit_col[k]);
-    if (k == 0)
-        ip->relit_over = false;
-    /* GL clamps each channel to 1 (2.14.8); a little past it is rounding. */
-    if (peak > 1 + 0.5 / 255)
-        ip->relit_over = true;
+    const gl_attribs *a = &ip->st.a;
+    interp_relit_in *in = &ip->relit_in[k];
+    in->p[0] = x, in->p[1] = y, in->p[2] = z;
+    memcpy(in->normal, a->current.normal, sizeof in->normal);
+    memcpy(in->colour, a->current.color, sizeof in->colour);
+    ip->relit_pending = k + 1;
+}
+
+/* Made only when needed (a textured split reads the peak): lighting every
+ * vertex was 14% of the instructions. Of GL's state only the material can
+ * change between vertices (glMaterial), so the kept ones are made before. */
+void interp_relit_flush(interp *ip)
+{
+    size_t n = ip->relit_pending, k0 = ip->relit_made;
+    if (k0 >= n)
+        return;
+    if (n > ip->cap_relit &&
+        tr_grow((void **)&ip->relit_col, &ip->cap_relit, n, sizeof *ip->relit_col) != 0) {
+        ip->scene->failed = true;
+        return;
+    }
+    for (size_t k = k0; k < n; k++) {
+        double peak;
+        interp_relit_colour(ip, &ip->relit_in[k], ip->relit_col[k], &peak);
+        if (k == 0)
+            ip->relit_over = false;
+        /* GL clamps each channel to 1 (2.14.8); a little past it is rounding. */
+        if (peak > 1 + 0.5 / 255)
+            ip->relit_over = true;
+    }
+    ip->relit_made = n;
 }
 
 int interp_relit_split(interp *ip, const scene_look *look)
@@ -59,10 +88,21 @@ int interp_relit_split(interp *ip, const scene_look *look)
     return INTERP_RELIT_BACK;
 }
 
+bool interp_relit_need_clear(interp *ip, uint32_t n)
+{
+    if (n > ip->cap_relit_need &&
+        tr_grow((void **)&ip->relit_need, &ip->cap_relit_need, n, sizeof *ip->relit_need) != 0) {
+        ip->scene->failed = true;
+        return false;
+    }
+    memset(ip->relit_need, 0, n);
+    return true;
+}
+
 long interp_relit_vertices(interp *ip, uint32_t n)
 {
     scene *s = ip->scene;
-    if (n > ip->cap_relit || s->nverts != ip->prim_first + n)
+    if (n > ip->relit_pending || n > ip->cap_relit_need || s->nverts != ip->prim_first + n)
         return -1;
     for (uint32_t i = 0; i < n; i++)
         if (!interp_budget_vertex(ip))
@@ -71,9 +111,16 @@ long interp_relit_vertices(interp *ip, uint32_t n)
     if (!v)
         return -1;
     const scene_vertex *src = s->verts + ip->prim_first;
+    /* Only the moved faces' corners are lit: the other copies are in no
+     * face, so their colour is never written. */
     for (uint32_t i = 0; i < n; i++) {
         v[i] = src[i];
-        memcpy(v[i].color, ip->relit_col[i], sizeof v[i].color);
+        if (i < ip->relit_made) {
+            memcpy(v[i].color, ip->relit_col[i], sizeof v[i].color);
+        } else if (ip->relit_need[i]) {
+            double peak;
+            interp_relit_colour(ip, &ip->relit_in[i], v[i].color, &peak);
+        }
     }
     long first = (long)s->nverts;
     scene_commit_vertices(s, n);
@@ -84,4 +131,5 @@ void interp_relit_done(interp *ip)
 {
     ip->relit_over = false;
     ip->prim_relit = false;
+    ip->relit_pending = ip->relit_made = 0;
 }

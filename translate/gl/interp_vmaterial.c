@@ -47,6 +47,7 @@ void interp_vmat_before_change(interp *ip)
     if (!ip->in_begin || ip->prim_skip || !ip->scene || ip->prim_mode <= GL_LINE_STRIP)
         return;
     /* The vertices so far saw the material before this change. */
+    interp_relit_flush(ip);
     if (record_to(ip, ip->scene->nverts - ip->prim_first))
         ip->vmat.changed = true;
 }
