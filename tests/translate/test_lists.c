@@ -512,6 +512,39 @@ static size_t sdl_numbers(const char *name, double *out, size_t n)
     return k;
 }
 
+/* A strip of `quads` quads in one colour run drawn apart, with its top
+ * corner at column 6 black (no parallelogram in colour with its
+ * neighbours), written as SDL into sdl. ramp: the colours repeat every 8
+ * columns and blue rises along the strip. */
+static void black_corner_strip(int quads, bool ramp)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Enable, GL_DEPTH_TEST);
+    CMD(&s, Translatef, 0, 0, -20);
+    CMD(&s, Begin, GL_TRIANGLE_STRIP);
+    for (int j = 0; j <= quads; j++)
+        for (int r = 1; r >= 0; r--) {
+            float c[3];
+            grid_colour(r, ramp ? j % 8 : j, c);
+            if (ramp)
+                c[2] = 0.01f * (float)j; /* linear along the strip */
+            if (j == 6 && r == 1)
+                c[0] = c[1] = c[2] = 0;
+            CMD(&s, Color3f, c[0], c[1], c[2]);
+            CMD(&s, Vertex2f, j, r);
+        }
+    CMD0(&s, End);
+    run(ip, &s);
+    interp_end_frame(ip);
+    povwriter *w = povwriter_create();
+    CHECK(w != NULL);
+    write_sdl_with(w, NULL);
+    povwriter_destroy(w);
+    interp_destroy(ip);
+}
+
 static void test_colour_grid(void)
 {
     /* Five triangle strips over a 6 x 5 grid, each its own glBegin/End,
@@ -578,62 +611,19 @@ static void test_colour_grid(void)
 
     /* A strip whose quads are no parallelograms in colour (one corner
      * black): those faces keep blocks of their own, through uv_indices. */
-    ip = fresh();
-    seq_init(&s);
-    CMD(&s, Enable, GL_DEPTH_TEST);
-    CMD(&s, Translatef, 0, 0, -20);
-    CMD(&s, Begin, GL_TRIANGLE_STRIP);
-    for (int j = 0; j <= 12; j++)
-        for (int r = 1; r >= 0; r--) {
-            float c[3];
-            grid_colour(r, j, c);
-            if (j == 6 && r == 1)
-                c[0] = c[1] = c[2] = 0;
-            CMD(&s, Color3f, c[0], c[1], c[2]);
-            CMD(&s, Vertex2f, j, r);
-        }
-    CMD0(&s, End);
-    run(ip, &s);
-    interp_end_frame(ip);
-    w = povwriter_create();
-    CHECK(w != NULL);
-    write_sdl_with(w, NULL);
+    black_corner_strip(12, false);
     CHECK_EQ_U(occurrences(sdl, "uv_indices{24,"), 1);
     /* 26 vertices on the grid, then 3 texels for each of the 4 faces
      * that touch the black corner's two quads. */
     CHECK(strstr(sdl, "uv_vectors{38,") != NULL);
-    povwriter_destroy(w);
-    interp_destroy(ip);
 
     /* The same black corner in a strip of 60 quads: its 4 faces get copies
      * of their corners (122 + 12 vertices), the uv stay parallel. */
-    ip = fresh();
-    seq_init(&s);
-    CMD(&s, Enable, GL_DEPTH_TEST);
-    CMD(&s, Translatef, 0, 0, -20);
-    CMD(&s, Begin, GL_TRIANGLE_STRIP);
-    for (int j = 0; j <= 60; j++)
-        for (int r = 1; r >= 0; r--) {
-            float c[3];
-            grid_colour(r, j % 8, c);
-            c[2] = 0.01f * (float)j; /* linear along the strip */
-            if (j == 6 && r == 1)
-                c[0] = c[1] = c[2] = 0;
-            CMD(&s, Color3f, c[0], c[1], c[2]);
-            CMD(&s, Vertex2f, j, r);
-        }
-    CMD0(&s, End);
-    run(ip, &s);
-    interp_end_frame(ip);
-    w = povwriter_create();
-    CHECK(w != NULL);
-    write_sdl_with(w, NULL);
+    black_corner_strip(60, true);
     CHECK_EQ_U(occurrences(sdl, "uv_indices"), 0);
     CHECK(strstr(sdl, "vertex_vectors{134,") != NULL);
     CHECK(strstr(sdl, "uv_vectors{134,") != NULL);
     CHECK(strstr(sdl, "face_indices{120,") != NULL);
-    povwriter_destroy(w);
-    interp_destroy(ip);
 }
 
 int main(void)
