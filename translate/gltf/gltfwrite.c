@@ -715,14 +715,15 @@ static void mesh_prim(writer *w, outbuf *pj, const scene_mesh *me, const mat4 *m
     if (me->look.blend == SCENE_BLEND_INVISIBLE || me->look.alpha_test == SCENE_ALPHA_NEVER ||
         me->tri_count == 0)
         return;
-    bool vcol, varies = false;
+    bool vcol, varies = false, ambient_follows = cm_ambient(s, &me->look);
     float mean[4] = {0, 0, 0, 0};
-    mesh_colour(s, me, mean, &varies);
+    if (ambient_follows) /* only GL_COLOR_MATERIAL's ambient term reads the colours */
+        mesh_colour(s, me, mean, &varies);
     bool uvs = me->look.texture >= 0 && (size_t)me->look.texture < s->ntextures;
     double nm[3][3];
     bool have_nm = m && normal_matrix(m, nm);
     const float *colours[GLTF_CM_COLOURS];
-    size_t ncolours = varies && cm_ambient(s, &me->look) ? face_colours(s, me, colours) : 0;
+    size_t ncolours = varies ? face_colours(s, me, colours) : 0;
     for (size_t k = 0; k < ncolours; k++) {
         int32_t mat = material_index(w, &me->look, false, &vcol, colours[k], false);
         mesh_faces(w, me, m, have_nm ? nm : NULL, colours[k]);
