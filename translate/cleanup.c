@@ -4,6 +4,7 @@
 #include <errno.h>
 #include <pthread.h>
 #include <signal.h>
+#include <stdatomic.h>
 #include <stdbool.h>
 #include <stdlib.h>
 #include <string.h>
@@ -129,15 +130,13 @@ static void reap(pid_t pid)
         ;
 }
 
-static void *waiter(void *arg)
+/* The stop signal once the waiter has it, else 0. */
+static atomic_int stopping;
+
+/* The stop itself, with the lock held for good: nothing registered is made
+ * from now on. */
+_Noreturn static void stop(int sig)
 {
-    (void)arg;
-    sigset_t set;
-    stop_set(&set);
-    int sig = 0;
-    while (sigwait(&set, &sig) != 0)
-        ;
-    cleanup_lock(); /* kept: nothing registered is made from now on */
     for (size_t i = 0; i < nentries; i++)
         if (entries[i].kind == KIND_CHILD)
             kill(entries[i].pid, SIGTERM);
@@ -158,6 +157,33 @@ static void *waiter(void *arg)
     pthread_sigmask(SIG_UNBLOCK, &one, NULL);
     raise(sig);
     _exit(128 + sig);
+}
+
+static void *waiter(void *arg)
+{
+    (void)arg;
+    sigset_t set;
+    stop_set(&set);
+    int sig = 0;
+    while (sigwait(&set, &sig) != 0)
+        ;
+    atomic_store(&stopping, sig);
+    cleanup_lock();
+    stop(sig);
+}
+
+/* At exit, in the exiting thread. Another thread may be ending the process
+ * while the waiter stops it: the main thread whose waitpid found no child
+ * because the waiter reaped it returns from main. Exiting then would cut
+ * the removal short. The lock waits for a stop under way, which ends the
+ * process by its signal; a stop the waiter has taken but not begun is done
+ * here; none begins after. */
+static void at_exit(void)
+{
+    cleanup_lock(); /* kept */
+    int sig = atomic_load(&stopping);
+    if (sig)
+        stop(sig);
 }
 
 static void ignore(int sig)
@@ -184,6 +210,8 @@ int cleanup_start(void)
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
     sigaction(SIGHUP, &sa, NULL);
+    if (atexit(at_exit) != 0)
+        return -1;
     pthread_t t;
     pthread_attr_t a;
     pthread_attr_init(&a);

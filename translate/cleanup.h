@@ -7,7 +7,10 @@
  * and starts a thread that waits for them. On one, that thread takes the
  * registry's lock for good, stops the registered children (SIGTERM, then
  * SIGKILL after a while) and waits for them, removes the registered files,
- * then the registered folders, and ends the process by the signal.
+ * then the registered folders, and ends the process by the signal. An
+ * exit (exit(), a return from main) while a stop is under way waits for
+ * it, so the process still ends by the signal with nothing left; once an
+ * exit has begun, a stop signal is not acted on.
  *
  * A temporary file (or a child that writes one) is registered before it
  * is made, and made with the lock held, so nothing is made after the

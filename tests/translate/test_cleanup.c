@@ -1,0 +1,137 @@
+/* test_cleanup.c: the stop-signal cleanup (translate/cleanup.h) when the
+ * process exits on its own.
+ *
+ * Each case runs in a forked process that stands for one of the tools:
+ *
+ *   exit during a stop  the tool registers a file and a child, then stops
+ *       itself with SIGINT. The child holds the waiter inside its stop: told
+ *       by the waiter's SIGTERM, it says so and stays until the tool is gone
+ *       (at most 1 s). The tool's main thread then exits, as raygl2pov's
+ *       returns from main when the waiter reaps its povray first and its
+ *       waitpid finds no child. The exit must wait for the stop: the tool
+ *       ends by SIGINT and the file is gone. (It used to exit 0 at once,
+ *       the file left.)
+ *   plain exit          no stop: the exit status is kept, also when the
+ *       exiting thread holds the registry's lock.
+ */
+#include <errno.h>
+#include <poll.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "check.h"
+#include "cleanup.h"
+
+/* The child: waits for SIGTERM (still blocked, as cleanup_start left it),
+ * writes a byte to told, then stays until alive reads EOF or 1 s. */
+static void held_child(int told, int alive)
+{
+    sigset_t term;
+    sigemptyset(&term);
+    sigaddset(&term, SIGTERM);
+    struct timespec ten = {10, 0};
+    if (sigtimedwait(&term, NULL, &ten) != SIGTERM)
+        _exit(2);
+    if (write(told, "t", 1) != 1)
+        _exit(2);
+    struct pollfd p = {alive, POLLIN, 0};
+    while (poll(&p, 1, 1000) < 0 && errno == EINTR)
+        ;
+    _exit(0);
+}
+
+/* The tools: exit status 3 when they could not set their case up. */
+static void exit_during_stop(const char *file, int unused)
+{
+    (void)unused;
+    if (cleanup_start() != 0)
+        exit(3);
+    int told[2], alive[2];
+    if (pipe(told) != 0 || pipe(alive) != 0)
+        exit(3);
+    cleanup_lock();
+    long fid = cleanup_file(file);
+    FILE *f = fid >= 0 ? fopen(file, "w") : NULL;
+    if (!f || fclose(f) != 0)
+        exit(3);
+    pid_t pid = fork();
+    if (pid == 0) {
+        close(told[0]);
+        close(alive[1]);
+        held_child(told[1], alive[0]);
+    }
+    if (pid < 0 || cleanup_child(pid) < 0)
+        exit(3);
+    cleanup_unlock();
+    close(told[1]);
+    close(alive[0]);
+    kill(getpid(), SIGINT);
+    char b;
+    ssize_t r;
+    while ((r = read(told[0], &b, 1)) < 0 && errno == EINTR)
+        ;
+    if (r != 1)
+        exit(3);
+    /* The waiter holds the lock and waits for the child. */
+    exit(0);
+}
+
+/* Exits 7, the lock held when locked. */
+static void plain_exit(const char *file, int locked)
+{
+    if (cleanup_start() != 0)
+        exit(3);
+    cleanup_lock();
+    long id = cleanup_file(file);
+    FILE *f = id >= 0 ? fopen(file, "w") : NULL;
+    if (!f || fclose(f) != 0)
+        exit(3);
+    cleanup_drop(id);
+    if (!locked)
+        cleanup_unlock();
+    exit(7);
+}
+
+/* Runs fn(file, arg) in a forked process; its wait status. */
+static int run(void (*fn)(const char *, int), const char *file, int arg)
+{
+    pid_t pid = fork();
+    if (pid == 0)
+        fn(file, arg);
+    int st = -1;
+    while (pid > 0 && waitpid(pid, &st, 0) < 0 && errno == EINTR)
+        ;
+    return st;
+}
+
+int main(void)
+{
+    char dir[256];
+    snprintf(dir, sizeof dir, "%s/rgl-cleanup.XXXXXX", getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp");
+    if (!mkdtemp(dir)) {
+        perror(dir);
+        return 1;
+    }
+    char file[300];
+    snprintf(file, sizeof file, "%s/partial", dir);
+
+    int st = run(exit_during_stop, file, 0);
+    if (!(WIFSIGNALED(st) && WTERMSIG(st) == SIGINT))
+        fprintf(stderr, "exit during a stop: %s %d, expected signal %d\n",
+                WIFSIGNALED(st) ? "signal" : "exit status",
+                WIFSIGNALED(st) ? WTERMSIG(st) : WEXITSTATUS(st), SIGINT);
+    CHECK(WIFSIGNALED(st) && WTERMSIG(st) == SIGINT);
+    CHECK(access(file, F_OK) != 0);
+    unlink(file);
+
+    for (int locked = 0; locked < 2; locked++) {
+        st = run(plain_exit, file, locked);
+        CHECK(WIFEXITED(st) && WEXITSTATUS(st) == 7);
+        unlink(file);
+    }
+    rmdir(dir);
+    return CHECK_RESULT("cleanup");
+}
