@@ -415,7 +415,7 @@ static int run_raygl2pov(const cmp_options *o, const char *r2p, const char *trac
     /* Registered at once: a stop stops it too, and it cleans up its own. */
     cleanup_lock();
     pid_t pid = fork();
-    long id = pid > 0 ? cleanup_child(pid) : -1;
+    long id = pid > 0 ? cleanup_tool(pid) : -1;
     cleanup_unlock();
     if (pid < 0) {
         close(pfd[0]);

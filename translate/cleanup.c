@@ -14,9 +14,15 @@
 
 enum { KIND_FILE = 1, KIND_DIR, KIND_CHILD };
 
+/* How long a child has to end after SIGTERM before SIGKILL, in ms. One of
+ * these tools stops its own children in GRACE_MS, then removes its files:
+ * it gets twice as long, or it could be killed in the middle. */
+enum { GRACE_MS = 10000, TOOL_GRACE_MS = 2 * GRACE_MS };
+
 typedef struct entry {
     int kind; /* 0: free */
     pid_t pid;
+    int grace_ms;
     char *path;
 } entry;
 
@@ -53,7 +59,7 @@ static void stop_set(sigset_t *s)
     sigaddset(s, SIGHUP);
 }
 
-static long add(int kind, const char *path, pid_t pid)
+static long add(int kind, const char *path, pid_t pid, int grace_ms)
 {
     char *copy = NULL;
     if (path) {
@@ -82,6 +88,7 @@ static long add(int kind, const char *path, pid_t pid)
     }
     entries[i].kind = kind;
     entries[i].pid = pid;
+    entries[i].grace_ms = grace_ms;
     entries[i].path = copy;
     cleanup_unlock();
     return (long)i;
@@ -89,17 +96,22 @@ static long add(int kind, const char *path, pid_t pid)
 
 long cleanup_file(const char *path)
 {
-    return add(KIND_FILE, path, 0);
+    return add(KIND_FILE, path, 0, 0);
 }
 
 long cleanup_dir(const char *path)
 {
-    return add(KIND_DIR, path, 0);
+    return add(KIND_DIR, path, 0, 0);
 }
 
 long cleanup_child(pid_t pid)
 {
-    return add(KIND_CHILD, NULL, pid);
+    return add(KIND_CHILD, NULL, pid, GRACE_MS);
+}
+
+long cleanup_tool(pid_t pid)
+{
+    return add(KIND_CHILD, NULL, pid, TOOL_GRACE_MS);
 }
 
 void cleanup_drop(long id)
@@ -114,20 +126,45 @@ void cleanup_drop(long id)
     cleanup_unlock();
 }
 
-/* Waits up to about 10 s for pid, then kills it. A pid another thread
- * reaped already gives ECHILD: it is gone too. */
-static void reap(pid_t pid)
+static long ms_since(const struct timespec *t0)
 {
-    struct timespec tick = {0, 20 * 1000 * 1000};
-    for (int i = 0; i < 500; i++) {
-        pid_t r = waitpid(pid, NULL, WNOHANG);
-        if (r == pid || (r < 0 && errno != EINTR))
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (long)(t.tv_sec - t0->tv_sec) * 1000 + (t.tv_nsec - t0->tv_nsec) / 1000000;
+}
+
+/* SIGTERM to the registered children, then waits for them all at once: one
+ * still there at the end of its grace gets SIGKILL. A pid another thread
+ * reaped already gives ECHILD: it is gone too. Forgets each. */
+static void stop_children(void)
+{
+    for (size_t i = 0; i < nentries; i++)
+        if (entries[i].kind == KIND_CHILD)
+            kill(entries[i].pid, SIGTERM);
+    struct timespec t0, tick = {0, 20 * 1000 * 1000};
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    for (;;) {
+        bool left = false;
+        long ms = ms_since(&t0);
+        for (size_t i = 0; i < nentries; i++) {
+            entry *e = &entries[i];
+            if (e->kind != KIND_CHILD)
+                continue;
+            pid_t r = waitpid(e->pid, NULL, WNOHANG);
+            if (r == 0 && ms >= e->grace_ms) {
+                kill(e->pid, SIGKILL);
+                while (waitpid(e->pid, NULL, 0) < 0 && errno == EINTR)
+                    ;
+            } else if (r == 0 || (r < 0 && errno == EINTR)) {
+                left = true;
+                continue;
+            }
+            e->kind = 0;
+        }
+        if (!left)
             return;
         nanosleep(&tick, NULL);
     }
-    kill(pid, SIGKILL);
-    while (waitpid(pid, NULL, 0) < 0 && errno == EINTR)
-        ;
 }
 
 /* The stop signal once the waiter has it, else 0. */
@@ -137,12 +174,7 @@ static atomic_int stopping;
  * from now on. */
 _Noreturn static void stop(int sig)
 {
-    for (size_t i = 0; i < nentries; i++)
-        if (entries[i].kind == KIND_CHILD)
-            kill(entries[i].pid, SIGTERM);
-    for (size_t i = 0; i < nentries; i++)
-        if (entries[i].kind == KIND_CHILD)
-            reap(entries[i].pid);
+    stop_children();
     for (size_t i = nentries; i-- > 0;)
         if (entries[i].kind == KIND_FILE)
             unlink(entries[i].path);

@@ -6,7 +6,7 @@
  * signals in the calling thread, and so in every thread it creates later,
  * and starts a thread that waits for them. On one, that thread takes the
  * registry's lock for good, stops the registered children (SIGTERM, then
- * SIGKILL after a while) and waits for them, removes the registered files,
+ * SIGKILL after 10 s) and waits for them, removes the registered files,
  * then the registered folders, and ends the process by the signal. An
  * exit (exit(), a return from main) while a stop is under way waits for
  * it, so the process still ends by the signal with nothing left; once an
@@ -33,11 +33,14 @@ void cleanup_unlock(void);
 
 /* Registers a file to remove (cleanup_file), an empty folder to remove
  * after the files (cleanup_dir), or a child to stop and wait for before
- * anything is removed (cleanup_child). The path is copied. Returns an id
- * for cleanup_drop, or -1 when out of memory. Thread-safe. */
+ * anything is removed (cleanup_child; cleanup_tool for a child that is
+ * one of these tools: it has 20 s, time to stop its own children and
+ * remove its own files). The path is copied. Returns an id for
+ * cleanup_drop, or -1 when out of memory. Thread-safe. */
 long cleanup_file(const char *path);
 long cleanup_dir(const char *path);
 long cleanup_child(pid_t pid);
+long cleanup_tool(pid_t pid);
 
 /* Forgets entry id (the file renamed into place or removed, the child
  * waited for); -1 is ignored. Thread-safe. */

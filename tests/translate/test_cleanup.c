@@ -1,5 +1,5 @@
-/* test_cleanup.c: the stop-signal cleanup (translate/cleanup.h) when the
- * process exits on its own.
+/* test_cleanup.c: the stop-signal cleanup (translate/cleanup.h) is not cut
+ * short, by the process's own exit or by the tool that started it.
  *
  * Each case runs in a forked process that stands for one of the tools:
  *
@@ -13,11 +13,21 @@
  *       the file left.)
  *   plain exit          no stop: the exit status is kept, also when the
  *       exiting thread holds the registry's lock.
+ *   nested tools        as raygl-compare runs raygl2pov: an outer tool
+ *       registers an inner one (this program again, "inner") with
+ *       cleanup_tool; the inner registers a file and two children that
+ *       ignore SIGTERM. SIGINT to the outer: the inner kills its children
+ *       after its 10 s, removes its file and ends; the outer must give it
+ *       that time. (It used to wait 10 s too, while the inner waited 10 s
+ *       for each child in turn: the inner was killed, its file left.)
+ *       About 10 s.
  */
 #include <errno.h>
+#include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
 #include <stdlib.h>
+#include <string.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -95,6 +105,74 @@ static void plain_exit(const char *file, int locked)
     exit(7);
 }
 
+/* The inner tool: the file and two children that ignore SIGTERM (blocked,
+ * as cleanup_start left it) registered, a byte to fd ready, then waits
+ * for the stop. */
+static int inner(const char *file, int ready)
+{
+    if (cleanup_start() != 0)
+        return 3;
+    cleanup_lock();
+    long id = cleanup_file(file);
+    FILE *f = id >= 0 ? fopen(file, "w") : NULL;
+    if (!f || fclose(f) != 0)
+        return 3;
+    for (int k = 0; k < 2; k++) {
+        pid_t pid = fork();
+        if (pid == 0) {
+            /* Not holding the test's output open, should it outlive us. */
+            int null = open("/dev/null", O_WRONLY);
+            dup2(null, 1);
+            dup2(null, 2);
+            sleep(60);
+            _exit(0);
+        }
+        if (pid < 0 || cleanup_child(pid) < 0)
+            return 3;
+    }
+    cleanup_unlock();
+    if (write(ready, "r", 1) != 1)
+        return 3;
+    for (;;)
+        pause();
+}
+
+static const char *self;
+
+/* The outer tool: starts the inner as raygl-compare starts raygl2pov, then
+ * stops itself once the inner is ready. */
+static void nested(const char *file, int unused)
+{
+    (void)unused;
+    int ready[2];
+    if (cleanup_start() != 0 || pipe(ready) != 0)
+        exit(3);
+    char fd[16];
+    snprintf(fd, sizeof fd, "%d", ready[1]);
+    cleanup_lock();
+    pid_t pid = fork();
+    long id = pid > 0 ? cleanup_tool(pid) : -1;
+    cleanup_unlock();
+    if (pid == 0) {
+        cleanup_child_signals();
+        close(ready[0]);
+        execl(self, self, "inner", file, fd, (char *)NULL);
+        _exit(3);
+    }
+    if (id < 0)
+        exit(3);
+    close(ready[1]);
+    char b;
+    ssize_t r;
+    while ((r = read(ready[0], &b, 1)) < 0 && errno == EINTR)
+        ;
+    if (r != 1)
+        exit(3);
+    kill(getpid(), SIGINT);
+    for (;;)
+        pause();
+}
+
 /* Runs fn(file, arg) in a forked process; its wait status. */
 static int run(void (*fn)(const char *, int), const char *file, int arg)
 {
@@ -107,8 +185,11 @@ static int run(void (*fn)(const char *, int), const char *file, int arg)
     return st;
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
+    if (argc == 4 && strcmp(argv[1], "inner") == 0)
+        return inner(argv[2], atoi(argv[3]));
+    self = argv[0];
     char dir[256];
     snprintf(dir, sizeof dir, "%s/rgl-cleanup.XXXXXX", getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp");
     if (!mkdtemp(dir)) {
@@ -132,6 +213,11 @@ int main(void)
         CHECK(WIFEXITED(st) && WEXITSTATUS(st) == 7);
         unlink(file);
     }
+
+    st = run(nested, file, 0);
+    CHECK(WIFSIGNALED(st) && WTERMSIG(st) == SIGINT);
+    CHECK(access(file, F_OK) != 0);
+    unlink(file);
     rmdir(dir);
     return CHECK_RESULT("cleanup");
 }
