@@ -838,8 +838,8 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
                     w->vcorner[3 * j + k] = verts[look->flat ? t->provoking : t->v[k]].color;
                 j++;
             }
-            img = nvg ? povtex_colour_grid(&w->tex, &w->grid, w->vcolp, nvg, w->vuv, w->vcorner,
-                                           nleft, w->vuv + 2 * nvg)
+            img = nvg ? povtex_colour_grid(&w->tex, &w->grid, nvg, w->vuv, w->vcorner, nleft,
+                                           w->vuv + 2 * nvg)
                       : povtex_colours(&w->tex, w->vcorner, kept, w->vuv);
             if (img != POVTEX_TOO_LARGE || !nvg)
                 break;

@@ -378,8 +378,8 @@ int povtex_colours(povtex *pt, const float *const *corners, size_t n, float *uv)
     return add_colour_image(pt, px, iw, ih);
 }
 
-int povtex_colour_grid(povtex *pt, const povgrid *g, const float *const *vcol, size_t nv,
-                       float *vuv, const float *const *corners, size_t n, float *uv)
+int povtex_colour_grid(povtex *pt, const povgrid *g, size_t nv, float *vuv,
+                       const float *const *corners, size_t n, float *uv)
 {
     int gw = g->width, gh = g->height;
     size_t bw = 0, bh = 0;
@@ -408,7 +408,7 @@ int povtex_colour_grid(povtex *pt, const povgrid *g, const float *const *vcol, s
         }
         uint8_t *t = px + ((size_t)g->ty[v] * (size_t)iw + (size_t)g->tx[v]) * 4;
         for (int k = 0; k < 3; k++)
-            t[k] = (uint8_t)quantise(vcol[v][k]);
+            t[k] = (uint8_t)(g->qc[v] >> 8 * k);
         vuv[2 * v] = (float)((g->tx[v] + 0.5) / iw);
         vuv[2 * v + 1] = (float)((g->ty[v] + 0.5) / ih);
     }

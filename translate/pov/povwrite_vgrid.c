@@ -18,6 +18,18 @@
 #define NONE UINT32_MAX
 #define COORD_BIAS (1 << 21)
 
+/* Texels taken, as bitmaps of TILE x TILE texels per component, found
+ * through a small hash of their tiles: the walk places neighbours, so it
+ * reads the tile of the texel before nearly every time (the last one is
+ * kept), where a hash per texel took a look-up at every test. */
+#define TILE_SHIFT 5
+#define TILE (1 << TILE_SHIFT)
+
+struct povgrid_tile {
+    uint64_t key; /* tile_key */
+    uint32_t row[TILE];
+};
+
 void povgrid_init(povgrid *g)
 {
     memset(g, 0, sizeof *g);
@@ -28,20 +40,23 @@ void povgrid_finish(povgrid *g)
     tr_free(g->tx);
     tr_free(g->ty);
     tr_free(g->in_grid);
+    tr_free(g->qc);
     tr_free(g->quad);
     tr_free(g->qface);
     tr_free(g->estart);
     tr_free(g->eent);
-    tr_free(g->tkey);
+    tr_free(g->nb);
+    tr_free(g->tiles);
+    tr_free(g->tslot);
     tr_free(g->comp);
     tr_free(g->queue);
     tr_free(g->cbox);
     memset(g, 0, sizeof *g);
 }
 
-static int q8(float x)
+static uint8_t q8(float x)
 {
-    return x > 0 ? (x < 1 ? (int)(x * 255.0f + 0.5f) : 255) : 0; /* NaN: 0 */
+    return (uint8_t)(x > 0 ? (x < 1 ? (int)(x * 255.0f + 0.5f) : 255) : 0); /* NaN: 0 */
 }
 
 static inline uint64_t mix(uint64_t k)
@@ -52,72 +67,83 @@ static inline uint64_t mix(uint64_t k)
     return k;
 }
 
-/* The first two quads on edge u-w, NONE where there are fewer. The edges
- * are listed by their lower vertex, in the order the quads were made: strips
- * number their vertices in order, so the lists are read nearly in order,
- * where a hash of the edge would miss the cache at every look-up. */
-static void edge_quads(const povgrid *g, uint32_t u, uint32_t w, uint32_t out[2])
+static inline uint64_t tile_key(int32_t comp, int32_t x, int32_t y)
 {
-    uint32_t lo = u < w ? u : w, hi = u < w ? w : u;
-    out[0] = out[1] = NONE;
-    for (uint32_t i = g->estart[lo], end = g->estart[lo + 1]; i < end; i++) {
-        if (g->eent[2 * i] != hi)
-            continue;
-        uint32_t q = g->eent[2 * i + 1];
-        if (out[0] == NONE) {
-            out[0] = q;
-        } else if (q != out[0]) {
-            out[1] = q;
-            return;
+    return ((uint64_t)comp << 34 | (uint64_t)((x + COORD_BIAS) >> TILE_SHIFT) << 17 |
+            (uint64_t)((y + COORD_BIAS) >> TILE_SHIFT)) +
+           1;
+}
+
+/* The tile of key: its index, or NONE when it has none yet. */
+static uint32_t tile_find(const povgrid *g, uint64_t key, size_t *slot)
+{
+    size_t i = (size_t)mix(key) & (g->cap_tslot - 1);
+    for (;; i = (i + 1) & (g->cap_tslot - 1)) {
+        uint32_t t = g->tslot[i];
+        if (t == 0 || g->tiles[t - 1].key == key) {
+            *slot = i;
+            return t - 1; /* 0 - 1: NONE */
         }
     }
 }
 
-static uint64_t texel_key(int32_t comp, int32_t x, int32_t y)
+/* The row of texels (comp, *, y) around x, made when `make`; NULL when
+ * there is none (not made), or memory ran out (made). */
+static uint32_t *tile_row(povgrid *g, int32_t comp, int32_t x, int32_t y, bool make)
 {
-    return ((uint64_t)comp << 44 | (uint64_t)(x + COORD_BIAS) << 22 | (uint64_t)(y + COORD_BIAS)) +
-           1;
+    uint64_t key = tile_key(comp, x, y);
+    if (key != g->tlast_key) {
+        size_t slot;
+        uint32_t t = tile_find(g, key, &slot);
+        if (t == NONE) {
+            if (!make)
+                return NULL;
+            if (tr_grow((void **)&g->tiles, &g->cap_tiles, g->ntiles + 1, sizeof *g->tiles) != 0)
+                return NULL;
+            t = (uint32_t)g->ntiles++;
+            memset(&g->tiles[t], 0, sizeof g->tiles[t]);
+            g->tiles[t].key = key;
+            g->tslot[slot] = t + 1;
+            if (g->ntiles * 2 > g->cap_tslot) { /* kept at most half full */
+                uint32_t *ns = tr_realloc(g->tslot, 2 * g->cap_tslot * sizeof *ns);
+                if (!ns)
+                    return NULL;
+                g->tslot = ns;
+                g->cap_tslot *= 2;
+                memset(ns, 0, g->cap_tslot * sizeof *ns);
+                for (size_t i = 0; i < g->ntiles; i++) {
+                    size_t at;
+                    tile_find(g, g->tiles[i].key, &at);
+                    g->tslot[at] = (uint32_t)i + 1;
+                }
+            }
+        }
+        g->tlast_key = key;
+        g->tlast = t;
+    }
+    return &g->tiles[g->tlast].row[(y + COORD_BIAS) & (TILE - 1)];
 }
 
-/* The vertex at a texel: slot of key, found or empty. Blocks of 4x4
- * texels hash to 16 slots in a row (two cache lines): the walk places
- * neighbours, so it reads the same few lines where a hash per texel would
- * miss the cache at every look-up. The table is kept at most a quarter
- * full, so that blocks seldom run into each other. */
-static size_t texel_slot(const povgrid *g, int32_t comp, int32_t x, int32_t y, uint64_t key)
+static int put_vertex(povgrid *g, uint32_t v, int32_t comp, int32_t x, int32_t y)
 {
-    size_t cap = g->ntkey;
-    size_t i = ((size_t)mix(texel_key(comp, x & ~3, y & ~3)) << 4 | (size_t)(y & 3) << 2 |
-                (size_t)(x & 3)) &
-               (cap - 1);
-    while (g->tkey[i] != 0 && g->tkey[i] != key)
-        i = (i + 1) & (cap - 1);
-    return i;
-}
-
-static void put_vertex(povgrid *g, uint32_t v, int32_t comp, int32_t x, int32_t y)
-{
+    uint32_t *row = tile_row(g, comp, x, y, true);
+    if (!row)
+        return -1;
+    *row |= 1u << ((x + COORD_BIAS) & (TILE - 1));
     g->tx[v] = x;
     g->ty[v] = y;
     g->comp[v] = comp;
-    g->tkey[texel_slot(g, comp, x, y, texel_key(comp, x, y))] = texel_key(comp, x, y);
+    return 0;
 }
 
 /* Whether v can go to (x, y) of comp: there already, or unplaced and the
  * texel free. */
-static bool fits(const povgrid *g, uint32_t v, int32_t comp, int32_t x, int32_t y)
+static bool fits(povgrid *g, uint32_t v, int32_t comp, int32_t x, int32_t y)
 {
     if (g->tx[v] != -1 || g->comp[v] != -1)
         return g->comp[v] == comp && g->tx[v] == x && g->ty[v] == y;
-    return g->tkey[texel_slot(g, comp, x, y, texel_key(comp, x, y))] == 0;
-}
-
-static size_t pow2_above(size_t n)
-{
-    size_t c = 16;
-    while (c < n * 2)
-        c *= 2;
-    return c;
+    const uint32_t *row = tile_row(g, comp, x, y, false);
+    return !row || !(*row >> ((x + COORD_BIAS) & (TILE - 1)) & 1);
 }
 
 int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, size_t nv,
@@ -127,12 +153,18 @@ int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, si
     g->ncells = 0;
     if (tr_grow((void **)&g->tx, &g->cap_v, nv ? nv : 1, sizeof *g->tx) != 0 ||
         tr_grow((void **)&g->ty, &g->cap_ty, nv ? nv : 1, sizeof *g->ty) != 0 ||
-        tr_grow((void **)&g->comp, &g->cap_comp, nv ? nv : 1, sizeof *g->comp) != 0)
+        tr_grow((void **)&g->comp, &g->cap_comp, nv ? nv : 1, sizeof *g->comp) != 0 ||
+        tr_grow((void **)&g->qc, &g->cap_qc, nv ? nv : 1, sizeof *g->qc) != 0)
         return -1;
     if (tr_grow((void **)&g->in_grid, &g->cap_f, n ? n : 1, 1) != 0)
         return -1;
-    for (size_t v = 0; v < nv; v++)
+    /* Each vertex's colour as the 8-bit texel it would take, once: the
+     * quads below test four corners each, the image takes them. */
+    for (size_t v = 0; v < nv; v++) {
         g->tx[v] = g->ty[v] = g->comp[v] = -1;
+        const float *c = col[v];
+        g->qc[v] = (uint32_t)q8(c[0]) | (uint32_t)q8(c[1]) << 8 | (uint32_t)q8(c[2]) << 16;
+    }
     memset(g->in_grid, 0, n);
     if (n < 2 || n > (1u << 21))
         return 0;
@@ -142,6 +174,7 @@ int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, si
     if (tr_grow((void **)&g->quad, &g->cap_quad, (n / 2) * 4, sizeof *g->quad) != 0 ||
         tr_grow((void **)&g->qface, &g->cap_qface, n / 2, sizeof *g->qface) != 0)
         return -1;
+    const uint32_t *qc = g->qc;
     for (size_t i = 0; i + 1 < n; i++) {
         const uint32_t *a = faces + stride * i, *b = faces + stride * (i + 1);
         int sa = -1, sb = -1, shared = 0;
@@ -158,8 +191,9 @@ int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, si
             continue;
         uint32_t o1 = a[sa], x = a[(sa + 1) % 3], y = a[(sa + 2) % 3], o2 = b[sb];
         bool flat = true;
-        for (int k = 0; k < 3 && flat; k++) {
-            int d = q8(col[x][k]) + q8(col[y][k]) - q8(col[o1][k]) - q8(col[o2][k]);
+        for (int k = 0; k < 24 && flat; k += 8) {
+            int d = (int)(qc[x] >> k & 255) + (int)(qc[y] >> k & 255) - (int)(qc[o1] >> k & 255) -
+                    (int)(qc[o2] >> k & 255);
             flat = d <= POVTEX_GRID_TOL && d >= -POVTEX_GRID_TOL;
         }
         if (!flat)
@@ -172,9 +206,12 @@ int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, si
     if (nq == 0)
         return 0;
 
-    /* Edges -> quads, listed by the edge's lower vertex (counting sort). */
+    /* Edges -> quads, listed by the edge's lower vertex (counting sort):
+     * strips number their vertices in order, so the lists are read nearly
+     * in order, where a hash of the edge would miss the cache. */
     if (tr_grow((void **)&g->estart, &g->cap_estart, nv + 2, sizeof *g->estart) != 0 ||
-        tr_grow((void **)&g->eent, &g->cap_eent, nq * 8, sizeof *g->eent) != 0)
+        tr_grow((void **)&g->eent, &g->cap_eent, nq * 8, sizeof *g->eent) != 0 ||
+        tr_grow((void **)&g->nb, &g->cap_nb, nq * 8, sizeof *g->nb) != 0)
         return -1;
     memset(g->estart, 0, (nv + 2) * sizeof *g->estart);
     for (size_t q = 0; q < nq; q++)
@@ -190,23 +227,41 @@ int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, si
             uint32_t u = g->quad[4 * q + k], w = g->quad[4 * q + (k + 1) % 4];
             uint32_t at = g->estart[(u < w ? u : w) + 1]++;
             g->eent[2 * at] = u < w ? w : u;
-            g->eent[2 * at + 1] = (uint32_t)q;
+            g->eent[2 * at + 1] = (uint32_t)(4 * q + (size_t)k);
         }
-
-    /* Texels -> vertices; the walk's queue, whose entries' high bit marks
-     * a quad seen (state per quad kept in qface's high bit). */
-    /* Each vertex takes one texel at most; only the slots this call
-     * needs are cleared, not the largest table an earlier mesh grew. */
-    size_t tcap = pow2_above(2 * (nq * 4 < nv ? nq * 4 : nv) + 8);
-    if (tcap > g->cap_tkey) {
-        uint64_t *k = tr_realloc(g->tkey, tcap * sizeof *k);
-        if (!k)
-            return -1;
-        g->tkey = k;
-        g->cap_tkey = tcap;
+    /* Each quad's edge: the first two quads on it (in the order quads were
+     * made; the quad itself is mostly one), all in one pass over the lists. */
+    for (size_t v = 0; v < nv; v++) {
+        uint32_t s = g->estart[v], end = g->estart[v + 1];
+        for (uint32_t i = s; i < end; i++) {
+            uint32_t hi = g->eent[2 * i], first = NONE, second = NONE;
+            for (uint32_t j = s; j < end; j++) {
+                if (g->eent[2 * j] != hi)
+                    continue;
+                uint32_t q = g->eent[2 * j + 1] >> 2;
+                if (first == NONE) {
+                    first = q;
+                } else if (q != first) {
+                    second = q;
+                    break;
+                }
+            }
+            uint32_t qe = g->eent[2 * i + 1];
+            g->nb[2 * qe] = first;
+            g->nb[2 * qe + 1] = second;
+        }
     }
-    g->ntkey = tcap;
-    memset(g->tkey, 0, tcap * sizeof *g->tkey);
+
+    /* The walk's queue; a quad seen is marked in qface's high bit. */
+    g->ntiles = 0;
+    g->tlast_key = 0;
+    if (!g->tslot) {
+        g->tslot = tr_realloc(NULL, 64 * sizeof *g->tslot);
+        if (!g->tslot)
+            return -1;
+        g->cap_tslot = 64;
+    }
+    memset(g->tslot, 0, g->cap_tslot * sizeof *g->tslot);
     if (tr_grow((void **)&g->queue, &g->cap_queue, nq, sizeof *g->queue) != 0)
         return -1;
     const uint32_t SEEN = 1u << 31;
@@ -225,28 +280,25 @@ int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, si
             return -1;
         int32_t *box = g->cbox + 4 * k;
         box[0] = box[1] = 0, box[2] = box[3] = 1;
-        put_vertex(g, c[0], k, 0, 0);
-        put_vertex(g, c[1], k, 1, 0);
-        put_vertex(g, c[2], k, 1, 1);
-        put_vertex(g, c[3], k, 0, 1);
+        if (put_vertex(g, c[0], k, 0, 0) != 0 || put_vertex(g, c[1], k, 1, 0) != 0 ||
+            put_vertex(g, c[2], k, 1, 1) != 0 || put_vertex(g, c[3], k, 0, 1) != 0)
+            return -1;
         g->in_grid[g->qface[q0] & ~SEEN] = g->in_grid[(g->qface[q0] & ~SEEN) + 1] = 1;
         placed += 2;
         size_t head = 0, tail = 0;
         g->queue[tail++] = (uint32_t)q0;
         while (head < tail) {
             uint32_t q = g->queue[head++];
-            const uint32_t *qc = g->quad + 4 * q;
-            int32_t cx = g->tx[qc[0]], cy = g->ty[qc[0]];
+            const uint32_t *qc4 = g->quad + 4 * q;
+            int32_t cx = g->tx[qc4[0]], cy = g->ty[qc4[0]];
             for (int e = 1; e < 4; e++) {
-                cx = g->tx[qc[e]] < cx ? g->tx[qc[e]] : cx;
-                cy = g->ty[qc[e]] < cy ? g->ty[qc[e]] : cy;
+                cx = g->tx[qc4[e]] < cx ? g->tx[qc4[e]] : cx;
+                cy = g->ty[qc4[e]] < cy ? g->ty[qc4[e]] : cy;
             }
             for (int e = 0; e < 4; e++) {
-                uint32_t u = qc[e], w = qc[(e + 1) % 4];
-                uint32_t on_edge[2];
-                edge_quads(g, u, w, on_edge);
+                uint32_t u = qc4[e], w = qc4[(e + 1) % 4];
                 for (int h = 0; h < 2; h++) {
-                    uint32_t q2 = on_edge[h];
+                    uint32_t q2 = g->nb[8 * q + 2 * (uint32_t)e + (uint32_t)h];
                     if (q2 == NONE || (g->qface[q2] & SEEN))
                         continue;
                     g->qface[q2] |= SEEN;
@@ -274,10 +326,9 @@ int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, si
                         puy > COORD_BIAS - 2 || !fits(g, pu, k, pux, puy) ||
                         !fits(g, pw, k, pwx, pwy))
                         continue;
-                    if (g->comp[pu] == -1)
-                        put_vertex(g, pu, k, pux, puy);
-                    if (g->comp[pw] == -1)
-                        put_vertex(g, pw, k, pwx, pwy);
+                    if ((g->comp[pu] == -1 && put_vertex(g, pu, k, pux, puy) != 0) ||
+                        (g->comp[pw] == -1 && put_vertex(g, pw, k, pwx, pwy) != 0))
+                        return -1;
                     int32_t lx = pux < pwx ? pux : pwx, ly = puy < pwy ? puy : pwy;
                     int32_t hx = pux > pwx ? pux : pwx, hy = puy > pwy ? puy : pwy;
                     box[0] = lx < box[0] ? lx : box[0];
