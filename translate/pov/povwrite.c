@@ -468,25 +468,30 @@ static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const
     const float *seen[COLOUR_IMAGE_MIN_COLOURS + 1];
     size_t nseen = 0, last = 0;
     /* Strips share two corners with the face before: their 8-bit values
-     * are taken from it. */
+     * (and alpha, tested) are taken from it. The values sit in 16-bit lanes,
+     * red lowest, so that one test sees a face whose D = B + C - A needs
+     * no clamping (each lane of B + C + 256 - A in 256..511). */
+    const uint64_t lanes = 0x0000010001000100ull, high = 0x0000ff00ff00ff00ull;
     const float *pc[3] = {NULL, NULL, NULL};
-    uint8_t pq[3][3];
+    uint64_t pq[3] = {0, 0, 0};
     for (size_t i = 0; i < nt; i++) {
         const float *c[3];
-        uint8_t q[3][3];
+        uint64_t q[3];
         for (int k = 0; k < 3; k++) {
             c[k] = verts[look->flat ? tris[i].provoking : tris[i].v[k]].color;
-            if (c[k] == pc[0])
-                memcpy(q[k], pq[0], 3);
-            else if (c[k] == pc[1])
-                memcpy(q[k], pq[1], 3);
-            else if (c[k] == pc[2])
-                memcpy(q[k], pq[2], 3);
-            else
-                for (int h = 0; h < 3; h++)
-                    q[k][h] = povtex_quantise(c[k][h]);
-            if (c[k][3] != 1)
-                return false;
+            if (c[k] == pc[0]) {
+                q[k] = pq[0];
+            } else if (c[k] == pc[1]) {
+                q[k] = pq[1];
+            } else if (c[k] == pc[2]) {
+                q[k] = pq[2];
+            } else {
+                if (c[k][3] != 1)
+                    return false;
+                q[k] = (uint64_t)povtex_quantise(c[k][0]) |
+                       (uint64_t)povtex_quantise(c[k][1]) << 16 |
+                       (uint64_t)povtex_quantise(c[k][2]) << 32;
+            }
             if (nseen < want && (nseen == 0 || memcmp(seen[last], c[k], 3 * sizeof *c[k]) != 0)) {
                 size_t j = 0;
                 while (j < nseen && memcmp(seen[j], c[k], 3 * sizeof *c[k]) != 0)
@@ -496,8 +501,14 @@ static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const
                 last = j;
             }
         }
-        if (!look->flat && povtex_colour_origin_q(q) < 0)
-            return false;
+        if (!look->flat && ((q[1] + q[2] + lanes - q[0]) & high) != lanes) {
+            uint8_t q8[3][3];
+            for (int k = 0; k < 3; k++)
+                for (int h = 0; h < 3; h++)
+                    q8[k][h] = (uint8_t)(q[k] >> 16 * h);
+            if (povtex_colour_origin_q(q8) < 0)
+                return false;
+        }
         memcpy(pc, c, sizeof pc);
         memcpy(pq, q, sizeof pq);
     }
