@@ -43,9 +43,8 @@ void povgrid_finish(povgrid *g)
     tr_free(g->qc);
     tr_free(g->quad);
     tr_free(g->qface);
-    tr_free(g->estart);
-    tr_free(g->eent);
-    tr_free(g->nb);
+    tr_free(g->edges);
+    tr_free(g->emore);
     tr_free(g->tiles);
     tr_free(g->tslot);
     tr_free(g->comp);
@@ -146,34 +145,11 @@ static bool fits(povgrid *g, uint32_t v, int32_t comp, int32_t x, int32_t y)
     return !row || !(*row >> ((x + COORD_BIAS) & (TILE - 1)) & 1);
 }
 
-int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, size_t nv,
-                  const float *const *col)
+/* Quads: consecutive faces sharing an edge, in parallelogram colours.
+ * Returns their number. */
+static size_t make_quads(povgrid *g, const uint32_t *faces, size_t stride, size_t n)
 {
-    g->width = g->height = 0;
-    g->ncells = 0;
-    if (tr_grow((void **)&g->tx, &g->cap_v, nv ? nv : 1, sizeof *g->tx) != 0 ||
-        tr_grow((void **)&g->ty, &g->cap_ty, nv ? nv : 1, sizeof *g->ty) != 0 ||
-        tr_grow((void **)&g->comp, &g->cap_comp, nv ? nv : 1, sizeof *g->comp) != 0 ||
-        tr_grow((void **)&g->qc, &g->cap_qc, nv ? nv : 1, sizeof *g->qc) != 0)
-        return -1;
-    if (tr_grow((void **)&g->in_grid, &g->cap_f, n ? n : 1, 1) != 0)
-        return -1;
-    /* Each vertex's colour as the 8-bit texel it would take, once: the
-     * quads below test four corners each, the image takes them. */
-    for (size_t v = 0; v < nv; v++) {
-        g->tx[v] = g->ty[v] = g->comp[v] = -1;
-        const float *c = col[v];
-        g->qc[v] = (uint32_t)q8(c[0]) | (uint32_t)q8(c[1]) << 8 | (uint32_t)q8(c[2]) << 16;
-    }
-    memset(g->in_grid, 0, n);
-    if (n < 2 || n > (1u << 21))
-        return 0;
-
-    /* Quads: consecutive faces sharing an edge, in parallelogram colours. */
     size_t nq = 0;
-    if (tr_grow((void **)&g->quad, &g->cap_quad, (n / 2) * 4, sizeof *g->quad) != 0 ||
-        tr_grow((void **)&g->qface, &g->cap_qface, n / 2, sizeof *g->qface) != 0)
-        return -1;
     const uint32_t *qc = g->qc;
     for (size_t i = 0; i + 1 < n; i++) {
         const uint32_t *a = faces + stride * i, *b = faces + stride * (i + 1);
@@ -203,55 +179,88 @@ int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, si
         g->qface[nq++] = (uint32_t)i;
         i++; /* the pair is taken */
     }
-    if (nq == 0)
+    return nq;
+}
+
+/* The quads on each edge, kept by the edge's lower vertex: a vertex's
+ * first EDGE_INLINE edges in its own bucket (a grid's vertex is the lower
+ * end of two or three), more in a chain. Strips number their vertices in
+ * order, so the buckets are read nearly in order, where a hash of the edge
+ * would miss the cache at every look-up. */
+#define EDGE_INLINE 3
+
+struct povgrid_edges {
+    uint32_t n;    /* edges in the bucket */
+    uint32_t more; /* the chain's first entry in g->emore, or NONE */
+    uint32_t hi[EDGE_INLINE], first[EDGE_INLINE], second[EDGE_INLINE];
+};
+
+struct povgrid_edge_more {
+    uint32_t hi, first, second, next;
+};
+
+/* The first two quads on edge u-w (in the order quads were made), NONE
+ * where there are fewer: out[0], out[1]. */
+static void edge_quads(const povgrid *g, uint32_t u, uint32_t w, uint32_t out[2])
+{
+    uint32_t lo = u < w ? u : w, hi = u < w ? w : u;
+    const struct povgrid_edges *b = &g->edges[lo];
+    for (uint32_t j = 0; j < b->n; j++)
+        if (b->hi[j] == hi) {
+            out[0] = b->first[j];
+            out[1] = b->second[j];
+            return;
+        }
+    for (uint32_t m = b->more; m != NONE; m = g->emore[m].next)
+        if (g->emore[m].hi == hi) {
+            out[0] = g->emore[m].first;
+            out[1] = g->emore[m].second;
+            return;
+        }
+    out[0] = out[1] = NONE;
+}
+
+/* Enters quad q on edge u-w, after every quad made before it (a quad
+ * meets each of its edges once). Returns 0, or -1 when memory ran out. */
+static int add_edge(povgrid *g, uint32_t u, uint32_t w, uint32_t q)
+{
+    uint32_t lo = u < w ? u : w, hi = u < w ? w : u;
+    struct povgrid_edges *b = &g->edges[lo];
+    for (uint32_t j = 0; j < b->n; j++)
+        if (b->hi[j] == hi) {
+            if (b->second[j] == NONE)
+                b->second[j] = q;
+            return 0;
+        }
+    if (b->n < EDGE_INLINE) {
+        uint32_t j = b->n++;
+        b->hi[j] = hi;
+        b->first[j] = q;
+        b->second[j] = NONE;
         return 0;
-
-    /* Edges -> quads, listed by the edge's lower vertex (counting sort):
-     * strips number their vertices in order, so the lists are read nearly
-     * in order, where a hash of the edge would miss the cache. */
-    if (tr_grow((void **)&g->estart, &g->cap_estart, nv + 2, sizeof *g->estart) != 0 ||
-        tr_grow((void **)&g->eent, &g->cap_eent, nq * 8, sizeof *g->eent) != 0 ||
-        tr_grow((void **)&g->nb, &g->cap_nb, nq * 8, sizeof *g->nb) != 0)
-        return -1;
-    memset(g->estart, 0, (nv + 2) * sizeof *g->estart);
-    for (size_t q = 0; q < nq; q++)
-        for (int k = 0; k < 4; k++) {
-            uint32_t u = g->quad[4 * q + k], w = g->quad[4 * q + (k + 1) % 4];
-            g->estart[(u < w ? u : w) + 2]++;
-        }
-    for (size_t v = 2; v < nv + 2; v++)
-        g->estart[v] += g->estart[v - 1];
-    /* estart[v + 1] is v's fill position now, estart[v + 1] its end after */
-    for (size_t q = 0; q < nq; q++)
-        for (int k = 0; k < 4; k++) {
-            uint32_t u = g->quad[4 * q + k], w = g->quad[4 * q + (k + 1) % 4];
-            uint32_t at = g->estart[(u < w ? u : w) + 1]++;
-            g->eent[2 * at] = u < w ? w : u;
-            g->eent[2 * at + 1] = (uint32_t)(4 * q + (size_t)k);
-        }
-    /* Each quad's edge: the first two quads on it (in the order quads were
-     * made; the quad itself is mostly one), all in one pass over the lists. */
-    for (size_t v = 0; v < nv; v++) {
-        uint32_t s = g->estart[v], end = g->estart[v + 1];
-        for (uint32_t i = s; i < end; i++) {
-            uint32_t hi = g->eent[2 * i], first = NONE, second = NONE;
-            for (uint32_t j = s; j < end; j++) {
-                if (g->eent[2 * j] != hi)
-                    continue;
-                uint32_t q = g->eent[2 * j + 1] >> 2;
-                if (first == NONE) {
-                    first = q;
-                } else if (q != first) {
-                    second = q;
-                    break;
-                }
-            }
-            uint32_t qe = g->eent[2 * i + 1];
-            g->nb[2 * qe] = first;
-            g->nb[2 * qe + 1] = second;
-        }
     }
+    for (uint32_t m = b->more; m != NONE; m = g->emore[m].next)
+        if (g->emore[m].hi == hi) {
+            if (g->emore[m].second == NONE)
+                g->emore[m].second = q;
+            return 0;
+        }
+    if (g->nemore >= NONE ||
+        tr_grow((void **)&g->emore, &g->cap_emore, g->nemore + 1, sizeof *g->emore) != 0)
+        return -1;
+    struct povgrid_edge_more *e = &g->emore[g->nemore];
+    e->hi = hi;
+    e->first = q;
+    e->second = NONE;
+    e->next = b->more;
+    b->more = (uint32_t)g->nemore++;
+    return 0;
+}
 
+/* The walk: components of quads laid on texels (*ncomp of them, *placed
+ * faces). Returns 0, or -1 when memory ran out. */
+static int walk(povgrid *g, size_t nq, int32_t *ncomp_out, size_t *placed_out)
+{
     /* The walk's queue; a quad seen is marked in qface's high bit. */
     g->ntiles = 0;
     g->tlast_key = 0;
@@ -297,8 +306,10 @@ int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, si
             }
             for (int e = 0; e < 4; e++) {
                 uint32_t u = qc4[e], w = qc4[(e + 1) % 4];
+                uint32_t on_edge[2];
+                edge_quads(g, u, w, on_edge);
                 for (int h = 0; h < 2; h++) {
-                    uint32_t q2 = g->nb[8 * q + 2 * (uint32_t)e + (uint32_t)h];
+                    uint32_t q2 = on_edge[h];
                     if (q2 == NONE || (g->qface[q2] & SEEN))
                         continue;
                     g->qface[q2] |= SEEN;
@@ -343,6 +354,55 @@ int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, si
             }
         }
     }
+
+    *ncomp_out = ncomp;
+    *placed_out = placed;
+    return 0;
+}
+
+int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, size_t nv,
+                  const float *const *col)
+{
+    g->width = g->height = 0;
+    g->ncells = 0;
+    if (tr_grow((void **)&g->tx, &g->cap_v, nv ? nv : 1, sizeof *g->tx) != 0 ||
+        tr_grow((void **)&g->ty, &g->cap_ty, nv ? nv : 1, sizeof *g->ty) != 0 ||
+        tr_grow((void **)&g->comp, &g->cap_comp, nv ? nv : 1, sizeof *g->comp) != 0 ||
+        tr_grow((void **)&g->qc, &g->cap_qc, nv ? nv : 1, sizeof *g->qc) != 0)
+        return -1;
+    if (tr_grow((void **)&g->in_grid, &g->cap_f, n ? n : 1, 1) != 0)
+        return -1;
+    /* Each vertex's colour as the 8-bit texel it would take, once: the
+     * quads below test four corners each, the image takes them. */
+    for (size_t v = 0; v < nv; v++) {
+        g->tx[v] = g->ty[v] = g->comp[v] = -1;
+        const float *c = col[v];
+        g->qc[v] = (uint32_t)q8(c[0]) | (uint32_t)q8(c[1]) << 8 | (uint32_t)q8(c[2]) << 16;
+    }
+    memset(g->in_grid, 0, n);
+    if (n < 2 || n > (1u << 21))
+        return 0;
+    if (tr_grow((void **)&g->quad, &g->cap_quad, (n / 2) * 4, sizeof *g->quad) != 0 ||
+        tr_grow((void **)&g->qface, &g->cap_qface, n / 2, sizeof *g->qface) != 0)
+        return -1;
+    size_t nq = make_quads(g, faces, stride, n);
+    if (nq == 0)
+        return 0;
+    if (tr_grow((void **)&g->edges, &g->cap_edges, nv, sizeof *g->edges) != 0)
+        return -1;
+    for (size_t v = 0; v < nv; v++) {
+        g->edges[v].n = 0;
+        g->edges[v].more = NONE;
+    }
+    g->nemore = 0;
+    for (size_t q = 0; q < nq; q++)
+        for (int k = 0; k < 4; k++)
+            if (add_edge(g, g->quad[4 * q + k], g->quad[4 * q + (k + 1) % 4], (uint32_t)q) != 0)
+                return -1;
+    int32_t ncomp = 0;
+    size_t placed = 0;
+    if (walk(g, nq, &ncomp, &placed) != 0)
+        return -1;
 
     /* Components in rows (shelves) of about the square's width. */
     double area = 0;

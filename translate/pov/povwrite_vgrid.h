@@ -31,12 +31,10 @@ typedef struct povgrid {
     size_t cap_quad;
     uint32_t *qface;    /* per quad: its first face */
     size_t cap_qface;
-    uint32_t *estart;   /* per vertex: its first entry in eent */
-    size_t cap_estart;
-    uint32_t *eent;     /* edges by their lower vertex: higher vertex, 4 quad + edge */
-    size_t cap_eent;
-    uint32_t *nb;       /* per quad edge: the first two quads on it */
-    size_t cap_nb;
+    struct povgrid_edges *edges; /* per vertex: the edges it is the lower end of */
+    size_t cap_edges;
+    struct povgrid_edge_more *emore; /* edges past a vertex's bucket */
+    size_t nemore, cap_emore;
     struct povgrid_tile *tiles; /* texels taken, by tiles (povwrite_vgrid.c) */
     size_t ntiles, cap_tiles;
     uint32_t *tslot;    /* tile + 1 by hash of its key (open addressing) */
