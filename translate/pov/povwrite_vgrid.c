@@ -45,6 +45,7 @@ void povgrid_finish(povgrid *g)
     tr_free(g->qface);
     tr_free(g->edges);
     tr_free(g->emore);
+    tr_free(g->nb);
     tr_free(g->tiles);
     tr_free(g->tslot);
     tr_free(g->comp);
@@ -192,69 +193,74 @@ static size_t make_quads(povgrid *g, const uint32_t *faces, size_t stride, size_
 struct povgrid_edges {
     uint32_t n;    /* edges in the bucket */
     uint32_t more; /* the chain's first entry in g->emore, or NONE */
-    uint32_t hi[EDGE_INLINE], first[EDGE_INLINE], second[EDGE_INLINE];
+    uint32_t hi[EDGE_INLINE], first[EDGE_INLINE]; /* first: 4 quad + its edge */
 };
 
 struct povgrid_edge_more {
-    uint32_t hi, first, second, next;
+    uint32_t hi, first, next;
 };
 
-/* The first two quads on edge u-w (in the order quads were made), NONE
- * where there are fewer: out[0], out[1]. */
-static void edge_quads(const povgrid *g, uint32_t u, uint32_t w, uint32_t out[2])
-{
-    uint32_t lo = u < w ? u : w, hi = u < w ? w : u;
-    const struct povgrid_edges *b = &g->edges[lo];
-    for (uint32_t j = 0; j < b->n; j++)
-        if (b->hi[j] == hi) {
-            out[0] = b->first[j];
-            out[1] = b->second[j];
-            return;
-        }
-    for (uint32_t m = b->more; m != NONE; m = g->emore[m].next)
-        if (g->emore[m].hi == hi) {
-            out[0] = g->emore[m].first;
-            out[1] = g->emore[m].second;
-            return;
-        }
-    out[0] = out[1] = NONE;
-}
+/* Enters edge k of quad q (its corners u, w), after every quad made
+ * before it: the walk then finds, for each quad edge, the quads on it
+ * among the first two there (in the order quads were made) other than the
+ * quad itself: g->nb[4 q + k] is that one, NONE, or MANY when the quad
+ * comes third or later (then both, through edge_quads). Returns 0, or -1
+ * when memory ran out. */
+#define MANY (UINT32_MAX - 1)
 
-/* Enters quad q on edge u-w, after every quad made before it (a quad
- * meets each of its edges once). Returns 0, or -1 when memory ran out. */
-static int add_edge(povgrid *g, uint32_t u, uint32_t w, uint32_t q)
+static int add_edge(povgrid *g, uint32_t u, uint32_t w, uint32_t q, uint32_t k)
 {
-    uint32_t lo = u < w ? u : w, hi = u < w ? w : u;
+    uint32_t lo = u < w ? u : w, hi = u < w ? w : u, qe = 4 * q + k;
     struct povgrid_edges *b = &g->edges[lo];
-    for (uint32_t j = 0; j < b->n; j++)
-        if (b->hi[j] == hi) {
-            if (b->second[j] == NONE)
-                b->second[j] = q;
-            return 0;
+    uint32_t *first = NULL;
+    for (uint32_t j = 0; j < b->n && !first; j++)
+        if (b->hi[j] == hi)
+            first = &b->first[j];
+    for (uint32_t m = b->more; m != NONE && !first; m = g->emore[m].next)
+        if (g->emore[m].hi == hi)
+            first = &g->emore[m].first;
+    if (first) {
+        uint32_t f = *first;
+        if (g->nb[f] == NONE) { /* the second quad on the edge */
+            g->nb[f] = q;
+            g->nb[qe] = f / 4;
+        } else {
+            g->nb[qe] = MANY;
         }
+        return 0;
+    }
+    g->nb[qe] = NONE;
     if (b->n < EDGE_INLINE) {
         uint32_t j = b->n++;
         b->hi[j] = hi;
-        b->first[j] = q;
-        b->second[j] = NONE;
+        b->first[j] = qe;
         return 0;
     }
-    for (uint32_t m = b->more; m != NONE; m = g->emore[m].next)
-        if (g->emore[m].hi == hi) {
-            if (g->emore[m].second == NONE)
-                g->emore[m].second = q;
-            return 0;
-        }
     if (g->nemore >= NONE ||
         tr_grow((void **)&g->emore, &g->cap_emore, g->nemore + 1, sizeof *g->emore) != 0)
         return -1;
     struct povgrid_edge_more *e = &g->emore[g->nemore];
     e->hi = hi;
-    e->first = q;
-    e->second = NONE;
+    e->first = qe;
     e->next = b->more;
     b->more = (uint32_t)g->nemore++;
     return 0;
+}
+
+/* The first two quads on edge u-w, NONE where there are fewer: out[0],
+ * out[1] (only for edges of three quads or more). */
+static void edge_quads(const povgrid *g, uint32_t u, uint32_t w, uint32_t out[2])
+{
+    uint32_t lo = u < w ? u : w, hi = u < w ? w : u, f = NONE;
+    const struct povgrid_edges *b = &g->edges[lo];
+    for (uint32_t j = 0; j < b->n && f == NONE; j++)
+        if (b->hi[j] == hi)
+            f = b->first[j];
+    for (uint32_t m = b->more; m != NONE && f == NONE; m = g->emore[m].next)
+        if (g->emore[m].hi == hi)
+            f = g->emore[m].first;
+    out[0] = f == NONE ? NONE : f / 4;
+    out[1] = f == NONE ? NONE : g->nb[f];
 }
 
 /* The walk: components of quads laid on texels (*ncomp of them, *placed
@@ -306,8 +312,9 @@ static int walk(povgrid *g, size_t nq, int32_t *ncomp_out, size_t *placed_out)
             }
             for (int e = 0; e < 4; e++) {
                 uint32_t u = qc4[e], w = qc4[(e + 1) % 4];
-                uint32_t on_edge[2];
-                edge_quads(g, u, w, on_edge);
+                uint32_t on_edge[2] = {g->nb[4 * q + (uint32_t)e], NONE};
+                if (on_edge[0] == MANY)
+                    edge_quads(g, u, w, on_edge);
                 for (int h = 0; h < 2; h++) {
                     uint32_t q2 = on_edge[h];
                     if (q2 == NONE || (g->qface[q2] & SEEN))
@@ -388,7 +395,8 @@ int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, si
     size_t nq = make_quads(g, faces, stride, n);
     if (nq == 0)
         return 0;
-    if (tr_grow((void **)&g->edges, &g->cap_edges, nv, sizeof *g->edges) != 0)
+    if (tr_grow((void **)&g->edges, &g->cap_edges, nv, sizeof *g->edges) != 0 ||
+        tr_grow((void **)&g->nb, &g->cap_nb, 4 * nq, sizeof *g->nb) != 0)
         return -1;
     for (size_t v = 0; v < nv; v++) {
         g->edges[v].n = 0;
@@ -397,7 +405,8 @@ int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, si
     g->nemore = 0;
     for (size_t q = 0; q < nq; q++)
         for (int k = 0; k < 4; k++)
-            if (add_edge(g, g->quad[4 * q + k], g->quad[4 * q + (k + 1) % 4], (uint32_t)q) != 0)
+            if (add_edge(g, g->quad[4 * q + k], g->quad[4 * q + (k + 1) % 4], (uint32_t)q,
+                         (uint32_t)k) != 0)
                 return -1;
     int32_t ncomp = 0;
     size_t placed = 0;

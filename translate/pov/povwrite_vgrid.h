@@ -35,6 +35,8 @@ typedef struct povgrid {
     size_t cap_edges;
     struct povgrid_edge_more *emore; /* edges past a vertex's bucket */
     size_t nemore, cap_emore;
+    uint32_t *nb;       /* per quad edge: the other quad on it (povwrite_vgrid.c) */
+    size_t cap_nb;
     struct povgrid_tile *tiles; /* texels taken, by tiles (povwrite_vgrid.c) */
     size_t ntiles, cap_tiles;
     uint32_t *tslot;    /* tile + 1 by hash of its key (open addressing) */
