@@ -55,20 +55,16 @@ typedef struct fcache_entry {
     char text[24]; /* NUMFMT_F32_MAX and more: copied whole */
 } fcache_entry;
 
-/* Formatted indices: a face names vertices written shortly before, so
- * the same few thousand indices come back again and again. Slot = the
- * index's low bits, so a window of 4096 consecutive indices never clash. */
-#define ICACHE_BITS 12
-
-typedef struct icache_entry {
-    uint32_t value;
-    uint32_t len; /* 0: empty */
-    char text[16];
-} icache_entry;
+/* Formatted indices: faces name each vertex several times, so the text of
+ * 0, 1, 2, ... is made once, counting in decimal, and kept for every mesh
+ * and frame: digits from the lowest byte, the length in the highest (so up
+ * to 10^7), for the first ITEXT_MAX indices. */
+#define ITEXT_MAX (1u << 20)
 
 struct povwriter {
     fcache_entry fcache[1u << FCACHE_BITS];
-    icache_entry icache[1u << ICACHE_BITS];
+    uint64_t *itext;    /* text of the indices 0.. (ITEXT_MAX at most) */
+    size_t nitext, cap_itext;
     dedup vtx, col; /* whole vertices (up to 10 words); colours */
     uint32_t *vcol;  /* colour index of each vertex of vtx */
     size_t cap_vcol;
@@ -139,6 +135,7 @@ void povwriter_destroy(povwriter *w)
     tr_free(w->mkeys);
     tr_free(w->mgroup);
     tr_free(w->gtris);
+    tr_free(w->itext);
     tr_free(w->front);
     tr_free(w->eye);
     tr_free(w->vcorner);
@@ -174,19 +171,50 @@ static inline size_t cached_f32(povwriter *w, char *q, float v)
     return n;
 }
 
-/* numfmt_u64 of a 32-bit index through the cache; q has 16 bytes. */
-static inline size_t cached_u32(povwriter *w, char *q, uint32_t v)
+/* The text of indices below n (at most ITEXT_MAX) ready in w->itext.
+ * Returns 0 or -1. */
+static int index_text(povwriter *w, size_t n)
 {
-    icache_entry *e = &w->icache[v & ((1u << ICACHE_BITS) - 1)];
-    if (e->value == v && e->len) {
-        memcpy(q, e->text, sizeof e->text);
-        return e->len;
+    n = n < ITEXT_MAX ? n : ITEXT_MAX;
+    if (n <= w->nitext)
+        return 0;
+    if (tr_grow((void **)&w->itext, &w->cap_itext, n, sizeof *w->itext) != 0)
+        return -1;
+    /* Each number from the one before: the last digit up one, nines
+     * carried (digits from the lowest byte, the length on top). */
+    uint64_t v = w->nitext ? w->itext[w->nitext - 1] : 0;
+    for (size_t i = w->nitext; i < n; i++) {
+        if (i == 0) {
+            v = (uint64_t)1 << 56 | '0';
+        } else {
+            unsigned len = (unsigned)(v >> 56), k = len;
+            while (k > 0 && (v >> 8 * (k - 1) & 0xff) == '9')
+                v -= (uint64_t)9 << 8 * --k; /* '9' -> '0' */
+            if (k > 0) {
+                v += (uint64_t)1 << 8 * (k - 1);
+            } else { /* 99..9 -> 100..0 */
+                v = (uint64_t)(len + 1) << 56 | '1';
+                for (k = 1; k <= len; k++)
+                    v |= (uint64_t)'0' << 8 * k;
+            }
+        }
+        w->itext[i] = v;
     }
-    size_t n = numfmt_u64(q, v);
-    e->value = v;
-    e->len = (uint32_t)n;
-    memcpy(e->text, q, sizeof e->text);
-    return n;
+    w->nitext = n;
+    return 0;
+}
+
+/* Index v at q (8 bytes of room past its length). */
+static inline size_t put_index(const povwriter *w, char *q, size_t v)
+{
+    if (v >= w->nitext)
+        return numfmt_u64(q, v);
+    uint64_t t = w->itext[v];
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
+    t = __builtin_bswap64(t);
+#endif
+    memcpy(q, &t, sizeof t);
+    return (size_t)(w->itext[v] >> 56);
 }
 
 /* pre, then "x,y,z", then post, in one reservation (pre and post are
@@ -947,6 +975,9 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     /* Faces as (v0, v2, v1): see the file comment. Without normal_indices,
      * POV-Ray takes the normals by face_indices. */
     static const int order[3] = {0, 2, 1};
+    size_t nindex = vd->count + ndup > nvg + nleft * 3 ? vd->count + ndup : nvg + nleft * 3;
+    if (index_text(w, nindex) != 0)
+        return -1;
     outbuf_puts(ob, "face_indices{");
     outbuf_u64(ob, kept);
     for (size_t i = 0, j = 0; i < kept; i++) {
@@ -960,19 +991,18 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         *q++ = '<';
         bool own = dup && !w->grid.in_grid[i]; /* its corners' copies */
         for (int k = 0; k < 3; k++) {
-            q += own ? numfmt_u64(q, vd->count + 3 * j + (size_t)order[k])
-                     : cached_u32(w, q, f[order[k]]);
+            q += put_index(w, q, own ? vd->count + 3 * j + (size_t)order[k] : f[order[k]]);
             *q++ = k < 2 ? ',' : '>';
         }
         j += own;
         if (colour_list) {
             if (f[3] == f[4] && f[4] == f[5]) {
                 *q++ = ',';
-                q += numfmt_u64(q, f[3]);
+                q += put_index(w, q, f[3]);
             } else {
                 for (int k = 0; k < 3; k++) {
                     *q++ = ',';
-                    q += numfmt_u64(q, f[3 + order[k]]);
+                    q += put_index(w, q, f[3 + order[k]]);
                 }
             }
         }
@@ -992,8 +1022,8 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
             *q++ = '<';
             bool on_grid = nvg && w->grid.in_grid[i];
             for (int k = 0; k < 3; k++) {
-                q += numfmt_u64(q, on_grid ? w->faces[i * 6 + order[k]]
-                                           : nvg + 3 * j + (size_t)order[k]);
+                q += put_index(w, q, on_grid ? w->faces[i * 6 + order[k]]
+                                             : nvg + 3 * j + (size_t)order[k]);
                 *q++ = k < 2 ? ',' : '>';
             }
             j += !on_grid;
