@@ -717,21 +717,21 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         if (tr_grow((void **)&w->front, &w->cap_front, span, 1) != 0 ||
             tr_grow((void **)&w->eye, &w->cap_eye, span * 3, sizeof *w->eye) != 0)
             return -1;
-        /* Each vertex goes to eye space once, not once per face. */
+        /* Each vertex goes to eye space once, not once per face (2: not
+         * yet), in the same pass as the faces' facing. */
         memset(w->front, 2, span);
-        for (size_t i = 0; i < nt; i++)
+        for (size_t i = 0; i < nt; i++) {
+            const scene_tri *t = &tris[i];
+            double *e[3];
             for (int k = 0; k < 3; k++) {
-                uint32_t v = tris[i].v[k] - lo;
+                uint32_t v = t->v[k] - lo;
+                e[k] = w->eye + 3 * (size_t)v;
                 if (w->front[v] == 2) {
-                    povlight_eye_point(to_eye, verts[tris[i].v[k]].pos, w->eye + 3 * (size_t)v);
+                    povlight_eye_point(to_eye, verts[t->v[k]].pos, e[k]);
                     w->front[v] = 0;
                 }
             }
-        for (size_t i = 0; i < nt; i++) {
-            const scene_tri *t = &tris[i];
-            const double *e = w->eye;
-            if (povlight_front_facing(&w->light, e + 3 * (size_t)(t->v[0] - lo),
-                                      e + 3 * (size_t)(t->v[1] - lo), e + 3 * (size_t)(t->v[2] - lo)))
+            if (povlight_front_facing(&w->light, e[0], e[1], e[2]))
                 for (int k = 0; k < 3; k++)
                     w->front[t->v[k] - lo] = 1;
         }
