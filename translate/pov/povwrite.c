@@ -94,6 +94,8 @@ struct povwriter {
     float mod_kdp[3], mod_tint[3];
     const float **vcorner; /* colour image: 3 corner colours per kept face */
     size_t cap_vcorner;
+    uint32_t *offg; /* colour image on a grid: the kept faces off it */
+    size_t cap_offg;
     float *vuv; /* colour image: uv per grid vertex, then 3 per face off the grid */
     size_t cap_vuv;
     const float **vcolp; /* colour image: each vertex's colour (in its key) */
@@ -139,6 +141,7 @@ void povwriter_destroy(povwriter *w)
     tr_free(w->front);
     tr_free(w->eye);
     tr_free(w->vcorner);
+    tr_free(w->offg);
     tr_free(w->vuv);
     povtex_finish(&w->tex);
     tr_free(w);
@@ -218,9 +221,11 @@ static inline size_t put_index(const povwriter *w, char *q, size_t v)
 }
 
 /* pre, then "x,y,z", then post, in one reservation (pre and post are
- * literals of the given lengths, at most 32 bytes). */
-static inline void put_entry(povwriter *w, outbuf *ob, const char *pre, size_t npre,
-                             const float v[3], const char *post, size_t npost)
+ * literals of the given lengths, at most 32 bytes: always inline, so that
+ * their copies are plain moves). */
+__attribute__((always_inline)) static inline void
+put_entry(povwriter *w, outbuf *ob, const char *pre, size_t npre, const float v[3],
+          const char *post, size_t npost)
 {
     char *p = outbuf_room(ob, 3 * NUMFMT_F32_ROOM + 72);
     if (!p)
@@ -299,7 +304,7 @@ static void put_comment_text(outbuf *ob, const char *s)
 
 static bool finite3f(const float v[3])
 {
-    return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]);
+    return isfinite(v[0]) & isfinite(v[1]) & isfinite(v[2]); /* no branches */
 }
 
 static bool finite3d(const double v[3])
@@ -867,11 +872,14 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         for (;;) {
             if (tr_grow((void **)&w->vcorner, &w->cap_vcorner, nleft * 3 + 1,
                         sizeof *w->vcorner) != 0 ||
+                tr_grow((void **)&w->offg, &w->cap_offg, nleft + 1, sizeof *w->offg) != 0 ||
                 tr_grow((void **)&w->vuv, &w->cap_vuv, nvg * 2 + nleft * 6 + 2, sizeof *w->vuv) != 0)
                 return -1;
             for (size_t i = 0, j = 0; i < kept; i++) {
                 if (nvg && w->grid.in_grid[i])
                     continue;
+                if (nvg)
+                    w->offg[j] = (uint32_t)i;
                 const scene_tri *t = &tris[w->faces[i * 6 + 3]];
                 for (int k = 0; k < 3; k++)
                     w->vcorner[3 * j + k] = verts[look->flat ? t->provoking : t->v[k]].color;
@@ -921,20 +929,21 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     outbuf_u64(ob, vd->count + ndup);
     for (size_t i = 0; i < vd->count; i++)
         PUT_ENTRY(w, ob, ",\n<", (const float *)(const void *)dedup_key(vd, i), ">");
-    for (size_t i = 0; dup && i < kept; i++)
-        for (int k = 0; k < 3 && !w->grid.in_grid[i]; k++)
-            PUT_ENTRY(w, ob, ",\n<", (const float *)(const void *)dedup_key(vd, w->faces[i * 6 + k]),
-                      ">");
+    for (size_t j = 0; j < ndup / 3; j++)
+        for (int k = 0; k < 3; k++)
+            PUT_ENTRY(w, ob, ",\n<",
+                      (const float *)(const void *)dedup_key(vd, w->faces[w->offg[j] * 6 + k]), ">");
     outbuf_puts(ob, "}\n");
     if (normals) {
         outbuf_puts(ob, "normal_vectors{");
         outbuf_u64(ob, vd->count + ndup);
         for (size_t i = 0; i < vd->count; i++)
             PUT_ENTRY(w, ob, ",\n<", (const float *)(const void *)(dedup_key(vd, i) + 3), ">");
-        for (size_t i = 0; dup && i < kept; i++)
-            for (int k = 0; k < 3 && !w->grid.in_grid[i]; k++)
+        for (size_t j = 0; j < ndup / 3; j++)
+            for (int k = 0; k < 3; k++)
                 PUT_ENTRY(w, ob, ",\n<",
-                          (const float *)(const void *)(dedup_key(vd, w->faces[i * 6 + k]) + 3), ">");
+                          (const float *)(const void *)(dedup_key(vd, w->faces[w->offg[j] * 6 + k]) + 3),
+                          ">");
         outbuf_puts(ob, "}\n");
     }
     if (tx) { /* parallel to vertex_vectors: taken by face_indices */
@@ -986,15 +995,21 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         if (!p)
             return -1;
         char *q = p;
-        *q++ = ',';
-        *q++ = '\n';
-        *q++ = '<';
-        bool own = dup && !w->grid.in_grid[i]; /* its corners' copies */
-        for (int k = 0; k < 3; k++) {
-            q += put_index(w, q, own ? vd->count + 3 * j + (size_t)order[k] : f[order[k]]);
-            *q++ = k < 2 ? ',' : '>';
+        memcpy(q, ",\n<", 3);
+        q += 3;
+        size_t c0 = f[order[0]], c1 = f[order[1]], c2 = f[order[2]];
+        if (dup && !w->grid.in_grid[i]) { /* its corners' copies */
+            c0 = vd->count + 3 * j + (size_t)order[0];
+            c1 = vd->count + 3 * j + (size_t)order[1];
+            c2 = vd->count + 3 * j + (size_t)order[2];
+            j++;
         }
-        j += own;
+        q += put_index(w, q, c0);
+        *q++ = ',';
+        q += put_index(w, q, c1);
+        *q++ = ',';
+        q += put_index(w, q, c2);
+        *q++ = '>';
         if (colour_list) {
             if (f[3] == f[4] && f[4] == f[5]) {
                 *q++ = ',';
