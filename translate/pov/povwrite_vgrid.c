@@ -305,14 +305,11 @@ static int walk(povgrid *g, size_t nq, int32_t *ncomp_out, size_t *placed_out)
         while (head < tail) {
             uint32_t q = g->queue[head++];
             const uint32_t *qc4 = g->quad + 4 * q;
-            int32_t cx = g->tx[qc4[0]], cy = g->ty[qc4[0]];
-            for (int e = 1; e < 4; e++) {
-                cx = g->tx[qc4[e]] < cx ? g->tx[qc4[e]] : cx;
-                cy = g->ty[qc4[e]] < cy ? g->ty[qc4[e]] : cy;
-            }
             for (int e = 0; e < 4; e++) {
-                uint32_t u = qc4[e], w = qc4[(e + 1) % 4];
                 uint32_t on_edge[2] = {g->nb[4 * q + (uint32_t)e], NONE};
+                if (on_edge[0] == NONE)
+                    continue;
+                uint32_t u = qc4[e], w = qc4[(e + 1) % 4];
                 if (on_edge[0] == MANY)
                     edge_quads(g, u, w, on_edge);
                 for (int h = 0; h < 2; h++) {
@@ -320,12 +317,16 @@ static int walk(povgrid *g, size_t nq, int32_t *ncomp_out, size_t *placed_out)
                     if (q2 == NONE || (g->qface[q2] & SEEN))
                         continue;
                     g->qface[q2] |= SEEN;
+                    /* Across u-w, away from the quad: each quad placed is
+                     * a unit square, so the corner after w lies on its far
+                     * side of the edge. */
                     int32_t ux = g->tx[u], uy = g->ty[u], wx = g->tx[w], wy = g->ty[w];
+                    uint32_t o = qc4[(e + 2) % 4];
                     int32_t nx = 0, ny = 0;
                     if (ux == wx)
-                        nx = ux == cx ? -1 : 1;
+                        nx = g->tx[o] > ux ? -1 : 1;
                     else
-                        ny = uy == cy ? -1 : 1;
+                        ny = g->ty[o] > uy ? -1 : 1;
                     const uint32_t *d = g->quad + 4 * q2;
                     int iu = 0;
                     while (iu < 4 && d[iu] != u)
