@@ -63,6 +63,8 @@ typedef struct fcache_entry {
 
 struct povwriter {
     fcache_entry fcache[1u << FCACHE_BITS];
+    size_t fcache_hits; /* look-ups that found their number */
+    bool fcache_off;    /* numbers formatted without the cache (put_vectors) */
     uint64_t *itext;    /* text of the indices 0.. (ITEXT_MAX at most) */
     size_t nitext, cap_itext;
     dedup vtx, col; /* whole vertices (up to 10 words); colours */
@@ -160,11 +162,14 @@ _Static_assert(NUMFMT_F32_MAX <= sizeof(((fcache_entry *)0)->text) &&
                "the float cache holds every formatted float");
 static inline size_t cached_f32(povwriter *w, char *q, float v)
 {
+    if (w->fcache_off)
+        return numfmt_f32(q, v);
     uint32_t bits;
     memcpy(&bits, &v, sizeof bits);
     fcache_entry *e = &w->fcache[(bits * 2654435761u) >> (32 - FCACHE_BITS)];
     if (e->bits == bits && e->len) {
         memcpy(q, e->text, sizeof e->text);
+        w->fcache_hits++;
         return e->len;
     }
     size_t n = numfmt_f32(q, v);
@@ -263,6 +268,24 @@ static inline void put_uv(povwriter *w, outbuf *ob, float u, float v)
 
 #define PUT_ENTRY(w, ob, pre, v, post) \
     put_entry((w), (ob), (pre), sizeof(pre) - 1, (v), (post), sizeof(post) - 1)
+
+/* The n vectors of 3 floats at word `off` of the vertex keys (positions,
+ * normals) as ",\n<x,y,z>" entries. A stream whose numbers seldom repeat
+ * (normals turned toward the camera, say) stops going through the float
+ * cache after its first FCACHE_PROBE entries: each look-up there only
+ * missed the cache, and its stores pushed out the numbers that repeat. */
+#define FCACHE_PROBE 256
+
+static void put_vectors(povwriter *w, outbuf *ob, const dedup *vd, size_t n, uint32_t off)
+{
+    size_t hits = w->fcache_hits;
+    for (size_t i = 0; i < n; i++) {
+        if (i == FCACHE_PROBE && (w->fcache_hits - hits) * 16 < 3 * FCACHE_PROBE)
+            w->fcache_off = true; /* under one in sixteen */
+        PUT_ENTRY(w, ob, ",\n<", (const float *)(const void *)(dedup_key(vd, i) + off), ">");
+    }
+    w->fcache_off = false;
+}
 
 static void put_vec3f(outbuf *ob, const float v[3])
 {
@@ -927,8 +950,7 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     size_t ndup = dup ? nleft * 3 : 0;
     outbuf_puts(ob, "mesh2{\nvertex_vectors{");
     outbuf_u64(ob, vd->count + ndup);
-    for (size_t i = 0; i < vd->count; i++)
-        PUT_ENTRY(w, ob, ",\n<", (const float *)(const void *)dedup_key(vd, i), ">");
+    put_vectors(w, ob, vd, vd->count, 0);
     for (size_t j = 0; j < ndup / 3; j++)
         for (int k = 0; k < 3; k++)
             PUT_ENTRY(w, ob, ",\n<",
@@ -937,8 +959,7 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     if (normals) {
         outbuf_puts(ob, "normal_vectors{");
         outbuf_u64(ob, vd->count + ndup);
-        for (size_t i = 0; i < vd->count; i++)
-            PUT_ENTRY(w, ob, ",\n<", (const float *)(const void *)(dedup_key(vd, i) + 3), ">");
+        put_vectors(w, ob, vd, vd->count, 3);
         for (size_t j = 0; j < ndup / 3; j++)
             for (int k = 0; k < 3; k++)
                 PUT_ENTRY(w, ob, ",\n<",
