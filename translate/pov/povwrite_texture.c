@@ -408,7 +408,7 @@ int povtex_colour_grid(povtex *pt, const povgrid *g, size_t nv, float *vuv,
         }
         uint8_t *t = px + ((size_t)g->ty[v] * (size_t)iw + (size_t)g->tx[v]) * 4;
         for (int k = 0; k < 3; k++)
-            t[k] = (uint8_t)(g->qc[v] >> 8 * k);
+            t[k] = (uint8_t)(g->qc[v] >> 16 * k);
         vuv[2 * v] = (float)((g->tx[v] + 0.5) / iw);
         vuv[2 * v + 1] = (float)((g->ty[v] + 0.5) / ih);
     }

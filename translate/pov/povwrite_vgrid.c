@@ -16,6 +16,7 @@
 #include "talloc.h"
 
 #define NONE UINT32_MAX
+#define LANES 0x0000000100010001ull /* one in each of three 16-bit lanes */
 #define COORD_BIAS (1 << 21)
 
 /* Texels taken, as bitmaps of TILE x TILE texels per component, found
@@ -151,7 +152,7 @@ static bool fits(povgrid *g, uint32_t v, int32_t comp, int32_t x, int32_t y)
 static size_t make_quads(povgrid *g, const uint32_t *faces, size_t stride, size_t n)
 {
     size_t nq = 0;
-    const uint32_t *qc = g->qc;
+    const uint64_t *qc = g->qc;
     for (size_t i = 0; i + 1 < n; i++) {
         const uint32_t *a = faces + stride * i, *b = faces + stride * (i + 1);
         int sa = -1, sb = -1, shared = 0;
@@ -166,14 +167,13 @@ static size_t make_quads(povgrid *g, const uint32_t *faces, size_t stride, size_
         }
         if (shared != 2 || sa < 0 || sb < 0)
             continue;
-        uint32_t o1 = a[sa], x = a[(sa + 1) % 3], y = a[(sa + 2) % 3], o2 = b[sb];
-        bool flat = true;
-        for (int k = 0; k < 24 && flat; k += 8) {
-            int d = (int)(qc[x] >> k & 255) + (int)(qc[y] >> k & 255) - (int)(qc[o1] >> k & 255) -
-                    (int)(qc[o2] >> k & 255);
-            flat = d <= POVTEX_GRID_TOL && d >= -POVTEX_GRID_TOL;
-        }
-        if (!flat)
+        static const int next[3] = {1, 2, 0}, after[3] = {2, 0, 1};
+        uint32_t o1 = a[sa], x = a[next[sa]], y = a[after[sa]], o2 = b[sb];
+        /* x + y - o1 - o2 within the slack in every channel: 512 more in
+         * each lane (no borrow), then the lane's bit 15 tells each bound. */
+        uint64_t t = qc[x] + qc[y] + 512 * LANES - qc[o1] - qc[o2];
+        if (((t + (0x8000 - 512 + POVTEX_GRID_TOL) * LANES) & 0x8000 * LANES) != 0x8000 * LANES ||
+            ((t + (0x8000 - 513 - POVTEX_GRID_TOL) * LANES) & 0x8000 * LANES) != 0)
             continue;
         uint32_t *q = g->quad + 4 * nq;
         q[0] = o1, q[1] = x, q[2] = o2, q[3] = y;
@@ -385,7 +385,7 @@ int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, si
     for (size_t v = 0; v < nv; v++) {
         g->tx[v] = g->ty[v] = g->comp[v] = -1;
         const float *c = col[v];
-        g->qc[v] = (uint32_t)q8(c[0]) | (uint32_t)q8(c[1]) << 8 | (uint32_t)q8(c[2]) << 16;
+        g->qc[v] = (uint64_t)q8(c[0]) | (uint64_t)q8(c[1]) << 16 | (uint64_t)q8(c[2]) << 32;
     }
     memset(g->in_grid, 0, n);
     if (n < 2 || n > (1u << 21))

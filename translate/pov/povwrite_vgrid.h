@@ -22,7 +22,7 @@
 
 typedef struct povgrid {
     int32_t *tx, *ty;   /* per vertex: its texel, tx -1 when on no cell */
-    uint32_t *qc;       /* per vertex: its colour as 8-bit RGB, red lowest */
+    uint64_t *qc;       /* per vertex: its 8-bit RGB in 16-bit lanes, red lowest */
     uint8_t *in_grid;   /* per face: on a cell */
     int32_t width, height; /* the grid's texels */
     size_t ncells;      /* faces on cells */
