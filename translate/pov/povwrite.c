@@ -503,6 +503,42 @@ static const float *mesh_tint(povwriter *w, const scene_vertex *verts, const sce
 #define COLOUR_IMAGE_MAX_TRIS (1u << 22)
 #define COLOUR_IMAGE_MIN_COLOURS 16
 
+/* A corner's colour as 8-bit values in 16-bit lanes, red lowest: taken
+ * from the face before when the corner is one of its (strips share two),
+ * else made, the colour opaque. False when it is not. */
+static inline bool corner_q(const float *c, const float *const pc[3], const uint64_t pq[3],
+                            uint64_t *q)
+{
+    if (c == pc[0]) {
+        *q = pq[0];
+    } else if (c == pc[1]) {
+        *q = pq[1];
+    } else if (c == pc[2]) {
+        *q = pq[2];
+    } else {
+        if (c[3] != 1)
+            return false;
+        *q = (uint64_t)povtex_quantise(c[0]) | (uint64_t)povtex_quantise(c[1]) << 16 |
+             (uint64_t)povtex_quantise(c[2]) << 32;
+    }
+    return true;
+}
+
+/* Whether a smooth face's corners make a colour block (povtex_colour_origin_q):
+ * one test sees one whose D = B + C - A needs no clamping (each lane of
+ * B + C + 256 - A in 256..511), the others are tried in full. */
+static inline bool face_q_ok(const uint64_t q[3])
+{
+    const uint64_t lanes = 0x0000010001000100ull, high = 0x0000ff00ff00ff00ull;
+    if (((q[1] + q[2] + lanes - q[0]) & high) == lanes)
+        return true;
+    uint8_t q8[3][3];
+    for (int k = 0; k < 3; k++)
+        for (int h = 0; h < 3; h++)
+            q8[k][h] = (uint8_t)(q[k] >> 16 * h);
+    return povtex_colour_origin_q(q8) >= 0;
+}
+
 static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const scene_tri *tris,
                             size_t nt, const scene_look *look)
 {
@@ -523,31 +559,16 @@ static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const
     size_t want = w->in_proto ? 2 : COLOUR_IMAGE_MIN_COLOURS + 1;
     const float *seen[COLOUR_IMAGE_MIN_COLOURS + 1];
     size_t nseen = 0, last = 0;
-    /* Strips share two corners with the face before: their 8-bit values
-     * (and alpha, tested) are taken from it. The values sit in 16-bit lanes,
-     * red lowest, so that one test sees a face whose D = B + C - A needs
-     * no clamping (each lane of B + C + 256 - A in 256..511). */
-    const uint64_t lanes = 0x0000010001000100ull, high = 0x0000ff00ff00ff00ull;
     const float *pc[3] = {NULL, NULL, NULL};
     uint64_t pq[3] = {0, 0, 0};
-    for (size_t i = 0; i < nt; i++) {
+    size_t i = 0;
+    for (; i < nt && nseen < want; i++) {
         const float *c[3];
         uint64_t q[3];
         for (int k = 0; k < 3; k++) {
             c[k] = verts[look->flat ? tris[i].provoking : tris[i].v[k]].color;
-            if (c[k] == pc[0]) {
-                q[k] = pq[0];
-            } else if (c[k] == pc[1]) {
-                q[k] = pq[1];
-            } else if (c[k] == pc[2]) {
-                q[k] = pq[2];
-            } else {
-                if (c[k][3] != 1)
-                    return false;
-                q[k] = (uint64_t)povtex_quantise(c[k][0]) |
-                       (uint64_t)povtex_quantise(c[k][1]) << 16 |
-                       (uint64_t)povtex_quantise(c[k][2]) << 32;
-            }
+            if (!corner_q(c[k], pc, pq, &q[k]))
+                return false;
             if (nseen < want && (nseen == 0 || memcmp(seen[last], c[k], 3 * sizeof *c[k]) != 0)) {
                 size_t j = 0;
                 while (j < nseen && memcmp(seen[j], c[k], 3 * sizeof *c[k]) != 0)
@@ -557,18 +578,28 @@ static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const
                 last = j;
             }
         }
-        if (!look->flat && ((q[1] + q[2] + lanes - q[0]) & high) != lanes) {
-            uint8_t q8[3][3];
-            for (int k = 0; k < 3; k++)
-                for (int h = 0; h < 3; h++)
-                    q8[k][h] = (uint8_t)(q[k] >> 16 * h);
-            if (povtex_colour_origin_q(q8) < 0)
-                return false;
-        }
+        if (!look->flat && !face_q_ok(q))
+            return false;
         memcpy(pc, c, sizeof pc);
         memcpy(pq, q, sizeof pq);
     }
-    return nseen >= want;
+    if (nseen < want)
+        return false;
+    /* Enough colours seen: the rest is tested alone. */
+    for (; i < nt && look->flat; i++)
+        if (verts[tris[i].provoking].color[3] != 1)
+            return false;
+    for (; i < nt; i++) {
+        const float *c[3] = {verts[tris[i].v[0]].color, verts[tris[i].v[1]].color,
+                             verts[tris[i].v[2]].color};
+        uint64_t q[3];
+        if (!corner_q(c[0], pc, pq, &q[0]) || !corner_q(c[1], pc, pq, &q[1]) ||
+            !corner_q(c[2], pc, pq, &q[2]) || !face_q_ok(q))
+            return false;
+        memcpy(pc, c, sizeof pc);
+        memcpy(pq, q, sizeof pq);
+    }
+    return true;
 }
 
 #define UNSET UINT32_MAX
