@@ -605,6 +605,105 @@ static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const
 #define UNSET UINT32_MAX
 #define BAD (UINT32_MAX - 1)
 
+/* What the vertex keys of a mesh part hold, and how they are made
+ * (write_mesh2_part's pass 1). */
+typedef struct key_spec {
+    const scene_vertex *verts;
+    uint32_t lo; /* the part's first pool vertex (w->remap, w->front, w->eye) */
+    bool normals, flat_normals, turn, key_colour, vcolour;
+    const scene_texture *tx;
+    float uv_scale[2], uv_off[2];
+    const mat4 *to_eye, *inv;
+} key_spec;
+
+/* The colour looked up last: colours repeat in runs. */
+typedef struct colour_memo {
+    uint32_t col[4];
+    uint32_t ci; /* DEDUP_NONE: none yet */
+} colour_memo;
+
+/* c's index in w->col, or DEDUP_NONE when memory ran out. */
+static uint32_t colour_index(povwriter *w, colour_memo *m, const float c[4])
+{
+    uint32_t ck[4];
+    memcpy(ck, c, sizeof ck);
+    if (m->ci == DEDUP_NONE || memcmp(ck, m->col, sizeof ck) != 0) {
+        m->ci = dedup_index(&w->col, ck);
+        memcpy(m->col, ck, sizeof ck);
+    }
+    return m->ci;
+}
+
+/* The vertex index of corner k of face t (BAD for a position that is not
+ * finite), its key made and looked up; a new vertex's colour is indexed
+ * too (vcolour). DEDUP_NONE when memory ran out. Inline: the loop that
+ * calls it runs for every corner. */
+__attribute__((always_inline)) static inline uint32_t
+vertex_index(povwriter *w, const key_spec *ks, colour_memo *memo, const scene_tri *t, int k,
+             bool face_front)
+{
+    const scene_vertex *verts = ks->verts, *sv = &verts[t->v[k]];
+    uint32_t v = t->v[k];
+    if (!finite3f(sv->pos))
+        return BAD;
+    /* The key: position, normal, colour bits as the vertex holds them
+     * (contiguous in scene_vertex). */
+    uint32_t ukey[DEDUP_MAX_WORDS];
+    memcpy(ukey, sv->pos, 3 * sizeof *ukey);
+    uint32_t nk = 3;
+    if (ks->normals) {
+        const float *n = ks->flat_normals ? verts[t->provoking].normal : sv->normal;
+        bool front = ks->flat_normals ? face_front : ks->turn && w->front[v - ks->lo];
+        if (!finite3f(n) || (n[0] == 0 && n[1] == 0 && n[2] == 0)) {
+            static const float up[3] = {0, 0, 1}; /* POV-Ray normalises */
+            memcpy(ukey + 3, up, sizeof up);
+        } else if (front) {
+            float tn[3];
+            povlight_front_normal(&w->light, ks->to_eye, ks->inv,
+                                  w->eye + 3 * (size_t)(v - ks->lo), n, tn);
+            memcpy(ukey + 3, tn, 3 * sizeof *ukey);
+        } else {
+            memcpy(ukey + 3, n, 3 * sizeof *ukey);
+        }
+        if (ks->flat_normals && k == 2) {
+            /* POV-Ray draws a smooth triangle whose three normals are
+             * equal (within about 1e-5) with its geometric normal: one
+             * corner's is tilted by 1e-4, which moves the shading by
+             * under 0.1/255. */
+            float tn[3];
+            memcpy(tn, ukey + 3, sizeof tn);
+            int a = 0;
+            for (int c = 1; c < 3; c++)
+                if (fabsf(tn[c]) < fabsf(tn[a]))
+                    a = c;
+            tn[a] += 1e-4f * sqrtf(tn[0] * tn[0] + tn[1] * tn[1] + tn[2] * tn[2]);
+            memcpy(ukey + 3, tn, sizeof tn);
+        }
+        nk = 6;
+    }
+    if (ks->key_colour)
+        memcpy(ukey + nk, sv->color, 4 * sizeof *ukey);
+    if (ks->tx) {
+        float uv[2];
+        for (int a = 0; a < 2; a++) {
+            uv[a] = sv->tex[a] * ks->uv_scale[a] + ks->uv_off[a];
+            if (!isfinite(uv[a]))
+                uv[a] = 0;
+        }
+        memcpy(ukey + nk + (ks->vcolour ? 4 : 0), uv, sizeof uv);
+    }
+    dedup *vd = &w->vtx;
+    size_t before = vd->count;
+    uint32_t r = dedup_index(vd, ukey);
+    if (r != DEDUP_NONE && ks->vcolour && vd->count != before) { /* a new vertex: its colour */
+        if (tr_grow((void **)&w->vcol, &w->cap_vcol, vd->count, sizeof *w->vcol) != 0 ||
+            (w->vcol[r] = colour_index(w, memo, sv->color)) == DEDUP_NONE)
+            return DEDUP_NONE;
+    }
+    return r;
+}
+
+
 /* A mesh2 of triangles over a vertex pool; to_eye NULL: the vertices are
  * in eye space. Equal vertices (position, and normal and colour where
  * they are written) are written once: one lookup per pool vertex. With
@@ -753,19 +852,8 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
             return -1;
     }
 
-    /* Colours repeat in runs: remember the last one looked up. */
-    uint32_t last_col[4] = {0}, last_ci = DEDUP_NONE;
-#define COLOUR_INDEX(c, out)                                                        \
-    do {                                                                            \
-        uint32_t ck_[4];                                                            \
-        memcpy(ck_, (c), sizeof ck_);                                               \
-        if (last_ci == DEDUP_NONE || memcmp(ck_, last_col, sizeof ck_) != 0) {      \
-            if ((last_ci = dedup_index(&w->col, ck_)) == DEDUP_NONE)                \
-                return -1;                                                          \
-            memcpy(last_col, ck_, sizeof ck_);                                      \
-        }                                                                           \
-        (out) = last_ci;                                                            \
-    } while (0)
+    /* Colours repeat in runs: the last one looked up is remembered. */
+    colour_memo memo = {{0}, DEDUP_NONE};
 
     /* Lit normals on front faces, turned toward the camera where POV-Ray
      * would mirror them (povlight_front_normal). */
@@ -797,11 +885,12 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     }
 
     /* Pass 1: index every used vertex, keep the faces GL would draw. */
+    key_spec ks = {verts, lo, normals, flat_normals, turn, key_colour, vcolour, tx,
+                   {uv_scale[0], uv_scale[1]}, {uv_off[0], uv_off[1]}, to_eye, inv};
     size_t kept = 0;
     for (size_t i = 0; i < nt; i++) {
         const scene_tri *t = &tris[i];
         uint32_t *f = w->faces + kept * 6;
-        bool ok = true;
         bool face_front = false;
         if (flat_normals && turn) {
             const double *e = w->eye;
@@ -809,77 +898,23 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
                                                e + 3 * (size_t)(t->v[1] - lo),
                                                e + 3 * (size_t)(t->v[2] - lo));
         }
-        for (int k = 0; k < 3 && ok; k++) {
-            uint32_t v = t->v[k];
-            uint32_t corner = UNSET;
-            uint32_t *r = flat_normals ? &corner : w->remap + (v - lo);
-            if (*r == UNSET) {
-                const scene_vertex *sv = &verts[v];
-                if (!finite3f(sv->pos)) {
-                    *r = BAD;
-                } else {
-                    /* The key: position, normal, colour bits as the vertex
-                     * holds them (contiguous in scene_vertex). */
-                    uint32_t ukey[DEDUP_MAX_WORDS];
-                    memcpy(ukey, sv->pos, 3 * sizeof *ukey);
-                    uint32_t nk = 3;
-                    if (normals) {
-                        const float *n = flat_normals ? verts[t->provoking].normal : sv->normal;
-                        bool front = flat_normals ? face_front : turn && w->front[v - lo];
-                        if (!finite3f(n) || (n[0] == 0 && n[1] == 0 && n[2] == 0)) {
-                            static const float up[3] = {0, 0, 1}; /* POV-Ray normalises */
-                            memcpy(ukey + 3, up, sizeof up);
-                        } else if (front) {
-                            float tn[3];
-                            povlight_front_normal(&w->light, to_eye, inv, w->eye + 3 * (size_t)(v - lo), n, tn);
-                            memcpy(ukey + 3, tn, 3 * sizeof *ukey);
-                        } else {
-                            memcpy(ukey + 3, n, 3 * sizeof *ukey);
-                        }
-                        if (flat_normals && k == 2) {
-                            /* POV-Ray draws a smooth triangle whose three
-                             * normals are equal (within about 1e-5) with its
-                             * geometric normal: one corner's is tilted by
-                             * 1e-4, which moves the shading by under 0.1/255. */
-                            float tn[3];
-                            memcpy(tn, ukey + 3, sizeof tn);
-                            int a = 0;
-                            for (int c = 1; c < 3; c++)
-                                if (fabsf(tn[c]) < fabsf(tn[a]))
-                                    a = c;
-                            tn[a] += 1e-4f * sqrtf(tn[0] * tn[0] + tn[1] * tn[1] + tn[2] * tn[2]);
-                            memcpy(ukey + 3, tn, sizeof tn);
-                        }
-                        nk = 6;
-                    }
-                    if (key_colour)
-                        memcpy(ukey + nk, sv->color, 4 * sizeof *ukey);
-                    if (tx) {
-                        float uv[2];
-                        for (int a = 0; a < 2; a++) {
-                            uv[a] = sv->tex[a] * uv_scale[a] + uv_off[a];
-                            if (!isfinite(uv[a]))
-                                uv[a] = 0;
-                        }
-                        memcpy(ukey + nk + (vcolour ? 4 : 0), uv, sizeof uv);
-                    }
-                    size_t before = vd->count;
-                    if ((*r = dedup_index(vd, ukey)) == DEDUP_NONE)
-                        return -1;
-                    if (vcolour && vd->count != before) { /* a new vertex: its colour */
-                        if (tr_grow((void **)&w->vcol, &w->cap_vcol, vd->count,
-                                    sizeof *w->vcol) != 0)
-                            return -1;
-                        COLOUR_INDEX(sv->color, w->vcol[*r]);
-                    }
-                }
+        int k = 0;
+        for (; k < 3; k++) {
+            uint32_t r;
+            if (flat_normals) { /* the corner's normal is the face's */
+                r = vertex_index(w, &ks, &memo, t, k, face_front);
+            } else if ((r = w->remap[t->v[k] - lo]) == UNSET) {
+                r = vertex_index(w, &ks, &memo, t, k, false);
+                w->remap[t->v[k] - lo] = r;
             }
-            if (*r == BAD)
-                ok = false;
-            f[k] = *r;
-            f[3 + k] = vcolour && *r != BAD ? w->vcol[*r] : 0;
+            if (r == DEDUP_NONE)
+                return -1;
+            if (r == BAD)
+                break;
+            f[k] = r;
+            f[3 + k] = vcolour ? w->vcol[r] : 0;
         }
-        if (!ok || f[0] == f[1] || f[1] == f[2] || f[0] == f[2])
+        if (k < 3 || f[0] == f[1] || f[1] == f[2] || f[0] == f[2])
             continue;
         /* Zero area (collinear): POV-Ray drops such faces with a warning. */
         const float *a = verts[t->v[0]].pos, *b = verts[t->v[1]].pos, *c = verts[t->v[2]].pos;
@@ -893,19 +928,16 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
             f[3] = (uint32_t)i; /* the face's colours come from its block */
         } else if (look->flat && !(tx && tx->colour_is_texel)) {
             /* One colour, the provoking vertex's. */
-            uint32_t ci;
-            COLOUR_INDEX(verts[t->provoking].color, ci);
+            uint32_t ci = colour_index(w, &memo, verts[t->provoking].color);
+            if (ci == DEDUP_NONE)
+                return -1;
             f[3] = f[4] = f[5] = ci;
         }
         kept++;
     }
     static const float white[4] = {1, 1, 1, 1};
-    if ((tx && tx->colour_is_texel) || vimage) {
-        uint32_t ci;
-        COLOUR_INDEX(white, ci);
-        (void)ci;
-    }
-#undef COLOUR_INDEX
+    if (((tx && tx->colour_is_texel) || vimage) && colour_index(w, &memo, white) == DEDUP_NONE)
+        return -1;
     if (kept == 0)
         return 0;
     bool colour_list = w->col.count > 1;
