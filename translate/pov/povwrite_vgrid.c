@@ -88,44 +88,50 @@ static uint32_t tile_find(const povgrid *g, uint64_t key, size_t *slot)
     }
 }
 
-/* The row of texels (comp, *, y) around x, made when `make`; NULL when
- * there is none (not made), or memory ran out (made). */
-static uint32_t *tile_row(povgrid *g, int32_t comp, int32_t x, int32_t y, bool make)
+/* tile_row when the tile is not the last one found. */
+static uint32_t *tile_row_slow(povgrid *g, uint64_t key, int32_t y, bool make)
 {
-    uint64_t key = tile_key(comp, x, y);
-    if (key != g->tlast_key) {
-        size_t slot;
-        uint32_t t = tile_find(g, key, &slot);
-        if (t == NONE) {
-            if (!make)
+    size_t slot;
+    uint32_t t = tile_find(g, key, &slot);
+    if (t == NONE) {
+        if (!make)
+            return NULL;
+        if (tr_grow((void **)&g->tiles, &g->cap_tiles, g->ntiles + 1, sizeof *g->tiles) != 0)
+            return NULL;
+        t = (uint32_t)g->ntiles++;
+        memset(&g->tiles[t], 0, sizeof g->tiles[t]);
+        g->tiles[t].key = key;
+        g->tslot[slot] = t + 1;
+        if (g->ntiles * 2 > g->cap_tslot) { /* kept at most half full */
+            uint32_t *ns = tr_realloc(g->tslot, 2 * g->cap_tslot * sizeof *ns);
+            if (!ns)
                 return NULL;
-            if (tr_grow((void **)&g->tiles, &g->cap_tiles, g->ntiles + 1, sizeof *g->tiles) != 0)
-                return NULL;
-            t = (uint32_t)g->ntiles++;
-            memset(&g->tiles[t], 0, sizeof g->tiles[t]);
-            g->tiles[t].key = key;
-            g->tslot[slot] = t + 1;
-            if (g->ntiles * 2 > g->cap_tslot) { /* kept at most half full */
-                uint32_t *ns = tr_realloc(g->tslot, 2 * g->cap_tslot * sizeof *ns);
-                if (!ns)
-                    return NULL;
-                g->tslot = ns;
-                g->cap_tslot *= 2;
-                memset(ns, 0, g->cap_tslot * sizeof *ns);
-                for (size_t i = 0; i < g->ntiles; i++) {
-                    size_t at;
-                    tile_find(g, g->tiles[i].key, &at);
-                    g->tslot[at] = (uint32_t)i + 1;
-                }
+            g->tslot = ns;
+            g->cap_tslot *= 2;
+            memset(ns, 0, g->cap_tslot * sizeof *ns);
+            for (size_t i = 0; i < g->ntiles; i++) {
+                size_t at;
+                tile_find(g, g->tiles[i].key, &at);
+                g->tslot[at] = (uint32_t)i + 1;
             }
         }
-        g->tlast_key = key;
-        g->tlast = t;
     }
-    return &g->tiles[g->tlast].row[(y + COORD_BIAS) & (TILE - 1)];
+    g->tlast_key = key;
+    g->tlast = t;
+    return &g->tiles[t].row[(y + COORD_BIAS) & (TILE - 1)];
 }
 
-static int put_vertex(povgrid *g, uint32_t v, int32_t comp, int32_t x, int32_t y)
+/* The row of texels (comp, *, y) around x, made when `make`; NULL when
+ * there is none (not made), or memory ran out (made). */
+static inline uint32_t *tile_row(povgrid *g, int32_t comp, int32_t x, int32_t y, bool make)
+{
+    uint64_t key = tile_key(comp, x, y);
+    if (key == g->tlast_key)
+        return &g->tiles[g->tlast].row[(y + COORD_BIAS) & (TILE - 1)];
+    return tile_row_slow(g, key, y, make);
+}
+
+static inline int put_vertex(povgrid *g, uint32_t v, int32_t comp, int32_t x, int32_t y)
 {
     uint32_t *row = tile_row(g, comp, x, y, true);
     if (!row)
@@ -139,7 +145,7 @@ static int put_vertex(povgrid *g, uint32_t v, int32_t comp, int32_t x, int32_t y
 
 /* Whether v can go to (x, y) of comp: there already, or unplaced and the
  * texel free. */
-static bool fits(povgrid *g, uint32_t v, int32_t comp, int32_t x, int32_t y)
+static inline bool fits(povgrid *g, uint32_t v, int32_t comp, int32_t x, int32_t y)
 {
     if (g->tx[v] != -1 || g->comp[v] != -1)
         return g->comp[v] == comp && g->tx[v] == x && g->ty[v] == y;
