@@ -271,6 +271,66 @@ static void edge_quads(const povgrid *g, uint32_t u, uint32_t w, uint32_t out[2]
 
 /* The walk: components of quads laid on texels (*ncomp of them, *placed
  * faces). Returns 0, or -1 when memory ran out. */
+/* The walk's component being laid: its number, its box, the queue's end,
+ * the faces laid. */
+typedef struct walk_state {
+    int32_t k;
+    int32_t *box;
+    size_t tail, placed;
+} walk_state;
+
+#define SEEN (1u << 31) /* qface: the quad was met by the walk */
+
+/* Lays quad q2, met across edge e of quad qc4 (placed, a unit square), on
+ * the far side of that edge when its other corners fit there: marks it
+ * seen either way, queues it when laid. Returns 0, or -1 when memory ran
+ * out. */
+static inline int place(povgrid *g, walk_state *wk, const uint32_t *qc4, int e, uint32_t q2)
+{
+    g->qface[q2] |= SEEN;
+    uint32_t u = qc4[e], w = qc4[(e + 1) % 4];
+    /* Away from the quad: the corner after w lies on its far side. */
+    int32_t ux = g->tx[u], uy = g->ty[u], wx = g->tx[w], wy = g->ty[w];
+    uint32_t o = qc4[(e + 2) % 4];
+    int32_t nx = 0, ny = 0;
+    if (ux == wx)
+        nx = g->tx[o] > ux ? -1 : 1;
+    else
+        ny = g->ty[o] > uy ? -1 : 1;
+    const uint32_t *d = g->quad + 4 * q2;
+    int iu = 0;
+    while (iu < 4 && d[iu] != u)
+        iu++;
+    if (iu == 4)
+        return 0;
+    uint32_t pu, pw;
+    if (d[(iu + 1) % 4] == w)
+        pu = d[(iu + 3) % 4], pw = d[(iu + 2) % 4];
+    else if (d[(iu + 3) % 4] == w)
+        pu = d[(iu + 1) % 4], pw = d[(iu + 2) % 4];
+    else
+        return 0;
+    int32_t k = wk->k, pux = ux + nx, puy = uy + ny, pwx = wx + nx, pwy = wy + ny;
+    if (pux < -COORD_BIAS + 2 || pux > COORD_BIAS - 2 || puy < -COORD_BIAS + 2 ||
+        puy > COORD_BIAS - 2 || !fits(g, pu, k, pux, puy) || !fits(g, pw, k, pwx, pwy))
+        return 0;
+    if ((g->comp[pu] == -1 && put_vertex(g, pu, k, pux, puy) != 0) ||
+        (g->comp[pw] == -1 && put_vertex(g, pw, k, pwx, pwy) != 0))
+        return -1;
+    int32_t *box = wk->box;
+    int32_t lx = pux < pwx ? pux : pwx, ly = puy < pwy ? puy : pwy;
+    int32_t hx = pux > pwx ? pux : pwx, hy = puy > pwy ? puy : pwy;
+    box[0] = lx < box[0] ? lx : box[0];
+    box[1] = ly < box[1] ? ly : box[1];
+    box[2] = hx > box[2] ? hx : box[2];
+    box[3] = hy > box[3] ? hy : box[3];
+    uint32_t f = g->qface[q2] & ~SEEN;
+    g->in_grid[f] = g->in_grid[f + 1] = 1;
+    wk->placed += 2;
+    g->queue[wk->tail++] = q2;
+    return 0;
+}
+
 static int walk(povgrid *g, size_t nq, int32_t *ncomp_out, size_t *placed_out)
 {
     /* The walk's queue; a quad seen is marked in qface's high bit. */
@@ -285,7 +345,6 @@ static int walk(povgrid *g, size_t nq, int32_t *ncomp_out, size_t *placed_out)
     memset(g->tslot, 0, g->cap_tslot * sizeof *g->tslot);
     if (tr_grow((void **)&g->queue, &g->cap_queue, nq, sizeof *g->queue) != 0)
         return -1;
-    const uint32_t SEEN = 1u << 31;
     int32_t ncomp = 0;
     size_t placed = 0;
     for (size_t q0 = 0; q0 < nq; q0++) {
@@ -301,72 +360,37 @@ static int walk(povgrid *g, size_t nq, int32_t *ncomp_out, size_t *placed_out)
             return -1;
         int32_t *box = g->cbox + 4 * k;
         box[0] = box[1] = 0, box[2] = box[3] = 1;
+        walk_state wk = {k, box, 0, 0};
         if (put_vertex(g, c[0], k, 0, 0) != 0 || put_vertex(g, c[1], k, 1, 0) != 0 ||
             put_vertex(g, c[2], k, 1, 1) != 0 || put_vertex(g, c[3], k, 0, 1) != 0)
             return -1;
         g->in_grid[g->qface[q0] & ~SEEN] = g->in_grid[(g->qface[q0] & ~SEEN) + 1] = 1;
         placed += 2;
-        size_t head = 0, tail = 0;
-        g->queue[tail++] = (uint32_t)q0;
-        while (head < tail) {
+        size_t head = 0;
+        g->queue[wk.tail++] = (uint32_t)q0;
+        while (head < wk.tail) {
             uint32_t q = g->queue[head++];
             const uint32_t *qc4 = g->quad + 4 * q;
             for (int e = 0; e < 4; e++) {
-                uint32_t on_edge[2] = {g->nb[4 * q + (uint32_t)e], NONE};
-                if (on_edge[0] == NONE)
+                uint32_t q2 = g->nb[4 * q + (uint32_t)e];
+                if (q2 == NONE || (q2 != MANY && (g->qface[q2] & SEEN)))
                     continue;
-                uint32_t u = qc4[e], w = qc4[(e + 1) % 4];
-                if (on_edge[0] == MANY)
-                    edge_quads(g, u, w, on_edge);
-                for (int h = 0; h < 2; h++) {
-                    uint32_t q2 = on_edge[h];
-                    if (q2 == NONE || (g->qface[q2] & SEEN))
-                        continue;
-                    g->qface[q2] |= SEEN;
-                    /* Across u-w, away from the quad: each quad placed is
-                     * a unit square, so the corner after w lies on its far
-                     * side of the edge. */
-                    int32_t ux = g->tx[u], uy = g->ty[u], wx = g->tx[w], wy = g->ty[w];
-                    uint32_t o = qc4[(e + 2) % 4];
-                    int32_t nx = 0, ny = 0;
-                    if (ux == wx)
-                        nx = g->tx[o] > ux ? -1 : 1;
-                    else
-                        ny = g->ty[o] > uy ? -1 : 1;
-                    const uint32_t *d = g->quad + 4 * q2;
-                    int iu = 0;
-                    while (iu < 4 && d[iu] != u)
-                        iu++;
-                    if (iu == 4)
-                        continue;
-                    uint32_t pu, pw;
-                    if (d[(iu + 1) % 4] == w)
-                        pu = d[(iu + 3) % 4], pw = d[(iu + 2) % 4];
-                    else if (d[(iu + 3) % 4] == w)
-                        pu = d[(iu + 1) % 4], pw = d[(iu + 2) % 4];
-                    else
-                        continue;
-                    int32_t pux = ux + nx, puy = uy + ny, pwx = wx + nx, pwy = wy + ny;
-                    if (pux < -COORD_BIAS + 2 || pux > COORD_BIAS - 2 || puy < -COORD_BIAS + 2 ||
-                        puy > COORD_BIAS - 2 || !fits(g, pu, k, pux, puy) ||
-                        !fits(g, pw, k, pwx, pwy))
-                        continue;
-                    if ((g->comp[pu] == -1 && put_vertex(g, pu, k, pux, puy) != 0) ||
-                        (g->comp[pw] == -1 && put_vertex(g, pw, k, pwx, pwy) != 0))
-                        return -1;
-                    int32_t lx = pux < pwx ? pux : pwx, ly = puy < pwy ? puy : pwy;
-                    int32_t hx = pux > pwx ? pux : pwx, hy = puy > pwy ? puy : pwy;
-                    box[0] = lx < box[0] ? lx : box[0];
-                    box[1] = ly < box[1] ? ly : box[1];
-                    box[2] = hx > box[2] ? hx : box[2];
-                    box[3] = hy > box[3] ? hy : box[3];
-                    uint32_t f = g->qface[q2] & ~SEEN;
-                    g->in_grid[f] = g->in_grid[f + 1] = 1;
-                    placed += 2;
-                    g->queue[tail++] = q2;
+                int rc;
+                if (q2 != MANY) {
+                    rc = place(g, &wk, qc4, e, q2);
+                } else { /* an edge of three quads or more: the first two on it */
+                    uint32_t on_edge[2];
+                    edge_quads(g, qc4[e], qc4[(e + 1) % 4], on_edge);
+                    rc = 0;
+                    for (int h = 0; h < 2 && rc == 0; h++)
+                        if (on_edge[h] != NONE && !(g->qface[on_edge[h]] & SEEN))
+                            rc = place(g, &wk, qc4, e, on_edge[h]);
                 }
+                if (rc != 0)
+                    return -1;
             }
         }
+        placed += wk.placed;
     }
 
     *ncomp_out = ncomp;
