@@ -206,42 +206,32 @@ struct povgrid_edge_more {
     uint32_t hi, first, next;
 };
 
-/* Enters edge k of quad q (its corners u, w), after every quad made
- * before it: the walk then finds, for each quad edge, the quads on it
- * among the first two there (in the order quads were made) other than the
- * quad itself: g->nb[4 q + k] is that one, NONE, or MANY when the quad
- * comes third or later (then both, through edge_quads). Returns 0, or -1
- * when memory ran out. */
+/* g->nb[4 q + k], for edge k of quad q: the other quad among the first
+ * two on the edge (in the order quads were made), NONE, or MANY when the
+ * quad comes third or later (the walk then takes both, edge_quads). */
 #define MANY (UINT32_MAX - 1)
 
-static int add_edge(povgrid *g, uint32_t u, uint32_t w, uint32_t q, uint32_t k)
+/* Quad edge qe (of quad q) is on the edge whose first quad edge is f. */
+static inline void pair_edge(povgrid *g, uint32_t f, uint32_t qe, uint32_t q)
 {
-    uint32_t lo = u < w ? u : w, hi = u < w ? w : u, qe = 4 * q + k;
-    struct povgrid_edges *b = &g->edges[lo];
-    uint32_t *first = NULL;
-    for (uint32_t j = 0; j < b->n && !first; j++)
-        if (b->hi[j] == hi)
-            first = &b->first[j];
-    for (uint32_t m = b->more; m != NONE && !first; m = g->emore[m].next)
-        if (g->emore[m].hi == hi)
-            first = &g->emore[m].first;
-    if (first) {
-        uint32_t f = *first;
-        if (g->nb[f] == NONE) { /* the second quad on the edge */
-            g->nb[f] = q;
-            g->nb[qe] = f / 4;
-        } else {
-            g->nb[qe] = MANY;
+    if (g->nb[f] == NONE) { /* the second quad on the edge */
+        g->nb[f] = q;
+        g->nb[qe] = f / 4;
+    } else {
+        g->nb[qe] = MANY;
+    }
+}
+
+/* add_edge past the bucket: the edges in the chain. */
+static int add_edge_more(povgrid *g, struct povgrid_edges *b, uint32_t hi, uint32_t qe,
+                         uint32_t q)
+{
+    for (uint32_t m = b->more; m != NONE; m = g->emore[m].next)
+        if (g->emore[m].hi == hi) {
+            pair_edge(g, g->emore[m].first, qe, q);
+            return 0;
         }
-        return 0;
-    }
     g->nb[qe] = NONE;
-    if (b->n < EDGE_INLINE) {
-        uint32_t j = b->n++;
-        b->hi[j] = hi;
-        b->first[j] = qe;
-        return 0;
-    }
     if (g->nemore >= NONE ||
         tr_grow((void **)&g->emore, &g->cap_emore, g->nemore + 1, sizeof *g->emore) != 0)
         return -1;
@@ -251,6 +241,28 @@ static int add_edge(povgrid *g, uint32_t u, uint32_t w, uint32_t q, uint32_t k)
     e->next = b->more;
     b->more = (uint32_t)g->nemore++;
     return 0;
+}
+
+/* Enters edge k of quad q (its corners u, w), after every quad made
+ * before it. Returns 0, or -1 when memory ran out. */
+static inline int add_edge(povgrid *g, uint32_t u, uint32_t w, uint32_t q, uint32_t k)
+{
+    uint32_t lo = u < w ? u : w, hi = u < w ? w : u, qe = 4 * q + k;
+    struct povgrid_edges *b = &g->edges[lo];
+    uint32_t n = b->n;
+    for (uint32_t j = 0; j < n; j++)
+        if (b->hi[j] == hi) {
+            pair_edge(g, b->first[j], qe, q);
+            return 0;
+        }
+    if (n < EDGE_INLINE) {
+        g->nb[qe] = NONE;
+        b->n = n + 1;
+        b->hi[n] = hi;
+        b->first[n] = qe;
+        return 0;
+    }
+    return add_edge_more(g, b, hi, qe, q);
 }
 
 /* The first two quads on edge u-w, NONE where there are fewer: out[0],
@@ -434,11 +446,12 @@ int povgrid_build(povgrid *g, const uint32_t *faces, size_t stride, size_t n, si
         g->edges[v].more = NONE;
     }
     g->nemore = 0;
-    for (size_t q = 0; q < nq; q++)
-        for (int k = 0; k < 4; k++)
-            if (add_edge(g, g->quad[4 * q + k], g->quad[4 * q + (k + 1) % 4], (uint32_t)q,
-                         (uint32_t)k) != 0)
-                return -1;
+    for (uint32_t q = 0; q < nq; q++) {
+        const uint32_t *c = g->quad + 4 * (size_t)q;
+        if (add_edge(g, c[0], c[1], q, 0) != 0 || add_edge(g, c[1], c[2], q, 1) != 0 ||
+            add_edge(g, c[2], c[3], q, 2) != 0 || add_edge(g, c[3], c[0], q, 3) != 0)
+            return -1;
+    }
     int32_t ncomp = 0;
     size_t placed = 0;
     if (walk(g, nq, &ncomp, &placed) != 0)
