@@ -61,8 +61,27 @@ typedef struct fcache_entry {
  * to 10^7), for the first ITEXT_MAX indices. */
 #define ITEXT_MAX (1u << 20)
 
+/* The vertices already indexed, by what a turned vertex's key is made of:
+ * strips send each vertex again in the next strip, and the copy's key
+ * (its normal turned toward the camera, povlight_front_normal) is the
+ * same. Direct-mapped; 2^13 entries reach back more than one strip of
+ * the strips frame. */
+#define VMEMO_BITS 13
+
+typedef struct vmemo_entry {
+    uint32_t raw[10]; /* position, normal, colour bits (scene_vertex) */
+    uint32_t tag;     /* the mesh part's generation << 1 | facing; 0: empty */
+    uint32_t r;       /* its vertex index */
+} vmemo_entry;
+
+_Static_assert(offsetof(scene_vertex, normal) == 3 * sizeof(float) &&
+                   offsetof(scene_vertex, color) == 6 * sizeof(float),
+               "position, normal and colour are contiguous");
+
 struct povwriter {
     fcache_entry fcache[1u << FCACHE_BITS];
+    vmemo_entry *vmemo; /* 2^VMEMO_BITS, made on first use */
+    uint32_t vmemo_gen;
     size_t fcache_hits; /* look-ups that found their number */
     bool fcache_off;    /* numbers formatted without the cache (put_vectors) */
     uint64_t *itext;    /* text of the indices 0.. (ITEXT_MAX at most) */
@@ -140,6 +159,7 @@ void povwriter_destroy(povwriter *w)
     tr_free(w->mgroup);
     tr_free(w->gtris);
     tr_free(w->itext);
+    tr_free(w->vmemo);
     tr_free(w->front);
     tr_free(w->eye);
     tr_free(w->vcorner);
@@ -614,6 +634,7 @@ typedef struct key_spec {
     const scene_texture *tx;
     float uv_scale[2], uv_off[2];
     const mat4 *to_eye, *inv;
+    uint32_t memo_gen; /* w->vmemo's generation for this part; 0: not used */
 } key_spec;
 
 /* The colour looked up last: colours repeat in runs. */
@@ -646,6 +667,28 @@ vertex_index(povwriter *w, const key_spec *ks, colour_memo *memo, const scene_tr
     uint32_t v = t->v[k];
     if (!finite3f(sv->pos))
         return BAD;
+    vmemo_entry *me = NULL;
+    uint32_t tag = 0;
+    if (ks->memo_gen) {
+        /* A copy of a vertex indexed before whose index is still in the
+         * set's window (dedup_index would find it there): that index. */
+        uint64_t h = 0x9e3779b97f4a7c15ull * w->front[v - ks->lo];
+        static const uint64_t mul[5] = {0xc2b2ae3d27d4eb4full, 0x165667b19e3779f9ull,
+                                        0xd6e8feb86659fd93ull, 0xff51afd7ed558ccdull,
+                                        0xc4ceb9fe1a85ec53ull};
+        for (int i = 0; i < 5; i++) {
+            uint64_t x;
+            memcpy(&x, (const char *)sv->pos + 8 * i, sizeof x);
+            h += (x + (uint64_t)i) * mul[i];
+        }
+        h ^= h >> 29;
+        me = &w->vmemo[(h * 0x94d049bb133111ebull) >> (64 - VMEMO_BITS)];
+        tag = ks->memo_gen << 1 | w->front[v - ks->lo];
+        const dedup *vd = &w->vtx;
+        if (me->tag == tag && memcmp(me->raw, sv->pos, sizeof me->raw) == 0 &&
+            me->r >= vd->count - vd->live)
+            return me->r;
+    }
     /* The key: position, normal, colour bits as the vertex holds them
      * (contiguous in scene_vertex). */
     uint32_t ukey[DEDUP_MAX_WORDS];
@@ -699,6 +742,11 @@ vertex_index(povwriter *w, const key_spec *ks, colour_memo *memo, const scene_tr
         if (tr_grow((void **)&w->vcol, &w->cap_vcol, vd->count, sizeof *w->vcol) != 0 ||
             (w->vcol[r] = colour_index(w, memo, sv->color)) == DEDUP_NONE)
             return DEDUP_NONE;
+    }
+    if (me && r != DEDUP_NONE) {
+        memcpy(me->raw, sv->pos, sizeof me->raw);
+        me->tag = tag;
+        me->r = r;
     }
     return r;
 }
@@ -886,7 +934,16 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
 
     /* Pass 1: index every used vertex, keep the faces GL would draw. */
     key_spec ks = {verts, lo, normals, flat_normals, turn, key_colour, vcolour, tx,
-                   {uv_scale[0], uv_scale[1]}, {uv_off[0], uv_off[1]}, to_eye, inv};
+                   {uv_scale[0], uv_scale[1]}, {uv_off[0], uv_off[1]}, to_eye, inv, 0};
+    if (turn && !flat_normals && !tx) { /* turned normals: copies found by vmemo */
+        if (!w->vmemo || w->vmemo_gen >= (1u << 30)) {
+            if (!w->vmemo && !(w->vmemo = tr_realloc(NULL, sizeof *w->vmemo << VMEMO_BITS)))
+                return -1;
+            memset(w->vmemo, 0, sizeof *w->vmemo << VMEMO_BITS);
+            w->vmemo_gen = 0;
+        }
+        ks.memo_gen = ++w->vmemo_gen;
+    }
     size_t kept = 0;
     for (size_t i = 0; i < nt; i++) {
         const scene_tri *t = &tris[i];
