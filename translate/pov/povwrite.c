@@ -752,6 +752,73 @@ vertex_index(povwriter *w, const key_spec *ks, colour_memo *memo, const scene_tr
 }
 
 
+/* Pass 1 of write_mesh2_part: every used vertex indexed, the faces GL
+ * would draw kept in w->faces (3 vertex, 3 colour indices each; with
+ * vimage, the face's place in tris as its first colour). flat: corners
+ * take the face's normal (ks->flat_normals); vcolour: ks->vcolour; both
+ * constants in each inline copy. Returns the faces kept, or SIZE_MAX when
+ * memory ran out. */
+__attribute__((always_inline)) static inline size_t
+index_faces(povwriter *w, const key_spec *ks, colour_memo *memo, const scene_tri *tris, size_t nt,
+            bool flat, bool vcolour, bool vimage, bool flat_colour)
+{
+    const scene_vertex *verts = ks->verts;
+    uint32_t lo = ks->lo;
+    size_t kept = 0;
+    for (size_t i = 0; i < nt; i++) {
+        const scene_tri *t = &tris[i];
+        uint32_t *f = w->faces + kept * 6;
+        bool face_front = false;
+        if (flat && ks->turn) {
+            const double *e = w->eye;
+            face_front = povlight_front_facing(&w->light, e + 3 * (size_t)(t->v[0] - lo),
+                                               e + 3 * (size_t)(t->v[1] - lo),
+                                               e + 3 * (size_t)(t->v[2] - lo));
+        }
+        int k = 0;
+        for (; k < 3; k++) {
+            uint32_t r;
+            if (flat) { /* the corner's normal is the face's */
+                r = vertex_index(w, ks, memo, t, k, face_front);
+            } else if ((r = w->remap[t->v[k] - lo]) == UNSET) {
+                r = vertex_index(w, ks, memo, t, k, false);
+                w->remap[t->v[k] - lo] = r;
+            }
+            if (r == DEDUP_NONE)
+                return SIZE_MAX;
+            if (r == BAD)
+                break;
+            f[k] = r;
+            if (vcolour)
+                f[3 + k] = w->vcol[r];
+        }
+        if (k < 3 || f[0] == f[1] || f[1] == f[2] || f[0] == f[2])
+            continue;
+        /* Zero area (collinear): POV-Ray drops such faces with a warning. */
+        const float *a = verts[t->v[0]].pos, *b = verts[t->v[1]].pos, *c = verts[t->v[2]].pos;
+        double e1[3] = {(double)b[0] - a[0], (double)b[1] - a[1], (double)b[2] - a[2]};
+        double e2[3] = {(double)c[0] - a[0], (double)c[1] - a[1], (double)c[2] - a[2]};
+        double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2],
+               cz = e1[0] * e2[1] - e1[1] * e2[0];
+        if (cx == 0 && cy == 0 && cz == 0)
+            continue;
+        if (vimage) {
+            f[3] = (uint32_t)i; /* the face's colours come from its block */
+            f[4] = f[5] = 0;
+        } else if (flat_colour) {
+            /* One colour, the provoking vertex's. */
+            uint32_t ci = colour_index(w, memo, verts[t->provoking].color);
+            if (ci == DEDUP_NONE)
+                return SIZE_MAX;
+            f[3] = f[4] = f[5] = ci;
+        } else if (!vcolour) {
+            f[3] = f[4] = f[5] = 0;
+        }
+        kept++;
+    }
+    return kept;
+}
+
 /* A mesh2 of triangles over a vertex pool; to_eye NULL: the vertices are
  * in eye space. Equal vertices (position, and normal and colour where
  * they are written) are written once: one lookup per pool vertex. With
@@ -944,54 +1011,18 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         }
         ks.memo_gen = ++w->vmemo_gen;
     }
-    size_t kept = 0;
-    for (size_t i = 0; i < nt; i++) {
-        const scene_tri *t = &tris[i];
-        uint32_t *f = w->faces + kept * 6;
-        bool face_front = false;
-        if (flat_normals && turn) {
-            const double *e = w->eye;
-            face_front = povlight_front_facing(&w->light, e + 3 * (size_t)(t->v[0] - lo),
-                                               e + 3 * (size_t)(t->v[1] - lo),
-                                               e + 3 * (size_t)(t->v[2] - lo));
-        }
-        int k = 0;
-        for (; k < 3; k++) {
-            uint32_t r;
-            if (flat_normals) { /* the corner's normal is the face's */
-                r = vertex_index(w, &ks, &memo, t, k, face_front);
-            } else if ((r = w->remap[t->v[k] - lo]) == UNSET) {
-                r = vertex_index(w, &ks, &memo, t, k, false);
-                w->remap[t->v[k] - lo] = r;
-            }
-            if (r == DEDUP_NONE)
-                return -1;
-            if (r == BAD)
-                break;
-            f[k] = r;
-            f[3 + k] = vcolour ? w->vcol[r] : 0;
-        }
-        if (k < 3 || f[0] == f[1] || f[1] == f[2] || f[0] == f[2])
-            continue;
-        /* Zero area (collinear): POV-Ray drops such faces with a warning. */
-        const float *a = verts[t->v[0]].pos, *b = verts[t->v[1]].pos, *c = verts[t->v[2]].pos;
-        double e1[3] = {(double)b[0] - a[0], (double)b[1] - a[1], (double)b[2] - a[2]};
-        double e2[3] = {(double)c[0] - a[0], (double)c[1] - a[1], (double)c[2] - a[2]};
-        double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2],
-               cz = e1[0] * e2[1] - e1[1] * e2[0];
-        if (cx == 0 && cy == 0 && cz == 0)
-            continue;
-        if (vimage) {
-            f[3] = (uint32_t)i; /* the face's colours come from its block */
-        } else if (look->flat && !(tx && tx->colour_is_texel)) {
-            /* One colour, the provoking vertex's. */
-            uint32_t ci = colour_index(w, &memo, verts[t->provoking].color);
-            if (ci == DEDUP_NONE)
-                return -1;
-            f[3] = f[4] = f[5] = ci;
-        }
-        kept++;
-    }
+    /* One copy of the loop for each kind of corner (faces of their own or
+     * vertices shared, a colour index or none). */
+    bool flat_colour = !vimage && look->flat && !(tx && tx->colour_is_texel);
+    size_t kept;
+    if (flat_normals)
+        kept = vcolour ? index_faces(w, &ks, &memo, tris, nt, true, true, vimage, flat_colour)
+                       : index_faces(w, &ks, &memo, tris, nt, true, false, vimage, flat_colour);
+    else
+        kept = vcolour ? index_faces(w, &ks, &memo, tris, nt, false, true, vimage, flat_colour)
+                       : index_faces(w, &ks, &memo, tris, nt, false, false, vimage, flat_colour);
+    if (kept == SIZE_MAX)
+        return -1;
     static const float white[4] = {1, 1, 1, 1};
     if (((tx && tx->colour_is_texel) || vimage) && colour_index(w, &memo, white) == DEDUP_NONE)
         return -1;
