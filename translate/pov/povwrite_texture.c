@@ -399,8 +399,17 @@ int povtex_colour_grid(povtex *pt, const povgrid *g, size_t nv, float *vuv,
     if (iw < 1 || ih < 1 || iw > PADDED_MAX || ih > PADDED_MAX)
         return POVTEX_TOO_LARGE;
     uint8_t *px = new_image(iw, ih);
-    if (!px)
+    /* Each column's u and each row's v, made once. */
+    float *cu = tr_realloc(NULL, ((size_t)gw + (size_t)gh + 1) * sizeof *cu), *rv = cu + gw;
+    if (!px || !cu) {
+        tr_free(px);
+        tr_free(cu);
         return -1;
+    }
+    for (int x = 0; x < gw; x++)
+        cu[x] = (float)((x + 0.5) / iw);
+    for (int y = 0; y < gh; y++)
+        rv[y] = (float)((y + 0.5) / ih);
     for (size_t v = 0; v < nv; v++) {
         if (g->tx[v] < 0) {
             vuv[2 * v] = vuv[2 * v + 1] = 0;
@@ -409,9 +418,10 @@ int povtex_colour_grid(povtex *pt, const povgrid *g, size_t nv, float *vuv,
         uint8_t *t = px + ((size_t)g->ty[v] * (size_t)iw + (size_t)g->tx[v]) * 4;
         for (int k = 0; k < 3; k++)
             t[k] = (uint8_t)(g->qc[v] >> 16 * k);
-        vuv[2 * v] = (float)((g->tx[v] + 0.5) / iw);
-        vuv[2 * v + 1] = (float)((g->ty[v] + 0.5) / ih);
+        vuv[2 * v] = cu[g->tx[v]];
+        vuv[2 * v + 1] = rv[g->ty[v]];
     }
+    tr_free(cu);
     if (n)
         put_blocks(px, iw, ih, gh, bw, corners, n, uv);
     return add_colour_image(pt, px, iw, ih);
