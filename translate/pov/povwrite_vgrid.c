@@ -161,18 +161,24 @@ static size_t make_quads(povgrid *g, const uint32_t *faces, size_t stride, size_
     const uint64_t *qc = g->qc;
     for (size_t i = 0; i + 1 < n; i++) {
         const uint32_t *a = faces + stride * i, *b = faces + stride * (i + 1);
-        int sa = -1, sb = -1, shared = 0;
-        for (int k = 0; k < 3; k++) {
-            bool in_b = a[k] == b[0] || a[k] == b[1] || a[k] == b[2];
-            bool in_a = b[k] == a[0] || b[k] == a[1] || b[k] == a[2];
-            shared += in_b;
-            if (!in_b)
-                sa = k;
-            if (!in_a)
-                sb = k;
+        int sa = 0, sb = 2;
+        /* Strips: b's first two corners are a's last two (either way). */
+        if (!(((b[0] == a[1] && b[1] == a[2]) || (b[0] == a[2] && b[1] == a[1])) &&
+              b[2] != a[0])) {
+            int shared = 0;
+            sa = sb = -1;
+            for (int k = 0; k < 3; k++) {
+                bool in_b = a[k] == b[0] || a[k] == b[1] || a[k] == b[2];
+                bool in_a = b[k] == a[0] || b[k] == a[1] || b[k] == a[2];
+                shared += in_b;
+                if (!in_b)
+                    sa = k;
+                if (!in_a)
+                    sb = k;
+            }
+            if (shared != 2 || sa < 0 || sb < 0)
+                continue;
         }
-        if (shared != 2 || sa < 0 || sb < 0)
-            continue;
         static const int next[3] = {1, 2, 0}, after[3] = {2, 0, 1};
         uint32_t o1 = a[sa], x = a[next[sa]], y = a[after[sa]], o2 = b[sb];
         /* x + y - o1 - o2 within the slack in every channel: 512 more in
