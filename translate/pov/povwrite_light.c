@@ -509,19 +509,6 @@ bool povlight_modulate_tint(const povlight *pl, const scene_look *look, const fl
 
 /* ---- Normals ----------------------------------------------------------------------------- */
 
-void povlight_eye_point(const mat4 *m, const float p[3], double out[3])
-{
-    double in[4] = {p[0], p[1], p[2], 1}, o[4];
-    if (!m) {
-        for (int k = 0; k < 3; k++)
-            out[k] = p[k];
-        return;
-    }
-    mat4_apply(m, in, o);
-    for (int k = 0; k < 3; k++)
-        out[k] = o[k];
-}
-
 bool povlight_front_facing(const povlight *pl, const double pa[3], const double pb[3],
                            const double pc[3])
 {
