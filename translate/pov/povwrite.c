@@ -55,20 +55,37 @@ typedef struct fcache_entry {
     char text[24]; /* NUMFMT_F32_MAX and more: copied whole */
 } fcache_entry;
 
-/* Formatted indices: a face names vertices written shortly before, so
- * the same few thousand indices come back again and again. Slot = the
- * index's low bits, so a window of 4096 consecutive indices never clash. */
-#define ICACHE_BITS 12
+/* Formatted indices: faces name each vertex several times, so the text of
+ * 0, 1, 2, ... is made once, counting in decimal, and kept for every mesh
+ * and frame: digits from the lowest byte, the length in the highest (so up
+ * to 10^7), for the first ITEXT_MAX indices. */
+#define ITEXT_MAX (1u << 20)
 
-typedef struct icache_entry {
-    uint32_t value;
-    uint32_t len; /* 0: empty */
-    char text[16];
-} icache_entry;
+/* The vertices already indexed, by what a turned vertex's key is made of:
+ * strips send each vertex again in the next strip, and the copy's key
+ * (its normal turned toward the camera, povlight_front_normal) is the
+ * same. Direct-mapped; 2^13 entries reach back more than one strip of
+ * the strips frame. */
+#define VMEMO_BITS 13
+
+typedef struct vmemo_entry {
+    uint32_t raw[10]; /* position, normal, colour bits (scene_vertex) */
+    uint32_t tag;     /* the mesh part's generation << 1 | facing; 0: empty */
+    uint32_t r;       /* its vertex index */
+} vmemo_entry;
+
+_Static_assert(offsetof(scene_vertex, normal) == 3 * sizeof(float) &&
+                   offsetof(scene_vertex, color) == 6 * sizeof(float),
+               "position, normal and colour are contiguous");
 
 struct povwriter {
     fcache_entry fcache[1u << FCACHE_BITS];
-    icache_entry icache[1u << ICACHE_BITS];
+    vmemo_entry *vmemo; /* 2^VMEMO_BITS, made on first use */
+    uint32_t vmemo_gen;
+    size_t fcache_hits; /* look-ups that found their number */
+    bool fcache_off;    /* numbers formatted without the cache (put_vectors) */
+    uint64_t *itext;    /* text of the indices 0.. (ITEXT_MAX at most) */
+    size_t nitext, cap_itext;
     dedup vtx, col; /* whole vertices (up to 10 words); colours */
     uint32_t *vcol;  /* colour index of each vertex of vtx */
     size_t cap_vcol;
@@ -98,6 +115,8 @@ struct povwriter {
     float mod_kdp[3], mod_tint[3];
     const float **vcorner; /* colour image: 3 corner colours per kept face */
     size_t cap_vcorner;
+    uint32_t *offg; /* colour image on a grid: the kept faces off it */
+    size_t cap_offg;
     float *vuv; /* colour image: uv per grid vertex, then 3 per face off the grid */
     size_t cap_vuv;
     const float **vcolp; /* colour image: each vertex's colour (in its key) */
@@ -139,9 +158,12 @@ void povwriter_destroy(povwriter *w)
     tr_free(w->mkeys);
     tr_free(w->mgroup);
     tr_free(w->gtris);
+    tr_free(w->itext);
+    tr_free(w->vmemo);
     tr_free(w->front);
     tr_free(w->eye);
     tr_free(w->vcorner);
+    tr_free(w->offg);
     tr_free(w->vuv);
     povtex_finish(&w->tex);
     tr_free(w);
@@ -160,11 +182,14 @@ _Static_assert(NUMFMT_F32_MAX <= sizeof(((fcache_entry *)0)->text) &&
                "the float cache holds every formatted float");
 static inline size_t cached_f32(povwriter *w, char *q, float v)
 {
+    if (w->fcache_off)
+        return numfmt_f32(q, v);
     uint32_t bits;
     memcpy(&bits, &v, sizeof bits);
     fcache_entry *e = &w->fcache[(bits * 2654435761u) >> (32 - FCACHE_BITS)];
     if (e->bits == bits && e->len) {
         memcpy(q, e->text, sizeof e->text);
+        w->fcache_hits++;
         return e->len;
     }
     size_t n = numfmt_f32(q, v);
@@ -174,25 +199,58 @@ static inline size_t cached_f32(povwriter *w, char *q, float v)
     return n;
 }
 
-/* numfmt_u64 of a 32-bit index through the cache; q has 16 bytes. */
-static inline size_t cached_u32(povwriter *w, char *q, uint32_t v)
+/* The text of indices below n (at most ITEXT_MAX) ready in w->itext.
+ * Returns 0 or -1. */
+static int index_text(povwriter *w, size_t n)
 {
-    icache_entry *e = &w->icache[v & ((1u << ICACHE_BITS) - 1)];
-    if (e->value == v && e->len) {
-        memcpy(q, e->text, sizeof e->text);
-        return e->len;
+    n = n < ITEXT_MAX ? n : ITEXT_MAX;
+    if (n <= w->nitext)
+        return 0;
+    if (tr_grow((void **)&w->itext, &w->cap_itext, n, sizeof *w->itext) != 0)
+        return -1;
+    /* Each number from the one before: the last digit up one, nines
+     * carried (digits from the lowest byte, the length on top). */
+    uint64_t v = w->nitext ? w->itext[w->nitext - 1] : 0;
+    for (size_t i = w->nitext; i < n; i++) {
+        if (i == 0) {
+            v = (uint64_t)1 << 56 | '0';
+        } else {
+            unsigned len = (unsigned)(v >> 56), k = len;
+            while (k > 0 && (v >> 8 * (k - 1) & 0xff) == '9')
+                v -= (uint64_t)9 << 8 * --k; /* '9' -> '0' */
+            if (k > 0) {
+                v += (uint64_t)1 << 8 * (k - 1);
+            } else { /* 99..9 -> 100..0 */
+                v = (uint64_t)(len + 1) << 56 | '1';
+                for (k = 1; k <= len; k++)
+                    v |= (uint64_t)'0' << 8 * k;
+            }
+        }
+        w->itext[i] = v;
     }
-    size_t n = numfmt_u64(q, v);
-    e->value = v;
-    e->len = (uint32_t)n;
-    memcpy(e->text, q, sizeof e->text);
-    return n;
+    w->nitext = n;
+    return 0;
+}
+
+/* Index v at q (8 bytes of room past its length). */
+static inline size_t put_index(const povwriter *w, char *q, size_t v)
+{
+    if (v >= w->nitext)
+        return numfmt_u64(q, v);
+    uint64_t t = w->itext[v];
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
+    t = __builtin_bswap64(t);
+#endif
+    memcpy(q, &t, sizeof t);
+    return (size_t)(w->itext[v] >> 56);
 }
 
 /* pre, then "x,y,z", then post, in one reservation (pre and post are
- * literals of the given lengths, at most 32 bytes). */
-static inline void put_entry(povwriter *w, outbuf *ob, const char *pre, size_t npre,
-                             const float v[3], const char *post, size_t npost)
+ * literals of the given lengths, at most 32 bytes: always inline, so that
+ * their copies are plain moves). */
+__attribute__((always_inline)) static inline void
+put_entry(povwriter *w, outbuf *ob, const char *pre, size_t npre, const float v[3],
+          const char *post, size_t npost)
 {
     char *p = outbuf_room(ob, 3 * NUMFMT_F32_ROOM + 72);
     if (!p)
@@ -230,6 +288,24 @@ static inline void put_uv(povwriter *w, outbuf *ob, float u, float v)
 
 #define PUT_ENTRY(w, ob, pre, v, post) \
     put_entry((w), (ob), (pre), sizeof(pre) - 1, (v), (post), sizeof(post) - 1)
+
+/* The n vectors of 3 floats at word `off` of the vertex keys (positions,
+ * normals) as ",\n<x,y,z>" entries. A stream whose numbers seldom repeat
+ * (normals turned toward the camera, say) stops going through the float
+ * cache after its first FCACHE_PROBE entries: each look-up there only
+ * missed the cache, and its stores pushed out the numbers that repeat. */
+#define FCACHE_PROBE 256
+
+static void put_vectors(povwriter *w, outbuf *ob, const dedup *vd, size_t n, uint32_t off)
+{
+    size_t hits = w->fcache_hits;
+    for (size_t i = 0; i < n; i++) {
+        if (i == FCACHE_PROBE && (w->fcache_hits - hits) * 16 < 3 * FCACHE_PROBE)
+            w->fcache_off = true; /* under one in sixteen */
+        PUT_ENTRY(w, ob, ",\n<", (const float *)(const void *)(dedup_key(vd, i) + off), ">");
+    }
+    w->fcache_off = false;
+}
 
 static void put_vec3f(outbuf *ob, const float v[3])
 {
@@ -271,7 +347,7 @@ static void put_comment_text(outbuf *ob, const char *s)
 
 static bool finite3f(const float v[3])
 {
-    return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]);
+    return isfinite(v[0]) & isfinite(v[1]) & isfinite(v[2]); /* no branches */
 }
 
 static bool finite3d(const double v[3])
@@ -447,6 +523,42 @@ static const float *mesh_tint(povwriter *w, const scene_vertex *verts, const sce
 #define COLOUR_IMAGE_MAX_TRIS (1u << 22)
 #define COLOUR_IMAGE_MIN_COLOURS 16
 
+/* A corner's colour as 8-bit values in 16-bit lanes, red lowest: taken
+ * from the face before when the corner is one of its (strips share two),
+ * else made, the colour opaque. False when it is not. */
+static inline bool corner_q(const float *c, const float *const pc[3], const uint64_t pq[3],
+                            uint64_t *q)
+{
+    if (c == pc[0]) {
+        *q = pq[0];
+    } else if (c == pc[1]) {
+        *q = pq[1];
+    } else if (c == pc[2]) {
+        *q = pq[2];
+    } else {
+        if (c[3] != 1)
+            return false;
+        *q = (uint64_t)povtex_quantise(c[0]) | (uint64_t)povtex_quantise(c[1]) << 16 |
+             (uint64_t)povtex_quantise(c[2]) << 32;
+    }
+    return true;
+}
+
+/* Whether a smooth face's corners make a colour block (povtex_colour_origin_q):
+ * one test sees one whose D = B + C - A needs no clamping (each lane of
+ * B + C + 256 - A in 256..511), the others are tried in full. */
+static inline bool face_q_ok(const uint64_t q[3])
+{
+    const uint64_t lanes = 0x0000010001000100ull, high = 0x0000ff00ff00ff00ull;
+    if (((q[1] + q[2] + lanes - q[0]) & high) == lanes)
+        return true;
+    uint8_t q8[3][3];
+    for (int k = 0; k < 3; k++)
+        for (int h = 0; h < 3; h++)
+            q8[k][h] = (uint8_t)(q[k] >> 16 * h);
+    return povtex_colour_origin_q(q8) >= 0;
+}
+
 static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const scene_tri *tris,
                             size_t nt, const scene_look *look)
 {
@@ -467,25 +579,15 @@ static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const
     size_t want = w->in_proto ? 2 : COLOUR_IMAGE_MIN_COLOURS + 1;
     const float *seen[COLOUR_IMAGE_MIN_COLOURS + 1];
     size_t nseen = 0, last = 0;
-    /* Strips share two corners with the face before: their 8-bit values
-     * are taken from it. */
     const float *pc[3] = {NULL, NULL, NULL};
-    uint8_t pq[3][3];
-    for (size_t i = 0; i < nt; i++) {
+    uint64_t pq[3] = {0, 0, 0};
+    size_t i = 0;
+    for (; i < nt && nseen < want; i++) {
         const float *c[3];
-        uint8_t q[3][3];
+        uint64_t q[3];
         for (int k = 0; k < 3; k++) {
             c[k] = verts[look->flat ? tris[i].provoking : tris[i].v[k]].color;
-            if (c[k] == pc[0])
-                memcpy(q[k], pq[0], 3);
-            else if (c[k] == pc[1])
-                memcpy(q[k], pq[1], 3);
-            else if (c[k] == pc[2])
-                memcpy(q[k], pq[2], 3);
-            else
-                for (int h = 0; h < 3; h++)
-                    q[k][h] = povtex_quantise(c[k][h]);
-            if (c[k][3] != 1)
+            if (!corner_q(c[k], pc, pq, &q[k]))
                 return false;
             if (nseen < want && (nseen == 0 || memcmp(seen[last], c[k], 3 * sizeof *c[k]) != 0)) {
                 size_t j = 0;
@@ -496,16 +598,226 @@ static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const
                 last = j;
             }
         }
-        if (!look->flat && povtex_colour_origin_q(q) < 0)
+        if (!look->flat && !face_q_ok(q))
             return false;
         memcpy(pc, c, sizeof pc);
         memcpy(pq, q, sizeof pq);
     }
-    return nseen >= want;
+    if (nseen < want)
+        return false;
+    /* Enough colours seen: the rest is tested alone. */
+    for (; i < nt && look->flat; i++)
+        if (verts[tris[i].provoking].color[3] != 1)
+            return false;
+    for (; i < nt; i++) {
+        const float *c[3] = {verts[tris[i].v[0]].color, verts[tris[i].v[1]].color,
+                             verts[tris[i].v[2]].color};
+        uint64_t q[3];
+        if (!corner_q(c[0], pc, pq, &q[0]) || !corner_q(c[1], pc, pq, &q[1]) ||
+            !corner_q(c[2], pc, pq, &q[2]) || !face_q_ok(q))
+            return false;
+        memcpy(pc, c, sizeof pc);
+        memcpy(pq, q, sizeof pq);
+    }
+    return true;
 }
 
 #define UNSET UINT32_MAX
 #define BAD (UINT32_MAX - 1)
+
+/* What the vertex keys of a mesh part hold, and how they are made
+ * (write_mesh2_part's pass 1). */
+typedef struct key_spec {
+    const scene_vertex *verts;
+    uint32_t lo; /* the part's first pool vertex (w->remap, w->front, w->eye) */
+    bool normals, flat_normals, turn, key_colour, vcolour;
+    const scene_texture *tx;
+    float uv_scale[2], uv_off[2];
+    const mat4 *to_eye, *inv;
+    uint32_t memo_gen; /* w->vmemo's generation for this part; 0: not used */
+} key_spec;
+
+/* The colour looked up last: colours repeat in runs. */
+typedef struct colour_memo {
+    uint32_t col[4];
+    uint32_t ci; /* DEDUP_NONE: none yet */
+} colour_memo;
+
+/* c's index in w->col, or DEDUP_NONE when memory ran out. */
+static uint32_t colour_index(povwriter *w, colour_memo *m, const float c[4])
+{
+    uint32_t ck[4];
+    memcpy(ck, c, sizeof ck);
+    if (m->ci == DEDUP_NONE || memcmp(ck, m->col, sizeof ck) != 0) {
+        m->ci = dedup_index(&w->col, ck);
+        memcpy(m->col, ck, sizeof ck);
+    }
+    return m->ci;
+}
+
+/* The vertex index of corner k of face t (BAD for a position that is not
+ * finite), its key made and looked up; a new vertex's colour is indexed
+ * too (vcolour). DEDUP_NONE when memory ran out. Inline: the loop that
+ * calls it runs for every corner. */
+__attribute__((always_inline)) static inline uint32_t
+vertex_index(povwriter *w, const key_spec *ks, colour_memo *memo, const scene_tri *t, int k,
+             bool face_front)
+{
+    const scene_vertex *verts = ks->verts, *sv = &verts[t->v[k]];
+    uint32_t v = t->v[k];
+    if (!finite3f(sv->pos))
+        return BAD;
+    vmemo_entry *me = NULL;
+    uint32_t tag = 0;
+    if (ks->memo_gen) {
+        /* A copy of a vertex indexed before whose index is still in the
+         * set's window (dedup_index would find it there): that index. */
+        uint64_t h = 0x9e3779b97f4a7c15ull * w->front[v - ks->lo];
+        static const uint64_t mul[5] = {0xc2b2ae3d27d4eb4full, 0x165667b19e3779f9ull,
+                                        0xd6e8feb86659fd93ull, 0xff51afd7ed558ccdull,
+                                        0xc4ceb9fe1a85ec53ull};
+        for (int i = 0; i < 5; i++) {
+            uint64_t x;
+            memcpy(&x, (const char *)sv->pos + 8 * i, sizeof x);
+            h += (x + (uint64_t)i) * mul[i];
+        }
+        h ^= h >> 29;
+        me = &w->vmemo[(h * 0x94d049bb133111ebull) >> (64 - VMEMO_BITS)];
+        tag = ks->memo_gen << 1 | w->front[v - ks->lo];
+        const dedup *vd = &w->vtx;
+        if (me->tag == tag && memcmp(me->raw, sv->pos, sizeof me->raw) == 0 &&
+            me->r >= vd->count - vd->live)
+            return me->r;
+    }
+    /* The key: position, normal, colour bits as the vertex holds them
+     * (contiguous in scene_vertex). */
+    uint32_t ukey[DEDUP_MAX_WORDS];
+    memcpy(ukey, sv->pos, 3 * sizeof *ukey);
+    uint32_t nk = 3;
+    if (ks->normals) {
+        const float *n = ks->flat_normals ? verts[t->provoking].normal : sv->normal;
+        bool front = ks->flat_normals ? face_front : ks->turn && w->front[v - ks->lo];
+        if (!finite3f(n) || (n[0] == 0 && n[1] == 0 && n[2] == 0)) {
+            static const float up[3] = {0, 0, 1}; /* POV-Ray normalises */
+            memcpy(ukey + 3, up, sizeof up);
+        } else if (front) {
+            float tn[3];
+            povlight_front_normal(&w->light, ks->to_eye, ks->inv,
+                                  w->eye + 3 * (size_t)(v - ks->lo), n, tn);
+            memcpy(ukey + 3, tn, 3 * sizeof *ukey);
+        } else {
+            memcpy(ukey + 3, n, 3 * sizeof *ukey);
+        }
+        if (ks->flat_normals && k == 2) {
+            /* POV-Ray draws a smooth triangle whose three normals are
+             * equal (within about 1e-5) with its geometric normal: one
+             * corner's is tilted by 1e-4, which moves the shading by
+             * under 0.1/255. */
+            float tn[3];
+            memcpy(tn, ukey + 3, sizeof tn);
+            int a = 0;
+            for (int c = 1; c < 3; c++)
+                if (fabsf(tn[c]) < fabsf(tn[a]))
+                    a = c;
+            tn[a] += 1e-4f * sqrtf(tn[0] * tn[0] + tn[1] * tn[1] + tn[2] * tn[2]);
+            memcpy(ukey + 3, tn, sizeof tn);
+        }
+        nk = 6;
+    }
+    if (ks->key_colour)
+        memcpy(ukey + nk, sv->color, 4 * sizeof *ukey);
+    if (ks->tx) {
+        float uv[2];
+        for (int a = 0; a < 2; a++) {
+            uv[a] = sv->tex[a] * ks->uv_scale[a] + ks->uv_off[a];
+            if (!isfinite(uv[a]))
+                uv[a] = 0;
+        }
+        memcpy(ukey + nk + (ks->vcolour ? 4 : 0), uv, sizeof uv);
+    }
+    dedup *vd = &w->vtx;
+    size_t before = vd->count;
+    uint32_t r = dedup_index(vd, ukey);
+    if (r != DEDUP_NONE && ks->vcolour && vd->count != before) { /* a new vertex: its colour */
+        if (tr_grow((void **)&w->vcol, &w->cap_vcol, vd->count, sizeof *w->vcol) != 0 ||
+            (w->vcol[r] = colour_index(w, memo, sv->color)) == DEDUP_NONE)
+            return DEDUP_NONE;
+    }
+    if (me && r != DEDUP_NONE) {
+        memcpy(me->raw, sv->pos, sizeof me->raw);
+        me->tag = tag;
+        me->r = r;
+    }
+    return r;
+}
+
+
+/* Pass 1 of write_mesh2_part: every used vertex indexed, the faces GL
+ * would draw kept in w->faces (3 vertex, 3 colour indices each; with
+ * vimage, the face's place in tris as its first colour). flat: corners
+ * take the face's normal (ks->flat_normals); vcolour: ks->vcolour; both
+ * constants in each inline copy. Returns the faces kept, or SIZE_MAX when
+ * memory ran out. */
+__attribute__((always_inline)) static inline size_t
+index_faces(povwriter *w, const key_spec *ks, colour_memo *memo, const scene_tri *tris, size_t nt,
+            bool flat, bool vcolour, bool vimage, bool flat_colour)
+{
+    const scene_vertex *verts = ks->verts;
+    uint32_t lo = ks->lo;
+    size_t kept = 0;
+    for (size_t i = 0; i < nt; i++) {
+        const scene_tri *t = &tris[i];
+        uint32_t *f = w->faces + kept * 6;
+        bool face_front = false;
+        if (flat && ks->turn) {
+            const double *e = w->eye;
+            face_front = povlight_front_facing(&w->light, e + 3 * (size_t)(t->v[0] - lo),
+                                               e + 3 * (size_t)(t->v[1] - lo),
+                                               e + 3 * (size_t)(t->v[2] - lo));
+        }
+        int k = 0;
+        for (; k < 3; k++) {
+            uint32_t r;
+            if (flat) { /* the corner's normal is the face's */
+                r = vertex_index(w, ks, memo, t, k, face_front);
+            } else if ((r = w->remap[t->v[k] - lo]) == UNSET) {
+                r = vertex_index(w, ks, memo, t, k, false);
+                w->remap[t->v[k] - lo] = r;
+            }
+            if (r == DEDUP_NONE)
+                return SIZE_MAX;
+            if (r == BAD)
+                break;
+            f[k] = r;
+            if (vcolour)
+                f[3 + k] = w->vcol[r];
+        }
+        if (k < 3 || f[0] == f[1] || f[1] == f[2] || f[0] == f[2])
+            continue;
+        /* Zero area (collinear): POV-Ray drops such faces with a warning. */
+        const float *a = verts[t->v[0]].pos, *b = verts[t->v[1]].pos, *c = verts[t->v[2]].pos;
+        double e1[3] = {(double)b[0] - a[0], (double)b[1] - a[1], (double)b[2] - a[2]};
+        double e2[3] = {(double)c[0] - a[0], (double)c[1] - a[1], (double)c[2] - a[2]};
+        double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2],
+               cz = e1[0] * e2[1] - e1[1] * e2[0];
+        if (cx == 0 && cy == 0 && cz == 0)
+            continue;
+        if (vimage) {
+            f[3] = (uint32_t)i; /* the face's colours come from its block */
+            f[4] = f[5] = 0;
+        } else if (flat_colour) {
+            /* One colour, the provoking vertex's. */
+            uint32_t ci = colour_index(w, memo, verts[t->provoking].color);
+            if (ci == DEDUP_NONE)
+                return SIZE_MAX;
+            f[3] = f[4] = f[5] = ci;
+        } else if (!vcolour) {
+            f[3] = f[4] = f[5] = 0;
+        }
+        kept++;
+    }
+    return kept;
+}
 
 /* A mesh2 of triangles over a vertex pool; to_eye NULL: the vertices are
  * in eye space. Equal vertices (position, and normal and colour where
@@ -655,19 +967,8 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
             return -1;
     }
 
-    /* Colours repeat in runs: remember the last one looked up. */
-    uint32_t last_col[4] = {0}, last_ci = DEDUP_NONE;
-#define COLOUR_INDEX(c, out)                                                        \
-    do {                                                                            \
-        uint32_t ck_[4];                                                            \
-        memcpy(ck_, (c), sizeof ck_);                                               \
-        if (last_ci == DEDUP_NONE || memcmp(ck_, last_col, sizeof ck_) != 0) {      \
-            if ((last_ci = dedup_index(&w->col, ck_)) == DEDUP_NONE)                \
-                return -1;                                                          \
-            memcpy(last_col, ck_, sizeof ck_);                                      \
-        }                                                                           \
-        (out) = last_ci;                                                            \
-    } while (0)
+    /* Colours repeat in runs: the last one looked up is remembered. */
+    colour_memo memo = {{0}, DEDUP_NONE};
 
     /* Lit normals on front faces, turned toward the camera where POV-Ray
      * would mirror them (povlight_front_normal). */
@@ -678,136 +979,53 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         if (tr_grow((void **)&w->front, &w->cap_front, span, 1) != 0 ||
             tr_grow((void **)&w->eye, &w->cap_eye, span * 3, sizeof *w->eye) != 0)
             return -1;
-        /* Each vertex goes to eye space once, not once per face. */
+        /* Each vertex goes to eye space once, not once per face (2: not
+         * yet), in the same pass as the faces' facing. */
         memset(w->front, 2, span);
-        for (size_t i = 0; i < nt; i++)
+        for (size_t i = 0; i < nt; i++) {
+            const scene_tri *t = &tris[i];
+            double *e[3];
             for (int k = 0; k < 3; k++) {
-                uint32_t v = tris[i].v[k] - lo;
+                uint32_t v = t->v[k] - lo;
+                e[k] = w->eye + 3 * (size_t)v;
                 if (w->front[v] == 2) {
-                    povlight_eye_point(to_eye, verts[tris[i].v[k]].pos, w->eye + 3 * (size_t)v);
+                    povlight_eye_point(to_eye, verts[t->v[k]].pos, e[k]);
                     w->front[v] = 0;
                 }
             }
-        for (size_t i = 0; i < nt; i++) {
-            const scene_tri *t = &tris[i];
-            const double *e = w->eye;
-            if (povlight_front_facing(&w->light, e + 3 * (size_t)(t->v[0] - lo),
-                                      e + 3 * (size_t)(t->v[1] - lo), e + 3 * (size_t)(t->v[2] - lo)))
+            if (povlight_front_facing(&w->light, e[0], e[1], e[2]))
                 for (int k = 0; k < 3; k++)
                     w->front[t->v[k] - lo] = 1;
         }
     }
 
     /* Pass 1: index every used vertex, keep the faces GL would draw. */
-    size_t kept = 0;
-    for (size_t i = 0; i < nt; i++) {
-        const scene_tri *t = &tris[i];
-        uint32_t *f = w->faces + kept * 6;
-        bool ok = true;
-        bool face_front = false;
-        if (flat_normals && turn) {
-            const double *e = w->eye;
-            face_front = povlight_front_facing(&w->light, e + 3 * (size_t)(t->v[0] - lo),
-                                               e + 3 * (size_t)(t->v[1] - lo),
-                                               e + 3 * (size_t)(t->v[2] - lo));
+    key_spec ks = {verts, lo, normals, flat_normals, turn, key_colour, vcolour, tx,
+                   {uv_scale[0], uv_scale[1]}, {uv_off[0], uv_off[1]}, to_eye, inv, 0};
+    if (turn && !flat_normals && !tx) { /* turned normals: copies found by vmemo */
+        if (!w->vmemo || w->vmemo_gen >= (1u << 30)) {
+            if (!w->vmemo && !(w->vmemo = tr_realloc(NULL, sizeof *w->vmemo << VMEMO_BITS)))
+                return -1;
+            memset(w->vmemo, 0, sizeof *w->vmemo << VMEMO_BITS);
+            w->vmemo_gen = 0;
         }
-        for (int k = 0; k < 3 && ok; k++) {
-            uint32_t v = t->v[k];
-            uint32_t corner = UNSET;
-            uint32_t *r = flat_normals ? &corner : w->remap + (v - lo);
-            if (*r == UNSET) {
-                const scene_vertex *sv = &verts[v];
-                if (!finite3f(sv->pos)) {
-                    *r = BAD;
-                } else {
-                    /* The key: position, normal, colour bits as the vertex
-                     * holds them (contiguous in scene_vertex). */
-                    uint32_t ukey[DEDUP_MAX_WORDS];
-                    memcpy(ukey, sv->pos, 3 * sizeof *ukey);
-                    uint32_t nk = 3;
-                    if (normals) {
-                        const float *n = flat_normals ? verts[t->provoking].normal : sv->normal;
-                        bool front = flat_normals ? face_front : turn && w->front[v - lo];
-                        if (!finite3f(n) || (n[0] == 0 && n[1] == 0 && n[2] == 0)) {
-                            static const float up[3] = {0, 0, 1}; /* POV-Ray normalises */
-                            memcpy(ukey + 3, up, sizeof up);
-                        } else if (front) {
-                            float tn[3];
-                            povlight_front_normal(&w->light, to_eye, inv, w->eye + 3 * (size_t)(v - lo), n, tn);
-                            memcpy(ukey + 3, tn, 3 * sizeof *ukey);
-                        } else {
-                            memcpy(ukey + 3, n, 3 * sizeof *ukey);
-                        }
-                        if (flat_normals && k == 2) {
-                            /* POV-Ray draws a smooth triangle whose three
-                             * normals are equal (within about 1e-5) with its
-                             * geometric normal: one corner's is tilted by
-                             * 1e-4, which moves the shading by under 0.1/255. */
-                            float tn[3];
-                            memcpy(tn, ukey + 3, sizeof tn);
-                            int a = 0;
-                            for (int c = 1; c < 3; c++)
-                                if (fabsf(tn[c]) < fabsf(tn[a]))
-                                    a = c;
-                            tn[a] += 1e-4f * sqrtf(tn[0] * tn[0] + tn[1] * tn[1] + tn[2] * tn[2]);
-                            memcpy(ukey + 3, tn, sizeof tn);
-                        }
-                        nk = 6;
-                    }
-                    if (key_colour)
-                        memcpy(ukey + nk, sv->color, 4 * sizeof *ukey);
-                    if (tx) {
-                        float uv[2];
-                        for (int a = 0; a < 2; a++) {
-                            uv[a] = sv->tex[a] * uv_scale[a] + uv_off[a];
-                            if (!isfinite(uv[a]))
-                                uv[a] = 0;
-                        }
-                        memcpy(ukey + nk + (vcolour ? 4 : 0), uv, sizeof uv);
-                    }
-                    size_t before = vd->count;
-                    if ((*r = dedup_index(vd, ukey)) == DEDUP_NONE)
-                        return -1;
-                    if (vcolour && vd->count != before) { /* a new vertex: its colour */
-                        if (tr_grow((void **)&w->vcol, &w->cap_vcol, vd->count,
-                                    sizeof *w->vcol) != 0)
-                            return -1;
-                        COLOUR_INDEX(sv->color, w->vcol[*r]);
-                    }
-                }
-            }
-            if (*r == BAD)
-                ok = false;
-            f[k] = *r;
-            f[3 + k] = vcolour && *r != BAD ? w->vcol[*r] : 0;
-        }
-        if (!ok || f[0] == f[1] || f[1] == f[2] || f[0] == f[2])
-            continue;
-        /* Zero area (collinear): POV-Ray drops such faces with a warning. */
-        const float *a = verts[t->v[0]].pos, *b = verts[t->v[1]].pos, *c = verts[t->v[2]].pos;
-        double e1[3] = {(double)b[0] - a[0], (double)b[1] - a[1], (double)b[2] - a[2]};
-        double e2[3] = {(double)c[0] - a[0], (double)c[1] - a[1], (double)c[2] - a[2]};
-        double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2],
-               cz = e1[0] * e2[1] - e1[1] * e2[0];
-        if (cx == 0 && cy == 0 && cz == 0)
-            continue;
-        if (vimage) {
-            f[3] = (uint32_t)i; /* the face's colours come from its block */
-        } else if (look->flat && !(tx && tx->colour_is_texel)) {
-            /* One colour, the provoking vertex's. */
-            uint32_t ci;
-            COLOUR_INDEX(verts[t->provoking].color, ci);
-            f[3] = f[4] = f[5] = ci;
-        }
-        kept++;
+        ks.memo_gen = ++w->vmemo_gen;
     }
+    /* One copy of the loop for each kind of corner (faces of their own or
+     * vertices shared, a colour index or none). */
+    bool flat_colour = !vimage && look->flat && !(tx && tx->colour_is_texel);
+    size_t kept;
+    if (flat_normals)
+        kept = vcolour ? index_faces(w, &ks, &memo, tris, nt, true, true, vimage, flat_colour)
+                       : index_faces(w, &ks, &memo, tris, nt, true, false, vimage, flat_colour);
+    else
+        kept = vcolour ? index_faces(w, &ks, &memo, tris, nt, false, true, vimage, flat_colour)
+                       : index_faces(w, &ks, &memo, tris, nt, false, false, vimage, flat_colour);
+    if (kept == SIZE_MAX)
+        return -1;
     static const float white[4] = {1, 1, 1, 1};
-    if ((tx && tx->colour_is_texel) || vimage) {
-        uint32_t ci;
-        COLOUR_INDEX(white, ci);
-        (void)ci;
-    }
-#undef COLOUR_INDEX
+    if (((tx && tx->colour_is_texel) || vimage) && colour_index(w, &memo, white) == DEDUP_NONE)
+        return -1;
     if (kept == 0)
         return 0;
     bool colour_list = w->col.count > 1;
@@ -828,18 +1046,21 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         for (;;) {
             if (tr_grow((void **)&w->vcorner, &w->cap_vcorner, nleft * 3 + 1,
                         sizeof *w->vcorner) != 0 ||
+                tr_grow((void **)&w->offg, &w->cap_offg, nleft + 1, sizeof *w->offg) != 0 ||
                 tr_grow((void **)&w->vuv, &w->cap_vuv, nvg * 2 + nleft * 6 + 2, sizeof *w->vuv) != 0)
                 return -1;
             for (size_t i = 0, j = 0; i < kept; i++) {
                 if (nvg && w->grid.in_grid[i])
                     continue;
+                if (nvg)
+                    w->offg[j] = (uint32_t)i;
                 const scene_tri *t = &tris[w->faces[i * 6 + 3]];
                 for (int k = 0; k < 3; k++)
                     w->vcorner[3 * j + k] = verts[look->flat ? t->provoking : t->v[k]].color;
                 j++;
             }
-            img = nvg ? povtex_colour_grid(&w->tex, &w->grid, w->vcolp, nvg, w->vuv, w->vcorner,
-                                           nleft, w->vuv + 2 * nvg)
+            img = nvg ? povtex_colour_grid(&w->tex, &w->grid, nvg, w->vuv, w->vcorner, nleft,
+                                           w->vuv + 2 * nvg)
                       : povtex_colours(&w->tex, w->vcorner, kept, w->vuv);
             if (img != POVTEX_TOO_LARGE || !nvg)
                 break;
@@ -880,22 +1101,21 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     size_t ndup = dup ? nleft * 3 : 0;
     outbuf_puts(ob, "mesh2{\nvertex_vectors{");
     outbuf_u64(ob, vd->count + ndup);
-    for (size_t i = 0; i < vd->count; i++)
-        PUT_ENTRY(w, ob, ",\n<", (const float *)(const void *)dedup_key(vd, i), ">");
-    for (size_t i = 0; dup && i < kept; i++)
-        for (int k = 0; k < 3 && !w->grid.in_grid[i]; k++)
-            PUT_ENTRY(w, ob, ",\n<", (const float *)(const void *)dedup_key(vd, w->faces[i * 6 + k]),
-                      ">");
+    put_vectors(w, ob, vd, vd->count, 0);
+    for (size_t j = 0; j < ndup / 3; j++)
+        for (int k = 0; k < 3; k++)
+            PUT_ENTRY(w, ob, ",\n<",
+                      (const float *)(const void *)dedup_key(vd, w->faces[w->offg[j] * 6 + k]), ">");
     outbuf_puts(ob, "}\n");
     if (normals) {
         outbuf_puts(ob, "normal_vectors{");
         outbuf_u64(ob, vd->count + ndup);
-        for (size_t i = 0; i < vd->count; i++)
-            PUT_ENTRY(w, ob, ",\n<", (const float *)(const void *)(dedup_key(vd, i) + 3), ">");
-        for (size_t i = 0; dup && i < kept; i++)
-            for (int k = 0; k < 3 && !w->grid.in_grid[i]; k++)
+        put_vectors(w, ob, vd, vd->count, 3);
+        for (size_t j = 0; j < ndup / 3; j++)
+            for (int k = 0; k < 3; k++)
                 PUT_ENTRY(w, ob, ",\n<",
-                          (const float *)(const void *)(dedup_key(vd, w->faces[i * 6 + k]) + 3), ">");
+                          (const float *)(const void *)(dedup_key(vd, w->faces[w->offg[j] * 6 + k]) + 3),
+                          ">");
         outbuf_puts(ob, "}\n");
     }
     if (tx) { /* parallel to vertex_vectors: taken by face_indices */
@@ -936,6 +1156,9 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     /* Faces as (v0, v2, v1): see the file comment. Without normal_indices,
      * POV-Ray takes the normals by face_indices. */
     static const int order[3] = {0, 2, 1};
+    size_t nindex = vd->count + ndup > nvg + nleft * 3 ? vd->count + ndup : nvg + nleft * 3;
+    if (index_text(w, nindex) != 0)
+        return -1;
     outbuf_puts(ob, "face_indices{");
     outbuf_u64(ob, kept);
     for (size_t i = 0, j = 0; i < kept; i++) {
@@ -944,24 +1167,29 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         if (!p)
             return -1;
         char *q = p;
-        *q++ = ',';
-        *q++ = '\n';
-        *q++ = '<';
-        bool own = dup && !w->grid.in_grid[i]; /* its corners' copies */
-        for (int k = 0; k < 3; k++) {
-            q += own ? numfmt_u64(q, vd->count + 3 * j + (size_t)order[k])
-                     : cached_u32(w, q, f[order[k]]);
-            *q++ = k < 2 ? ',' : '>';
+        memcpy(q, ",\n<", 3);
+        q += 3;
+        size_t c0 = f[order[0]], c1 = f[order[1]], c2 = f[order[2]];
+        if (dup && !w->grid.in_grid[i]) { /* its corners' copies */
+            c0 = vd->count + 3 * j + (size_t)order[0];
+            c1 = vd->count + 3 * j + (size_t)order[1];
+            c2 = vd->count + 3 * j + (size_t)order[2];
+            j++;
         }
-        j += own;
+        q += put_index(w, q, c0);
+        *q++ = ',';
+        q += put_index(w, q, c1);
+        *q++ = ',';
+        q += put_index(w, q, c2);
+        *q++ = '>';
         if (colour_list) {
             if (f[3] == f[4] && f[4] == f[5]) {
                 *q++ = ',';
-                q += numfmt_u64(q, f[3]);
+                q += put_index(w, q, f[3]);
             } else {
                 for (int k = 0; k < 3; k++) {
                     *q++ = ',';
-                    q += numfmt_u64(q, f[3 + order[k]]);
+                    q += put_index(w, q, f[3 + order[k]]);
                 }
             }
         }
@@ -981,8 +1209,8 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
             *q++ = '<';
             bool on_grid = nvg && w->grid.in_grid[i];
             for (int k = 0; k < 3; k++) {
-                q += numfmt_u64(q, on_grid ? w->faces[i * 6 + order[k]]
-                                           : nvg + 3 * j + (size_t)order[k]);
+                q += put_index(w, q, on_grid ? w->faces[i * 6 + order[k]]
+                                             : nvg + 3 * j + (size_t)order[k]);
                 *q++ = k < 2 ? ',' : '>';
             }
             j += !on_grid;

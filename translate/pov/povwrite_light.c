@@ -84,23 +84,33 @@ static void scene_box(const scene *s, double lo[3], double hi[3])
     }
     for (size_t i = 0; i < s->nmeshes; i++) {
         const scene_mesh *m = &s->meshes[i];
-        const uint32_t *prev = NULL;
-        for (size_t t = 0; t < m->tri_count; t++, prev = s->tris[m->first_tri + t - 1].v)
+        const double *a = m->to_eye.m;
+        const scene_tri *tri = s->tris + m->first_tri;
+        /* mat4_apply's sums, the w row left out and w = 1 not multiplied
+         * (m * 1 is m): the same doubles, a third of the work. */
+        double lx = lo[0], ly = lo[1], lz = lo[2], hx = hi[0], hy = hi[1], hz = hi[2];
+        for (size_t t = 0; t < m->tri_count; t++)
             for (int c = 0; c < 3; c++) {
-                uint32_t vi = s->tris[m->first_tri + t].v[c];
+                uint32_t vi = tri[t].v[c];
                 /* A strip's or fan's next triangle shares two corners with
                  * the one before: taken once (the box is the same). */
-                if (prev && (vi == prev[0] || vi == prev[1] || vi == prev[2]))
+                if (t > 0 && (vi == tri[t - 1].v[0] || vi == tri[t - 1].v[1] ||
+                              vi == tri[t - 1].v[2]))
                     continue;
                 const float *p = s->verts[vi].pos;
-                double in[4] = {p[0], p[1], p[2], 1}, o[4];
-                if (m->in_eye)
-                    o[0] = p[0], o[1] = p[1], o[2] = p[2], o[3] = 1;
-                else
-                    mat4_apply(&m->to_eye, in, o);
-                if (isfinite(o[0]) && isfinite(o[1]) && isfinite(o[2]))
-                    grow_box(lo, hi, o);
+                double x = p[0], y = p[1], z = p[2];
+                if (!m->in_eye) {
+                    double ox = a[0] * x + a[4] * y + a[8] * z + a[12];
+                    double oy = a[1] * x + a[5] * y + a[9] * z + a[13];
+                    double oz = a[2] * x + a[6] * y + a[10] * z + a[14];
+                    x = ox, y = oy, z = oz;
+                }
+                if (isfinite(x) && isfinite(y) && isfinite(z)) {
+                    lx = x < lx ? x : lx, ly = y < ly ? y : ly, lz = z < lz ? z : lz;
+                    hx = x > hx ? x : hx, hy = y > hy ? y : hy, hz = z > hz ? z : hz;
+                }
             }
+        lo[0] = lx, lo[1] = ly, lo[2] = lz, hi[0] = hx, hi[1] = hy, hi[2] = hz;
     }
     for (size_t i = 0; i < s->nlines; i++)
         for (int e = 0; e < 2; e++) {
@@ -499,49 +509,19 @@ bool povlight_modulate_tint(const povlight *pl, const scene_look *look, const fl
 
 /* ---- Normals ----------------------------------------------------------------------------- */
 
-void povlight_eye_point(const mat4 *m, const float p[3], double out[3])
-{
-    double in[4] = {p[0], p[1], p[2], 1}, o[4];
-    if (!m) {
-        for (int k = 0; k < 3; k++)
-            out[k] = p[k];
-        return;
-    }
-    mat4_apply(m, in, o);
-    for (int k = 0; k < 3; k++)
-        out[k] = o[k];
-}
-
-/* Unit vector from eye point p toward the camera. */
-static bool toward_camera(const scene_camera *cam, const double p[3], double v[3])
-{
-    /* In scalars, as len3 (sqrt of dot3) adds them: an array stored one by
-     * one and read back as pairs stalled on store forwarding. */
-    bool ortho = cam->kind == SCENE_CAMERA_ORTHOGRAPHIC;
-    double v0 = ortho ? -cam->direction[0] : cam->location[0] - p[0];
-    double v1 = ortho ? -cam->direction[1] : cam->location[1] - p[1];
-    double v2 = ortho ? -cam->direction[2] : cam->location[2] - p[2];
-    double l = sqrt(v0 * v0 + v1 * v1 + v2 * v2);
-    v[0] = v0, v[1] = v1, v[2] = v2;
-    if (!(l > 0) || !isfinite(l))
-        return false;
-    v[0] = v0 / l, v[1] = v1 / l, v[2] = v2 / l;
-    return true;
-}
-
 bool povlight_front_facing(const povlight *pl, const double pa[3], const double pb[3],
                            const double pc[3])
 {
-    double v[3];
-    double e1[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
-    double e2[3] = {pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]};
-    double g[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                   e1[0] * e2[1] - e1[1] * e2[0]};
+    double e10 = pb[0] - pa[0], e11 = pb[1] - pa[1], e12 = pb[2] - pa[2];
+    double e20 = pc[0] - pa[0], e21 = pc[1] - pa[1], e22 = pc[2] - pa[2];
+    double g0 = e11 * e22 - e12 * e21, g1 = e12 * e20 - e10 * e22, g2 = e10 * e21 - e11 * e20;
     /* Only the sign matters: the view vector needs no normalising. */
     const scene_camera *cam = &pl->s->camera;
-    for (int k = 0; k < 3; k++)
-        v[k] = cam->kind == SCENE_CAMERA_ORTHOGRAPHIC ? -cam->direction[k] : cam->location[k] - pa[k];
-    return g[0] * v[0] + g[1] * v[1] + g[2] * v[2] > 0;
+    if (cam->kind == SCENE_CAMERA_ORTHOGRAPHIC)
+        return g0 * -cam->direction[0] + g1 * -cam->direction[1] + g2 * -cam->direction[2] > 0;
+    return g0 * (cam->location[0] - pa[0]) + g1 * (cam->location[1] - pa[1]) +
+               g2 * (cam->location[2] - pa[2]) >
+           0;
 }
 
 /* GL lights a front face with its vertex normals as given, even where they
@@ -556,7 +536,6 @@ void povlight_front_normal(const povlight *pl, const mat4 *to_eye, const mat4 *t
                            const double p[3], const float n[3], float out[3])
 {
     memcpy(out, n, 3 * sizeof *out);
-    double v[3], ne[3];
     /* In scalars: arrays stored one by one and read back two at a time
      * stalled on store forwarding at every vertex. */
     double e0, e1, e2;
@@ -585,30 +564,32 @@ void povlight_front_normal(const povlight *pl, const mat4 *to_eye, const mat4 *t
     if (dot > 0 && isfinite(dot * dot) && nn * vv > 0 &&
         dot * dot >= FRONT_MARGIN * FRONT_MARGIN * (1 + 1e-6) * (nn * vv))
         return;
-    if (!toward_camera(cam, p, v))
+    /* The unit vector toward the camera (toward_camera's sums). */
+    double lv = sqrt(vv);
+    if (!(lv > 0) || !isfinite(lv))
         return;
+    v0 /= lv, v1 /= lv, v2 /= lv;
     double l = sqrt(nn); /* len3(ne) */
     if (!(l > 0) || !isfinite(l))
         return;
     e0 /= l, e1 /= l, e2 /= l;
-    ne[0] = e0, ne[1] = e1, ne[2] = e2;
-    double d = e0 * v[0] + e1 * v[1] + e2 * v[2];
+    double d = e0 * v0 + e1 * v1 + e2 * v2;
     if (d >= FRONT_MARGIN)
         return;
-    for (int k = 0; k < 3; k++)
-        ne[k] += (FRONT_MARGIN - d) * v[k];
+    e0 += (FRONT_MARGIN - d) * v0;
+    e1 += (FRONT_MARGIN - d) * v1;
+    e2 += (FRONT_MARGIN - d) * v2;
     /* Back to object space: n = M^T ne (POV-Ray normalises). */
-    double o[3];
+    double o0 = e0, o1 = e1, o2 = e2;
     if (to_eye) {
         const double *m = to_eye->m;
-        for (int k = 0; k < 3; k++)
-            o[k] = m[k * 4 + 0] * ne[0] + m[k * 4 + 1] * ne[1] + m[k * 4 + 2] * ne[2];
-    } else {
-        memcpy(o, ne, sizeof o);
+        o0 = m[0] * e0 + m[1] * e1 + m[2] * e2;
+        o1 = m[4] * e0 + m[5] * e1 + m[6] * e2;
+        o2 = m[8] * e0 + m[9] * e1 + m[10] * e2;
     }
-    float f[3] = {fin(o[0]), fin(o[1]), fin(o[2])};
-    if (f[0] != 0 || f[1] != 0 || f[2] != 0)
-        memcpy(out, f, sizeof f);
+    float f0 = fin(o0), f1 = fin(o1), f2 = fin(o2);
+    if (f0 != 0 || f1 != 0 || f2 != 0)
+        out[0] = f0, out[1] = f1, out[2] = f2;
 }
 
 /* ---- Fog -------------------------------------------------------------------------------- */

@@ -378,8 +378,8 @@ int povtex_colours(povtex *pt, const float *const *corners, size_t n, float *uv)
     return add_colour_image(pt, px, iw, ih);
 }
 
-int povtex_colour_grid(povtex *pt, const povgrid *g, const float *const *vcol, size_t nv,
-                       float *vuv, const float *const *corners, size_t n, float *uv)
+int povtex_colour_grid(povtex *pt, const povgrid *g, size_t nv, float *vuv,
+                       const float *const *corners, size_t n, float *uv)
 {
     int gw = g->width, gh = g->height;
     size_t bw = 0, bh = 0;
@@ -399,8 +399,17 @@ int povtex_colour_grid(povtex *pt, const povgrid *g, const float *const *vcol, s
     if (iw < 1 || ih < 1 || iw > PADDED_MAX || ih > PADDED_MAX)
         return POVTEX_TOO_LARGE;
     uint8_t *px = new_image(iw, ih);
-    if (!px)
+    /* Each column's u and each row's v, made once. */
+    float *cu = tr_realloc(NULL, ((size_t)gw + (size_t)gh + 1) * sizeof *cu), *rv = cu + gw;
+    if (!px || !cu) {
+        tr_free(px);
+        tr_free(cu);
         return -1;
+    }
+    for (int x = 0; x < gw; x++)
+        cu[x] = (float)((x + 0.5) / iw);
+    for (int y = 0; y < gh; y++)
+        rv[y] = (float)((y + 0.5) / ih);
     for (size_t v = 0; v < nv; v++) {
         if (g->tx[v] < 0) {
             vuv[2 * v] = vuv[2 * v + 1] = 0;
@@ -408,10 +417,11 @@ int povtex_colour_grid(povtex *pt, const povgrid *g, const float *const *vcol, s
         }
         uint8_t *t = px + ((size_t)g->ty[v] * (size_t)iw + (size_t)g->tx[v]) * 4;
         for (int k = 0; k < 3; k++)
-            t[k] = (uint8_t)quantise(vcol[v][k]);
-        vuv[2 * v] = (float)((g->tx[v] + 0.5) / iw);
-        vuv[2 * v + 1] = (float)((g->ty[v] + 0.5) / ih);
+            t[k] = (uint8_t)(g->qc[v] >> 16 * k);
+        vuv[2 * v] = cu[g->tx[v]];
+        vuv[2 * v + 1] = rv[g->ty[v]];
     }
+    tr_free(cu);
     if (n)
         put_blocks(px, iw, ih, gh, bw, corners, n, uv);
     return add_colour_image(pt, px, iw, ih);

@@ -131,14 +131,14 @@ static inline int povtex_colour_origin_q(uint8_t q[3][3])
  * out. Images are marked texture -1. */
 int povtex_colours(povtex *pt, const float *const *corners, size_t n, float *uv);
 
-/* The same with a grid (povgrid_build over nv vertices of colours
- * vcol[v]): its texels first, one per vertex on a cell, whose uv goes to
+/* The same with a grid (povgrid_build over nv vertices, whose colours
+ * it took as g->qc): its texels first, one per vertex on a cell, whose uv goes to
  * vuv[2 * v] (0, 0 for vertices on no cell), then the blocks of the n
  * faces off the grid as povtex_colours places them. Returns the image's
  * index, -1 when memory ran out, POVTEX_TOO_LARGE when the image would
  * pass POV-Ray's image size (then povtex_colours alone fits). */
 #define POVTEX_TOO_LARGE (-2)
-int povtex_colour_grid(povtex *pt, const povgrid *g, const float *const *vcol, size_t nv,
-                       float *vuv, const float *const *corners, size_t n, float *uv);
+int povtex_colour_grid(povtex *pt, const povgrid *g, size_t nv, float *vuv,
+                       const float *const *corners, size_t n, float *uv);
 
 #endif
