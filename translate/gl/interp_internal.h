@@ -54,7 +54,7 @@ typedef struct interp_relit_in {
  * position (bit for bit) instead of once per vertex. */
 typedef struct interp_litdir {
     float pos[3];
-    bool set, h_set;
+    bool set;
     double vp[3], d; /* unit direction, length of the position */
     double h[3], hl; /* half vector for the infinite viewer, its length */
 } interp_litdir;
@@ -748,14 +748,38 @@ void interp_lit_color(const interp *ip, const double p[3], const double n[3], bo
 void interp_lit_color_peak(const interp *ip, const double p[3], const double n[3], bool back,
                            const float colour[4], float out[4], double *peak);
 
+/* interp_lit_color_peak in two steps, for many vertices lit under one
+ * state (a primitive's: between glBegin and glEnd only glMaterial changes
+ * it, and the kept colours are made before, interp_relit_flush).
+ * _prepare finds once what every vertex reads of the lights and of
+ * GL_COLOR_MATERIAL; _prepared lights one vertex as interp_lit_color_peak
+ * does, bit for bit, while that state holds. */
+typedef struct interp_lit_prep {
+    int face;          /* the material lit: 1 for back faces under two-sided lighting */
+    uint8_t cm;        /* SCENE_CM_* terms the vertex colour gives */
+    bool local_viewer;
+    bool need_p;       /* a positional light or a local viewer reads the eye point */
+    int nlights;
+    uint8_t light[INTERP_MAX_LIGHTS]; /* the lights on that add something, in order */
+    /* For interp_prim.c's vertices in object space: the modelview, its
+     * inverse (NULL: singular) and GL_RESCALE_NORMAL's factor. */
+    const mat4 *mv, *inv;
+    bool normalize, rescale;
+    double rescale_r;
+} interp_lit_prep;
+void interp_lit_prepare(const interp *ip, bool back, interp_lit_prep *lp);
+void interp_lit_prepared(const interp *ip, const interp_lit_prep *lp, const double p[3],
+                         const double n[3], const float colour[4], float out[4], double *peak);
+
 /* GL's own lighting for the faces POV-Ray would light otherwise
  * (interp_relit.c): back faces under one-sided lighting, and textured
  * GL_MODULATE surfaces lit past white (GL clamps before the texture).
  * _wanted: the open filled primitive's vertices need GL's lit colour;
  * _defer: keeps vertex k's inputs (the current colour and normal) for
  * _flush, which makes the kept vertices' colours (at a change of material
- * between vertices, and when glEnd needs them); _colour: one vertex's
- * (post-processed) lit colour and its unclamped peak;
+ * between vertices, and when glEnd needs them); _prepare: GL's state for
+ * _colour (interp_lit_prepare), which gives one vertex's (post-processed)
+ * lit colour and its unclamped peak (peak may be NULL);
  * _split: at glEnd, which faces go to a GL-lit mesh (0: none,
  * INTERP_RELIT_BACK: back faces, INTERP_RELIT_ALL: all); _need_clear:
  * no vertex marked in relit_need yet (false: out of memory); _vertices: the
@@ -778,7 +802,9 @@ scene_mesh *interp_fog_behind_mesh(interp *ip, const scene_look *look, const mat
 bool interp_relit_wanted(const interp *ip);
 void interp_relit_defer(interp *ip, size_t k, double x, double y, double z);
 void interp_relit_flush(interp *ip);
-void interp_relit_colour(interp *ip, const interp_relit_in *in, float c[4], double *peak);
+void interp_relit_prepare(interp *ip, interp_lit_prep *lp);
+void interp_relit_colour(interp *ip, const interp_lit_prep *lp, const interp_relit_in *in,
+                         float c[4], double *peak);
 int interp_relit_split(interp *ip, const scene_look *look);
 bool interp_relit_need_clear(interp *ip, uint32_t n);
 long interp_relit_vertices(interp *ip, uint32_t n);

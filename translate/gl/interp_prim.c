@@ -395,30 +395,45 @@ void interp_surface_colour(const interp *ip, float out[4])
         out[3] = 0;
 }
 
-/* Lines and points under lighting: GL's lit colour at the vertex, computed
- * here (the scene draws them unlit), with the current normal in GL's own
+/* GL's lit colour at a vertex in object space, with its normal in GL's own
  * eye space (2.11.3: the inverse transpose of the modelview, normalised
- * under GL_NORMALIZE, rescaled under GL_RESCALE_NORMAL). */
-static void lit_colour_at(interp *ip, double x, double y, double z, const float cn[3],
-                          const float colour[4], float out[4], double *peak)
+ * under GL_NORMALIZE, rescaled under GL_RESCALE_NORMAL). lit_prepare
+ * finds the modelview's inverse (kept while the matrix is bit for bit the
+ * same) and the lighting state once for a primitive's vertices. */
+static void lit_prepare(interp *ip, interp_lit_prep *lp)
 {
     const gl_attribs *a = &ip->st.a;
     const mat4 *mv = interp_matrix(ip, INTERP_MV);
-    double in[4] = {x, y, z, 1}, o[4], p[3], n[3] = {0, 0, 0};
-    mat4_apply(mv, in, o);
-    if (o[3] == 1) /* an affine modelview: x / 1 is x, without three divisions */
-        p[0] = o[0], p[1] = o[1], p[2] = o[2];
-    else
-        for (int k = 0; k < 3; k++)
-            p[k] = o[3] != 0 ? o[k] / o[3] : o[k];
     if (!ip->lit_mv_set || memcmp(&ip->lit_mv, mv, sizeof *mv) != 0) {
         ip->lit_mv = *mv;
         ip->lit_mv_ok = mat4_invert(mv, &ip->lit_mv_inv);
         ip->lit_mv_set = true;
     }
-    const mat4 *inv = &ip->lit_mv_inv;
-    if (ip->lit_mv_ok) {
-        const double *im = inv->m;
+    interp_lit_prepare(ip, false, lp);
+    lp->mv = mv;
+    lp->inv = ip->lit_mv_ok ? &ip->lit_mv_inv : NULL;
+    lp->normalize = a->caps[INTERP_CAP_NORMALIZE];
+    lp->rescale = a->caps[INTERP_CAP_RESCALE_NORMAL];
+    const double *im = ip->lit_mv_inv.m;
+    lp->rescale_r = sqrt(im[2] * im[2] + im[6] * im[6] + im[10] * im[10]);
+}
+
+static void lit_colour_at(const interp *ip, const interp_lit_prep *lp, double x, double y,
+                          double z, const float cn[3], const float colour[4], float out[4],
+                          double *peak)
+{
+    double p[3] = {0, 0, 0}, n[3] = {0, 0, 0};
+    if (lp->need_p) { /* else no term reads it */
+        double in[4] = {x, y, z, 1}, o[4];
+        mat4_apply(lp->mv, in, o);
+        if (o[3] == 1) /* an affine modelview: x / 1 is x, without three divisions */
+            p[0] = o[0], p[1] = o[1], p[2] = o[2];
+        else
+            for (int k = 0; k < 3; k++)
+                p[k] = o[3] != 0 ? o[k] / o[3] : o[k];
+    }
+    if (lp->inv) {
+        const double *im = lp->inv->m;
         /* n^T M^-1: row k of the inverse's transpose. In scalars: stored
          * one by one and read back two at a time, the array stalled on
          * store forwarding at every vertex. */
@@ -426,30 +441,34 @@ static void lit_colour_at(interp *ip, double x, double y, double z, const float 
         double n1 = cn[0] * im[4] + cn[1] * im[5] + cn[2] * im[6];
         double n2 = cn[0] * im[8] + cn[1] * im[9] + cn[2] * im[10];
         n[0] = n0, n[1] = n1, n[2] = n2;
-        bool normalize = a->caps[INTERP_CAP_NORMALIZE];
-        double len = normalize ? sqrt(n0 * n0 + n1 * n1 + n2 * n2) : 0; /* only then */
-        if (normalize && len > 0) {
+        double len = lp->normalize ? sqrt(n0 * n0 + n1 * n1 + n2 * n2) : 0; /* only then */
+        if (lp->normalize && len > 0) {
             for (int k = 0; k < 3; k++)
                 n[k] /= len;
-        } else if (a->caps[INTERP_CAP_RESCALE_NORMAL]) {
-            double r = sqrt(inv->m[2] * inv->m[2] + inv->m[6] * inv->m[6] + inv->m[10] * inv->m[10]);
+        } else if (lp->rescale) {
+            double r = lp->rescale_r;
             if (r > 0)
                 for (int k = 0; k < 3; k++)
                     n[k] /= r;
         }
     }
-    interp_lit_color_peak(ip, p, n, false, colour, out, peak);
+    interp_lit_prepared(ip, lp, p, n, colour, out, peak);
 }
 
 static void lit_line_colour(interp *ip, double x, double y, double z, float out[4], double *peak)
 {
     const gl_attribs *a = &ip->st.a;
-    lit_colour_at(ip, x, y, z, a->current.normal, a->current.color, out, peak);
+    interp_lit_prep lp;
+    lit_prepare(ip, &lp);
+    lit_colour_at(ip, &lp, x, y, z, a->current.normal, a->current.color, out, peak);
 }
 
-void interp_relit_colour(interp *ip, const interp_relit_in *in, float c[4], double *peak)
+void interp_relit_prepare(interp *ip, interp_lit_prep *lp) { lit_prepare(ip, lp); }
+
+void interp_relit_colour(interp *ip, const interp_lit_prep *lp, const interp_relit_in *in,
+                         float c[4], double *peak)
 {
-    lit_colour_at(ip, in->p[0], in->p[1], in->p[2], in->normal, in->colour, c, peak);
+    lit_colour_at(ip, lp, in->p[0], in->p[1], in->p[2], in->normal, in->colour, c, peak);
     if (ip->prim_blend_mapped)
         map_blend(ip, c);
     if (ip->prim_blend == SCENE_BLEND_OPAQUE)

@@ -54,9 +54,11 @@ void interp_relit_flush(interp *ip)
         ip->scene->failed = true;
         return;
     }
+    interp_lit_prep lp;
+    interp_relit_prepare(ip, &lp);
     for (size_t k = k0; k < n; k++) {
         double peak;
-        interp_relit_colour(ip, &ip->relit_in[k], ip->relit_col[k], &peak);
+        interp_relit_colour(ip, &lp, &ip->relit_in[k], ip->relit_col[k], &peak);
         if (k == 0)
             ip->relit_over = false;
         /* GL clamps each channel to 1 (2.14.8); a little past it is rounding. */
@@ -111,6 +113,8 @@ long interp_relit_vertices(interp *ip, uint32_t n)
     if (!v)
         return -1;
     const scene_vertex *src = s->verts + ip->prim_first;
+    interp_lit_prep lp;
+    interp_relit_prepare(ip, &lp);
     /* Only the moved faces' corners are lit: the other copies are in no
      * face, so their colour is never written. */
     for (uint32_t i = 0; i < n; i++) {
@@ -118,8 +122,7 @@ long interp_relit_vertices(interp *ip, uint32_t n)
         if (i < ip->relit_made) {
             memcpy(v[i].color, ip->relit_col[i], sizeof v[i].color);
         } else if (ip->relit_need[i]) {
-            double peak;
-            interp_relit_colour(ip, &ip->relit_in[i], v[i].color, &peak);
+            interp_relit_colour(ip, &lp, &ip->relit_in[i], v[i].color, NULL);
         }
     }
     long first = (long)s->nverts;
