@@ -227,6 +227,8 @@ void interp_destroy(interp *ip)
     tr_free(ip->relit_col);
     tr_free(ip->relit_in);
     tr_free(ip->relit_need);
+    tr_free(ip->relit_tris);
+    tr_free(ip->relit_copy);
     tr_free(ip->fogz);
     tr_free(ip->vmat.mats);
     tr_free(ip->clipv);

@@ -154,6 +154,10 @@ struct interp {
     size_t relit_made;     /* of those, the first ones with their colour in relit_col */
     uint8_t *relit_need;   /* vertex k is a corner of a face left for the GL-lit pass */
     size_t cap_relit_need;
+    uint32_t (*relit_tris)[4]; /* those faces' triangles: corners and provoking vertex */
+    size_t nrelit_tris, cap_relit_tris;
+    uint32_t *relit_copy;  /* pool index of a marked vertex's GL-lit copy */
+    size_t cap_relit_copy;
     bool relit_over;       /* some vertex was lit past 1 in a channel */
     bool prim_relit;       /* the look being made is of GL-lit faces */
     double *fogz;          /* GL's eye z of each vertex, when fogged (interp_fogbehind.c) */
@@ -782,10 +786,10 @@ void interp_lit_prepared(const interp *ip, const interp_lit_prep *lp, const doub
  * lit colour and its unclamped peak (peak may be NULL);
  * _split: at glEnd, which faces go to a GL-lit mesh (0: none,
  * INTERP_RELIT_BACK: back faces, INTERP_RELIT_ALL: all); _need_clear:
- * no vertex marked in relit_need yet (false: out of memory); _vertices: the
- * primitive's n vertices copied with their GL colours (made only for the
- * marked ones, the others unused by any face), returning the
- * copies' first index (or -1 on failure); _done: forget the primitive. */
+ * no vertex marked in relit_need, no face kept in relit_tris yet (false:
+ * out of memory); _vertices: the marked ones of the primitive's n
+ * vertices copied with their GL colours, relit_copy[k] the pool index of
+ * vertex k's copy (false on failure); _done: forget the primitive. */
 /* Fog of primitives reaching behind the eye (interp_fogbehind.c). _check:
  * at glEnd of n pool vertices (before they move to eye space), notes a
  * fogged line or unfilled polygon with vertices both behind and in front
@@ -807,7 +811,7 @@ void interp_relit_colour(interp *ip, const interp_lit_prep *lp, const interp_rel
                          float c[4], double *peak);
 int interp_relit_split(interp *ip, const scene_look *look);
 bool interp_relit_need_clear(interp *ip, uint32_t n);
-long interp_relit_vertices(interp *ip, uint32_t n);
+bool interp_relit_vertices(interp *ip, uint32_t n);
 void interp_relit_done(interp *ip);
 
 /* The colour a surface vertex carries into the scene (scene_vertex.color):

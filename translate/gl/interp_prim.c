@@ -596,13 +596,15 @@ typedef struct assembly {
     bool stipple;       /* glLineStipple applies (interp_stipple.c) */
     uint64_t stipple_s; /* GL's stipple counter */
     int relit;          /* INTERP_RELIT_*: filled faces lit as GL does (interp_relit.c) */
-    bool relit_pass;    /* drawing those faces (into the GL-lit mesh) */
-    uint32_t relit_deferred; /* faces left for that pass */
     bool fog_split;     /* triangles behind the eye get their own fog (interp_fogbehind.c) */
     const scene_look *look; /* the mesh's look, and where its vertices are, for fog_split */
     const mat4 *to_eye;
     bool in_eye;
     scene_mesh *mesh;
+    /* The GL-lit pass's triangles take the copies of their corners
+     * (interp_relit_vertices): pool index of vertex k's copy; NULL for
+     * the vertices themselves (base + k). */
+    const uint32_t *copy;
 } assembly;
 
 /* The provoking vertex of a primitive whose last and first vertices are
@@ -811,19 +813,27 @@ static bool compute_clip(interp *ip, uint32_t n)
  * eye, the signed area of the projection; otherwise the sign of the
  * homogeneous determinant of the first three vertices, which gives the
  * winding of the visible, clipped part. idx are relative to the base. */
+static inline bool is_ccw3(const interp *ip, uint32_t i0, uint32_t i1, uint32_t i2)
+{
+    double (*c)[5] = ip->clipv;
+    const double *a = c[i0], *b = c[i1], *d = c[i2];
+    if (a[2] > 0 && b[2] > 0 && d[2] > 0) { /* is_ccw's loop unrolled, same sums */
+        double area = 0;
+        area += a[3] * b[4] - b[3] * a[4];
+        area += b[3] * d[4] - d[3] * b[4];
+        area += d[3] * a[4] - a[3] * d[4];
+        return area > 0;
+    }
+    double det = a[0] * (b[1] * d[2] - b[2] * d[1]) - a[1] * (b[0] * d[2] - b[2] * d[0]) +
+                 a[2] * (b[0] * d[1] - b[1] * d[0]);
+    return det > 0;
+}
+
 static bool is_ccw(const interp *ip, const uint32_t *idx, int n)
 {
     double (*c)[5] = ip->clipv;
-    if (n == 3) { /* strips and triangles: the loops below unrolled, same sums */
-        const double *a = c[idx[0]], *b = c[idx[1]], *d = c[idx[2]];
-        if (a[2] > 0 && b[2] > 0 && d[2] > 0) {
-            double area = 0;
-            area += a[3] * b[4] - b[3] * a[4];
-            area += b[3] * d[4] - d[3] * b[4];
-            area += d[3] * a[4] - a[3] * d[4];
-            return area > 0;
-        }
-    }
+    if (n == 3) /* strips and triangles */
+        return is_ccw3(ip, idx[0], idx[1], idx[2]);
     bool all_front = true;
     for (int k = 0; k < n; k++)
         if (!(c[idx[k]][2] > 0))
@@ -862,10 +872,29 @@ static void fill_tri(assembly *as, uint32_t a, uint32_t b, uint32_t c, uint32_t 
         if (!as->mesh)
             return;
     }
+    const uint32_t *cp = as->copy;
+    uint32_t pa = cp ? cp[a] : as->base + a, pb = cp ? cp[b] : as->base + b;
+    uint32_t pc = cp ? cp[c] : as->base + c, pp = cp ? cp[provoking] : as->base + provoking;
     if (as->swap)
-        scene_add_tri(as->s, as->base + a, as->base + c, as->base + b, as->base + provoking);
+        scene_add_tri(as->s, pa, pc, pb, pp);
     else
-        scene_add_tri(as->s, as->base + a, as->base + b, as->base + c, as->base + provoking);
+        scene_add_tri(as->s, pa, pb, pc, pp);
+}
+
+/* Keeps a filled triangle for the GL-lit pass (interp_relit.c): its
+ * corners get GL's colour there, and it goes to that pass's mesh. */
+static void relit_keep(assembly *as, uint32_t a, uint32_t b, uint32_t c, uint32_t provoking)
+{
+    interp *ip = as->ip;
+    if (ip->nrelit_tris >= ip->cap_relit_tris &&
+        tr_grow((void **)&ip->relit_tris, &ip->cap_relit_tris, ip->nrelit_tris + 1,
+                sizeof *ip->relit_tris) != 0) {
+        as->s->failed = true;
+        return;
+    }
+    uint32_t *t = ip->relit_tris[ip->nrelit_tris++];
+    t[0] = a, t[1] = b, t[2] = c, t[3] = provoking;
+    ip->relit_need[a] = ip->relit_need[b] = ip->relit_need[c] = ip->relit_need[provoking] = 1;
 }
 
 /* One polygon (triangle, quad or GL_POLYGON) with vertices idx (relative),
@@ -892,17 +921,11 @@ static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t prov
             interp_note(ip, DIAG_NOTE_RELIT_SPECULAR);
     } else if (as->relit && mode == GL_FILL) {
         bool gl_lit = as->relit == INTERP_RELIT_ALL || !front;
-        if (gl_lit != as->relit_pass) {
-            as->relit_deferred += gl_lit;
-            if (gl_lit) {
-                for (int k = 0; k < n; k++)
-                    ip->relit_need[idx[k]] = 1;
-                ip->relit_need[provoking] = 1;
-            }
+        if (gl_lit) {
+            for (int k = 1; k + 1 < n; k++)
+                relit_keep(as, idx[0], idx[k], idx[k + 1], provoking);
             return;
         }
-    } else if (as->relit_pass) {
-        return;
     }
     if (mode == GL_FILL) {
         for (int k = 1; k + 1 < n; k++)
@@ -1021,6 +1044,46 @@ static void assemble_filled(assembly *as, GLenum mode, uint32_t n)
         break;
     default:
         break;
+    }
+}
+
+/* emit_polygon for one triangle when both faces are filled, every vertex
+ * finite and facing is needed (culling, or back faces lit as GL does). */
+static inline void facing_tri(assembly *as, uint32_t a, uint32_t b, uint32_t c,
+                              uint32_t provoking)
+{
+    bool front = is_ccw3(as->ip, a, b, c) != as->swap;
+    if (front ? as->cull_front : as->cull_back)
+        return;
+    if (as->relit && (as->relit == INTERP_RELIT_ALL || !front))
+        relit_keep(as, a, b, c, provoking);
+    else
+        fill_tri(as, a, b, c, provoking);
+}
+
+/* The triangle modes through facing_tri: one face test per triangle, in
+ * assemble_polygons' order. */
+static bool assemble_facing(assembly *as, GLenum mode, uint32_t n)
+{
+    switch (mode) {
+    case GL_TRIANGLES:
+        for (uint32_t i = 0; i + 3 <= n; i += 3)
+            facing_tri(as, i, i + 1, i + 2, pv(as, i + 2, i));
+        return true;
+    case GL_TRIANGLE_STRIP:
+        for (uint32_t i = 0; i + 3 <= n; i++) {
+            if (i % 2 == 0)
+                facing_tri(as, i, i + 1, i + 2, pv(as, i + 2, i));
+            else
+                facing_tri(as, i + 1, i, i + 2, pv(as, i + 2, i));
+        }
+        return true;
+    case GL_TRIANGLE_FAN:
+        for (uint32_t i = 0; i + 3 <= n; i++)
+            facing_tri(as, 0, i + 1, i + 2, pv(as, i + 2, i + 1));
+        return true;
+    default:
+        return false;
     }
 }
 
@@ -1245,22 +1308,25 @@ static void end_primitive(interp *ip)
     as.relit = interp_relit_split(ip, &look);
     if (as.relit && as.relit != INTERP_RELIT_PROBE && !interp_relit_need_clear(ip, n))
         as.relit = 0;
-    if (!as.facing && !as.check_bad && a->polygon.mode[0] == GL_FILL && !as.relit)
+    bool filled = !as.check_bad && a->polygon.mode[0] == GL_FILL;
+    if (filled && !as.facing && !as.relit)
         assemble_filled(&as, mode, n);
-    else
+    else if (!(filled && as.facing && a->polygon.mode[1] == GL_FILL && as.relit != INTERP_RELIT_PROBE &&
+               assemble_facing(&as, mode, n)))
         assemble_polygons(&as, mode, n);
-    if (as.relit_deferred > 0) {
-        long b = interp_relit_vertices(ip, n);
-        if (b >= 0) {
+    if (as.relit && as.relit != INTERP_RELIT_PROBE && ip->nrelit_tris > 0) {
+        if (interp_relit_vertices(ip, n)) {
             ip->prim_relit = true;
             scene_look gl_look = interp_current_look(ip);
             ip->prim_relit = false;
             as.mesh = scene_mesh_for(s, ip->prim_in_eye ? &id : &ip->prim_to_eye, ip->prim_in_eye,
                                      &gl_look);
-            as.base = (uint32_t)b;
+            as.copy = ip->relit_copy;
             as.look = &gl_look;
-            as.relit_pass = true;
-            assemble_polygons(&as, mode, n);
+            for (size_t k = 0; k < ip->nrelit_tris; k++) {
+                const uint32_t *t = ip->relit_tris[k];
+                fill_tri(&as, t[0], t[1], t[2], t[3]);
+            }
         }
     }
     interp_relit_done(ip);

@@ -98,36 +98,48 @@ bool interp_relit_need_clear(interp *ip, uint32_t n)
         return false;
     }
     memset(ip->relit_need, 0, n);
+    ip->nrelit_tris = 0;
     return true;
 }
 
-long interp_relit_vertices(interp *ip, uint32_t n)
+bool interp_relit_vertices(interp *ip, uint32_t n)
 {
     scene *s = ip->scene;
     if (n > ip->relit_pending || n > ip->cap_relit_need || s->nverts != ip->prim_first + n)
-        return -1;
+        return false;
+    if (n > ip->cap_relit_copy &&
+        tr_grow((void **)&ip->relit_copy, &ip->cap_relit_copy, n, sizeof *ip->relit_copy) != 0) {
+        s->failed = true;
+        return false;
+    }
+    /* Only the moved faces' corners are copied: the others would be in no
+     * face (half the pool's vertices, on a closed surface). */
+    const uint8_t *need = ip->relit_need;
+    uint32_t m = 0;
     for (uint32_t i = 0; i < n; i++)
+        m += need[i];
+    for (uint32_t i = 0; i < m; i++)
         if (!interp_budget_vertex(ip))
-            return -1;
-    scene_vertex *v = scene_reserve_vertices(s, n);
+            return false;
+    scene_vertex *v = scene_reserve_vertices(s, m);
     if (!v)
-        return -1;
+        return false;
     const scene_vertex *src = s->verts + ip->prim_first;
     interp_lit_prep lp;
     interp_relit_prepare(ip, &lp);
-    /* Only the moved faces' corners are lit: the other copies are in no
-     * face, so their colour is never written. */
+    uint32_t first = (uint32_t)s->nverts, j = 0;
     for (uint32_t i = 0; i < n; i++) {
-        v[i] = src[i];
-        if (i < ip->relit_made) {
-            memcpy(v[i].color, ip->relit_col[i], sizeof v[i].color);
-        } else if (ip->relit_need[i]) {
-            interp_relit_colour(ip, &lp, &ip->relit_in[i], v[i].color, NULL);
-        }
+        if (!need[i])
+            continue;
+        v[j] = src[i];
+        if (i < ip->relit_made)
+            memcpy(v[j].color, ip->relit_col[i], sizeof v[j].color);
+        else
+            interp_relit_colour(ip, &lp, &ip->relit_in[i], v[j].color, NULL);
+        ip->relit_copy[i] = first + j++;
     }
-    long first = (long)s->nverts;
-    scene_commit_vertices(s, n);
-    return first;
+    scene_commit_vertices(s, m);
+    return true;
 }
 
 void interp_relit_done(interp *ip)
@@ -135,4 +147,5 @@ void interp_relit_done(interp *ip)
     ip->relit_over = false;
     ip->prim_relit = false;
     ip->relit_pending = ip->relit_made = 0;
+    ip->nrelit_tris = 0;
 }
