@@ -246,6 +246,7 @@ void interp_reset(interp *ip)
     interp_eval_free(ip);
     interp_nurbs_free(ip);
     ip->in_begin = false;
+    ip->prim_plain = 0;
     ip->camera_fixed = false;
     ip->frame_begin = false;
     ip->frame_name[0] = '\0';

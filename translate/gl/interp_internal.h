@@ -119,6 +119,11 @@ struct interp {
     bool in_begin;
     GLenum prim_mode;
     bool prim_skip;     /* vertices are dropped (no scene, or a bad transform) */
+    /* The open primitive's vertices take interp_add_vertex's short path:
+     * filled, no texture unit, alpha test, colour sum, fog coordinate or
+     * mapped blend; PRIM_PLAIN_LIT: lit by the writer (surface colour). */
+    uint8_t prim_plain;
+    bool prim_plain_relit; /* and GL's lit colour may be wanted (interp_relit_defer) */
     size_t prim_first;  /* first vertex of the primitive in scene->verts */
     mat4 prim_to_eye;   /* object -> camera eye space for this primitive */
     /* lit_line_colour's last modelview and its inverse (ok: invertible),
@@ -424,7 +429,28 @@ static inline bool interp_budget_after(interp *ip, uint64_t offset)
         return !interp_budget_over(ip, offset);
     return true;
 }
+/* interp_budget_after for a command that changed none of the scene's
+ * counts (a current normal, colour or texture coordinate), when the check
+ * after the command before it passed: only the command count can be over. */
+static inline bool interp_budget_after_attr(interp *ip, uint64_t offset)
+{
+    if ((ip->cmds_run & 1023) == 0 && !ip->heavy && ip->heavy_fn)
+        interp_heavy_check(ip);
+    if (ip->cut || ++ip->cmds_run > INTERP_LIMIT(ip, COMMANDS))
+        return !interp_budget_over(ip, offset);
+    return true;
+}
 bool interp_budget_vertex(interp *ip);
+/* interp_budget_vertex with its common case (room left) inline. */
+static inline bool interp_budget_vertex_fast(interp *ip)
+{
+    if (!ip->cut && ip->assembled < INTERP_LIMIT(ip, ASSEMBLED) &&
+        (!ip->scene || ip->scene->nverts < INTERP_LIMIT(ip, VERTICES))) {
+        ip->assembled++;
+        return true;
+    }
+    return interp_budget_vertex(ip);
+}
 bool interp_budget_texels(interp *ip, uint64_t bytes);
 
 
@@ -674,6 +700,8 @@ void interp_scissor_look(const interp *ip, scene_look *look);
  * count); notes the cases drawn approximately. */
 #define INTERP_ALPHA_FAIL 2
 uint8_t interp_alpha_vertex(interp *ip, size_t k, float a);
+/* Whether the alpha test discards anything now (enabled, not GL_ALWAYS). */
+bool interp_alpha_testing(const interp *ip);
 bool interp_alpha_face(interp *ip, const uint32_t *idx, int n, int32_t texture);
 bool interp_scissor_clear(interp *ip);
 void interp_scissor_end_frame(interp *ip);

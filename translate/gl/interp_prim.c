@@ -22,6 +22,9 @@
 
 #include "talloc.h"
 
+#define PRIM_PLAIN_UNLIT 1 /* interp_internal.h, prim_plain */
+#define PRIM_PLAIN_LIT 2
+
 /* ---- Current attributes ------------------------------------------------------ */
 
 /* GL 1.x table 2.9: integer colour and normal components map to [0, 1] or
@@ -338,6 +341,7 @@ static void begin_mode(interp *ip, GLenum mode)
     ip->in_begin = true;
     ip->prim_mode = mode;
     ip->prim_skip = true;
+    ip->prim_plain = 0;
     interp_vmat_begin(ip);
     ip->prim_color_sum = ip->prim_fog_vertex = false;
     if (!ip->scene || !interp_render_mode_draws(ip))
@@ -356,6 +360,14 @@ static void begin_mode(interp *ip, GLenum mode)
     ip->prim_blend = blend_mode(ip, mode);
     interp_draw_units(ip);
     interp_fogsec_begin(ip, mode);
+    const uint8_t *c = ip->st.a.caps;
+    bool lit = c[INTERP_CAP_LIGHTING];
+    ip->prim_plain = 0;
+    if (mode > GL_LINE_STRIP && !(lit && interp_vertex_lit(ip)) && ip->draw_unit[0] < 0 &&
+        !ip->prim_color_sum && !ip->prim_fog_vertex && !ip->prim_blend_mapped &&
+        !interp_alpha_testing(ip))
+        ip->prim_plain = lit ? PRIM_PLAIN_LIT : PRIM_PLAIN_UNLIT;
+    ip->prim_plain_relit = interp_relit_wanted(ip);
 }
 
 void interp_begin(interp *ip, const rgl_cmd *cmd)
@@ -370,7 +382,7 @@ void interp_begin(interp *ip, const rgl_cmd *cmd)
 
 /* ---- Vertices ---------------------------------------------------------------- */
 
-void interp_surface_colour(const interp *ip, float out[4])
+static inline void surface_colour(const interp *ip, float out[4])
 {
     const gl_attribs *a = &ip->st.a;
     const float *c = a->current.color;
@@ -394,6 +406,8 @@ void interp_surface_colour(const interp *ip, float out[4])
     else if (ip->prim_blend == SCENE_BLEND_INVISIBLE)
         out[3] = 0;
 }
+
+void interp_surface_colour(const interp *ip, float out[4]) { surface_colour(ip, out); }
 
 /* GL's lit colour at a vertex in object space, with its normal in GL's own
  * eye space (2.11.3: the inverse transpose of the modelview, normalised
@@ -482,8 +496,64 @@ void interp_lit_point_colour(interp *ip, double x, double y, double z, float out
     lit_line_colour(ip, x, y, z, out, NULL);
 }
 
+/* interp_add_vertex for a plain primitive (begin_mode's prim_plain) and
+ * w = 1: the same vertex, without the tests that cannot pass and with the
+ * common cases inline. */
+static void add_vertex_plain(interp *ip, double x, double y, double z)
+{
+    scene *s = ip->scene;
+    size_t k = s->nverts - ip->prim_first;
+    if (!interp_budget_vertex_fast(ip))
+        return;
+    scene_vertex *v;
+    if (s->nverts < s->cap_verts && s->nverts < SCENE_MAX_VERTICES && !s->failed)
+        v = s->verts + s->nverts;
+    else if (!(v = scene_reserve_vertices(s, 1)))
+        return;
+    if (k >= ip->cap_edge && tr_grow((void **)&ip->edge, &ip->cap_edge, k + 1, 1) != 0) {
+        s->failed = true;
+        return;
+    }
+    const gl_attribs *a = &ip->st.a;
+    v->pos[0] = (float)x;
+    v->pos[1] = (float)y;
+    v->pos[2] = (float)z;
+    memcpy(v->normal, a->current.normal, sizeof v->normal);
+    if (ip->prim_plain == PRIM_PLAIN_LIT) {
+        surface_colour(ip, v->color);
+    } else {
+        for (int i = 0; i < 4; i++)
+            v->color[i] = clamp01(a->current.color[i]);
+        if (ip->prim_blend == SCENE_BLEND_OPAQUE)
+            v->color[3] = 1;
+        else if (ip->prim_blend == SCENE_BLEND_INVISIBLE)
+            v->color[3] = 0;
+    }
+    if (a->current.fog_coord != ip->prim_coord0) /* interp_fogsec_track */
+        ip->prim_coord_same = false;
+    if (ip->prim_plain_relit)
+        interp_relit_defer(ip, k, x, y, z);
+    float q = a->current.texcoord[3];
+    v->tex1[0] = v->tex1[1] = 0;
+    if (q == 1 || q == 0 || !isfinite(q)) {
+        v->tex[0] = a->current.texcoord[0];
+        v->tex[1] = a->current.texcoord[1];
+    } else {
+        v->tex[0] = a->current.texcoord[0] / q;
+        v->tex[1] = a->current.texcoord[1] / q;
+    }
+    ip->edge[k] = (uint8_t)a->current.edge_flag;
+    scene_commit_vertices(s, 1);
+    if (ip->vmat.changed)
+        interp_vmat_vertex(ip);
+}
+
 void interp_add_vertex(interp *ip, double x, double y, double z, double w)
 {
+    if (ip->prim_plain && w == 1) {
+        add_vertex_plain(ip, x, y, z);
+        return;
+    }
     scene *s = ip->scene;
     size_t k = s->nverts - ip->prim_first;
     if (!interp_budget_vertex(ip))
@@ -1226,6 +1296,7 @@ static void end_primitive(interp *ip)
     scene *s = ip->scene;
     const gl_attribs *a = &ip->st.a;
     ip->in_begin = false;
+    ip->prim_plain = 0;
     if (ip->prim_skip || !s)
         return;
     if (s->nverts < ip->prim_first)
@@ -1363,6 +1434,7 @@ void interp_abort_begin(interp *ip)
     if (!ip->in_begin)
         return;
     ip->in_begin = false;
+    ip->prim_plain = 0;
     ip->prim_color_sum = ip->prim_fog_vertex = false;
     if (ip->scene && !ip->prim_skip && ip->scene->nverts >= ip->prim_first)
         ip->scene->nverts = ip->prim_first;
