@@ -392,25 +392,36 @@ rgl_status interp_run(interp *ip, const uint8_t *data, size_t size, uint64_t bas
     rgl_cmd cmd;
     rgl_status st = RGL_END;
 
+    /* The scene's counts passed the budget after the last command, and
+     * the commands since changed none it checks: then after a call of
+     * fast_command only the command count needs checking. Of those calls
+     * only glVertex adds to a count, nverts, which interp_add_vertex keeps
+     * within its limit (interp_budget_vertex). */
+    bool counts_ok = false;
     rgl_cmd_iter_init(&it, data, size, base_offset);
-    for (;;) {
-        if (ip->cut)
-            break;
-        if (it.pos < it.end) {
-            const uint8_t *at = it.pos;
-            size_t n = fast_command(ip, at, (size_t)(it.end - at));
-            if (n) {
-                it.pos += n;
-                it.index++;
-                if (!interp_budget_after(ip, base_offset + (uint64_t)(at - data)))
-                    break;
-                continue;
-            }
+    while (!ip->cut) {
+        /* A run of such calls, with the iterator in locals. */
+        const uint8_t *p = it.pos, *end = it.end;
+        uint64_t k = 0;
+        size_t n;
+        bool ok = true;
+        while (p < end && (n = fast_command(ip, p, (size_t)(end - p))) != 0) {
+            uint64_t offset = base_offset + (uint64_t)(p - data);
+            p += n;
+            k++;
+            ok = counts_ok ? interp_budget_after_attr(ip, offset)
+                           : (counts_ok = interp_budget_after(ip, offset));
+            if (!ok)
+                break;
         }
+        it.pos = p;
+        it.index += k;
+        if (!ok)
+            break;
         if ((st = rgl_cmd_next(&it, &cmd)) != RGL_OK)
             break;
         interp_exec(ip, &cmd);
-        if (!interp_budget_after(ip, cmd.offset))
+        if (!(counts_ok = interp_budget_after(ip, cmd.offset)))
             break;
     }
     if (ip->cut)

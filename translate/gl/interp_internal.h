@@ -430,7 +430,7 @@ static inline bool interp_budget_after(interp *ip, uint64_t offset)
     return true;
 }
 /* interp_budget_after for a command that changed none of the scene's
- * counts (a current normal, colour or texture coordinate), when the check
+ * counts it checks (or kept them within their limits), when the check
  * after the command before it passed: only the command count can be over. */
 static inline bool interp_budget_after_attr(interp *ip, uint64_t offset)
 {

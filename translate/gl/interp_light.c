@@ -50,6 +50,14 @@ void interp_color_material_update(interp *ip)
     gl_attribs *a = &ip->st.a;
     int faces = face_mask(a->lighting.color_material_face);
     const float *c = a->current.color;
+    if (faces == 3 && a->lighting.color_material_mode == GL_AMBIENT_AND_DIFFUSE) {
+        /* GL's default, at every glColor of a lit draw: straight through */
+        memcpy(a->lighting.material[0].ambient, c, 4 * sizeof *c);
+        memcpy(a->lighting.material[0].diffuse, c, 4 * sizeof *c);
+        memcpy(a->lighting.material[1].ambient, c, 4 * sizeof *c);
+        memcpy(a->lighting.material[1].diffuse, c, 4 * sizeof *c);
+        return;
+    }
     for (int f = 0; f < 2; f++) {
         if (!(faces & (1 << f)))
             continue;
