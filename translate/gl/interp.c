@@ -326,6 +326,34 @@ void interp_exec(interp *ip, const rgl_cmd *cmd)
  * (tests/translate/test_interp.c checks it). */
 static inline float wire_f32(const uint8_t *p) { return rgl_bits_f32(rgl_get_u32(p)); }
 
+/* The current normal and colour are written whole (memcpy of a local),
+ * not one float at a time: their readers (the vertex, the material under
+ * GL_COLOR_MATERIAL) copy them in wider loads, which stall on narrower
+ * stores just made (store forwarding), at every vertex. */
+static inline void set_normal(gl_attribs *a, const uint8_t *p)
+{
+    float n[3] = {wire_f32(p), wire_f32(p + 4), wire_f32(p + 8)};
+    memcpy(a->current.normal, n, sizeof n);
+}
+
+static inline void set_colour(interp *ip, const float c[4])
+{
+    gl_attribs *a = &ip->st.a;
+    memcpy(a->current.color, c, 4 * sizeof *c);
+    if (!a->caps[INTERP_CAP_COLOR_MATERIAL])
+        return;
+    if (a->lighting.color_material_face == GL_FRONT_AND_BACK &&
+        a->lighting.color_material_mode == GL_AMBIENT_AND_DIFFUSE) {
+        /* GL's default, interp_color_material_update's first case */
+        for (int f = 0; f < 2; f++) {
+            memcpy(a->lighting.material[f].ambient, c, 4 * sizeof *c);
+            memcpy(a->lighting.material[f].diffuse, c, 4 * sizeof *c);
+        }
+    } else {
+        interp_color_material_update(ip);
+    }
+}
+
 static size_t fast_command(interp *ip, const uint8_t *p, size_t left)
 {
     gl_attribs *a = &ip->st.a;
@@ -343,8 +371,7 @@ static size_t fast_command(interp *ip, const uint8_t *p, size_t left)
     case RGL_OP_Normal3f:
         if (left < 13)
             return 0;
-        for (int k = 0; k < 3; k++)
-            a->current.normal[k] = wire_f32(p + 1 + 4 * k);
+        set_normal(a, p + 1);
         return 13;
     case RGL_OP_TexCoord2f:
         if (left < 9)
@@ -359,12 +386,10 @@ static size_t fast_command(interp *ip, const uint8_t *p, size_t left)
         size_t n = p[0] == RGL_OP_Color3f ? 3 : 4;
         if (left < 1 + 4 * n)
             return 0;
-        for (size_t k = 0; k < n; k++)
-            a->current.color[k] = wire_f32(p + 1 + 4 * k);
-        if (n == 3)
-            a->current.color[3] = 1;
-        if (a->caps[INTERP_CAP_COLOR_MATERIAL])
-            interp_color_material_update(ip);
+        float c[4] = {wire_f32(p + 1), wire_f32(p + 5), wire_f32(p + 9), 1};
+        if (n == 4)
+            c[3] = wire_f32(p + 13);
+        set_colour(ip, c);
         return 1 + 4 * n;
     }
     case RGL_OP_Color3ub:
@@ -372,12 +397,10 @@ static size_t fast_command(interp *ip, const uint8_t *p, size_t left)
         size_t n = p[0] == RGL_OP_Color3ub ? 3 : 4;
         if (left < 1 + n)
             return 0;
+        float c[4] = {1, 1, 1, 1};
         for (size_t k = 0; k < n; k++)
-            a->current.color[k] = (float)(p[1 + k] / 255.0);
-        if (n == 3)
-            a->current.color[3] = 1;
-        if (a->caps[INTERP_CAP_COLOR_MATERIAL])
-            interp_color_material_update(ip);
+            c[k] = (float)(p[1 + k] / 255.0);
+        set_colour(ip, c);
         return 1 + n;
     }
     default:
@@ -504,6 +527,11 @@ void interp_diag(interp *ip, diag_kind kind, const char *fmt, ...)
 void interp_clear_notes(interp *ip) { ip->notes_seen = 0; }
 
 void interp_frame_note(interp *ip, diag_kind kind) { interp_note(ip, kind); }
+
+bool interp_note_said(const interp *ip, diag_kind kind)
+{
+    return !ip->log || (ip->notes_seen & (1ull << (kind - DIAG_FIRST_NOTE)));
+}
 
 void interp_note(interp *ip, diag_kind kind)
 {

@@ -338,6 +338,9 @@ void interp_diag(interp *ip, diag_kind kind, const char *fmt, ...);
 
 /* Logs a NOTE_* kind once per frame (the CLI then says it once per run). */
 void interp_note(interp *ip, diag_kind kind);
+/* Whether interp_note(kind) would log nothing now (said in this frame, or
+ * no log): a costly test for a note may be skipped then. */
+bool interp_note_said(const interp *ip, diag_kind kind);
 
 /* glTexImage1D/2D's effect on the bound texture, pixels from resource id
  * (0: undefined contents), and glTexSubImage1D/2D's (dims 1 or 2): for

@@ -1266,7 +1266,7 @@ scene_look interp_current_look(interp *ip)
 static void check_normals(interp *ip, uint32_t n)
 {
     const gl_attribs *a = &ip->st.a;
-    if (a->caps[INTERP_CAP_NORMALIZE] || ip->prim_in_eye)
+    if (a->caps[INTERP_CAP_NORMALIZE] || ip->prim_in_eye || interp_note_said(ip, DIAG_NOTE_NORMALS))
         return;
     mat4 inv;
     if (!mat4_invert(interp_matrix(ip, INTERP_MV), &inv))
@@ -1278,12 +1278,17 @@ static void check_normals(interp *ip, uint32_t n)
             return;
     }
     const scene_vertex *v = ip->scene->verts + ip->prim_first;
+    const double *m = inv.m;
     for (uint32_t i = 0; i < n; i++) {
+        /* In scalars, and no division by an r of 1: an array stored and
+         * read back, and three divisions, were most of this loop's time. */
         const float *cn = v[i].normal;
-        double e[3];
-        for (int k = 0; k < 3; k++)
-            e[k] = (cn[0] * inv.m[k * 4 + 0] + cn[1] * inv.m[k * 4 + 1] + cn[2] * inv.m[k * 4 + 2]) / r;
-        double len2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+        double e0 = cn[0] * m[0] + cn[1] * m[1] + cn[2] * m[2];
+        double e1 = cn[0] * m[4] + cn[1] * m[5] + cn[2] * m[6];
+        double e2 = cn[0] * m[8] + cn[1] * m[9] + cn[2] * m[10];
+        if (r != 1)
+            e0 /= r, e1 /= r, e2 /= r;
+        double len2 = e0 * e0 + e1 * e1 + e2 * e2;
         if (fabs(len2 - 1) > 2e-3) {
             interp_note(ip, DIAG_NOTE_NORMALS);
             return;
