@@ -429,10 +429,13 @@ rgl_status interp_run(interp *ip, const uint8_t *data, size_t size, uint64_t bas
         size_t n;
         bool ok = true;
         while (p < end && (n = fast_command(ip, p, (size_t)(end - p))) != 0) {
-            uint64_t offset = base_offset + (uint64_t)(p - data);
+            const uint8_t *at = p;
             p += n;
             k++;
-            ok = counts_ok ? interp_budget_after_attr(ip, offset)
+            if (counts_ok && interp_budget_count(ip))
+                continue;
+            uint64_t offset = base_offset + (uint64_t)(at - data);
+            ok = counts_ok ? !interp_budget_over(ip, offset)
                            : (counts_ok = interp_budget_after(ip, offset));
             if (!ok)
                 break;

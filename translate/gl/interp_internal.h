@@ -8,6 +8,7 @@
 #define RGL_INTERP_INTERNAL_H
 
 #include <math.h>
+#include <string.h>
 
 #include "interp.h"
 #include "unrecorded.h"
@@ -434,14 +435,13 @@ static inline bool interp_budget_after(interp *ip, uint64_t offset)
 }
 /* interp_budget_after for a command that changed none of the scene's
  * counts it checks (or kept them within their limits), when the check
- * after the command before it passed: only the command count can be over. */
-static inline bool interp_budget_after_attr(interp *ip, uint64_t offset)
+ * after the command before it passed: only the command count can be over.
+ * True when it is not; else interp_budget_over(ip, offset) decides. */
+static inline bool interp_budget_count(interp *ip)
 {
     if ((ip->cmds_run & 1023) == 0 && !ip->heavy && ip->heavy_fn)
         interp_heavy_check(ip);
-    if (ip->cut || ++ip->cmds_run > INTERP_LIMIT(ip, COMMANDS))
-        return !interp_budget_over(ip, offset);
-    return true;
+    return !ip->cut && ++ip->cmds_run <= INTERP_LIMIT(ip, COMMANDS);
 }
 bool interp_budget_vertex(interp *ip);
 /* interp_budget_vertex with its common case (room left) inline. */
@@ -811,6 +811,7 @@ void interp_lit_prepared(const interp *ip, const interp_lit_prep *lp, const doub
  * GL_MODULATE surfaces lit past white (GL clamps before the texture).
  * _wanted: the open filled primitive's vertices need GL's lit colour;
  * _defer: keeps vertex k's inputs (the current colour and normal) for
+ * (inline, at every vertex; _grow: room for vertex k, false when none)
  * _flush, which makes the kept vertices' colours (at a change of material
  * between vertices, and when glEnd needs them); _prepare: GL's state for
  * _colour (interp_lit_prepare), which gives one vertex's (post-processed)
@@ -835,7 +836,22 @@ scene_mesh *interp_fog_behind_mesh(interp *ip, const scene_look *look, const mat
 #define INTERP_RELIT_ALL 2
 #define INTERP_RELIT_PROBE 3 /* back faces noted (NOTE_RELIT_SPECULAR), drawn as they are */
 bool interp_relit_wanted(const interp *ip);
-void interp_relit_defer(interp *ip, size_t k, double x, double y, double z);
+bool interp_relit_grow(interp *ip, size_t k);
+static inline void interp_relit_defer(interp *ip, size_t k, double x, double y, double z)
+{
+    if (k == 0)
+        ip->relit_pending = ip->relit_made = 0;
+    if (k != ip->relit_pending)
+        return; /* an earlier vertex was not kept: _vertices will refuse */
+    if (k >= ip->cap_relit_in && !interp_relit_grow(ip, k))
+        return;
+    const gl_attribs *a = &ip->st.a;
+    interp_relit_in *in = &ip->relit_in[k];
+    in->p[0] = x, in->p[1] = y, in->p[2] = z;
+    memcpy(in->normal, a->current.normal, sizeof in->normal);
+    memcpy(in->colour, a->current.color, sizeof in->colour);
+    ip->relit_pending = k + 1;
+}
 void interp_relit_flush(interp *ip);
 void interp_relit_prepare(interp *ip, interp_lit_prep *lp);
 void interp_relit_colour(interp *ip, const interp_lit_prep *lp, const interp_relit_in *in,

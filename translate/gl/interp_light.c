@@ -519,10 +519,14 @@ void interp_lit_prepared(const interp *ip, const interp_lit_prep *lp, const doub
                     h[k] = vp[k] + e[k];
                 hl = sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
             }
-            /* x^0 is 1 for every x: pow is not needed for the default
-             * shininess. */
-            double nh = hl > 0 ? (nn[0] * h[0] + nn[1] * h[1] + nn[2] * h[2]) / hl : 0;
-            sp = shininess == 0 ? 1 : nh > 0 ? pow(nh, shininess) : 0;
+            /* x^0 is 1 for every x: neither pow nor n.h is needed for
+             * the default shininess. */
+            if (shininess == 0) {
+                sp = 1;
+            } else {
+                double nh = hl > 0 ? (nn[0] * h[0] + nn[1] * h[1] + nn[2] * h[2]) / hl : 0;
+                sp = nh > 0 ? pow(nh, shininess) : 0;
+            }
         }
         /* nl where positive, else 0 (fmax's value but for the sign of a
          * zero, which the sums and the clamp below do not show). */

@@ -548,12 +548,13 @@ static void add_vertex_plain(interp *ip, double x, double y, double z)
         interp_vmat_vertex(ip);
 }
 
-void interp_add_vertex(interp *ip, double x, double y, double z, double w)
+/* The other vertices: not inlined into interp_add_vertex, whose short
+ * path would pay for this one's registers at every call. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void add_vertex_general(interp *ip, double x, double y, double z, double w)
 {
-    if (ip->prim_plain && w == 1) {
-        add_vertex_plain(ip, x, y, z);
-        return;
-    }
     scene *s = ip->scene;
     size_t k = s->nverts - ip->prim_first;
     if (!interp_budget_vertex(ip))
@@ -626,6 +627,14 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
     interp_vmat_vertex(ip);
 }
 
+void interp_add_vertex(interp *ip, double x, double y, double z, double w)
+{
+    if (ip->prim_plain && w == 1)
+        add_vertex_plain(ip, x, y, z);
+    else
+        add_vertex_general(ip, x, y, z, w);
+}
+
 void interp_vertex(interp *ip, const rgl_cmd *cmd)
 {
     if (!ip->in_begin) {
@@ -670,6 +679,7 @@ typedef struct assembly {
     const scene_look *look; /* the mesh's look, and where its vertices are, for fog_split */
     const mat4 *to_eye;
     bool in_eye;
+    bool alpha_test; /* interp_alpha_testing: faces may be discarded */
     scene_mesh *mesh;
     /* The GL-lit pass's triangles take the copies of their corners
      * (interp_relit_vertices): pool index of vertex k's copy; NULL for
@@ -934,7 +944,7 @@ static void fill_tri(assembly *as, uint32_t a, uint32_t b, uint32_t c, uint32_t 
     if (!as->mesh || as->ip->stencil.only)
         return;
     const uint32_t abc[3] = {a, b, c};
-    if (!interp_alpha_face(as->ip, abc, 3, as->mesh->look.texture))
+    if (as->alpha_test && !interp_alpha_face(as->ip, abc, 3, as->mesh->look.texture))
         return;
     if (as->fog_split) {
         const uint32_t rel[3] = {a, b, c};
@@ -1329,6 +1339,7 @@ static void end_primitive(interp *ip)
     as.point_size = raster_width(a->point.size, as.point_smooth);
     as.point_params = interp_point_params_set(a);
     as.list_quads = ip->list_depth > (ip->list_ce ? 1 : 0);
+    as.alpha_test = interp_alpha_testing(ip);
     for (uint32_t i = 0; i < n && !as.check_bad; i++)
         if (!vertex_ok(&s->verts[as.base + i]))
             as.check_bad = true;

@@ -22,23 +22,13 @@ bool interp_relit_wanted(const interp *ip)
            !interp_vertex_lit(ip) && ip->prim_mode > GL_LINE_STRIP;
 }
 
-void interp_relit_defer(interp *ip, size_t k, double x, double y, double z)
+bool interp_relit_grow(interp *ip, size_t k)
 {
-    if (k == 0)
-        ip->relit_pending = ip->relit_made = 0;
-    if (k != ip->relit_pending)
-        return; /* an earlier vertex was not kept: _vertices will refuse */
-    if (k >= ip->cap_relit_in &&
-        tr_grow((void **)&ip->relit_in, &ip->cap_relit_in, k + 1, sizeof *ip->relit_in) != 0) {
+    if (tr_grow((void **)&ip->relit_in, &ip->cap_relit_in, k + 1, sizeof *ip->relit_in) != 0) {
         ip->scene->failed = true;
-        return;
+        return false;
     }
-    const gl_attribs *a = &ip->st.a;
-    interp_relit_in *in = &ip->relit_in[k];
-    in->p[0] = x, in->p[1] = y, in->p[2] = z;
-    memcpy(in->normal, a->current.normal, sizeof in->normal);
-    memcpy(in->colour, a->current.color, sizeof in->colour);
-    ip->relit_pending = k + 1;
+    return true;
 }
 
 /* Made only when needed (a textured split reads the peak): lighting every
