@@ -1398,8 +1398,8 @@ static void end_primitive(interp *ip)
     bool filled = !as.check_bad && a->polygon.mode[0] == GL_FILL;
     if (filled && !as.facing && !as.relit)
         assemble_filled(&as, mode, n);
-    else if (!(filled && as.facing && a->polygon.mode[1] == GL_FILL && as.relit != INTERP_RELIT_PROBE &&
-               assemble_facing(&as, mode, n)))
+    else if (!(filled && as.facing && a->polygon.mode[1] == GL_FILL &&
+               as.relit != INTERP_RELIT_PROBE && assemble_facing(&as, mode, n)))
         assemble_polygons(&as, mode, n);
     if (as.relit && as.relit != INTERP_RELIT_PROBE && ip->nrelit_tris > 0) {
         if (interp_relit_vertices(ip, n)) {
