@@ -326,28 +326,38 @@ void interp_exec(interp *ip, const rgl_cmd *cmd)
  * (tests/translate/test_interp.c checks it). */
 static inline float wire_f32(const uint8_t *p) { return rgl_bits_f32(rgl_get_u32(p)); }
 
-/* The current normal and colour are written whole (memcpy of a local),
- * not one float at a time: their readers (the vertex, the material under
- * GL_COLOR_MATERIAL) copy them in wider loads, which stall on narrower
- * stores just made (store forwarding), at every vertex. */
-static inline void set_normal(gl_attribs *a, const uint8_t *p)
+/* The current normal and colour, stored from values in registers: their
+ * readers take them as values too (interp_add_vertex_nc), or as single
+ * floats. Built in a local and copied, they were read back from the
+ * stack in wider loads than they were stored with, a store-forwarding
+ * stall at every call. */
+static inline void set_normal(gl_attribs *a, float n0, float n1, float n2)
 {
-    float n[3] = {wire_f32(p), wire_f32(p + 4), wire_f32(p + 8)};
-    memcpy(a->current.normal, n, sizeof n);
+    a->current.normal[0] = n0;
+    a->current.normal[1] = n1;
+    a->current.normal[2] = n2;
 }
 
-static inline void set_colour(interp *ip, const float c[4])
+static inline void put4(float *d, float c0, float c1, float c2, float c3)
+{
+    d[0] = c0;
+    d[1] = c1;
+    d[2] = c2;
+    d[3] = c3;
+}
+
+static inline void set_colour(interp *ip, float c0, float c1, float c2, float c3)
 {
     gl_attribs *a = &ip->st.a;
-    memcpy(a->current.color, c, 4 * sizeof *c);
+    put4(a->current.color, c0, c1, c2, c3);
     if (!a->caps[INTERP_CAP_COLOR_MATERIAL])
         return;
     if (a->lighting.color_material_face == GL_FRONT_AND_BACK &&
         a->lighting.color_material_mode == GL_AMBIENT_AND_DIFFUSE) {
         /* GL's default, interp_color_material_update's first case */
         for (int f = 0; f < 2; f++) {
-            memcpy(a->lighting.material[f].ambient, c, 4 * sizeof *c);
-            memcpy(a->lighting.material[f].diffuse, c, 4 * sizeof *c);
+            put4(a->lighting.material[f].ambient, c0, c1, c2, c3);
+            put4(a->lighting.material[f].diffuse, c0, c1, c2, c3);
         }
     } else {
         interp_color_material_update(ip);
@@ -371,7 +381,7 @@ static size_t fast_command(interp *ip, const uint8_t *p, size_t left)
     case RGL_OP_Normal3f:
         if (left < 13)
             return 0;
-        set_normal(a, p + 1);
+        set_normal(a, wire_f32(p + 1), wire_f32(p + 5), wire_f32(p + 9));
         return 13;
     case RGL_OP_TexCoord2f:
         if (left < 9)
@@ -386,10 +396,8 @@ static size_t fast_command(interp *ip, const uint8_t *p, size_t left)
         size_t n = p[0] == RGL_OP_Color3f ? 3 : 4;
         if (left < 1 + 4 * n)
             return 0;
-        float c[4] = {wire_f32(p + 1), wire_f32(p + 5), wire_f32(p + 9), 1};
-        if (n == 4)
-            c[3] = wire_f32(p + 13);
-        set_colour(ip, c);
+        set_colour(ip, wire_f32(p + 1), wire_f32(p + 5), wire_f32(p + 9),
+                   n == 4 ? wire_f32(p + 13) : 1);
         return 1 + 4 * n;
     }
     case RGL_OP_Color3ub:
@@ -397,10 +405,8 @@ static size_t fast_command(interp *ip, const uint8_t *p, size_t left)
         size_t n = p[0] == RGL_OP_Color3ub ? 3 : 4;
         if (left < 1 + n)
             return 0;
-        float c[4] = {1, 1, 1, 1};
-        for (size_t k = 0; k < n; k++)
-            c[k] = (float)(p[1 + k] / 255.0);
-        set_colour(ip, c);
+        set_colour(ip, (float)(p[1] / 255.0), (float)(p[2] / 255.0), (float)(p[3] / 255.0),
+                   n == 4 ? (float)(p[4] / 255.0) : 1);
         return 1 + n;
     }
     default:
@@ -428,8 +434,39 @@ rgl_status interp_run(interp *ip, const uint8_t *data, size_t size, uint64_t bas
         uint64_t k = 0;
         size_t n;
         bool ok = true;
-        while (p < end && (n = fast_command(ip, p, (size_t)(end - p))) != 0) {
+        while (p < end) {
             const uint8_t *at = p;
+            if (counts_ok && end - p >= 39 && p[0] == RGL_OP_Normal3f &&
+                p[13] == RGL_OP_Color3f && p[26] == RGL_OP_Vertex3f && ip->in_begin &&
+                !ip->prim_skip && ip->prim_plain) {
+                /* glNormal3f, glColor3f, glVertex3f of a plain primitive:
+                 * the vertex takes the normal and colour from here. Each
+                 * call is still counted and checked in turn. */
+                float n0 = wire_f32(p + 1), n1 = wire_f32(p + 5), n2 = wire_f32(p + 9);
+                float c0 = wire_f32(p + 14), c1 = wire_f32(p + 18), c2 = wire_f32(p + 22);
+                set_normal(&ip->st.a, n0, n1, n2);
+                p += 13;
+                k++;
+                if (interp_budget_count(ip)) {
+                    at = p;
+                    set_colour(ip, c0, c1, c2, 1);
+                    p += 13;
+                    k++;
+                    if (interp_budget_count(ip)) {
+                        at = p;
+                        interp_add_vertex_nc(ip, wire_f32(p + 1), wire_f32(p + 5), wire_f32(p + 9),
+                                             n0, n1, n2, c0, c1, c2, 1);
+                        p += 13;
+                        k++;
+                        if (interp_budget_count(ip))
+                            continue;
+                    }
+                }
+                ok = !interp_budget_over(ip, base_offset + (uint64_t)(at - data));
+                break;
+            }
+            if ((n = fast_command(ip, p, (size_t)(end - p))) == 0)
+                break;
             p += n;
             k++;
             if (counts_ok && interp_budget_count(ip))

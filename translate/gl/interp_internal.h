@@ -491,6 +491,12 @@ mat4 interp_window_matrix(const mat4 *proj, const int32_t vp[4]);
 /* Adds a vertex with the current attributes to the open primitive, which
  * must be drawing (in_begin, not prim_skip) (interp_prim.c). */
 void interp_add_vertex(interp *ip, double x, double y, double z, double w);
+/* The same for a plain primitive (prim_plain) and w = 1, when the current
+ * normal and colour were just set to n and c (interp.c's glNormal3f,
+ * glColor3f, glVertex3f): handed over in registers, not read back from
+ * memory just after being stored, which stalls on store forwarding. */
+void interp_add_vertex_nc(interp *ip, double x, double y, double z, float n0, float n1, float n2,
+                          float c0, float c1, float c2, float c3);
 
 /* glBegin(mode) and glEnd for the primitives the interpreter draws itself
  * (GLU and GLUT shapes): the same assembly, culling and polygon mode as
@@ -810,7 +816,7 @@ void interp_lit_prepared(const interp *ip, const interp_lit_prep *lp, const doub
  * (interp_relit.c): back faces under one-sided lighting, and textured
  * GL_MODULATE surfaces lit past white (GL clamps before the texture).
  * _wanted: the open filled primitive's vertices need GL's lit colour;
- * _defer: keeps vertex k's inputs (the current colour and normal) for
+ * _defer: keeps vertex k's inputs (the current normal and colour) for
  * (inline, at every vertex; _grow: room for vertex k, false when none)
  * _flush, which makes the kept vertices' colours (at a change of material
  * between vertices, and when glEnd needs them); _prepare: GL's state for
@@ -837,7 +843,8 @@ scene_mesh *interp_fog_behind_mesh(interp *ip, const scene_look *look, const mat
 #define INTERP_RELIT_PROBE 3 /* back faces noted (NOTE_RELIT_SPECULAR), drawn as they are */
 bool interp_relit_wanted(const interp *ip);
 bool interp_relit_grow(interp *ip, size_t k);
-static inline void interp_relit_defer(interp *ip, size_t k, double x, double y, double z)
+static inline void interp_relit_defer(interp *ip, size_t k, double x, double y, double z,
+                                      const float normal[3], const float colour[4])
 {
     if (k == 0)
         ip->relit_pending = ip->relit_made = 0;
@@ -845,11 +852,10 @@ static inline void interp_relit_defer(interp *ip, size_t k, double x, double y, 
         return; /* an earlier vertex was not kept: _vertices will refuse */
     if (k >= ip->cap_relit_in && !interp_relit_grow(ip, k))
         return;
-    const gl_attribs *a = &ip->st.a;
     interp_relit_in *in = &ip->relit_in[k];
     in->p[0] = x, in->p[1] = y, in->p[2] = z;
-    memcpy(in->normal, a->current.normal, sizeof in->normal);
-    memcpy(in->colour, a->current.color, sizeof in->colour);
+    memcpy(in->normal, normal, sizeof in->normal);
+    memcpy(in->colour, colour, sizeof in->colour);
     ip->relit_pending = k + 1;
 }
 void interp_relit_flush(interp *ip);

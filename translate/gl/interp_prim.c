@@ -382,10 +382,12 @@ void interp_begin(interp *ip, const rgl_cmd *cmd)
 
 /* ---- Vertices ---------------------------------------------------------------- */
 
-static inline void surface_colour(const interp *ip, float out[4])
+/* interp_surface_colour with the current colour (c0, c1, c2, c3): the
+ * caller's copy of it, in registers (add_vertex_plain). */
+static inline void surface_colour(const interp *ip, float c0, float c1, float c2, float c3,
+                                  float out[4])
 {
     const gl_attribs *a = &ip->st.a;
-    const float *c = a->current.color;
     if (a->caps[INTERP_CAP_LIGHTING]) {
         /* The writer lights it: the colour carries what GL_COLOR_MATERIAL
          * takes from glColor, and GL's lit alpha, the diffuse one
@@ -393,21 +395,25 @@ static inline void surface_colour(const interp *ip, float out[4])
          * to glColor when colour material covers it). */
         const gl_material *fm = &a->lighting.material[0];
         if (!a->caps[INTERP_CAP_COLOR_MATERIAL])
-            c = fm->diffuse;
-        for (int i = 0; i < 3; i++)
-            out[i] = clamp01(c[i]);
-        out[3] = clamp01(fm->diffuse[3]);
-    } else {
-        for (int i = 0; i < 4; i++)
-            out[i] = clamp01(c[i]);
+            c0 = fm->diffuse[0], c1 = fm->diffuse[1], c2 = fm->diffuse[2];
+        c3 = fm->diffuse[3];
     }
+    out[0] = clamp01(c0);
+    out[1] = clamp01(c1);
+    out[2] = clamp01(c2);
     if (ip->prim_blend == SCENE_BLEND_OPAQUE)
         out[3] = 1;
     else if (ip->prim_blend == SCENE_BLEND_INVISIBLE)
         out[3] = 0;
+    else
+        out[3] = clamp01(c3);
 }
 
-void interp_surface_colour(const interp *ip, float out[4]) { surface_colour(ip, out); }
+void interp_surface_colour(const interp *ip, float out[4])
+{
+    const float *c = ip->st.a.current.color;
+    surface_colour(ip, c[0], c[1], c[2], c[3], out);
+}
 
 /* GL's lit colour at a vertex in object space, with its normal in GL's own
  * eye space (2.11.3: the inverse transpose of the modelview, normalised
@@ -496,43 +502,79 @@ void interp_lit_point_colour(interp *ip, double x, double y, double z, float out
     lit_line_colour(ip, x, y, z, out, NULL);
 }
 
+/* add_vertex_plain's calls, out of its way (a call there made the
+ * compiler keep its arguments in memory, read back in wider loads than
+ * they were stored with: a store-forwarding stall at every vertex): the
+ * budget, room in the pool and the per-vertex arrays. False when the
+ * vertex is dropped. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static bool plain_make_room(interp *ip, size_t k)
+{
+    scene *s = ip->scene;
+    if (!interp_budget_vertex(ip) || !scene_reserve_vertices(s, 1))
+        return false;
+    if (k >= ip->cap_edge && tr_grow((void **)&ip->edge, &ip->cap_edge, k + 1, 1) != 0) {
+        s->failed = true;
+        return false;
+    }
+    /* interp_relit_defer's room; a failure keeps the vertex, as there */
+    if (ip->prim_plain_relit && k >= ip->cap_relit_in && (k == 0 || k == ip->relit_pending))
+        interp_relit_grow(ip, k);
+    return true;
+}
+
 /* interp_add_vertex for a plain primitive (begin_mode's prim_plain) and
  * w = 1: the same vertex, without the tests that cannot pass and with the
- * common cases inline. */
-static void add_vertex_plain(interp *ip, double x, double y, double z)
+ * common cases inline. The normal n and colour c are the current ones,
+ * as values: read back from memory just after glNormal3f and glColor3f
+ * stored them, in loads wider than those stores, they stalled on store
+ * forwarding (interp_add_vertex_nc hands them over from the decoder). */
+static inline void add_vertex_plain(interp *ip, double x, double y, double z, float n0, float n1,
+                                    float n2, float c0, float c1, float c2, float c3)
 {
     scene *s = ip->scene;
     size_t k = s->nverts - ip->prim_first;
-    if (!interp_budget_vertex_fast(ip))
+    bool room = !ip->cut && ip->assembled < INTERP_LIMIT(ip, ASSEMBLED) &&
+                s->nverts < INTERP_LIMIT(ip, VERTICES) && s->nverts < s->cap_verts &&
+                s->nverts < SCENE_MAX_VERTICES && !s->failed && k < ip->cap_edge &&
+                (!ip->prim_plain_relit || k < ip->cap_relit_in);
+    if (room)
+        ip->assembled++; /* interp_budget_vertex's count */
+    else if (!plain_make_room(ip, k))
         return;
-    scene_vertex *v;
-    if (s->nverts < s->cap_verts && s->nverts < SCENE_MAX_VERTICES && !s->failed)
-        v = s->verts + s->nverts;
-    else if (!(v = scene_reserve_vertices(s, 1)))
-        return;
-    if (k >= ip->cap_edge && tr_grow((void **)&ip->edge, &ip->cap_edge, k + 1, 1) != 0) {
-        s->failed = true;
-        return;
-    }
+    scene_vertex *v = s->verts + s->nverts;
     const gl_attribs *a = &ip->st.a;
     v->pos[0] = (float)x;
     v->pos[1] = (float)y;
     v->pos[2] = (float)z;
-    memcpy(v->normal, a->current.normal, sizeof v->normal);
+    v->normal[0] = n0;
+    v->normal[1] = n1;
+    v->normal[2] = n2;
     if (ip->prim_plain == PRIM_PLAIN_LIT) {
-        surface_colour(ip, v->color);
+        surface_colour(ip, c0, c1, c2, c3, v->color);
     } else {
-        for (int i = 0; i < 4; i++)
-            v->color[i] = clamp01(a->current.color[i]);
-        if (ip->prim_blend == SCENE_BLEND_OPAQUE)
-            v->color[3] = 1;
-        else if (ip->prim_blend == SCENE_BLEND_INVISIBLE)
-            v->color[3] = 0;
+        v->color[0] = clamp01(c0);
+        v->color[1] = clamp01(c1);
+        v->color[2] = clamp01(c2);
+        v->color[3] = ip->prim_blend == SCENE_BLEND_OPAQUE      ? 1
+                      : ip->prim_blend == SCENE_BLEND_INVISIBLE ? 0
+                                                                : clamp01(c3);
     }
     if (a->current.fog_coord != ip->prim_coord0) /* interp_fogsec_track */
         ip->prim_coord_same = false;
-    if (ip->prim_plain_relit)
-        interp_relit_defer(ip, k, x, y, z);
+    if (ip->prim_plain_relit) { /* interp_relit_defer, its room made above */
+        if (k == 0)
+            ip->relit_pending = ip->relit_made = 0;
+        if (k == ip->relit_pending && k < ip->cap_relit_in) {
+            interp_relit_in *in = &ip->relit_in[k];
+            in->p[0] = x, in->p[1] = y, in->p[2] = z;
+            in->normal[0] = n0, in->normal[1] = n1, in->normal[2] = n2;
+            in->colour[0] = c0, in->colour[1] = c1, in->colour[2] = c2, in->colour[3] = c3;
+            ip->relit_pending = k + 1;
+        }
+    }
     float q = a->current.texcoord[3];
     v->tex1[0] = v->tex1[1] = 0;
     if (q == 1 || q == 0 || !isfinite(q)) {
@@ -546,6 +588,12 @@ static void add_vertex_plain(interp *ip, double x, double y, double z)
     scene_commit_vertices(s, 1);
     if (ip->vmat.changed)
         interp_vmat_vertex(ip);
+}
+
+void interp_add_vertex_nc(interp *ip, double x, double y, double z, float n0, float n1, float n2,
+                          float c0, float c1, float c2, float c3)
+{
+    add_vertex_plain(ip, x, y, z, n0, n1, n2, c0, c1, c2, c3);
 }
 
 /* The other vertices: not inlined into interp_add_vertex, whose short
@@ -599,7 +647,7 @@ static void add_vertex_general(interp *ip, double x, double y, double z, double 
     else if (ip->prim_blend == SCENE_BLEND_INVISIBLE)
         v->color[3] = 0;
     if (interp_relit_wanted(ip)) /* GL's colour, should its face need it */
-        interp_relit_defer(ip, k, x, y, z);
+        interp_relit_defer(ip, k, x, y, z, a->current.normal, a->current.color);
     float q = a->current.texcoord[3];
     v->tex1[0] = v->tex1[1] = 0;
     if (ip->draw_unit[0] >= 0) {
@@ -629,8 +677,9 @@ static void add_vertex_general(interp *ip, double x, double y, double z, double 
 
 void interp_add_vertex(interp *ip, double x, double y, double z, double w)
 {
+    const float *n = ip->st.a.current.normal, *c = ip->st.a.current.color;
     if (ip->prim_plain && w == 1)
-        add_vertex_plain(ip, x, y, z);
+        add_vertex_plain(ip, x, y, z, n[0], n[1], n[2], c[0], c[1], c[2], c[3]);
     else
         add_vertex_general(ip, x, y, z, w);
 }
@@ -680,6 +729,7 @@ typedef struct assembly {
     const mat4 *to_eye;
     bool in_eye;
     bool alpha_test; /* interp_alpha_testing: faces may be discarded */
+    bool fill_checks; /* the stencil, alpha_test or fog_split: fill_tri_checks */
     scene_mesh *mesh;
     /* The GL-lit pass's triangles take the copies of their corners
      * (interp_relit_vertices): pool index of vertex k's copy; NULL for
@@ -932,7 +982,10 @@ static bool is_ccw(const interp *ip, const uint32_t *idx, int n)
     return det > 0;
 }
 
-static void fill_tri(assembly *as, uint32_t a, uint32_t b, uint32_t c, uint32_t provoking)
+/* What fill_tri does besides adding the triangle, when fill_checks says
+ * there is any: the stencil region, the alpha test, the fog behind the
+ * eye. False when the face is not drawn. */
+static bool fill_tri_checks(assembly *as, uint32_t a, uint32_t b, uint32_t c)
 {
     if (as->ip->stencil.write) { /* its window region, for later stencil tests */
         double p[3][3];
@@ -942,16 +995,23 @@ static void fill_tri(assembly *as, uint32_t a, uint32_t b, uint32_t c, uint32_t 
             interp_stencil_tri(as->ip, p);
     }
     if (!as->mesh || as->ip->stencil.only)
-        return;
+        return false;
     const uint32_t abc[3] = {a, b, c};
     if (as->alpha_test && !interp_alpha_face(as->ip, abc, 3, as->mesh->look.texture))
-        return;
+        return false;
     if (as->fog_split) {
         const uint32_t rel[3] = {a, b, c};
         as->mesh = interp_fog_behind_mesh(as->ip, as->look, as->to_eye, as->in_eye, as->base, rel);
         if (!as->mesh)
-            return;
+            return false;
     }
+    return true;
+}
+
+static inline void fill_tri(assembly *as, uint32_t a, uint32_t b, uint32_t c, uint32_t provoking)
+{
+    if (as->fill_checks ? !fill_tri_checks(as, a, b, c) : !as->mesh)
+        return;
     const uint32_t *cp = as->copy;
     uint32_t pa = cp ? cp[a] : as->base + a, pb = cp ? cp[b] : as->base + b;
     uint32_t pc = cp ? cp[c] : as->base + c, pp = cp ? cp[provoking] : as->base + provoking;
@@ -1386,6 +1446,7 @@ static void end_primitive(interp *ip)
     mat4 id = mat4_identity();
     as.mesh = scene_mesh_for(s, ip->prim_in_eye ? &id : &ip->prim_to_eye, ip->prim_in_eye, &look);
     as.fog_split = ip->fog_split;
+    as.fill_checks = ip->stencil.write || ip->stencil.only || as.alpha_test || as.fog_split;
     as.look = &look;
     as.to_eye = ip->prim_in_eye ? &id : &ip->prim_to_eye;
     as.in_eye = ip->prim_in_eye;
