@@ -526,24 +526,19 @@ static bool plain_make_room(interp *ip, size_t k)
 }
 
 /* interp_add_vertex for a plain primitive (begin_mode's prim_plain) and
- * w = 1: the same vertex, without the tests that cannot pass and with the
- * common cases inline. The normal n and colour c are the current ones,
- * as values: read back from memory just after glNormal3f and glColor3f
- * stored them, in loads wider than those stores, they stalled on store
- * forwarding (interp_add_vertex_nc hands them over from the decoder). */
-static inline void add_vertex_plain(interp *ip, double x, double y, double z, float n0, float n1,
-                                    float n2, float c0, float c1, float c2, float c3)
+ * w = 1, once room is made for vertex k of the primitive: the same
+ * vertex, without the tests that cannot pass and with the common cases
+ * inline. The normal n and colour c are the current ones, as values: read
+ * back from memory just after glNormal3f and glColor3f stored them, in
+ * loads wider than those stores, they stalled on store forwarding
+ * (interp_add_vertex_nc hands them over from the decoder). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void plain_store(interp *ip, scene *s, size_t k, double x, double y, double z,
+                               float n0, float n1, float n2, float c0, float c1, float c2,
+                               float c3)
 {
-    scene *s = ip->scene;
-    size_t k = s->nverts - ip->prim_first;
-    bool room = !ip->cut && ip->assembled < INTERP_LIMIT(ip, ASSEMBLED) &&
-                s->nverts < INTERP_LIMIT(ip, VERTICES) && s->nverts < s->cap_verts &&
-                s->nverts < SCENE_MAX_VERTICES && !s->failed && k < ip->cap_edge &&
-                (!ip->prim_plain_relit || k < ip->cap_relit_in);
-    if (room)
-        ip->assembled++; /* interp_budget_vertex's count */
-    else if (!plain_make_room(ip, k))
-        return;
     scene_vertex *v = s->verts + s->nverts;
     const gl_attribs *a = &ip->st.a;
     v->pos[0] = (float)x;
@@ -586,6 +581,42 @@ static inline void add_vertex_plain(interp *ip, double x, double y, double z, fl
     }
     ip->edge[k] = (uint8_t)a->current.edge_flag;
     scene_commit_vertices(s, 1);
+}
+
+/* add_vertex_plain when the quick test finds no room: makes it (or drops
+ * the vertex). Apart, so that the common path makes no call before the
+ * vertex is stored and keeps its arguments in registers (a call there
+ * spilled them to the stack at every vertex). */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void plain_store_slow(interp *ip, double x, double y, double z, float n0, float n1,
+                             float n2, float c0, float c1, float c2, float c3)
+{
+    scene *s = ip->scene;
+    size_t k = s->nverts - ip->prim_first;
+    if (!plain_make_room(ip, k))
+        return;
+    plain_store(ip, s, k, x, y, z, n0, n1, n2, c0, c1, c2, c3);
+    if (ip->vmat.changed)
+        interp_vmat_vertex(ip);
+}
+
+static inline void add_vertex_plain(interp *ip, double x, double y, double z, float n0, float n1,
+                                    float n2, float c0, float c1, float c2, float c3)
+{
+    scene *s = ip->scene;
+    size_t k = s->nverts - ip->prim_first;
+    bool room = !ip->cut && ip->assembled < INTERP_LIMIT(ip, ASSEMBLED) &&
+                s->nverts < INTERP_LIMIT(ip, VERTICES) && s->nverts < s->cap_verts &&
+                s->nverts < SCENE_MAX_VERTICES && !s->failed && k < ip->cap_edge &&
+                (!ip->prim_plain_relit || k < ip->cap_relit_in);
+    if (!room) {
+        plain_store_slow(ip, x, y, z, n0, n1, n2, c0, c1, c2, c3);
+        return;
+    }
+    ip->assembled++; /* interp_budget_vertex's count */
+    plain_store(ip, s, k, x, y, z, n0, n1, n2, c0, c1, c2, c3);
     if (ip->vmat.changed)
         interp_vmat_vertex(ip);
 }
