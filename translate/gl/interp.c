@@ -414,6 +414,16 @@ static size_t fast_command(interp *ip, const uint8_t *p, size_t left)
     }
 }
 
+/* Whether three interp_budget_count calls in a row pass when nothing
+ * between them cuts the run: none is at a heavy check (every 1024th
+ * command) and the command count stays within its limit. */
+static inline bool budget_count3(const interp *ip)
+{
+    uint64_t r = ip->cmds_run & 1023;
+    return !ip->cut && ip->cmds_run + 3 <= INTERP_LIMIT(ip, COMMANDS) &&
+           ((r != 0 && r <= 1021) || ip->heavy || !ip->heavy_fn);
+}
+
 rgl_status interp_run(interp *ip, const uint8_t *data, size_t size, uint64_t base_offset,
                       rgl_error *err)
 {
@@ -445,6 +455,22 @@ rgl_status interp_run(interp *ip, const uint8_t *data, size_t size, uint64_t bas
                 float n0 = wire_f32(p + 1), n1 = wire_f32(p + 5), n2 = wire_f32(p + 9);
                 float c0 = wire_f32(p + 14), c1 = wire_f32(p + 18), c2 = wire_f32(p + 22);
                 set_normal(&ip->st.a, n0, n1, n2);
+                if (budget_count3(ip)) {
+                    /* The three checks at once: only the vertex can cut. */
+                    set_colour(ip, c0, c1, c2, 1);
+                    ip->cmds_run += 2;
+                    at = p + 26;
+                    interp_add_vertex_nc(ip, wire_f32(p + 27), wire_f32(p + 31), wire_f32(p + 35),
+                                         n0, n1, n2, c0, c1, c2, 1);
+                    p += 39;
+                    k += 3;
+                    if (!ip->cut) {
+                        ip->cmds_run++;
+                        continue;
+                    }
+                    ok = !interp_budget_over(ip, base_offset + (uint64_t)(at - data));
+                    break;
+                }
                 p += 13;
                 k++;
                 if (interp_budget_count(ip)) {
