@@ -108,9 +108,15 @@ bool interp_relit_vertices(interp *ip, uint32_t n)
     uint32_t m = 0;
     for (uint32_t i = 0; i < n; i++)
         m += need[i];
-    for (uint32_t i = 0; i < m; i++)
-        if (!interp_budget_vertex(ip))
-            return false;
+    /* interp_budget_vertex m times: at once when none of them can fail
+     * (the pool's size does not change in between). */
+    if (!ip->cut && ip->assembled + m <= INTERP_LIMIT(ip, ASSEMBLED) &&
+        s->nverts < INTERP_LIMIT(ip, VERTICES))
+        ip->assembled += m;
+    else
+        for (uint32_t i = 0; i < m; i++)
+            if (!interp_budget_vertex(ip))
+                return false;
     scene_vertex *v = scene_reserve_vertices(s, m);
     if (!v)
         return false;
