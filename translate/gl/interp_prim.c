@@ -1055,17 +1055,29 @@ static inline void fill_tri(assembly *as, uint32_t a, uint32_t b, uint32_t c, ui
         scene_add_tri(as->s, pa, pb, pc, pp);
 }
 
-/* Keeps a filled triangle for the GL-lit pass (interp_relit.c): its
- * corners get GL's colour there, and it goes to that pass's mesh. */
-static void relit_keep(assembly *as, uint32_t a, uint32_t b, uint32_t c, uint32_t provoking)
+/* relit_keep's room for one more triangle, out of its way. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static bool relit_grow(assembly *as)
 {
     interp *ip = as->ip;
-    if (ip->nrelit_tris >= ip->cap_relit_tris &&
-        tr_grow((void **)&ip->relit_tris, &ip->cap_relit_tris, ip->nrelit_tris + 1,
+    if (tr_grow((void **)&ip->relit_tris, &ip->cap_relit_tris, ip->nrelit_tris + 1,
                 sizeof *ip->relit_tris) != 0) {
         as->s->failed = true;
-        return;
+        return false;
     }
+    return true;
+}
+
+/* Keeps a filled triangle for the GL-lit pass (interp_relit.c): its
+ * corners get GL's colour there, and it goes to that pass's mesh. */
+static inline void relit_keep(assembly *as, uint32_t a, uint32_t b, uint32_t c,
+                              uint32_t provoking)
+{
+    interp *ip = as->ip;
+    if (ip->nrelit_tris >= ip->cap_relit_tris && !relit_grow(as))
+        return;
     uint32_t *t = ip->relit_tris[ip->nrelit_tris++];
     t[0] = a, t[1] = b, t[2] = c, t[3] = provoking;
     ip->relit_need[a] = ip->relit_need[b] = ip->relit_need[c] = ip->relit_need[provoking] = 1;
