@@ -11,6 +11,7 @@
  * gives back the input bytes.
  */
 #include <math.h>
+#include <pthread.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -298,6 +299,44 @@ uint32_t rgl_cmd_skip_floats(rgl_cmd_iter *it)
     it->pos = p + n;
     it->index++;
     return p[0];
+}
+
+/* rgl_cmd_float_size of every one-byte opcode, for the loop below: a byte
+ * load per command instead of a call. */
+static uint8_t float_sizes[0x80];
+static pthread_once_t float_sizes_once = PTHREAD_ONCE_INIT;
+
+static void float_sizes_build(void)
+{
+    for (uint32_t op = 0; op < 0x80; op++)
+        float_sizes[op] = (uint8_t)rgl_cmd_float_size(op); /* 1 + 4 per float: small */
+}
+
+size_t rgl_cmd_skip_float_run(rgl_cmd_iter *it)
+{
+    const uint8_t *p = it->pos, *end = it->end;
+    if (it->error.status != RGL_OK)
+        return 0;
+    pthread_once(&float_sizes_once, float_sizes_build);
+    size_t k = 0;
+    while (p < end && p[0] < 0x80) {
+        size_t n = float_sizes[p[0]];
+        if (n == 13 && end - p >= 13) {
+            /* Three floats, most calls (glVertex3f, glNormal3f,
+             * glColor3f): a branch, which the processor predicts, so the
+             * next call's address does not wait for this one's size. */
+            p += 13;
+            k++;
+            continue;
+        }
+        if (n == 0 || (size_t)(end - p) < n)
+            break;
+        p += n;
+        k++;
+    }
+    it->pos = p;
+    it->index += k;
+    return k;
 }
 
 static int64_t double_to_i64(double d)

@@ -252,6 +252,12 @@ uint32_t rgl_cmd_float_size(uint32_t opcode);
  * rgl_cmd_next. */
 uint32_t rgl_cmd_skip_floats(rgl_cmd_iter *it);
 
+/* The same over a run: steps over every such call from the current one to
+ * the first other command (or the end). Returns how many it stepped over,
+ * 0 when rgl_cmd_skip_floats would do nothing. One call per run rather
+ * than per command: a frame is mostly such runs (issue 16). */
+size_t rgl_cmd_skip_float_run(rgl_cmd_iter *it);
+
 /* A scalar (k = 0) or the k-th element of an array argument (or byte of a
  * blob or string), as double / int64; 0 when k is out of range. rgl_arg_i
  * truncates floating values toward zero, saturates at the int64 limits and

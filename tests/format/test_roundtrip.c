@@ -145,7 +145,55 @@ int main(void)
         }
     }
     CHECK(nskipped > 0 && rgl_cmd_skip_floats(&skip) == 0 && skip.pos == buf + len);
+    /* And run by run with rgl_cmd_skip_float_run: each run of float rows
+     * at once, to the next other row's start, indices counted; a run cut
+     * short stops before the cut call. */
+    rgl_cmd_iter_init(&skip, buf, len, 5000);
+    size_t nruns = 0;
+    for (size_t row = 0; row < nrows;) {
+        size_t run = 0;
+        while (row + run < nrows && rgl_cmd_float_size(all[row + run]->opcode))
+            run++;
+        size_t got = rgl_cmd_skip_float_run(&skip);
+        CHECKF(got == run, "row %zu: run of %zu, skipped %zu", row, run, got);
+        row += run;
+        CHECK(skip.index == row && skip.pos == (row < nrows ? buf + starts[row] : buf + len));
+        if (run) {
+            nruns++;
+            rgl_cmd_iter cut;
+            size_t at = starts[row - run], to = row < nrows ? starts[row] : len;
+            rgl_cmd_iter_init(&cut, buf + at, to - at - 1, 0);
+            CHECK(rgl_cmd_skip_float_run(&cut) == run - 1 && cut.index == run - 1);
+            CHECK(rgl_cmd_skip_float_run(&cut) == 0);
+        }
+        if (row < nrows && !CHECK(rgl_cmd_next(&skip, &back) == RGL_OK))
+            break;
+        row += row < nrows;
+    }
+    CHECK(nruns > 0 && rgl_cmd_skip_float_run(&skip) == 0 && skip.pos == buf + len);
     free(starts);
+
+    /* A run of three-float calls (the common size) cut short anywhere in
+     * its last call stops before that call. */
+    size_t at3[5];
+    size_t len3 = 0;
+    static const uint32_t ops3[5] = {RGL_OP_Normal3f, RGL_OP_Color3f, RGL_OP_Vertex3f,
+                                     RGL_OP_Vertex2f, RGL_OP_Vertex3f};
+    for (int i = 0; i < 5; i++) {
+        rgl_cmd_init(&cmd, ops3[i]);
+        at3[i] = len3;
+        len3 += rgl_cmd_encode(&cmd, buf + len3, sizeof buf - len3);
+    }
+    for (size_t cut = 0; cut <= len3; cut++) {
+        rgl_cmd_iter run;
+        rgl_cmd_iter_init(&run, buf, cut, 0);
+        size_t whole = 0;
+        while (whole < 5 && (whole + 1 < 5 ? at3[whole + 1] : len3) <= cut)
+            whole++;
+        size_t to = whole < 5 ? at3[whole] : len3;
+        CHECKF(rgl_cmd_skip_float_run(&run) == whole && run.pos == buf + to,
+               "three-float run cut at %zu", cut);
+    }
 
     /* The encoder refuses arguments outside their descriptors. */
     rgl_cmd_init(&cmd, RGL_OP_Color3ub);

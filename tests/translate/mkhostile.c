@@ -15,6 +15,10 @@
  *                     frame 1 (STATE_CARRIED).
  * DIR/fill-all.raygl  two frames, each filling every output budget to just
  *                     under its bound (no cut): the most memory a frame can take.
+ * DIR/heavy-redo.raygl a heavy frame (2^14 lists of 30 triangle vertices)
+ *                     after a depth-tested quad of another projection:
+ *                     raygl2pov translates it twice (the second time with
+ *                     the perspective camera, interp_proj.c), heavy twice.
  * DIR/bomb-calls.raygl 100000 outermost calls of one small list (instances);
  *                     DIR/bomb-calls300.raygl 60000 calls of 300 vertices.
  * DIR/lists.raygl     two frames drawing through display lists (one nested),
@@ -276,6 +280,42 @@ static void fill_all(const char *dir)
     rgl_trace_builder_destroy(b);
 }
 
+static void heavy_redo(const char *dir)
+{
+    rgl_trace_builder *b = rgl_trace_builder_create();
+    seq s, body;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 64, 48);
+    CMD(&s, Enable, GL_DEPTH_TEST);
+    CMD(&s, MatrixMode, GL_PROJECTION);
+    CMD(&s, Ortho, -1, 1, -1, 1, -1, 1);
+    CMD(&s, MatrixMode, GL_MODELVIEW);
+    CMD(&s, Begin, GL_QUADS);
+    CMD(&s, Vertex3f, -1, -1, 0.9);
+    CMD(&s, Vertex3f, 1, -1, 0.9);
+    CMD(&s, Vertex3f, 1, 1, 0.9);
+    CMD(&s, Vertex3f, -1, 1, 0.9);
+    CMD0(&s, End);
+    CMD(&s, MatrixMode, GL_PROJECTION);
+    CMD0(&s, LoadIdentity);
+    CMD(&s, Frustum, -1, 1, -0.75, 0.75, 1, 100);
+    CMD(&s, MatrixMode, GL_MODELVIEW);
+    CMD(&s, Translatef, 0, 0, -5);
+    seq_init(&body);
+    CMD(&body, Begin, GL_TRIANGLES);
+    for (int i = 0; i < 30; i++)
+        CMD(&body, Vertex3f, i % 3 == 1, i % 3 == 2, -(double)i / 30);
+    CMD0(&body, End);
+    CMD(&body, Translatef, 1e-3, 0, 0);
+    chain(b, &s, 100, 14, &body);
+    CMD(&s, CallList, 100);
+    frame(b, 0, &s);
+    finish(b, true, dir, "heavy-redo.raygl");
+    seq_free(&body);
+    seq_free(&s);
+    rgl_trace_builder_destroy(b);
+}
+
 /* ncalls outermost calls of a list of nverts vertices, each shared. */
 static void many_calls(const char *dir, const char *name, int nverts, int ncalls)
 {
@@ -475,6 +515,7 @@ int main(int argc, char **argv)
     names_bomb(dir);
     texture_frames(dir);
     fill_all(dir);
+    heavy_redo(dir);
     many_calls(dir, "bomb-calls.raygl", 3, 100000);
     many_calls(dir, "bomb-calls300.raygl", 300, 60000);
     lists(dir);

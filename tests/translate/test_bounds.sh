@@ -7,7 +7,8 @@
 #    cap and a time limit, write their frame, and say when it was cut, in
 #    the messages and in the .pov; two frames that fill every budget just
 #    short of a cut fit too, and give the same bytes with -j 2 (one heavy
-#    frame at a time).
+#    frame at a time); a heavy frame translated twice (heavy-redo) is
+#    not held up by its own turn.
 # 2. Damage: a damaged list body gives exit 1 and names the part the frame
 #    was written without; every one-byte change of a small trace with
 #    lists either leaves every frame as it was with exit 0, or exits 1 and
@@ -86,6 +87,16 @@ for f in frame-00000.pov frame-00001.pov; do
 done
 [ "$rc" -eq 0 ] && ok "fill-all: -j 2 gives the same bytes"
 rm -rf "$work/o1"
+# A heavy frame translated twice (a first draw of another projection)
+# takes the heavy turn once: the second pass once waited for the turn it
+# held itself, for ever.
+for j in 1 2; do
+    rm -rf "$work/o"
+    timeout 120 "$r2p" "$work/heavy-redo.raygl" -o "$work/o" -j $j >/dev/null 2>"$work/err"
+    rc=$?
+    [ "$rc" -eq 0 ] && [ -s "$work/o/frame-00000.pov" ] && ok "heavy-redo: -j $j, translated" ||
+        fail "heavy-redo: -j $j, exit $rc (124: hung): $(tail -n 3 "$work/err")"
+done
 # A cut is a note: --quiet hides it, and the exit status stays 0.
 "$r2p" "$work/bomb-30.raygl" -o "$work/o" -q 2>"$work/err"
 rc=$?

@@ -848,6 +848,71 @@ static void test_fast_path(void)
     }
 }
 
+/* A torus-like strip of glNormal3f, glColor3f, glVertex3f, lit or not
+ * (the run loop takes such calls three at a time), after `pre` attribute
+ * calls: with the command budget at 1024, the cut falls on each of the
+ * three calls in turn as pre goes 0, 1, 2, and on the last vertices. */
+static void strip_triplets(seq *s, bool lit, int pre)
+{
+    scene_smooth(s);
+    if (lit) {
+        CMD(s, Enable, GL_LIGHTING);
+        CMD(s, Enable, GL_LIGHT0);
+        CMD(s, Enable, GL_COLOR_MATERIAL);
+    }
+    for (int i = 0; i < pre; i++)
+        CMD(s, Normal3f, 0, 0, 1);
+    CMD(s, Begin, GL_TRIANGLE_STRIP);
+    for (int i = 0; i < 80; i++) {
+        double u = 0.3 * i, side = i % 2 ? 0.5 : -0.5;
+        CMD(s, Normal3f, cos(u), sin(u), side);
+        CMD(s, Color3f, 0.5 + 0.4 * cos(u), 0.5, 0.5 + 0.4 * sin(u));
+        CMD(s, Vertex3f, cos(u), sin(u), side);
+    }
+    CMD0(s, End);
+}
+
+/* The run loop's three-call path stops where the general decoder stops,
+ * at each of the three calls, and leaves the same scene and state. */
+static void test_fast_path_cuts(void)
+{
+    int cuts = 0;
+    for (int lit = 0; lit < 2; lit++)
+        for (int pre = 900; pre < 903; pre++) {
+            seq s;
+            seq_init(&s);
+            strip_triplets(&s, lit, pre);
+            scene a, c;
+            scene_init(&a);
+            scene_init(&c);
+            interp *ia = interp_create(&a, NULL), *ic = interp_create(&c, NULL);
+            interp_set_budget_shift(ia, 16); /* 1024 commands */
+            interp_set_budget_shift(ic, 16);
+            rgl_error err;
+            interp_begin_frame(ia);
+            interp_begin_frame(ic);
+            interp_run(ia, s.data, s.len, 0, &err);
+            interp_run_slow(ic, s.data, s.len, 0, &err);
+            const char *ca = interp_frame_cut(ia), *cc = interp_frame_cut(ic);
+            CHECK(ca && cc && strcmp(ca, cc) == 0);
+            cuts += ca && strstr(ca, "commands run") != NULL;
+            interp_end_frame(ia);
+            interp_end_frame(ic);
+            CHECK(a.nverts == c.nverts && a.ntris == c.ntris && a.nmeshes == c.nmeshes);
+            if (a.nverts == c.nverts && a.nverts)
+                CHECK(memcmp(a.verts, c.verts, a.nverts * sizeof *a.verts) == 0);
+            if (a.ntris == c.ntris && a.ntris)
+                CHECK(memcmp(a.tris, c.tris, a.ntris * sizeof *a.tris) == 0);
+            CHECK(memcmp(&interp_state(ia)->a, &interp_state(ic)->a, sizeof(gl_attribs)) == 0);
+            interp_destroy(ia);
+            interp_destroy(ic);
+            scene_finish(&a);
+            scene_finish(&c);
+            seq_free(&s);
+        }
+    CHECK_EQ_U(cuts, 6);
+}
+
 /* Shapes' tessellation is bounded per shape and per frame: a few bytes of
  * trace asking for 10^10 facets are skipped with a note, up to the bounds
  * they are drawn. */
@@ -1670,6 +1735,7 @@ int main(void)
     test_painter();
     test_alloc_failure();
     test_fast_path();
+    test_fast_path_cuts();
     test_alloc_translation();
     test_shape_budget();
     test_eval_maths();

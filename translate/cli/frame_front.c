@@ -20,7 +20,7 @@ front_scan front_scan_frame(const rgl_frame_info *fi)
     rgl_cmd cmd;
     for (;;) {
         /* Vertices, normals and colours are most of a frame: stepped over. */
-        if (rgl_cmd_skip_floats(&it)) {
+        if (rgl_cmd_skip_float_run(&it)) {
             r.flushed = false;
             continue;
         }

@@ -308,6 +308,10 @@ typedef struct worker_ctx {
 static void heavy_enter(void *ctx)
 {
     worker_ctx *w = ctx;
+    /* A frame translated twice (a second camera, frame.c) is heavy twice:
+     * its turn is held already. */
+    if (w->heavy)
+        return;
     pthread_mutex_lock(&w->j->heavy_lock);
     w->heavy = true;
 }

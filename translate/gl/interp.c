@@ -227,6 +227,8 @@ void interp_destroy(interp *ip)
     tr_free(ip->relit_col);
     tr_free(ip->relit_in);
     tr_free(ip->relit_need);
+    tr_free(ip->relit_tris);
+    tr_free(ip->relit_copy);
     tr_free(ip->fogz);
     tr_free(ip->vmat.mats);
     tr_free(ip->clipv);
@@ -244,6 +246,7 @@ void interp_reset(interp *ip)
     interp_eval_free(ip);
     interp_nurbs_free(ip);
     ip->in_begin = false;
+    ip->prim_plain = 0;
     ip->camera_fixed = false;
     ip->frame_begin = false;
     ip->frame_name[0] = '\0';
@@ -323,6 +326,44 @@ void interp_exec(interp *ip, const rgl_cmd *cmd)
  * (tests/translate/test_interp.c checks it). */
 static inline float wire_f32(const uint8_t *p) { return rgl_bits_f32(rgl_get_u32(p)); }
 
+/* The current normal and colour, stored from values in registers: their
+ * readers take them as values too (interp_add_vertex_nc), or as single
+ * floats. Built in a local and copied, they were read back from the
+ * stack in wider loads than they were stored with, a store-forwarding
+ * stall at every call. */
+static inline void set_normal(gl_attribs *a, float n0, float n1, float n2)
+{
+    a->current.normal[0] = n0;
+    a->current.normal[1] = n1;
+    a->current.normal[2] = n2;
+}
+
+static inline void put4(float *d, float c0, float c1, float c2, float c3)
+{
+    d[0] = c0;
+    d[1] = c1;
+    d[2] = c2;
+    d[3] = c3;
+}
+
+static inline void set_colour(interp *ip, float c0, float c1, float c2, float c3)
+{
+    gl_attribs *a = &ip->st.a;
+    put4(a->current.color, c0, c1, c2, c3);
+    if (!a->caps[INTERP_CAP_COLOR_MATERIAL])
+        return;
+    if (a->lighting.color_material_face == GL_FRONT_AND_BACK &&
+        a->lighting.color_material_mode == GL_AMBIENT_AND_DIFFUSE) {
+        /* GL's default, interp_color_material_update's first case */
+        for (int f = 0; f < 2; f++) {
+            put4(a->lighting.material[f].ambient, c0, c1, c2, c3);
+            put4(a->lighting.material[f].diffuse, c0, c1, c2, c3);
+        }
+    } else {
+        interp_color_material_update(ip);
+    }
+}
+
 static size_t fast_command(interp *ip, const uint8_t *p, size_t left)
 {
     gl_attribs *a = &ip->st.a;
@@ -340,8 +381,7 @@ static size_t fast_command(interp *ip, const uint8_t *p, size_t left)
     case RGL_OP_Normal3f:
         if (left < 13)
             return 0;
-        for (int k = 0; k < 3; k++)
-            a->current.normal[k] = wire_f32(p + 1 + 4 * k);
+        set_normal(a, wire_f32(p + 1), wire_f32(p + 5), wire_f32(p + 9));
         return 13;
     case RGL_OP_TexCoord2f:
         if (left < 9)
@@ -356,12 +396,8 @@ static size_t fast_command(interp *ip, const uint8_t *p, size_t left)
         size_t n = p[0] == RGL_OP_Color3f ? 3 : 4;
         if (left < 1 + 4 * n)
             return 0;
-        for (size_t k = 0; k < n; k++)
-            a->current.color[k] = wire_f32(p + 1 + 4 * k);
-        if (n == 3)
-            a->current.color[3] = 1;
-        if (a->caps[INTERP_CAP_COLOR_MATERIAL])
-            interp_color_material_update(ip);
+        set_colour(ip, wire_f32(p + 1), wire_f32(p + 5), wire_f32(p + 9),
+                   n == 4 ? wire_f32(p + 13) : 1);
         return 1 + 4 * n;
     }
     case RGL_OP_Color3ub:
@@ -369,12 +405,8 @@ static size_t fast_command(interp *ip, const uint8_t *p, size_t left)
         size_t n = p[0] == RGL_OP_Color3ub ? 3 : 4;
         if (left < 1 + n)
             return 0;
-        for (size_t k = 0; k < n; k++)
-            a->current.color[k] = (float)(p[1 + k] / 255.0);
-        if (n == 3)
-            a->current.color[3] = 1;
-        if (a->caps[INTERP_CAP_COLOR_MATERIAL])
-            interp_color_material_update(ip);
+        set_colour(ip, (float)(p[1] / 255.0), (float)(p[2] / 255.0), (float)(p[3] / 255.0),
+                   n == 4 ? (float)(p[4] / 255.0) : 1);
         return 1 + n;
     }
     default:
@@ -389,25 +421,70 @@ rgl_status interp_run(interp *ip, const uint8_t *data, size_t size, uint64_t bas
     rgl_cmd cmd;
     rgl_status st = RGL_END;
 
+    /* The scene's counts passed the budget after the last command, and
+     * the commands since changed none it checks: then after a call of
+     * fast_command only the command count needs checking. Of those calls
+     * only glVertex adds to a count, nverts, which interp_add_vertex keeps
+     * within its limit (interp_budget_vertex). */
+    bool counts_ok = false;
     rgl_cmd_iter_init(&it, data, size, base_offset);
-    for (;;) {
-        if (ip->cut)
-            break;
-        if (it.pos < it.end) {
-            const uint8_t *at = it.pos;
-            size_t n = fast_command(ip, at, (size_t)(it.end - at));
-            if (n) {
-                it.pos += n;
-                it.index++;
-                if (!interp_budget_after(ip, base_offset + (uint64_t)(at - data)))
-                    break;
-                continue;
+    while (!ip->cut) {
+        /* A run of such calls, with the iterator in locals. */
+        const uint8_t *p = it.pos, *end = it.end;
+        uint64_t k = 0;
+        size_t n;
+        bool ok = true;
+        while (p < end) {
+            const uint8_t *at = p;
+            if (counts_ok && end - p >= 39 && p[0] == RGL_OP_Normal3f &&
+                p[13] == RGL_OP_Color3f && p[26] == RGL_OP_Vertex3f && ip->in_begin &&
+                !ip->prim_skip && ip->prim_plain) {
+                /* glNormal3f, glColor3f, glVertex3f of a plain primitive:
+                 * the vertex takes the normal and colour from here. Each
+                 * call is still counted and checked in turn. */
+                float n0 = wire_f32(p + 1), n1 = wire_f32(p + 5), n2 = wire_f32(p + 9);
+                float c0 = wire_f32(p + 14), c1 = wire_f32(p + 18), c2 = wire_f32(p + 22);
+                set_normal(&ip->st.a, n0, n1, n2);
+                p += 13;
+                k++;
+                if (interp_budget_count(ip)) {
+                    at = p;
+                    set_colour(ip, c0, c1, c2, 1);
+                    p += 13;
+                    k++;
+                    if (interp_budget_count(ip)) {
+                        at = p;
+                        interp_add_vertex_nc(ip, wire_f32(p + 1), wire_f32(p + 5), wire_f32(p + 9),
+                                             n0, n1, n2, c0, c1, c2, 1);
+                        p += 13;
+                        k++;
+                        if (interp_budget_count(ip))
+                            continue;
+                    }
+                }
+                ok = !interp_budget_over(ip, base_offset + (uint64_t)(at - data));
+                break;
             }
+            if ((n = fast_command(ip, p, (size_t)(end - p))) == 0)
+                break;
+            p += n;
+            k++;
+            if (counts_ok && interp_budget_count(ip))
+                continue;
+            uint64_t offset = base_offset + (uint64_t)(at - data);
+            ok = counts_ok ? !interp_budget_over(ip, offset)
+                           : (counts_ok = interp_budget_after(ip, offset));
+            if (!ok)
+                break;
         }
+        it.pos = p;
+        it.index += k;
+        if (!ok)
+            break;
         if ((st = rgl_cmd_next(&it, &cmd)) != RGL_OK)
             break;
         interp_exec(ip, &cmd);
-        if (!interp_budget_after(ip, cmd.offset))
+        if (!(counts_ok = interp_budget_after(ip, cmd.offset)))
             break;
     }
     if (ip->cut)
@@ -490,6 +567,11 @@ void interp_diag(interp *ip, diag_kind kind, const char *fmt, ...)
 void interp_clear_notes(interp *ip) { ip->notes_seen = 0; }
 
 void interp_frame_note(interp *ip, diag_kind kind) { interp_note(ip, kind); }
+
+bool interp_note_said(const interp *ip, diag_kind kind)
+{
+    return !ip->log || (ip->notes_seen & (1ull << (kind - DIAG_FIRST_NOTE)));
+}
 
 void interp_note(interp *ip, diag_kind kind)
 {

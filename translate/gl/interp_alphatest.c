@@ -17,11 +17,13 @@
  */
 #include "interp_internal.h"
 
-static bool testing(const interp *ip)
+bool interp_alpha_testing(const interp *ip)
 {
     const gl_attribs *a = &ip->st.a;
     return a->caps[INTERP_CAP_ALPHA_TEST] && a->color_buffer.alpha_func != GL_ALWAYS;
 }
+
+static bool testing(const interp *ip) { return interp_alpha_testing(ip); }
 
 uint8_t interp_alpha_vertex(interp *ip, size_t k, float a)
 {

@@ -8,6 +8,7 @@
 #define RGL_INTERP_INTERNAL_H
 
 #include <math.h>
+#include <string.h>
 
 #include "interp.h"
 #include "unrecorded.h"
@@ -54,7 +55,7 @@ typedef struct interp_relit_in {
  * position (bit for bit) instead of once per vertex. */
 typedef struct interp_litdir {
     float pos[3];
-    bool set, h_set;
+    bool set;
     double vp[3], d; /* unit direction, length of the position */
     double h[3], hl; /* half vector for the infinite viewer, its length */
 } interp_litdir;
@@ -119,6 +120,11 @@ struct interp {
     bool in_begin;
     GLenum prim_mode;
     bool prim_skip;     /* vertices are dropped (no scene, or a bad transform) */
+    /* The open primitive's vertices take interp_add_vertex's short path:
+     * filled, no texture unit, alpha test, colour sum, fog coordinate or
+     * mapped blend; PRIM_PLAIN_LIT: lit by the writer (surface colour). */
+    uint8_t prim_plain;
+    bool prim_plain_relit; /* and GL's lit colour may be wanted (interp_relit_defer) */
     size_t prim_first;  /* first vertex of the primitive in scene->verts */
     mat4 prim_to_eye;   /* object -> camera eye space for this primitive */
     /* lit_line_colour's last modelview and its inverse (ok: invertible),
@@ -154,6 +160,10 @@ struct interp {
     size_t relit_made;     /* of those, the first ones with their colour in relit_col */
     uint8_t *relit_need;   /* vertex k is a corner of a face left for the GL-lit pass */
     size_t cap_relit_need;
+    uint32_t (*relit_tris)[4]; /* those faces' triangles: corners and provoking vertex */
+    size_t nrelit_tris, cap_relit_tris;
+    uint32_t *relit_copy;  /* pool index of a marked vertex's GL-lit copy */
+    size_t cap_relit_copy;
     bool relit_over;       /* some vertex was lit past 1 in a channel */
     bool prim_relit;       /* the look being made is of GL-lit faces */
     double *fogz;          /* GL's eye z of each vertex, when fogged (interp_fogbehind.c) */
@@ -329,6 +339,9 @@ void interp_diag(interp *ip, diag_kind kind, const char *fmt, ...);
 
 /* Logs a NOTE_* kind once per frame (the CLI then says it once per run). */
 void interp_note(interp *ip, diag_kind kind);
+/* Whether interp_note(kind) would log nothing now (said in this frame, or
+ * no log): a costly test for a note may be skipped then. */
+bool interp_note_said(const interp *ip, diag_kind kind);
 
 /* glTexImage1D/2D's effect on the bound texture, pixels from resource id
  * (0: undefined contents), and glTexSubImage1D/2D's (dims 1 or 2): for
@@ -420,7 +433,27 @@ static inline bool interp_budget_after(interp *ip, uint64_t offset)
         return !interp_budget_over(ip, offset);
     return true;
 }
+/* interp_budget_after for a command that changed none of the scene's
+ * counts it checks (or kept them within their limits), when the check
+ * after the command before it passed: only the command count can be over.
+ * True when it is not; else interp_budget_over(ip, offset) decides. */
+static inline bool interp_budget_count(interp *ip)
+{
+    if ((ip->cmds_run & 1023) == 0 && !ip->heavy && ip->heavy_fn)
+        interp_heavy_check(ip);
+    return !ip->cut && ++ip->cmds_run <= INTERP_LIMIT(ip, COMMANDS);
+}
 bool interp_budget_vertex(interp *ip);
+/* interp_budget_vertex with its common case (room left) inline. */
+static inline bool interp_budget_vertex_fast(interp *ip)
+{
+    if (!ip->cut && ip->assembled < INTERP_LIMIT(ip, ASSEMBLED) &&
+        (!ip->scene || ip->scene->nverts < INTERP_LIMIT(ip, VERTICES))) {
+        ip->assembled++;
+        return true;
+    }
+    return interp_budget_vertex(ip);
+}
 bool interp_budget_texels(interp *ip, uint64_t bytes);
 
 
@@ -458,6 +491,12 @@ mat4 interp_window_matrix(const mat4 *proj, const int32_t vp[4]);
 /* Adds a vertex with the current attributes to the open primitive, which
  * must be drawing (in_begin, not prim_skip) (interp_prim.c). */
 void interp_add_vertex(interp *ip, double x, double y, double z, double w);
+/* The same for a plain primitive (prim_plain) and w = 1, when the current
+ * normal and colour were just set to n and c (interp.c's glNormal3f,
+ * glColor3f, glVertex3f): handed over in registers, not read back from
+ * memory just after being stored, which stalls on store forwarding. */
+void interp_add_vertex_nc(interp *ip, double x, double y, double z, float n0, float n1, float n2,
+                          float c0, float c1, float c2, float c3);
 
 /* glBegin(mode) and glEnd for the primitives the interpreter draws itself
  * (GLU and GLUT shapes): the same assembly, culling and polygon mode as
@@ -670,6 +709,8 @@ void interp_scissor_look(const interp *ip, scene_look *look);
  * count); notes the cases drawn approximately. */
 #define INTERP_ALPHA_FAIL 2
 uint8_t interp_alpha_vertex(interp *ip, size_t k, float a);
+/* Whether the alpha test discards anything now (enabled, not GL_ALWAYS). */
+bool interp_alpha_testing(const interp *ip);
 bool interp_alpha_face(interp *ip, const uint32_t *idx, int n, int32_t texture);
 bool interp_scissor_clear(interp *ip);
 void interp_scissor_end_frame(interp *ip);
@@ -748,20 +789,45 @@ void interp_lit_color(const interp *ip, const double p[3], const double n[3], bo
 void interp_lit_color_peak(const interp *ip, const double p[3], const double n[3], bool back,
                            const float colour[4], float out[4], double *peak);
 
+/* interp_lit_color_peak in two steps, for many vertices lit under one
+ * state (a primitive's: between glBegin and glEnd only glMaterial changes
+ * it, and the kept colours are made before, interp_relit_flush).
+ * _prepare finds once what every vertex reads of the lights and of
+ * GL_COLOR_MATERIAL; _prepared lights one vertex as interp_lit_color_peak
+ * does, bit for bit, while that state holds. */
+typedef struct interp_lit_prep {
+    int face;          /* the material lit: 1 for back faces under two-sided lighting */
+    uint8_t cm;        /* SCENE_CM_* terms the vertex colour gives */
+    bool local_viewer;
+    bool need_p;       /* a positional light or a local viewer reads the eye point */
+    int nlights;
+    uint8_t light[INTERP_MAX_LIGHTS]; /* the lights on that add something, in order */
+    /* For interp_prim.c's vertices in object space: the modelview, its
+     * inverse (NULL: singular) and GL_RESCALE_NORMAL's factor. */
+    const mat4 *mv, *inv;
+    bool normalize, rescale;
+    double rescale_r;
+} interp_lit_prep;
+void interp_lit_prepare(const interp *ip, bool back, interp_lit_prep *lp);
+void interp_lit_prepared(const interp *ip, const interp_lit_prep *lp, const double p[3],
+                         const double n[3], const float colour[4], float out[4], double *peak);
+
 /* GL's own lighting for the faces POV-Ray would light otherwise
  * (interp_relit.c): back faces under one-sided lighting, and textured
  * GL_MODULATE surfaces lit past white (GL clamps before the texture).
  * _wanted: the open filled primitive's vertices need GL's lit colour;
- * _defer: keeps vertex k's inputs (the current colour and normal) for
+ * _defer: keeps vertex k's inputs (the current normal and colour) for
+ * (inline, at every vertex; _grow: room for vertex k, false when none)
  * _flush, which makes the kept vertices' colours (at a change of material
- * between vertices, and when glEnd needs them); _colour: one vertex's
- * (post-processed) lit colour and its unclamped peak;
+ * between vertices, and when glEnd needs them); _prepare: GL's state for
+ * _colour (interp_lit_prepare), which gives one vertex's (post-processed)
+ * lit colour and its unclamped peak (peak may be NULL);
  * _split: at glEnd, which faces go to a GL-lit mesh (0: none,
  * INTERP_RELIT_BACK: back faces, INTERP_RELIT_ALL: all); _need_clear:
- * no vertex marked in relit_need yet (false: out of memory); _vertices: the
- * primitive's n vertices copied with their GL colours (made only for the
- * marked ones, the others unused by any face), returning the
- * copies' first index (or -1 on failure); _done: forget the primitive. */
+ * no vertex marked in relit_need, no face kept in relit_tris yet (false:
+ * out of memory); _vertices: the marked ones of the primitive's n
+ * vertices copied with their GL colours, relit_copy[k] the pool index of
+ * vertex k's copy (false on failure); _done: forget the primitive. */
 /* Fog of primitives reaching behind the eye (interp_fogbehind.c). _check:
  * at glEnd of n pool vertices (before they move to eye space), notes a
  * fogged line or unfilled polygon with vertices both behind and in front
@@ -776,12 +842,29 @@ scene_mesh *interp_fog_behind_mesh(interp *ip, const scene_look *look, const mat
 #define INTERP_RELIT_ALL 2
 #define INTERP_RELIT_PROBE 3 /* back faces noted (NOTE_RELIT_SPECULAR), drawn as they are */
 bool interp_relit_wanted(const interp *ip);
-void interp_relit_defer(interp *ip, size_t k, double x, double y, double z);
+bool interp_relit_grow(interp *ip, size_t k);
+static inline void interp_relit_defer(interp *ip, size_t k, double x, double y, double z,
+                                      const float normal[3], const float colour[4])
+{
+    if (k == 0)
+        ip->relit_pending = ip->relit_made = 0;
+    if (k != ip->relit_pending)
+        return; /* an earlier vertex was not kept: _vertices will refuse */
+    if (k >= ip->cap_relit_in && !interp_relit_grow(ip, k))
+        return;
+    interp_relit_in *in = &ip->relit_in[k];
+    in->p[0] = x, in->p[1] = y, in->p[2] = z;
+    memcpy(in->normal, normal, sizeof in->normal);
+    memcpy(in->colour, colour, sizeof in->colour);
+    ip->relit_pending = k + 1;
+}
 void interp_relit_flush(interp *ip);
-void interp_relit_colour(interp *ip, const interp_relit_in *in, float c[4], double *peak);
+void interp_relit_prepare(interp *ip, interp_lit_prep *lp);
+void interp_relit_colour(interp *ip, const interp_lit_prep *lp, const interp_relit_in *in,
+                         float c[4], double *peak);
 int interp_relit_split(interp *ip, const scene_look *look);
 bool interp_relit_need_clear(interp *ip, uint32_t n);
-long interp_relit_vertices(interp *ip, uint32_t n);
+bool interp_relit_vertices(interp *ip, uint32_t n);
 void interp_relit_done(interp *ip);
 
 /* The colour a surface vertex carries into the scene (scene_vertex.color):

@@ -50,6 +50,14 @@ void interp_color_material_update(interp *ip)
     gl_attribs *a = &ip->st.a;
     int faces = face_mask(a->lighting.color_material_face);
     const float *c = a->current.color;
+    if (faces == 3 && a->lighting.color_material_mode == GL_AMBIENT_AND_DIFFUSE) {
+        /* GL's default, at every glColor of a lit draw: straight through */
+        memcpy(a->lighting.material[0].ambient, c, 4 * sizeof *c);
+        memcpy(a->lighting.material[0].diffuse, c, 4 * sizeof *c);
+        memcpy(a->lighting.material[1].ambient, c, 4 * sizeof *c);
+        memcpy(a->lighting.material[1].diffuse, c, 4 * sizeof *c);
+        return;
+    }
     for (int f = 0; f < 2; f++) {
         if (!(faces & (1 << f)))
             continue;
@@ -397,30 +405,80 @@ void interp_lit_color(const interp *ip, const double p[3], const double n[3], bo
 void interp_lit_color_peak(const interp *ip, const double p[3], const double n[3], bool back,
                            const float colour[4], float out[4], double *peak)
 {
+    interp_lit_prep lp;
+    interp_lit_prepare(ip, back, &lp);
+    interp_lit_prepared(ip, &lp, p, n, colour, out, peak);
+}
+
+void interp_lit_prepare(const interp *ip, bool back, interp_lit_prep *lp)
+{
     const gl_attribs *a = &ip->st.a;
     int f = back && a->lighting.two_side ? 1 : 0;
-    gl_material m = a->lighting.material[f];
+    lp->face = f;
+    lp->cm = 0;
     if (a->caps[INTERP_CAP_COLOR_MATERIAL] &&
-        (face_mask(a->lighting.color_material_face) & (1 << f))) {
-        uint8_t bits = cm_bits(a->lighting.color_material_mode);
-        if (bits & SCENE_CM_AMBIENT) memcpy(m.ambient, colour, sizeof m.ambient);
-        if (bits & SCENE_CM_DIFFUSE) memcpy(m.diffuse, colour, sizeof m.diffuse);
-        if (bits & SCENE_CM_SPECULAR) memcpy(m.specular, colour, sizeof m.specular);
-        if (bits & SCENE_CM_EMISSION) memcpy(m.emission, colour, sizeof m.emission);
-    }
-    double nn[3] = {n[0], n[1], n[2]};
-    if (f == 1)
-        for (int k = 0; k < 3; k++)
-            nn[k] = -nn[k];
-    double c[3], spec[3] = {0, 0, 0};
-    for (int k = 0; k < 3; k++)
-        c[k] = m.emission[k] + m.ambient[k] * a->lighting.model_ambient[k];
+        (face_mask(a->lighting.color_material_face) & (1 << f)))
+        lp->cm = cm_bits(a->lighting.color_material_mode);
+    lp->local_viewer = a->lighting.local_viewer;
+    lp->need_p = lp->local_viewer;
+    lp->nlights = 0;
     /* A cache of the interp's own (interp_internal.h): every interp is
      * made writable by interp_create, only this function is handed it const. */
     interp_litdir *dircache = ((interp *)ip)->litdir;
     for (int i = 0; i < INTERP_MAX_LIGHTS; i++) {
         if (!light_on(a, i))
             continue;
+        const gl_light *l = &a->lighting.light[i];
+        if (l->position[3] != 0) {
+            lp->need_p = true;
+        } else {
+            /* The same arithmetic once per position, not per vertex. */
+            interp_litdir *dc = &dircache[i];
+            if (!dc->set || memcmp(dc->pos, l->position, sizeof dc->pos) != 0) {
+                double *cv = dc->vp;
+                for (int k = 0; k < 3; k++)
+                    cv[k] = l->position[k];
+                dc->d = sqrt(cv[0] * cv[0] + cv[1] * cv[1] + cv[2] * cv[2]);
+                if (dc->d > 0)
+                    for (int k = 0; k < 3; k++)
+                        cv[k] /= dc->d;
+                memcpy(dc->pos, l->position, sizeof dc->pos);
+                dc->set = true;
+                /* The half vector for the infinite viewer (0, 0, 1). */
+                for (int k = 0; k < 3; k++)
+                    dc->h[k] = cv[k] + (k == 2);
+                dc->hl = sqrt(dc->h[0] * dc->h[0] + dc->h[1] * dc->h[1] + dc->h[2] * dc->h[2]);
+            }
+            if (!(dc->d > 0))
+                continue; /* no direction: GL's vector is 0, it adds nothing */
+        }
+        lp->light[lp->nlights++] = (uint8_t)i;
+    }
+}
+
+void interp_lit_prepared(const interp *ip, const interp_lit_prep *lp, const double p[3],
+                         const double n[3], const float colour[4], float out[4], double *peak)
+{
+    const gl_attribs *a = &ip->st.a;
+    int f = lp->face;
+    /* The material's terms, or the colour for those GL_COLOR_MATERIAL
+     * takes: pointers, not a copy of the material per vertex. */
+    const gl_material *gm = &a->lighting.material[f];
+    const float *ma = lp->cm & SCENE_CM_AMBIENT ? colour : gm->ambient;
+    const float *md = lp->cm & SCENE_CM_DIFFUSE ? colour : gm->diffuse;
+    const float *ms = lp->cm & SCENE_CM_SPECULAR ? colour : gm->specular;
+    const float *me = lp->cm & SCENE_CM_EMISSION ? colour : gm->emission;
+    float shininess = gm->shininess;
+    double nn[3] = {n[0], n[1], n[2]};
+    if (f == 1)
+        for (int k = 0; k < 3; k++)
+            nn[k] = -nn[k];
+    double c[3], spec[3] = {0, 0, 0};
+    for (int k = 0; k < 3; k++)
+        c[k] = me[k] + ma[k] * a->lighting.model_ambient[k];
+    const interp_litdir *dircache = ip->litdir;
+    for (int li = 0; li < lp->nlights; li++) {
+        int i = lp->light[li];
         const gl_light *l = &a->lighting.light[i];
         double vp[3], att = 1, spot = 1, d = 0;
         bool dir = l->position[3] == 0;
@@ -435,22 +493,6 @@ void interp_lit_color_peak(const interp *ip, const double p[3], const double n[3
             for (int k = 0; k < 3; k++)
                 vp[k] /= d;
         } else {
-            /* The same arithmetic once per position, not per vertex. */
-            if (!dircache[i].set || memcmp(dircache[i].pos, l->position, sizeof dircache[i].pos) != 0) {
-                double *cv = dircache[i].vp;
-                for (int k = 0; k < 3; k++)
-                    cv[k] = l->position[k];
-                dircache[i].d = sqrt(cv[0] * cv[0] + cv[1] * cv[1] + cv[2] * cv[2]);
-                if (dircache[i].d > 0)
-                    for (int k = 0; k < 3; k++)
-                        cv[k] /= dircache[i].d;
-                memcpy(dircache[i].pos, l->position, sizeof dircache[i].pos);
-                dircache[i].set = true;
-                dircache[i].h_set = false;
-            }
-            d = dircache[i].d;
-            if (!(d > 0))
-                continue;
             memcpy(vp, dircache[i].vp, sizeof vp);
         }
         if (l->spot_cutoff != 180 && l->position[3] != 0) {
@@ -463,12 +505,12 @@ void interp_lit_color_peak(const interp *ip, const double p[3], const double n[3
         double sp = 0;
         if (nl > 0) {
             double h[3], hl;
-            if (dir && !a->lighting.local_viewer && dircache[i].h_set) {
+            if (dir && !lp->local_viewer) {
                 memcpy(h, dircache[i].h, sizeof h);
                 hl = dircache[i].hl;
             } else {
                 double e[3] = {0, 0, 1};
-                if (a->lighting.local_viewer) {
+                if (lp->local_viewer) {
                     double pl = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
                     for (int k = 0; k < 3; k++)
                         e[k] = pl > 0 ? -p[k] / pl : 0;
@@ -476,25 +518,30 @@ void interp_lit_color_peak(const interp *ip, const double p[3], const double n[3
                 for (int k = 0; k < 3; k++)
                     h[k] = vp[k] + e[k];
                 hl = sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
-                if (dir && !a->lighting.local_viewer) {
-                    memcpy(dircache[i].h, h, sizeof h);
-                    dircache[i].hl = hl;
-                    dircache[i].h_set = true;
-                }
             }
-            double nh = hl > 0 ? (nn[0] * h[0] + nn[1] * h[1] + nn[2] * h[2]) / hl : 0;
-            sp = nh > 0 ? pow(nh, m.shininess) : (m.shininess == 0 ? 1 : 0);
+            /* x^0 is 1 for every x: neither pow nor n.h is needed for
+             * the default shininess. */
+            if (shininess == 0) {
+                sp = 1;
+            } else {
+                double nh = hl > 0 ? (nn[0] * h[0] + nn[1] * h[1] + nn[2] * h[2]) / hl : 0;
+                sp = nh > 0 ? pow(nh, shininess) : 0;
+            }
         }
+        /* nl where positive, else 0 (fmax's value but for the sign of a
+         * zero, which the sums and the clamp below do not show). */
+        double dl = nl > 0 ? nl : 0;
         for (int k = 0; k < 3; k++) {
             c[k] += att * spot *
-                    (m.ambient[k] * l->ambient[k] + fmax(nl, 0) * m.diffuse[k] * l->diffuse[k] +
-                     sp * m.specular[k] * l->specular[k]);
-            spec[k] += att * spot * sp * m.specular[k] * l->specular[k];
+                    (ma[k] * l->ambient[k] + dl * md[k] * l->diffuse[k] +
+                     sp * ms[k] * l->specular[k]);
+            if (peak)
+                spec[k] += att * spot * sp * ms[k] * l->specular[k];
         }
     }
     for (int k = 0; k < 3; k++)
         out[k] = clamp01((float)c[k]);
-    out[3] = clamp01(m.diffuse[3]);
+    out[3] = clamp01(md[3]);
     if (peak) { /* the colour GL clamps before texturing: the primary one alone */
         bool sep = a->lighting.color_control != GL_SINGLE_COLOR;
         double q[3];

@@ -22,6 +22,9 @@
 
 #include "talloc.h"
 
+#define PRIM_PLAIN_UNLIT 1 /* interp_internal.h, prim_plain */
+#define PRIM_PLAIN_LIT 2
+
 /* ---- Current attributes ------------------------------------------------------ */
 
 /* GL 1.x table 2.9: integer colour and normal components map to [0, 1] or
@@ -338,6 +341,7 @@ static void begin_mode(interp *ip, GLenum mode)
     ip->in_begin = true;
     ip->prim_mode = mode;
     ip->prim_skip = true;
+    ip->prim_plain = 0;
     interp_vmat_begin(ip);
     ip->prim_color_sum = ip->prim_fog_vertex = false;
     if (!ip->scene || !interp_render_mode_draws(ip))
@@ -356,6 +360,14 @@ static void begin_mode(interp *ip, GLenum mode)
     ip->prim_blend = blend_mode(ip, mode);
     interp_draw_units(ip);
     interp_fogsec_begin(ip, mode);
+    const uint8_t *c = ip->st.a.caps;
+    bool lit = c[INTERP_CAP_LIGHTING];
+    ip->prim_plain = 0;
+    if (mode > GL_LINE_STRIP && !(lit && interp_vertex_lit(ip)) && ip->draw_unit[0] < 0 &&
+        !ip->prim_color_sum && !ip->prim_fog_vertex && !ip->prim_blend_mapped &&
+        !interp_alpha_testing(ip))
+        ip->prim_plain = lit ? PRIM_PLAIN_LIT : PRIM_PLAIN_UNLIT;
+    ip->prim_plain_relit = interp_relit_wanted(ip);
 }
 
 void interp_begin(interp *ip, const rgl_cmd *cmd)
@@ -370,10 +382,12 @@ void interp_begin(interp *ip, const rgl_cmd *cmd)
 
 /* ---- Vertices ---------------------------------------------------------------- */
 
-void interp_surface_colour(const interp *ip, float out[4])
+/* interp_surface_colour with the current colour (c0, c1, c2, c3): the
+ * caller's copy of it, in registers (add_vertex_plain). */
+static inline void surface_colour(const interp *ip, float c0, float c1, float c2, float c3,
+                                  float out[4])
 {
     const gl_attribs *a = &ip->st.a;
-    const float *c = a->current.color;
     if (a->caps[INTERP_CAP_LIGHTING]) {
         /* The writer lights it: the colour carries what GL_COLOR_MATERIAL
          * takes from glColor, and GL's lit alpha, the diffuse one
@@ -381,44 +395,65 @@ void interp_surface_colour(const interp *ip, float out[4])
          * to glColor when colour material covers it). */
         const gl_material *fm = &a->lighting.material[0];
         if (!a->caps[INTERP_CAP_COLOR_MATERIAL])
-            c = fm->diffuse;
-        for (int i = 0; i < 3; i++)
-            out[i] = clamp01(c[i]);
-        out[3] = clamp01(fm->diffuse[3]);
-    } else {
-        for (int i = 0; i < 4; i++)
-            out[i] = clamp01(c[i]);
+            c0 = fm->diffuse[0], c1 = fm->diffuse[1], c2 = fm->diffuse[2];
+        c3 = fm->diffuse[3];
     }
+    out[0] = clamp01(c0);
+    out[1] = clamp01(c1);
+    out[2] = clamp01(c2);
     if (ip->prim_blend == SCENE_BLEND_OPAQUE)
         out[3] = 1;
     else if (ip->prim_blend == SCENE_BLEND_INVISIBLE)
         out[3] = 0;
+    else
+        out[3] = clamp01(c3);
 }
 
-/* Lines and points under lighting: GL's lit colour at the vertex, computed
- * here (the scene draws them unlit), with the current normal in GL's own
+void interp_surface_colour(const interp *ip, float out[4])
+{
+    const float *c = ip->st.a.current.color;
+    surface_colour(ip, c[0], c[1], c[2], c[3], out);
+}
+
+/* GL's lit colour at a vertex in object space, with its normal in GL's own
  * eye space (2.11.3: the inverse transpose of the modelview, normalised
- * under GL_NORMALIZE, rescaled under GL_RESCALE_NORMAL). */
-static void lit_colour_at(interp *ip, double x, double y, double z, const float cn[3],
-                          const float colour[4], float out[4], double *peak)
+ * under GL_NORMALIZE, rescaled under GL_RESCALE_NORMAL). lit_prepare
+ * finds the modelview's inverse (kept while the matrix is bit for bit the
+ * same) and the lighting state once for a primitive's vertices. */
+static void lit_prepare(interp *ip, interp_lit_prep *lp)
 {
     const gl_attribs *a = &ip->st.a;
     const mat4 *mv = interp_matrix(ip, INTERP_MV);
-    double in[4] = {x, y, z, 1}, o[4], p[3], n[3] = {0, 0, 0};
-    mat4_apply(mv, in, o);
-    if (o[3] == 1) /* an affine modelview: x / 1 is x, without three divisions */
-        p[0] = o[0], p[1] = o[1], p[2] = o[2];
-    else
-        for (int k = 0; k < 3; k++)
-            p[k] = o[3] != 0 ? o[k] / o[3] : o[k];
     if (!ip->lit_mv_set || memcmp(&ip->lit_mv, mv, sizeof *mv) != 0) {
         ip->lit_mv = *mv;
         ip->lit_mv_ok = mat4_invert(mv, &ip->lit_mv_inv);
         ip->lit_mv_set = true;
     }
-    const mat4 *inv = &ip->lit_mv_inv;
-    if (ip->lit_mv_ok) {
-        const double *im = inv->m;
+    interp_lit_prepare(ip, false, lp);
+    lp->mv = mv;
+    lp->inv = ip->lit_mv_ok ? &ip->lit_mv_inv : NULL;
+    lp->normalize = a->caps[INTERP_CAP_NORMALIZE];
+    lp->rescale = a->caps[INTERP_CAP_RESCALE_NORMAL];
+    const double *im = ip->lit_mv_inv.m;
+    lp->rescale_r = sqrt(im[2] * im[2] + im[6] * im[6] + im[10] * im[10]);
+}
+
+static void lit_colour_at(const interp *ip, const interp_lit_prep *lp, double x, double y,
+                          double z, const float cn[3], const float colour[4], float out[4],
+                          double *peak)
+{
+    double p[3] = {0, 0, 0}, n[3] = {0, 0, 0};
+    if (lp->need_p) { /* else no term reads it */
+        double in[4] = {x, y, z, 1}, o[4];
+        mat4_apply(lp->mv, in, o);
+        if (o[3] == 1) /* an affine modelview: x / 1 is x, without three divisions */
+            p[0] = o[0], p[1] = o[1], p[2] = o[2];
+        else
+            for (int k = 0; k < 3; k++)
+                p[k] = o[3] != 0 ? o[k] / o[3] : o[k];
+    }
+    if (lp->inv) {
+        const double *im = lp->inv->m;
         /* n^T M^-1: row k of the inverse's transpose. In scalars: stored
          * one by one and read back two at a time, the array stalled on
          * store forwarding at every vertex. */
@@ -426,30 +461,34 @@ static void lit_colour_at(interp *ip, double x, double y, double z, const float 
         double n1 = cn[0] * im[4] + cn[1] * im[5] + cn[2] * im[6];
         double n2 = cn[0] * im[8] + cn[1] * im[9] + cn[2] * im[10];
         n[0] = n0, n[1] = n1, n[2] = n2;
-        bool normalize = a->caps[INTERP_CAP_NORMALIZE];
-        double len = normalize ? sqrt(n0 * n0 + n1 * n1 + n2 * n2) : 0; /* only then */
-        if (normalize && len > 0) {
+        double len = lp->normalize ? sqrt(n0 * n0 + n1 * n1 + n2 * n2) : 0; /* only then */
+        if (lp->normalize && len > 0) {
             for (int k = 0; k < 3; k++)
                 n[k] /= len;
-        } else if (a->caps[INTERP_CAP_RESCALE_NORMAL]) {
-            double r = sqrt(inv->m[2] * inv->m[2] + inv->m[6] * inv->m[6] + inv->m[10] * inv->m[10]);
+        } else if (lp->rescale) {
+            double r = lp->rescale_r;
             if (r > 0)
                 for (int k = 0; k < 3; k++)
                     n[k] /= r;
         }
     }
-    interp_lit_color_peak(ip, p, n, false, colour, out, peak);
+    interp_lit_prepared(ip, lp, p, n, colour, out, peak);
 }
 
 static void lit_line_colour(interp *ip, double x, double y, double z, float out[4], double *peak)
 {
     const gl_attribs *a = &ip->st.a;
-    lit_colour_at(ip, x, y, z, a->current.normal, a->current.color, out, peak);
+    interp_lit_prep lp;
+    lit_prepare(ip, &lp);
+    lit_colour_at(ip, &lp, x, y, z, a->current.normal, a->current.color, out, peak);
 }
 
-void interp_relit_colour(interp *ip, const interp_relit_in *in, float c[4], double *peak)
+void interp_relit_prepare(interp *ip, interp_lit_prep *lp) { lit_prepare(ip, lp); }
+
+void interp_relit_colour(interp *ip, const interp_lit_prep *lp, const interp_relit_in *in,
+                         float c[4], double *peak)
 {
-    lit_colour_at(ip, in->p[0], in->p[1], in->p[2], in->normal, in->colour, c, peak);
+    lit_colour_at(ip, lp, in->p[0], in->p[1], in->p[2], in->normal, in->colour, c, peak);
     if (ip->prim_blend_mapped)
         map_blend(ip, c);
     if (ip->prim_blend == SCENE_BLEND_OPAQUE)
@@ -463,7 +502,106 @@ void interp_lit_point_colour(interp *ip, double x, double y, double z, float out
     lit_line_colour(ip, x, y, z, out, NULL);
 }
 
-void interp_add_vertex(interp *ip, double x, double y, double z, double w)
+/* add_vertex_plain's calls, out of its way (a call there made the
+ * compiler keep its arguments in memory, read back in wider loads than
+ * they were stored with: a store-forwarding stall at every vertex): the
+ * budget, room in the pool and the per-vertex arrays. False when the
+ * vertex is dropped. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static bool plain_make_room(interp *ip, size_t k)
+{
+    scene *s = ip->scene;
+    if (!interp_budget_vertex(ip) || !scene_reserve_vertices(s, 1))
+        return false;
+    if (k >= ip->cap_edge && tr_grow((void **)&ip->edge, &ip->cap_edge, k + 1, 1) != 0) {
+        s->failed = true;
+        return false;
+    }
+    /* interp_relit_defer's room; a failure keeps the vertex, as there */
+    if (ip->prim_plain_relit && k >= ip->cap_relit_in && (k == 0 || k == ip->relit_pending))
+        interp_relit_grow(ip, k);
+    return true;
+}
+
+/* interp_add_vertex for a plain primitive (begin_mode's prim_plain) and
+ * w = 1: the same vertex, without the tests that cannot pass and with the
+ * common cases inline. The normal n and colour c are the current ones,
+ * as values: read back from memory just after glNormal3f and glColor3f
+ * stored them, in loads wider than those stores, they stalled on store
+ * forwarding (interp_add_vertex_nc hands them over from the decoder). */
+static inline void add_vertex_plain(interp *ip, double x, double y, double z, float n0, float n1,
+                                    float n2, float c0, float c1, float c2, float c3)
+{
+    scene *s = ip->scene;
+    size_t k = s->nverts - ip->prim_first;
+    bool room = !ip->cut && ip->assembled < INTERP_LIMIT(ip, ASSEMBLED) &&
+                s->nverts < INTERP_LIMIT(ip, VERTICES) && s->nverts < s->cap_verts &&
+                s->nverts < SCENE_MAX_VERTICES && !s->failed && k < ip->cap_edge &&
+                (!ip->prim_plain_relit || k < ip->cap_relit_in);
+    if (room)
+        ip->assembled++; /* interp_budget_vertex's count */
+    else if (!plain_make_room(ip, k))
+        return;
+    scene_vertex *v = s->verts + s->nverts;
+    const gl_attribs *a = &ip->st.a;
+    v->pos[0] = (float)x;
+    v->pos[1] = (float)y;
+    v->pos[2] = (float)z;
+    v->normal[0] = n0;
+    v->normal[1] = n1;
+    v->normal[2] = n2;
+    if (ip->prim_plain == PRIM_PLAIN_LIT) {
+        surface_colour(ip, c0, c1, c2, c3, v->color);
+    } else {
+        v->color[0] = clamp01(c0);
+        v->color[1] = clamp01(c1);
+        v->color[2] = clamp01(c2);
+        v->color[3] = ip->prim_blend == SCENE_BLEND_OPAQUE      ? 1
+                      : ip->prim_blend == SCENE_BLEND_INVISIBLE ? 0
+                                                                : clamp01(c3);
+    }
+    if (a->current.fog_coord != ip->prim_coord0) /* interp_fogsec_track */
+        ip->prim_coord_same = false;
+    if (ip->prim_plain_relit) { /* interp_relit_defer, its room made above */
+        if (k == 0)
+            ip->relit_pending = ip->relit_made = 0;
+        if (k == ip->relit_pending && k < ip->cap_relit_in) {
+            interp_relit_in *in = &ip->relit_in[k];
+            in->p[0] = x, in->p[1] = y, in->p[2] = z;
+            in->normal[0] = n0, in->normal[1] = n1, in->normal[2] = n2;
+            in->colour[0] = c0, in->colour[1] = c1, in->colour[2] = c2, in->colour[3] = c3;
+            ip->relit_pending = k + 1;
+        }
+    }
+    float q = a->current.texcoord[3];
+    v->tex1[0] = v->tex1[1] = 0;
+    if (q == 1 || q == 0 || !isfinite(q)) {
+        v->tex[0] = a->current.texcoord[0];
+        v->tex[1] = a->current.texcoord[1];
+    } else {
+        v->tex[0] = a->current.texcoord[0] / q;
+        v->tex[1] = a->current.texcoord[1] / q;
+    }
+    ip->edge[k] = (uint8_t)a->current.edge_flag;
+    scene_commit_vertices(s, 1);
+    if (ip->vmat.changed)
+        interp_vmat_vertex(ip);
+}
+
+void interp_add_vertex_nc(interp *ip, double x, double y, double z, float n0, float n1, float n2,
+                          float c0, float c1, float c2, float c3)
+{
+    add_vertex_plain(ip, x, y, z, n0, n1, n2, c0, c1, c2, c3);
+}
+
+/* The other vertices: not inlined into interp_add_vertex, whose short
+ * path would pay for this one's registers at every call. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void add_vertex_general(interp *ip, double x, double y, double z, double w)
 {
     scene *s = ip->scene;
     size_t k = s->nverts - ip->prim_first;
@@ -509,7 +647,7 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
     else if (ip->prim_blend == SCENE_BLEND_INVISIBLE)
         v->color[3] = 0;
     if (interp_relit_wanted(ip)) /* GL's colour, should its face need it */
-        interp_relit_defer(ip, k, x, y, z);
+        interp_relit_defer(ip, k, x, y, z, a->current.normal, a->current.color);
     float q = a->current.texcoord[3];
     v->tex1[0] = v->tex1[1] = 0;
     if (ip->draw_unit[0] >= 0) {
@@ -535,6 +673,15 @@ void interp_add_vertex(interp *ip, double x, double y, double z, double w)
     ip->edge[k] = (uint8_t)(a->current.edge_flag | afail);
     scene_commit_vertices(s, 1);
     interp_vmat_vertex(ip);
+}
+
+void interp_add_vertex(interp *ip, double x, double y, double z, double w)
+{
+    const float *n = ip->st.a.current.normal, *c = ip->st.a.current.color;
+    if (ip->prim_plain && w == 1)
+        add_vertex_plain(ip, x, y, z, n[0], n[1], n[2], c[0], c[1], c[2], c[3]);
+    else
+        add_vertex_general(ip, x, y, z, w);
 }
 
 void interp_vertex(interp *ip, const rgl_cmd *cmd)
@@ -577,13 +724,17 @@ typedef struct assembly {
     bool stipple;       /* glLineStipple applies (interp_stipple.c) */
     uint64_t stipple_s; /* GL's stipple counter */
     int relit;          /* INTERP_RELIT_*: filled faces lit as GL does (interp_relit.c) */
-    bool relit_pass;    /* drawing those faces (into the GL-lit mesh) */
-    uint32_t relit_deferred; /* faces left for that pass */
     bool fog_split;     /* triangles behind the eye get their own fog (interp_fogbehind.c) */
     const scene_look *look; /* the mesh's look, and where its vertices are, for fog_split */
     const mat4 *to_eye;
     bool in_eye;
+    bool alpha_test; /* interp_alpha_testing: faces may be discarded */
+    bool fill_checks; /* the stencil, alpha_test or fog_split: fill_tri_checks */
     scene_mesh *mesh;
+    /* The GL-lit pass's triangles take the copies of their corners
+     * (interp_relit_vertices): pool index of vertex k's copy; NULL for
+     * the vertices themselves (base + k). */
+    const uint32_t *copy;
 } assembly;
 
 /* The provoking vertex of a primitive whose last and first vertices are
@@ -792,19 +943,27 @@ static bool compute_clip(interp *ip, uint32_t n)
  * eye, the signed area of the projection; otherwise the sign of the
  * homogeneous determinant of the first three vertices, which gives the
  * winding of the visible, clipped part. idx are relative to the base. */
+static inline bool is_ccw3(const interp *ip, uint32_t i0, uint32_t i1, uint32_t i2)
+{
+    double (*c)[5] = ip->clipv;
+    const double *a = c[i0], *b = c[i1], *d = c[i2];
+    if (a[2] > 0 && b[2] > 0 && d[2] > 0) { /* is_ccw's loop unrolled, same sums */
+        double area = 0;
+        area += a[3] * b[4] - b[3] * a[4];
+        area += b[3] * d[4] - d[3] * b[4];
+        area += d[3] * a[4] - a[3] * d[4];
+        return area > 0;
+    }
+    double det = a[0] * (b[1] * d[2] - b[2] * d[1]) - a[1] * (b[0] * d[2] - b[2] * d[0]) +
+                 a[2] * (b[0] * d[1] - b[1] * d[0]);
+    return det > 0;
+}
+
 static bool is_ccw(const interp *ip, const uint32_t *idx, int n)
 {
     double (*c)[5] = ip->clipv;
-    if (n == 3) { /* strips and triangles: the loops below unrolled, same sums */
-        const double *a = c[idx[0]], *b = c[idx[1]], *d = c[idx[2]];
-        if (a[2] > 0 && b[2] > 0 && d[2] > 0) {
-            double area = 0;
-            area += a[3] * b[4] - b[3] * a[4];
-            area += b[3] * d[4] - d[3] * b[4];
-            area += d[3] * a[4] - a[3] * d[4];
-            return area > 0;
-        }
-    }
+    if (n == 3) /* strips and triangles */
+        return is_ccw3(ip, idx[0], idx[1], idx[2]);
     bool all_front = true;
     for (int k = 0; k < n; k++)
         if (!(c[idx[k]][2] > 0))
@@ -823,7 +982,10 @@ static bool is_ccw(const interp *ip, const uint32_t *idx, int n)
     return det > 0;
 }
 
-static void fill_tri(assembly *as, uint32_t a, uint32_t b, uint32_t c, uint32_t provoking)
+/* What fill_tri does besides adding the triangle, when fill_checks says
+ * there is any: the stencil region, the alpha test, the fog behind the
+ * eye. False when the face is not drawn. */
+static bool fill_tri_checks(assembly *as, uint32_t a, uint32_t b, uint32_t c)
 {
     if (as->ip->stencil.write) { /* its window region, for later stencil tests */
         double p[3][3];
@@ -833,20 +995,46 @@ static void fill_tri(assembly *as, uint32_t a, uint32_t b, uint32_t c, uint32_t 
             interp_stencil_tri(as->ip, p);
     }
     if (!as->mesh || as->ip->stencil.only)
-        return;
+        return false;
     const uint32_t abc[3] = {a, b, c};
-    if (!interp_alpha_face(as->ip, abc, 3, as->mesh->look.texture))
-        return;
+    if (as->alpha_test && !interp_alpha_face(as->ip, abc, 3, as->mesh->look.texture))
+        return false;
     if (as->fog_split) {
         const uint32_t rel[3] = {a, b, c};
         as->mesh = interp_fog_behind_mesh(as->ip, as->look, as->to_eye, as->in_eye, as->base, rel);
         if (!as->mesh)
-            return;
+            return false;
     }
+    return true;
+}
+
+static inline void fill_tri(assembly *as, uint32_t a, uint32_t b, uint32_t c, uint32_t provoking)
+{
+    if (as->fill_checks ? !fill_tri_checks(as, a, b, c) : !as->mesh)
+        return;
+    const uint32_t *cp = as->copy;
+    uint32_t pa = cp ? cp[a] : as->base + a, pb = cp ? cp[b] : as->base + b;
+    uint32_t pc = cp ? cp[c] : as->base + c, pp = cp ? cp[provoking] : as->base + provoking;
     if (as->swap)
-        scene_add_tri(as->s, as->base + a, as->base + c, as->base + b, as->base + provoking);
+        scene_add_tri(as->s, pa, pc, pb, pp);
     else
-        scene_add_tri(as->s, as->base + a, as->base + b, as->base + c, as->base + provoking);
+        scene_add_tri(as->s, pa, pb, pc, pp);
+}
+
+/* Keeps a filled triangle for the GL-lit pass (interp_relit.c): its
+ * corners get GL's colour there, and it goes to that pass's mesh. */
+static void relit_keep(assembly *as, uint32_t a, uint32_t b, uint32_t c, uint32_t provoking)
+{
+    interp *ip = as->ip;
+    if (ip->nrelit_tris >= ip->cap_relit_tris &&
+        tr_grow((void **)&ip->relit_tris, &ip->cap_relit_tris, ip->nrelit_tris + 1,
+                sizeof *ip->relit_tris) != 0) {
+        as->s->failed = true;
+        return;
+    }
+    uint32_t *t = ip->relit_tris[ip->nrelit_tris++];
+    t[0] = a, t[1] = b, t[2] = c, t[3] = provoking;
+    ip->relit_need[a] = ip->relit_need[b] = ip->relit_need[c] = ip->relit_need[provoking] = 1;
 }
 
 /* One polygon (triangle, quad or GL_POLYGON) with vertices idx (relative),
@@ -873,17 +1061,11 @@ static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t prov
             interp_note(ip, DIAG_NOTE_RELIT_SPECULAR);
     } else if (as->relit && mode == GL_FILL) {
         bool gl_lit = as->relit == INTERP_RELIT_ALL || !front;
-        if (gl_lit != as->relit_pass) {
-            as->relit_deferred += gl_lit;
-            if (gl_lit) {
-                for (int k = 0; k < n; k++)
-                    ip->relit_need[idx[k]] = 1;
-                ip->relit_need[provoking] = 1;
-            }
+        if (gl_lit) {
+            for (int k = 1; k + 1 < n; k++)
+                relit_keep(as, idx[0], idx[k], idx[k + 1], provoking);
             return;
         }
-    } else if (as->relit_pass) {
-        return;
     }
     if (mode == GL_FILL) {
         for (int k = 1; k + 1 < n; k++)
@@ -1005,6 +1187,46 @@ static void assemble_filled(assembly *as, GLenum mode, uint32_t n)
     }
 }
 
+/* emit_polygon for one triangle when both faces are filled, every vertex
+ * finite and facing is needed (culling, or back faces lit as GL does). */
+static inline void facing_tri(assembly *as, uint32_t a, uint32_t b, uint32_t c,
+                              uint32_t provoking)
+{
+    bool front = is_ccw3(as->ip, a, b, c) != as->swap;
+    if (front ? as->cull_front : as->cull_back)
+        return;
+    if (as->relit && (as->relit == INTERP_RELIT_ALL || !front))
+        relit_keep(as, a, b, c, provoking);
+    else
+        fill_tri(as, a, b, c, provoking);
+}
+
+/* The triangle modes through facing_tri: one face test per triangle, in
+ * assemble_polygons' order. */
+static bool assemble_facing(assembly *as, GLenum mode, uint32_t n)
+{
+    switch (mode) {
+    case GL_TRIANGLES:
+        for (uint32_t i = 0; i + 3 <= n; i += 3)
+            facing_tri(as, i, i + 1, i + 2, pv(as, i + 2, i));
+        return true;
+    case GL_TRIANGLE_STRIP:
+        for (uint32_t i = 0; i + 3 <= n; i++) {
+            if (i % 2 == 0)
+                facing_tri(as, i, i + 1, i + 2, pv(as, i + 2, i));
+            else
+                facing_tri(as, i + 1, i, i + 2, pv(as, i + 2, i));
+        }
+        return true;
+    case GL_TRIANGLE_FAN:
+        for (uint32_t i = 0; i + 3 <= n; i++)
+            facing_tri(as, 0, i + 1, i + 2, pv(as, i + 2, i + 1));
+        return true;
+    default:
+        return false;
+    }
+}
+
 static void assemble_lines(assembly *as, GLenum mode, uint32_t n)
 {
     uint32_t b = as->base;
@@ -1114,7 +1336,7 @@ scene_look interp_current_look(interp *ip)
 static void check_normals(interp *ip, uint32_t n)
 {
     const gl_attribs *a = &ip->st.a;
-    if (a->caps[INTERP_CAP_NORMALIZE] || ip->prim_in_eye)
+    if (a->caps[INTERP_CAP_NORMALIZE] || ip->prim_in_eye || interp_note_said(ip, DIAG_NOTE_NORMALS))
         return;
     mat4 inv;
     if (!mat4_invert(interp_matrix(ip, INTERP_MV), &inv))
@@ -1126,12 +1348,17 @@ static void check_normals(interp *ip, uint32_t n)
             return;
     }
     const scene_vertex *v = ip->scene->verts + ip->prim_first;
+    const double *m = inv.m;
     for (uint32_t i = 0; i < n; i++) {
+        /* In scalars, and no division by an r of 1: an array stored and
+         * read back, and three divisions, were most of this loop's time. */
         const float *cn = v[i].normal;
-        double e[3];
-        for (int k = 0; k < 3; k++)
-            e[k] = (cn[0] * inv.m[k * 4 + 0] + cn[1] * inv.m[k * 4 + 1] + cn[2] * inv.m[k * 4 + 2]) / r;
-        double len2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+        double e0 = cn[0] * m[0] + cn[1] * m[1] + cn[2] * m[2];
+        double e1 = cn[0] * m[4] + cn[1] * m[5] + cn[2] * m[6];
+        double e2 = cn[0] * m[8] + cn[1] * m[9] + cn[2] * m[10];
+        if (r != 1)
+            e0 /= r, e1 /= r, e2 /= r;
+        double len2 = e0 * e0 + e1 * e1 + e2 * e2;
         if (fabs(len2 - 1) > 2e-3) {
             interp_note(ip, DIAG_NOTE_NORMALS);
             return;
@@ -1144,6 +1371,7 @@ static void end_primitive(interp *ip)
     scene *s = ip->scene;
     const gl_attribs *a = &ip->st.a;
     ip->in_begin = false;
+    ip->prim_plain = 0;
     if (ip->prim_skip || !s)
         return;
     if (s->nverts < ip->prim_first)
@@ -1171,6 +1399,7 @@ static void end_primitive(interp *ip)
     as.point_size = raster_width(a->point.size, as.point_smooth);
     as.point_params = interp_point_params_set(a);
     as.list_quads = ip->list_depth > (ip->list_ce ? 1 : 0);
+    as.alpha_test = interp_alpha_testing(ip);
     for (uint32_t i = 0; i < n && !as.check_bad; i++)
         if (!vertex_ok(&s->verts[as.base + i]))
             as.check_bad = true;
@@ -1217,6 +1446,7 @@ static void end_primitive(interp *ip)
     mat4 id = mat4_identity();
     as.mesh = scene_mesh_for(s, ip->prim_in_eye ? &id : &ip->prim_to_eye, ip->prim_in_eye, &look);
     as.fog_split = ip->fog_split;
+    as.fill_checks = ip->stencil.write || ip->stencil.only || as.alpha_test || as.fog_split;
     as.look = &look;
     as.to_eye = ip->prim_in_eye ? &id : &ip->prim_to_eye;
     as.in_eye = ip->prim_in_eye;
@@ -1226,22 +1456,25 @@ static void end_primitive(interp *ip)
     as.relit = interp_relit_split(ip, &look);
     if (as.relit && as.relit != INTERP_RELIT_PROBE && !interp_relit_need_clear(ip, n))
         as.relit = 0;
-    if (!as.facing && !as.check_bad && a->polygon.mode[0] == GL_FILL && !as.relit)
+    bool filled = !as.check_bad && a->polygon.mode[0] == GL_FILL;
+    if (filled && !as.facing && !as.relit)
         assemble_filled(&as, mode, n);
-    else
+    else if (!(filled && as.facing && a->polygon.mode[1] == GL_FILL &&
+               as.relit != INTERP_RELIT_PROBE && assemble_facing(&as, mode, n)))
         assemble_polygons(&as, mode, n);
-    if (as.relit_deferred > 0) {
-        long b = interp_relit_vertices(ip, n);
-        if (b >= 0) {
+    if (as.relit && as.relit != INTERP_RELIT_PROBE && ip->nrelit_tris > 0) {
+        if (interp_relit_vertices(ip, n)) {
             ip->prim_relit = true;
             scene_look gl_look = interp_current_look(ip);
             ip->prim_relit = false;
             as.mesh = scene_mesh_for(s, ip->prim_in_eye ? &id : &ip->prim_to_eye, ip->prim_in_eye,
                                      &gl_look);
-            as.base = (uint32_t)b;
+            as.copy = ip->relit_copy;
             as.look = &gl_look;
-            as.relit_pass = true;
-            assemble_polygons(&as, mode, n);
+            for (size_t k = 0; k < ip->nrelit_tris; k++) {
+                const uint32_t *t = ip->relit_tris[k];
+                fill_tri(&as, t[0], t[1], t[2], t[3]);
+            }
         }
     }
     interp_relit_done(ip);
@@ -1278,6 +1511,7 @@ void interp_abort_begin(interp *ip)
     if (!ip->in_begin)
         return;
     ip->in_begin = false;
+    ip->prim_plain = 0;
     ip->prim_color_sum = ip->prim_fog_vertex = false;
     if (ip->scene && !ip->prim_skip && ip->scene->nverts >= ip->prim_first)
         ip->scene->nverts = ip->prim_first;

@@ -22,23 +22,13 @@ bool interp_relit_wanted(const interp *ip)
            !interp_vertex_lit(ip) && ip->prim_mode > GL_LINE_STRIP;
 }
 
-void interp_relit_defer(interp *ip, size_t k, double x, double y, double z)
+bool interp_relit_grow(interp *ip, size_t k)
 {
-    if (k == 0)
-        ip->relit_pending = ip->relit_made = 0;
-    if (k != ip->relit_pending)
-        return; /* an earlier vertex was not kept: _vertices will refuse */
-    if (k >= ip->cap_relit_in &&
-        tr_grow((void **)&ip->relit_in, &ip->cap_relit_in, k + 1, sizeof *ip->relit_in) != 0) {
+    if (tr_grow((void **)&ip->relit_in, &ip->cap_relit_in, k + 1, sizeof *ip->relit_in) != 0) {
         ip->scene->failed = true;
-        return;
+        return false;
     }
-    const gl_attribs *a = &ip->st.a;
-    interp_relit_in *in = &ip->relit_in[k];
-    in->p[0] = x, in->p[1] = y, in->p[2] = z;
-    memcpy(in->normal, a->current.normal, sizeof in->normal);
-    memcpy(in->colour, a->current.color, sizeof in->colour);
-    ip->relit_pending = k + 1;
+    return true;
 }
 
 /* Made only when needed (a textured split reads the peak): lighting every
@@ -54,9 +44,11 @@ void interp_relit_flush(interp *ip)
         ip->scene->failed = true;
         return;
     }
+    interp_lit_prep lp;
+    interp_relit_prepare(ip, &lp);
     for (size_t k = k0; k < n; k++) {
         double peak;
-        interp_relit_colour(ip, &ip->relit_in[k], ip->relit_col[k], &peak);
+        interp_relit_colour(ip, &lp, &ip->relit_in[k], ip->relit_col[k], &peak);
         if (k == 0)
             ip->relit_over = false;
         /* GL clamps each channel to 1 (2.14.8); a little past it is rounding. */
@@ -96,35 +88,48 @@ bool interp_relit_need_clear(interp *ip, uint32_t n)
         return false;
     }
     memset(ip->relit_need, 0, n);
+    ip->nrelit_tris = 0;
     return true;
 }
 
-long interp_relit_vertices(interp *ip, uint32_t n)
+bool interp_relit_vertices(interp *ip, uint32_t n)
 {
     scene *s = ip->scene;
     if (n > ip->relit_pending || n > ip->cap_relit_need || s->nverts != ip->prim_first + n)
-        return -1;
-    for (uint32_t i = 0; i < n; i++)
-        if (!interp_budget_vertex(ip))
-            return -1;
-    scene_vertex *v = scene_reserve_vertices(s, n);
-    if (!v)
-        return -1;
-    const scene_vertex *src = s->verts + ip->prim_first;
-    /* Only the moved faces' corners are lit: the other copies are in no
-     * face, so their colour is never written. */
-    for (uint32_t i = 0; i < n; i++) {
-        v[i] = src[i];
-        if (i < ip->relit_made) {
-            memcpy(v[i].color, ip->relit_col[i], sizeof v[i].color);
-        } else if (ip->relit_need[i]) {
-            double peak;
-            interp_relit_colour(ip, &ip->relit_in[i], v[i].color, &peak);
-        }
+        return false;
+    if (n > ip->cap_relit_copy &&
+        tr_grow((void **)&ip->relit_copy, &ip->cap_relit_copy, n, sizeof *ip->relit_copy) != 0) {
+        s->failed = true;
+        return false;
     }
-    long first = (long)s->nverts;
-    scene_commit_vertices(s, n);
-    return first;
+    /* Only the moved faces' corners are copied: the others would be in no
+     * face (half the pool's vertices, on a closed surface). */
+    const uint8_t *need = ip->relit_need;
+    uint32_t m = 0;
+    for (uint32_t i = 0; i < n; i++)
+        m += need[i];
+    for (uint32_t i = 0; i < m; i++)
+        if (!interp_budget_vertex(ip))
+            return false;
+    scene_vertex *v = scene_reserve_vertices(s, m);
+    if (!v)
+        return false;
+    const scene_vertex *src = s->verts + ip->prim_first;
+    interp_lit_prep lp;
+    interp_relit_prepare(ip, &lp);
+    uint32_t first = (uint32_t)s->nverts, j = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        if (!need[i])
+            continue;
+        v[j] = src[i];
+        if (i < ip->relit_made)
+            memcpy(v[j].color, ip->relit_col[i], sizeof v[j].color);
+        else
+            interp_relit_colour(ip, &lp, &ip->relit_in[i], v[j].color, NULL);
+        ip->relit_copy[i] = first + j++;
+    }
+    scene_commit_vertices(s, m);
+    return true;
 }
 
 void interp_relit_done(interp *ip)
@@ -132,4 +137,5 @@ void interp_relit_done(interp *ip)
     ip->relit_over = false;
     ip->prim_relit = false;
     ip->relit_pending = ip->relit_made = 0;
+    ip->nrelit_tris = 0;
 }

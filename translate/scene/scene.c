@@ -168,7 +168,7 @@ scene_mesh *scene_mesh_for(scene *s, const mat4 *to_eye, bool in_eye, const scen
     return m;
 }
 
-bool scene_add_tri(scene *s, uint32_t a, uint32_t b, uint32_t c, uint32_t provoking)
+bool scene_add_tri_grow(scene *s, uint32_t a, uint32_t b, uint32_t c, uint32_t provoking)
 {
     if (s->failed || s->nmeshes == 0)
         return false;

@@ -416,8 +416,22 @@ static inline void scene_commit_vertices(scene *s, size_t n) { s->nverts += n; }
  * mesh_floor, else a new one. NULL on failure. */
 scene_mesh *scene_mesh_for(scene *s, const mat4 *to_eye, bool in_eye, const scene_look *look);
 
-/* Appends a triangle to the last mesh. Returns false on failure. */
-bool scene_add_tri(scene *s, uint32_t a, uint32_t b, uint32_t c, uint32_t provoking);
+/* Appends a triangle to the last mesh. Returns false on failure. Inline
+ * while the array has room (a call per triangle was a fifth of the
+ * interpreter's triangle assembly); scene_add_tri_grow makes room. */
+bool scene_add_tri_grow(scene *s, uint32_t a, uint32_t b, uint32_t c, uint32_t provoking);
+static inline bool scene_add_tri(scene *s, uint32_t a, uint32_t b, uint32_t c, uint32_t provoking)
+{
+    if (s->failed || s->nmeshes == 0 || s->ntris >= s->cap_tris)
+        return scene_add_tri_grow(s, a, b, c, provoking);
+    scene_tri *t = &s->tris[s->ntris++];
+    t->v[0] = a;
+    t->v[1] = b;
+    t->v[2] = c;
+    t->provoking = provoking;
+    s->meshes[s->nmeshes - 1].tri_count++;
+    return true;
+}
 
 /* Append items; NULL on failure. The caller fills the returned item. */
 scene_line *scene_add_line(scene *s);
