@@ -1,11 +1,15 @@
-/* test_numfmt.c: the float formatter reads back exactly, is shortest, and
- * ignores the locale.
+/* test_numfmt.c: the float formatter reads back exactly, is shortest and
+ * closest, and ignores the locale.
  *
- * Every 3001st float bit pattern (1.4 million values, all exponents, both
- * signs, subnormals) must read back through strtof to the same float and
- * use no more significant digits than the shortest %.*e that does.
+ * Every 1283rd float bit pattern (3.3 million values, all exponents, both
+ * signs, subnormals), and every power of two and its neighbours, must read
+ * back through strtof to the same float, use no more significant digits than
+ * the shortest %.*e that does, and be the closest decimal of its length that
+ * reads back (printf rounds exactly), on an exact tie the one away from zero.
  */
 #include <locale.h>
+#include <stdbool.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -29,15 +33,37 @@ static int sig_digits(const char *s)
     return last;
 }
 
-static int shortest_ref(float f)
+/* The shortest %.*e that reads back as f, into b; its digit count. */
+static int shortest_ref(float f, char *b, size_t size)
 {
-    char b[64];
     for (int p = 1; p <= 9; p++) {
-        snprintf(b, sizeof b, "%.*e", p - 1, (double)f);
+        snprintf(b, size, "%.*e", p - 1, (double)f);
         if (strtof(b, NULL) == f)
             return p;
     }
     return 99;
+}
+
+/* f lies exactly halfway between two decimals of p significant digits:
+ * its exact expansion (a float has at most 112 significant digits; 100
+ * suffice for the normal ones that can tie) is a 5 at digit p + 1, then
+ * zeros. */
+static int exact_tie(float f, int p)
+{
+    char b[160];
+    snprintf(b, sizeof b, "%.100e", fabs((double)f));
+    char *e = strchr(b, 'e');
+    int digit = 0;
+    for (char *c = b; c < e; c++) {
+        if (*c == '.')
+            continue;
+        digit++;
+        if (digit == p + 1 && *c != '5')
+            return 0;
+        if (digit > p + 1 && *c != '0')
+            return 0;
+    }
+    return 1;
 }
 
 static void fmt(float f, char *out)
@@ -50,9 +76,12 @@ static void fmt(float f, char *out)
 
 static void test_sweep(void)
 {
-    unsigned long bad = 0, longer = 0, n = 0;
-    for (uint64_t u = 0; u < 0x100000000ull; u += 3001) {
-        uint32_t b = (uint32_t)u;
+    unsigned long bad = 0, longer = 0, farther = 0, n = 0;
+    /* The sweep, then every power of two (the float below is half as far:
+     * a narrower interval below) and both neighbours of each. */
+    const uint32_t nsweep = (uint32_t)(0xffffffffu / 1283 + 1);
+    for (uint32_t i = 0; i < nsweep + 3 * 254; i++) {
+        uint32_t b = i < nsweep ? i * 1283 : (((i - nsweep) / 3 + 1) << 23) + (i - nsweep) % 3 - 1;
         float f;
         memcpy(&f, &b, 4);
         if (f != f || f - f != 0)
@@ -67,13 +96,31 @@ static void test_sweep(void)
                 fprintf(stderr, "0x%08x (%.9g) -> %s does not read back\n", b, (double)f, s);
             continue;
         }
-        if (f != 0 && sig_digits(s) > shortest_ref(f) && longer++ < 5)
-            fprintf(stderr, "0x%08x (%.9g) -> %s is not the shortest\n", b, (double)f, s);
+        if (f == 0)
+            continue;
+        char ref[64];
+        int q = sig_digits(s);
+        if (q > shortest_ref(f, ref, sizeof ref)) {
+            if (longer++ < 5)
+                fprintf(stderr, "0x%08x (%.9g) -> %s is not the shortest\n", b, (double)f, s);
+            continue;
+        }
+        /* Of its length, the closest (printf's rounding) unless that one
+         * falls outside the interval (a power of two's is narrower below);
+         * on an exact tie the one away from zero. */
+        snprintf(ref, sizeof ref, "%.*e", q - 1, (double)f);
+        double mine = strtod(s, NULL);
+        bool ok = exact_tie(f, q) ? fabs(mine) > fabs((double)f)
+                                  : mine == strtod(ref, NULL) || strtof(ref, NULL) != f;
+        if (!ok && farther++ < 5)
+            fprintf(stderr, "0x%08x (%.9g) -> %s, the closest is %s\n", b, (double)f, s, ref);
     }
-    printf("numfmt: %lu floats, %lu do not read back, %lu not shortest\n", n, bad, longer);
+    printf("numfmt: %lu floats, %lu do not read back, %lu not shortest, %lu not closest\n", n,
+           bad, longer, farther);
     CHECK(bad == 0);
     CHECK(longer == 0);
-    CHECK(n > 1400000);
+    CHECK(farther == 0);
+    CHECK(n > 3330000);
 }
 
 static void test_cases(void)
@@ -90,6 +137,17 @@ static void test_cases(void)
         {2.0f / 3, "0.6666667"}, {123456.7f, "123456.7"}, {-2.5e-12f, "-2.5e-12"},
         /* the longest fixed forms (a fuzz find: the writer's cache held 16) */
         {-1.07363935e15f, "-1073639350000000"}, {-1.00000057e-6f, "-0.0000010000006"},
+        /* exact ties between the two closest shortest: away from zero */
+        {2097152.25f, "2097152.3"}, {-2097153.75f, "-2097153.8"}, {0.0185546875f, "0.018554688"},
+        /* powers of two (the float below is half as far), the largest and
+         * smallest normal, the first integer past 2^24 */
+        {0x1p-20f, "9.536743e-7"}, {0x1p100f, "1.2676506e30"}, {0x1p-126f, "1.1754944e-38"},
+        {0x1p-125f, "2.3509887e-38"}, {0x1p127f, "1.7014118e38"}, {16777218.0f, "16777218"},
+        {0.3f, "0.3"}, {1e-5f, "0.00001"}, {1.5e-6f, "0.0000015"}, {1e-6f, "1e-6"},
+        {9.9999e-7f, "9.9999e-7"}, {123456789.0f, "123456790"}, {1e9f, "1e9"},
+        {4.5e9f, "4.5e9"}, {0x1p45f, "35184372000000"}, {0x1p56f, "7.2057594e16"},
+        /* an interval end on a short decimal: in it for an even mantissa only */
+        {33554932.0f, "33554932"}, {33554948.0f, "33554948"}, {33554928.0f, "33554930"}, {1234567e3f, "1234567000"}, {8.589973e9f, "8589974000"},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         char s[64];

@@ -11,7 +11,7 @@ if grep -rnE --include='*.c' --include='*.h' '"[^"]*%[-+ #0-9.*]*[lL]?[fFeEgGaA]
     echo "test_sources: a float conversion in a format string (above)"
     status=1
 fi
-for f in text/numfmt.c pov/povwrite.c gltf/gltfwrite.c text/outbuf.c text/dedup.c scene/scene.c scene/mat4.c; do
+for f in text/numfmt.c pov/povwrite.c pov/povwrite_mesh2.c gltf/gltfwrite.c text/outbuf.c text/dedup.c scene/scene.c scene/mat4.c; do
     if grep -nE '\b(s?n?printf|v?s?n?printf|fprintf|vfprintf|strtod)\s*\(' "$dir/$f"; then
         echo "test_sources: $f calls printf (above)"
         status=1

@@ -1644,7 +1644,7 @@ int32_t interp_texture_for_unit(interp *ip, int k)
         (cmm == GL_DIFFUSE || cmm == GL_AMBIENT_AND_DIFFUSE) &&
         (ip->prim_blend != SCENE_BLEND_OPAQUE || mipmap_filter(o->min_filter) ||
          o->target == GL_TEXTURE_CUBE_MAP || ga->lighting.two_side || ip->draw_unit[1] >= 0))
-        interp_note(ip, DIAG_NOTE_TEX_MODULATE_CM); /* povwrite.c mesh_tint */
+        interp_note(ip, DIAG_NOTE_TEX_MODULATE_CM); /* povwrite_mesh2.c mesh_tint */
     /* Mirror clamp: the image mirrored once beside itself, clamped beyond
      * (interp_vertex_texcoord maps [-1, 1] onto it). */
     bool ms = interp_mirror_clamp(o->wrap_s);

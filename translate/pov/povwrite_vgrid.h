@@ -8,7 +8,7 @@
  * interpolation on each of its two faces. Quads that share an edge share
  * the edge's texels, so each vertex has one texel and one uv, taken by
  * face_indices like the normals. Faces that fit no cell are left to
- * povtex_colours' blocks of their own. Used by povwrite.c.
+ * povtex_colours' blocks of their own. Used by povwrite_mesh2.c.
  */
 #ifndef RAYGL_POVWRITE_VGRID_H
 #define RAYGL_POVWRITE_VGRID_H

@@ -2,17 +2,17 @@
  *
  * A float v = m * 2^e2 rounds back from any decimal inside its rounding
  * interval [v - gap_below/2, v + gap_above/2] (ends included when m is
- * even, as round-half-even does). Scaled by 10^(8-E) (E = floor(log10 v))
- * the interval holds the nine-digit integers [a, b] that read back to v;
- * the shortest decimal is the one of them with the most trailing zeros,
- * and of those the one closest to v. The scaling is done in double: every
- * float and both interval ends are exact doubles, and the product is off by
- * at most about 2^-52 relatively, far below the interval's half-width of
- * about 2^-25. Only when an interval end lies within that error of an
- * integer (or for subnormals) does the general search decide, with an
- * exact big-integer comparison. tests/translate/test_numfmt.c checks the
- * round trip and shortness against strtof over 1.4 million floats of every
- * exponent; all 4.3 billion were checked once (see docs/mapping.md).
+ * even, as round-half-even does); the text is the shortest decimal in it,
+ * of those the closest to v, on a tie the one away from zero. Normal floats
+ * take an exact integer path (numfmt_f32): the interval scaled by a power
+ * of ten so that it is one to ten units wide, from one 64x64-bit product
+ * per end (the idea of Giulietti's Schubfach). Subnormals, and the rare
+ * floats the rounded powers of ten leave undecided, take the general
+ * search below: the interval scaled in double, settled by exact big-integer
+ * comparisons. tests/translate/test_numfmt.c checks round trip, shortness
+ * and closeness against strtof and printf over 3.3 million floats of every
+ * exponent and every power of two; all 4.3 billion gave the same text as
+ * the double-based path this one replaced (see bench/translate/README.md).
  */
 #include "numfmt.h"
 
@@ -313,7 +313,7 @@ size_t numfmt_i64(char *out, int64_t v)
 /* Writes d * 10^k (0 < d < 10^17) in fixed or scientific notation. Copies
  * are fixed-size (16 bytes) so they compile to plain moves; out has
  * NUMFMT_F32_ROOM bytes. */
-static size_t put_decimal(char *out, uint64_t d, int k)
+__attribute__((noinline)) static size_t put_decimal(char *out, uint64_t d, int k)
 {
     char dig[40];
     while (d % 10 == 0) {
@@ -394,15 +394,21 @@ static inline void put8(char *out, uint64_t w)
 
 static size_t fast_fixed(char *out, uint32_t d, int n, int x)
 {
+    /* Fixed unless more than three characters longer than scientific
+     * (n + (n > 1) + 2 + (x < 0) characters for |x| < 10): 0.000ddd down
+     * to five zeros after the point, integers up to five zeros past the
+     * digits (four each for one digit) and nine digits in all. */
     int fixed_len;
-    if (x >= 0 && x < n - 1) { /* d.ddd (most numbers): n + 1 long, shorter than d.ddde0 */
+    if (x < 0) {
+        if (x < -5 - (n > 1))
+            return 0;
+        fixed_len = n + 1 - x;
+    } else if (x < n - 1) { /* d.ddd (most numbers) */
         fixed_len = n + 1;
     } else {
-        fixed_len = x >= n - 1 ? x + 1 : n + 1 - x;
-        int ax = x < 0 ? -x : x;
-        int sci_len = n + (n > 1) + 1 + (x < 0) + (ax >= 10 ? 2 : 1);
-        if (fixed_len > sci_len + 3 || x > 8)
+        if (x > 8 || x > n + (n > 1) + 4)
             return 0;
+        fixed_len = x + 1;
     }
     /* Nine digits, zeros after the n significant ones: c0, then w. */
     uint32_t D = d * pow10_u32[9 - n];
@@ -425,7 +431,7 @@ static size_t fast_fixed(char *out, uint32_t d, int n, int x)
 
 /* The general search, for subnormals and the rare floats where the fast
  * path below cannot decide. */
-static size_t general(char *out, uint32_t u)
+__attribute__((noinline, cold)) static size_t general(char *out, uint32_t u)
 {
     uint32_t ef = u >> 23, mf = u & 0x7fffffu;
     uint64_t m = ef ? (mf | 0x800000u) : mf;
@@ -464,15 +470,102 @@ static size_t general(char *out, uint32_t u)
 }
 
 
-/* [a, b] divided by p when it holds a multiple of p (ceiling, floor). */
-static inline bool drop_digits(uint32_t *a, uint32_t *b, uint32_t p)
+/* 10^j * 2^r for j in [-31, 46] at pow10_g[j + 31], r chosen so that the
+ * value lies in [2^63, 2^64): exact for j in [0, 27] (5^27 fits), rounded
+ * up for the others. Made by exact rational arithmetic (Python fractions). */
+static const uint64_t pow10_g[78] = {
+    0x81ceb32c4b43fcf5ull, 0xa2425ff75e14fc32ull, 0xcad2f7f5359a3b3full,
+    0xfd87b5f28300ca0eull, 0x9e74d1b791e07e49ull, 0xc612062576589ddbull,
+    0xf79687aed3eec552ull, 0x9abe14cd44753b53ull, 0xc16d9a0095928a28ull,
+    0xf1c90080baf72cb2ull, 0x971da05074da7befull, 0xbce5086492111aebull,
+    0xec1e4a7db69561a6ull, 0x9392ee8e921d5d08ull, 0xb877aa3236a4b44aull,
+    0xe69594bec44de15cull, 0x901d7cf73ab0acdaull, 0xb424dc35095cd810ull,
+    0xe12e13424bb40e14ull, 0x8cbccc096f5088ccull, 0xafebff0bcb24aaffull,
+    0xdbe6fecebdedd5bfull, 0x89705f4136b4a598ull, 0xabcc77118461cefdull,
+    0xd6bf94d5e57a42bdull, 0x8637bd05af6c69b6ull, 0xa7c5ac471b478424ull,
+    0xd1b71758e219652cull, 0x83126e978d4fdf3cull, 0xa3d70a3d70a3d70bull,
+    0xcccccccccccccccdull, 0x8000000000000000ull, 0xa000000000000000ull,
+    0xc800000000000000ull, 0xfa00000000000000ull, 0x9c40000000000000ull,
+    0xc350000000000000ull, 0xf424000000000000ull, 0x9896800000000000ull,
+    0xbebc200000000000ull, 0xee6b280000000000ull, 0x9502f90000000000ull,
+    0xba43b74000000000ull, 0xe8d4a51000000000ull, 0x9184e72a00000000ull,
+    0xb5e620f480000000ull, 0xe35fa931a0000000ull, 0x8e1bc9bf04000000ull,
+    0xb1a2bc2ec5000000ull, 0xde0b6b3a76400000ull, 0x8ac7230489e80000ull,
+    0xad78ebc5ac620000ull, 0xd8d726b7177a8000ull, 0x878678326eac9000ull,
+    0xa968163f0a57b400ull, 0xd3c21bcecceda100ull, 0x84595161401484a0ull,
+    0xa56fa5b99019a5c8ull, 0xcecb8f27f4200f3aull, 0x813f3978f8940985ull,
+    0xa18f07d736b90be6ull, 0xc9f2c9cd04674edfull, 0xfc6f7c4045812297ull,
+    0x9dc5ada82b70b59eull, 0xc5371912364ce306ull, 0xf684df56c3e01bc7ull,
+    0x9a130b963a6c115dull, 0xc097ce7bc90715b4ull, 0xf0bdc21abb48db21ull,
+    0x96769950b50d88f5ull, 0xbc143fa4e250eb32ull, 0xeb194f8e1ae525feull,
+    0x92efd1b8d0cf37bfull, 0xb7abc627050305aeull, 0xe596b7b0c643c71aull,
+    0x8f7e32ce7bea5c70ull, 0xb35dbf821ae4f38cull, 0xe0352f62a19e306full
+};
+
+/* For each biased exponent ef of a normal float (e2 = ef - 150), the
+ * scaling of its interval: k = floor(log10 2^e2) (gi = 31 - k indexes
+ * pow10_g) and h, which makes m * 2^h * g = 10^-k * m * 2^e2 * 2^64. g is
+ * exact for ef in [61, 153]. */
+static const struct {
+    uint8_t gi, h;
+} scale_of[254] = {
+    {76, 1}, {76, 2}, {76, 3}, {75, 1}, {75, 2}, {75, 3}, {75, 4}, {74, 1}, {74, 2}, {74, 3},
+    {73, 1}, {73, 2}, {73, 3}, {72, 1}, {72, 2}, {72, 3}, {72, 4}, {71, 1}, {71, 2}, {71, 3},
+    {70, 1}, {70, 2}, {70, 3}, {69, 1}, {69, 2}, {69, 3}, {69, 4}, {68, 1}, {68, 2}, {68, 3},
+    {67, 1}, {67, 2}, {67, 3}, {66, 1}, {66, 2}, {66, 3}, {66, 4}, {65, 1}, {65, 2}, {65, 3},
+    {64, 1}, {64, 2}, {64, 3}, {63, 1}, {63, 2}, {63, 3}, {63, 4}, {62, 1}, {62, 2}, {62, 3},
+    {61, 1}, {61, 2}, {61, 3}, {60, 1}, {60, 2}, {60, 3}, {59, 1}, {59, 2}, {59, 3}, {59, 4},
+    {58, 1}, {58, 2}, {58, 3}, {57, 1}, {57, 2}, {57, 3}, {56, 1}, {56, 2}, {56, 3}, {56, 4},
+    {55, 1}, {55, 2}, {55, 3}, {54, 1}, {54, 2}, {54, 3}, {53, 1}, {53, 2}, {53, 3}, {53, 4},
+    {52, 1}, {52, 2}, {52, 3}, {51, 1}, {51, 2}, {51, 3}, {50, 1}, {50, 2}, {50, 3}, {50, 4},
+    {49, 1}, {49, 2}, {49, 3}, {48, 1}, {48, 2}, {48, 3}, {47, 1}, {47, 2}, {47, 3}, {47, 4},
+    {46, 1}, {46, 2}, {46, 3}, {45, 1}, {45, 2}, {45, 3}, {44, 1}, {44, 2}, {44, 3}, {44, 4},
+    {43, 1}, {43, 2}, {43, 3}, {42, 1}, {42, 2}, {42, 3}, {41, 1}, {41, 2}, {41, 3}, {41, 4},
+    {40, 1}, {40, 2}, {40, 3}, {39, 1}, {39, 2}, {39, 3}, {38, 1}, {38, 2}, {38, 3}, {38, 4},
+    {37, 1}, {37, 2}, {37, 3}, {36, 1}, {36, 2}, {36, 3}, {35, 1}, {35, 2}, {35, 3}, {35, 4},
+    {34, 1}, {34, 2}, {34, 3}, {33, 1}, {33, 2}, {33, 3}, {32, 1}, {32, 2}, {32, 3}, {31, 1},
+    {31, 2}, {31, 3}, {31, 4}, {30, 1}, {30, 2}, {30, 3}, {29, 1}, {29, 2}, {29, 3}, {28, 1},
+    {28, 2}, {28, 3}, {28, 4}, {27, 1}, {27, 2}, {27, 3}, {26, 1}, {26, 2}, {26, 3}, {25, 1},
+    {25, 2}, {25, 3}, {25, 4}, {24, 1}, {24, 2}, {24, 3}, {23, 1}, {23, 2}, {23, 3}, {22, 1},
+    {22, 2}, {22, 3}, {22, 4}, {21, 1}, {21, 2}, {21, 3}, {20, 1}, {20, 2}, {20, 3}, {19, 1},
+    {19, 2}, {19, 3}, {19, 4}, {18, 1}, {18, 2}, {18, 3}, {17, 1}, {17, 2}, {17, 3}, {16, 1},
+    {16, 2}, {16, 3}, {16, 4}, {15, 1}, {15, 2}, {15, 3}, {14, 1}, {14, 2}, {14, 3}, {13, 1},
+    {13, 2}, {13, 3}, {13, 4}, {12, 1}, {12, 2}, {12, 3}, {11, 1}, {11, 2}, {11, 3}, {10, 1},
+    {10, 2}, {10, 3}, {10, 4}, {9, 1}, {9, 2}, {9, 3}, {8, 1}, {8, 2}, {8, 3}, {7, 1}, {7, 2},
+    {7, 3}, {7, 4}, {6, 1}, {6, 2}, {6, 3}, {5, 1}, {5, 2}, {5, 3}, {4, 1}, {4, 2}, {4, 3}, {4,
+    4}, {3, 1}, {3, 2}, {3, 3}, {2, 1}, {2, 2}, {2, 3}, {1, 1}, {1, 2}, {1, 3}, {0, 1}, {0, 2}
+};
+
+/* The high and low words of g * c. */
+#ifdef __SIZEOF_INT128__
+__extension__ typedef unsigned __int128 numfmt_u128;
+static inline uint64_t mul_hilo(uint64_t g, uint64_t c, uint64_t *lo)
 {
-    uint32_t ap = (*a + p - 1) / p, bp = *b / p;
-    if (ap > bp)
-        return false;
-    *a = ap;
-    *b = bp;
-    return true;
+    numfmt_u128 p = (numfmt_u128)g * c;
+    *lo = (uint64_t)p;
+    return (uint64_t)(p >> 64);
+}
+#else
+static inline uint64_t mul_hilo(uint64_t g, uint64_t c, uint64_t *lo)
+{
+    uint64_t ll = (g & 0xffffffffu) * (c & 0xffffffffu), lh = (g & 0xffffffffu) * (c >> 32);
+    uint64_t hl = (g >> 32) * (c & 0xffffffffu), hh = (g >> 32) * (c >> 32);
+    uint64_t mid = (ll >> 32) + (uint32_t)lh + (uint32_t)hl;
+    *lo = (mid << 32) | (uint32_t)ll;
+    return hh + (lh >> 32) + (hl >> 32) + (mid >> 32);
+}
+#endif
+
+/* 4 X for X = cx * 2^q * 10^-k, given cp = cx * 2^h with g * cp = 4 X *
+ * 2^64: the high word, its lowest bit set when X has a fraction (rounded
+ * to odd, after Giulietti's Schubfach), so that comparing it with a
+ * multiple of four is comparing 4 X itself. *rem is the low word: a g
+ * rounded up adds less than cp to it, so below cp the exact X may be an
+ * integer or the floor one less. */
+static inline uint32_t scale_odd(uint64_t g, uint64_t cp, uint64_t *rem)
+{
+    uint64_t hi = mul_hilo(g, cp, rem);
+    return (uint32_t)hi | (*rem != 0);
 }
 
 size_t numfmt_f32(char *out, float value)
@@ -502,53 +595,72 @@ size_t numfmt_f32(char *out, float value)
         return neg + (iv < 10000 ? put_small(out, iv) : put_decimal(out, iv, 0));
     }
 
-    /* The fast path: the nine-digit scaling of the interval, in double. */
-    float fa;
-    memcpy(&fa, &u, sizeof fa);
-    double v = (double)fa;
-    int l2 = (int)ef - 127;
-    int E = (l2 * 1233 + 4096 * 64) / 4096 - 64;
-    if (v >= p10[E + 61])
-        E++;
-    double sc = p10[68 - E]; /* 10^(8 - E): nine digits before the point */
-    double ulp_sc, s = v * sc;
-    uint64_t ulp_bits = (uint64_t)(e2 + 1023) << 52;
-    memcpy(&ulp_sc, &ulp_bits, sizeof ulp_sc);
-    ulp_sc *= sc;
-    double slo = s - (mf == 0 && ef > 1 ? 0.25 : 0.5) * ulp_sc, shi = s + 0.5 * ulp_sc;
-    double eps = s * 0x1p-46;
-    int64_t a = (int64_t)slo, b = (int64_t)shi;
-    a += (double)a < slo;
-    /* Within rounding error of an end, or E one off: the exact search. */
-    if ((double)a - slo <= eps || slo - (double)(a - 1) <= eps || shi - (double)b <= eps ||
-        (double)(b + 1) - shi <= eps || a > b || s < 1e8)
+    /* The interval scaled by 10^-k, k chosen so that its width is in
+     * [1, 10): k = floor(log10 2^e2), or floor(log10 (3/4 2^e2)) when the
+     * float below is half as far (m = 2^23). Four times the scaled value
+     * and ends, rounded to odd, decide everything exactly: the interval
+     * holds at most one multiple of ten (then it is the shortest), else
+     * the shortest are s or s + 1 (s = floor of the value), the closer if
+     * both fit, s + 1 on a tie (2097152.25 gives 2097152.3, as before). */
+    int k = 31 - scale_of[ef - 1].gi, h = scale_of[ef - 1].h;
+    uint64_t g = pow10_g[31 - k];
+    uint64_t cb = (uint64_t)m << (2 + h), d2 = (uint64_t)2 << h, dl = d2;
+    bool exact = ef >= 61 && ef <= 153;
+    if (mf == 0 && ef > 1) { /* the float below is half as far */
+        dl = d2 >> 1;
+        if (((e2 * 1233 - 512 + 4096 * 64) >> 12) - 64 < k) {
+            /* one more digit: the interval is under one wide at 10^-k */
+            k--;
+            exact = k >= -27;
+            int r = 63 - (((-k * 1741647 + (128 << 19)) >> 19) - 128);
+            h = 64 - r + e2;
+            g = pow10_g[31 - k];
+            cb = (uint64_t)m << (2 + h);
+            d2 = (uint64_t)2 << h;
+            dl = d2 >> 1;
+        }
+    }
+    uint32_t inc = ~m & 1; /* ends belong when m is even */
+    uint64_t rb, rl, rr;
+    uint32_t vb = scale_odd(g, cb, &rb);
+    uint32_t vbl = scale_odd(g, cb - dl, &rl);
+    uint32_t vbr = scale_odd(g, cb + d2, &rr);
+    /* g rounded up, and an end or the value may be off: the exact search. */
+    if (!exact && (rb < cb || rl < cb - dl || rr < cb + d2))
         return neg + general(out, u);
+    vbl += !inc;
+    vbr -= !inc;
 
-    /* Drop trailing digits while [a, b] still holds a multiple of ten:
-     * one or two at a time (most numbers), then by 10^4, 10^2, 10 for the
-     * round ones (0.2 drops eight): holding a multiple of 10^j is monotone
-     * in j, and ceil(ceil(a/p)/q) = ceil(a/pq), so the greedy steps end
-     * where the loop would. */
-    uint32_t a32 = (uint32_t)a, b32 = (uint32_t)b;
-    int t = 0;
-    if (drop_digits(&a32, &b32, 10) && ++t && drop_digits(&a32, &b32, 10) && ++t) {
-        t += drop_digits(&a32, &b32, 10000) ? 4 : 0;
-        t += drop_digits(&a32, &b32, 100) ? 2 : 0;
-        t += drop_digits(&a32, &b32, 10) ? 1 : 0;
+    uint32_t s = vb >> 2, s10 = s / 10;
+    uint32_t d;
+    int n, x;
+    bool upin = vbl <= 40 * s10, wpin = 40 * s10 + 40 <= vbr;
+    if (upin != wpin) {
+        /* The one multiple of ten: strip its zeros (at most seven). */
+        d = s10 + wpin;
+        n = 6 + (d >= 1000000) + (d >= 10000000);
+        x = k + n;
+        if (d % 10000 == 0) {
+            d /= 10000;
+            n -= 4;
+        }
+        if (d % 100 == 0) {
+            d /= 100;
+            n -= 2;
+        }
+        if (d % 10 == 0) {
+            d /= 10;
+            n -= 1;
+        }
+    } else {
+        bool uin = vbl <= 4 * s, win = 4 * s + 4 <= vbr;
+        d = s + (uin != win ? win : vb >= 4 * s + 2);
+        /* 7 to 9 digits, the last not a zero (else a multiple of ten fit). */
+        n = 7 + (d >= 10000000) + (d >= 100000000);
+        x = k + n - 1;
     }
-    uint32_t d = (uint32_t)(s * p10[60 - t] + 0.5);
-    d = d < a32 ? a32 : (d > b32 ? b32 : d);
-    /* d has 9 - t digits, or one more when it rounded up to a power of ten;
-     * the last one is not a zero (else the loop would have gone on). */
-    int n = 9 - t, x = E;
-    if (d >= pow10_u32[n]) {
-        n++;
-        x++;
-    }
-    if (n <= 9) {
-        size_t len = fast_fixed(out, d, n, x);
-        if (len)
-            return neg + len;
-    }
-    return neg + put_decimal(out, d, E - 8 + t);
+    size_t len = fast_fixed(out, d, n, x);
+    if (len)
+        return neg + len;
+    return neg + put_decimal(out, d, x - n + 1);
 }
