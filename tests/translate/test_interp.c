@@ -806,6 +806,21 @@ static void test_alloc_translation(void)
     seq_free(&s);
 }
 
+/* The fast run loop (a, ia) left the very scene and state the general
+ * decoder (c, ic) left. */
+static void check_same_run(const scene *a, const scene *c, interp *ia, interp *ic)
+{
+    CHECK(a->nverts == c->nverts && a->ntris == c->ntris && a->nlines == c->nlines &&
+          a->npoints == c->npoints && a->nmeshes == c->nmeshes);
+    if (a->nverts == c->nverts && a->nverts)
+        CHECK(memcmp(a->verts, c->verts, a->nverts * sizeof *a->verts) == 0);
+    if (a->ntris == c->ntris && a->ntris)
+        CHECK(memcmp(a->tris, c->tris, a->ntris * sizeof *a->tris) == 0);
+    if (a->nlines == c->nlines && a->nlines)
+        CHECK(memcmp(a->lines, c->lines, a->nlines * sizeof *a->lines) == 0);
+    CHECK(memcmp(&interp_state(ia)->a, &interp_state(ic)->a, sizeof(gl_attribs)) == 0);
+}
+
 /* The run loop's fast path for per-vertex commands gives the very scene
  * the general decoder gives. */
 static void test_fast_path(void)
@@ -831,15 +846,7 @@ static void test_fast_path(void)
         interp_run_slow(ic, s.data, s.len, 0, &err);
         interp_end_frame(ia);
         interp_end_frame(ic);
-        CHECK(a.nverts == c.nverts && a.ntris == c.ntris && a.nlines == c.nlines &&
-              a.npoints == c.npoints && a.nmeshes == c.nmeshes);
-        if (a.nverts == c.nverts && a.nverts)
-            CHECK(memcmp(a.verts, c.verts, a.nverts * sizeof *a.verts) == 0);
-        if (a.ntris == c.ntris && a.ntris)
-            CHECK(memcmp(a.tris, c.tris, a.ntris * sizeof *a.tris) == 0);
-        if (a.nlines == c.nlines && a.nlines)
-            CHECK(memcmp(a.lines, c.lines, a.nlines * sizeof *a.lines) == 0);
-        CHECK(memcmp(&interp_state(ia)->a, &interp_state(ic)->a, sizeof(gl_attribs)) == 0);
+        check_same_run(&a, &c, ia, ic);
         interp_destroy(ia);
         interp_destroy(ic);
         scene_finish(&a);
@@ -898,12 +905,7 @@ static void test_fast_path_cuts(void)
             cuts += ca && strstr(ca, "commands run") != NULL;
             interp_end_frame(ia);
             interp_end_frame(ic);
-            CHECK(a.nverts == c.nverts && a.ntris == c.ntris && a.nmeshes == c.nmeshes);
-            if (a.nverts == c.nverts && a.nverts)
-                CHECK(memcmp(a.verts, c.verts, a.nverts * sizeof *a.verts) == 0);
-            if (a.ntris == c.ntris && a.ntris)
-                CHECK(memcmp(a.tris, c.tris, a.ntris * sizeof *a.tris) == 0);
-            CHECK(memcmp(&interp_state(ia)->a, &interp_state(ic)->a, sizeof(gl_attribs)) == 0);
+            check_same_run(&a, &c, ia, ic);
             interp_destroy(ia);
             interp_destroy(ic);
             scene_finish(&a);

@@ -172,20 +172,12 @@ bool scene_add_tri_grow(scene *s, uint32_t a, uint32_t b, uint32_t c, uint32_t p
 {
     if (s->failed || s->nmeshes == 0)
         return false;
-    if (s->ntris >= s->cap_tris) {
-        if (s->ntris >= SCENE_MAX_ITEMS ||
-            tr_grow((void **)&s->tris, &s->cap_tris, s->ntris + 1, sizeof *s->tris) != 0) {
-            s->failed = true;
-            return false;
-        }
+    if (s->ntris >= SCENE_MAX_ITEMS ||
+        tr_grow((void **)&s->tris, &s->cap_tris, s->ntris + 1, sizeof *s->tris) != 0) {
+        s->failed = true;
+        return false;
     }
-    scene_tri *t = &s->tris[s->ntris++];
-    t->v[0] = a;
-    t->v[1] = b;
-    t->v[2] = c;
-    t->provoking = provoking;
-    s->meshes[s->nmeshes - 1].tri_count++;
-    return true;
+    return scene_add_tri(s, a, b, c, provoking); /* room now: the inline path */
 }
 
 scene_line *scene_add_line(scene *s)
