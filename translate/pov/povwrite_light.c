@@ -84,6 +84,8 @@ static void scene_box(const scene *s, double lo[3], double hi[3])
     }
     for (size_t i = 0; i < s->nmeshes; i++) {
         const scene_mesh *m = &s->meshes[i];
+        if (m->tri_count == 0)
+            continue; /* s->tris may be NULL */
         const double *a = m->to_eye.m;
         const scene_tri *tri = s->tris + m->first_tri;
         /* mat4_apply's sums, the w row left out and w = 1 not multiplied

@@ -6,8 +6,9 @@
  * snapshot, the rest are the commands, played as frame 0 and again as a
  * STATE_CARRIED frame 1. Every frame is decoded, interpreted and written
  * as SDL to memory, then the SDL is checked: printable text, balanced
- * braces and angle brackets, no nan or inf, no directive but #version and
- * #declare and #default. Each frame is also written as glTF (gltfwrite.c)
+ * braces and angle brackets, no nan or inf, no directive but #version,
+ * #declare, #default and #ifndef ... #end (a polygon stipple's pattern
+ * declared once). Each frame is also written as glTF (gltfwrite.c)
  * and the GLB checked: its header, chunk lengths and a JSON chunk of
  * printable text with balanced brackets. A failed check aborts (a crash
  * for the fuzzer).
@@ -69,7 +70,8 @@ static void check_sdl(const char *t, size_t len)
         }
         if (c == '#')
             check(word_at(p, end, "#version") || word_at(p, end, "#declare") ||
-                      word_at(p, end, "#default"),
+                      word_at(p, end, "#default") || word_at(p, end, "#ifndef") ||
+                      word_at(p, end, "#end"),
                   "directive", t,
                   len);
         check(!word_at(p, end, "nan") && !word_at(p, end, "inf"), "nan or inf", t, len);
