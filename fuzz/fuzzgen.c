@@ -982,7 +982,7 @@ static void mut_arg(gen *g, buf *b, const span *sp, size_t n)
             int64_t delta = (int64_t)below(r, 9) - 4; /* a neighbour: GL_LIGHT0 + k */
             if (d->type == RGL_T_b || d->type == RGL_T_s || d->type == RGL_T_i ||
                 d->type == RGL_T_sz || d->type == RGL_T_ip)
-                a->v.i += delta;
+                a->v.i = (int64_t)((uint64_t)a->v.i + (uint64_t)delta); /* wraps, as v.u */
             else
                 a->v.u += (uint64_t)delta;
         } else {

@@ -157,6 +157,7 @@ uint32_t interp_lightset_current(interp *ip)
     ip->lsets.slot[at] = (int16_t)(k + 1);
     ip->lsets.count = ++s->nlightsets;
     s->lights_fixed = true;
-    note_set(ip, s->lights + first, s->nlights - first);
+    if (s->nlights > first) /* none kept: s->lights may be NULL */
+        note_set(ip, s->lights + first, s->nlights - first);
     return ip->seen_set = k;
 }
