@@ -349,6 +349,8 @@ static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const
         if (verts[tris[i].provoking].color[3] != 1)
             return false;
     for (; i < nt; i++) {
+        if (i + POOL_AHEAD < nt)
+            __builtin_prefetch(verts[tris[i + POOL_AHEAD].v[2]].color);
         const float *c[3] = {verts[tris[i].v[0]].color, verts[tris[i].v[1]].color,
                              verts[tris[i].v[2]].color};
         uint64_t q[3];
@@ -723,6 +725,8 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         memset(w->front, 2, span);
         for (size_t i = 0; i < nt; i++) {
             const scene_tri *t = &tris[i];
+            if (i + POOL_AHEAD < nt)
+                __builtin_prefetch(verts[tris[i + POOL_AHEAD].v[2]].pos);
             double *e[3];
             for (int k = 0; k < 3; k++) {
                 uint32_t v = t->v[k] - lo;
