@@ -364,6 +364,7 @@ static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const
 }
 
 #define UNSET UINT32_MAX
+#define MEMO_AHEAD 8
 #define BAD (UINT32_MAX - 1)
 
 /* What the vertex keys of a mesh part hold, and how they are made
@@ -396,6 +397,22 @@ static uint32_t colour_index(povwriter *w, colour_memo *m, const float c[4])
     return m->ci;
 }
 
+/* The memo's entry for pool vertex sv facing front (0 or 1). */
+static inline vmemo_entry *vmemo_at(const povwriter *w, const scene_vertex *sv, uint8_t front)
+{
+    uint64_t h = 0x9e3779b97f4a7c15ull * front;
+    static const uint64_t mul[5] = {0xc2b2ae3d27d4eb4full, 0x165667b19e3779f9ull,
+                                    0xd6e8feb86659fd93ull, 0xff51afd7ed558ccdull,
+                                    0xc4ceb9fe1a85ec53ull};
+    for (int i = 0; i < 5; i++) {
+        uint64_t x;
+        memcpy(&x, (const char *)sv->pos + 8 * i, sizeof x);
+        h += (x + (uint64_t)i) * mul[i];
+    }
+    h ^= h >> 29;
+    return &w->vmemo[(h * 0x94d049bb133111ebull) >> (64 - VMEMO_BITS)];
+}
+
 /* The vertex index of corner k of face t (BAD for a position that is not
  * finite), its key made and looked up; a new vertex's colour is indexed
  * too (vcolour). DEDUP_NONE when memory ran out. Inline: the loop that
@@ -413,17 +430,7 @@ vertex_index(povwriter *w, const key_spec *ks, colour_memo *memo, const scene_tr
     if (ks->memo_gen) {
         /* A copy of a vertex indexed before whose index is still in the
          * set's window (dedup_index would find it there): that index. */
-        uint64_t h = 0x9e3779b97f4a7c15ull * w->front[v - ks->lo];
-        static const uint64_t mul[5] = {0xc2b2ae3d27d4eb4full, 0x165667b19e3779f9ull,
-                                        0xd6e8feb86659fd93ull, 0xff51afd7ed558ccdull,
-                                        0xc4ceb9fe1a85ec53ull};
-        for (int i = 0; i < 5; i++) {
-            uint64_t x;
-            memcpy(&x, (const char *)sv->pos + 8 * i, sizeof x);
-            h += (x + (uint64_t)i) * mul[i];
-        }
-        h ^= h >> 29;
-        me = &w->vmemo[(h * 0x94d049bb133111ebull) >> (64 - VMEMO_BITS)];
+        me = vmemo_at(w, sv, w->front[v - ks->lo]);
         tag = ks->memo_gen << 1 | w->front[v - ks->lo];
         const dedup *vd = &w->vtx;
         if (me->tag == tag && memcmp(me->raw, sv->pos, sizeof me->raw) == 0 &&
@@ -508,6 +515,12 @@ index_faces(povwriter *w, const key_spec *ks, colour_memo *memo, const scene_tri
     size_t kept = 0;
     for (size_t i = 0; i < nt; i++) {
         const scene_tri *t = &tris[i];
+        if (ks->memo_gen && i + MEMO_AHEAD < nt) {
+            /* The memo's entries are scattered: the one a triangle ahead
+             * looks at, fetched now (its last corner: strips' new one). */
+            uint32_t pv = tris[i + MEMO_AHEAD].v[2];
+            __builtin_prefetch(vmemo_at(w, &verts[pv], w->front[pv - lo]));
+        }
         uint32_t *f = w->faces + kept * 6;
         bool face_front = false;
         if (flat && ks->turn) {
