@@ -159,6 +159,12 @@ static void put_vectors(povwriter *w, outbuf *ob, const dedup *vd, size_t n, uin
     for (size_t i = 0; i < n; i++) {
         if (i == FCACHE_PROBE && (w->fcache_hits - hits) * 16 < 3 * FCACHE_PROBE)
             w->fcache_off = true; /* under one in sixteen */
+        if (!w->fcache_off && i + 4 < n) {
+            /* The cache's entries are scattered: the next numbers' fetched now. */
+            const uint32_t *b = dedup_key(vd, i + 4) + off;
+            for (int k = 0; k < 3; k++)
+                __builtin_prefetch(&w->fcache[(b[k] * 2654435761u) >> (32 - FCACHE_BITS)]);
+        }
         PUT_ENTRY(w, ob, ",\n<", (const float *)(const void *)(dedup_key(vd, i) + off), ">");
     }
     w->fcache_off = false;
