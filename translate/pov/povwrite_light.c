@@ -91,7 +91,9 @@ static void scene_box(const scene *s, double lo[3], double hi[3])
         /* mat4_apply's sums, the w row left out and w = 1 not multiplied
          * (m * 1 is m): the same doubles, a third of the work. */
         double lx = lo[0], ly = lo[1], lz = lo[2], hx = hi[0], hy = hi[1], hz = hi[2];
-        for (size_t t = 0; t < m->tri_count; t++)
+        for (size_t t = 0; t < m->tri_count; t++) {
+            if (t + POOL_AHEAD < m->tri_count)
+                __builtin_prefetch(&s->verts[tri[t + POOL_AHEAD].v[2]]);
             for (int c = 0; c < 3; c++) {
                 uint32_t vi = tri[t].v[c];
                 /* A strip's or fan's next triangle shares two corners with
@@ -112,6 +114,7 @@ static void scene_box(const scene *s, double lo[3], double hi[3])
                     hx = x > hx ? x : hx, hy = y > hy ? y : hy, hz = z > hz ? z : hz;
                 }
             }
+        }
         lo[0] = lx, lo[1] = ly, lo[2] = lz, hi[0] = hx, hi[1] = hy, hi[2] = hz;
     }
     for (size_t i = 0; i < s->nlines; i++)

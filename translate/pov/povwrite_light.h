@@ -11,6 +11,12 @@
 #include "povwrite.h"
 #include "scene.h"
 
+/* How many triangles ahead the passes over a mesh's triangles prefetch the
+ * vertex pool: the pool (56 bytes a vertex, megabytes a frame) comes from
+ * L3 or memory at each pass, and the hardware's prefetch alone left the
+ * scene box and the colour test waiting on its loads. */
+#define POOL_AHEAD 48
+
 /* What the lighting part needs about the whole scene, computed once per
  * frame by povlight_begin. */
 typedef struct povlight {

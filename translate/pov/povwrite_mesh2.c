@@ -159,6 +159,12 @@ static void put_vectors(povwriter *w, outbuf *ob, const dedup *vd, size_t n, uin
     for (size_t i = 0; i < n; i++) {
         if (i == FCACHE_PROBE && (w->fcache_hits - hits) * 16 < 3 * FCACHE_PROBE)
             w->fcache_off = true; /* under one in sixteen */
+        if (!w->fcache_off && i + 4 < n) {
+            /* The cache's entries are scattered: the next numbers' fetched now. */
+            const uint32_t *b = dedup_key(vd, i + 4) + off;
+            for (int k = 0; k < 3; k++)
+                __builtin_prefetch(&w->fcache[(b[k] * 2654435761u) >> (32 - FCACHE_BITS)]);
+        }
         PUT_ENTRY(w, ob, ",\n<", (const float *)(const void *)(dedup_key(vd, i) + off), ">");
     }
     w->fcache_off = false;
@@ -349,6 +355,8 @@ static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const
         if (verts[tris[i].provoking].color[3] != 1)
             return false;
     for (; i < nt; i++) {
+        if (i + POOL_AHEAD < nt)
+            __builtin_prefetch(verts[tris[i + POOL_AHEAD].v[2]].color);
         const float *c[3] = {verts[tris[i].v[0]].color, verts[tris[i].v[1]].color,
                              verts[tris[i].v[2]].color};
         uint64_t q[3];
@@ -362,6 +370,7 @@ static bool colour_image_ok(const povwriter *w, const scene_vertex *verts, const
 }
 
 #define UNSET UINT32_MAX
+#define MEMO_AHEAD 8
 #define BAD (UINT32_MAX - 1)
 
 /* What the vertex keys of a mesh part hold, and how they are made
@@ -394,6 +403,22 @@ static uint32_t colour_index(povwriter *w, colour_memo *m, const float c[4])
     return m->ci;
 }
 
+/* The memo's entry for pool vertex sv facing front (0 or 1). */
+static inline vmemo_entry *vmemo_at(const povwriter *w, const scene_vertex *sv, uint8_t front)
+{
+    uint64_t h = 0x9e3779b97f4a7c15ull * front;
+    static const uint64_t mul[5] = {0xc2b2ae3d27d4eb4full, 0x165667b19e3779f9ull,
+                                    0xd6e8feb86659fd93ull, 0xff51afd7ed558ccdull,
+                                    0xc4ceb9fe1a85ec53ull};
+    for (int i = 0; i < 5; i++) {
+        uint64_t x;
+        memcpy(&x, (const char *)sv->pos + 8 * i, sizeof x);
+        h += (x + (uint64_t)i) * mul[i];
+    }
+    h ^= h >> 29;
+    return &w->vmemo[(h * 0x94d049bb133111ebull) >> (64 - VMEMO_BITS)];
+}
+
 /* The vertex index of corner k of face t (BAD for a position that is not
  * finite), its key made and looked up; a new vertex's colour is indexed
  * too (vcolour). DEDUP_NONE when memory ran out. Inline: the loop that
@@ -411,17 +436,7 @@ vertex_index(povwriter *w, const key_spec *ks, colour_memo *memo, const scene_tr
     if (ks->memo_gen) {
         /* A copy of a vertex indexed before whose index is still in the
          * set's window (dedup_index would find it there): that index. */
-        uint64_t h = 0x9e3779b97f4a7c15ull * w->front[v - ks->lo];
-        static const uint64_t mul[5] = {0xc2b2ae3d27d4eb4full, 0x165667b19e3779f9ull,
-                                        0xd6e8feb86659fd93ull, 0xff51afd7ed558ccdull,
-                                        0xc4ceb9fe1a85ec53ull};
-        for (int i = 0; i < 5; i++) {
-            uint64_t x;
-            memcpy(&x, (const char *)sv->pos + 8 * i, sizeof x);
-            h += (x + (uint64_t)i) * mul[i];
-        }
-        h ^= h >> 29;
-        me = &w->vmemo[(h * 0x94d049bb133111ebull) >> (64 - VMEMO_BITS)];
+        me = vmemo_at(w, sv, w->front[v - ks->lo]);
         tag = ks->memo_gen << 1 | w->front[v - ks->lo];
         const dedup *vd = &w->vtx;
         if (me->tag == tag && memcmp(me->raw, sv->pos, sizeof me->raw) == 0 &&
@@ -506,6 +521,12 @@ index_faces(povwriter *w, const key_spec *ks, colour_memo *memo, const scene_tri
     size_t kept = 0;
     for (size_t i = 0; i < nt; i++) {
         const scene_tri *t = &tris[i];
+        if (ks->memo_gen && i + MEMO_AHEAD < nt) {
+            /* The memo's entries are scattered: the one a triangle ahead
+             * looks at, fetched now (its last corner: strips' new one). */
+            uint32_t pv = tris[i + MEMO_AHEAD].v[2];
+            __builtin_prefetch(vmemo_at(w, &verts[pv], w->front[pv - lo]));
+        }
         uint32_t *f = w->faces + kept * 6;
         bool face_front = false;
         if (flat && ks->turn) {
@@ -723,6 +744,8 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         memset(w->front, 2, span);
         for (size_t i = 0; i < nt; i++) {
             const scene_tri *t = &tris[i];
+            if (i + POOL_AHEAD < nt)
+                __builtin_prefetch(verts[tris[i + POOL_AHEAD].v[2]].pos);
             double *e[3];
             for (int k = 0; k < 3; k++) {
                 uint32_t v = t->v[k] - lo;
