@@ -88,8 +88,10 @@ void interp_lightset_textured(interp *ip, const scene_look *look)
         return;
     size_t n, first = set_range(ip, k, &n);
     double ratio;
-    /* The per-channel form scales the pigment, which a texture replaces. */
-    if (!scene_lights_specular_ratio(s->lights + first, n, &ratio))
+    /* The per-channel form scales the pigment, which a texture replaces.
+     * No lights (none could be kept): nothing to note, and s->lights may
+     * be NULL. */
+    if (n > 0 && !scene_lights_specular_ratio(s->lights + first, n, &ratio))
         interp_note(ip, DIAG_NOTE_SHADOW_HIGHLIGHT);
 }
 
