@@ -170,6 +170,21 @@ static void put_vectors(povwriter *w, outbuf *ob, const dedup *vd, size_t n, uin
     w->fcache_off = false;
 }
 
+/* A vector list's count and entries after its opening: the vertex keys'
+ * vectors at word `off`, then those of the corners of the first ndup / 3
+ * faces off the grid (w->offg), each a vertex of its own. */
+static void put_vector_list(povwriter *w, outbuf *ob, const dedup *vd, size_t ndup, uint32_t off)
+{
+    outbuf_u64(ob, vd->count + ndup);
+    put_vectors(w, ob, vd, vd->count, off);
+    for (size_t j = 0; j < ndup / 3; j++)
+        for (int k = 0; k < 3; k++)
+            PUT_ENTRY(w, ob, ",\n<",
+                      (const float *)(const void *)(dedup_key(vd, w->faces[w->offg[j] * 6 + k]) + off),
+                      ">");
+    outbuf_puts(ob, "}\n");
+}
+
 /* ---- Meshes ------------------------------------------------------------------------ */
 
 /* One texture{...} of a run with look and vertex colour c, textured by
@@ -862,23 +877,10 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     bool dup = nvg && nleft > 0 && nleft * 12 < kept;
     size_t ndup = dup ? nleft * 3 : 0;
     outbuf_puts(ob, "mesh2{\nvertex_vectors{");
-    outbuf_u64(ob, vd->count + ndup);
-    put_vectors(w, ob, vd, vd->count, 0);
-    for (size_t j = 0; j < ndup / 3; j++)
-        for (int k = 0; k < 3; k++)
-            PUT_ENTRY(w, ob, ",\n<",
-                      (const float *)(const void *)dedup_key(vd, w->faces[w->offg[j] * 6 + k]), ">");
-    outbuf_puts(ob, "}\n");
+    put_vector_list(w, ob, vd, ndup, 0);
     if (normals) {
         outbuf_puts(ob, "normal_vectors{");
-        outbuf_u64(ob, vd->count + ndup);
-        put_vectors(w, ob, vd, vd->count, 3);
-        for (size_t j = 0; j < ndup / 3; j++)
-            for (int k = 0; k < 3; k++)
-                PUT_ENTRY(w, ob, ",\n<",
-                          (const float *)(const void *)(dedup_key(vd, w->faces[w->offg[j] * 6 + k]) + 3),
-                          ">");
-        outbuf_puts(ob, "}\n");
+        put_vector_list(w, ob, vd, ndup, 3);
     }
     if (tx) { /* parallel to vertex_vectors: taken by face_indices */
         outbuf_puts(ob, "uv_vectors{");
