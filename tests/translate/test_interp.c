@@ -12,6 +12,7 @@
 #include "check.h"
 #include "interp_fixture.h"
 #include "frame.h"
+#include "povwrite.h"
 #include "interp.h"
 #include "interp_internal.h"
 #include "talloc.h"
@@ -785,19 +786,21 @@ static void test_alloc_translation(void)
     for (unsigned long n = 1; n < 120; n++) {
         tr_fail_alloc(n);
         translator *tr = translator_create(r, NULL);
+        povwriter *pw = povwriter_create();
         outbuf ob;
         int oi = outbuf_init(&ob, 256, NULL, NULL);
-        for (size_t i = 0; tr && oi == 0 && i < 2; i++) {
+        for (size_t i = 0; tr && pw && oi == 0 && i < 2; i++) {
             frame_result res;
             if (translator_build(tr, i, NULL, &res) == RGL_OK) {
-                pov_frame_info info = {"f.pov", "t.raygl", i, 0, (uint32_t)i, NULL, NULL, NULL};
+                pov_frame_info info = {"f.pov", "t.raygl", i, 0, (uint32_t)i, NULL, NULL};
                 ob.len = 0;
-                ok += translator_write_pov(tr, &ob, &info) == 0 && !ob.failed;
+                ok += povwriter_scene(pw, &ob, translator_scene(tr), &info) == 0 && !ob.failed;
             }
         }
         tr_fail_alloc(0);
         if (oi == 0)
             outbuf_finish(&ob);
+        povwriter_destroy(pw);
         translator_destroy(tr);
     }
     CHECK(ok > 0); /* late failures leave whole frames */

@@ -1,11 +1,11 @@
-/* test_unrecorded.c: the tables of calls not recorded (translate/gl/unrecorded.h)
+/* test_unrecorded.c: the tables of calls not recorded (translate/gl/unrec.h)
  * against hostile input: long names, bytes outside the name alphabet, more
  * names than the bound, counts that overflow; the report's order and text. */
 #include <stdint.h>
 #include <string.h>
 
 #include "check.h"
-#include "unrecorded.h"
+#include "unrec.h"
 
 static char lines[8][160];
 static int nlines;

@@ -11,7 +11,7 @@
 #include <string.h>
 
 #include "interp.h"
-#include "unrecorded.h"
+#include "unrec.h"
 
 /* Every handler named in commands.def; a missing definition fails the link. */
 #define RGL_CMD(op, api, gen, name, handler, ...) \

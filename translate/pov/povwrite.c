@@ -20,6 +20,7 @@
 
 #include "povwrite_internal.h"
 #include "povwrite_light.h"
+#include "povwrite_look.h"
 #include "povwrite_mesh2.h"
 #include "povwrite_solid.h"
 #include "povwrite_texture.h"
@@ -632,7 +633,7 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
      * that need another finish (issue 4) name theirs. */
     outbuf_puts(ob, "}\n#default{finish{ambient 0 diffuse 0 emission 1}}\n");
 
-    povlight_begin(&w->light, s, info ? info->options : NULL);
+    povlight_begin(&w->light, s);
     povtex_reset(&w->tex);
     w->mt_count = 0;
     bool no_shadows = w->light.opt.no_shadows;
@@ -690,6 +691,7 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
     if (s->overlay && write_overlay(w, ob, s) != 0)
         return -1;
     povlight_lights(&w->light, ob);
+    povlook_scene(ob, s);
     return ob->failed ? -1 : 0;
 }
 

@@ -288,12 +288,11 @@ bool povlight_in_pass(const povlight *pl, const scene_look *look)
 
 /* ---- Per frame --------------------------------------------------------------------- */
 
-void povlight_begin(povlight *pl, const scene *s, const pov_options *options)
+void povlight_begin(povlight *pl, const scene *s)
 {
     memset(pl, 0, sizeof *pl);
     pl->s = s;
-    if (options)
-        pl->opt = *options;
+    pl->opt = s->options;
     double lo[3], hi[3];
     scene_box(s, lo, hi);
     if (lo[0] <= hi[0]) {
@@ -808,6 +807,8 @@ void povlight_lights(const povlight *pl, outbuf *ob)
             only = (int32_t)k;
     for (size_t i = 0; i < s->nlights; i++) {
         const scene_light *l = &s->lights[i];
+        if (l->added)
+            continue; /* the look's, after the scene (povwrite_look.c) */
         if (l->aimed)
             put_aimed(ob, l);
         else if (!pl->groups && (only < 0 || l->set == (uint32_t)only))

@@ -182,6 +182,15 @@ typedef struct scene_light {
     float spot_exponent, spot_cutoff;   /* degrees */
     float attenuation[3];               /* constant, linear, quadratic */
     uint32_t set;        /* the light set it belongs to (not aimed lights) */
+    /* A light the look step added (look/look.c, raygl2pov --light): aimed,
+     * lighting everything. spot_radius: a spot's cone of full intensity
+     * (degrees; spot_cutoff is where it ends). An area light (area_samples
+     * set) is a POINT at its centre spreading over area_axis[0] and
+     * area_axis[1] (eye-space vectors across it), sampled n x m. */
+    bool added;
+    float spot_radius;
+    double area_axis[2][3];
+    int area_samples[2];
 } scene_light;
 
 /* Light sets (docs/mapping.md "Lights per object"): the GL lights of a lit
@@ -220,6 +229,22 @@ enum {
     SCENE_BLEND_ALPHA = 1,     /* transmit 1 - alpha */
     SCENE_BLEND_INVISIBLE = 2, /* GL_ZERO, GL_ONE: nothing drawn */
 };
+
+/* What the look step asks of the picture beyond GL's (look/look.c:
+ * raygl2pov's ray-tracing and render options), for every writer to give as
+ * its format can. All zero: GL's look, as the writers give it by default. */
+typedef struct scene_options {
+    bool no_shadows;  /* nothing casts shadows */
+    float reflection; /* lit surfaces mirror their surroundings by this, 0 to 1 */
+    int area_lights;  /* N: the GL lights cast soft shadows, as discs of N x N
+                         samples; 0: as points */
+    bool radiosity;   /* global illumination: light bounces off surfaces */
+    bool antialias;   /* the image antialiased */
+    int quality;      /* the renderer's quality on POV-Ray's scale (1 to 11;
+                         -1: 0); 0: the renderer's default */
+    bool world_view;  /* the look's camera and lights were given in world
+                         coordinates: scene.view takes them to eye space */
+} scene_options;
 
 /* glFog, in eye space: GL's fog factor of the eye-plane distance |z|. */
 typedef struct scene_fog {
@@ -362,6 +387,7 @@ typedef struct scene {
      * coordinates when there is one; look.c). */
     bool have_view;
     mat4 view;
+    scene_options options; /* the look step's (look/look.c) */
 
     /* Bitmaps and pixel rectangles (interp_pixels.c): one RGBA image of
      * overlay_w x overlay_h pixels, the camera's viewport, bottom row

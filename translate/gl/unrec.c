@@ -1,5 +1,5 @@
-/* unrecorded.c: tables of unrecorded calls (unrecorded.h). */
-#include "unrecorded.h"
+/* unrec.c: tables of unrecorded calls (unrec.h). */
+#include "unrec.h"
 
 #include <inttypes.h>
 #include <stdbool.h>

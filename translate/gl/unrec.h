@@ -1,15 +1,15 @@
-/* unrecorded.h: the calls a trace says were not recorded (@NotRecorded,
+/* unrec.h: the calls a trace says were not recorded (@NotRecorded,
  * format 1.3), counted by entry point.
  *
- * The interpreter fills one table per frame (interp_unrecorded.c); the CLI
- * adds the frames' tables up in frame order into one for the trace and
+ * The interpreter fills one table per frame (interp_unrecorded.c); the
+ * driver adds the frames' tables up in frame order into one for the trace and
  * prints it once, so the report does not depend on -j. A table is bounded
  * against a hostile trace: names are cut to UNREC_NAME_MAX bytes of
  * [A-Za-z0-9_] (any other byte shows as '?'), and names beyond the first
  * UNREC_MAX_NAMES are counted together as others.
  */
-#ifndef RGL_TR_UNRECORDED_H
-#define RGL_TR_UNRECORDED_H
+#ifndef RGL_UNREC_H
+#define RGL_UNREC_H
 
 #include <stddef.h>
 #include <stdint.h>
