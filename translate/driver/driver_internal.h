@@ -1,5 +1,5 @@
 /* driver_internal.h: what the driver's files share (run.c, report.c,
- * dump.c); not for other users.
+ * tracedump.c); not for other users.
  */
 #ifndef RGL_DRIVER_INTERNAL_H
 #define RGL_DRIVER_INTERNAL_H
@@ -67,7 +67,7 @@ void drv_print_summary(const driver_settings *d, const totals *tot);
  * NULL (no memory: the details are then lost, not the frame). */
 char *drv_incomplete_text(const frame_result *res);
 
-/* ---- --dump (dump.c) -------------------------------------------------------------------- */
+/* ---- --dump (tracedump.c) -------------------------------------------------------------------- */
 
 /* Prints every selected frame and command; DRIVER_EXIT_INPUT on damage. */
 int drv_dump(const driver_settings *d, rgl_reader *r);

@@ -1,4 +1,4 @@
-/* dump.c: --dump, every selected frame and command of a trace on
+/* tracedump.c: --dump, every selected frame and command of a trace on
  * standard output, with the decoder's damage said as the driver says it.
  */
 #include <inttypes.h>
