@@ -54,25 +54,22 @@ static void print_help(void)
           stdout);
 }
 
-/* The options that only a POV-Ray scene can use, or NULL. */
+/* The options that only a POV-Ray scene can use, or NULL. The others the
+ * look step puts into the scene, and every writer gives them as its
+ * format can (the glTF writer: --area-lights and --radiosity as extras
+ * that Blender's import script honours; --include it says it leaves out). */
 static const char *pov_only_option(const options *o)
 {
     if (render_wanted(&o->render) && o->render.engine == RENDER_ENGINE_POVRAY)
         return "--engine povray";
-    if (o->look.nincludes)
-        return "--include";
     if (o->look.options.antialias)
         return "--antialias";
     if (o->look.options.quality)
         return "--quality";
-    if (o->look.options.radiosity)
-        return "--radiosity";
     if (o->look.options.no_shadows)
         return "--no-shadows";
     if (o->look.options.reflection != 0)
         return "--reflection";
-    if (o->look.options.area_lights)
-        return "--area-lights";
     return NULL;
 }
 

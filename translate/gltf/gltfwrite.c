@@ -1013,10 +1013,26 @@ static double light_ref_distance(const scene *s, const double pos[3])
     return l > 1e-6 && isfinite(l) ? l : 1;
 }
 
+/* A light's soft shadow as Blender takes it (tools/blender/raygl-blender.py
+ * reads the light's extras): an added area light (--light area) as a
+ * sphere of its mean half extent; with --area-lights, the GL lights as
+ * POV-Ray's discs a tenth of their distance to the scene's centre across
+ * (a sun: the angle such a disc spans). 0: a point, casting no shadow. */
+static double light_soft_size(const scene *s, const scene_light *l, const double pos[3])
+{
+    if (l->added && l->area_samples[0] > 0)
+        return (len3(l->area_axis[0]) + len3(l->area_axis[1])) / 4;
+    if (l->aimed || s->options.area_lights < 2 || s->options.no_shadows)
+        return 0;
+    if (l->kind == SCENE_LIGHT_PARALLEL)
+        return 2 * atan(0.05);
+    return 0.05 * light_ref_distance(s, pos);
+}
+
 static void write_lights(writer *w)
 {
     const scene *s = w->s;
-    bool other_sets = false, attenuated = false;
+    bool other_sets = false, attenuated = false, soft_shadows = false;
     for (size_t i = 0; i < s->nlights; i++) {
         const scene_light *l = &s->lights[i];
         if (!l->aimed && l->set != 0) {
@@ -1090,6 +1106,14 @@ static void write_lights(writer *w)
             num(o, outer);
             outbuf_putc(o, '}');
         }
+        double soft = light_soft_size(s, l, pos);
+        if (soft > 0) {
+            outbuf_puts(o, directional ? ",\"extras\":{\"rayglShadowAngle\":"
+                                       : ",\"extras\":{\"rayglShadowRadius\":");
+            num(o, soft);
+            outbuf_putc(o, '}');
+            soft_shadows = true;
+        }
         outbuf_putc(o, '}');
         double q[4];
         orient(fwd, up, q);
@@ -1103,6 +1127,9 @@ static void write_lights(writer *w)
         note(w, "lights: draws under other GL lights; only the first draw's lights written");
     if (attenuated)
         note(w, "lights: GL's attenuation fitted as 1/d^2 at the scene's centre");
+    if (soft_shadows)
+        note(w, "area lights: glTF's lights are points; their size is kept in the lights' extras "
+                "(rayglShadowRadius, rayglShadowAngle), for Blender's soft shadows");
 }
 
 /* ---- lines and points ---------------------------------------------------------------- */
@@ -1266,6 +1293,13 @@ static void write_extras(writer *w, outbuf *j, const gltf_frame_info *info)
         nums(j, fc, 4);
         outbuf_putc(j, '}');
         note(w, "fog: glTF has none (kept in extras.fog)");
+    }
+    if (s->options.radiosity) {
+        /* Global illumination is the renderer's: Blender's Cycles bounces
+         * light off surfaces for it (raygl-blender.py). */
+        outbuf_puts(j, ",\"radiosity\":true");
+        note(w, "radiosity: a renderer's setting, kept in extras.radiosity (Blender: diffuse "
+                "bounces)");
     }
     if (s->overlay)
         note(w, "bitmaps and pixel rectangles: not written");
