@@ -15,7 +15,9 @@
 #     include is unambiguous;
 #   - cli/ writes no SDL (no POV-Ray keyword in its strings);
 #   - translate/ builds at least six static libraries;
-#   - no function of the product is longer than 200 lines.
+#   - no function of the product is longer than 200 lines;
+#   - interp.h's map names every file of gl/, scene.h every writer;
+#   - every function a part's header declares is used.
 # The build enforces the include rules too (translate/meson.build: each
 # part's include directory reaches only the parts it may use); this test
 # keeps the table, the sources and the build saying the same.
@@ -109,5 +111,35 @@ long=$(cd "$root" && find format record translate compare -name '*.c' | sort | x
 /;[ \t]*$/ { if (!start) head = 0 }
 ')
 [ -z "$long" ] && ok "no function over 200 lines" || fail "functions over 200 lines: $long"
+# The maps: interp.h names every file of gl/, scene.h every writer.
+missing=
+for f in "$tr"/gl/*; do
+    b=$(basename "$f")
+    [ "$b" = interp.h ] || sed -n '1,/\*\//p' "$tr/gl/interp.h" | grep -q "$b" || missing="$missing $b"
+done
+[ -z "$missing" ] && ok "interp.h's map names every file of gl/" ||
+    fail "interp.h's map does not name:$missing"
+writers=$(sed -n "s/^writers = \[\(.*\)\]/\1/p" "$tr/meson.build" | tr -d "',")
+[ -n "$writers" ] || fail "no writers list in translate/meson.build"
+nw=0
+for w in $writers; do
+    sed -n '1,/\*\//p' "$tr/scene/scene.h" | grep -q "$w/" && nw=$((nw + 1)) ||
+        fail "scene.h does not name the writer $w/"
+done
+[ "$nw" -gt 0 ] && ok "scene.h names the $nw writers"
+
+# Every function a part's header declares is used somewhere (the product,
+# its tests, benchmarks or fuzz targets): a name seen only in its
+# declaration and its definition is dead.
+words=$(cd "$root" && find translate tests bench fuzz -name '*.[ch]' | xargs grep -ohwE '[a-z_][a-z0-9_]*' |
+    sort | uniq -c | awk '{ print $2, $1 }')
+declared=$(cat "$tr"/*/*.h | grep -E '^[a-z_][a-z0-9_ *]*[ *][a-z_][a-z0-9_]*\(' |
+    grep -vE '^(static|typedef)' | sed -E 's/^[^(]*[ *]\**([a-z_][a-z0-9_]*)\(.*/\1/' | sort -u)
+dead=$(printf '%s\n---\n%s\n' "$words" "$declared" |
+    awk '$1 == "---" { names = 1; next } !names { n[$1] = $2; next } (n[$1] + 0) <= 2 { print $1 }')
+ndecl=$(echo "$declared" | wc -l)
+[ -z "$dead" ] && ok "each of the $ndecl functions the parts' headers declare is used" ||
+    fail "declared and defined, never used: $(echo $dead)"
+
 echo "$failed failed"
 [ "$failed" -eq 0 ]

@@ -300,7 +300,6 @@ const mat4 *interp_matrix(const interp *ip, int mode)
     }
 }
 
-bool interp_in_begin(const interp *ip) { return ip->in_begin; }
 
 const char *interp_frame_name(const interp *ip) { return ip->frame_begin ? ip->frame_name : NULL; }
 

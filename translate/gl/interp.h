@@ -8,27 +8,64 @@
  * skipped and counted in the diagnostics log with its frame and position,
  * as GL records an error and goes on.
  *
- * Where each feature lives:
- *   interp.c         dispatch, run loop, diagnostics, enables, attribute stack
- *   interp_matrix.c  matrix modes, stacks, transforms, @Matrix, viewport
- *   interp_prim.c    Begin/End, vertex attributes, primitive assembly,
- *                    culling, polygon mode, lines and points, glRect
- *   interp_raster.c  clear, shading, face and rasterisation state, blend,
- *                    alpha and depth functions, the frame calls
- *                    (rayglFrameBegin), the camera of the frame
- *   interp_light.c   lights, materials, colour material, fog (state kept as
- *                    GL keeps it; issue 4 translates it)
- *   interp_list.c    display lists: the list table, calls, nesting, and
- *                    the prototypes that repeated calls share
- *   interp_array.c   vertex arrays and their draws, buffer objects
- *   interp_bounds.c  the frame's budget (a frame that would cost more is
- *                    cut) and the parts a damaged trace left out of it
- *   interp_eval.c    evaluators: maps, grids, glEvalCoord, glEvalMesh
- *   interp_multitex.c texture units: glActiveTexture, glClientActiveTexture,
- *                    glMultiTexCoord, the units a draw takes
+ * Where each area of GL lives (every file of gl/, by area, as Mesa's
+ * src/mesa/main has one file per area of state):
+ *
+ * The machine
+ *   interp.c          dispatch, run loop, diagnostics, GL's initial state,
+ *                     glEnable/glDisable, the attribute stack
+ *   interp_internal.h struct interp and what the files share
+ *   caps.def          the capabilities glEnable/glDisable accept
+ *   interp_bounds.c   the frame's budget (a frame that would cost more is
+ *                     cut) and the parts a damaged trace left out of it
+ *   interp_unrecorded.c @NotRecorded: the calls the recorder did not record
+ *   unrec.c, unrec.h  their tables, counted by entry point
+ *   namemap.c, namemap.h GL object names to table indexes (lists, textures)
+ * Vertices and primitives
+ *   interp_prim.c     Begin/End, vertex attributes, primitive assembly,
+ *                     culling, polygon mode, lines and points, glRect
+ *   interp_array.c    vertex arrays and their draws, buffer objects
+ *   interp_list.c     display lists: the table, calls, nesting, and the
+ *                     prototypes that repeated calls share
+ *   interp_eval.c     evaluators: maps, grids, glEvalCoord, glEvalMesh
+ *   interp_nurbs.c    GLU NURBS surfaces, curves and trims
+ *   interp_shape.c    GLU quadrics and GLUT solids
+ *   interp_point.c    point parameters, the provoking vertex
+ *   interp_stipple.c  line stipple
+ *   interp_pstipple.c polygon stipple
+ *   interp_offset.c   glPolygonOffset
+ * Transforms, camera and clipping
+ *   interp_matrix.c   matrix modes, stacks, transforms, @Matrix, viewport
+ *   interp_raster.c   clear, shading, face and rasterisation state, the
+ *                     frame calls (rayglFrameBegin), the frame's camera
+ *   interp_proj.c     a frame of several projections: its camera, layers
+ *   interp_clip.c     user clip planes
+ *   interp_select.c   render modes and the name stack
+ * Lighting and fog
+ *   interp_light.c    lights, light model, materials, colour material, fog
  *   interp_lightset.c the frame's light sets (each lit draw's lights)
  *   interp_vmaterial.c glMaterial between the vertices of a primitive
- *   interp_gouraud.c per-vertex lighting on request (--vertex-lighting)
+ *   interp_gouraud.c  per-vertex lighting on request (--vertex-lighting)
+ *   interp_relit.c    GL's own lighting for faces a writer cannot light so
+ *   interp_fogsec.c   fog coordinates and the secondary colour
+ *   interp_fogbehind.c fog of primitives reaching behind the eye
+ * Textures
+ *   interp_texture.c  texture objects, images, parameters, environment,
+ *                     coordinate generation, the units a draw samples
+ *   interp_teximage.h a texture image as the interpreter keeps it
+ *   interp_texpacked.c GL's packed pixel types
+ *   interp_texslice.c derived images: mirror-clamped, 3D slices
+ *   interp_texcopy.c  glCopyTex*, 3D textures
+ *   interp_multitex.c texture units: glActiveTexture, glMultiTexCoord
+ *   interp_combine.c  the GL_COMBINE environment
+ * Per-fragment operations and the framebuffer
+ *   interp_alphatest.c the alpha test
+ *   interp_scissor.c  the scissor test, scissored clears
+ *   interp_stencil.c  the stencil test
+ *   interp_masks.c    colour and depth write masks
+ *   interp_accum.c    the accumulation buffer
+ *   interp_pixels.c   raster position, bitmaps, pixel rectangles
+ *   interp_pixdepth.c their depth
  *
  * Not thread-safe; one interpreter per worker thread.
  */
@@ -359,9 +396,6 @@ const gl_state *interp_state(const interp *ip);
 
 /* The current top of a matrix stack. */
 const mat4 *interp_matrix(const interp *ip, int mode);
-
-/* True while between glBegin and glEnd. */
-bool interp_in_begin(const interp *ip);
 
 /* The rayglFrameBegin file name of the current frame (NUL-terminated,
  * unsanitised), or NULL when the frame has none. */

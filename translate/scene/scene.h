@@ -1,8 +1,12 @@
-/* scene.h: the neutral scene model between the interpreter and a writer.
+/* scene.h: the neutral scene model between the interpreter and the writers.
  *
- * The interpreter (interp*.c) fills a scene from GL commands; a writer
- * (povwrite.c) turns it into text. Nothing here knows SDL or GL calls: the
- * model speaks of cameras, meshes, lines, points, lights, in named spaces:
+ * The interpreter (gl/) fills a scene from GL commands; the look step
+ * (look/) edits it with raygl2pov's re-translation options (camera, size,
+ * added lights, scene.options); a writer turns it into files: pov/
+ * (POV-Ray SDL and .ini, povwrite.h) or gltf/ (binary glTF, gltfwrite.h),
+ * each reached by the driver through writer.h. Nothing here knows GL, SDL
+ * or glTF: the model speaks of cameras, meshes, lines, points, lights, in
+ * named spaces:
  *
  *   eye space     GL eye coordinates of the frame's camera: the camera sits
  *                 at the origin looking down -z, right-handed, as in GL.
