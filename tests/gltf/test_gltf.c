@@ -456,7 +456,7 @@ static void test_solids_lines_textures(void)
     t.repeat_s = true;
     t.border_t = true;
     t.linear = true;
-    t.env_mode = 0x2100; /* GL_MODULATE */
+    t.env_mode = SCENE_ENV_MODULATE;
     t.hash = 1;
     scene_look l = unlit();
     l.texture = scene_add_texture(&s, &t);
@@ -466,7 +466,7 @@ static void test_solids_lines_textures(void)
     /* lit, GL_REPLACE: the texel alone, unlit */
     t.rgba = tr_realloc(NULL, 16);
     memset(t.rgba, 200, 16);
-    t.env_mode = 0x1E01; /* GL_REPLACE */
+    t.env_mode = SCENE_ENV_REPLACE;
     t.colour_is_texel = true;
     t.hash = 2;
     scene_look lr = unlit();

@@ -36,7 +36,8 @@ uint8_t interp_alpha_vertex(interp *ip, size_t k, float a)
         ip->prim_alpha_varies = true;
     }
     const gl_attribs *g = &ip->st.a;
-    return scene_alpha_pass(g->color_buffer.alpha_func, a, g->color_buffer.alpha_ref)
+    return scene_alpha_pass(interp_scene_cmp(g->color_buffer.alpha_func), a,
+                            g->color_buffer.alpha_ref)
                ? 0
                : INTERP_ALPHA_FAIL;
 }

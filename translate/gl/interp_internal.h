@@ -273,6 +273,49 @@ struct interp {
     double fb_loc[3], fb_look[3], fb_light[3];
 };
 
+/* ---- GL's enums as the scene names them (scene.h) ---------------------------- */
+
+/* GL_MODULATE .. GL_ADD: SCENE_ENV_*; 0 for another mode. */
+static inline uint32_t interp_scene_env(GLenum mode)
+{
+    switch (mode) {
+    case GL_MODULATE: return SCENE_ENV_MODULATE;
+    case GL_REPLACE: return SCENE_ENV_REPLACE;
+    case GL_DECAL: return SCENE_ENV_DECAL;
+    case GL_BLEND: return SCENE_ENV_BLEND;
+    case GL_ADD: return SCENE_ENV_ADD;
+    default: return 0;
+    }
+}
+
+/* GL_NEVER .. GL_ALWAYS (consecutive, GL 1.x table 4.1): SCENE_CMP_*; 0
+ * for another value. */
+static inline uint32_t interp_scene_cmp(GLenum func)
+{
+    return func >= GL_NEVER && func <= GL_ALWAYS ? func - GL_NEVER + SCENE_CMP_NEVER : 0;
+}
+
+/* GL_*_MIPMAP_*: SCENE_MIP_*; 0 for a filter that does not mipmap. */
+static inline uint32_t interp_scene_mip(GLenum filter)
+{
+    switch (filter) {
+    case GL_NEAREST_MIPMAP_NEAREST: return SCENE_MIP_NEAREST_MIPMAP_NEAREST;
+    case GL_LINEAR_MIPMAP_NEAREST: return SCENE_MIP_LINEAR_MIPMAP_NEAREST;
+    case GL_NEAREST_MIPMAP_LINEAR: return SCENE_MIP_NEAREST_MIPMAP_LINEAR;
+    case GL_LINEAR_MIPMAP_LINEAR: return SCENE_MIP_LINEAR_MIPMAP_LINEAR;
+    default: return 0;
+    }
+}
+
+/* GL_LINEAR, GL_EXP, GL_EXP2: SCENE_FOG_*; 0 for another mode. */
+static inline int interp_scene_fog(GLenum mode)
+{
+    return mode == GL_LINEAR ? SCENE_FOG_LINEAR
+           : mode == GL_EXP  ? SCENE_FOG_EXP
+           : mode == GL_EXP2 ? SCENE_FOG_EXP2
+                             : 0;
+}
+
 /* ---- Arguments -------------------------------------------------------------- */
 
 /* A scalar argument as double (any wire type). */

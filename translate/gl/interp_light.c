@@ -385,7 +385,7 @@ void interp_fix_fog(interp *ip)
     scene_fog f;
     memset(&f, 0, sizeof f);
     f.on = true;
-    f.mode = (int)a->fog.mode;
+    f.mode = interp_scene_fog(a->fog.mode);
     f.density = a->fog.density;
     f.start = a->fog.start;
     f.end = a->fog.end;

@@ -1358,7 +1358,7 @@ scene_look interp_current_look(interp *ip)
         const scene_texture *t1 = &ip->scene->textures[look.texture1];
         if (t1->colour_is_texel) /* the second unit's texel replaces the first's result */
             look.texture = -1;
-        else if ((t0 && !(t0->env_mode == GL_MODULATE && t1->env_mode == GL_MODULATE) &&
+        else if ((t0 && !(t0->env_mode == SCENE_ENV_MODULATE && t1->env_mode == SCENE_ENV_MODULATE) &&
                   !t0->colour_is_texel && (look.lit || !look.flat)) ||
                  (t0 && look.blend != SCENE_BLEND_OPAQUE))
             interp_note(ip, DIAG_NOTE_MULTITEX); /* see the note's text */

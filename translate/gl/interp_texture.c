@@ -1493,7 +1493,7 @@ static int32_t cube_for_draw(interp *ip, tex_obj *o, const interp_tex_unit *u, i
         st.height = im->height;
         st.hash = im->hash;
         st.linear = o->mag_filter == GL_LINEAR;
-        st.env_mode = env;
+        st.env_mode = interp_scene_env(env);
         memcpy(st.env_color, u->texture->env_color, sizeof st.env_color);
         st.colour_is_texel = env == GL_REPLACE && o->base_format != GL_ALPHA;
         st.cube = f == 0;
@@ -1523,7 +1523,7 @@ static int32_t mip_chain(interp *ip, tex_obj *o, scene_texture *st, bool ms, boo
 {
     int b = o->base_level, q = last_level(o, b);
     int32_t next = -1;
-    st->mip_filter = o->min_filter;
+    st->mip_filter = interp_scene_mip(o->min_filter);
     st->min_lod = o->min_lod;
     st->max_lod = o->max_lod;
     for (int k = q; k >= b; k--) {
@@ -1668,7 +1668,7 @@ int32_t interp_texture_for_unit(interp *ip, int k)
                   (o->wrap_t == GL_CLAMP || o->wrap_t == GL_CLAMP_TO_BORDER ||
                    o->wrap_t == GL_MIRROR_CLAMP_TO_BORDER_EXT);
     memcpy(st.border, o->border, sizeof st.border);
-    st.env_mode = env;
+    st.env_mode = interp_scene_env(env);
     memcpy(st.env_color, u.texture->env_color, sizeof st.env_color);
     /* The alpha test per texel where the texel's alpha is the fragment's
      * (table 3.22: DECAL takes the vertex alpha, and so does a base
@@ -1678,7 +1678,7 @@ int32_t interp_texture_for_unit(interp *ip, int k)
                      b0 == GL_INTENSITY;
     if (ga->caps[INTERP_CAP_ALPHA_TEST] && ga->color_buffer.alpha_func != GL_ALWAYS && has_alpha &&
         (env == GL_MODULATE || env == GL_REPLACE)) {
-        st.alpha_func = ga->color_buffer.alpha_func;
+        st.alpha_func = interp_scene_cmp(ga->color_buffer.alpha_func);
         st.alpha_ref = ga->color_buffer.alpha_ref;
         st.alpha_uses_af = env != GL_REPLACE;
         float c[4];

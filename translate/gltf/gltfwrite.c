@@ -10,7 +10,6 @@
  */
 #include "gltfwrite.h"
 
-#include <GL/gl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -24,7 +23,9 @@
 
 #define GLTF_MAX_NOTES 32
 
-enum { GL_ARRAY = 34962, GL_ELEMENTS = 34963, T_FLOAT = 5126, T_UINT = 5125 };
+enum { GLTF_ARRAY_BUFFER = 34962, GLTF_ELEMENT_ARRAY_BUFFER = 34963, T_FLOAT = 5126, T_UINT = 5125 };
+/* glTF's sampler values (the specification's, GL's numbers). */
+enum { GLTF_NEAREST = 9728, GLTF_LINEAR = 9729, GLTF_REPEAT = 10497, GLTF_CLAMP_TO_EDGE = 33071 };
 
 typedef struct bytes {
     uint8_t *p;
@@ -176,7 +177,7 @@ static size_t add_accessor(writer *w, const void *data, size_t count, int comps,
                            bool bounds)
 {
     static const char *const type[] = {"", "SCALAR", "VEC2", "VEC3", "VEC4"};
-    size_t view = add_view(w, data, count * (size_t)comps * 4, indices ? GL_ELEMENTS : GL_ARRAY);
+    size_t view = add_view(w, data, count * (size_t)comps * 4, indices ? GLTF_ELEMENT_ARRAY_BUFFER : GLTF_ARRAY_BUFFER);
     size_t k = item(&w->accessors);
     outbuf *o = &w->accessors.ob;
     outbuf_puts(o, "{\"bufferView\":");
@@ -240,13 +241,13 @@ static int32_t texture_index(writer *w, int32_t t)
     size_t smp = item(&w->samplers);
     outbuf *o = &w->samplers.ob;
     outbuf_puts(o, "{\"magFilter\":");
-    outbuf_u64(o, tx->linear ? GL_LINEAR : GL_NEAREST);
+    outbuf_u64(o, tx->linear ? GLTF_LINEAR : GLTF_NEAREST);
     outbuf_puts(o, ",\"minFilter\":");
-    outbuf_u64(o, tx->linear ? GL_LINEAR : GL_NEAREST);
+    outbuf_u64(o, tx->linear ? GLTF_LINEAR : GLTF_NEAREST);
     outbuf_puts(o, ",\"wrapS\":");
-    outbuf_u64(o, tx->repeat_s ? GL_REPEAT : GL_CLAMP_TO_EDGE);
+    outbuf_u64(o, tx->repeat_s ? GLTF_REPEAT : GLTF_CLAMP_TO_EDGE);
     outbuf_puts(o, ",\"wrapT\":");
-    outbuf_u64(o, tx->repeat_t ? GL_REPEAT : GL_CLAMP_TO_EDGE);
+    outbuf_u64(o, tx->repeat_t ? GLTF_REPEAT : GLTF_CLAMP_TO_EDGE);
     outbuf_putc(o, '}');
     if ((!tx->repeat_s && tx->border_s) || (!tx->repeat_t && tx->border_t))
         note(w, "GL_CLAMP's border colour: clamped to the edge texel");
@@ -292,9 +293,9 @@ static int32_t material_index(writer *w, const scene_look *look, bool lines, boo
                                     ? &s->materials[look->material]
                                     : NULL;
     int32_t tex = tx && !lines ? texture_index(w, look->texture) : -1;
-    if (tex >= 0 && tx->env_mode == GL_BLEND)
+    if (tex >= 0 && tx->env_mode == SCENE_ENV_BLEND)
         note(w, "GL_BLEND texture environment: written as GL_MODULATE");
-    else if (tex >= 0 && tx->env_mode != GL_MODULATE && !tx->colour_is_texel)
+    else if (tex >= 0 && tx->env_mode != SCENE_ENV_MODULATE && !tx->colour_is_texel)
         note(w, "a texture environment other than GL_MODULATE, GL_REPLACE or GL_DECAL of a "
                 "colour without alpha (GL_DECAL of RGBA, GL_ADD, GL_COMBINE): written as "
                 "GL_MODULATE");
@@ -1279,7 +1280,9 @@ static void write_extras(writer *w, outbuf *j, const gltf_frame_info *info)
     outbuf_putc(j, ']');
     if (s->fog.on) {
         outbuf_puts(j, ",\"fog\":{\"mode\":");
-        jstr(j, s->fog.mode == GL_EXP ? "exp" : s->fog.mode == GL_EXP2 ? "exp2" : "linear");
+        jstr(j, s->fog.mode == SCENE_FOG_EXP    ? "exp"
+                : s->fog.mode == SCENE_FOG_EXP2 ? "exp2"
+                                                : "linear");
         double f[3] = {s->fog.density, s->fog.start, s->fog.end}, fc[4];
         for (int c = 0; c < 4; c++)
             fc[c] = clamp01(s->fog.color[c]);

@@ -11,7 +11,6 @@
  */
 #include "povwrite.h"
 
-#include <GL/gl.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>

@@ -24,7 +24,6 @@
  */
 #include "povwrite_light.h"
 
-#include <GL/gl.h>
 #include <math.h>
 #include <string.h>
 
@@ -616,7 +615,7 @@ void povlight_fog_declare(const povlight *pl, outbuf *ob, const char *name, cons
     outbuf_puts(ob, name);
     outbuf_puts(ob, "=texture{pigment{function{min(1,max(0,");
     switch (fg->mode) {
-    case GL_LINEAR: {
+    case SCENE_FOG_LINEAR: {
         double span = (double)fg->end - fg->start;
         if (span == 0)
             span = 1e-30;
@@ -624,7 +623,7 @@ void povlight_fog_declare(const povlight *pl, outbuf *ob, const char *name, cons
         outbuf_puts(ob, "-abs(");
         break;
     }
-    case GL_EXP2:
+    case SCENE_FOG_EXP2:
         outbuf_puts(ob, "exp(-pow(abs(");
         break;
     default:
@@ -638,7 +637,7 @@ void povlight_fog_declare(const povlight *pl, outbuf *ob, const char *name, cons
     }
     put_num(ob, r[3]);
     switch (fg->mode) {
-    case GL_LINEAR: {
+    case SCENE_FOG_LINEAR: {
         double span = (double)fg->end - fg->start;
         if (span == 0)
             span = 1e-30;
@@ -646,7 +645,7 @@ void povlight_fog_declare(const povlight *pl, outbuf *ob, const char *name, cons
         put_num(ob, span);
         break;
     }
-    case GL_EXP2:
+    case SCENE_FOG_EXP2:
         outbuf_puts(ob, ")*");
         put_num(ob, fg->density);
         outbuf_puts(ob, ",2))");

@@ -13,7 +13,6 @@
  */
 #include "povwrite_mesh2.h"
 
-#include <GL/gl.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -203,7 +202,7 @@ static void put_surface(povwriter *w, outbuf *ob, const scene_look *look,
         outbuf_puts(ob, "}}");
         return;
     }
-    if (tx->env_mode == GL_BLEND || tx->env_mode == GL_ADD) {
+    if (tx->env_mode == SCENE_ENV_BLEND || tx->env_mode == SCENE_ENV_ADD) {
         if (look->lit) {
             float kdp[3], tint[3];
             bool tinted = povlight_modulate_tint(&w->light, look, c, kdp, tint);
@@ -211,15 +210,15 @@ static void put_surface(povwriter *w, outbuf *ob, const scene_look *look,
             if (povmt_env_lit(tx, w->env_id, tinted ? tint : NULL, lit, sizeof lit, env,
                               sizeof env) == 0) {
                 povlight_texture_env(&w->light, ob, look, c, side,
-                                     tx->env_mode == GL_BLEND ? lit : NULL,
-                                     tinted && tx->env_mode == GL_BLEND ? kdp : NULL, env);
+                                     tx->env_mode == SCENE_ENV_BLEND ? lit : NULL,
+                                     tinted && tx->env_mode == SCENE_ENV_BLEND ? kdp : NULL, env);
                 return;
             }
         } else if (povmt_env_texture(ob, tx, w->env_id, c) == 0) {
             return;
         }
     }
-    if (tx->env_mode == GL_DECAL) {
+    if (tx->env_mode == SCENE_ENV_DECAL) {
         /* DECAL of RGBA: the texel over the fragment's colour by its alpha;
          * the image's alpha is POV-Ray's transmit, so the layer below
          * shows through by 1 - alpha. */
@@ -254,7 +253,7 @@ static const float *mesh_tint(povwriter *w, const scene_vertex *verts, const sce
                               const scene_texture *tx1)
 {
     w->tinted = w->per_entry = false;
-    if (tx1 || tx->env_mode != GL_MODULATE || tx->colour_is_texel || !look->lit)
+    if (tx1 || tx->env_mode != SCENE_ENV_MODULATE || tx->colour_is_texel || !look->lit)
         return NULL;
     /* GL_COLOR_MATERIAL's diffuse: one colour for the whole mesh, or none. */
     const float *c = verts[look->flat ? tris[0].provoking : tris[0].v[0]].color;
@@ -648,7 +647,7 @@ static int part_begin(mesh2_part *p)
     if (tx && p->mt_map) {
         p->tx1 = &sc->textures[look->texture1];
         p->txc = *tx;
-        p->txc.env_mode = GL_MODULATE;
+        p->txc.env_mode = SCENE_ENV_MODULATE;
         p->txc.colour_is_texel = povmt_texel(tx, p->tx1);
         tx = &p->txc;
     }
@@ -715,7 +714,7 @@ static int part_pigment_pair(mesh2_part *p)
             }
         }
     float s1[2], o1[2];
-    int img1 = povtex_map(&w->tex, p->sc, look->texture1, lo1, hi1, p->tx1->env_mode == GL_DECAL,
+    int img1 = povtex_map(&w->tex, p->sc, look->texture1, lo1, hi1, p->tx1->env_mode == SCENE_ENV_DECAL,
                           NULL, s1, o1);
     const scene_tri *t0 = &tris[0];
     const float *cf = verts[look->flat ? t0->provoking : t0->v[0]].color;
@@ -754,7 +753,7 @@ static int part_pigment(mesh2_part *p)
             }
         /* The texels' alpha: DECAL blends by it; under blending it is the
          * fragment's (MODULATE, and REPLACE of RGBA), POV-Ray's transmit. */
-        bool keep_alpha = (tx0->env_mode == GL_DECAL && !tx0->colour_is_texel) ||
+        bool keep_alpha = (tx0->env_mode == SCENE_ENV_DECAL && !tx0->colour_is_texel) ||
                           look->blend == SCENE_BLEND_ALPHA;
         p->img = povtex_map(&w->tex, sc, look->texture, uvlo, uvhi, keep_alpha,
                             mesh_tint(w, verts, tris, nt, look, tx0, tx1), p->uv_scale, p->uv_off);
@@ -767,7 +766,7 @@ static int part_pigment(mesh2_part *p)
     if (tx && !tx1 && povtex_pigment(&w->tex, img, tx, pigment) == 0)
         return -1;
     if (tx && !tx1 && !w->cube && !w->mip && !w->per_entry && scene_alpha_crisp(tx) &&
-        tx->env_mode != GL_BLEND && tx->env_mode != GL_ADD) {
+        tx->env_mode != SCENE_ENV_BLEND && tx->env_mode != SCENE_ENV_ADD) {
         /* The alpha test on the filtered alpha, as GL's per fragment. */
         if (povtex_alpha_pigment(ob, &w->tex, sc, look->texture, img, uvlo, uvhi,
                                  w->mt_count++, pigment, sizeof p->pigment) != 0)
@@ -782,7 +781,7 @@ static int part_pigment(mesh2_part *p)
     }
     if (tx && !tx1 && w->mip) {
         /* Mipmapped: the levels by GL's level of detail, at the mesh's own uv. */
-        bool keep_alpha = (tx->env_mode == GL_DECAL && !tx->colour_is_texel) ||
+        bool keep_alpha = (tx->env_mode == SCENE_ENV_DECAL && !tx->colour_is_texel) ||
                           look->blend == SCENE_BLEND_ALPHA;
         if (povmip_pigment(ob, &w->tex, sc, look->texture, w->mip, w->mt_count++, uvlo, uvhi,
                            keep_alpha, w->tinted ? w->mod_tint : NULL, pigment,
@@ -791,7 +790,7 @@ static int part_pigment(mesh2_part *p)
         p->uv_scale[0] = p->uv_scale[1] = 1;
         p->uv_off[0] = p->uv_off[1] = 0;
     }
-    if (tx && !tx1 && (tx->env_mode == GL_BLEND || tx->env_mode == GL_ADD || w->per_entry)) {
+    if (tx && !tx1 && (tx->env_mode == SCENE_ENV_BLEND || tx->env_mode == SCENE_ENV_ADD || w->per_entry)) {
         w->env_id = w->mt_count++;
         if (povmt_declare(ob, &w->tex, img, tx, w->env_id) != 0)
             return -1;
@@ -1183,7 +1182,7 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
 
     /* Pass 2: the text. Each entry is written into one reservation. */
     p.special = povlight_special(look) || tx;
-    p.named = look->fog || (tx && tx->env_mode == GL_DECAL && !tx->colour_is_texel);
+    p.named = look->fog || (tx && tx->env_mode == SCENE_ENV_DECAL && !tx->colour_is_texel);
     if (p.named)
         part_declare(&p);
     /* A few faces off the grid: their corners as vertices of their own,

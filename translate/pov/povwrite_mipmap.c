@@ -17,7 +17,6 @@
  */
 #include "povwrite_mipmap.h"
 
-#include <GL/gl.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -214,10 +213,10 @@ int povmip_pigment(outbuf *ob, povtex *pt, const scene *s, int32_t t, const povm
     size_t len = 0;
     if (!sdl_put(buf, cap, &len, "uv_mapping %s pigment_map{", lam))
         return -1;
-    bool nearest_levels = base->mip_filter == GL_NEAREST_MIPMAP_NEAREST ||
-                          base->mip_filter == GL_LINEAR_MIPMAP_NEAREST;
-    bool linear_within = base->mip_filter == GL_LINEAR_MIPMAP_NEAREST ||
-                         base->mip_filter == GL_LINEAR_MIPMAP_LINEAR;
+    bool nearest_levels = base->mip_filter == SCENE_MIP_NEAREST_MIPMAP_NEAREST ||
+                          base->mip_filter == SCENE_MIP_LINEAR_MIPMAP_NEAREST;
+    bool linear_within = base->mip_filter == SCENE_MIP_LINEAR_MIPMAP_NEAREST ||
+                         base->mip_filter == SCENE_MIP_LINEAR_MIPMAP_LINEAR;
     double span = n > 1 ? n - 1 : 1;
     for (int k = 0; k < n; k++) {
         float sc[2], off[2];
