@@ -22,8 +22,9 @@
  *   unrec.c, unrec.h  their tables, counted by entry point
  *   namemap.c, namemap.h GL object names to table indexes (lists, textures)
  * Vertices and primitives
- *   interp_prim.c     Begin/End, vertex attributes, primitive assembly,
- *                     culling, polygon mode, lines and points, glRect
+ *   interp_prim.c     glBegin, the current vertex attributes, the vertices
+ *   interp_assemble.c glEnd: primitive assembly, culling, polygon mode,
+ *                     lines and points, glRect
  *   interp_array.c    vertex arrays and their draws, buffer objects
  *   interp_list.c     display lists: the table, calls, nesting, and the
  *                     prototypes that repeated calls share
@@ -50,9 +51,12 @@
  *   interp_fogsec.c   fog coordinates and the secondary colour
  *   interp_fogbehind.c fog of primitives reaching behind the eye
  * Textures
- *   interp_texture.c  texture objects, images, parameters, environment,
- *                     coordinate generation, the units a draw samples
- *   interp_teximage.h a texture image as the interpreter keeps it
+ *   interp_texture.c  texture objects, parameters, environment, texgen
+ *                     state, copies between contexts
+ *   interp_teximage.c texture images: formats, types, mipmap building
+ *   interp_texdraw.c  what a draw samples: the scene texture of a unit,
+ *                     the texture coordinates of each vertex
+ *   interp_teximage.h texture objects and images as the files share them
  *   interp_texpacked.c GL's packed pixel types
  *   interp_texslice.c derived images: mirror-clamped, 3D slices
  *   interp_texcopy.c  glCopyTex*, 3D textures

@@ -28,7 +28,7 @@ typedef struct interp_quadric {
 
 #define INTERP_QUADRICS 64
 
-typedef struct interp_textures interp_textures; /* interp_texture.c */
+typedef struct interp_textures interp_textures; /* interp_teximage.h */
 struct interp_eval;                             /* interp_eval.c */
 struct interp_nurbs;                            /* interp_nurbs.c */
 
@@ -388,7 +388,7 @@ bool interp_note_said(const interp *ip, diag_kind kind);
 
 /* glTexImage1D/2D's effect on the bound texture, pixels from resource id
  * (0: undefined contents), and glTexSubImage1D/2D's (dims 1 or 2): for
- * the copies of interp_texcopy.c (interp_texture.c). */
+ * the copies of interp_texcopy.c (interp_teximage.c). */
 void interp_tex_image(interp *ip, GLenum target, int32_t level, int32_t internal, int64_t w,
                       int64_t h, int32_t border, GLenum format, GLenum type, uint32_t id);
 void interp_tex_subimage(interp *ip, int dims, GLenum target, int64_t level, int64_t x0,
@@ -396,14 +396,14 @@ void interp_tex_subimage(interp *ip, int dims, GLenum target, int64_t level, int
                          uint32_t id);
 
 /* Whether unit k draws a rectangle texture: its GL_TEXTURE_RECTANGLE is
- * enabled and neither 3D nor cube map is (interp_texture.c). */
+ * enabled and neither 3D nor cube map is (interp_texdraw.c). */
 bool interp_texture_rect_on(const interp *ip, uint32_t k);
 
 /* Forgets the r coordinates seen (interp_texture.c): a new primitive
  * starts, whose r decides which slice of a 3D texture it shows. */
 void interp_texture_r_reset(interp *ip);
 
-/* glTexImage3D's effect on the bound 3D texture (interp_texture.c). */
+/* glTexImage3D's effect on the bound 3D texture (interp_teximage.c). */
 void interp_tex_image3d(interp *ip, int32_t level, int32_t internal, int64_t w, int64_t h,
                         int64_t d, int32_t border, GLenum format, GLenum type, uint32_t id);
 void interp_tex_subimage3d(interp *ip, int64_t level, int64_t x0, int64_t y0, int64_t z0,
@@ -436,7 +436,7 @@ bool interp_reject_in_begin(interp *ip);
 
 /* ---- Shared between the files --------------------------------------------------- */
 
-/* Pixels in client formats (interp_texture.c). interp_pixel_bytes: the
+/* Pixels in client formats (interp_teximage.c). interp_pixel_bytes: the
  * tightly packed size of w x h pixels of format/type, 0 for a pair not
  * translated (index, depth and stencil formats) or too many
  * pixels. interp_pixels_float: n such pixels as GL's RGBA floats before
@@ -545,11 +545,11 @@ void interp_add_vertex_nc(interp *ip, double x, double y, double z, float n0, fl
  * (GLU and GLUT shapes): the same assembly, culling and polygon mode as
  * the program's own. interp_prim_begin returns false when the draw is
  * skipped (no scene, or a transform that places nothing); call
- * interp_prim_end either way (interp_prim.c). */
+ * interp_prim_end either way (interp_assemble.c). */
 bool interp_prim_begin(interp *ip, GLenum mode);
 void interp_prim_end(interp *ip);
 
-/* The look of a draw with the current state (interp_prim.c). */
+/* The look of a draw with the current state (interp_assemble.c). */
 scene_look interp_current_look(interp *ip);
 
 /* Texture objects (interp_texture.c): copied with the context state,
@@ -631,7 +631,7 @@ bool interp_nurbs_surface_at(const double *pts, uint32_t k, const double *uknots
                              double v, double *out, double *du, double *dv);
 
 /* The texture index (in the scene) that a draw with the current state
- * samples, or -1 (interp_texture.c): its first enabled unit's. */
+ * samples, or -1 (interp_texdraw.c): its first enabled unit's. */
 int32_t interp_texture_for_draw(interp *ip);
 /* The same for texture unit k, or -1 when it is disabled or incomplete. */
 int32_t interp_texture_for_unit(interp *ip, int k);
@@ -655,7 +655,7 @@ void interp_multitex_unbind(interp *ip, uint32_t name);
 
 /* The texture coordinates GL gives a vertex at object position obj (w = 1
  * after division) with normal nrm: texgen, then the texture matrix, then
- * division by q (interp_texture.c). */
+ * division by q (interp_texdraw.c). */
 void interp_vertex_texcoord(interp *ip, int unit, const double obj[4], const float nrm[3],
                             float out[2]);
 /* The same with r (s, t, r: a cube map's direction), and whether a unit
@@ -758,8 +758,10 @@ bool interp_alpha_face(interp *ip, const uint32_t *idx, int n, int32_t texture);
 bool interp_scissor_clear(interp *ip);
 void interp_scissor_end_frame(interp *ip);
 
-/* Closes an open glBegin without drawing it (interp_prim.c). */
+/* Closes an open glBegin without drawing it (interp_assemble.c). */
 void interp_abort_begin(interp *ip);
+/* Opens a primitive of mode (glBegin, glRect; interp_prim.c). */
+void interp_begin_mode(interp *ip, GLenum mode);
 
 /* The display-list table's life cycle, called from interp.c and
  * interp_begin_frame (interp_list.c). copy returns false on allocation

@@ -546,7 +546,7 @@ void interp_newlist(interp *ip, const rgl_cmd *cmd)
     }
     if (mode == GL_COMPILE_AND_EXECUTE) {
         /* GL runs this body as immediate calls, not as a compiled list
-         * (which matters to how quads split: interp_prim.c). */
+         * (which matters to how quads split: interp_assemble.c). */
         ip->list_ce = true;
         call_list(ip, name);
         ip->list_ce = false;
