@@ -15,7 +15,8 @@
 #     include is unambiguous;
 #   - cli/ writes no SDL (no POV-Ray keyword in its strings);
 #   - translate/ builds at least six static libraries;
-#   - no function of the product is longer than 200 lines;
+#   - no function of the product is longer than 200 lines, no source file
+#     longer than 1,500 (STYLE.md: one concept per file);
 #   - interp.h's map names every file of gl/, scene.h every writer;
 #   - every function a part's header declares is used.
 # The build enforces the include rules too (translate/meson.build: each
@@ -111,6 +112,9 @@ long=$(cd "$root" && find format record translate compare -name '*.c' | sort | x
 /;[ \t]*$/ { if (!start) head = 0 }
 ')
 [ -z "$long" ] && ok "no function over 200 lines" || fail "functions over 200 lines: $long"
+big=$(cd "$root" && find format record translate compare -name '*.[ch]' | sort | xargs wc -l |
+    awk '$2 != "total" && $1 > 1500 { print $2 " (" $1 " lines)" }')
+[ -z "$big" ] && ok "no source file over 1,500 lines" || fail "files over 1,500 lines: $(echo $big)"
 # The maps: interp.h names every file of gl/, scene.h every writer.
 missing=
 for f in "$tr"/gl/*; do
