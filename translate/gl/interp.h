@@ -276,7 +276,18 @@ typedef struct gl_attrib_entry {
     gl_attribs saved;
 } gl_attrib_entry;
 
-/* The whole context state that frames carry over. */
+/* A GLU quadric object's state (by the recorder's id). */
+typedef struct interp_quadric {
+    uint32_t id; /* 0: free slot */
+    GLenum draw_style, normals, orientation;
+    bool texture;
+} interp_quadric;
+
+#define INTERP_QUADRICS 64
+
+/* The whole context state that frames carry over: GL's state, apart from
+ * the interpreter's bookkeeping of the frame it translates (struct interp,
+ * interp_internal.h). */
 typedef struct gl_state {
     gl_attribs a;
     mat4 modelview[INTERP_MODELVIEW_DEPTH];
@@ -294,6 +305,17 @@ typedef struct gl_state {
     uint32_t active_unit, client_unit; /* glActiveTexture, glClientActiveTexture */
     gl_tex_unit_parked units[INTERP_TEX_UNITS]; /* the active unit's slot is stale */
     float unit_texcoord[INTERP_TEX_UNITS][4]; /* current, units 1..; unit 0's is a.current */
+    interp_quadric quadrics[INTERP_QUADRICS]; /* GLU quadric objects (interp_shape.c) */
+    /* The parts on the heap, made on first use (NULL until then: GL's
+     * initial state), owned by the interpreter; interp_copy_state copies
+     * what they hold: texture objects and the unpack state
+     * (interp_texture.c), evaluator maps (interp_eval.c), GLU NURBS
+     * objects and the open shape (interp_nurbs.c), the display-list table
+     * (interp_list.c). */
+    struct interp_textures *tex;
+    struct interp_eval *eval;
+    struct interp_nurbs *nurbs;
+    struct interp_lists *lists;
 } gl_state;
 
 typedef struct interp interp;

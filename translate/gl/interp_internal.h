@@ -19,18 +19,7 @@
 #include "commands.def"
 #undef RGL_CMD
 
-/* A GLU quadric object's state (by the recorder's id). */
-typedef struct interp_quadric {
-    uint32_t id; /* 0: free slot */
-    GLenum draw_style, normals, orientation;
-    bool texture;
-} interp_quadric;
-
-#define INTERP_QUADRICS 64
-
 typedef struct interp_textures interp_textures; /* interp_teximage.h */
-struct interp_eval;                             /* interp_eval.c */
-struct interp_nurbs;                            /* interp_nurbs.c */
 
 /* One projection and viewport used in a frame, and its draws' weight. */
 #define INTERP_PROJ_VOTES 8
@@ -60,9 +49,12 @@ typedef struct interp_litdir {
     double h[3], hl; /* half vector for the infinite viewer, its length */
 } interp_litdir;
 
+/* The interpreter: GL's state (st: all of it, what frames carry over),
+ * then the translation's bookkeeping, which is no GL state: the scene and
+ * log it writes to, the frame being built (diagnostics context, budget,
+ * the open primitive, the camera, light sets, passes) and caches. */
 struct interp {
     gl_state st;
-    interp_quadric quadrics[INTERP_QUADRICS]; /* context state, like st */
     struct {
         size_t first;   /* scene.stencil_tris of the buffer's content */
         int32_t value;  /* written there */
@@ -72,9 +64,6 @@ struct interp {
         uint8_t clip;     /* this draw kept 1 inside, 2 outside the region */
         size_t n;         /* the region's triangles at this draw */
     } stencil; /* interp_stencil.c */
-    interp_textures *tex; /* texture objects and unpack state; NULL: none yet */
-    struct interp_eval *eval; /* evaluator maps; NULL: all at their initial values */
-    struct interp_nurbs *nurbs; /* GLU NURBS objects and the open shape; NULL: none yet */
     scene *scene; /* NULL: state only */
     diag_log *log;
     uint8_t *begin_ok; /* by opcode: allowed between glBegin and glEnd */
@@ -193,10 +182,9 @@ struct interp {
     bool preset_back_cleared; /* the first translation found a background
                                  drawn with the depth test, then cleared */
 
-    /* Display lists (interp_list.c). The table is context state that
-     * interp_copy_state carries; the groups are the frame's list calls
-     * whose output may be shared. */
-    struct interp_lists *lists;
+    /* Display lists (interp_list.c): the table is GL state (st.lists);
+     * here where bodies come from, the nesting, and the groups: the
+     * frame's list calls whose output may be shared. */
     interp_resource_fn res_fn;
     void *res_ctx;
     int list_depth;

@@ -195,7 +195,7 @@ static int32_t mip_chain(interp *ip, tex_obj *o, scene_texture *st, bool ms, boo
  * unknown: a GLU or GLUT solid). The caller frees it. */
 static tex_image *tex3d_slice(interp *ip, const tex_obj *o, int k)
 {
-    interp_textures *t = ip->tex;
+    interp_textures *t = ip->st.tex;
     double lo = t->r_min[k], hi = t->r_max[k];
     if (!(lo <= hi) || hi - lo > 1e-6 || !isfinite(lo)) {
         interp_diag(ip, DIAG_IGNORED,
@@ -339,7 +339,7 @@ int32_t interp_texture_for_unit(interp *ip, int k)
         idx = mip_chain(ip, o, &st, ms, mt);
         goto out;
     }
-    struct tex_cache *tc = &ip->tex->cache[ip->draw_unit[1] == k];
+    struct tex_cache *tc = &ip->st.tex->cache[ip->draw_unit[1] == k];
     if (!slice && tc->img == im && tc->sc == ip->scene &&
         tc->index >= 0 && (size_t)tc->index < ip->scene->ntextures &&
         tc->ntex <= ip->scene->ntextures) {
@@ -452,8 +452,8 @@ void interp_vertex_texcoord3(interp *ip, int unit, const double obj[4], const fl
                     for (int k = 0; k < 3; k++)
                         u[k] /= len;
                 double n[3] = {0, 0, 0};
-                if (ip->tex && normal_matrix(ip->tex, mv)) {
-                    const double *nm = ip->tex->nrm_mat.m;
+                if (ip->st.tex && normal_matrix(ip->st.tex, mv)) {
+                    const double *nm = ip->st.tex->nrm_mat.m;
                     for (int k = 0; k < 3; k++)
                         n[k] = nm[k] * nrm[0] + nm[4 + k] * nrm[1] + nm[8 + k] * nrm[2];
                 }
@@ -486,10 +486,10 @@ void interp_vertex_texcoord3(interp *ip, int unit, const double obj[4], const fl
     out[0] = (float)(r[0] / q);
     out[1] = (float)(r[1] / q);
     out[2] = (float)(r[2] / q);
-    if (u.caps[UCAP(TEXTURE_3D)] && !u.caps[UCAP(TEXTURE_CUBE_MAP)] && ip->tex && unit >= 0 &&
+    if (u.caps[UCAP(TEXTURE_3D)] && !u.caps[UCAP(TEXTURE_CUBE_MAP)] && ip->st.tex && unit >= 0 &&
         unit < INTERP_TEX_UNITS) {
         double rq = r[2] / q;
-        interp_textures *t = ip->tex;
+        interp_textures *t = ip->st.tex;
         t->r_min[unit] = fmin(t->r_min[unit], rq);
         t->r_max[unit] = fmax(t->r_max[unit], rq);
     }

@@ -84,14 +84,14 @@ static void r_reset(interp_textures *t)
 
 void interp_texture_r_reset(interp *ip)
 {
-    if (ip->tex)
-        r_reset(ip->tex);
+    if (ip->st.tex)
+        r_reset(ip->st.tex);
 }
 
 interp_textures *interp_tex_state(interp *ip)
 {
-    if (ip->tex)
-        return ip->tex;
+    if (ip->st.tex)
+        return ip->st.tex;
     interp_textures *t = tr_realloc(NULL, sizeof *t);
     if (!t)
         return NULL;
@@ -107,7 +107,7 @@ interp_textures *interp_tex_state(interp *ip)
     r_reset(t);
     t->unpack[GL_UNPACK_ALIGNMENT - GL_UNPACK_SWAP_BYTES] = 4;
     t->cache[0].index = t->cache[1].index = -1;
-    ip->tex = t;
+    ip->st.tex = t;
     return t;
 }
 
@@ -169,7 +169,7 @@ void interp_deletetextures(interp *ip, const rgl_cmd *cmd)
     if (interp_reject_in_begin(ip))
         return;
     const rgl_arg *a = &cmd->arg[0];
-    interp_textures *t = ip->tex;
+    interp_textures *t = ip->st.tex;
     if (!t)
         return;
     for (uint32_t k = 0; k < a->count; k++) {
@@ -515,7 +515,7 @@ void interp_texgen(interp *ip, const rgl_cmd *cmd)
 int interp_textures_copy(interp *dst, const interp *src)
 {
     interp_textures_free(dst);
-    const interp_textures *s = src->tex;
+    const interp_textures *s = src->st.tex;
     if (!s)
         return 0;
     interp_textures *t = tr_realloc(NULL, sizeof *t);
@@ -543,13 +543,13 @@ int interp_textures_copy(interp *dst, const interp *src)
         obj_retain(&t->objs[i]);
     for (size_t k = 0; k < ZEROS(t); k++)
         obj_retain(&t->zero[k]);
-    dst->tex = t;
+    dst->st.tex = t;
     return 0;
 }
 
 void interp_textures_free(interp *ip)
 {
-    interp_textures *t = ip->tex;
+    interp_textures *t = ip->st.tex;
     if (!t)
         return;
     for (size_t i = 0; i < t->n; i++)
@@ -559,5 +559,5 @@ void interp_textures_free(interp *ip)
     namemap_finish(&t->names);
     tr_free(t->objs);
     tr_free(t);
-    ip->tex = NULL;
+    ip->st.tex = NULL;
 }
