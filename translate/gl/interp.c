@@ -590,9 +590,16 @@ void interp_diag(interp *ip, diag_kind kind, const char *fmt, ...)
     diag_add(ip->log, kind, prefix, "%s", msg);
 }
 
-void interp_clear_notes(interp *ip) { ip->notes_seen = 0; }
+_Static_assert(DIAG_COUNT - DIAG_FIRST_NOTE <= 64, "the notes of a frame are bits of a uint64_t");
+
+void interp_clear_notes(interp *ip) { ip->notes_seen = ip->notes_held = 0; }
 
 void interp_frame_note(interp *ip, diag_kind kind) { interp_note(ip, kind); }
+
+void interp_frame_note_held(interp *ip, diag_kind kind, const char *why)
+{
+    interp_note_held(ip, kind, why);
+}
 
 bool interp_note_said(const interp *ip, diag_kind kind)
 {
@@ -608,6 +615,17 @@ void interp_note(interp *ip, diag_kind kind)
     char prefix[DIAG_PREFIX];
     make_prefix(ip, prefix, sizeof prefix);
     diag_add(ip->log, kind, prefix, "%s", diag_kind_name(kind));
+}
+
+void interp_note_held(interp *ip, diag_kind kind, const char *why)
+{
+    uint64_t bit = 1ull << (kind - DIAG_FIRST_NOTE);
+    if (!ip->log || ((ip->notes_seen | ip->notes_held) & bit))
+        return;
+    ip->notes_held |= bit;
+    char prefix[DIAG_PREFIX];
+    make_prefix(ip, prefix, sizeof prefix);
+    diag_add_held(ip->log, kind, prefix, why);
 }
 
 void interp_bad_enum(interp *ip, const char *what, uint32_t value)

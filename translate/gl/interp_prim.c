@@ -349,6 +349,7 @@ static void begin_mode(interp *ip, GLenum mode)
     interp_accum_draw(ip);
     if (ip->accum.active)
         return; /* a later accumulation pass: the scene holds the first */
+    interp_unrec_draw_uses(ip, mode);
     draw_notes(ip);
     interp_proj_vote(ip, mode);
     interp_fix_camera(ip);

@@ -54,7 +54,7 @@ void interp_begin_frame(interp *ip)
     ip->camera_fixed = false;
     ip->frame_begin = false;
     ip->frame_name[0] = '\0';
-    ip->notes_seen = 0;
+    ip->notes_seen = ip->notes_held = 0;
     ip->cleared = false;
     ip->painter = 0;
     ip->shape_facets = 0;
