@@ -58,7 +58,7 @@
     X(NOTE_CLIP_PLANE, "not translated: user clip planes") \
     X(NOTE_STENCIL, "approximated: stencil buffer contents the scene does not follow (values other than one written over the cleared buffer by filled triangles; glStencilOp fail and zfail operations): drawn as if the test passed") \
     X(NOTE_COLOR_MASK, "not translated: colour mask and logic op") \
-    X(NOTE_DEPTH, "approximated: depth test off or not GL_LESS (draws in one plane show in draw order, others nearest first; where parts of one strip or fan overlap in one plane, either may show)") \
+    X(NOTE_DEPTH, "approximated: draws without a depth test, with depth writes off (glDepthMask) or with a depth function other than GL_LESS or GL_LEQUAL overlap others on screen: the nearer shows where OpenGL shows the later or tests otherwise (draws in one plane show in draw order; where parts of one strip or fan overlap in one plane, either may show)") \
     X(NOTE_PROJECTION, "approximated: lit, fogged or depth-tested textured geometry drawn with another projection or viewport than the frame's camera is lit, fogged and textured as seen from that camera") \
     X(NOTE_CAMERA, "approximated: projection matrix is not a camera POV-Ray can express (default camera used)") \
     X(NOTE_PROJECTIVE_MODELVIEW, "approximated: projective modelview applied to the vertices") \

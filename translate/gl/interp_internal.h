@@ -85,6 +85,7 @@ struct interp {
     const rgl_cmd *cmd; /* the command being executed */
     uint64_t notes_seen; /* NOTE_* kinds already logged in this frame */
     uint64_t notes_held; /* NOTE_* kinds already logged held in this frame */
+    struct interp_zorder *zorder; /* the frame's runs of depth modes; NULL: none yet */
     bool cleared;        /* the frame cleared the colour buffer */
     uint32_t painter;    /* draws without a depth test since the frame's start
                             or last clear (interp_prim.c, painter_shift) */
@@ -346,6 +347,21 @@ void interp_note(interp *ip, diag_kind kind);
  * DIAG_WHY - 1 bytes; printed only with --verbose). Nothing once the note is
  * said in the frame. */
 void interp_note_held(interp *ip, diag_kind kind, const char *why);
+/* interp_note (why NULL) or interp_note_held, naming the command given
+ * (has_cmd: one) instead of the current one: a note decided at the frame's
+ * end names the draw it concerns. */
+void interp_note_cmd(interp *ip, diag_kind kind, bool has_cmd, uint64_t index, const char *name,
+                     uint64_t offset, const char *why);
+
+/* Draw order without a depth test (interp_zorder.c): each draw opens a
+ * run of its depth mode (a depth function other than GL_LESS, GL_LEQUAL or
+ * GL_ALWAYS says NOTE_DEPTH at once); at the frame's end NOTE_DEPTH is said
+ * where the ray tracer's nearest-first can show another primitive than
+ * OpenGL's draw order, else held. */
+void interp_zorder_draw(interp *ip);
+void interp_zorder_begin_frame(interp *ip);
+void interp_zorder_end_frame(interp *ip);
+void interp_zorder_free(interp *ip);
 /* Whether interp_note(kind) would log nothing now (said in this frame, or
  * no log): a costly test for a note may be skipped then. */
 bool interp_note_said(const interp *ip, diag_kind kind);

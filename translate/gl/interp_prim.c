@@ -109,8 +109,7 @@ static void draw_notes(interp *ip)
         interp_note(ip, DIAG_NOTE_BLEND_EQUATION);
     if (c[INTERP_CAP_COLOR_LOGIC_OP] && a->color_buffer.logic_op != GL_COPY)
         interp_note(ip, DIAG_NOTE_COLOR_MASK); /* the masks: interp_masks.c */
-    if (!c[INTERP_CAP_DEPTH_TEST] || (a->depth.func != GL_LESS && a->depth.func != GL_LEQUAL))
-        interp_note(ip, DIAG_NOTE_DEPTH);
+    interp_zorder_draw(ip); /* NOTE_DEPTH, at the frame's end */
     /* GL 1.x 3.9: with GL_SINGLE_COLOR the texture modulates the specular
      * term too; POV-Ray adds the highlight after the texture, which is
      * GL_SEPARATE_SPECULAR_COLOR. */
