@@ -75,6 +75,8 @@ void translator_set_budget_shift(translator *t, unsigned shift)
         interp_set_budget_shift(t->cursors[k].ip, shift);
 }
 
+void translator_set_shadows(translator *t, bool on) { interp_set_shadows(t->ip, on); }
+
 void translator_set_vertex_lighting(translator *t, bool on)
 {
     interp_set_vertex_lighting(t->ip, on);

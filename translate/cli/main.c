@@ -432,6 +432,7 @@ static void *worker(void *arg)
     if (t) {
         translator_set_heavy(t, heavy_enter, &w);
         translator_set_vertex_lighting(t, j->o->vertex_lighting);
+        translator_set_shadows(t, !j->o->pov.no_shadows);
     }
     outbuf ob;
     bool ob_ok = outbuf_init(&ob, 1 << 20, fd_flush, NULL) == 0;

@@ -272,6 +272,11 @@ void interp_set_budget_shift(interp *ip, unsigned shift);
  * drawn unlit, as OpenGL shades them (raygl2pov --vertex-lighting,
  * interp_gouraud.c); off (the default): POV-Ray lights each pixel. */
 void interp_set_vertex_lighting(interp *ip, bool on);
+/* Whether the scenes are rendered with shadows (the default; off:
+ * raygl2pov --no-shadows): the notes of highlights the shadowed render
+ * approximates are said only then, those of the shadowless one only
+ * without (interp_lightset.c). */
+void interp_set_shadows(interp *ip, bool on);
 void interp_destroy(interp *ip);
 
 /* Back to GL's initial state; the scene and log stay attached. */

@@ -236,6 +236,7 @@ struct interp {
         int16_t slot[2 * SCENE_MAX_LIGHTSETS];
     } lsets;
     bool vertex_lighting; /* interp_set_vertex_lighting */
+    bool no_shadows;      /* interp_set_shadows(ip, false) */
 
     /* glMaterial between the vertices of the open primitive
      * (interp_vmaterial.c): each vertex's material once one changed, and
