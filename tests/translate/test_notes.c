@@ -297,9 +297,34 @@ static void lit_quad(seq *f)
     quad(f, -1, -1, 1, 1, -3, 1, 1, 1);
 }
 
+static void fogged_quads(seq *f, GLenum mode, GLenum changed, double v)
+{
+    ortho(f);
+    CMD(f, Enable, GL_FOG);
+    CMD(f, Fogi, GL_FOG_MODE, mode);
+    quad(f, 0.1, 0.1, 0.4, 0.4, 0, 1, 0, 0);
+    CMD(f, Fogf, changed, v);
+    quad(f, 0.5, 0.5, 0.9, 0.9, 0, 0, 1, 0);
+}
+
 static void test_other_notes(void)
 {
     seq f;
+    /* Fog that changes between fogged draws: said where the change is one
+     * the mode uses, held where it is not (GL_LINEAR has no density). */
+    seq_init(&f);
+    fogged_quads(&f, GL_LINEAR, GL_FOG_DENSITY, 0.3);
+    build(&f, true);
+    expect("fog density under GL_LINEAR", DIAG_NOTE_FOG, 0, 1);
+    seq_init(&f);
+    fogged_quads(&f, GL_LINEAR, GL_FOG_END, 0.5);
+    build(&f, true);
+    expect("fog end under GL_LINEAR", DIAG_NOTE_FOG, 1, 0);
+    seq_init(&f);
+    fogged_quads(&f, GL_EXP, GL_FOG_END, 0.5);
+    build(&f, true);
+    expect("fog end under GL_EXP", DIAG_NOTE_FOG, 0, 1);
+
     /* Highlights the shadowed render approximates: said with shadows,
      * held without (--no-shadows). */
     seq_init(&f);
