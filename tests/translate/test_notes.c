@@ -171,6 +171,28 @@ static void test_depth_order(void)
     build(&f, true);
     expect("HUD", DIAG_NOTE_DEPTH, 0, 1);
 
+    /* A depth-tested floor reaching behind the eye, then the HUD: the
+     * floor is cut where the camera sees it, still under the HUD. */
+    seq_init(&f);
+    perspective(&f);
+    CMD(&f, Enable, GL_DEPTH_TEST);
+    CMD(&f, Color3f, 0.3, 0.6, 0.3);
+    CMD(&f, Begin, GL_QUADS);
+    CMD(&f, Vertex3f, -50, -1, 10);
+    CMD(&f, Vertex3f, 50, -1, 10);
+    CMD(&f, Vertex3f, 50, -1, -90);
+    CMD(&f, Vertex3f, -50, -1, -90);
+    CMD0(&f, End);
+    CMD(&f, Disable, GL_DEPTH_TEST);
+    CMD(&f, MatrixMode, GL_PROJECTION);
+    CMD0(&f, LoadIdentity);
+    CMD(&f, Ortho, 0, 64, 0, 64, -1, 1);
+    CMD(&f, MatrixMode, GL_MODELVIEW);
+    CMD0(&f, LoadIdentity);
+    quad(&f, 4, 4, 40, 20, 0, 1, 1, 1);
+    build(&f, true);
+    expect("HUD over a floor behind the eye", DIAG_NOTE_DEPTH, 0, 1);
+
     /* Depth writes off (translucent faces drawn last): near then far. GL
      * draws the far one over the near, which wrote no depth. */
     seq_init(&f);

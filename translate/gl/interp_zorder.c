@@ -21,10 +21,13 @@
  * window position over a convex region, so the corners decide). Two
  * primitives of one unlit, untextured, opaque colour may show in either
  * order. If a pair fails, the note is said at the later draw; otherwise it
- * is held, with why. Pairs are found through a grid of the image; past a
- * bound of work or primitives the note is said, unchecked. A depth
+ * is held, with why. When the runs lie apart in depth in their order
+ * (2D drawings: each draw a painter's step nearer), only pairs within a run
+ * are checked, and a run whose primitives step nearer one by one only
+ * within each step; other pairs are found through a grid of the image.
+ * Past a bound of work or primitives the note is said, unchecked. A depth
  * function other than GL_LESS, GL_LEQUAL or GL_ALWAYS is said at once
- * (docs/mapping.md "Projections, depth and draw order", "Notes").
+ * (docs/mapping.md section 31).
  */
 #include "interp_internal.h"
 
@@ -38,9 +41,11 @@ enum { ZP_TRIS, ZP_LINES, ZP_POINTS, ZP_SOLIDS, ZP_INSTANCES, ZP_COUNT };
 #define ZF_LATER_WINS 1u /* no depth test, or GL_ALWAYS: shows over what came before */
 #define ZF_NO_WRITE 2u   /* writes no depth: what comes later shows over it */
 
-/* Bounds on the check: past them the note is said unchecked. */
-#define ZORDER_MAX_ITEMS (1u << 19)
-#define ZORDER_MAX_PAIRS 20000000u
+/* Bounds on the check, a few tenths of a second at most: past them the
+ * note is said unchecked. */
+#define ZORDER_MAX_ITEMS (1u << 18)
+#define ZORDER_MAX_CELLS (1u << 22) /* grid entries: an item in each cell it covers */
+#define ZORDER_MAX_PAIRS 4000000u
 #define ZORDER_GRID 64 /* cells across the image's longer side */
 
 typedef struct zrun {
@@ -132,9 +137,11 @@ void interp_zorder_draw(interp *ip)
 
 /* ---- Primitives as the ray tracer sees them ---------------------------------------- */
 
+#define ZMAX_CORNERS 6 /* a quad cut by the eye plane has 5 */
+
 typedef struct zitem {
-    double box[4];      /* x0, y0, x1, y1 in pixels (scene_camera_window) */
-    double poly[4][2];  /* the footprint, convex, np corners */
+    double box[4];      /* x0, y0, x1, y1 in pixels from the image centre */
+    double poly[ZMAX_CORNERS][2]; /* the footprint, convex, np corners */
     double plane[4];    /* planar: n . X = d over camera coordinates X */
     double tmin, tmax;  /* the ray parameter over its corners */
     float lo[4], hi[4]; /* its colours' range, when keyed (nothing else varies them) */
@@ -153,13 +160,13 @@ typedef struct zctx {
     bool over; /* more primitives than ZORDER_MAX_ITEMS */
 } zctx;
 
-/* Camera coordinates of a window point (x, y) at ray parameter t. */
-static void camera_x(const zctx *c, double x, double y, double t, double X[3])
+/* Window position (pixels from the image centre, as scene_camera_project)
+ * of camera coordinates X, in front of the camera. */
+static void window_of(const zctx *c, const double X[3], double out[2])
 {
-    bool persp = c->cam->kind != SCENE_CAMERA_ORTHOGRAPHIC;
-    X[0] = t;
-    X[1] = x / c->w * (persp ? t : 1);
-    X[2] = y / c->h * (persp ? t : 1);
+    double t = c->cam->kind != SCENE_CAMERA_ORTHOGRAPHIC ? X[0] : 1;
+    out[0] = X[1] / t * c->w;
+    out[1] = X[2] / t * c->h;
 }
 
 /* The ray parameter of item it's plane at window point (x, y), or NAN. */
@@ -194,29 +201,67 @@ static zitem *item_new(zctx *c, uint32_t run, uint8_t pool, uint8_t flags)
     return it;
 }
 
-/* Fills it's footprint, box, depth range and plane from np eye-space
- * corners (a convex polygon in order; planar when `planar`). */
+/* Fills it's footprint, box, depth range and plane from np (at most 4)
+ * eye-space corners (a convex polygon in order; planar when `planar`). A
+ * polygon reaching behind a perspective camera is cut at a hair in front
+ * of its eye, where the camera still sees it. */
 static void item_corners(const zctx *c, zitem *it, const double (*p)[3], int np, bool planar)
 {
-    double X[4][3];
-    it->np = (uint8_t)np;
-    it->tmin = INFINITY;
-    it->tmax = -INFINITY;
+    double X[4][3], cut[ZMAX_CORNERS][3];
+    double tmax = 0;
     for (int k = 0; k < np; k++) {
-        double o[3];
-        if (!scene_camera_window(c->cam, p[k], o)) {
+        if (!scene_camera_coords(c->cam, p[k], X[k])) {
             it->whole = true;
             return;
         }
-        it->poly[k][0] = o[0];
-        it->poly[k][1] = o[1];
-        it->tmin = fmin(it->tmin, o[2]);
-        it->tmax = fmax(it->tmax, o[2]);
-        camera_x(c, o[0], o[1], o[2], X[k]);
+        tmax = fmax(tmax, X[k][0]);
+    }
+    int n = 0;
+    if (c->cam->kind != SCENE_CAMERA_ORTHOGRAPHIC) {
+        double eps = 1e-9 * tmax;
+        if (!(tmax > 0)) {
+            it->np = 0; /* wholly behind the eye: nothing seen */
+            it->box[0] = it->box[1] = INFINITY;
+            it->box[2] = it->box[3] = -INFINITY;
+            return;
+        }
+        for (int k = 0; k < np; k++) {
+            const double *a = X[k], *b = X[(k + 1) % np];
+            bool ain = a[0] > eps, bin = b[0] > eps;
+            if (ain)
+                memcpy(cut[n++], a, sizeof cut[0]);
+            if (ain != bin) {
+                double f = (eps - a[0]) / (b[0] - a[0]);
+                for (int j = 0; j < 3; j++)
+                    cut[n][j] = a[j] + f * (b[j] - a[j]);
+                n++;
+            }
+        }
+    } else {
+        memcpy(cut, X, (size_t)np * sizeof X[0]);
+        n = np;
+    }
+    it->np = (uint8_t)n;
+    it->tmin = INFINITY;
+    it->tmax = -INFINITY;
+    for (int k = 0; k < n; k++) {
+        window_of(c, cut[k], it->poly[k]);
+        it->tmin = fmin(it->tmin, cut[k][0]);
+        it->tmax = fmax(it->tmax, cut[k][0]);
+        if (!isfinite(it->poly[k][0]) || !isfinite(it->poly[k][1])) {
+            it->whole = true;
+            return;
+        }
+    }
+    if (n < 3) {
+        it->np = 0;
+        it->box[0] = it->box[1] = INFINITY;
+        it->box[2] = it->box[3] = -INFINITY;
+        return;
     }
     it->box[0] = it->box[2] = it->poly[0][0];
     it->box[1] = it->box[3] = it->poly[0][1];
-    for (int k = 1; k < np; k++) {
+    for (int k = 1; k < n; k++) {
         it->box[0] = fmin(it->box[0], it->poly[k][0]);
         it->box[1] = fmin(it->box[1], it->poly[k][1]);
         it->box[2] = fmax(it->box[2], it->poly[k][0]);
@@ -224,18 +269,18 @@ static void item_corners(const zctx *c, zitem *it, const double (*p)[3], int np,
     }
     if (!planar || np < 3)
         return;
-    double e1[3], e2[3], n[3];
+    double e1[3], e2[3], nv[3];
     for (int k = 0; k < 3; k++) {
         e1[k] = X[1][k] - X[0][k];
         e2[k] = X[2][k] - X[0][k];
     }
-    n[0] = e1[1] * e2[2] - e1[2] * e2[1];
-    n[1] = e1[2] * e2[0] - e1[0] * e2[2];
-    n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-    double d = n[0] * X[0][0] + n[1] * X[0][1] + n[2] * X[0][2];
-    if (!(fabs(n[0]) + fabs(n[1]) + fabs(n[2]) > 0) || !isfinite(d))
+    nv[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    nv[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    nv[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    double d = nv[0] * X[0][0] + nv[1] * X[0][1] + nv[2] * X[0][2];
+    if (!(fabs(nv[0]) + fabs(nv[1]) + fabs(nv[2]) > 0) || !isfinite(d))
         return;
-    memcpy(it->plane, n, sizeof n);
+    memcpy(it->plane, nv, sizeof nv);
     it->plane[3] = d;
     it->planar = true;
 }
@@ -408,18 +453,20 @@ static void add_solid(zctx *c, const scene_solid *so, uint32_t run, uint8_t flag
     for (int i = 0; i < 8; i++) {
         float v[3] = {(float)(i & 1 ? hi[0] : lo[0]), (float)(i & 2 ? hi[1] : lo[1]),
                       (float)(i & 4 ? hi[2] : lo[2])};
-        double e[3], o[3];
+        double e[3], X[3], o[2];
         apply(&so->to_eye, v, e);
-        if (!scene_camera_window(c->cam, e, o)) {
-            it->whole = true;
+        if (!scene_camera_coords(c->cam, e, X) ||
+            (c->cam->kind != SCENE_CAMERA_ORTHOGRAPHIC && !(X[0] > 0))) {
+            it->whole = true; /* reaching behind the eye: taken as everywhere */
             return;
         }
+        window_of(c, X, o);
         it->box[0] = fmin(it->box[0], o[0]);
         it->box[1] = fmin(it->box[1], o[1]);
         it->box[2] = fmax(it->box[2], o[0]);
         it->box[3] = fmax(it->box[3], o[1]);
-        it->tmin = fmin(it->tmin, o[2]);
-        it->tmax = fmax(it->tmax, o[2]);
+        it->tmin = fmin(it->tmin, X[0]);
+        it->tmax = fmax(it->tmax, X[0]);
     }
     double bx[4][2] = {{it->box[0], it->box[1]}, {it->box[2], it->box[1]},
                        {it->box[2], it->box[3]}, {it->box[0], it->box[3]}};
@@ -549,28 +596,34 @@ static double poly_area(const double (*p)[2], int n)
     return a / 2;
 }
 
-/* Whether the convex counter-clockwise polygon p holds a pixel centre. */
+/* Whether the convex polygon p holds a pixel centre (centres at
+ * -w/2 + i + 1/2): row by row, the polygon's span at the row's height. */
 static bool holds_centre(const zctx *c, const double (*p)[2], int n)
 {
-    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+    double y0 = INFINITY, y1 = -INFINITY;
     for (int i = 0; i < n; i++) {
-        x0 = fmin(x0, p[i][0]);
         y0 = fmin(y0, p[i][1]);
-        x1 = fmax(x1, p[i][0]);
         y1 = fmax(y1, p[i][1]);
     }
-    /* Centres at -w/2 + i + 1/2. */
     double ox = -c->w / 2 + 0.5, oy = -c->h / 2 + 0.5;
-    for (double y = ceil(y0 - oy) + oy; y <= y1; y++)
-        for (double x = ceil(x0 - ox) + ox; x <= x1; x++) {
-            bool in = true;
-            for (int i = 0; i < n && in; i++) {
-                const double *a = p[i], *b = p[(i + 1) % n];
-                in = (b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0]) > 0;
-            }
-            if (in)
-                return true;
+    for (double y = ceil(y0 - oy) + oy; y < y1; y++) {
+        if (y <= y0)
+            continue;
+        double lo = INFINITY, hi = -INFINITY;
+        for (int i = 0; i < n; i++) {
+            const double *a = p[i], *b = p[(i + 1) % n];
+            if ((a[1] <= y) == (b[1] <= y))
+                continue; /* the edge does not cross the row */
+            double x = a[0] + (y - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
+            lo = fmin(lo, x);
+            hi = fmax(hi, x);
         }
+        double k = ceil(lo - ox);
+        if (lo <= hi && k + ox == lo)
+            k++; /* on the edge: outside */
+        if (k + ox < hi)
+            return true;
+    }
     return false;
 }
 
@@ -579,14 +632,14 @@ static bool holds_centre(const zctx *c, const double (*p)[2], int n)
 static int overlap(const zctx *c, const zitem *a, const zitem *b, double (*out)[2])
 {
     double hw = c->w / 2, hh = c->h / 2;
-    double buf[2][16][2];
+    double buf[2][4 + 2 * ZMAX_CORNERS][2];
     int n = 4;
     double img[4][2] = {{-hw, -hh}, {hw, -hh}, {hw, hh}, {-hw, hh}};
     memcpy(buf[0], img, sizeof img);
     int cur = 0;
     for (int pass = 0; pass < 2 && n > 0; pass++) {
         const zitem *it = pass ? b : a;
-        double q[4][2];
+        double q[ZMAX_CORNERS][2];
         int m = it->np;
         memcpy(q, it->poly, sizeof q);
         if (poly_area((const double(*)[2])q, m) < 0)
@@ -600,8 +653,8 @@ static int overlap(const zctx *c, const zitem *a, const zitem *b, double (*out)[
         for (int e = 0; e < m && n > 0; e++) {
             n = clip_edge((const double(*)[2])buf[cur], n, q[e], q[(e + 1) % m], buf[!cur]);
             cur = !cur;
-            if (n > 12)
-                n = 12; /* a convex clip of convex polygons: cannot grow past 4 + 4 + 4 */
+            if (n > 4 + 2 * ZMAX_CORNERS)
+                n = 4 + 2 * ZMAX_CORNERS; /* convex clips of convex polygons grow no further */
         }
     }
     if (n < 3)
@@ -671,7 +724,7 @@ static bool pair_ok(const zctx *c, const zitem *a, const zitem *b, bool unordere
         return true;
     if (a->whole || b->whole)
         return false;
-    double poly[16][2];
+    double poly[4 + 2 * ZMAX_CORNERS][2];
     int n = overlap(c, a, b, poly);
     if (n == 0)
         return true;
@@ -696,56 +749,56 @@ typedef struct zgrid {
     int gw, gh;
     double cell;
     uint32_t *first; /* gw * gh + 1 offsets into idx */
-    uint32_t *idx;
+    uint32_t *idx;   /* per cell, item indices in draw order */
 } zgrid;
 
-static void cell_span(const zctx *c, const zgrid *g, const zitem *it, int *cx0, int *cy0,
-                      int *cx1, int *cy1)
+/* The cells of box b (x0, y0, x1, y1), clamped to the grid; an empty span
+ * (x1 < x0) when it lies outside the image. */
+static void cell_span(const zctx *c, const zgrid *g, const double *b, bool whole, int o[4])
 {
-    if (it->whole) {
-        *cx0 = *cy0 = 0;
-        *cx1 = g->gw - 1;
-        *cy1 = g->gh - 1;
+    if (whole) {
+        o[0] = o[1] = 0;
+        o[2] = g->gw - 1;
+        o[3] = g->gh - 1;
         return;
     }
     double ox = -c->w / 2, oy = -c->h / 2;
-    double v[4] = {floor((it->box[0] - ox) / g->cell), floor((it->box[1] - oy) / g->cell),
-                   floor((it->box[2] - ox) / g->cell), floor((it->box[3] - oy) / g->cell)};
+    double v[4] = {floor((b[0] - ox) / g->cell), floor((b[1] - oy) / g->cell),
+                   floor((b[2] - ox) / g->cell), floor((b[3] - oy) / g->cell)};
     int lim[4] = {g->gw - 1, g->gh - 1, g->gw - 1, g->gh - 1};
-    int *o[4] = {cx0, cy0, cx1, cy1};
     for (int k = 0; k < 4; k++)
-        *o[k] = !(v[k] > 0) ? 0 : v[k] > lim[k] ? lim[k] : (int)v[k];
-    if (it->box[2] < ox || it->box[3] < oy || it->box[0] > -ox || it->box[1] > -oy)
-        *cx1 = *cx0 - 1; /* outside the image: in no cell */
+        o[k] = !(v[k] > 0) ? 0 : v[k] > lim[k] ? lim[k] : (int)v[k];
+    if (!(b[2] >= ox && b[3] >= oy && b[0] <= -ox && b[1] <= -oy))
+        o[2] = o[0] - 1;
 }
 
-static bool grid_build(const zctx *c, zgrid *g)
+/* The grid of items sub[0..n-1] (in draw order). False past the bounds. */
+static bool grid_build(const zctx *c, const uint32_t *sub, size_t n, zgrid *g)
 {
     double longer = fmax(c->w, c->h);
     g->cell = fmax(8, ceil(longer / ZORDER_GRID));
     g->gw = (int)ceil(c->w / g->cell);
     g->gh = (int)ceil(c->h / g->cell);
-    if (g->gw < 1)
-        g->gw = 1;
-    if (g->gh < 1)
-        g->gh = 1;
+    g->gw = g->gw < 1 ? 1 : g->gw;
+    g->gh = g->gh < 1 ? 1 : g->gh;
     size_t ncell = (size_t)g->gw * (size_t)g->gh;
-    g->first = tr_realloc(NULL, (ncell + 1) * sizeof *g->first);
     g->idx = NULL;
+    g->first = tr_realloc(NULL, (ncell + 1) * sizeof *g->first);
     if (!g->first)
         return false;
     memset(g->first, 0, (ncell + 1) * sizeof *g->first);
     uint64_t total = 0;
-    for (size_t i = 0; i < c->n; i++) {
-        int x0, y0, x1, y1;
-        cell_span(c, g, &c->it[i], &x0, &y0, &x1, &y1);
-        for (int y = y0; y <= y1 && x0 <= x1; y++)
-            for (int x = x0; x <= x1; x++)
-                g->first[(size_t)y * g->gw + x + 1]++;
-        total += x0 <= x1 ? (uint64_t)(x1 - x0 + 1) * (uint64_t)(y1 - y0 + 1) : 0;
+    for (size_t i = 0; i < n; i++) {
+        int o[4];
+        const zitem *it = &c->it[sub[i]];
+        cell_span(c, g, it->box, it->whole, o);
+        for (int y = o[1]; y <= o[3] && o[0] <= o[2]; y++)
+            for (int x = o[0]; x <= o[2]; x++)
+                g->first[(size_t)y * (size_t)g->gw + (size_t)x + 1]++;
+        total += o[0] <= o[2] ? (uint64_t)(o[2] - o[0] + 1) * (uint64_t)(o[3] - o[1] + 1) : 0;
+        if (total > ZORDER_MAX_CELLS)
+            return false;
     }
-    if (total > ZORDER_MAX_PAIRS)
-        return false;
     for (size_t k = 0; k < ncell; k++)
         g->first[k + 1] += g->first[k];
     g->idx = tr_realloc(NULL, (total ? total : 1) * sizeof *g->idx);
@@ -755,12 +808,13 @@ static bool grid_build(const zctx *c, zgrid *g)
         return false;
     }
     memcpy(fill, g->first, ncell * sizeof *fill);
-    for (size_t i = 0; i < c->n; i++) {
-        int x0, y0, x1, y1;
-        cell_span(c, g, &c->it[i], &x0, &y0, &x1, &y1);
-        for (int y = y0; y <= y1 && x0 <= x1; y++)
-            for (int x = x0; x <= x1; x++)
-                g->idx[fill[(size_t)y * g->gw + x]++] = (uint32_t)i;
+    for (size_t i = 0; i < n; i++) {
+        int o[4];
+        const zitem *it = &c->it[sub[i]];
+        cell_span(c, g, it->box, it->whole, o);
+        for (int y = o[1]; y <= o[3] && o[0] <= o[2]; y++)
+            for (int x = o[0]; x <= o[2]; x++)
+                g->idx[fill[(size_t)y * (size_t)g->gw + (size_t)x]++] = sub[i];
     }
     tr_free(fill);
     return true;
@@ -768,21 +822,65 @@ static bool grid_build(const zctx *c, zgrid *g)
 
 static bool special(const zitem *it) { return it->flags != 0; }
 
-/* The result of the check: ok, a pair that may differ (its later item), or
+/* The result of a check: ok, a pair that may differ (its later item), or
  * too much to check. */
 enum { ZORDER_OK, ZORDER_DIFFERS, ZORDER_UNCHECKED };
 
-static int check_pairs(const zctx *c, size_t *culprit)
+/* Checks every pair of sub[0..n-1] (item indices in draw order) that
+ * overlaps on screen and needs it (the earlier writes no depth, or the
+ * later wins), within the work bound *work. */
+/* Whether pair (a, b), a the earlier of sub's order, needs a check, and
+ * which is earlier in truth (a first instance may come back to an earlier
+ * run): *pa before *pb, unordered when the order is not known. */
+static bool pair_needed(const zitem **pa, const zitem **pb, bool *unordered)
 {
+    const zitem *a = *pa, *b = *pb;
+    if (a->run > b->run) {
+        *pa = b;
+        *pb = a;
+        a = *pa;
+        b = *pb;
+    }
+    *unordered = a->run == b->run && a->pool != b->pool;
+    return *unordered ? (a->flags | b->flags) != 0
+                      : (a->flags & ZF_NO_WRITE) || (b->flags & ZF_LATER_WINS);
+}
+
+static int check_pairs(const zctx *c, const uint32_t *sub, size_t n, uint64_t *work,
+                       size_t *culprit)
+{
+    if (n <= 32) { /* a draw of a few primitives: every pair, no grid */
+        for (size_t i = 0; i < n; i++)
+            for (size_t k = i + 1; k < n; k++) {
+                const zitem *a = &c->it[sub[i]], *b = &c->it[sub[k]];
+                bool unordered;
+                if (++*work > ZORDER_MAX_PAIRS)
+                    return ZORDER_UNCHECKED;
+                if (!pair_needed(&a, &b, &unordered) || pair_ok(c, a, b, unordered))
+                    continue;
+                *culprit = (size_t)(b - c->it);
+                return ZORDER_DIFFERS;
+            }
+        return ZORDER_OK;
+    }
     zgrid g;
-    if (!grid_build(c, &g)) {
+    if (!grid_build(c, sub, n, &g)) {
         tr_free(g.first);
         tr_free(g.idx);
         return ZORDER_UNCHECKED;
     }
-    uint64_t work = 0;
     int result = ZORDER_OK;
     size_t ncell = (size_t)g.gw * (size_t)g.gh;
+    /* The pairs a cell costs, bounded before any is looked at. */
+    uint64_t est = 0;
+    for (size_t cell = 0; cell < ncell; cell++) {
+        uint64_t ns = 0, nl = g.first[cell + 1] - g.first[cell];
+        for (uint32_t k = g.first[cell]; k < g.first[cell + 1]; k++)
+            ns += special(&c->it[g.idx[k]]);
+        est += ns * nl;
+    }
+    if (*work + est > ZORDER_MAX_PAIRS)
+        result = ZORDER_UNCHECKED;
     for (size_t cell = 0; cell < ncell && result == ZORDER_OK; cell++) {
         int cx = (int)(cell % (size_t)g.gw), cy = (int)(cell / (size_t)g.gw);
         for (uint32_t si = g.first[cell]; si < g.first[cell + 1] && result == ZORDER_OK; si++) {
@@ -791,37 +889,24 @@ static int check_pairs(const zctx *c, size_t *culprit)
                 continue;
             for (uint32_t ti = g.first[cell]; ti < g.first[cell + 1]; ti++) {
                 uint32_t t = g.idx[ti];
+                (*work)++;
                 if (t == s || (special(&c->it[t]) && t < s))
                     continue; /* that pair is taken from t's side */
                 const zitem *a = &c->it[s < t ? s : t], *b = &c->it[s < t ? t : s];
-                /* Items are in run order, but a first instance may come
-                 * back to an earlier run. */
-                if (a->run > b->run) {
-                    const zitem *x = a;
-                    a = b;
-                    b = x;
-                }
-                bool unordered = a->run == b->run && a->pool != b->pool;
-                if (unordered ? !(a->flags | b->flags)
-                              : !((a->flags & ZF_NO_WRITE) || (b->flags & ZF_LATER_WINS)))
+                bool unordered;
+                if (!pair_needed(&a, &b, &unordered))
                     continue;
                 /* Each pair once: in the cell of its boxes' common corner. */
                 if (!a->whole && !b->whole) {
-                    int x0, y0, x1, y1;
-                    zitem corner = *a;
-                    corner.box[0] = fmax(a->box[0], b->box[0]);
-                    corner.box[1] = fmax(a->box[1], b->box[1]);
-                    corner.box[2] = corner.box[0];
-                    corner.box[3] = corner.box[1];
-                    cell_span(c, &g, &corner, &x0, &y0, &x1, &y1);
-                    if (x0 <= x1 && (x0 != cx || y0 != cy))
+                    double corner[4] = {fmax(a->box[0], b->box[0]), fmax(a->box[1], b->box[1])};
+                    corner[2] = corner[0];
+                    corner[3] = corner[1];
+                    int o[4];
+                    cell_span(c, &g, corner, false, o);
+                    if (o[0] <= o[2] && (o[0] != cx || o[1] != cy))
                         continue;
                 } else if (a->whole && b->whole && cell != 0) {
                     continue;
-                }
-                if (++work > ZORDER_MAX_PAIRS) {
-                    result = ZORDER_UNCHECKED;
-                    break;
                 }
                 if (!pair_ok(c, a, b, unordered)) {
                     *culprit = (size_t)(b - c->it);
@@ -834,6 +919,140 @@ static int check_pairs(const zctx *c, size_t *culprit)
     tr_free(g.first);
     tr_free(g.idx);
     return result;
+}
+
+/* Whether the runs lie apart in depth in their order wherever order counts:
+ * each run that wins over what came before is nearer than all of it, each
+ * that writes no depth farther than all that follows (ray parameters over
+ * whole runs: on a ray through both, the later is then the nearer). Then
+ * only pairs within a run remain to check (2D drawings: each draw a
+ * painter's step nearer than the one before). */
+static bool runs_apart(const zctx *c, size_t nruns, const uint32_t *first, const uint32_t *order)
+{
+    double *lo = tr_realloc(NULL, 2 * (nruns ? nruns : 1) * sizeof *lo);
+    if (!lo)
+        return false;
+    double *hi = lo + nruns;
+    uint8_t fl_any = 0;
+    for (size_t r = 0; r < nruns; r++) {
+        lo[r] = INFINITY;
+        hi[r] = -INFINITY;
+        for (uint32_t k = first[r]; k < first[r + 1]; k++) {
+            const zitem *it = &c->it[order[k]];
+            if (it->whole) {
+                lo[r] = -INFINITY;
+                hi[r] = INFINITY;
+            } else if (it->np) {
+                lo[r] = fmin(lo[r], it->tmin);
+                hi[r] = fmax(hi[r], it->tmax);
+            }
+            fl_any |= it->flags;
+        }
+    }
+    bool ok = true;
+    double before = INFINITY; /* the nearest of the earlier runs */
+    for (size_t r = 0; r < nruns && ok; r++) {
+        bool wins = first[r] < first[r + 1] && (c->it[order[first[r]]].flags & ZF_LATER_WINS);
+        if (wins && lo[r] <= hi[r] && before < INFINITY && !(hi[r] < before - tol(before)))
+            ok = false;
+        if (lo[r] <= hi[r])
+            before = fmin(before, lo[r]);
+    }
+    double after = -INFINITY; /* the farthest of the later runs */
+    for (size_t r = nruns; r-- > 0 && ok;) {
+        bool nowrite = first[r] < first[r + 1] && (c->it[order[first[r]]].flags & ZF_NO_WRITE);
+        if (nowrite && lo[r] <= hi[r] && after > -INFINITY && !(after < lo[r] - tol(lo[r])))
+            ok = false;
+        if (lo[r] <= hi[r])
+            after = fmax(after, hi[r]);
+    }
+    tr_free(lo);
+    return ok;
+}
+
+/* One run's items sub[0..n-1], when its primitives step nearer one by one
+ * (a GL_TRIANGLES or GL_QUADS batch without a depth test: each primitive a
+ * painter's step of its own): groups of consecutive items of one depth (a
+ * quad's two triangles), each group nearer than all before it, and the
+ * pairs within a group. ZORDER_UNCHECKED: not so (the caller checks every
+ * pair of the run). */
+static int run_stepped(const zctx *c, const uint32_t *sub, size_t n, uint64_t *work,
+                       size_t *culprit)
+{
+    double before = INFINITY, glo = 0, ghi = 0;
+    size_t g0 = 0;
+    for (size_t i = 0; i <= n; i++) {
+        const zitem *it = i < n ? &c->it[sub[i]] : NULL;
+        if (it && (it->whole || it->pool != c->it[sub[0]].pool))
+            return ZORDER_UNCHECKED;
+        if (it && !it->np)
+            continue;
+        if (it && i > g0 && it->tmin <= ghi + tol(ghi) && it->tmax >= glo - tol(glo)) {
+            glo = fmin(glo, it->tmin);
+            ghi = fmax(ghi, it->tmax);
+            continue;
+        }
+        if (i > g0) { /* close the group [g0, i) */
+            if (before < INFINITY && !(ghi < before - tol(before)))
+                return ZORDER_UNCHECKED;
+            if (i - g0 > 32)
+                return ZORDER_UNCHECKED;
+            int res = i - g0 >= 2 ? check_pairs(c, sub + g0, i - g0, work, culprit) : ZORDER_OK;
+            if (res != ZORDER_OK)
+                return res;
+            before = fmin(before, glo);
+        }
+        g0 = i;
+        if (it) {
+            glo = it->tmin;
+            ghi = it->tmax;
+        }
+    }
+    return ZORDER_OK;
+}
+
+/* Every pair that can differ in the frame: the runs' items grouped by run
+ * (a counting sort: instances may come back to earlier runs); when the
+ * runs lie apart, each run's own pairs, else all of them. */
+static int check_frame(const zctx *c, size_t nruns, size_t *culprit)
+{
+    uint32_t *first = tr_realloc(NULL, (nruns + 1) * sizeof *first);
+    uint32_t *order = tr_realloc(NULL, (c->n ? c->n : 1) * sizeof *order);
+    int res = ZORDER_UNCHECKED;
+    if (!first || !order)
+        goto done;
+    memset(first, 0, (nruns + 1) * sizeof *first);
+    for (size_t i = 0; i < c->n; i++)
+        first[c->it[i].run + 1]++;
+    for (size_t r = 0; r < nruns; r++)
+        first[r + 1] += first[r];
+    {
+        uint32_t *fill = tr_realloc(NULL, (nruns ? nruns : 1) * sizeof *fill);
+        if (!fill)
+            goto done;
+        memcpy(fill, first, nruns * sizeof *fill);
+        for (size_t i = 0; i < c->n; i++)
+            order[fill[c->it[i].run]++] = (uint32_t)i;
+        tr_free(fill);
+    }
+    uint64_t work = 0;
+    if (!runs_apart(c, nruns, first, order)) {
+        res = check_pairs(c, order, c->n, &work, culprit);
+        goto done;
+    }
+    res = ZORDER_OK;
+    for (size_t r = 0; r < nruns && res == ZORDER_OK; r++) {
+        uint32_t n = first[r + 1] - first[r];
+        if (n < 2 || !c->it[order[first[r]]].flags)
+            continue;
+        res = n > 32 ? run_stepped(c, order + first[r], n, &work, culprit) : ZORDER_UNCHECKED;
+        if (res == ZORDER_UNCHECKED)
+            res = check_pairs(c, order + first[r], n, &work, culprit);
+    }
+done:
+    tr_free(first);
+    tr_free(order);
+    return res;
 }
 
 /* ---- The frame's decision -------------------------------------------------------- */
@@ -870,7 +1089,7 @@ void interp_zorder_end_frame(interp *ip)
     c.h = s->camera.height;
     collect(&c, z);
     size_t culprit = 0;
-    int res = c.over ? ZORDER_UNCHECKED : check_pairs(&c, &culprit);
+    int res = c.over ? ZORDER_UNCHECKED : check_frame(&c, z->n, &culprit);
     if (res == ZORDER_DIFFERS)
         note_at_run(ip, &z->runs[c.it[culprit].run], NULL);
     else if (res == ZORDER_UNCHECKED)

@@ -506,21 +506,9 @@ bool scene_camera_project(const scene_camera *cam, const double p[3], double out
     return isfinite(out[0]) && isfinite(out[1]);
 }
 
-bool scene_camera_window(const scene_camera *cam, const double p[3], double out[3])
+bool scene_camera_coords(const scene_camera *cam, const double p[3], double x[3])
 {
-    double x[3];
-    if (!camera_coords(cam, p, x))
-        return false;
-    double t = 1;
-    if (cam->kind != SCENE_CAMERA_ORTHOGRAPHIC) {
-        if (!(x[0] > 0))
-            return false;
-        t = x[0];
-    }
-    out[0] = x[1] / t * cam->width;
-    out[1] = x[2] / t * cam->height;
-    out[2] = x[0];
-    return isfinite(out[0]) && isfinite(out[1]) && isfinite(out[2]);
+    return camera_coords(cam, p, x) && isfinite(x[0]) && isfinite(x[1]) && isfinite(x[2]);
 }
 
 bool scene_camera_pixel_size(const scene_camera *cam, const double p[3], double *px, double *py)
