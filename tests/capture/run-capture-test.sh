@@ -13,8 +13,13 @@
 #   glut-solid               3 glutSolidTeapot, none of the GL calls
 #                            freeglut makes to draw them
 #   unrecorded               calls passed through unrecorded: counted per
-#                            frame (@NotRecorded), reported by raygl2pov;
-#                            queries not counted
+#                            frame (@NotRecorded), reported by raygl2pov
+#                            where they can change the picture (--verbose:
+#                            all, marked); queries not counted
+#   quiet                    a plain GLUT program with stroke text: its
+#                            window-system calls counted, freeglut's strokes
+#                            recorded; raygl2pov prints nothing, and the
+#                            frame (without the text) is exact (POVRAY)
 #   nurbs                    3 GLU NURBS surfaces: recorded as the GLU calls,
 #                            none of the GL calls GLU draws them with;
 #                            translated as meshes
@@ -173,12 +178,17 @@ unrecorded)
     [ "$(ls t-pov/textures | grep -c '^rgl-tex-.*\.png$')" -ge 1 ] || fail "no image of the bitmap text written"
     [ "$(grep -l 'no_shadow no_reflection no_radiosity' t-pov/frame-*.pov | wc -l)" -eq 3 ] ||
         fail "the bitmap text is not in every scene"
+    # None of them can change these frames: colour-index state, the blend
+    # colour with no draw blending by it, the window system. --verbose says
+    # each once, marked.
+    grep -q 'not recorded' "$log" && { cat "$log"; fail "raygl2pov reports calls that cannot change the picture"; }
+    "$r2p" t.raygl -o t-pov -v >v.log 2>&1 || { cat v.log; fail "raygl2pov -v failed"; }
     for want in "glIndexi: 3 calls not recorded, from frame 0" \
         "glBlendColor: 3 calls not recorded, from frame 0" \
         "glutInit: 1 call not recorded, from frame 0"; do
-        grep -q "t.raygl: $want\$" "$log" || { cat "$log"; fail "raygl2pov does not say '$want'"; }
+        grep -q "t.raygl: $want (cannot change the picture: " v.log || { cat v.log; fail "raygl2pov -v does not say '$want'"; }
     done
-    [ "$(grep -c 'glIndexi:' "$log")" -eq 1 ] || fail "glIndexi reported more than once"
+    [ "$(grep -c 'glIndexi:' v.log)" -eq 1 ] || fail "glIndexi reported more than once"
     # With snapshots: the counts come before @Snapshot, each frame's last
     # command; the recorder's own glReadBuffer and glPixelTransfer calls
     # are not the program's.
@@ -191,6 +201,34 @@ unrecorded)
     dump s.raygl | awk '/^frame / { if (n++ && last !~ /@Snapshot/) bad = 1 }
         /^  [0-9]/ { last = $0 } END { exit bad || last !~ /@Snapshot/ }' ||
         fail "@Snapshot is not each frame's last command"
+    ;;
+quiet)
+    record -o q.raygl -- "$prog" --api glut --stroke >prog.log 2>&1 || { cat prog.log; fail "the program failed"; }
+    expect q.raygl '^frame ' 3
+    expect q.raygl 'glBegin(mode=GL_TRIANGLES)' 3
+    # freeglut's strokes are the program's calls (glutStrokeString is let
+    # through uninterposed, uncounted); the window system's calls counted.
+    [ "$(count q.raygl 'glBegin(mode=GL_LINE_STRIP)')" -ge 15 ] || fail "the stroke text is not recorded"
+    expect q.raygl '@NotRecorded(name="glutStroke' 0
+    expect q.raygl '@NotRecorded(name="glutInit", count=1)' 1
+    "$r2p" q.raygl -o q-pov >q.log 2>&1 || { cat q.log; fail "raygl2pov failed"; }
+    [ ! -s q.log ] || { cat q.log; fail "raygl2pov printed messages for a frame where nothing can differ from what it says"; }
+    "$r2p" q.raygl -o q-pov -v >v.log 2>&1 || { cat v.log; fail "raygl2pov -v failed"; }
+    grep -q "q.raygl: glutInit: 1 call not recorded, from frame 0 (cannot change the picture: " v.log ||
+        { cat v.log; fail "raygl2pov -v does not list glutInit"; }
+    # The frame itself (the text aside: its lines are the lines' own
+    # approximation) through raygl compare, with the unlit floors: exact,
+    # and raygl2pov says nothing of it.
+    if [ -x "$povray" ] || command -v "$povray" >/dev/null 2>&1; then
+        record --snapshots -o e.raygl -- "$prog" --api glut >prog.log 2>&1 || { cat prog.log; fail "the program failed (snapshots)"; }
+        "$r2p" e.raygl -o e-pov >e.log 2>&1 || { cat e.log; fail "raygl2pov failed (snapshots)"; }
+        [ ! -s e.log ] || { cat e.log; fail "raygl2pov printed messages for an exact frame"; }
+        sh "$raygl" compare e.raygl -o cmp --raygl2pov "$r2p" --povray "$povray" --tol 2 --min-match 0.99 \
+            --min-silhouette 0.99 >cmp.log 2>&1
+        rc=$?
+        cat cmp.log
+        [ $rc -eq 0 ] || fail "raygl compare: the frames are not exact (exit $rc)"
+    fi
     ;;
 nurbs)
     record -o t.raygl -- "$prog" --api glx --nurbs >prog.log 2>&1 || { cat prog.log; fail "the program failed"; }

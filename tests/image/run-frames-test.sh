@@ -4,7 +4,7 @@
 #
 #   run-frames-test.sh --name NAME --program PROG --raygl2pov R2P --povray POVRAY
 #                      --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]...
-#                      [-- IMGCMP-OPTIONS...]
+#                      [--r2p-says nothing|REGEX]... [-- IMGCMP-OPTIONS...]
 #
 # 1. PROG --trace DIR/NAME/NAME.raygl --png-dir DIR/NAME [--size WxH] draws
 #    the frames with OSMesa (DIR/NAME/gl-NNNNN.png);
@@ -15,11 +15,12 @@
 #
 # Prints one line per frame:
 #   frame N: PASS|FAIL within W silhouette S note yes|no
-# then "frames NAME: P of T pass". Exit 0 when every frame passes, 1
-# otherwise or when a step fails, 2 on bad usage.
+# then "frames NAME: P of T pass". With --r2p-says, the frames' messages
+# must be nothing or match (image-test-args.sh). Exit 0 when every frame
+# passes, 1 otherwise or when a step fails, 2 on bad usage.
 set -u
 usage() {
-    echo "usage: $0 --name NAME --program PROG --raygl2pov R2P --povray POVRAY --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]... [-- IMGCMP-OPTIONS...]" >&2
+    echo "usage: $0 --name NAME --program PROG --raygl2pov R2P --povray POVRAY --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]... [--r2p-says nothing|REGEX]... [-- IMGCMP-OPTIONS...]" >&2
     exit 2
 }
 . "$(dirname "$0")/image-test-args.sh"
@@ -93,4 +94,6 @@ while [ $n -lt "$nframes" ]; do
     n=$((n + 1))
 done
 echo "frames $name: $pass of $nframes pass"
-[ $pass -eq "$nframes" ]
+said=ok
+r2p_says_check "$dir"/raygl2pov-[0-9]*.log || said=bad
+[ $pass -eq "$nframes" ] && [ $said = ok ]

@@ -3,12 +3,14 @@
 #
 #   run-image-test.sh --name NAME --program PROG --raygl2pov R2P --povray POVRAY
 #                     --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]...
+#                     [--r2p-says nothing|REGEX]...
 #                     [--no-program-leak-check] [--ini-antialias] [-- IMGCMP-OPTIONS...]
 #
 # 1. PROG --trace DIR/NAME/NAME.raygl --png DIR/NAME/gl.png [--size WxH]
 #    draws one frame with OSMesa, records it and writes the GL image;
 # 2. in DIR/NAME: R2P NAME.raygl -o pov [OPT...]   translates the trace
-#    (each --r2p-opt adds one raygl2pov option, e.g. --no-shadows);
+#    (each --r2p-opt adds one raygl2pov option, e.g. --no-shadows); with
+#    --r2p-says, what it prints must be nothing, or match (image-test-args.sh);
 # 3. in DIR/NAME: POVRAY pov/frame-00000.ini -D -A   renders it (the .ini
 #    names the size, the gamma and pov/frame-00000.png);
 # 4. IMGCMP [IMGCMP-OPTIONS] --diff DIR/NAME/diff.png gl.png pov/frame-00000.png
@@ -28,7 +30,7 @@
 set -u
 
 usage() {
-    echo "usage: $0 --name NAME --program PROG --raygl2pov R2P --povray POVRAY --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]... [--no-program-leak-check] [--ini-antialias] [-- IMGCMP-OPTIONS...]" >&2
+    echo "usage: $0 --name NAME --program PROG --raygl2pov R2P --povray POVRAY --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]... [--r2p-says nothing|REGEX]... [--no-program-leak-check] [--ini-antialias] [-- IMGCMP-OPTIONS...]" >&2
     exit 2
 }
 
@@ -99,6 +101,7 @@ if [ -s "$dir/raygl2pov.log" ]; then
     echo "raygl2pov said:"
     sed -n '1,20p' "$dir/raygl2pov.log"
 fi
+r2p_says_check "$dir/raygl2pov.log" || fail "raygl2pov's messages (--r2p-says)"
 [ -f "$dir/pov/frame-00000.pov" ] && [ -f "$dir/pov/frame-00000.ini" ] ||
     fail "raygl2pov wrote no pov/frame-00000.pov and .ini (it wrote: $(ls "$dir/pov" 2>/dev/null | tr '\n' ' '))"
 nframes=$(ls "$dir/pov" | grep -c '^frame-[0-9]*\.pov$')

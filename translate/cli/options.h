@@ -37,7 +37,7 @@ typedef struct options {
     frame_range *ranges;
     size_t nranges;
     int jobs; /* 0 until opt_finish_parse: one per core */
-    bool dump, quiet, help, version;
+    bool dump, quiet, verbose, help, version;
     bool vertex_lighting; /* --vertex-lighting (interp_gouraud.c) */
     const writer_def *writer; /* --format (driver_writers): NULL until parsing sets it */
     const char *name_pattern; /* NULL: frame-NNNNN, or rayglFrameBegin's name */

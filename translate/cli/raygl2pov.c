@@ -1,6 +1,6 @@
 /* raygl2pov.c: raygl2pov (and raygl2gltf), the command line.
  *
- *   raygl2pov TRACE -o DIR [--frames A-B[,C...]] [-j N] [--dump] [--quiet]
+ *   raygl2pov TRACE -o DIR [--frames A-B[,C...]] [-j N] [--dump] [--quiet | --verbose]
  *
  * Turns argv and settings files into one options value (options.h) and
  * hands it to the frame driver (driver.h), which does the work. Usage
@@ -124,6 +124,10 @@ static void parse_args(int argc, char **argv, options *o)
     }
     if (!opt_finish_parse(o, &err))
         usage_error(err.msg);
+    /* --dump shows everything: the notes and calls not recorded that
+     * cannot change the picture too. */
+    if (o->dump && !o->quiet)
+        o->verbose = true;
     check_args(o);
 }
 
@@ -147,6 +151,7 @@ int main(int argc, char **argv)
         .jobs = o.jobs,
         .dump = o.dump,
         .quiet = o.quiet,
+        .verbose = o.verbose,
         .vertex_lighting = o.vertex_lighting,
         .writer = o.writer,
         .name_pattern = o.name_pattern,

@@ -44,6 +44,8 @@ typedef struct driver_settings {
     size_t nranges;
     int jobs;           /* 1 .. DRIVER_MAX_JOBS */
     bool dump, quiet;
+    bool verbose;                 /* also the notes held and calls not recorded
+                                     that cannot change the picture */
     bool vertex_lighting;         /* interp_set_vertex_lighting */
     const writer_def *writer;
     const char *name_pattern;     /* naming.h; NULL: the default */

@@ -37,6 +37,7 @@ typedef struct slot {
 typedef struct totals {
     diag_log log;      /* counts of everything; the messages already printed */
     uint64_t printed[DIAG_COUNT];
+    uint64_t printed_held[DIAG_COUNT]; /* held notes printed (--verbose) */
     int status;        /* exit status so far */
     size_t written;
 } totals;
@@ -55,13 +56,15 @@ void drv_say_decode_error(const driver_settings *d, const char *where, const rgl
 /* Clears the progress line; whether one was shown before. */
 bool drv_clear_progress(void);
 void drv_progress(const driver_settings *d, size_t done, size_t total);
-/* A frame's diagnostics, counted into tot: each kind's first few (notes
- * once a run). */
+/* A frame's diagnostics, counted into tot: each note once per run (the
+ * first said, and with --verbose the first held, marked), other kinds
+ * DIAG_KEEP times, then a count. */
 void drv_print_diags(const driver_settings *d, totals *tot, const diag_log *log);
 /* A frame written incomplete: the cut is a note, damage is said and
  * counted in the exit status even with --quiet. */
 void drv_say_incomplete(const driver_settings *d, totals *tot, const slot *s);
-/* How many calls were skipped in all, messages left out. */
+/* How many calls were skipped in all, notes held (--verbose), messages
+ * left out. */
 void drv_print_summary(const driver_settings *d, const totals *tot);
 /* "cut at ...\nwritten without ..." for a frame written incomplete, or
  * NULL (no memory: the details are then lost, not the frame). */

@@ -69,12 +69,19 @@ void drv_print_diags(const driver_settings *d, totals *tot, const diag_log *log)
         const diag_entry *e = &log->e[k];
         tot->log.e[k].count += e->count;
         tot->log.e[k].dropped += e->dropped;
+        tot->log.e[k].held += e->held;
+        bool note = diag_is_note((diag_kind)k);
         for (uint32_t m = 0; m < e->kept; m++) {
-            bool note = diag_is_note((diag_kind)k);
-            if ((note && tot->printed[k] >= 1) || (!note && tot->printed[k] >= DIAG_KEEP))
-                break;
+            if (note && diag_is_held(e, m)) {
+                if (!d->verbose || tot->printed_held[k] >= 1)
+                    continue;
+                tot->printed_held[k]++;
+            } else {
+                if (tot->printed[k] >= (note ? 1u : DIAG_KEEP))
+                    continue;
+                tot->printed[k]++;
+            }
             drv_say(d, "%s", e->text[m]);
-            tot->printed[k]++;
         }
     }
 }
@@ -116,6 +123,15 @@ void drv_print_summary(const driver_settings *d, const totals *tot)
         if (n > tot->printed[k])
             drv_say(d, "%" PRIu64 " calls skipped in all (%s), %" PRIu64 " shown", n,
                     diag_kind_name((diag_kind)k), tot->printed[k]);
+    }
+    /* --verbose: how often each note was said and held, frames counted
+     * once each (a frame logs a note at most once either way). */
+    for (int k = DIAG_FIRST_NOTE; d->verbose && k < DIAG_COUNT; k++) {
+        const diag_entry *e = &tot->log.e[k];
+        if (e->held)
+            drv_say(d, "note held in %" PRIu64 " frame%s where it cannot change a pixel, said in %"
+                    PRIu64 ": %s", e->held, e->held == 1 ? "" : "s", e->count - e->held,
+                    diag_kind_name((diag_kind)k));
     }
     for (int k = 0; k < DIAG_COUNT; k++)
         if (tot->log.e[k].dropped)

@@ -219,6 +219,7 @@ static void *worker(void *arg)
     if (w.t) {
         translator_set_heavy(w.t, heavy_enter, &w);
         translator_set_vertex_lighting(w.t, j->d->vertex_lighting);
+        translator_set_shadows(w.t, !j->d->look->options.no_shadows);
     }
     w.w = j->wd->create ? j->wd->create(j->wrun) : j->wrun;
     outbuf ob;
@@ -411,7 +412,8 @@ static bool take_slots(job *j, totals *tot)
     tr_free(used.v);
     drv_clear_progress();
     if (!d->quiet)
-        unrec_report(&unrec, drv_say_line, (void *)d);
+        unrec_report(&unrec, d->verbose ? UNREC_REPORT_VERBOSE : UNREC_REPORT_MATTERS,
+                     drv_say_line, (void *)d);
     unrec_finish(&unrec);
     return fatal;
 }

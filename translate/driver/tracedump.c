@@ -7,8 +7,11 @@
 
 #include "driver_internal.h"
 
+/* Prints the commands of one sequence; adds its @NotRecorded counts to
+ * unrec as frame `frame`'s. */
 static bool dump_sequence(const driver_settings *d, const uint8_t *data, size_t size, uint64_t off,
-                          const char *indent, const char *where)
+                          const char *indent, const char *where, unrec_table *unrec,
+                          uint64_t frame)
 {
     rgl_cmd_iter it;
     rgl_cmd cmd;
@@ -18,6 +21,8 @@ static bool dump_sequence(const driver_settings *d, const uint8_t *data, size_t 
     while ((st = rgl_cmd_next(&it, &cmd)) == RGL_OK) {
         rgl_cmd_format(&cmd, line, sizeof line);
         printf("%s%" PRIu64 " @0x%" PRIx64 " %s\n", indent, cmd.index, cmd.offset, line);
+        if (cmd.opcode == RGL_OP_NotRecorded)
+            (void)unrec_add(unrec, cmd.arg[0].bytes, cmd.arg[0].count, cmd.arg[1].v.u, frame);
     }
     if (st == RGL_END)
         return true;
@@ -26,9 +31,17 @@ static bool dump_sequence(const driver_settings *d, const uint8_t *data, size_t 
     return false;
 }
 
+static void dump_line(const char *text, void *user)
+{
+    (void)user;
+    printf("#   %s\n", text);
+}
+
 int drv_dump(const driver_settings *d, rgl_reader *r)
 {
     int status = 0;
+    unrec_table unrec; /* the dumped frames' calls not recorded */
+    unrec_init(&unrec);
     size_t isz;
     const char *info = rgl_reader_info(r, &isz);
     if (info) {
@@ -74,13 +87,21 @@ int drv_dump(const driver_settings *d, rgl_reader *r)
                 char w2[96];
                 snprintf(w2, sizeof w2, "frame %zu, snapshot #%u", i, fi.state);
                 if (res.kind == RGL_RES_COMMANDS &&
-                    !dump_sequence(d, res.data, res.size, res.data_offset, "    ", w2))
+                    !dump_sequence(d, res.data, res.size, res.data_offset, "    ", w2, &unrec, i))
                     status = DRIVER_EXIT_INPUT;
             }
         }
-        if (!dump_sequence(d, fi.commands, fi.commands_size, fi.commands_offset, "  ", where))
+        if (!dump_sequence(d, fi.commands, fi.commands_size, fi.commands_offset, "  ", where,
+                           &unrec, i))
             status = DRIVER_EXIT_INPUT;
     }
+    if (unrec.n || unrec.other_calls) {
+        /* Every one, marked by what it can change (no frame is translated
+         * here to tell whether it does). */
+        printf("# not recorded (@NotRecorded) in these frames:\n");
+        unrec_report(&unrec, UNREC_REPORT_DUMP, dump_line, NULL);
+    }
+    unrec_finish(&unrec);
     fflush(stdout);
     return status;
 }

@@ -67,6 +67,8 @@
  *   interp_scissor.c  the scissor test, scissored clears
  *   interp_stencil.c  the stencil test
  *   interp_masks.c    colour and depth write masks
+ *   interp_zorder.c   draw order without a depth test: whether it can
+ *                     change a pixel
  *   interp_accum.c    the accumulation buffer
  *   interp_pixels.c   raster position, bitmaps, pixel rectangles
  *   interp_pixdepth.c their depth
@@ -335,6 +337,11 @@ void interp_set_budget_shift(interp *ip, unsigned shift);
  * drawn unlit, as OpenGL shades them (raygl2pov --vertex-lighting,
  * interp_gouraud.c); off (the default): POV-Ray lights each pixel. */
 void interp_set_vertex_lighting(interp *ip, bool on);
+/* Whether the scenes are rendered with shadows (the default; off:
+ * raygl2pov --no-shadows): the notes of highlights the shadowed render
+ * approximates are said only then, those of the shadowless one only
+ * without (interp_lightset.c). */
+void interp_set_shadows(interp *ip, bool on);
 void interp_destroy(interp *ip);
 
 /* Back to GL's initial state; the scene and log stay attached. */
@@ -354,8 +361,10 @@ void interp_set_resources(interp *ip, interp_resource_fn fn, void *ctx);
 /* Attaches a scene (or NULL) and a log (or NULL). */
 void interp_attach(interp *ip, scene *out, diag_log *log);
 
-/* Logs note `kind` once for the frame (the frame's own notes, frame.c). */
+/* Logs note `kind` once for the frame (the frame's own notes, frame.c);
+ * held: as a note that cannot change a pixel of it, for the reason why. */
 void interp_frame_note(interp *ip, diag_kind kind);
+void interp_frame_note_held(interp *ip, diag_kind kind, const char *why);
 
 /* The camera a frame using several projections should have: true, with
  * its projection and viewport, when it is not the one the frame's first
@@ -429,7 +438,11 @@ const char *interp_frame_name(const interp *ip);
 
 struct unrec_table;
 /* The calls the current frame's @NotRecorded commands say were not
- * recorded (unrecorded.h); empty for an interpreter without a scene. */
+ * recorded (unrec.h); empty for an interpreter without a scene. */
 const struct unrec_table *interp_unrecorded(const interp *ip);
+
+/* Says that the frame being built was recorded without a live GL context
+ * (its uses then include UNREC_USE_BATCH: unrec.h). */
+void interp_unrecorded_batch(interp *ip);
 
 #endif

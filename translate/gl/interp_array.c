@@ -224,6 +224,7 @@ void interp_arrayelement(interp *ip, const rgl_cmd *cmd)
         interp_arrays_forget(ip);
         return;
     }
+    interp_unrec_use(ip, UNREC_USE_ARRAYS);
     array_element(ip, (uint32_t)i);
     interp_arrays_forget(ip);
 }
@@ -250,6 +251,7 @@ static size_t index_bytes(GLenum type)
 static void draw(interp *ip, GLenum mode, int64_t first, int64_t count, const uint8_t *idx,
                  size_t its)
 {
+    interp_unrec_use(ip, UNREC_USE_ARRAYS);
     /* Each element is checked, then drawn: it costs as a command does. */
     ip->cmds_run += (uint64_t)count;
     if (interp_budget_over(ip, ip->cmd ? ip->cmd->offset : 0))

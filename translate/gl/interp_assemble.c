@@ -613,6 +613,17 @@ static void vertices_to_eye(interp *ip, uint32_t n)
     }
 }
 
+/* Whether the open primitive's vertices (in the pool from prim_first on;
+ * none for a solid, of the current colour) share one colour. */
+static bool prim_one_colour(const interp *ip)
+{
+    const scene *s = ip->scene;
+    for (size_t i = ip->prim_first + 1; i < s->nverts; i++)
+        if (memcmp(s->verts[i].color, s->verts[ip->prim_first].color, sizeof(float[4])) != 0)
+            return false;
+    return true;
+}
+
 scene_look interp_current_look(interp *ip)
 {
     scene_look look;
@@ -638,12 +649,17 @@ scene_look interp_current_look(interp *ip)
     if (look.texture1 >= 0) {
         const scene_texture *t0 = look.texture >= 0 ? &ip->scene->textures[look.texture] : NULL;
         const scene_texture *t1 = &ip->scene->textures[look.texture1];
+        bool one_colour = t0 &&
+                          !(t0->env_mode == SCENE_ENV_MODULATE &&
+                            t1->env_mode == SCENE_ENV_MODULATE) &&
+                          !t0->colour_is_texel && (look.lit || !look.flat);
         if (t1->colour_is_texel) /* the second unit's texel replaces the first's result */
             look.texture = -1;
-        else if ((t0 && !(t0->env_mode == SCENE_ENV_MODULATE && t1->env_mode == SCENE_ENV_MODULATE) &&
-                  !t0->colour_is_texel && (look.lit || !look.flat)) ||
+        else if ((one_colour && (look.lit || !prim_one_colour(ip))) ||
                  (t0 && look.blend != SCENE_BLEND_OPAQUE))
             interp_note(ip, DIAG_NOTE_MULTITEX); /* see the note's text */
+        else if (one_colour) /* unlit, and every vertex has the colour it is combined with */
+            interp_note_held(ip, DIAG_NOTE_MULTITEX, "the draw's vertices share one colour");
     }
     if (look.texture < 0 && look.texture1 >= 0) {
         /* An incomplete (or replaced) first unit passes its input on: the

@@ -95,10 +95,15 @@ static void draw_notes(interp *ip)
         interp_note(ip, DIAG_NOTE_SCISSOR); /* lines and points: drawn whole */
     if (c[INTERP_CAP_BLEND] && a->color_buffer.blend_equation != GL_FUNC_ADD)
         interp_note(ip, DIAG_NOTE_BLEND_EQUATION);
+    /* The fade threshold acts on points only (GL 2.1 3.4). */
+    if (a->point.fade_threshold != 1 &&
+        (ip->prim_mode == GL_POINTS ||
+         (ip->prim_mode > GL_LINE_STRIP &&
+          (a->polygon.mode[0] == GL_POINT || a->polygon.mode[1] == GL_POINT))))
+        interp_note(ip, DIAG_NOTE_POINT_FADE);
     if (c[INTERP_CAP_COLOR_LOGIC_OP] && a->color_buffer.logic_op != GL_COPY)
         interp_note(ip, DIAG_NOTE_COLOR_MASK); /* the masks: interp_masks.c */
-    if (!c[INTERP_CAP_DEPTH_TEST] || (a->depth.func != GL_LESS && a->depth.func != GL_LEQUAL))
-        interp_note(ip, DIAG_NOTE_DEPTH);
+    interp_zorder_draw(ip); /* NOTE_DEPTH, at the frame's end */
     /* GL 1.x 3.9: with GL_SINGLE_COLOR the texture modulates the specular
      * term too; POV-Ray adds the highlight after the texture, which is
      * GL_SEPARATE_SPECULAR_COLOR. */
@@ -337,6 +342,7 @@ void interp_begin_mode(interp *ip, GLenum mode)
     interp_accum_draw(ip);
     if (ip->accum.active)
         return; /* a later accumulation pass: the scene holds the first */
+    interp_unrec_draw_uses(ip, mode);
     draw_notes(ip);
     interp_proj_vote(ip, mode);
     interp_fix_camera(ip);

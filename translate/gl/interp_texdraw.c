@@ -212,7 +212,12 @@ static tex_image *tex3d_slice(interp *ip, const tex_obj *o, int k)
         ip->scene->failed = true;
         return NULL;
     }
-    interp_note(ip, DIAG_NOTE_TEX_3D);
+    /* GL_LINEAR's blend of two slices is rounded to 8 bits before it is
+     * filtered across s and t: a level off where GL rounds once. */
+    if (o->mag_filter == GL_LINEAR)
+        interp_note(ip, DIAG_NOTE_TEX_3D);
+    else
+        interp_note_held(ip, DIAG_NOTE_TEX_3D, "GL_NEAREST picks the one slice OpenGL samples");
     return img;
 }
 
@@ -287,8 +292,18 @@ int32_t interp_texture_for_unit(interp *ip, int k)
      * (interp_vertex_texcoord maps [-1, 1] onto it). */
     bool ms = interp_mirror_clamp(o->wrap_s);
     bool mt = o->target != GL_TEXTURE_1D && interp_mirror_clamp(o->wrap_t);
-    if (ms || mt)
-        interp_note(ip, DIAG_NOTE_TEX_MIRROR_CLAMP);
+    if ((ms && o->wrap_s == GL_MIRROR_CLAMP_EXT) || (mt && o->wrap_t == GL_MIRROR_CLAMP_EXT)) {
+        /* The mirrored image clamped to its edge is GL's own sampling but
+         * where GL_MIRROR_CLAMP_EXT blends the border colour into the
+         * edge texels under linear filtering (as GL_CLAMP does). */
+        if (linear)
+            interp_note(ip, DIAG_NOTE_TEX_MIRROR_CLAMP);
+        else
+            interp_note_held(ip, DIAG_NOTE_TEX_MIRROR_CLAMP, "GL_NEAREST samples no border");
+    } else if (ms || mt) {
+        interp_note_held(ip, DIAG_NOTE_TEX_MIRROR_CLAMP,
+                         "GL_MIRROR_CLAMP_TO_EDGE and _TO_BORDER are sampled as OpenGL does");
+    }
     scene_texture st;
     memset(&st, 0, sizeof st);
     st.width = im->width * (ms ? 2 : 1);

@@ -438,6 +438,7 @@ static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t inte
 
 void interp_teximage1d(interp *ip, const rgl_cmd *cmd)
 {
+    interp_unrec_pixel_uses(ip, false, false, true);
     tex_image_set(ip, arg_enum(cmd, 0), (int32_t)cmd->arg[1].v.i, (int32_t)cmd->arg[2].v.i,
                   cmd->arg[3].v.i, 1, (int32_t)cmd->arg[4].v.i, arg_enum(cmd, 5),
                   arg_enum(cmd, 6), (uint32_t)cmd->arg[7].v.u);
@@ -445,6 +446,7 @@ void interp_teximage1d(interp *ip, const rgl_cmd *cmd)
 
 void interp_teximage2d(interp *ip, const rgl_cmd *cmd)
 {
+    interp_unrec_pixel_uses(ip, false, false, true);
     tex_image_set(ip, arg_enum(cmd, 0), (int32_t)cmd->arg[1].v.i, (int32_t)cmd->arg[2].v.i,
                   cmd->arg[3].v.i, cmd->arg[4].v.i, (int32_t)cmd->arg[5].v.i, arg_enum(cmd, 6),
                   arg_enum(cmd, 7), (uint32_t)cmd->arg[8].v.u);
@@ -474,6 +476,7 @@ tex_image *interp_tex_image_own(interp *ip, tex_image **slot)
 
 void interp_texsubimage2d(interp *ip, const rgl_cmd *cmd)
 {
+    interp_unrec_pixel_uses(ip, false, false, true);
     interp_tex_subimage(ip, 2, arg_enum(cmd, 0), cmd->arg[1].v.i, cmd->arg[2].v.i,
                         cmd->arg[3].v.i, cmd->arg[4].v.i, cmd->arg[5].v.i, arg_enum(cmd, 6),
                         arg_enum(cmd, 7), (uint32_t)cmd->arg[8].v.u);
