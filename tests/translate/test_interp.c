@@ -1083,7 +1083,7 @@ static void test_multitex(void)
  * (32 patches of 7 x 7 cells) when the exact form does not apply, and its
  * 5,760 wire segments (32 patches, 10 lines of 9 segments each way), 36 of
  * them of no length, the counts measured from freeglut 3.4
- * (docs/mapping.md section 15). */
+ * (docs/mapping.md section 10). */
 static void test_teapot(void)
 {
     interp *ip = fresh();

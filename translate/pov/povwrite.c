@@ -501,7 +501,7 @@ static bool same_group(const scene_mesh *a, const scene_mesh *b)
 
 /* The pass's meshes, those of one look and transform as one mesh2 wherever
  * they were drawn (the strips of a surface, the lit and relit parts of
- * each: docs/mapping.md section 4), so that their shared vertices are
+ * each: docs/mapping.md section 6), so that their shared vertices are
  * written once and POV-Ray builds one object. A group is written where
  * its first mesh was drawn. */
 static int write_mesh_groups(povwriter *w, outbuf *ob, const scene *s)

@@ -274,7 +274,7 @@ static const float *mesh_tint(povwriter *w, const scene_vertex *verts, const sce
  * povtex_colour_grid) rather than a texture_list: a texture object per
  * colour costs POV-Ray time and memory, and each object{} copy of a
  * prototype's mesh2 copies and transforms its whole texture_list, a single
- * texture stays one (docs/mapping.md sections 4 and 12). The colours must
+ * texture stays one (docs/mapping.md sections 6 and 9). The colours must
  * vary (outside a prototype, more than COLOUR_IMAGE_MIN_COLOURS of them),
  * be opaque and need no more clamping than POVTEX_CLAMP_MAX; lit, the
  * colour must be GL_AMBIENT_AND_DIFFUSE's alone (the pigment then scales

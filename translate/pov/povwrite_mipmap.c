@@ -1,5 +1,5 @@
 /* povwrite_mipmap.c: mipmapped minification (GL 2.1 3.8.8, 3.8.9) in
- * POV-Ray, which has no mipmaps (issue 14; docs/mapping.md section 27).
+ * POV-Ray, which has no mipmaps (issue 14; docs/mapping.md section 24).
  *
  * GL picks a level per fragment from lambda = log2(rho), rho the texel
  * footprint of one pixel: the larger of the lengths of d(u W, v H)/dx and
