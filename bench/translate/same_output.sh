@@ -42,6 +42,8 @@ same() {
     rb=$?
     mkdir -p "$tmp/out" && mv "$tmp/out" "$tmp/b"
     n=$((n + 1))
+    # A message naming a temporary file names the process too.
+    sed -i 's/\.raygl2pov-[0-9]*-/.raygl2pov-PID-/g' "$tmp/a.log" "$tmp/b.log"
     if [ $ra -ne $rb ] || ! diff -r "$tmp/a" "$tmp/b" >/dev/null 2>&1 ||
         ! cmp -s "$tmp/a.log" "$tmp/b.log"; then
         echo "differs: $label (exit $ra, $rb)"
