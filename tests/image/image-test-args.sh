@@ -3,12 +3,15 @@
 # absolute paths for the steps that run in the test's directory.
 #
 # common_option OPT VALUE: takes one of --name --program --raygl2pov --povray
-# --imgcmp --outdir --size --r2p-opt (the caller then shifts 2); returns 1 on
-# an unknown option, exits 2 on a bad value.
-name='' prog='' r2p='' povray='' imgcmp='' outdir='' size='' r2p_opts=''
+# --imgcmp --outdir --size --r2p-opt --figures (the caller then shifts 2);
+# returns 1 on an unknown option, exits 2 on a bad value.
+#
+# --figures FILE: the figures measured are checked against FILE
+# (check-figures.sh); meson passes tests/image/figures.txt.
+name='' prog='' r2p='' povray='' imgcmp='' outdir='' size='' r2p_opts='' figures=''
 common_option() {
     case $1 in
-    --name|--program|--raygl2pov|--povray|--imgcmp|--outdir|--size|--r2p-opt) ;;
+    --name|--program|--raygl2pov|--povray|--imgcmp|--outdir|--size|--r2p-opt|--figures) ;;
     *) echo "$0: unknown argument $1" >&2; return 1 ;;
     esac
     [ $# -ge 2 ] || return 1
@@ -20,6 +23,7 @@ common_option() {
     --imgcmp) imgcmp=$2 ;;
     --outdir) outdir=$2 ;;
     --size) size=$2 ;;
+    --figures) figures=$2 ;;
     --r2p-opt)
         case $2 in
         *[!A-Za-z0-9.=-]*) echo "$0: --r2p-opt '$2': letters, digits, '.', '=' and '-' only" >&2; exit 2 ;;
@@ -47,8 +51,16 @@ common_finish() {
     r2p=$(absolute "$r2p")
     povray=$(absolute "$povray")
     imgcmp=$(absolute "$imgcmp")
+    [ -z "$figures" ] || figures=$(absolute "$figures")
     case $outdir in
     /*) ;;
     *) outdir=$PWD/$outdir ;;
     esac
+}
+
+# figures_of LOG: "TOL WITHIN SILHOUETTE" from imgcmp's output in LOG, or
+# nothing when it printed no figures.
+figures_of() {
+    sed -n 's|^within \([0-9]*\)/255: \([0-9.]*\) .*|\1 \2|p' "$1" | head -n 1 | tr '\n' ' '
+    sed -n 's/^silhouette: \([0-9.]*\) .*/\1/p' "$1" | head -n 1
 }
