@@ -50,6 +50,7 @@ set -u
 [ $# -ge 8 ] || { echo "usage: $0 CASE RAYGL PRELOAD PROG RAYGL2POV COMPARE POVRAY OUTDIR" >&2; exit 2; }
 case=$1 raygl=$2 preload=$3 prog=$4 r2p=$5 cmp=$6 povray=$7 out=$8
 shift 8
+here=$(cd "$(dirname "$0")" && pwd) || exit 1
 absolute() {
     case $1 in
     /*) printf '%s\n' "$1" ;;
@@ -83,6 +84,21 @@ fi
 record() { env ${san:+LD_PRELOAD=$san} sh "$raygl" record "$@"; }
 
 dump() { "$r2p" "$1" --dump 2>&1; }
+
+# compare_figures NAME LOG: with RAYGL_FIGURES set (meson sets it to
+# tests/image/figures.txt), the lowest within and silhouette of the frames
+# raygl-compare measured in LOG held to the file's line for NAME.
+compare_figures() {
+    [ -n "${RAYGL_FIGURES:-}" ] || return 0
+    set -- "$1" $(awk '/^frame [0-9]+: [0-9]+x[0-9]+ within / {
+        t = $5; sub(/\/255$/, "", t); w = $6; sub(/,$/, "", w); w += 0; s = $11 + 0
+        if (n++ == 0 || w < mw) mw = w
+        if (n == 1 || s < ms) ms = s
+    } END { if (n) printf "%s %.5f %.5f\n", t, mw, ms }' "$2")
+    [ $# -eq 4 ] || fail "no figures in $2"
+    "$here/../image/check-figures.sh" "$RAYGL_FIGURES" "$@" ||
+        fail "the figures do not hold to $RAYGL_FIGURES (above)"
+}
 count() { # TRACE PATTERN: lines of the dump matching it
     dump "$1" | grep -c -- "$2"
 }
@@ -534,6 +550,7 @@ glxgears)
     cat cmp.log
     [ $rc -eq 0 ] || fail "raygl-compare exited with $rc"
     [ "$(grep -c '^frame [0-9]*: 300x300 within' cmp.log)" -eq 3 ] || fail "not 3 frames compared"
+    compare_figures capture-glxgears cmp.log
     ;;
 hack)
     name=$1
@@ -549,6 +566,7 @@ hack)
     rc=$?
     cat cmp.log
     [ $rc -eq 0 ] || fail "raygl-compare exited with $rc"
+    compare_figures "capture-hack-$name" cmp.log
     ;;
 *) echo "unknown case $case" >&2; exit 2 ;;
 esac

@@ -139,6 +139,7 @@ struct interp {
      * through a const interp). */
     interp_litdir litdir[INTERP_MAX_LIGHTS];
     bool prim_in_eye;   /* prim_to_eye is applied to the vertices themselves */
+    bool prim_indexed;  /* drawn from an index array (glDrawElements and kin) */
     uint8_t prim_blend; /* SCENE_BLEND_* of the primitive */
     int draw_unit[2];   /* the draw's first two enabled texture units, or -1 */
     bool prim_tex_from1; /* the look's texture is draw_unit[1]'s (tex1 coordinates) */

@@ -1468,7 +1468,9 @@ static void end_primitive(interp *ip)
     as.line_width = raster_width(a->line.width, as.line_smooth);
     as.point_size = raster_width(a->point.size, as.point_smooth);
     as.point_params = interp_point_params_set(a);
-    as.list_quads = ip->list_depth > (ip->list_ce ? 1 : 0);
+    /* Mesa splits quads along v1-v3 in a list, and when drawn from an
+     * index array (tests/programs/conf_arrays_quad_split.c). */
+    as.list_quads = ip->list_depth > (ip->list_ce ? 1 : 0) || ip->prim_indexed;
     as.alpha_test = interp_alpha_testing(ip);
     for (uint32_t i = 0; i < n && !as.check_bad; i++)
         if (!vertex_ok(&s->verts[as.base + i]))
