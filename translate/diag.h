@@ -45,7 +45,7 @@
     X(NOTE_LISTS, "not translated yet: display lists (calls skipped)") \
     X(NOTE_ARRAYS, "not translated yet: vertex arrays (draws skipped)") \
     X(NOTE_QUADRICS, "not translated yet: GLU quadrics (skipped)") \
-    X(NOTE_STIPPLE, "approximated: stippled lines: the dashes are cut along the line in window space, so a dash's end may lie a pixel from where OpenGL's fragments end it") \
+    X(NOTE_STIPPLE, "approximated: stippled outlines of polygons (glPolygonMode GL_LINE): the pattern restarts at each polygon, where OpenGL restarts it at each triangle it cuts the polygon into") \
     X(NOTE_SCISSOR, "not translated: scissor test of geometry (drawn whole)") \
     X(NOTE_SCISSOR_CLEAR, "approximated: a scissored clear does not erase what was drawn before it inside its box") \
     X(NOTE_CLIP_PLANE, "not translated: user clip planes") \

@@ -356,9 +356,9 @@ static void test_flat_lines(void)
     if (sc.nlines == 3) {
         /* Each segment takes its last vertex's colour; the closing one the
          * first vertex's (GL 1.x table 2.2). */
-        CHECK(sc.lines[0].color[0][1] == 1 && sc.lines[0].color[1][1] == 1);
-        CHECK(sc.lines[1].color[0][2] == 1 && sc.lines[1].color[1][2] == 1);
-        CHECK(sc.lines[2].color[0][0] == 1 && sc.lines[2].color[1][0] == 1);
+        CHECK(sc.lines[0].color[0][1] == 1 && sc.lines[0].color[2][1] == 1);
+        CHECK(sc.lines[1].color[0][2] == 1 && sc.lines[1].color[2][2] == 1);
+        CHECK(sc.lines[2].color[0][0] == 1 && sc.lines[2].color[2][0] == 1);
     }
     interp_destroy(ip);
 }

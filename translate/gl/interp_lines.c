@@ -241,31 +241,131 @@ static void lerp_colour(const interp_line *ln, double t, float out[4])
     }
 }
 
-/* GL_LINE_SMOOTH: a rectangle w wide around the segment (Mesa adds
- * coverage in alpha at its rim; not pixel for pixel). */
-static void add_smooth(interp *ip, const interp_line *ln, const seg_frame *f, const double w0[2],
-                       const double w1[2], const double t[2])
+/* One quad of a smooth line: window corners k[0..3] in scene_line's
+ * order, a colour each, each corner taken into eye space at the
+ * segment's depth where its major coordinate falls. */
+static void smooth_quad(interp *ip, const seg_frame *f, int ax, const double k[4][2],
+                        const float col[4][4])
 {
-    const scene_camera *cam = f->cam;
-    double dx = w1[0] - w0[0], dy = w1[1] - w0[1], len = hypot(dx, dy), r[3], u[3];
-    if (!(len > 1e-6))
-        return;
-    double ox = -dy / len * ln->width * 0.5, oy = dx / len * ln->width * 0.5, px[2], py[2];
-    if (!scene_camera_pixel_size(cam, f->p[0], &px[0], &py[0]) ||
-        !scene_camera_pixel_size(cam, f->p[1], &px[1], &py[1]))
-        return;
-    image_axes(cam, r, u);
+    double e[4][3], px, py;
+    for (int i = 0; i < 4; i++)
+        if (!eye_at(f, seg_at(f, ax, k[i][ax]), k[i][0], k[i][1], e[i], &px, &py))
+            return;
     scene_line *l = scene_add_line(ip->scene);
     if (!l)
         return;
-    for (int e = 0; e < 2; e++) {
-        for (int k = 0; k < 3; k++) {
-            l->p[e][k] = (float)f->p[e][k];
-            l->half[e][k] = (float)(ox * px[e] * r[k] + oy * py[e] * u[k]);
+    static const int pair[2][2] = {{0, 1}, {3, 2}};
+    for (int n = 0; n < 2; n++) {
+        const double *lo = e[pair[n][0]], *hi = e[pair[n][1]];
+        for (int j = 0; j < 3; j++) {
+            l->p[n][j] = (float)((lo[j] + hi[j]) * 0.5);
+            l->half[n][j] = (float)((hi[j] - lo[j]) * 0.5);
         }
-        lerp_colour(ln, t[e], l->color[e]);
-        interp_fogsec_eye(ip, f->p[e][2], l->color[e]);
     }
+    for (int i = 0; i < 4; i++) {
+        memcpy(l->color[i], col[i], sizeof l->color[i]);
+        interp_fogsec_eye(ip, e[i][2], l->color[i]);
+    }
+}
+
+/* Where an edge of a smooth line's rectangle goes: Mesa's triangles take
+ * a pixel centre on a left edge (or on a bottom one, in GL's frame) and
+ * leave it on the others; the edge moves out or in by a hair to say so. */
+#define SMOOTH_TIE (1.0 / 1024)
+
+/* GL_LINE_SMOOTH, window dash q0-q1 (Mesa's draw module, aaline): a
+ * rectangle max(1, w / 2 + 1/2) to each side, half a pixel longer at each
+ * end, every pixel in it drawn, GL's colour at its ends (those of the
+ * segment's ends, not moved). Its coverage goes into alpha: 1 but for a
+ * pixel's width along the rim, down to 0 at the edge; blended
+ * (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA) that shows, so the rectangle is
+ * drawn as a grid of rim, cap and middle quads whose corner alphas ramp as
+ * the coverage does (the rim's corners take the middle of the two ramps). */
+static void add_smooth(interp *ip, const interp_line *ln, const seg_frame *f, const double q0[2],
+                       const double q1[2], const double t[2])
+{
+    double dx = q1[0] - q0[0], dy = q1[1] - q0[1], len = hypot(dx, dy);
+    if (!(len > 0))
+        return;
+    double c = dx / len, sn = dy / len;
+    double hw = ln->width <= 1 ? 1 : ln->width * 0.5 + 0.5, hl = len * 0.5 + 0.5;
+    double mid[2] = {(q0[0] + q1[0]) * 0.5, (q0[1] + q1[1]) * 0.5};
+    int ax = fabs(dx) >= fabs(dy) ? 0 : 1;
+    /* Edge offsets: along (t) and across (s, to the left of the line). */
+    double along[2] = {-hl, hl}, across[2] = {-hw, hw};
+    for (int side = 0; side < 2; side++) {
+        /* outward normals: along (c, sn) * sign, across (-sn, c) * sign */
+        double sg = side ? 1 : -1;
+        double na[2] = {sg * c, sg * sn}, ns[2] = {-sg * sn, sg * c};
+        bool in_a = na[0] < 0 || (na[0] == 0 && na[1] < 0);
+        bool in_s = ns[0] < 0 || (ns[0] == 0 && ns[1] < 0);
+        along[side] += sg * (in_a ? SMOOTH_TIE : -SMOOTH_TIE);
+        across[side] += sg * (in_s ? SMOOTH_TIE : -SMOOTH_TIE);
+    }
+    /* GL's colour at the rectangle's ends: the dash's ends' own. */
+    float col[2][4];
+    for (int n = 0; n < 2; n++) {
+        double u = seg_at(f, ax, (n ? q1 : q0)[ax]);
+        lerp_colour(ln, t[0] + (t[1] - t[0]) * (isfinite(u) ? u : n), col[n]);
+    }
+    bool ramp = ip->prim_blend == SCENE_BLEND_ALPHA && !ip->prim_blend_mapped;
+    /* The grid's lines along (t) and across (s); one cell when unblended. */
+    double ts[4], ss[4];
+    int nt = 0, ns = 0;
+    ts[nt++] = along[0];
+    if (ramp && hl > 1)
+        ts[nt++] = -(hl - 1), ts[nt++] = hl - 1;
+    else if (ramp)
+        ts[nt++] = 0;
+    ts[nt++] = along[1];
+    ss[ns++] = across[0];
+    if (ramp && hw > 1)
+        ss[ns++] = -(hw - 1), ss[ns++] = hw - 1;
+    else if (ramp)
+        ss[ns++] = 0;
+    ss[ns++] = across[1];
+    /* POV-Ray averages a face's corner textures after their transmit (a
+     * premultiplied colour), GL multiplies the interpolated colour by the
+     * interpolated coverage: where both vary (the rim, colour along it),
+     * the cells are cut short enough that they agree within 2/255. */
+    double dc = 0;
+    for (int q = 0; q < 3; q++)
+        dc = fmax(dc, fabs((double)col[1][q] - col[0][q]));
+    for (int i = 0; i + 1 < nt; i++)
+        for (int j = 0; j + 1 < ns; j++) {
+            bool rim = ramp && (j == 0 || j == ns - 2);
+            bool cap = ramp && (i == 0 || i == nt - 2);
+            double span = (ts[i + 1] - ts[i]) / (2 * hl);
+            int cuts = rim ? (int)ceil(dc * span * 255 / 8) : 1;
+            cuts = cuts < 1 ? 1 : cuts > 64 ? 64 : cuts;
+            /* a rim's corner, where both coverages ramp (their product is
+             * not flat): four cells, within 16/255 */
+            int across_cuts = rim && cap ? 2 : 1;
+            if (rim && cap)
+                cuts = 2;
+            for (int m = 0; m < cuts * across_cuts; m++) {
+            int mt = m / across_cuts, ms = m % across_cuts;
+            double ta = ts[i] + (ts[i + 1] - ts[i]) * mt / cuts;
+            double tb = mt + 1 == cuts ? ts[i + 1] : ts[i] + (ts[i + 1] - ts[i]) * (mt + 1) / cuts;
+            double sa = ss[j] + (ss[j + 1] - ss[j]) * ms / across_cuts;
+            double sb = ms + 1 == across_cuts ? ss[j + 1] : ss[j] + (ss[j + 1] - ss[j]) * (ms + 1) / across_cuts;
+            double tt[4] = {ta, ta, tb, tb};
+            double s4[4] = {sa, sb, sb, sa};
+            double k[4][2];
+            float cc[4][4];
+            for (int v = 0; v < 4; v++) {
+                k[v][0] = mid[0] + tt[v] * c - s4[v] * sn;
+                k[v][1] = mid[1] + tt[v] * sn + s4[v] * c;
+                double u = (tt[v] + hl) / (2 * hl);
+                for (int q = 0; q < 4; q++)
+                    cc[v][q] = (float)(col[0][q] + (col[1][q] - col[0][q]) * u);
+                if (ramp)
+                    cc[v][3] *= (float)(fmin(fmax(hw - fabs(s4[v]), 0), 1) *
+                                        fmin(fmax(hl - fabs(tt[v]), 0), 1));
+            }
+            smooth_quad(ip, f, ax, (const double(*)[2])k, (const float(*)[4])cc);
+            }
+        }
 }
 
 /* The strips of window segment q0-q1 (a part of f's segment) as scene
@@ -313,8 +413,9 @@ static void add_pixels(interp *ip, const interp_line *ln, const seg_frame *f, co
                 l->p[e][k] = (float)pe[e][k];
                 l->half[e][k] = (float)half[e][k];
             }
-            lerp_colour(ln, te[e], l->color[e]);
-            interp_fogsec_eye(ip, pe[e][2], l->color[e]);
+            lerp_colour(ln, te[e], l->color[2 * e]);
+            interp_fogsec_eye(ip, pe[e][2], l->color[2 * e]);
+            memcpy(l->color[2 * e + 1], l->color[2 * e], sizeof l->color[0]);
         }
     }
 }
@@ -339,10 +440,6 @@ void interp_add_line(interp *ip, const interp_line *ln, double *stipple_counter)
     /* t now maps f's fractions to the caller's: colours are the caller's. */
     if (ln->have_win && t[0] == 0 && t[1] == 1)
         memcpy(w, ln->win, sizeof w);
-    if (ln->smooth) {
-        add_smooth(ip, ln, &f, w[0], w[1], t);
-        return;
-    }
     double vr[4], wa, wb;
     viewport_rect(ip, vr);
     if (!ras_clip_line(w, vr, &wa, &wb))
@@ -356,7 +453,10 @@ void interp_add_line(interp *ip, const interp_line *ln, double *stipple_counter)
         for (int e = 0; e < 2; e++)
             for (int k = 0; k < 2; k++)
                 q[e][k] = dash[d][e] == 1 ? w[1][k] : w[0][k] + (w[1][k] - w[0][k]) * dash[d][e];
-        add_pixels(ip, ln, &f, q[0], q[1], t);
+        if (ln->smooth)
+            add_smooth(ip, ln, &f, q[0], q[1], t);
+        else
+            add_pixels(ip, ln, &f, q[0], q[1], t);
     }
 }
 

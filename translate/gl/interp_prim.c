@@ -755,6 +755,7 @@ typedef struct assembly {
     bool stipple;       /* glLineStipple applies (interp_stipple.c) */
     double stipple_s;   /* GL's stipple counter (a float in Mesa) */
     int relit;          /* INTERP_RELIT_*: filled faces lit as GL does (interp_relit.c) */
+    bool lit_edges;     /* outlined (GL_LINE, GL_POINT) lit faces: GL's lit colours, relit_col */
     bool fog_split;     /* triangles behind the eye get their own fog (interp_fogbehind.c) */
     const scene_look *look; /* the mesh's look, and where its vertices are, for fog_split */
     const mat4 *to_eye;
@@ -799,6 +800,16 @@ static bool eye_pos(const interp *ip, const scene_vertex *v, double out[3])
     return isfinite(out[0]) && isfinite(out[1]) && isfinite(out[2]);
 }
 
+/* The colour GL rasterises pool vertex i with: its own, or for an
+ * outlined lit face GL's lit colour (the pool holds the colour POV-Ray
+ * lights a filled face with). */
+static const float *edge_colour(const assembly *as, uint32_t i)
+{
+    if (as->lit_edges)
+        return as->ip->relit_col[i - as->base];
+    return as->s->verts[i].color;
+}
+
 /* A segment of the primitive, between pool vertices i0 and i1, with the
  * colours GL gives it (flat: the provoking vertex's). */
 static void add_segment(assembly *as, uint32_t i0, uint32_t i1, uint32_t provoking)
@@ -813,12 +824,12 @@ static void add_segment(assembly *as, uint32_t i0, uint32_t i1, uint32_t provoki
     if (!eye_pos(ip, v0, ln.p[0]) || !eye_pos(ip, v1, ln.p[1]) ||
         !interp_clip_segment(ip, ln.p[0], ln.p[1], &t[0], &t[1]))
         return;
-    const scene_vertex *c0 = as->flat ? &as->s->verts[provoking] : v0;
-    const scene_vertex *c1 = as->flat ? &as->s->verts[provoking] : v1;
+    const float *c0 = edge_colour(as, as->flat ? provoking : i0);
+    const float *c1 = edge_colour(as, as->flat ? provoking : i1);
     /* cut by a clip plane: the colour there */
     for (int e = 0; e < 2; e++)
         for (int k = 0; k < 4; k++)
-            ln.color[e][k] = (float)(c0->color[k] + (c1->color[k] - c0->color[k]) * t[e]);
+            ln.color[e][k] = (float)(c0[k] + (c1[k] - c0[k]) * t[e]);
     ln.width = as->line_width;
     ln.smooth = as->line_smooth;
     ln.stipple = as->stipple;
@@ -840,7 +851,7 @@ static void add_point(assembly *as, uint32_t i, uint32_t colour_from)
     if (as->point_params)
         size = interp_point_size(&as->ip->st.a, p, &fade);
     float c[4];
-    memcpy(c, as->s->verts[colour_from].color, sizeof c);
+    memcpy(c, edge_colour(as, colour_from), sizeof c);
     c[3] *= (float)fade;
     double win[2];
     bool gl_win = interp_gl_window(as->ip, as->s->verts[i].pos, win);
@@ -1033,6 +1044,7 @@ static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t prov
             fill_tri(as, idx[0], idx[k], idx[k + 1], provoking);
         return;
     }
+    as->stipple_s = 0; /* each polygon restarts the stipple (NOTE_STIPPLE) */
     for (int k = 0; k < n; k++) {
         if (edge_flags && !(ip->edge[idx[k]] & 1))
             continue; /* GL draws only boundary edges (and their vertices) */
@@ -1356,8 +1368,11 @@ static void end_primitive(interp *ip)
     as.swap = a->polygon.front_face == GL_CW;
     as.line_smooth = a->caps[INTERP_CAP_LINE_SMOOTH];
     as.stipple = interp_stipple_on(ip);
-    if (as.stipple && (ip->prim_mode <= GL_LINE_STRIP || a->polygon.mode[0] == GL_LINE ||
-                       a->polygon.mode[1] == GL_LINE))
+    /* Stippled lines are cut as Mesa cuts them (interp_stipple.c); the
+     * edges of outlined polygons restart the pattern where Mesa's own
+     * triangles begin, which the translator does not follow. */
+    if (as.stipple && ip->prim_mode > GL_LINE_STRIP &&
+        (a->polygon.mode[0] == GL_LINE || a->polygon.mode[1] == GL_LINE))
         interp_note(ip, DIAG_NOTE_STIPPLE);
     as.point_smooth = a->caps[INTERP_CAP_POINT_SMOOTH];
     as.line_width = a->line.width;
@@ -1421,6 +1436,13 @@ static void end_primitive(interp *ip)
     as.relit = interp_relit_split(ip, &look);
     if (as.relit && as.relit != INTERP_RELIT_PROBE && !interp_relit_need_clear(ip, n))
         as.relit = 0;
+    /* Outlined faces lit: GL lights their vertices (one-sided lighting;
+     * interp_relit.c keeps what that needs). */
+    if (look.lit && (a->polygon.mode[0] != GL_FILL || a->polygon.mode[1] != GL_FILL) &&
+        interp_relit_wanted(ip)) {
+        interp_relit_flush(ip);
+        as.lit_edges = ip->relit_made >= n && ip->relit_col;
+    }
     bool filled = !as.check_bad && a->polygon.mode[0] == GL_FILL;
     if (filled && !as.facing && !as.relit)
         assemble_filled(&as, mode, n);

@@ -63,6 +63,6 @@ size_t interp_stipple_dashes(const interp *ip, const double w0[2], const double 
         dash[k][1] = 1;
         k++;
     }
-    *counter = (double)((float)*counter + len);
+    *counter = (double)((float)*counter + ceilf(len));
     return k;
 }

@@ -237,7 +237,7 @@ static int write_lines(povwriter *w, outbuf *ob, const scene *s)
             c[2][k] = l->p[1][k] + l->half[1][k];
             c[3][k] = l->p[1][k] - l->half[1][k];
         }
-        const float *col[4] = {l->color[0], l->color[0], l->color[1], l->color[1]};
+        const float *col[4] = {l->color[0], l->color[1], l->color[2], l->color[3]};
         if (add_quad(w, c, col) != 0)
             return -1;
     }

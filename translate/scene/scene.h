@@ -127,7 +127,9 @@ typedef struct scene_instance {
 typedef struct scene_line {
     float p[2][3];
     float half[2][3];
-    float color[2][4]; /* equal when flat shaded */
+    /* at the corners p[0] - half[0], p[0] + half[0], p[1] + half[1],
+     * p[1] - half[1]; all equal when flat shaded */
+    float color[4][4];
 } scene_line;
 
 /* A rectangle of a point's pixels in eye space, at the point's depth
