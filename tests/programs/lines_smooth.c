@@ -4,7 +4,9 @@
  * smooth colours along them, and the same without blending. Mesa draws a
  * rectangle max(1, w / 2 + 1/2) to each side of the line and half a
  * pixel longer at each end, every pixel in it, and puts the coverage in
- * alpha: blended, the rim fades out over its last pixel. */
+ * alpha: blended, the rim fades out over its last pixel. The spokes start
+ * 18 pixels out, where the widest do not overlap (blended parts of one
+ * draw over each other in one plane are the depth note's business). */
 #include "harness.h"
 
 #include <math.h>
@@ -18,7 +20,7 @@ static void fan(float cx, float cy, float width)
     for (int i = 0; i < 12; i++) {
         double a = (i * 15.0 + 3.0) * 3.14159265358979 / 180.0;
         glColor3f(1.0f, 0.9f, 0.3f);
-        glVertex2f(cx + (float)(8 * cos(a)), cy + (float)(8 * sin(a)));
+        glVertex2f(cx + (float)(18 * cos(a)), cy + (float)(18 * sin(a)));
         glColor3f(0.3f, 0.6f, 1.0f);
         glVertex2f(cx + (float)(45 * cos(a)), cy + (float)(45 * sin(a)));
     }

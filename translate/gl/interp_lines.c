@@ -368,10 +368,60 @@ static void add_smooth(interp *ip, const interp_line *ln, const seg_frame *f, co
         }
 }
 
-/* The strips of window segment q0-q1 (a part of f's segment) as scene
- * lines; t maps f's fractions to the caller's, whose colours they are. */
+/* One strip of a line: along the major axis from m[0] to m[1], with
+ * the piece's minor edges, GL's colour at each end (fraction te of the
+ * caller's segment, or, where flat, the colour at fraction te[0]). */
+static void add_strip(interp *ip, const interp_line *ln, const seg_frame *f, int ax,
+                      double slope, const ras_piece *pc, const double m[2], const double te[2],
+                      bool flat)
+{
+    const scene_camera *cam = f->cam;
+    double pe[2][3], half[2][3], r[3], up[3];
+    image_axes(cam, r, up);
+    for (int e = 0; e < 2; e++) {
+        double mid = slope * m[e] + (pc->lo + pc->hi) * 0.5;
+        double x = ax == 0 ? m[e] : mid, y = ax == 0 ? mid : m[e], px, py;
+        if (!eye_at(f, seg_at(f, ax, m[e]), x, y, pe[e], &px, &py))
+            return;
+        double h = (pc->hi - pc->lo) * 0.5;
+        for (int k = 0; k < 3; k++)
+            half[e][k] = ax == 0 ? h * py * up[k] : h * px * r[k];
+    }
+    scene_line *l = scene_add_line(ip->scene);
+    if (!l)
+        return;
+    for (int e = 0; e < 2; e++) {
+        for (int k = 0; k < 3; k++) {
+            l->p[e][k] = (float)pe[e][k];
+            l->half[e][k] = (float)half[e][k];
+        }
+        lerp_colour(ln, flat ? te[0] : te[e], l->color[2 * e]);
+        if (flat)
+            for (int k = 0; k < 3; k++)
+                l->color[2 * e][k] = fminf(fmaxf(l->color[2 * e][k], 0), 1);
+        interp_fogsec_eye(ip, pe[e][2], l->color[2 * e]);
+        memcpy(l->color[2 * e + 1], l->color[2 * e], sizeof l->color[0]);
+    }
+}
+
+static bool colour_out(const interp_line *ln, double te)
+{
+    float c[4];
+    lerp_colour(ln, te, c);
+    return c[0] < 0 || c[0] > 1 || c[1] < 0 || c[1] > 1 || c[2] < 0 || c[2] > 1;
+}
+
+/* The strips of window segment q0-q1 (a part of f's segment, whose
+ * fractions uq its ends are) as scene lines; t maps f's fractions to the
+ * caller's, whose colours they are. A strip ends on the segment's end
+ * where that lies between the last pixel centre lit and the next (its
+ * colour is then the vertex's own, and the colours of a frame's lines
+ * stay few), else on the pixel edge. GL's colour along a line follows
+ * the major axis, carried on past an end and clamped per pixel; where
+ * that leaves [0, 1] at a strip's end, the end pixel gets a strip of its
+ * own in the colour GL gives its centre. */
 static void add_pixels(interp *ip, const interp_line *ln, const seg_frame *f, const double q0[2],
-                       const double q1[2], const double t[2])
+                       const double q1[2], const double uq[2], const double t[2])
 {
     const scene_camera *cam = f->cam;
     size_t room = (size_t)(cam->width > cam->height ? cam->width : cam->height) + 2;
@@ -386,37 +436,43 @@ static void add_pixels(interp *ip, const interp_line *ln, const seg_frame *f, co
     int ax = rl.axis;
     double dmaj = q1[ax] - q0[ax], slope = dmaj != 0 ? (q1[1 - ax] - q0[1 - ax]) / dmaj : 0;
     size_t np = ras_line_pieces(&rl, ip->ras_runs, slope, ip->ras_pieces, room);
-    double r[3], up[3];
-    image_axes(cam, r, up);
+    /* the dash's ends, lower major coordinate first */
+    int lo_end = q0[ax] <= q1[ax] ? 0 : 1;
+    const double *qe[2] = {lo_end ? q1 : q0, lo_end ? q0 : q1};
+    double ue[2] = {uq[lo_end], uq[1 - lo_end]};
     for (size_t i = 0; i < np; i++) {
         const ras_piece *pc = &ip->ras_pieces[i];
-        double pe[2][3], half[2][3], te[2];
-        bool ok = true;
-        for (int e = 0; e < 2 && ok; e++) {
-            double m = e == 0 ? pc->a : pc->b, mid = slope * m + (pc->lo + pc->hi) * 0.5;
-            double x = ax == 0 ? m : mid, y = ax == 0 ? mid : m, px, py;
-            double u = seg_at(f, ax, m);
-            ok = eye_at(f, u, x, y, pe[e], &px, &py);
-            double h = (pc->hi - pc->lo) * 0.5;
-            for (int k = 0; k < 3; k++)
-                half[e][k] = ax == 0 ? h * py * up[k] : h * px * r[k];
-            /* GL's colour along a line follows the major axis only. */
+        double m[2] = {pc->a, pc->b}, te[2];
+        bool at_vertex[2] = {false, false};
+        for (int e = 0; e < 2; e++) {
+            bool outer = e == 0 ? i == 0 : i + 1 == np;
+            double v = qe[e][ax], edge = m[e];
+            if (outer && v >= edge - 0.5 + RAS_MARGIN && v <= edge + 0.5 - RAS_MARGIN) {
+                m[e] = v;
+                at_vertex[e] = true;
+            }
+            double u = at_vertex[e] ? ue[e] : seg_at(f, ax, m[e]);
             te[e] = isfinite(u) ? t[0] + (t[1] - t[0]) * u : t[e];
         }
-        if (!ok)
-            continue;
-        scene_line *l = scene_add_line(ip->scene);
-        if (!l)
-            return;
+        /* an end strip carried out of [0, 1]: its end pixel alone */
+        bool cut[2] = {false, false};
+        for (int e = 0; e < 2; e++)
+            cut[e] = !at_vertex[e] && pc->b - pc->a > (cut[0] ? 1 : 0) && colour_out(ln, te[e]);
+        double mm[2] = {m[0], m[1]}, tm[2] = {te[0], te[1]};
         for (int e = 0; e < 2; e++) {
-            for (int k = 0; k < 3; k++) {
-                l->p[e][k] = (float)pe[e][k];
-                l->half[e][k] = (float)half[e][k];
-            }
-            lerp_colour(ln, te[e], l->color[2 * e]);
-            interp_fogsec_eye(ip, pe[e][2], l->color[2 * e]);
-            memcpy(l->color[2 * e + 1], l->color[2 * e], sizeof l->color[0]);
+            if (!cut[e])
+                continue;
+            double px0 = e == 0 ? pc->a : pc->b - 1, px1 = px0 + 1, c = px0 + 0.5;
+            double u = seg_at(f, ax, c), tc[2];
+            tc[0] = tc[1] = isfinite(u) ? t[0] + (t[1] - t[0]) * u : te[e];
+            double me[2] = {px0, px1};
+            add_strip(ip, ln, f, ax, slope, pc, me, tc, true);
+            mm[e] = e == 0 ? px1 : px0;
+            double uu = seg_at(f, ax, mm[e]);
+            tm[e] = isfinite(uu) ? t[0] + (t[1] - t[0]) * uu : te[e];
         }
+        if (mm[1] > mm[0])
+            add_strip(ip, ln, f, ax, slope, pc, mm, tm, false);
     }
 }
 
@@ -448,15 +504,20 @@ void interp_add_line(interp *ip, const interp_line *ln, double *stipple_counter)
     size_t nd = 1;
     if (ln->stipple)
         nd = interp_stipple_dashes(ip, w[0], w[1], stipple_counter, dash, INTERP_STIPPLE_DASHES);
+    int ax = fabs(w[1][0] - w[0][0]) >= fabs(w[1][1] - w[0][1]) ? 0 : 1;
     for (size_t d = 0; d < nd; d++) {
-        double q[2][2];
-        for (int e = 0; e < 2; e++)
+        double q[2][2], uq[2];
+        for (int e = 0; e < 2; e++) {
             for (int k = 0; k < 2; k++)
                 q[e][k] = dash[d][e] == 1 ? w[1][k] : w[0][k] + (w[1][k] - w[0][k]) * dash[d][e];
+            /* f's own ends exactly, else where the window point falls */
+            bool end0 = dash[d][e] == 0 && wa == 0, end1 = dash[d][e] == 1 && wb == 1;
+            uq[e] = end0 ? 0 : end1 ? 1 : seg_at(&f, ax, q[e][ax]);
+        }
         if (ln->smooth)
             add_smooth(ip, ln, &f, q[0], q[1], t);
         else
-            add_pixels(ip, ln, &f, q[0], q[1], t);
+            add_pixels(ip, ln, &f, q[0], q[1], uq, t);
     }
 }
 
