@@ -12,10 +12,16 @@
  * centre are left out: Mesa's float rounding decides those (rasterise.h).
  * The frame is 256 x 128 under glOrtho(0, 256, 0, 128): window
  * coordinates are then exact in float, as the translator's are in double.
+ * Then N/2 short lines with decimal ends (0.1 steps: GL's float puts many
+ * within a rounding of a pixel edge or a diamond's corner) in a 320 x 240
+ * frame under gluOrtho2D, once with an identity modelview and once scaled
+ * and turned, their window positions taken from ras_window (Mesa's float
+ * transform) with the matrices GL reports.
  */
 #include <GL/osmesa.h>
 
 #include <GL/gl.h>
+#include <GL/glu.h>
 
 #include <math.h>
 #include <stdio.h>
@@ -156,11 +162,75 @@ static int check_points(int n, bool round, ras_run *rows)
     return bad;
 }
 
+/* Lines with decimal ends under a transform GL computes in float. */
+static int check_float_ends(int n, bool turned, ras_run *runs)
+{
+    enum { FW = 320, FH = 240 };
+    static unsigned char buf[FW * FH * 4], rgb[FW * FH * 4], gl[FW * FH], model[FW * FH];
+    if (!OSMesaMakeCurrent(OSMesaGetCurrentContext(), buf, GL_UNSIGNED_BYTE, FW, FH))
+        return 1;
+    glViewport(0, 0, FW, FH);
+    glLineWidth(1);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    gluOrtho2D(0, FW, 0, FH);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    float sx = 1, sy = 1;
+    if (turned) {
+        glTranslatef(6.3f, 17.7f, 0);
+        glScalef(0.13f, 0.17f, 1);
+        glRotatef(15, 0, 0, 1);
+        sx = 0.13f, sy = 0.17f;
+    }
+    float proj[16], mv[16];
+    glGetFloatv(GL_PROJECTION_MATRIX, proj);
+    glGetFloatv(GL_MODELVIEW_MATRIX, mv);
+    int bad = 0;
+    for (int i = 0; i < n; i++) {
+        float a[3] = {(20 + (float)(next() % 2400) * 0.1f) / sx, (20 + (float)(next() % 1600) * 0.1f) / sy, 0};
+        double len = 0.2 + (next() % 30) * 0.1, ang = (next() % 180) * 3.14159265358979 / 90;
+        float b[3] = {(float)(a[0] + len * cos(ang) / sx), (float)(a[1] + len * sin(ang) / sy), 0};
+        glClear(GL_COLOR_BUFFER_BIT);
+        glBegin(GL_LINES);
+        glVertex2f(a[0], a[1]);
+        glVertex2f(b[0], b[1]);
+        glEnd();
+        glFinish();
+        glReadPixels(0, 0, FW, FH, GL_RGBA, GL_UNSIGNED_BYTE, rgb);
+        for (int k = 0; k < FW * FH; k++)
+            gl[k] = rgb[4 * k] > 128;
+        memset(model, 0, sizeof model);
+        double wa[2], wb[2];
+        ras_line l;
+        if (ras_window(proj, mv, FW, FH, a, wa) && ras_window(proj, mv, FW, FH, b, wb) &&
+            ras_line_pixels(wa[0], wa[1], wb[0], wb[1], 1, FW, FH, &l, runs, FW + FH))
+            for (size_t k = 0; k < l.count; k++)
+                for (int32_t m = runs[k].lo; m <= runs[k].hi; m++) {
+                    int32_t x = l.axis == 0 ? l.first + (int32_t)k : m;
+                    int32_t y = l.axis == 0 ? m : l.first + (int32_t)k;
+                    if (x >= 0 && x < FW && y >= 0 && y < FH)
+                        model[y * FW + x] = 1;
+                }
+        int d = 0;
+        for (int k = 0; k < FW * FH; k++)
+            d += gl[k] != model[k];
+        if (d) {
+            if (bad < 6)
+                printf("  float ends%s: line %.9g,%.9g - %.9g,%.9g: %d pixels differ\n",
+                       turned ? " (turned)" : "", a[0], a[1], b[0], b[1], d);
+            bad++;
+        }
+    }
+    printf("lines with decimal ends%s: %d of %d differ\n", turned ? ", turned" : "", bad, n);
+    return bad;
+}
+
 int main(int argc, char **argv)
 {
     int n = argc > 1 ? atoi(argv[1]) : 4000;
     static unsigned char buf[W * H * 4];
-    static ras_run runs[W + H];
+    static ras_run runs[320 + 240];
     OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
     if (!ctx || !OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, W, H)) {
         fprintf(stderr, "rascheck: no OSMesa context\n");
@@ -179,6 +249,8 @@ int main(int argc, char **argv)
     printf("lines: %d of %d differ\n", bad, n);
     bad += check_points(n / 2, false, runs);
     bad += check_points(n / 2, true, runs);
+    bad += check_float_ends(n / 2, false, runs);
+    bad += check_float_ends(n / 2, true, runs);
     OSMesaDestroyContext(ctx);
     printf("%s\n", bad ? "FAIL" : "PASS");
     return bad ? 1 : 0;

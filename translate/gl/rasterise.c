@@ -297,6 +297,42 @@ bool ras_line_pixels(double x0, double y0, double x1, double y1, double width, i
     return true;
 }
 
+/* a0 v0 + a1 v1 + a2 v2 + a3 v3 in float, left to right, one operation a
+ * statement (clang fuses a multiply and an add within one). */
+static float dot4_f32(float a0, float a1, float a2, float a3, const float v[4])
+{
+    float s = a0 * v[0], t = a1 * v[1];
+    s = s + t;
+    t = a2 * v[2];
+    s = s + t;
+    t = a3 * v[3];
+    s = s + t;
+    return s;
+}
+
+bool ras_window(const float proj[16], const float mv[16], int32_t w, int32_t h,
+                const float obj[3], double out[2])
+{
+    float mvp[16], c[4], one[4] = {obj[0], obj[1], obj[2], 1};
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++)
+            mvp[4 * j + i] = dot4_f32(proj[i], proj[4 + i], proj[8 + i], proj[12 + i], &mv[4 * j]);
+    for (int i = 0; i < 4; i++)
+        c[i] = dot4_f32(mvp[i], mvp[4 + i], mvp[8 + i], mvp[12 + i], one);
+    if (!(c[3] > 0))
+        return false;
+    float inv = 1.0f / c[3];
+    float sx = (float)w * 0.5f, sy = -(float)h * 0.5f, ty = (float)h * 0.5f;
+    float x = c[0] * inv, y = c[1] * inv;
+    x = fmaf(x, sx, sx);
+    y = fmaf(y, sy, ty);
+    if (!isfinite(x) || !isfinite(y))
+        return false;
+    out[0] = x;
+    out[1] = (double)h - (double)y;
+    return true;
+}
+
 bool ras_clip_line(double p[2][2], const double r[4], double *t0, double *t1)
 {
     double ta = 0, tb = 1, d[2] = {p[1][0] - p[0][0], p[1][1] - p[0][1]};

@@ -43,6 +43,16 @@ typedef struct ras_line {
 bool ras_line_pixels(double x0, double y0, double x1, double y1, double width, int32_t frame_w,
                      int32_t frame_h, ras_line *out, ras_run *runs, size_t max);
 
+/* The window position of object point obj (GL's frame, origin at the
+ * viewport's lower left) as Mesa computes it, for the rules above to see
+ * the rounding Mesa's do: proj and mv as GL holds them (column-major, in
+ * float), multiplied in float row by column, the vertex transformed the
+ * same way without fused operations, divided by w, and put through the
+ * viewport (w x h) as one fused multiply-add in Mesa's frame, whose y runs
+ * down. False when w <= 0 or a result is not finite. */
+bool ras_window(const float proj[16], const float mv[16], int32_t w, int32_t h,
+                const float obj[3], double out[2]);
+
 /* Clips the segment from p[0] to p[1] to the rectangle [r[0], r[2]] x
  * [r[1], r[3]] (the sides of GL's view volume in the window), as GL clips
  * before it rasterises; an end moved lands exactly on its side. *t0, *t1:
