@@ -197,15 +197,36 @@ static void quad_edges(const quad *q, edges *e)
     }
 }
 
-/* Pixel (i, j) of Mesa's frame: its centre sits at (i, j) * FIX once the
- * quad is shifted by half a pixel. */
-static bool inside(const edges *e, int64_t i, int64_t j)
+/* The minor indices (Mesa's) of the pixels inside the quad at major
+ * index k. Pixel (i, j)'s centre sits at (i, j) * FIX once the quad is
+ * shifted by half a pixel; each edge's test c - dcdx X + dcdy Y > 0 there
+ * is linear in the minor index, so it bounds it on one side, or holds or
+ * fails for the whole column (row). Empty when *lo > *hi. */
+static void minor_span(const edges *e, int ax, int64_t k, int64_t *lo, int64_t *hi)
 {
-    int64_t x = i * FIX, y = j * FIX;
-    for (int k = 0; k < 4; k++)
-        if (e->c[k] - e->dcdx[k] * x + e->dcdy[k] * y <= 0)
-            return false;
-    return true;
+    *lo = INT64_MIN / 4;
+    *hi = INT64_MAX / 4;
+    for (int n = 0; n < 4; n++) {
+        /* a * j > b, j the minor index */
+        int64_t a, b;
+        if (ax == 0) {
+            a = e->dcdy[n] * FIX;
+            b = e->dcdx[n] * k * FIX - e->c[n];
+        } else {
+            a = -e->dcdx[n] * FIX;
+            b = -e->dcdy[n] * k * FIX - e->c[n];
+        }
+        if (a > 0) {
+            int64_t j = floor_div(b, a) + 1;
+            *lo = j > *lo ? j : *lo;
+        } else if (a < 0) {
+            int64_t j = -floor_div(b, -a) - 1; /* j < b / a */
+            *hi = j < *hi ? j : *hi;
+        } else if (b >= 0) {
+            *lo = 1, *hi = 0;
+            return;
+        }
+    }
 }
 
 static int64_t min4(const int64_t v[4])
@@ -237,8 +258,8 @@ bool ras_line_pixels(double x0, double y0, double x1, double y1, double width, i
     /* Mesa: the width at least 1, rounded half away from zero. */
     float wf = (float)width;
     int64_t wpix = round_away(wf > 1 ? wf : 1.0f);
-    if (wpix > 1024)
-        wpix = 1024;
+    if (wpix > 255)
+        wpix = 255; /* GL_ALIASED_LINE_WIDTH_RANGE's top in Mesa */
     /* Mesa's frame: flipped in double, then rounded once (a caller that
      * holds Mesa's own float y there gets it back exactly). */
     float a[2] = {(float)x0, (float)((double)frame_h - y0)};
@@ -249,7 +270,7 @@ bool ras_line_pixels(double x0, double y0, double x1, double y1, double width, i
     edges e;
     quad_edges(&q, &e);
     int ax = q.axis;
-    const int64_t *maj = ax == 0 ? q.x : q.y, *mnr = ax == 0 ? q.y : q.x;
+    const int64_t *maj = ax == 0 ? q.x : q.y;
     int64_t lo = floor_div(min4(maj), FIX) - 1, hi = floor_div(max4(maj), FIX) + 1;
     int64_t size = ax == 0 ? frame_w : frame_h;
     /* Mesa's rows count from the top: GL's major index is size - 1 - it. */
@@ -260,23 +281,18 @@ bool ras_line_pixels(double x0, double y0, double x1, double y1, double width, i
         return false;
     if ((uint64_t)(ghi - glo + 1) > max)
         return false;
-    /* The minor edge through corners 0 and 1 at a major index. */
-    double m0 = (double)maj[0], m1 = (double)maj[1], n0 = (double)mnr[0], n1 = (double)mnr[1];
     size_t count = 0;
     int32_t first = -1;
     for (int64_t g = glo; g <= ghi; g++) {
         int64_t k = ax == 0 ? g : size - 1 - g; /* Mesa's index */
-        double t = m1 != m0 ? ((double)(k * FIX) - m0) / (m1 - m0) : 0;
-        int64_t guess = (int64_t)floor((n0 + (n1 - n0) * t) / FIX);
+        int64_t lo_m, hi_m;
+        minor_span(&e, ax, k, &lo_m, &hi_m);
         int32_t rlo = INT32_MAX, rhi = INT32_MIN;
-        for (int64_t r = guess - 2; r <= guess + wpix + 2; r++) {
-            bool in = ax == 0 ? inside(&e, k, r) : inside(&e, r, k);
-            if (!in)
-                continue;
+        if (lo_m <= hi_m) {
             /* GL's minor index: rows flip, columns do not. */
-            int64_t gr = ax == 0 ? frame_h - 1 - r : r;
-            rlo = gr < rlo ? (int32_t)gr : rlo;
-            rhi = gr > rhi ? (int32_t)gr : rhi;
+            int64_t a0 = ax == 0 ? frame_h - 1 - hi_m : lo_m, a1 = ax == 0 ? frame_h - 1 - lo_m : hi_m;
+            if (a0 >= INT32_MIN && a1 <= INT32_MAX)
+                rlo = (int32_t)a0, rhi = (int32_t)a1;
         }
         if (rlo > rhi) {
             if (first >= 0)
