@@ -5,10 +5,11 @@
  * moved to the diamond-exit rule's ends and made w pixels tall (x-major)
  * or wide (y-major), each edge half-open as the triangle fill rule says.
  * Mesa's frame runs y down from the top with the "bottom-left" rule; the
- * pixels are tested there and turned into GL's rows at the end. Checked
- * against Mesa 22.3 (llvmpipe) pixel for pixel on 20000 random lines of
- * widths 1 to 5 (ends on the 1/16 and 1/4096 grids and whole pixels, many
- * ties) and 8000 points, square and round.
+ * pixels are found there and turned into GL's rows at the end. Held to
+ * Mesa 22.3 (llvmpipe) pixel for pixel by the test rasterise-mesa
+ * (tests/image/rascheck.c): random lines of widths 1 to 5 with ends on
+ * whole pixels and the 1/4, 1/16 and 1/4096 grids, lines with decimal
+ * ends through ras_window, square and round points.
  */
 #include "rasterise.h"
 
