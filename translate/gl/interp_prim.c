@@ -1438,10 +1438,13 @@ static void end_primitive(interp *ip)
         as.relit = 0;
     /* Outlined faces lit: GL lights their vertices (one-sided lighting;
      * interp_relit.c keeps what that needs). */
-    if (look.lit && (a->polygon.mode[0] != GL_FILL || a->polygon.mode[1] != GL_FILL) &&
-        interp_relit_wanted(ip)) {
-        interp_relit_flush(ip);
-        as.lit_edges = ip->relit_made >= n && ip->relit_col;
+    if (look.lit && (a->polygon.mode[0] != GL_FILL || a->polygon.mode[1] != GL_FILL)) {
+        if (interp_relit_wanted(ip)) {
+            interp_relit_flush(ip);
+            as.lit_edges = ip->relit_made >= n && ip->relit_col;
+        }
+        if (!as.lit_edges)
+            interp_note(ip, DIAG_NOTE_LIT_OUTLINE);
     }
     bool filled = !as.check_bad && a->polygon.mode[0] == GL_FILL;
     if (filled && !as.facing && !as.relit)
