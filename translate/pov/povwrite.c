@@ -219,8 +219,8 @@ static int write_bands(povwriter *w, outbuf *ob)
     return povmesh2_write(w, ob, w->bverts, w->btris, w->nbtris, &look, NULL);
 }
 
-/* Lines: one mesh2 of flat quads in eye space (see scene.h: each is the
- * band GL rasterises). */
+/* Lines: one mesh2 of flat quads in eye space (scene.h: the strips that
+ * cover GL's pixels). */
 static int write_lines(povwriter *w, outbuf *ob, const scene *s)
 {
     w->nbverts = w->nbtris = 0;
@@ -237,7 +237,7 @@ static int write_lines(povwriter *w, outbuf *ob, const scene *s)
             c[2][k] = l->p[1][k] + l->half[1][k];
             c[3][k] = l->p[1][k] - l->half[1][k];
         }
-        const float *col[4] = {l->color[0], l->color[0], l->color[1], l->color[1]};
+        const float *col[4] = {l->color[0], l->color[1], l->color[2], l->color[3]};
         if (add_quad(w, c, col) != 0)
             return -1;
     }
@@ -274,36 +274,16 @@ static void scene_anchor(const scene *s, float out[3])
         }
 }
 
-/* Points: squares as one mesh2, round ones as discs facing the camera.
- * They stay outside the near/far clip: the interpreter kept only points
- * whose centres GL would draw, and GL then draws them whole. */
+/* Points: their rectangles as one mesh2. They stay outside the near/far
+ * clip: the interpreter kept only points whose centres GL would draw, and
+ * GL then draws them whole. */
 static int write_points(povwriter *w, outbuf *ob, const scene *s)
 {
-    const scene_camera *cam = &s->camera;
     w->nbverts = w->nbtris = 0;
     for (size_t i = 0; i < s->npoints; i++) {
         const scene_point *pt = &s->points[i];
         if (!finite3f(pt->p) || !finite3f(pt->right) || !finite3f(pt->up))
             continue;
-        if (pt->round) {
-            float r = sqrtf(pt->up[0] * pt->up[0] + pt->up[1] * pt->up[1] + pt->up[2] * pt->up[2]);
-            double n[3];
-            for (int k = 0; k < 3; k++)
-                n[k] = cam->kind == SCENE_CAMERA_ORTHOGRAPHIC ? -cam->direction[k]
-                                                              : cam->location[k] - pt->p[k];
-            if (!(r > 0) || !isfinite(r) || !finite3d(n) || (n[0] == 0 && n[1] == 0 && n[2] == 0))
-                continue;
-            outbuf_puts(ob, "disc{");
-            put_vec3f(ob, pt->p);
-            outbuf_putc(ob, ',');
-            put_vec3d(ob, n);
-            outbuf_putc(ob, ',');
-            outbuf_f32(ob, r);
-            outbuf_putc(ob, ' ');
-            povwrite_unlit_texture(ob, pt->color);
-            outbuf_puts(ob, w->light.opt.no_shadows ? " no_shadow}\n" : "}\n");
-            continue;
-        }
         static const int sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
         float c[4][3];
         for (int v = 0; v < 4; v++)
