@@ -54,13 +54,16 @@ QUERIES = {
 QUERY_PREFIXES = ("glGet", "glIs", "gluGet", "glutGet")
 
 
-# Seen through by libraygl-preload.so: not interposed (no ldscript line,
-# and its lookups hand out the real function), so that the gl* calls they
-# make reach the recorder as the program's (freeglut draws bitmap text
-# with glBitmap, a recorded row: docs/design.md "What is not recorded").
-# Their twins still count them for the drop-in header, where freeglut's
-# glBitmap calls go to libGL unrecorded.
-SEEN_THROUGH = {"glutBitmapCharacter", "glutBitmapString"}
+# Seen through: GLUT's text. libraygl-preload.so does not interpose them
+# (no ldscript line, and its lookups hand out the real function), so that
+# the gl* calls freeglut draws the text with reach the recorder as the
+# program's (glBitmap for bitmap text, line strips for stroke text:
+# docs/design.md "What is not recorded"). Their libraygl twins (the
+# drop-in header) raise the flag under which freeglut's own calls of those
+# names reach the raygl* twins (record/gluttext.c), and count the call
+# only where that cannot be done.
+SEEN_THROUGH = {"glutBitmapCharacter", "glutBitmapString", "glutStrokeCharacter",
+                "glutStrokeString"}
 
 
 def is_query(name):
@@ -239,9 +242,17 @@ def out_twins(es):
         print()
         print("RGL_EXPORT %s" % proto(e, twin_name(e.name)))
         print("{")
-        print("    rgl_unrecorded_count(%d);" % i)
-        ret = "" if e.ret == "void" else "return "
-        print("    %s%s(%s);" % (ret, e.name, call_args(e)))
+        if e.seen_through:
+            assert e.ret == "void", e.name
+            print("    int seen = rgl_glut_text_enter();")
+            print("    if (!seen)")
+            print("        rgl_unrecorded_count(%d);" % i)
+            print("    %s(%s);" % (e.name, call_args(e)))
+            print("    rgl_glut_text_leave(seen);")
+        else:
+            print("    rgl_unrecorded_count(%d);" % i)
+            ret = "" if e.ret == "void" else "return "
+            print("    %s%s(%s);" % (ret, e.name, call_args(e)))
         print("}")
         print("RGL_SAME_TYPE(%s, %s);" % (e.name, twin_name(e.name)))
     print()
