@@ -119,7 +119,7 @@ step out/povray.log "rendering out/frames/frame-00002.ini with POV-Ray (log out/
 
 say "done in $(($(date +%s) - start)) s"
 say "RayGL is installed in $prefix: raygl, raygl2pov, raygl-render, raygl-compare,"
-say "man raygl2pov, pkg-config raygl; tools/uninstall.sh removes it"
+say "man raygl2pov, pkg-config raygl; ${SUDO:+sudo }tools/uninstall.sh removes it"
 say "the trace: out/cube.raygl (raygl2pov --dump out/cube.raygl | less: every call)"
 say "the ray-traced frame: out/frames/frame-00002.png"
 if [ -n "$envlines" ]; then
