@@ -96,7 +96,7 @@ static struct recorder {
      * RAYGL_SIGNAL=SIG (only the first frame ending after each signal). */
     rgl_frame_range sel[RGL_SEL_MAX];
     size_t nsel;
-    uint64_t sel_end; /* the last frame kept, UINT64_MAX: none */
+    uint64_t sel_end; /* the last frame it can keep; UINT64_MAX: no end */
     int sel_signal;
     _Atomic bool sel_armed;
 
@@ -884,9 +884,8 @@ static void stream_free(rgl_stream *s)
     rgl_free(s);
 }
 
-/* Whether the frame the program ended as its `shown`th (from 0) is kept.
- * A dropped frame costs nothing in the file: every frame starts with the
- * resolved state, and lists and textures are resources. */
+/* Whether RAYGL_FRAMES (with RAYGL_EVERY) selects the program's
+ * `shown`th frame (from 0). */
 static bool in_selection(uint64_t shown)
 {
     for (size_t i = 0; i < g.nsel; i++)
@@ -895,6 +894,9 @@ static bool in_selection(uint64_t shown)
     return false;
 }
 
+/* Whether the frame the program ended as its `shown`th (from 0) is kept.
+ * A dropped frame costs nothing in the file: every frame starts with the
+ * resolved state, and lists and textures are resources. */
 static bool frame_selected(uint32_t shown)
 {
     if (!in_selection(shown))
