@@ -28,9 +28,11 @@ mkdir "$t/stub"
 printf '#!/bin/sh\necho ran >>"%s"\n' "$t/ldconfig.ran" >"$t/stub/ldconfig"
 chmod +x "$t/stub/ldconfig"
 
-# Without the rights to remove them (as nobody, where root can switch).
+# Without the rights to remove them (as nobody, where root can switch; a
+# copy of the script, which a source tree in a private folder hides).
 if [ "$(id -u)" -eq 0 ] && command -v setpriv >/dev/null 2>&1; then
-    setpriv --reuid=65534 --regid=65534 --clear-groups env PATH="$t/stub:$PATH" sh "$un" "$shadow" \
+    cp "$un" "$t/uninstall.sh" && chmod 644 "$t/uninstall.sh" || fail "copy $un"
+    setpriv --reuid=65534 --regid=65534 --clear-groups env PATH="$t/stub:$PATH" sh "$t/uninstall.sh" "$shadow" \
         >"$t/out" 2>&1
     rc=$?
     [ $rc -eq 1 ] || { cat "$t/out"; fail "without the rights: exit $rc, expected 1"; }
