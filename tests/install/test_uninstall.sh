@@ -20,6 +20,7 @@ chmod 755 "$t"
 . "$(dirname "$0")/stage.sh"
 dest=$t/dest
 shadow=$t/build
+mkdir "$dest" || exit 1 # not the install's: it stays
 stage_install "$build" "$shadow" "$dest" || { cat "$shadow.install.log"; fail "staged install failed"; }
 root=$dest$prefix
 [ -f "$root/bin/raygl2pov" ] && [ -d "$root/$libdir/raygl" ] && [ -d "$root/include/raygl" ] &&
@@ -45,6 +46,7 @@ fi
 PATH="$t/stub:$PATH" sh "$un" "$shadow" >"$t/out" 2>&1
 rc=$?
 [ $rc -eq 0 ] || { cat "$t/out"; fail "exit $rc"; }
+[ -d "$dest" ] || fail "$dest, made before the install, was removed"
 left=$(cd "$dest" && find . -mindepth 1 | head -n 5)
 [ -z "$left" ] || { cat "$t/out"; fail "left under $dest: $left"; }
 grep -q '^uninstall: removed [1-9][0-9]* files and [1-9][0-9]* folders' "$t/out" ||
