@@ -703,6 +703,44 @@ static void put_ini_value(outbuf *ob, const char *a, const char *b)
     outbuf_putc(ob, '\n');
 }
 
+/* dir inside an SDL string: a backslash escapes (quotes and control
+ * characters never reach here: pov_ini_path_ok). */
+static void put_sdl_path(outbuf *ob, const char *dir)
+{
+    for (const char *p = dir; *p; p++) {
+        if (*p == '\\')
+            outbuf_putc(ob, '\\');
+        outbuf_putc(ob, *p);
+    }
+}
+
+int pov_write_folder_check(outbuf *ob, const char *dir)
+{
+    if (!pov_ini_path_ok(dir))
+        return -1;
+    size_t dl = strlen(dir);
+    const char *sep = dl > 0 && dir[dl - 1] == '/' ? "" : "/";
+    outbuf_puts(ob, "// Written by raygl2pov, read first by every .ini of this folder\n"
+                    "// (Include_Header): their paths are relative to the folder raygl2pov\n"
+                    "// ran in, and POV-Ray reads INI paths from the current folder. Run\n"
+                    "// from anywhere else, the render stops here and says so.\n"
+                    "#ifndef (" POV_RENDER_DECLARE ")\n"
+                    "#if (!file_exists(concat(\"");
+    put_sdl_path(ob, dir);
+    outbuf_puts(ob, sep);
+    outbuf_puts(ob, "\", input_file_name)))\n"
+                    "#error concat(\"run povray from the folder raygl2pov ran in, the one that "
+                    "holds ");
+    put_sdl_path(ob, dir);
+    outbuf_puts(ob, ": this .ini names its files from there (povray ");
+    put_sdl_path(ob, dir);
+    outbuf_puts(ob, sep);
+    outbuf_puts(ob, "\", substr(input_file_name, 1, strlen(input_file_name) - 4), \".ini)\")\n"
+                    "#end\n"
+                    "#end\n");
+    return ob->failed ? -1 : 0;
+}
+
 int pov_write_ini(outbuf *ob, const scene *s, const char *dir, const char *pov_file,
                   const char *png_file)
 {
@@ -723,6 +761,7 @@ int pov_write_ini(outbuf *ob, const scene *s, const char *dir, const char *pov_f
                     "; raygl2pov ran in (POV-Ray reads INI paths from the current folder).\n");
     outbuf_puts(ob, "Library_Path=");
     put_ini_value(ob, dir, NULL);
+    outbuf_puts(ob, "Include_Header=" POV_FOLDER_CHECK "\n");
     outbuf_puts(ob, "Input_File_Name=");
     put_ini_value(ob, pov_file, NULL);
     outbuf_puts(ob, "Output_File_Name=");
