@@ -3,7 +3,7 @@
 #
 #   run-image-test.sh --name NAME --program PROG --raygl2pov R2P --povray POVRAY
 #                     --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]...
-#                     [--r2p-says nothing|REGEX]...
+#                     [--r2p-says nothing|REGEX]... [--figures FILE]
 #                     [--no-program-leak-check] [--ini-antialias] [-- IMGCMP-OPTIONS...]
 #
 # 1. PROG --trace DIR/NAME/NAME.raygl --png DIR/NAME/gl.png [--size WxH]
@@ -14,7 +14,9 @@
 # 3. in DIR/NAME: POVRAY pov/frame-00000.ini -D -A   renders it (the .ini
 #    names the size, the gamma and pov/frame-00000.png);
 # 4. IMGCMP [IMGCMP-OPTIONS] --diff DIR/NAME/diff.png gl.png pov/frame-00000.png
-#    prints the figures and decides.
+#    prints the figures and decides;
+# 5. with --figures FILE, check-figures.sh holds the figures to FILE's line
+#    for NAME (tests/image/figures.txt: a drop below it fails).
 #
 # --ini-antialias renders with the .ini's antialiasing (raygl2pov turns it
 # on for a frame that accumulated jittered passes) instead of -A.
@@ -30,7 +32,7 @@
 set -u
 
 usage() {
-    echo "usage: $0 --name NAME --program PROG --raygl2pov R2P --povray POVRAY --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]... [--r2p-says nothing|REGEX]... [--no-program-leak-check] [--ini-antialias] [-- IMGCMP-OPTIONS...]" >&2
+    echo "usage: $0 --name NAME --program PROG --raygl2pov R2P --povray POVRAY --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]... [--r2p-says nothing|REGEX]... [--figures FILE] [--no-program-leak-check] [--ini-antialias] [-- IMGCMP-OPTIONS...]" >&2
     exit 2
 }
 
@@ -128,10 +130,24 @@ fi
 grep 'Warning:' "$dir/povray.log" | sort | uniq -c | sed 's/^/povray: /'
 
 # 4. The comparison.
-"$imgcmp" "$@" --diff "$dir/diff.png" "$dir/gl.png" "$dir/pov/frame-00000.png"
+"$imgcmp" "$@" --diff "$dir/diff.png" "$dir/gl.png" "$dir/pov/frame-00000.png" >"$dir/imgcmp.log" 2>&1
 rc=$?
+cat "$dir/imgcmp.log"
+# 5. The figures against the file's, whatever imgcmp decided, so that a
+# test log always holds them (tools/update-figures.py).
+frc=0
+measured=$(figures_of "$dir/imgcmp.log")
+if [ -n "$figures" ] && [ -n "$measured" ]; then
+    # shellcheck disable=SC2086 # three words on purpose
+    "$(dirname "$0")/check-figures.sh" "$figures" "$name" $measured
+    frc=$?
+fi
 if [ $rc -ne 0 ]; then
     echo "image test $name: FAIL (see $dir/diff.png: GL | POV | difference)"
+    exit 1
+fi
+if [ $frc -ne 0 ]; then
+    echo "image test $name: FAIL: the figures do not hold to $figures (above)"
     exit 1
 fi
 echo "image test $name: PASS"

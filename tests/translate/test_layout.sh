@@ -133,9 +133,9 @@ done
 [ "$nw" -gt 0 ] && ok "scene.h names the $nw writers"
 
 # Every function a part's header declares is used somewhere (the product,
-# its tests, benchmarks or fuzz targets): a name seen only in its
-# declaration and its definition is dead.
-words=$(cd "$root" && find translate tests bench fuzz -name '*.[ch]' | xargs grep -ohwE '[a-z_][a-z0-9_]*' |
+# its tests, benchmarks or fuzz targets; raygl-compare uses proc/): a
+# name seen only in its declaration and its definition is dead.
+words=$(cd "$root" && find translate compare tests bench fuzz -name '*.[ch]' | xargs grep -ohwE '[a-z_][a-z0-9_]*' |
     sort | uniq -c | awk '{ print $2, $1 }')
 declared=$(cat "$tr"/*/*.h | grep -E '^[a-z_][a-z0-9_ *]*[ *][a-z_][a-z0-9_]*\(' |
     grep -vE '^(static|typedef)' | sed -E 's/^[^(]*[ *]\**([a-z_][a-z0-9_]*)\(.*/\1/' | sort -u)

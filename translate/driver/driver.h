@@ -21,6 +21,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "framesel.h"
 #include "look.h"
 #include "render.h"
 #include "writer.h"
@@ -28,10 +29,9 @@
 #define DRIVER_MAX_JOBS 256
 #define DRIVER_EXIT_INPUT 1 /* a damaged trace, output that cannot be written */
 
-/* Frames first..last (inclusive; last = UINT64_MAX for "A-"), every step-th. */
-typedef struct frame_range {
-    uint64_t first, last, step;
-} frame_range;
+/* Frames first..last (inclusive; last = UINT64_MAX for "A-"), every
+ * step-th: one item of a --frames list (format/framesel.h). */
+typedef rgl_frame_range frame_range;
 
 /* Whether frame (or scene) i is selected by ranges (all of them when n is 0). */
 bool frames_selected(const frame_range *ranges, size_t n, uint64_t i);

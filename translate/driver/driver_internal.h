@@ -25,6 +25,8 @@ typedef struct slot {
     char *frame_name;   /* rayglFrameBegin's, or NULL */
     writer_kept kept;   /* what publishing needs of the scene */
     int write_errno;    /* writing the temporary scene file failed */
+    char *write_failed; /* the file it could not write (a side file such as a
+                           texture), or NULL: the temporary scene file */
     const char *look_note; /* look_apply's, static */
     char *published;       /* "DIR/NAME" once written */
     long tmp_id;           /* the temporary scene file's cleanup entry, or -1 */

@@ -4,6 +4,7 @@
  */
 #include <errno.h>
 #include <inttypes.h>
+#include <limits.h>
 #include <pthread.h>
 #include <stdatomic.h>
 #include <stdio.h>
@@ -13,6 +14,7 @@
 #include <unistd.h>
 
 #include "driver_internal.h"
+#include "mkdirs.h"
 #include "naming.h"
 #include "outbuf.h"
 #include "talloc.h"
@@ -21,60 +23,18 @@ bool frames_selected(const frame_range *ranges, size_t n, uint64_t i)
 {
     if (n == 0)
         return true;
-    for (size_t k = 0; k < n; k++) {
-        const frame_range *r = &ranges[k];
-        if (i >= r->first && i <= r->last && (i - r->first) % r->step == 0)
+    for (size_t k = 0; k < n; k++)
+        if (rgl_framesel_has(&ranges[k], i))
             return true;
-    }
     return false;
 }
 
 /* ---- Names and files -------------------------------------------------------------- */
 
-/* mkdir -p. Returns 0, or -1 with errno. */
-static int make_dirs(const char *path)
-{
-    char *p = tr_realloc(NULL, strlen(path) + 1);
-    if (!p)
-        return -1;
-    strcpy(p, path);
-    for (char *s = p + 1; *s; s++) {
-        if (*s != '/')
-            continue;
-        *s = '\0';
-        if (mkdir(p, 0777) != 0 && errno != EEXIST) {
-            int e = errno;
-            tr_free(p);
-            errno = e;
-            return -1;
-        }
-        *s = '/';
-    }
-    int rc = mkdir(p, 0777);
-    int e = errno;
-    tr_free(p);
-    if (rc != 0 && e != EEXIST) {
-        errno = e;
-        return -1;
-    }
-    struct stat st;
-    if (stat(path, &st) != 0)
-        return -1;
-    if (!S_ISDIR(st.st_mode)) {
-        errno = ENOTDIR;
-        return -1;
-    }
-    return 0;
-}
-
-/* Temporary file names: hidden, per process and per frame slot; ext NULL:
- * the prefix the writer's other temporary files take. */
+/* Temporary file names: hidden, per process and per frame slot (writer.h). */
 static char *temp_path(const char *dir, size_t slot, const char *ext)
 {
-    char name[96];
-    snprintf(name, sizeof name, ".raygl2pov-%ld-%zu%s%s", (long)getpid(), slot, ext ? ext : "",
-             ext ? ".tmp" : "");
-    return writer_join(dir, name);
+    return writer_temp_path(dir, slot, ext);
 }
 
 /* ---- The work ----------------------------------------------------------------------- */
@@ -167,7 +127,15 @@ static void write_temp(job *j, worker_ctx *w, size_t k, slot *s, outbuf *ob)
     ob->failed = false;
     ob->user = &fd;
     errno = 0;
-    int rc = j->wd->frame(w->w, translator_scene(w->t), &f, ob, d->outdir);
+    char failed[PATH_MAX] = "";
+    int rc = j->wd->frame(w->w, translator_scene(w->t), &f, ob, d->outdir, failed, sizeof failed);
+    if (rc != 0 && failed[0]) {
+        int fe = errno;
+        s->write_failed = tr_realloc(NULL, strlen(failed) + 1);
+        if (s->write_failed)
+            strcpy(s->write_failed, failed);
+        errno = fe;
+    }
     int e = errno ? errno : ENOMEM;
     if (close(fd) != 0 && rc == 0) {
         rc = -1;
@@ -351,9 +319,10 @@ static void take_slot(job *j, totals *tot, names *used, size_t k, bool *fatal)
             drv_say_decode_error(d, where, &s->error);
         tot->status = DRIVER_EXIT_INPUT;
     } else if (s->write_errno) {
-        char *tmp = temp_path(d->outdir, k, j->wd->ext);
+        char *tmp = s->write_failed ? NULL : temp_path(d->outdir, k, j->wd->ext);
         drv_clear_progress();
-        fprintf(stderr, "%s: %s: cannot write: %s\n", d->prog, tmp ? tmp : d->outdir,
+        fprintf(stderr, "%s: %s: cannot write: %s\n", d->prog,
+                s->write_failed ? s->write_failed : tmp ? tmp : d->outdir,
                 strerror(s->write_errno));
         tr_free(tmp);
         tot->status = DRIVER_EXIT_INPUT;
@@ -405,6 +374,8 @@ static bool take_slots(job *j, totals *tot)
         unrec_finish(&s->unrec);
         tr_free(s->incomplete);
         s->incomplete = NULL;
+        tr_free(s->write_failed);
+        s->write_failed = NULL;
         drv_progress(d, k + 1, j->nslots);
     }
     for (size_t i = 0; i < used.n; i++)
@@ -473,7 +444,7 @@ static long select_frames(const driver_settings *d, size_t nframes)
 static bool start_output(job *j)
 {
     const driver_settings *d = j->d;
-    if (make_dirs(d->outdir) != 0) {
+    if (mkdirs(d->outdir, NULL) != 0) {
         fprintf(stderr, "%s: %s: cannot create the output folder: %s\n", d->prog, d->outdir,
                 strerror(errno));
         return false;

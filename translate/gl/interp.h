@@ -32,6 +32,9 @@
  *   interp_nurbs.c    GLU NURBS surfaces, curves and trims
  *   interp_shape.c    GLU quadrics and GLUT solids
  *   interp_point.c    point parameters, the provoking vertex
+ *   interp_lines.c    lines and points as GL rasterises them: clipped,
+ *                     cut into strips over GL's pixels
+ *   rasterise.c, rasterise.h which pixels Mesa lights for a line or point
  *   interp_stipple.c  line stipple
  *   interp_pstipple.c polygon stipple
  *   interp_offset.c   glPolygonOffset
@@ -425,6 +428,12 @@ const char *interp_frame_missing(const interp *ip, uint32_t *count);
  * trace: a display-list body, texture pixels, state that damaged earlier
  * frames would have carried), for interp_frame_missing. */
 void interp_missing(interp *ip, const char *what);
+
+/* The line segments the current frame assembled (each pair of GL_LINES,
+ * edge of a strip or loop, outlined polygon edge), whether or not GL
+ * lights a pixel of them: for tests (a segment becomes as many scene
+ * lines as its pixels need, none when it lights none). */
+uint64_t interp_frame_segments(const interp *ip);
 
 /* The state, for tests and for the frame driver. */
 const gl_state *interp_state(const interp *ip);

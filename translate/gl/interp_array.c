@@ -275,9 +275,11 @@ static void draw(interp *ip, GLenum mode, int64_t first, int64_t count, const ui
     float unit_tc[INTERP_TEX_UNITS][4];
     memcpy(unit_tc, ip->st.unit_texcoord, sizeof unit_tc);
     interp_prim_begin(ip, mode);
+    ip->prim_indexed = idx != NULL;
     for (int64_t i = 0; i < count && !ip->cut; i++)
         array_element(ip, idx ? index_at(idx, its, (size_t)i) : (uint32_t)(first + i));
     interp_prim_end(ip);
+    ip->prim_indexed = false;
     memcpy(a->current.color, color, sizeof color);
     memcpy(a->current.normal, normal, sizeof normal);
     memcpy(a->current.texcoord, texcoord, sizeof texcoord);

@@ -27,10 +27,13 @@ static void *gltf_begin(const writer_trace *t, const char **note, char *msg, siz
 
 static void gltf_end(void *run) { (void)run; }
 
-static int gltf_frame(void *w, const scene *s, const writer_frame *f, outbuf *ob, const char *dir)
+static int gltf_frame(void *w, const scene *s, const writer_frame *f, outbuf *ob, const char *dir,
+                      char *failed, size_t cap)
 {
     (void)w;
     (void)dir;
+    (void)failed;
+    (void)cap;
     gltf_frame_info gi = {f->trace, f->index, f->frame_name, f->incomplete};
     int rc = gltf_write(ob, s, &gi, NULL);
     if (rc == 0)

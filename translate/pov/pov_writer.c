@@ -26,7 +26,7 @@ typedef struct pov_worker {
     povwriter *w;
 } pov_worker;
 
-int povwriter_write_images(const povwriter *w, const char *dir)
+int povwriter_write_images(const povwriter *w, const char *dir, char *failed, size_t cap)
 {
     const povtex_image *im = povwriter_image(w, 0);
     if (!im)
@@ -41,8 +41,13 @@ int povwriter_write_images(const povwriter *w, const char *dir)
     }
     snprintf(sub, dl + sizeof "/" POVTEX_DIR, "%s/%s", dir, POVTEX_DIR);
     int rc = mkdir(sub, 0777) == 0 || errno == EEXIST ? 0 : -1;
-    for (size_t i = 0; rc == 0 && (im = povwriter_image(w, i)) != NULL; i++)
+    if (rc != 0)
+        snprintf(failed, cap, "%s", sub);
+    for (size_t i = 0; rc == 0 && (im = povwriter_image(w, i)) != NULL; i++) {
         rc = pngout_place(sub, im->name, im->rgba, im->width, im->height, im->alpha);
+        if (rc != 0)
+            snprintf(failed, cap, "%s/%s", sub, im->name);
+    }
     int e = errno;
     tr_free(sub);
     errno = e;
@@ -56,9 +61,52 @@ static const char *pov_dir_problem(const char *dir)
                                   "POV-Ray's .ini";
 }
 
+/* DIR/POV_FOLDER_CHECK, read first by every .ini (povwrite.h); kept as it
+ * is when unchanged, so rendered frames stay up to date. Returns 0, or -1
+ * with the message in msg. */
+static int write_folder_check(const writer_trace *t, char *msg, size_t cap)
+{
+    char *tmp = writer_temp_path(t->dir, 0, ".inc"), *fin = writer_join(t->dir, POV_FOLDER_CHECK);
+    int rc = -1, e = ENOMEM, fd = -1;
+    long id = -1;
+    if (tmp && fin) {
+        fd = writer_temp_create(tmp, &id);
+        e = errno;
+    }
+    if (fd >= 0) {
+        outbuf ob;
+        errno = 0;
+        rc = outbuf_init(&ob, 4096, writer_fd_flush, &fd);
+        if (rc == 0)
+            rc = pov_write_folder_check(&ob, t->dir);
+        if (rc == 0)
+            rc = outbuf_flush(&ob);
+        e = errno ? errno : EIO;
+        outbuf_finish(&ob);
+        if (close(fd) != 0 && rc == 0) {
+            rc = -1;
+            e = errno;
+        }
+        if (rc == 0 && writer_place(tmp, fin) != 0) {
+            rc = -1;
+            e = errno;
+        }
+        if (rc != 0)
+            unlink(tmp);
+    }
+    if (rc != 0)
+        snprintf(msg, cap, "%s: %s: cannot write: %s", t->trace, fin ? fin : t->dir, strerror(e));
+    writer_temp_done(id);
+    tr_free(tmp);
+    tr_free(fin);
+    return rc;
+}
+
 static void *pov_begin(const writer_trace *t, const char **note, char *msg, size_t cap)
 {
     (void)note;
+    if (write_folder_check(t, msg, cap) != 0)
+        return NULL;
     pov_run *r = tr_realloc(NULL, sizeof *r);
     if (!r) {
         snprintf(msg, cap, "out of memory");
@@ -113,7 +161,8 @@ static int pov_trim(void *w)
     return pw->w ? 0 : -1;
 }
 
-static int pov_frame(void *w, const scene *s, const writer_frame *f, outbuf *ob, const char *dir)
+static int pov_frame(void *w, const scene *s, const writer_frame *f, outbuf *ob, const char *dir,
+                     char *failed, size_t cap)
 {
     pov_worker *pw = w;
     pov_frame_info info = {f->file_name,  f->trace,     f->index, f->stream, f->number,
@@ -127,7 +176,7 @@ static int pov_frame(void *w, const scene *s, const writer_frame *f, outbuf *ob,
         rc = outbuf_flush(ob);
     errno = 0;
     if (rc == 0)
-        rc = povwriter_write_images(pw->w, dir);
+        rc = povwriter_write_images(pw->w, dir, failed, cap);
     return rc;
 }
 

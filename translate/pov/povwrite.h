@@ -48,8 +48,10 @@ typedef struct povtex_image povtex_image;
 const povtex_image *povwriter_image(const povwriter *w, size_t i);
 
 /* Writes those images into dir/textures (POVTEX_DIR, made when missing;
- * existing images are kept: pngout.h). Returns 0, or -1 with errno set. */
-int povwriter_write_images(const povwriter *w, const char *dir);
+ * existing images are kept: pngout.h). Returns 0, or -1 with errno set
+ * and failed (cap bytes) naming the image or the folder that could not be
+ * written (pov_writer.c). */
+int povwriter_write_images(const povwriter *w, const char *dir, char *failed, size_t cap);
 
 /* Writes the .ini that renders the scene: `povray DIR/NAME.ini` run from
  * the directory raygl2pov ran in (POV-Ray resolves INI paths against the
@@ -62,5 +64,19 @@ int pov_write_ini(outbuf *ob, const scene *s, const char *dir, const char *pov_f
 
 /* True when pov_write_ini can express this folder name. */
 bool pov_ini_path_ok(const char *dir);
+
+/* The file every .ini of a folder reads first (Include_Header): POV-Ray
+ * resolves an INI's paths against the current folder only, so from any
+ * other folder than the one raygl2pov ran in (the output folder itself,
+ * say) the render would fail with "Cannot create render state output
+ * file". This header stops the parse first with a message saying where
+ * to run it from. raygl-render, which passes its own library path and
+ * output name, declares POV_RENDER_DECLARE to skip the check. */
+#define POV_FOLDER_CHECK "raygl-folder.inc"
+#define POV_RENDER_DECLARE "raygl_render"
+
+/* Writes POV_FOLDER_CHECK's text for output folder dir (as the user gave
+ * it, pov_ini_path_ok). Returns 0, or -1 when the sink failed. */
+int pov_write_folder_check(outbuf *ob, const char *dir);
 
 #endif

@@ -33,6 +33,14 @@ char *writer_join(const char *dir, const char *file)
     return p;
 }
 
+char *writer_temp_path(const char *dir, size_t slot, const char *ext)
+{
+    char name[96];
+    snprintf(name, sizeof name, ".raygl2pov-%ld-%zu%s%s", (long)getpid(), slot, ext ? ext : "",
+             ext ? ".tmp" : "");
+    return writer_join(dir, name);
+}
+
 int writer_temp_create(const char *path, long *id)
 {
     /* Registered before it exists, so a stop removes it (cleanup.h). */

@@ -84,8 +84,11 @@ typedef struct writer_def {
     void (*destroy)(void *w);
     int (*trim)(void *w);
     /* Writes scene s as the frame's scene file into ob (flushed) and its
-     * side files into dir. Returns 0, or -1 with errno (0: out of memory). */
-    int (*frame)(void *w, const scene *s, const writer_frame *f, outbuf *ob, const char *dir);
+     * side files into dir. Returns 0, or -1 with errno (0: out of memory)
+     * and, when a side file is what could not be written, its path in
+     * failed (cap bytes; left empty otherwise). */
+    int (*frame)(void *w, const scene *s, const writer_frame *f, outbuf *ob, const char *dir,
+                 char *failed, size_t cap);
     /* Puts the frame's files in place under p->stem. Returns 0, or -1 with
      * the reason in msg (the temporary files are removed). */
     int (*publish)(void *run, const writer_kept *k, const writer_place_info *p, char *msg,
@@ -97,6 +100,11 @@ void writer_keep(const scene *s, writer_kept *k);
 
 /* "dir/file" (allocated: tr_free), or NULL. */
 char *writer_join(const char *dir, const char *file);
+
+/* A temporary file's path in dir: hidden, per process and per frame slot,
+ * "dir/.raygl2pov-PID-SLOT" EXT ".tmp" (ext NULL: the prefix alone, for a
+ * writer's other temporary files). Allocated (tr_free), or NULL. */
+char *writer_temp_path(const char *dir, size_t slot, const char *ext);
 
 /* Creates path (O_EXCL) registered for removal on a stop signal
  * (cleanup.h): the descriptor, with *id its registration, or -1 with
