@@ -233,6 +233,7 @@ void interp_destroy(interp *ip)
     tr_free(ip->vmat.mats);
     tr_free(ip->clipv);
     interp_textures_free(ip);
+    interp_pixels_free(ip);
     interp_eval_free(ip);
     interp_nurbs_free(ip);
     tr_free(ip);

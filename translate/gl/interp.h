@@ -343,6 +343,16 @@ void interp_set_heavy(interp *ip, interp_heavy_fn fn, void *ctx);
  * names where, or NULL when it was not. Valid until the next frame. */
 const char *interp_frame_cut(const interp *ip);
 
+/* What the current frame used of each budget (INTERP_BUDGET_*): the
+ * counts that only grow (commands, vertices assembled, texture bytes) as
+ * they stand, and the most the scene held of the others at any one time
+ * (a shared list call holds its geometry until it is found shared, a
+ * glClear drops what was drawn). limit: the budget as applied. */
+typedef struct interp_budget_use {
+    uint64_t commands, assembled, vertices, triangles, lines, solids, instances, texels;
+} interp_budget_use;
+void interp_budget_used(const interp *ip, interp_budget_use *used, interp_budget_use *limit);
+
 /* What the current frame was drawn without because the trace is damaged
  * (display-list bodies or texture images that could not be read): the
  * first such part as one line, and in *count how many there were; NULL

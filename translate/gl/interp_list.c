@@ -450,8 +450,10 @@ static void call_list(interp *ip, uint32_t name)
                  name, body, (unsigned long long)err.offset, rgl_status_str(st));
         interp_missing(ip, what);
     }
-    if (share)
+    if (share) {
+        interp_budget_peak(ip);
         share_output(ip, body, &mk);
+    }
 }
 
 void interp_calllist(interp *ip, const rgl_cmd *cmd)
