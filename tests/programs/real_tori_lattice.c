@@ -31,7 +31,7 @@ static void torus(double r, double R)
     for (int i = 0; i < RINGS; i++) {
         glBegin(GL_QUAD_STRIP);
         for (int j = 0; j <= SIDES; j++) {
-            for (int k = 1; k >= 0; k--) {
+            for (int k = 0; k <= 1; k++) {
                 double phi = 2 * M_PI * (i + k) / RINGS, theta = 2 * M_PI * j / SIDES;
                 double cp = cos(phi), sp = sin(phi), ct = cos(theta), st = sin(theta);
                 glNormal3d(cp * ct, sp * ct, st);
@@ -101,14 +101,12 @@ static void draw(int frame, int w, int h)
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
     const GLfloat pos[4] = {0.3f, 0.6f, 1, 0}, white[4] = {1, 1, 1, 1};
-    const GLfloat amb[4] = {0.25f, 0.25f, 0.25f, 1}, spec[4] = {0.3f, 0.3f, 0.3f, 1};
+    const GLfloat amb[4] = {0.25f, 0.25f, 0.25f, 1};
     glLightfv(GL_LIGHT0, GL_POSITION, pos);
     glLightfv(GL_LIGHT0, GL_DIFFUSE, white);
     glLightModelfv(GL_LIGHT_MODEL_AMBIENT, amb);
     glEnable(GL_LIGHTING);
     glEnable(GL_LIGHT0);
-    glMaterialfv(GL_FRONT, GL_SPECULAR, spec);
-    glMaterialf(GL_FRONT, GL_SHININESS, 20);
     glBindTexture(GL_TEXTURE_2D, tex);
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
     glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP);
