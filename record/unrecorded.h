@@ -36,6 +36,13 @@ static inline void rgl_unrecorded_count(unsigned id)
         rgl_unrecorded_slow(id);
 }
 
+/* Counts one call of unrecorded entry point `id`, whose one argument
+ * `value` sets the GL state `pname` (format/unrecorded.def's STATE column),
+ * unless GL's current value already equals it: such a call changes
+ * nothing. GL is asked only with a live context, outside glBegin/glEnd and
+ * the passthrough; otherwise the call is counted. */
+void rgl_unrecorded_count_state(unsigned id, unsigned pname, int value);
+
 /* Appends one @NotRecorded command per entry point counted since the last
  * flush to b (NULL: through the stream's write window, onto its open
  * frame), and zeroes those counts. Calling thread's stream only. Stops at

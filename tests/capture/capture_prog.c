@@ -37,6 +37,9 @@
  *                       also bitmap text after the triangle
  *                       (glutBitmapCharacter, glutBitmapString: their
  *                       glBitmap calls are recorded)
+ *   --stroke            GLUT: each frame also writes stroke text over the
+ *                       triangle (glutStrokeString: freeglut's glBegin and
+ *                       glVertex calls are recorded)
  */
 #include <EGL/egl.h>
 #include <GL/freeglut.h>
@@ -66,9 +69,9 @@ typedef struct gl_fns {
 
 static struct {
     const char *api, *lookup, *hang;
-    int single, frames, threads, teapot, exec_child, fork_child, delay_ms, unrecorded, nurbs;
+    int single, frames, threads, teapot, exec_child, fork_child, delay_ms, unrecorded, nurbs, stroke;
     const char *self, *done;
-} opt = {"glx", "direct", NULL, 0, 3, 1, 0, 0, 0, 0, 0, 0, NULL, NULL};
+} opt = {"glx", "direct", NULL, 0, 3, 1, 0, 0, 0, 0, 0, 0, 0, NULL, NULL};
 
 static gl_fns gl;
 
@@ -154,6 +157,19 @@ static void bitmap_text(void)
     glutBitmapString(GLUT_BITMAP_8_BY_13, (const unsigned char *)"GB");
 }
 
+/* Stroke text over the frame, as a GLUT program writes it. */
+static void stroke_text(void)
+{
+    if (strcmp(opt.api, "glut") != 0)
+        return;
+    glColor3f(1, 1, 0.4f);
+    glPushMatrix();
+    glTranslatef(-0.7f, 0.3f, 0);
+    glScalef(0.0025f, 0.0025f, 1);
+    glutStrokeString(GLUT_STROKE_ROMAN, (const unsigned char *)"RayGL");
+    glPopMatrix();
+}
+
 static void GLAPIENTRY tess_begin(GLenum mode) { glBegin(mode); }
 static void GLAPIENTRY tess_vertex(GLfloat *v) { glVertex3fv(v); }
 static void GLAPIENTRY tess_normal(GLfloat *n) { glNormal3fv(n); }
@@ -214,6 +230,8 @@ static void draw(int frame, int thread)
     gl.End();
     if (opt.unrecorded)
         bitmap_text();
+    if (opt.stroke)
+        stroke_text();
 }
 
 /* The extra frame left unfinished for --hang. */
@@ -427,6 +445,8 @@ int main(int argc, char **argv)
             opt.single = 1;
         else if (strcmp(a, "--unrecorded") == 0)
             opt.unrecorded = 1;
+        else if (strcmp(a, "--stroke") == 0)
+            opt.stroke = 1;
         else if (strcmp(a, "--teapot") == 0)
             opt.teapot = 1;
         else if (strcmp(a, "--nurbs") == 0)

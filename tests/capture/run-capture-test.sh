@@ -13,8 +13,13 @@
 #   glut-solid               3 glutSolidTeapot, none of the GL calls
 #                            freeglut makes to draw them
 #   unrecorded               calls passed through unrecorded: counted per
-#                            frame (@NotRecorded), reported by raygl2pov;
-#                            queries not counted
+#                            frame (@NotRecorded), reported by raygl2pov
+#                            where they can change the picture (--verbose:
+#                            all, marked); queries not counted
+#   quiet                    a plain GLUT program with stroke text: its
+#                            window-system calls counted, freeglut's strokes
+#                            recorded; raygl2pov prints nothing, and the
+#                            frame (without the text) is exact (POVRAY)
 #   nurbs                    3 GLU NURBS surfaces: recorded as the GLU calls,
 #                            none of the GL calls GLU draws them with;
 #                            translated as meshes
@@ -45,6 +50,7 @@ set -u
 [ $# -ge 8 ] || { echo "usage: $0 CASE RAYGL PRELOAD PROG RAYGL2POV COMPARE POVRAY OUTDIR" >&2; exit 2; }
 case=$1 raygl=$2 preload=$3 prog=$4 r2p=$5 cmp=$6 povray=$7 out=$8
 shift 8
+here=$(cd "$(dirname "$0")" && pwd) || exit 1
 absolute() {
     case $1 in
     /*) printf '%s\n' "$1" ;;
@@ -78,6 +84,21 @@ fi
 record() { env ${san:+LD_PRELOAD=$san} sh "$raygl" record "$@"; }
 
 dump() { "$r2p" "$1" --dump 2>&1; }
+
+# compare_figures NAME LOG: with RAYGL_FIGURES set (meson sets it to
+# tests/image/figures.txt), the lowest within and silhouette of the frames
+# raygl-compare measured in LOG held to the file's line for NAME.
+compare_figures() {
+    [ -n "${RAYGL_FIGURES:-}" ] || return 0
+    set -- "$1" $(awk '/^frame [0-9]+: [0-9]+x[0-9]+ within / {
+        t = $5; sub(/\/255$/, "", t); w = $6; sub(/,$/, "", w); w += 0; s = $11 + 0
+        if (n++ == 0 || w < mw) mw = w
+        if (n == 1 || s < ms) ms = s
+    } END { if (n) printf "%s %.5f %.5f\n", t, mw, ms }' "$2")
+    [ $# -eq 4 ] || fail "no figures in $2"
+    "$here/../image/check-figures.sh" "$RAYGL_FIGURES" "$@" ||
+        fail "the figures do not hold to $RAYGL_FIGURES (above)"
+}
 count() { # TRACE PATTERN: lines of the dump matching it
     dump "$1" | grep -c -- "$2"
 }
@@ -173,12 +194,17 @@ unrecorded)
     [ "$(ls t-pov/textures | grep -c '^rgl-tex-.*\.png$')" -ge 1 ] || fail "no image of the bitmap text written"
     [ "$(grep -l 'no_shadow no_reflection no_radiosity' t-pov/frame-*.pov | wc -l)" -eq 3 ] ||
         fail "the bitmap text is not in every scene"
+    # None of them can change these frames: colour-index state, the blend
+    # colour with no draw blending by it, the window system. --verbose says
+    # each once, marked.
+    grep -q 'not recorded' "$log" && { cat "$log"; fail "raygl2pov reports calls that cannot change the picture"; }
+    "$r2p" t.raygl -o t-pov -v >v.log 2>&1 || { cat v.log; fail "raygl2pov -v failed"; }
     for want in "glIndexi: 3 calls not recorded, from frame 0" \
         "glBlendColor: 3 calls not recorded, from frame 0" \
         "glutInit: 1 call not recorded, from frame 0"; do
-        grep -q "t.raygl: $want\$" "$log" || { cat "$log"; fail "raygl2pov does not say '$want'"; }
+        grep -q "t.raygl: $want (cannot change the picture: " v.log || { cat v.log; fail "raygl2pov -v does not say '$want'"; }
     done
-    [ "$(grep -c 'glIndexi:' "$log")" -eq 1 ] || fail "glIndexi reported more than once"
+    [ "$(grep -c 'glIndexi:' v.log)" -eq 1 ] || fail "glIndexi reported more than once"
     # With snapshots: the counts come before @Snapshot, each frame's last
     # command; the recorder's own glReadBuffer and glPixelTransfer calls
     # are not the program's.
@@ -191,6 +217,34 @@ unrecorded)
     dump s.raygl | awk '/^frame / { if (n++ && last !~ /@Snapshot/) bad = 1 }
         /^  [0-9]/ { last = $0 } END { exit bad || last !~ /@Snapshot/ }' ||
         fail "@Snapshot is not each frame's last command"
+    ;;
+quiet)
+    record -o q.raygl -- "$prog" --api glut --stroke >prog.log 2>&1 || { cat prog.log; fail "the program failed"; }
+    expect q.raygl '^frame ' 3
+    expect q.raygl 'glBegin(mode=GL_TRIANGLES)' 3
+    # freeglut's strokes are the program's calls (glutStrokeString is let
+    # through uninterposed, uncounted); the window system's calls counted.
+    [ "$(count q.raygl 'glBegin(mode=GL_LINE_STRIP)')" -ge 15 ] || fail "the stroke text is not recorded"
+    expect q.raygl '@NotRecorded(name="glutStroke' 0
+    expect q.raygl '@NotRecorded(name="glutInit", count=1)' 1
+    "$r2p" q.raygl -o q-pov >q.log 2>&1 || { cat q.log; fail "raygl2pov failed"; }
+    [ ! -s q.log ] || { cat q.log; fail "raygl2pov printed messages for a frame where nothing can differ from what it says"; }
+    "$r2p" q.raygl -o q-pov -v >v.log 2>&1 || { cat v.log; fail "raygl2pov -v failed"; }
+    grep -q "q.raygl: glutInit: 1 call not recorded, from frame 0 (cannot change the picture: " v.log ||
+        { cat v.log; fail "raygl2pov -v does not list glutInit"; }
+    # The frame itself (the text aside: its lines are the lines' own
+    # approximation) through raygl compare, with the unlit floors: exact,
+    # and raygl2pov says nothing of it.
+    if [ -x "$povray" ] || command -v "$povray" >/dev/null 2>&1; then
+        record --snapshots -o e.raygl -- "$prog" --api glut >prog.log 2>&1 || { cat prog.log; fail "the program failed (snapshots)"; }
+        "$r2p" e.raygl -o e-pov >e.log 2>&1 || { cat e.log; fail "raygl2pov failed (snapshots)"; }
+        [ ! -s e.log ] || { cat e.log; fail "raygl2pov printed messages for an exact frame"; }
+        sh "$raygl" compare e.raygl -o cmp --raygl2pov "$r2p" --povray "$povray" --tol 2 --min-match 0.99 \
+            --min-silhouette 0.99 >cmp.log 2>&1
+        rc=$?
+        cat cmp.log
+        [ $rc -eq 0 ] || fail "raygl compare: the frames are not exact (exit $rc)"
+    fi
     ;;
 nurbs)
     record -o t.raygl -- "$prog" --api glx --nurbs >prog.log 2>&1 || { cat prog.log; fail "the program failed"; }
@@ -496,6 +550,7 @@ glxgears)
     cat cmp.log
     [ $rc -eq 0 ] || fail "raygl-compare exited with $rc"
     [ "$(grep -c '^frame [0-9]*: 300x300 within' cmp.log)" -eq 3 ] || fail "not 3 frames compared"
+    compare_figures capture-glxgears cmp.log
     ;;
 hack)
     name=$1
@@ -511,6 +566,7 @@ hack)
     rc=$?
     cat cmp.log
     [ $rc -eq 0 ] || fail "raygl-compare exited with $rc"
+    compare_figures "capture-hack-$name" cmp.log
     ;;
 *) echo "unknown case $case" >&2; exit 2 ;;
 esac

@@ -13,10 +13,14 @@
 # 4. run from another folder it finds raygl2pov itself; options (its own
 #    and raygl2pov's) and the output folder are checked before rendering;
 #    a stop signal leaves no partial file.
+# With RAYGL_FIGURES set (meson sets it to tests/image/figures.txt), the
+# figures of step 2 are held to the file's line for "compare"
+# (check-figures.sh).
 set -u
 [ $# -ge 5 ] || { echo "usage: $0 PROG RAYGL_COMPARE RAYGL2POV POVRAY OUTDIR [FLOOR-OPTION...]" >&2; exit 2; }
 prog=$1 cmp=$2 r2p=$3 povray=$4 out=$5
 shift 5
+here=$(cd "$(dirname "$0")" && pwd) || exit 1
 fail() { echo "compare test: FAIL: $*"; exit 1; }
 absolute() {
     case $1 in
@@ -43,6 +47,12 @@ rc=$?
 cat cmp.log
 [ $rc -eq 0 ] || fail "raygl-compare exited with $rc"
 grep -q '^frame 0: 320x240 within .* silhouette ' cmp.log || fail "no figures for frame 0"
+if [ -n "${RAYGL_FIGURES:-}" ]; then
+    # shellcheck disable=SC2046 # three words on purpose
+    "$here/check-figures.sh" "$RAYGL_FIGURES" compare $(sed -n \
+        's|^frame 0: [0-9x]* within \([0-9]*\)/255 \([0-9.]*\),.* silhouette \([0-9.]*\) .*|\1 \2 \3|p' cmp.log) ||
+        fail "the figures do not hold to $RAYGL_FIGURES (above)"
+fi
 [ -s cmp/compare-00000.png ] || fail "no cmp/compare-00000.png"
 [ -s cmp/pov/frame-00000.png ] || fail "no cmp/pov/frame-00000.png"
 

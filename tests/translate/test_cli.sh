@@ -211,15 +211,18 @@ expect_rc 0 "a textured trace"
 grep -q 'image_map{png "textures/rgl-tex-' "$work/tex/frame-00000.pov" && ok "the scene names textures/" ||
     fail "the scene's image_map: $(grep image_map "$work/tex/frame-00000.pov" | head -1)"
 
-# ---- calls not recorded (@NotRecorded): one report per trace, by name
+# ---- calls not recorded (@NotRecorded): one report per trace, by name;
+# only those that can change the picture (names this version records now
+# say what is missing), the others with --verbose and --dump
 unrec=$work/traces/unrecorded.raygl
 p="raygl2pov: $unrec:"
-printf '%s\n' "$p gl??31mEvil?: 2 calls not recorded, from frame 1" \
-    "$p glAccum: 1,204 calls not recorded, from frame 0" \
-    "$p glActiveTexture: 1 call not recorded, from frame 2" \
-    "$p glMap1f: 5 calls not recorded, from frame 1" \
-    "$p glRasterPos2i: 1 call not recorded, from frame 0" \
-    "$p glutBitmapCharacter: 7 calls not recorded, from frame 2" >"$work/unrec.want"
+miss="what it does is missing from the trace"
+printf '%s\n' "$p gl??31mEvil?: 2 calls not recorded, from frame 1: $miss" \
+    "$p glAccum: 1,204 calls not recorded, from frame 0: $miss" \
+    "$p glActiveTexture: 1 call not recorded, from frame 2: $miss" \
+    "$p glMap1f: 5 calls not recorded, from frame 1: $miss" \
+    "$p glRasterPos2i: 1 call not recorded, from frame 0: $miss" \
+    "$p glutBitmapCharacter: 7 calls not recorded, from frame 2: the bitmap text is missing (raygl record, which sees freeglut's own calls, records it)" >"$work/unrec.want"
 for j in 1 3; do
     run "$unrec" -o "$work/unrec$j" -j $j
     expect_rc 0 "calls not recorded, -j $j"
@@ -229,17 +232,35 @@ for j in 1 3; do
 done
 run "$unrec" -o "$work/unrec4" --frames 1
 grep 'not recorded' "$work/err" >"$work/unrec.got"
-printf '%s\n' "$p gl??31mEvil?: 2 calls not recorded, from frame 1" \
-    "$p glAccum: 204 calls not recorded, from frame 1" \
-    "$p glMap1f: 5 calls not recorded, from frame 1" >"$work/unrec.want1"
+printf '%s\n' "$p gl??31mEvil?: 2 calls not recorded, from frame 1: $miss" \
+    "$p glAccum: 204 calls not recorded, from frame 1: $miss" \
+    "$p glMap1f: 5 calls not recorded, from frame 1: $miss" >"$work/unrec.want1"
 cmp -s "$work/unrec.want1" "$work/unrec.got" && ok "--frames 1: that frame's calls only" ||
     fail "--frames 1: $(diff "$work/unrec.want1" "$work/unrec.got")"
 run "$unrec" -o "$work/unrec5" --quiet
 grep -q 'not recorded' "$work/err" && fail "--quiet still reports calls not recorded" ||
     ok "--quiet: no report"
+for v in -v --verbose; do
+    run "$unrec" -o "$work/unrec6" $v
+    grep 'not recorded' "$work/err" >"$work/unrec.got"
+    { sed -n 1,3p "$work/unrec.want"
+      echo "$p glBlendColor: 3 calls not recorded, from frame 0 (cannot change the picture: it acts only on draws blended with a GL_CONSTANT_* factor, which no frame from it on has): the blend colour: draws blended with GL_CONSTANT_* factors use the default (0, 0, 0, 0)"
+      sed -n 4,6p "$work/unrec.want"
+      echo "$p glutInit: 1 call not recorded, from frame 0 (cannot change the picture: the window system (windows, menus, input, callbacks, the main loop))"
+    } >"$work/unrec.want2"
+    cmp -s "$work/unrec.want2" "$work/unrec.got" && ok "$v: every call not recorded, marked" ||
+        fail "$v: $(diff "$work/unrec.want2" "$work/unrec.got")"
+done
+run "$unrec" -o "$work/unrec7" -v -q
+grep -q 'not recorded' "$work/err" && fail "-v -q: the later --quiet does not win" || ok "-v -q: quiet"
 run "$unrec" --dump
 grep -q '@NotRecorded(name="glAccum", count=1000)' "$work/out" && ok "--dump shows @NotRecorded" ||
     fail "--dump: no @NotRecorded"
+grep -qx '#   glutInit: 1 call not recorded, from frame 0 (cannot change the picture: the window system (windows, menus, input, callbacks, the main loop))' "$work/out" &&
+    grep -qx '#   glBlendColor: 3 calls not recorded, from frame 0 (changes the picture only with draws blended with a GL_CONSTANT_\* factor): .*' "$work/out" &&
+    grep -qx '#   glAccum: 1,204 calls not recorded, from frame 0: what it does is missing from the trace' "$work/out" &&
+    ok "--dump: every call not recorded, by what it can change" ||
+    fail "--dump: the summary of calls not recorded: $(grep '^#' "$work/out")"
 
 if [ $fails -ne 0 ]; then
     echo "test_cli: $fails failure(s)"

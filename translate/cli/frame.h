@@ -66,6 +66,9 @@ void translator_set_budget_shift(translator *t, unsigned shift);
  * (interp_set_vertex_lighting). */
 void translator_set_vertex_lighting(translator *t, bool on);
 
+/* Shadows in the scenes or not (interp_set_shadows). */
+void translator_set_shadows(translator *t, bool on);
+
 /* Heavy frames (interp_set_heavy): fn(ctx) is called from translator_build
  * when its frame turns heavy, and may block. */
 void translator_set_heavy(translator *t, void (*fn)(void *ctx), void *ctx);

@@ -1,6 +1,6 @@
 /* main.c: raygl2pov, the command line.
  *
- *   raygl2pov TRACE -o DIR [--frames A-B[,C...]] [-j N] [--dump] [--quiet]
+ *   raygl2pov TRACE -o DIR [--frames A-B[,C...]] [-j N] [--dump] [--quiet | --verbose]
  *
  * Workers (one translator each) take the selected frames in file order and
  * write each scene to a temporary file in DIR; the main thread then takes
@@ -120,6 +120,10 @@ static void parse_args(int argc, char **argv, options *o)
     }
     if (!opt_finish_parse(o, &err))
         usage_error(err.msg);
+    /* --dump shows everything: the notes and calls not recorded that
+     * cannot change the picture too. */
+    if (o->dump && !o->quiet)
+        o->verbose = true;
     const char *pov_only = o->gltf ? pov_only_option(o) : NULL;
     if (pov_only) {
         snprintf(err.msg, sizeof err.msg, "%s: POV-Ray only, not with --format gltf", pov_only);
@@ -429,6 +433,7 @@ static void *worker(void *arg)
     if (t) {
         translator_set_heavy(t, heavy_enter, &w);
         translator_set_vertex_lighting(t, j->o->vertex_lighting);
+        translator_set_shadows(t, !j->o->pov.no_shadows);
     }
     outbuf ob;
     bool ob_ok = outbuf_init(&ob, 1 << 20, fd_flush, NULL) == 0;
@@ -512,22 +517,32 @@ static void name_add(names *u, const char *s)
 typedef struct totals {
     diag_log log;      /* counts of everything; the messages already printed */
     uint64_t printed[DIAG_COUNT];
+    uint64_t printed_held[DIAG_COUNT]; /* held notes printed (--verbose) */
     int status;        /* exit status so far */
     size_t written;
 } totals;
 
+/* Each note once per run: the first said, and with --verbose the first
+ * held (marked); other kinds DIAG_KEEP times, then a count. */
 static void print_diags(const options *o, totals *tot, const diag_log *log)
 {
     for (int k = 0; k < DIAG_COUNT; k++) {
         const diag_entry *e = &log->e[k];
         tot->log.e[k].count += e->count;
         tot->log.e[k].dropped += e->dropped;
+        tot->log.e[k].held += e->held;
+        bool note = diag_is_note((diag_kind)k);
         for (uint32_t m = 0; m < e->kept; m++) {
-            bool note = diag_is_note((diag_kind)k);
-            if ((note && tot->printed[k] >= 1) || (!note && tot->printed[k] >= DIAG_KEEP))
-                break;
+            if (note && diag_is_held(e, m)) {
+                if (!o->verbose || tot->printed_held[k] >= 1)
+                    continue;
+                tot->printed_held[k]++;
+            } else {
+                if (tot->printed[k] >= (note ? 1u : DIAG_KEEP))
+                    continue;
+                tot->printed[k]++;
+            }
             say(o, "%s", e->text[m]);
-            tot->printed[k]++;
         }
     }
 }
@@ -711,6 +726,15 @@ static void print_summary(const options *o, const totals *tot)
             say(o, "%" PRIu64 " calls skipped in all (%s), %" PRIu64 " shown", n,
                 diag_kind_name((diag_kind)k), tot->printed[k]);
     }
+    /* --verbose: how often each note was said and held, frames counted
+     * once each (a frame logs a note at most once either way). */
+    for (int k = DIAG_FIRST_NOTE; o->verbose && k < DIAG_COUNT; k++) {
+        const diag_entry *e = &tot->log.e[k];
+        if (e->held)
+            say(o, "note held in %" PRIu64 " frame%s where it cannot change a pixel, said in %"
+                PRIu64 ": %s", e->held, e->held == 1 ? "" : "s", e->count - e->held,
+                diag_kind_name((diag_kind)k));
+    }
     for (int k = 0; k < DIAG_COUNT; k++)
         if (tot->log.e[k].dropped)
             say(o, "%" PRIu64 " message%s (%s) left out whole: longer than %d characters",
@@ -720,8 +744,11 @@ static void print_summary(const options *o, const totals *tot)
 
 /* ---- --dump ---------------------------------------------------------------------------- */
 
+/* Prints the commands of one sequence; adds its @NotRecorded counts to
+ * unrec as frame `frame`'s. */
 static bool dump_sequence(const options *o, const uint8_t *data, size_t size, uint64_t off,
-                          const char *indent, const char *where)
+                          const char *indent, const char *where, unrec_table *unrec,
+                          uint64_t frame)
 {
     rgl_cmd_iter it;
     rgl_cmd cmd;
@@ -731,6 +758,8 @@ static bool dump_sequence(const options *o, const uint8_t *data, size_t size, ui
     while ((st = rgl_cmd_next(&it, &cmd)) == RGL_OK) {
         rgl_cmd_format(&cmd, line, sizeof line);
         printf("%s%" PRIu64 " @0x%" PRIx64 " %s\n", indent, cmd.index, cmd.offset, line);
+        if (cmd.opcode == RGL_OP_NotRecorded)
+            (void)unrec_add(unrec, cmd.arg[0].bytes, cmd.arg[0].count, cmd.arg[1].v.u, frame);
     }
     if (st == RGL_END)
         return true;
@@ -739,9 +768,17 @@ static bool dump_sequence(const options *o, const uint8_t *data, size_t size, ui
     return false;
 }
 
+static void dump_line(const char *text, void *user)
+{
+    (void)user;
+    printf("#   %s\n", text);
+}
+
 static int dump(const options *o, rgl_reader *r)
 {
     int status = 0;
+    unrec_table unrec; /* the dumped frames' calls not recorded */
+    unrec_init(&unrec);
     size_t isz;
     const char *info = rgl_reader_info(r, &isz);
     if (info) {
@@ -787,13 +824,21 @@ static int dump(const options *o, rgl_reader *r)
                 char w2[96];
                 snprintf(w2, sizeof w2, "frame %zu, snapshot #%u", i, fi.state);
                 if (res.kind == RGL_RES_COMMANDS &&
-                    !dump_sequence(o, res.data, res.size, res.data_offset, "    ", w2))
+                    !dump_sequence(o, res.data, res.size, res.data_offset, "    ", w2, &unrec, i))
                     status = EXIT_INPUT;
             }
         }
-        if (!dump_sequence(o, fi.commands, fi.commands_size, fi.commands_offset, "  ", where))
+        if (!dump_sequence(o, fi.commands, fi.commands_size, fi.commands_offset, "  ", where,
+                           &unrec, i))
             status = EXIT_INPUT;
     }
+    if (unrec.n || unrec.other_calls) {
+        /* Every one, marked by what it can change (no frame is translated
+         * here to tell whether it does). */
+        printf("# not recorded (@NotRecorded) in these frames:\n");
+        unrec_report(&unrec, UNREC_REPORT_DUMP, dump_line, NULL);
+    }
+    unrec_finish(&unrec);
     fflush(stdout);
     return status;
 }
@@ -993,7 +1038,8 @@ int main(int argc, char **argv)
         pthread_join(threads[t], NULL);
     clear_progress();
     if (!o.quiet)
-        unrec_report(&unrec, say_line, &o);
+        unrec_report(&unrec, o.verbose ? UNREC_REPORT_VERBOSE : UNREC_REPORT_MATTERS, say_line,
+                     &o);
     unrec_finish(&unrec);
     print_summary(&o, &tot);
 

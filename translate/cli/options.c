@@ -239,9 +239,23 @@ bool opt_set_dump(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
     return opt_bool(v, &o->dump, ctx, err);
 }
 
+/* --quiet and --verbose: the later one wins. */
 bool opt_set_quiet(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
 {
-    return opt_bool(v, &o->quiet, ctx, err);
+    if (!opt_bool(v, &o->quiet, ctx, err))
+        return false;
+    if (o->quiet)
+        o->verbose = false;
+    return true;
+}
+
+bool opt_set_verbose(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
+{
+    if (!opt_bool(v, &o->verbose, ctx, err))
+        return false;
+    if (o->verbose)
+        o->quiet = false;
+    return true;
 }
 
 bool opt_set_help(options *o, const char *v, const opt_ctx *ctx, opt_err *err)

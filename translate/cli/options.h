@@ -42,7 +42,7 @@ typedef struct options {
     frame_range *ranges;
     size_t nranges;
     int jobs; /* 0 until opt_finish_parse: one per core */
-    bool dump, quiet, help, version;
+    bool dump, quiet, verbose, help, version;
     pov_options pov; /* shadows, reflection, area lights (options_light.c) */
     bool vertex_lighting; /* --vertex-lighting (interp_gouraud.c) */
     bool gltf;            /* --format gltf: .glb files (gltfwrite.h) */

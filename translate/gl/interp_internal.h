@@ -84,6 +84,8 @@ struct interp {
     char label[48];
     const rgl_cmd *cmd; /* the command being executed */
     uint64_t notes_seen; /* NOTE_* kinds already logged in this frame */
+    uint64_t notes_held; /* NOTE_* kinds already logged held in this frame */
+    struct interp_zorder *zorder; /* the frame's runs of depth modes; NULL: none yet */
     bool cleared;        /* the frame cleared the colour buffer */
     uint32_t painter;    /* draws without a depth test since the frame's start
                             or last clear (interp_prim.c, painter_shift) */
@@ -138,6 +140,7 @@ struct interp {
      * through a const interp). */
     interp_litdir litdir[INTERP_MAX_LIGHTS];
     bool prim_in_eye;   /* prim_to_eye is applied to the vertices themselves */
+    bool prim_indexed;  /* drawn from an index array (glDrawElements and kin) */
     uint8_t prim_blend; /* SCENE_BLEND_* of the primitive */
     int draw_unit[2];   /* the draw's first two enabled texture units, or -1 */
     bool prim_tex_from1; /* the look's texture is draw_unit[1]'s (tex1 coordinates) */
@@ -237,6 +240,7 @@ struct interp {
         int16_t slot[2 * SCENE_MAX_LIGHTSETS];
     } lsets;
     bool vertex_lighting; /* interp_set_vertex_lighting */
+    bool no_shadows;      /* interp_set_shadows(ip, false) */
 
     /* glMaterial between the vertices of the open primitive
      * (interp_vmaterial.c): each vertex's material once one changed, and
@@ -340,8 +344,29 @@ __attribute__((format(printf, 3, 4)))
 #endif
 void interp_diag(interp *ip, diag_kind kind, const char *fmt, ...);
 
-/* Logs a NOTE_* kind once per frame (the CLI then says it once per run). */
+/* Logs a NOTE_* kind once per frame (the CLI then says it once per run):
+ * call it where the approximation can change a pixel of the frame. */
 void interp_note(interp *ip, diag_kind kind);
+/* Logs a NOTE_* kind once per frame as held: its approximation applies but
+ * cannot change a pixel of this frame, for the reason why (at most
+ * DIAG_WHY - 1 bytes; printed only with --verbose). Nothing once the note is
+ * said in the frame. */
+void interp_note_held(interp *ip, diag_kind kind, const char *why);
+/* interp_note (why NULL) or interp_note_held, naming the command given
+ * (has_cmd: one) instead of the current one: a note decided at the frame's
+ * end names the draw it concerns. */
+void interp_note_cmd(interp *ip, diag_kind kind, bool has_cmd, uint64_t index, const char *name,
+                     uint64_t offset, const char *why);
+
+/* Draw order without a depth test (interp_zorder.c): each draw opens a
+ * run of its depth mode (a depth function other than GL_LESS, GL_LEQUAL or
+ * GL_ALWAYS says NOTE_DEPTH at once); at the frame's end NOTE_DEPTH is said
+ * where the ray tracer's nearest-first can show another primitive than
+ * OpenGL's draw order, else held. */
+void interp_zorder_draw(interp *ip);
+void interp_zorder_begin_frame(interp *ip);
+void interp_zorder_end_frame(interp *ip);
+void interp_zorder_free(interp *ip);
 /* Whether interp_note(kind) would log nothing now (said in this frame, or
  * no log): a costly test for a note may be skipped then. */
 bool interp_note_said(const interp *ip, diag_kind kind);
@@ -887,5 +912,24 @@ void interp_relit_done(interp *ip);
 void interp_surface_colour(const interp *ip, float out[4]);
 
 static inline float clamp01(float x) { return x > 0 ? (x < 1 ? x : 1) : 0; /* NaN -> 0 */ }
+
+/* Records that this frame draws something unrecorded calls of use u act on
+ * (format/unrecorded.def's UNREC_USE rows; interp_unrecorded.c). */
+static inline void interp_unrec_use(interp *ip, unrec_use u)
+{
+    if (ip->scene)
+        ip->unrecorded.uses |= 1u << u;
+}
+
+/* The uses of a pixel operation: one that draws into the colour buffer
+ * (bitmaps, glDrawPixels, glCopyPixels), reads it (glCopyPixels,
+ * glCopyTex*Image) or reads an image from the program's memory (textures,
+ * pixels, bitmaps, stipples); under GL_MAP_COLOR or GL_MAP_STENCIL, the
+ * pixel maps' too. */
+void interp_unrec_pixel_uses(interp *ip, bool draws, bool reads, bool from_memory);
+
+/* The uses of a draw beginning now (begin_mode): blending, stencil,
+ * points, multisample coverage (textures: interp_draw_units). */
+void interp_unrec_draw_uses(interp *ip, GLenum mode);
 
 #endif

@@ -107,10 +107,15 @@ static void draw_notes(interp *ip)
         interp_note(ip, DIAG_NOTE_SCISSOR); /* lines and points: drawn whole */
     if (c[INTERP_CAP_BLEND] && a->color_buffer.blend_equation != GL_FUNC_ADD)
         interp_note(ip, DIAG_NOTE_BLEND_EQUATION);
+    /* The fade threshold acts on points only (GL 2.1 3.4). */
+    if (a->point.fade_threshold != 1 &&
+        (ip->prim_mode == GL_POINTS ||
+         (ip->prim_mode > GL_LINE_STRIP &&
+          (a->polygon.mode[0] == GL_POINT || a->polygon.mode[1] == GL_POINT))))
+        interp_note(ip, DIAG_NOTE_POINT_FADE);
     if (c[INTERP_CAP_COLOR_LOGIC_OP] && a->color_buffer.logic_op != GL_COPY)
         interp_note(ip, DIAG_NOTE_COLOR_MASK); /* the masks: interp_masks.c */
-    if (!c[INTERP_CAP_DEPTH_TEST] || (a->depth.func != GL_LESS && a->depth.func != GL_LEQUAL))
-        interp_note(ip, DIAG_NOTE_DEPTH);
+    interp_zorder_draw(ip); /* NOTE_DEPTH, at the frame's end */
     /* GL 1.x 3.9: with GL_SINGLE_COLOR the texture modulates the specular
      * term too; POV-Ray adds the highlight after the texture, which is
      * GL_SEPARATE_SPECULAR_COLOR. */
@@ -349,6 +354,7 @@ static void begin_mode(interp *ip, GLenum mode)
     interp_accum_draw(ip);
     if (ip->accum.active)
         return; /* a later accumulation pass: the scene holds the first */
+    interp_unrec_draw_uses(ip, mode);
     draw_notes(ip);
     interp_proj_vote(ip, mode);
     interp_fix_camera(ip);
@@ -1331,6 +1337,17 @@ static void vertices_to_eye(interp *ip, uint32_t n)
     }
 }
 
+/* Whether the open primitive's vertices (in the pool from prim_first on;
+ * none for a solid, of the current colour) share one colour. */
+static bool prim_one_colour(const interp *ip)
+{
+    const scene *s = ip->scene;
+    for (size_t i = ip->prim_first + 1; i < s->nverts; i++)
+        if (memcmp(s->verts[i].color, s->verts[ip->prim_first].color, sizeof(float[4])) != 0)
+            return false;
+    return true;
+}
+
 scene_look interp_current_look(interp *ip)
 {
     scene_look look;
@@ -1356,12 +1373,15 @@ scene_look interp_current_look(interp *ip)
     if (look.texture1 >= 0) {
         const scene_texture *t0 = look.texture >= 0 ? &ip->scene->textures[look.texture] : NULL;
         const scene_texture *t1 = &ip->scene->textures[look.texture1];
+        bool one_colour = t0 && !(t0->env_mode == GL_MODULATE && t1->env_mode == GL_MODULATE) &&
+                          !t0->colour_is_texel && (look.lit || !look.flat);
         if (t1->colour_is_texel) /* the second unit's texel replaces the first's result */
             look.texture = -1;
-        else if ((t0 && !(t0->env_mode == GL_MODULATE && t1->env_mode == GL_MODULATE) &&
-                  !t0->colour_is_texel && (look.lit || !look.flat)) ||
+        else if ((one_colour && (look.lit || !prim_one_colour(ip))) ||
                  (t0 && look.blend != SCENE_BLEND_OPAQUE))
             interp_note(ip, DIAG_NOTE_MULTITEX); /* see the note's text */
+        else if (one_colour) /* unlit, and every vertex has the colour it is combined with */
+            interp_note_held(ip, DIAG_NOTE_MULTITEX, "the draw's vertices share one colour");
     }
     if (look.texture < 0 && look.texture1 >= 0) {
         /* An incomplete (or replaced) first unit passes its input on: the
@@ -1448,7 +1468,9 @@ static void end_primitive(interp *ip)
     as.line_width = raster_width(a->line.width, as.line_smooth);
     as.point_size = raster_width(a->point.size, as.point_smooth);
     as.point_params = interp_point_params_set(a);
-    as.list_quads = ip->list_depth > (ip->list_ce ? 1 : 0);
+    /* Mesa splits quads along v1-v3 in a list, and when drawn from an
+     * index array (tests/programs/conf_arrays_quad_split.c). */
+    as.list_quads = ip->list_depth > (ip->list_ce ? 1 : 0) || ip->prim_indexed;
     as.alpha_test = interp_alpha_testing(ip);
     for (uint32_t i = 0; i < n && !as.check_bad; i++)
         if (!vertex_ok(&s->verts[as.base + i]))

@@ -527,6 +527,11 @@ bool scene_camera_project(const scene_camera *cam, const double p[3], double out
     return isfinite(out[0]) && isfinite(out[1]);
 }
 
+bool scene_camera_coords(const scene_camera *cam, const double p[3], double x[3])
+{
+    return camera_coords(cam, p, x) && isfinite(x[0]) && isfinite(x[1]) && isfinite(x[2]);
+}
+
 bool scene_camera_pixel_size(const scene_camera *cam, const double p[3], double *px, double *py)
 {
     double rl = sqrt(dot3(cam->right, cam->right)), ul = sqrt(dot3(cam->up, cam->up));

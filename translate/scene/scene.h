@@ -508,6 +508,14 @@ bool scene_camera_lookat(scene_camera *cam, const double loc[3], const double lo
  * eye point p. Returns false when p is not in front of the camera. */
 bool scene_camera_project(const scene_camera *cam, const double p[3], double out[2]);
 
+/* The camera coordinates of eye point p: p = location + x[0] direction +
+ * x[1] right + x[2] up. x[0] is the parameter t of the camera's ray through
+ * p (location + t (direction + u right + v up) for a perspective camera,
+ * u = x[1] / t, v = x[2] / t; offset by t direction for an orthographic
+ * one): points on one ray compare their distance by it. Linear in p.
+ * Returns false when the camera's axes are degenerate. */
+bool scene_camera_coords(const scene_camera *cam, const double p[3], double x[3]);
+
 /* Eye-space size of one pixel (horizontal and vertical) at eye point p.
  * Returns false when p is not in front of the camera. */
 bool scene_camera_pixel_size(const scene_camera *cam, const double p[3], double *px, double *py);
