@@ -74,7 +74,8 @@
  * bytes (a list that calls itself twice) cannot ask for unbounded time or
  * memory. Output is counted as the scene holds it: a display list drawn
  * many times and shared (interp_list.c) counts its vertices once and one
- * instance per call. A frame that would exceed one is cut there: the rest
+ * instance per call, a texture image drawn many times once
+ * (interp_texture.c). A frame that would exceed one is cut there: the rest
  * of its commands are skipped, what came before is kept, and
  * interp_frame_cut says why. */
 #define INTERP_BUDGET_COMMANDS (1u << 26)    /* commands run */
@@ -85,7 +86,8 @@
                                                 costs the writer as a few triangles) */
 #define INTERP_BUDGET_SOLIDS (1u << 18)      /* exact GLU/GLUT solids it holds */
 #define INTERP_BUDGET_INSTANCES (1u << 18)   /* placements of shared list output */
-#define INTERP_BUDGET_TEXELS (1u << 28)      /* texture bytes read, copied or held */
+#define INTERP_BUDGET_TEXELS (1u << 28)      /* texture bytes read, copied or held: each
+                                                image once, however often drawn */
 
 enum interp_matrix_mode { INTERP_MV, INTERP_PROJ, INTERP_TEX, INTERP_NMODES };
 
