@@ -34,6 +34,7 @@ typedef struct slot {
     char *incomplete;      /* why the scene is incomplete: the cut, then what
                               damage took (frame_result), or NULL */
     bool damaged;          /* a part of it was lost to damage */
+    interp_budget_use used, limit; /* of the frame budget (--dump) */
 } slot;
 
 typedef struct totals {
@@ -65,6 +66,9 @@ void drv_print_diags(const driver_settings *d, totals *tot, const diag_log *log)
 /* A frame written incomplete: the cut is a note, damage is said and
  * counted in the exit status even with --quiet. */
 void drv_say_incomplete(const driver_settings *d, totals *tot, const slot *s);
+/* --dump while translating: what the frame used of each budget, on
+ * standard output after the dump. */
+void drv_say_budget(const driver_settings *d, const slot *s);
 /* How many calls were skipped in all, notes held (--verbose), messages
  * left out. */
 void drv_print_summary(const driver_settings *d, const totals *tot);

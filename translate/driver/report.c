@@ -106,6 +106,22 @@ void drv_say_incomplete(const driver_settings *d, totals *tot, const slot *s)
         tot->status = DRIVER_EXIT_INPUT;
 }
 
+/* docs/mapping.md "Bounds". */
+void drv_say_budget(const driver_settings *d, const slot *s)
+{
+    if (!d->dump)
+        return;
+    const interp_budget_use *u = &s->used, *l = &s->limit;
+    printf("frame %zu: budget: commands %" PRIu64 " of %" PRIu64 ", vertices assembled %" PRIu64
+           " of %" PRIu64 ", vertices %" PRIu64 " of %" PRIu64 ", triangles %" PRIu64 " of %" PRIu64
+           ", lines and points %" PRIu64 " of %" PRIu64 ", solids %" PRIu64 " of %" PRIu64
+           ", instances %" PRIu64 " of %" PRIu64 ", texture bytes %" PRIu64 " of %" PRIu64 "\n",
+           s->frame, u->commands, l->commands, u->assembled, l->assembled, u->vertices,
+           l->vertices, u->triangles, l->triangles, u->lines, l->lines, u->solids, l->solids,
+           u->instances, l->instances, u->texels, l->texels);
+    fflush(stdout);
+}
+
 void drv_progress(const driver_settings *d, size_t done, size_t total)
 {
     if (d->quiet || total < 2 || !isatty(STDERR_FILENO))

@@ -161,6 +161,8 @@ static void run_slot(job *j, worker_ctx *w, size_t k, slot *s, outbuf *ob)
     s->status = translator_build(w->t, s->frame, d->quiet ? NULL : s->log, &res);
     s->error = res.error;
     s->info = res.info;
+    s->used = res.used;
+    s->limit = res.limit;
     if (res.unrecorded)
         (void)unrec_copy(&s->unrec, res.unrecorded);
     if (res.frame_name) {
@@ -332,6 +334,7 @@ static void take_slot(job *j, totals *tot, names *used, size_t k, bool *fatal)
     } else {
         publish(j, tot, used, k, s);
         drv_say_incomplete(d, tot, s);
+        drv_say_budget(d, s);
     }
     if (*fatal && s->status == RGL_OK && !s->write_errno) {
         char *tmp = temp_path(d->outdir, k, j->wd->ext);

@@ -11,6 +11,65 @@
 #include "interp_teximage.h"
 #include "talloc.h"
 
+/* ---- Scene textures, made once -------------------------------------------------------- */
+
+/* tex_made.how: the image as it is, mirrored (mirror clamp) along s or t,
+ * a cube map's face, a 3D texture's slice (linear between two, the wrap
+ * mode of r above bit 32). */
+enum {
+    MADE_PLAIN = 1,
+    MADE_MIRROR_S = 2,
+    MADE_MIRROR_T = 4,
+    MADE_FACE = 8,
+    MADE_SLICE = 16,
+    MADE_SLICE_LINEAR = 32
+};
+
+void interp_texture_begin_frame(interp *ip)
+{
+    if (ip->st.tex) {
+        ip->st.tex->nmade = 0;
+        ip->st.tex->made_sc = NULL;
+    }
+}
+
+/* The scene texture made from image `serial` by `how` (at r) and sampled
+ * as st (its texels aside), or -1. A scene that dropped textures since
+ * forgets them all. */
+static int32_t made_find(interp *ip, uint64_t serial, uint64_t how, double r,
+                         const scene_texture *st)
+{
+    interp_textures *t = ip->st.tex;
+    const scene *s = ip->scene;
+    if (t->made_sc != s || t->made_gen != s->generation) {
+        t->nmade = 0;
+        t->made_sc = s;
+        t->made_gen = s->generation;
+        return -1;
+    }
+    for (size_t i = t->nmade; i-- > 0;) {
+        const struct tex_made *m = &t->made[i];
+        if (m->serial == serial && m->how == how && m->r == r && m->index >= 0 &&
+            (size_t)m->index < s->ntextures &&
+            scene_texture_sampling_same(&s->textures[m->index], st))
+            return m->index;
+    }
+    return -1;
+}
+
+/* Remembers that scene texture index was made so (made_find). Without
+ * memory, the next draw makes it again, and no more. */
+static void made_add(interp *ip, uint64_t serial, uint64_t how, double r, int32_t index)
+{
+    interp_textures *t = ip->st.tex;
+    if (index < 0 || !serial || t->made_sc != ip->scene ||
+        tr_grow((void **)&t->made, &t->cap_made, t->nmade + 1, sizeof *t->made) != 0)
+        return;
+    t->made[t->nmade++] = (struct tex_made){serial, how, r, index};
+}
+
+/* ---- Drawing -------------------------------------------------------------------------- */
+
 static bool mipmap_filter(GLenum f) { return f != GL_NEAREST && f != GL_LINEAR; }
 
 /* The last level of the mipmap chain from base b (GL 2.1 3.8.8: q, at
@@ -129,13 +188,17 @@ static int32_t cube_for_draw(interp *ip, tex_obj *o, const interp_tex_unit *u, i
         memset(&st, 0, sizeof st);
         st.width = im->width;
         st.height = im->height;
-        st.hash = im->hash;
         st.linear = o->mag_filter == GL_LINEAR;
         st.env_mode = interp_scene_env(env);
         memcpy(st.env_color, u->texture->env_color, sizeof st.env_color);
         st.colour_is_texel = env == GL_REPLACE && o->base_format != GL_ALPHA;
         st.cube = f == 0;
         st.mip_next = next;
+        int32_t have = made_find(ip, im->serial, MADE_FACE, 0, &st);
+        if (have >= 0) {
+            next = have;
+            continue;
+        }
         size_t n = (size_t)im->width * (size_t)im->height * 4;
         if (!interp_budget_texels(ip, n))
             return -1;
@@ -148,6 +211,7 @@ static int32_t cube_for_draw(interp *ip, tex_obj *o, const interp_tex_unit *u, i
         next = scene_add_texture(ip->scene, &st);
         if (next < 0)
             return -1;
+        made_add(ip, im->serial, MADE_FACE, 0, next);
     }
     return next;
 }
@@ -169,8 +233,13 @@ static int32_t mip_chain(interp *ip, tex_obj *o, scene_texture *st, bool ms, boo
         scene_texture lt = *st;
         lt.width = im->width * (ms ? 2 : 1);
         lt.height = im->height * (mt ? 2 : 1);
-        lt.hash = im->hash ^ (ms ? 0x9e3779b97f4a7c15ull : 0) ^ (mt ? 0xc2b2ae3d27d4eb4full : 0);
         lt.mip_next = next;
+        uint64_t how = MADE_PLAIN | (ms ? MADE_MIRROR_S : 0) | (mt ? MADE_MIRROR_T : 0);
+        int32_t have = made_find(ip, im->serial, how, 0, &lt);
+        if (have >= 0) {
+            next = have;
+            continue;
+        }
         size_t n = (size_t)lt.width * (size_t)lt.height * 4;
         if (!interp_budget_texels(ip, n))
             return -1;
@@ -186,14 +255,15 @@ static int32_t mip_chain(interp *ip, tex_obj *o, scene_texture *st, bool ms, boo
         next = scene_add_texture(ip->scene, &lt);
         if (next < 0)
             return -1;
+        made_add(ip, im->serial, how, 0, next);
     }
     return next;
 }
 
-/* The 2D image a 3D texture shows on a primitive over which r is
- * constant (interp_tex_slice); NULL, with a note, when r varies (or is
- * unknown: a GLU or GLUT solid). The caller frees it. */
-static tex_image *tex3d_slice(interp *ip, const tex_obj *o, int k)
+/* The r at which a 3D texture shows the 2D image of one slice
+ * (interp_tex_slice) on the primitive drawn: r constant over it. False,
+ * with a note, when r varies (or is unknown: a GLU or GLUT solid). */
+static bool slice_at(interp *ip, const tex_obj *o, int k, double *r)
 {
     interp_textures *t = ip->st.tex;
     double lo = t->r_min[k], hi = t->r_max[k];
@@ -202,15 +272,7 @@ static tex_image *tex3d_slice(interp *ip, const tex_obj *o, int k)
                     "3D texture %u drawn untextured: its r coordinate varies over a primitive",
                     o->name);
         interp_note(ip, DIAG_NOTE_TEX_3D);
-        return NULL;
-    }
-    size_t n = (size_t)o->img->width * (size_t)(o->img->height / o->depth3) * 4;
-    if (!interp_budget_texels(ip, n))
-        return NULL;
-    tex_image *img = interp_tex_slice(o->img, o->depth3, lo, o->mag_filter == GL_LINEAR, o->wrap_r);
-    if (!img) {
-        ip->scene->failed = true;
-        return NULL;
+        return false;
     }
     /* GL_LINEAR's blend of two slices is rounded to 8 bits before it is
      * filtered across s and t: a level off where GL rounds once. */
@@ -218,7 +280,8 @@ static tex_image *tex3d_slice(interp *ip, const tex_obj *o, int k)
         interp_note(ip, DIAG_NOTE_TEX_3D);
     else
         interp_note_held(ip, DIAG_NOTE_TEX_3D, "GL_NEAREST picks the one slice OpenGL samples");
-    return img;
+    *r = lo;
+    return true;
 }
 
 int32_t interp_texture_for_draw(interp *ip)
@@ -245,12 +308,13 @@ int32_t interp_texture_for_unit(interp *ip, int k)
         return cube_for_draw(ip, o, &u, k);
     if (!o || !interp_tex_complete(o))
         return -1;
-    /* A 3D texture: the slice its r picks, when r is constant. */
-    tex_image *slice = NULL;
-    if (o->depth3 && !(slice = tex3d_slice(ip, o, k)))
+    /* A 3D texture: the slice its r picks, when r is constant, made
+     * below unless the scene has it. */
+    double r = 0;
+    if (o->depth3 && !slice_at(ip, o, k, &r))
         return -1;
-    const tex_image *im = slice ? slice : *interp_tex_level_slot(o, o->base_level); /* complete: not NULL */
-    int32_t idx = -1;
+    const tex_image *im = o->depth3 ? o->img : *interp_tex_level_slot(o, o->base_level); /* complete: not NULL */
+    int iw = im->width, ih = o->depth3 ? im->height / o->depth3 : im->height;
     GLenum env = u.texture->env_mode;
     if (env == GL_COMBINE) { /* as the fixed mode it equals, if any */
         GLenum m = interp_combine_mode(u.texture, k, ip->draw_unit[0] == k);
@@ -306,9 +370,8 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     }
     scene_texture st;
     memset(&st, 0, sizeof st);
-    st.width = im->width * (ms ? 2 : 1);
-    st.height = im->height * (mt ? 2 : 1);
-    st.hash = im->hash ^ (ms ? 0x9e3779b97f4a7c15ull : 0) ^ (mt ? 0xc2b2ae3d27d4eb4full : 0);
+    st.width = iw * (ms ? 2 : 1);
+    st.height = ih * (mt ? 2 : 1);
     st.mip_next = -1;
     st.repeat_s = !clamps(o->wrap_s) && !ms;
     st.repeat_t = o->target == GL_TEXTURE_1D || (!clamps(o->wrap_t) && !mt);
@@ -350,19 +413,26 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     st.colour_is_texel = (env == GL_REPLACE && b != GL_ALPHA) ||
                          (env == GL_DECAL && b != GL_RGBA && b != GL_ALPHA);
 
-    if (mipmap_filter(o->min_filter) && !slice) { /* the levels, each its own scene texture */
-        idx = mip_chain(ip, o, &st, ms, mt);
-        goto out;
+    if (mipmap_filter(o->min_filter) && !o->depth3) /* the levels, each its own scene texture */
+        return mip_chain(ip, o, &st, ms, mt);
+    uint64_t how = (o->depth3 ? MADE_SLICE | (o->mag_filter == GL_LINEAR ? MADE_SLICE_LINEAR : 0) |
+                                    (uint64_t)o->wrap_r << 32
+                              : MADE_PLAIN) |
+                   (ms ? MADE_MIRROR_S : 0) | (mt ? MADE_MIRROR_T : 0);
+    int32_t idx = made_find(ip, im->serial, how, r, &st);
+    if (idx >= 0)
+        return idx;
+    tex_image *slice = NULL;
+    if (o->depth3) {
+        if (!interp_budget_texels(ip, (uint64_t)iw * (uint64_t)ih * 4))
+            return -1;
+        slice = interp_tex_slice(o->img, o->depth3, r, o->mag_filter == GL_LINEAR, o->wrap_r);
+        if (!slice) {
+            ip->scene->failed = true;
+            return -1;
+        }
     }
-    struct tex_cache *tc = &ip->st.tex->cache[ip->draw_unit[1] == k];
-    if (!slice && tc->img == im && tc->sc == ip->scene &&
-        tc->index >= 0 && (size_t)tc->index < ip->scene->ntextures &&
-        tc->ntex <= ip->scene->ntextures) {
-        const scene_texture *have = &ip->scene->textures[tc->index];
-        st.rgba = have->rgba;
-        if (memcmp(&st, have, sizeof st) == 0 && memcmp(&st, &tc->st, sizeof st) == 0)
-            return tc->index;
-    }
+    const tex_image *src = slice ? slice : im;
     size_t n = (size_t)st.width * (size_t)st.height * 4;
     if (!interp_budget_texels(ip, n))
         goto out;
@@ -372,17 +442,11 @@ int32_t interp_texture_for_unit(interp *ip, int k)
         goto out;
     }
     if (ms || mt)
-        interp_tex_mirror_fill(st.rgba, im, ms, mt);
+        interp_tex_mirror_fill(st.rgba, src, ms, mt);
     else
-        memcpy(st.rgba, im->rgba, n);
+        memcpy(st.rgba, src->rgba, n);
     idx = scene_add_texture(ip->scene, &st);
-    if (idx >= 0 && !slice) {
-        tc->img = im;
-        tc->sc = ip->scene;
-        tc->index = idx;
-        tc->ntex = ip->scene->ntextures;
-        tc->st = ip->scene->textures[idx];
-    }
+    made_add(ip, im->serial, how, r, idx);
 out:
     tr_free(slice);
     return idx;

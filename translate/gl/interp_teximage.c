@@ -7,6 +7,7 @@
  * records the call (record/entry_custom.c, pixels_put), so glPixelStorei
  * is kept as state but never applied again here.
  */
+#include <stdatomic.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -199,18 +200,10 @@ static void convert_pixels(uint8_t *dst, const uint8_t *src, size_t n, GLenum fo
     }
 }
 
-uint64_t interp_tex_image_hash(const tex_image *img)
-{
-    uint64_t h = 0xcbf29ce484222325ull; /* FNV-1a, 64 bits */
-    uint32_t dims[2] = {(uint32_t)img->width, (uint32_t)img->height};
-    const uint8_t *d = (const uint8_t *)dims;
-    for (size_t i = 0; i < sizeof dims; i++)
-        h = (h ^ d[i]) * 0x100000001b3ull;
-    size_t n = (size_t)img->width * (size_t)img->height * 4;
-    for (size_t i = 0; i < n; i++)
-        h = (h ^ img->rgba[i]) * 0x100000001b3ull;
-    return h;
-}
+/* Process-wide: interpreters share images (interp_copy_state). */
+static atomic_uint_least64_t image_serials = 1;
+
+void interp_tex_image_seal(tex_image *img) { img->serial = atomic_fetch_add(&image_serials, 1); }
 
 /* The texel bytes of pixel resource `id` holding exactly `need` bytes, or
  * NULL after a diagnostic; *lost is set to id when the trace's damage is
@@ -312,7 +305,7 @@ static void generate_levels(interp *ip, tex_obj *o, int b)
                     img->rgba[((size_t)y * (size_t)nw + (size_t)x) * 4 + (size_t)c] =
                         (uint8_t)((sum + (unsigned)(fx * fy) / 2) / (unsigned)(fx * fy));
                 }
-        img->hash = interp_tex_image_hash(img);
+        interp_tex_image_seal(img);
         tex_image **slot = interp_tex_level_slot(o, k);
         interp_tex_image_release(*slot);
         *slot = img;
@@ -427,7 +420,7 @@ static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t inte
                        px + ((size_t)(y + (two ? border : 0)) * (size_t)w +
                              (size_t)border) * ps,
                        (size_t)iw, format, type, base);
-    img->hash = interp_tex_image_hash(img);
+    interp_tex_image_seal(img);
     *slot = img;
     /* A rectangle has no mipmaps (ARB_texture_rectangle), whatever
      * GL_GENERATE_MIPMAP says. */
@@ -535,7 +528,7 @@ void interp_tex_subimage(interp *ip, int dims, GLenum target, int64_t level, int
     for (int64_t y = 0; y < h; y++)
         convert_pixels(img->rgba + ((size_t)(y0 + y) * (size_t)img->width + (size_t)x0) * 4,
                        px + (size_t)y * (size_t)w * ps, (size_t)w, format, type, o->base_format);
-    img->hash = interp_tex_image_hash(img);
+    interp_tex_image_seal(img);
     if (o->generate_mipmap && level == o->base_level && face < 0 &&
         o->target != GL_TEXTURE_RECTANGLE)
         generate_levels(ip, o, (int)level);
@@ -605,7 +598,7 @@ void interp_tex_image3d(interp *ip, int32_t level, int32_t internal, int64_t w, 
                                  (size_t)border) *
                                     ps,
                            (size_t)iw, format, type, base);
-    img->hash = interp_tex_image_hash(img);
+    interp_tex_image_seal(img);
     o->img = img;
     /* GL_GENERATE_MIPMAP: the levels follow (a 3D texture is drawn from
      * its level 0, so only their presence matters). */
@@ -651,7 +644,7 @@ void interp_tex_subimage3d(interp *ip, int64_t level, int64_t x0, int64_t y0, in
                                 (size_t)x0) * 4,
                            px + ((size_t)(z * h + y) * (size_t)w) * ps, (size_t)w, format, type,
                            o->base_format);
-    img->hash = interp_tex_image_hash(img);
+    interp_tex_image_seal(img);
 }
 
 /* gluBuild2DMipmaps: level 0 is the image scaled to powers of two no
@@ -721,7 +714,7 @@ void interp_build2dmipmaps(interp *ip, const rgl_cmd *cmd)
                 for (int c = 0; c < 4; c++)
                     d[c] = (uint8_t)(wsum > 0 ? acc[c] / wsum + 0.5 : 0);
             }
-        img->hash = interp_tex_image_hash(img);
+        interp_tex_image_seal(img);
         interp_tex_image_release(src);
         o->img = img;
         o->lw[0] = img->width;

@@ -20,12 +20,17 @@
 typedef struct tex_image {
     unsigned refs;
     int width, height;
-    uint64_t hash; /* of width, height and texels */
+    /* These texels as made or last changed: no two versions of any image
+     * share one (0: a temporary image, never looked up by it). Scene
+     * textures made from it are found by it (interp_texdraw.c), without
+     * a hash of the texels, which a change of a few would have to redo. */
+    uint64_t serial;
     uint8_t rgba[]; /* bottom row first */
 } tex_image;
 
-/* The hash kept in img->hash (interp_teximage.c). */
-uint64_t interp_tex_image_hash(const tex_image *img);
+/* img's texels are final (made or changed): a new img->serial
+ * (interp_teximage.c). */
+void interp_tex_image_seal(tex_image *img);
 
 /* Pixels above this per image are refused (an error value, not an attempt
  * to allocate what a hostile trace asks for). 16384 x 16384 RGBA is 1 GiB. */
@@ -66,15 +71,20 @@ struct interp_textures {
     /* object 0 of GL_TEXTURE_1D, GL_TEXTURE_2D, rectangle, 3D, GL_TEXTURE_CUBE_MAP */
     tex_obj zero[5];
     int32_t unpack[8];       /* glPixelStorei values, by pname - GL_UNPACK_SWAP_BYTES */
-    /* The last draw's scene texture, to skip rebuilding it per primitive:
-     * one per drawn unit (a draw's first and second). */
-    struct tex_cache {
-        const tex_image *img;
-        scene_texture st;
-        int32_t index;
-        const scene *sc;
-        size_t ntex;
-    } cache[2];
+    /* The scene textures made since the scene last dropped any (a clear,
+     * a new frame), by what each was made from: a draw of the same image
+     * sampled alike takes its scene texture again without copying texels
+     * or charging the frame budget (docs/mapping.md "Bounds";
+     * interp_texdraw.c). */
+    struct tex_made {
+        uint64_t serial; /* the image's (tex_image.serial) */
+        uint64_t how;    /* MADE_* and what else the texels depend on */
+        double r;        /* a 3D texture's slice: its coordinate */
+        int32_t index;   /* in the scene's textures */
+    } *made;
+    size_t nmade, cap_made;
+    const scene *made_sc;
+    uint32_t made_gen; /* the scene's generation they belong to */
     /* The range of r over the primitive being drawn, per unit: a 3D
      * texture is drawn as a slice where it is constant. */
     double r_min[INTERP_TEX_UNITS], r_max[INTERP_TEX_UNITS];

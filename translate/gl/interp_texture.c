@@ -106,7 +106,6 @@ interp_textures *interp_tex_state(interp *ip)
     t->zero[4].target = GL_TEXTURE_CUBE_MAP;
     r_reset(t);
     t->unpack[GL_UNPACK_ALIGNMENT - GL_UNPACK_SWAP_BYTES] = 4;
-    t->cache[0].index = t->cache[1].index = -1;
     ip->st.tex = t;
     return t;
 }
@@ -263,7 +262,7 @@ void interp_tex_depth_mode(interp *ip, tex_obj *o, GLenum mode)
             t[0] = t[1] = t[2] = alpha ? 255 : d;
             t[3] = mode == GL_LUMINANCE ? 255 : d;
         }
-        img->hash = interp_tex_image_hash(img);
+        interp_tex_image_seal(img);
     }
 }
 
@@ -529,8 +528,9 @@ int interp_textures_copy(interp *dst, const interp *src)
         tr_free(t);
         return -1;
     }
-    memset(t->cache, 0, sizeof t->cache);
-    t->cache[0].index = t->cache[1].index = -1;
+    t->made = NULL;
+    t->nmade = t->cap_made = 0;
+    t->made_sc = NULL;
     t->nrm_ok = false;
     if (s->n && tr_grow((void **)&t->objs, &t->cap, s->n, sizeof *t->objs) != 0) {
         namemap_finish(&t->names);
@@ -558,6 +558,7 @@ void interp_textures_free(interp *ip)
         obj_release(&t->zero[k]);
     namemap_finish(&t->names);
     tr_free(t->objs);
+    tr_free(t->made);
     tr_free(t);
     ip->st.tex = NULL;
 }
