@@ -1414,7 +1414,10 @@ static void end_primitive(interp *ip)
     as.s = s;
     as.base = (uint32_t)ip->prim_first;
     as.painter = ip->painter;
-    as.step = mode == GL_LINES || mode == GL_LINE_STRIP || mode == GL_LINE_LOOP;
+    /* of one colour, whichever segment shows is the same: no step (a
+     * draw of thousands, stroke text, would use up the painter's range) */
+    as.step = (mode == GL_LINES || mode == GL_LINE_STRIP || mode == GL_LINE_LOOP) &&
+              !prim_one_colour(ip);
     as.flat = a->lighting.shade_model == GL_FLAT;
     as.first = a->lighting.provoking == GL_FIRST_VERTEX_CONVENTION;
     as.swap = a->polygon.front_face == GL_CW;
