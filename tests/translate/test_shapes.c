@@ -471,6 +471,39 @@ static void test_stencil(void)
     interp_destroy(ip);
 }
 
+/* Issue 22: a list of a tessellated shape called many times and shared
+ * holds its facets once; the frame's cap on facets (2^21) counts them so.
+ * Before, the 1025th call of a 2048-facet sphere was skipped. */
+static void test_shared_facets(void)
+{
+    interp *ip = fresh();
+    seq_init(&bodies[0]);
+    CMD(&bodies[0], SolidSphere, 0.5, 64, 32); /* 2048 facets; flat lit: tessellated */
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 64, 64);
+    CMD(&s, MatrixMode, GL_PROJECTION);
+    CMD(&s, Ortho, -20, 20, -20, 20, 1, 100); /* each call faces the camera alike */
+    CMD(&s, MatrixMode, GL_MODELVIEW);
+    CMD(&s, Enable, GL_DEPTH_TEST);
+    CMD(&s, Enable, GL_LIGHTING);
+    CMD(&s, ShadeModel, GL_FLAT);
+    CMD(&s, NewList, 1, GL_COMPILE, 1);
+    CMD0(&s, EndList);
+    CMD(&s, Translatef, 0, 0, -50);
+    for (int i = 0; i < 1100; i++) {
+        CMD(&s, Translatef, 0.01, 0, 0);
+        CMD(&s, CallList, 1);
+    }
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_IGNORED), 0);
+    CHECK_EQ_U(sc.nsolids, 0);
+    CHECK_EQ_U(sc.ninstances, 1100);
+    CHECK(sc.ntris <= 2 * 2048);
+    interp_destroy(ip);
+    seq_free(&bodies[0]);
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -483,6 +516,7 @@ int main(void)
     test_color_mask();
     test_line_stipple();
     test_stencil();
+    test_shared_facets();
     scene_finish(&sc);
     return CHECK_RESULT("test_shapes");
 }

@@ -374,6 +374,7 @@ rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result
             return out->status;
     }
     out->unrecorded = interp_unrecorded(ip);
+    interp_budget_used(ip, &out->used, &out->limit);
     const char *cut = interp_frame_cut(ip);
     if (cut)
         snprintf(out->cut, sizeof out->cut, "%s", cut);

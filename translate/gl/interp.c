@@ -235,6 +235,7 @@ void interp_destroy(interp *ip)
     tr_free(ip->ras_runs);
     tr_free(ip->ras_pieces);
     interp_textures_free(ip);
+    interp_pixels_free(ip);
     interp_eval_free(ip);
     interp_nurbs_free(ip);
     interp_zorder_free(ip);

@@ -74,7 +74,8 @@
  * bytes (a list that calls itself twice) cannot ask for unbounded time or
  * memory. Output is counted as the scene holds it: a display list drawn
  * many times and shared (interp_list.c) counts its vertices once and one
- * instance per call. A frame that would exceed one is cut there: the rest
+ * instance per call, a texture image drawn many times once
+ * (interp_texture.c). A frame that would exceed one is cut there: the rest
  * of its commands are skipped, what came before is kept, and
  * interp_frame_cut says why. */
 #define INTERP_BUDGET_COMMANDS (1u << 26)    /* commands run */
@@ -85,7 +86,8 @@
                                                 costs the writer as a few triangles) */
 #define INTERP_BUDGET_SOLIDS (1u << 18)      /* exact GLU/GLUT solids it holds */
 #define INTERP_BUDGET_INSTANCES (1u << 18)   /* placements of shared list output */
-#define INTERP_BUDGET_TEXELS (1u << 28)      /* texture bytes read, copied or held */
+#define INTERP_BUDGET_TEXELS (1u << 28)      /* texture bytes read, copied or held: each
+                                                image once, however often drawn */
 
 enum interp_matrix_mode { INTERP_MV, INTERP_PROJ, INTERP_TEX, INTERP_NMODES };
 
@@ -349,6 +351,16 @@ void interp_set_heavy(interp *ip, interp_heavy_fn fn, void *ctx);
 /* Why the current frame was cut (its budget ran out), as one line that
  * names where, or NULL when it was not. Valid until the next frame. */
 const char *interp_frame_cut(const interp *ip);
+
+/* What the current frame used of each budget (INTERP_BUDGET_*): the
+ * counts that only grow (commands, vertices assembled, texture bytes) as
+ * they stand, and the most the scene held of the others at any one time
+ * (a shared list call holds its geometry until it is found shared, a
+ * glClear drops what was drawn). limit: the budget as applied. */
+typedef struct interp_budget_use {
+    uint64_t commands, assembled, vertices, triangles, lines, solids, instances, texels;
+} interp_budget_use;
+void interp_budget_used(const interp *ip, interp_budget_use *used, interp_budget_use *limit);
 
 /* What the current frame was drawn without because the trace is damaged
  * (display-list bodies or texture images that could not be read): the

@@ -99,6 +99,7 @@ struct interp {
 
     /* The frame's budget and completeness (interp_bounds.c). */
     uint64_t cmds_run, assembled, texels;
+    interp_budget_use peak; /* of the scene's counts (interp_budget_peak) */
     unsigned budget_shift; /* the budget divided by 2^shift (interp_set_budget_shift) */
     bool cut;                /* the budget ran out: the rest of the frame is skipped */
     bool heavy;              /* heavy_fn was called in this frame */
@@ -211,6 +212,8 @@ struct interp {
     bool list_ce;        /* running a GL_COMPILE_AND_EXECUTE body as it is defined */
     uint32_t list_calls; /* this frame's, against a hostile trace's recursion */
     struct interp_groups *groups;
+    /* The frame's pixel rectangles, converted (interp_pixels.c). */
+    struct interp_pixconv *pixconv;
 
     /* The client arrays of the next draw: the @ArrayData records before
      * it (interp_array.c). */
@@ -389,6 +392,8 @@ bool interp_texture_rect_on(const interp *ip, uint32_t k);
 /* Forgets the r coordinates seen (interp_texture.c): a new primitive
  * starts, whose r decides which slice of a 3D texture it shows. */
 void interp_texture_r_reset(interp *ip);
+/* Forgets the scene textures the last frame made (interp_texture.c). */
+void interp_texture_begin_frame(interp *ip);
 
 /* glTexImage3D's effect on the bound 3D texture (interp_texture.c). */
 void interp_tex_image3d(interp *ip, int32_t level, int32_t internal, int64_t w, int64_t h,
@@ -436,6 +441,10 @@ size_t interp_pixel_bytes(GLenum format, GLenum type, int64_t w, int64_t h);
  * pixel rectangles to the camera's viewport, and notes that geometry drawn
  * after them shows behind them (interp_pixels.c). */
 void interp_pixels_end_frame(interp *ip);
+/* Forgets the last frame's converted pixel rectangles; frees them all
+ * (interp_pixels.c). */
+void interp_pixels_begin_frame(interp *ip);
+void interp_pixels_free(interp *ip);
 void interp_pixels_float(float *dst, const uint8_t *src, size_t n, GLenum format, GLenum type);
 const uint8_t *interp_pixels_fetch(interp *ip, uint32_t id, size_t need, uint32_t *lost);
 
@@ -485,6 +494,10 @@ static inline bool interp_budget_vertex_fast(interp *ip)
     return interp_budget_vertex(ip);
 }
 bool interp_budget_texels(interp *ip, uint64_t bytes);
+/* Takes the scene's counts into the frame's peaks (interp_budget_used):
+ * called before they fall (a shared list call, a clear, a dropped
+ * accumulation pass) and at the frame's end. */
+void interp_budget_peak(interp *ip);
 
 
 /* Index of a cap, or -1 for an enum glEnable does not accept. */

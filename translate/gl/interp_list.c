@@ -266,6 +266,7 @@ static bool group_promote(interp *ip, list_group *g)
 
 typedef struct call_mark {
     size_t m0, v0, t0;
+    uint64_t facets; /* ip->shape_facets at the call */
     uint32_t generation;
     uint32_t painter; /* ip->painter at the call */
     bool painter_on;  /* the call began without a depth test */
@@ -360,6 +361,10 @@ static void share_output(interp *ip, uint32_t body, const call_mark *mk)
         s->nmeshes = mk->m0;
         s->nverts = mk->v0;
         s->ntris = mk->t0;
+        /* Its tessellated shapes are the prototype's: the frame's cap on
+         * facets (interp_shape.c) counts them once, as the scene holds
+         * them. */
+        ip->shape_facets = mk->facets;
         s->mesh_floor = s->nmeshes;
         return;
     }
@@ -419,6 +424,7 @@ static void call_list(interp *ip, uint32_t name)
         mk.m0 = s->nmeshes;
         mk.v0 = s->nverts;
         mk.t0 = s->ntris;
+        mk.facets = ip->shape_facets;
         mk.generation = s->generation;
         mk.painter = ip->painter;
         const gl_attribs *a = &ip->st.a;
@@ -450,8 +456,10 @@ static void call_list(interp *ip, uint32_t name)
                  name, body, (unsigned long long)err.offset, rgl_status_str(st));
         interp_missing(ip, what);
     }
-    if (share)
+    if (share) {
+        interp_budget_peak(ip);
         share_output(ip, body, &mk);
+    }
 }
 
 void interp_calllist(interp *ip, const rgl_cmd *cmd)

@@ -15,6 +15,7 @@
 
 #include <string.h>
 
+#include "namemap.h"
 #include "talloc.h"
 
 /* ---- The raster position --------------------------------------------------------- */
@@ -310,13 +311,9 @@ void interp_bitmap(interp *ip, const rgl_cmd *cmd)
 
 /* Draws w x h RGBA pixels (floats, before pixel transfer) at the raster
  * position with the pixel zoom (GL 2.1 3.6.4 and 3.6.5). */
-static void draw_rect(interp *ip, float *px, int64_t w, int64_t h)
+static void draw_rect(interp *ip, const float *px, int64_t w, int64_t h)
 {
     const gl_attribs *a = &ip->st.a;
-    size_t n = (size_t)w * (size_t)h;
-    for (size_t i = 0; i < n; i++)
-        for (int k = 0; k < 4; k++)
-            px[i * 4 + k] = clamp01(px[i * 4 + k] * a->pixel.scale[k] + a->pixel.bias[k]);
     if (a->pixel.others)
         interp_note(ip, DIAG_NOTE_PIXELS_OTHER);
     bool over = pixels_begin(ip);
@@ -350,10 +347,80 @@ static void draw_rect(interp *ip, float *px, int64_t w, int64_t h)
             if (!(fk >= 0 && fk < (double)w))
                 continue;
             int64_t k = (int64_t)fk;
-            put_pixel(ov + ((size_t)y * (size_t)ow + (size_t)x) * 4,
-                      px + ((size_t)m * (size_t)w + (size_t)k) * 4, over);
+            /* Pixel transfer: the colour scales and biases, clamped. */
+            const float *p = px + ((size_t)m * (size_t)w + (size_t)k) * 4;
+            float c[4];
+            for (int q = 0; q < 4; q++)
+                c[q] = clamp01(p[q] * a->pixel.scale[q] + a->pixel.bias[q]);
+            put_pixel(ov + ((size_t)y * (size_t)ow + (size_t)x) * 4, c, over);
         }
     }
+}
+
+/* ---- Pixel rectangles converted once a frame --------------------------------------- */
+
+/* A rectangle drawn again (a sprite, a tiled background, a glyph) is read
+ * and converted once a frame: each later draw costs the budget only the
+ * pixels it writes. */
+typedef struct pix_conv {
+    uint32_t id;
+    GLenum format, type;
+    int64_t w, h;
+    float *px; /* w x h RGBA, before pixel transfer */
+} pix_conv;
+
+struct interp_pixconv {
+    namemap ids; /* resource -> index in v */
+    pix_conv *v;
+    size_t n, cap;
+};
+
+void interp_pixels_begin_frame(interp *ip)
+{
+    struct interp_pixconv *c = ip->pixconv;
+    if (!c)
+        return;
+    for (size_t i = 0; i < c->n; i++)
+        tr_free(c->v[i].px);
+    c->n = 0;
+    namemap_clear(&c->ids);
+}
+
+void interp_pixels_free(interp *ip)
+{
+    interp_pixels_begin_frame(ip);
+    if (ip->pixconv) {
+        namemap_finish(&ip->pixconv->ids);
+        tr_free(ip->pixconv->v);
+        tr_free(ip->pixconv);
+        ip->pixconv = NULL;
+    }
+}
+
+/* Keeps px (w x h, converted from resource id) for the frame's later
+ * draws; false (px still the caller's) without memory for it. */
+static bool conv_keep(interp *ip, uint32_t id, GLenum format, GLenum type, int64_t w, int64_t h,
+                      float *px)
+{
+    if (!ip->pixconv) {
+        ip->pixconv = tr_realloc(NULL, sizeof *ip->pixconv);
+        if (!ip->pixconv)
+            return false;
+        memset(ip->pixconv, 0, sizeof *ip->pixconv);
+        namemap_init(&ip->pixconv->ids);
+    }
+    struct interp_pixconv *c = ip->pixconv;
+    int64_t i = namemap_get(&c->ids, id);
+    if (i < 0) {
+        if (c->n >= UINT32_MAX || tr_grow((void **)&c->v, &c->cap, c->n + 1, sizeof *c->v) != 0 ||
+            namemap_put(&c->ids, id, (uint32_t)c->n) != 0)
+            return false;
+        i = (int64_t)c->n++;
+    } else {
+        tr_free(c->v[i].px); /* the same pixels as another format, type or size */
+    }
+    c->v[i] = (pix_conv){id, format, type, w, h, px};
+    return true;
 }
 
 /* Converts resource id's w x h pixels of format/type and draws them. */
@@ -363,6 +430,13 @@ static void draw_pixels(interp *ip, uint32_t id, GLenum format, GLenum type, int
     size_t need = interp_pixel_bytes(format, type, w, h);
     if (!need) {
         interp_note(ip, DIAG_NOTE_PIXELS_OTHER);
+        return;
+    }
+    const struct interp_pixconv *c = ip->pixconv;
+    int64_t i = c ? namemap_get(&c->ids, id) : -1;
+    if (i >= 0 && c->v[i].format == format && c->v[i].type == type && c->v[i].w == w &&
+        c->v[i].h == h) {
+        draw_rect(ip, c->v[i].px, w, h);
         return;
     }
     uint32_t lost = 0;
@@ -376,7 +450,8 @@ static void draw_pixels(interp *ip, uint32_t id, GLenum format, GLenum type, int
     }
     interp_pixels_float(px, src, (size_t)w * (size_t)h, format, type);
     draw_rect(ip, px, w, h);
-    tr_free(px);
+    if (!conv_keep(ip, id, format, type, w, h, px))
+        tr_free(px);
 }
 
 void interp_drawpixels(interp *ip, const rgl_cmd *cmd)

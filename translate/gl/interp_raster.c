@@ -69,6 +69,8 @@ void interp_begin_frame(interp *ip)
     if (ip->scene)
         scene_reset(ip->scene);
     interp_lists_begin_frame(ip);
+    interp_texture_begin_frame(ip);
+    interp_pixels_begin_frame(ip);
     /* the scene's stencil region starts empty (interp_stencil.c) */
     ip->stencil.first = 0;
     ip->stencil.written = ip->stencil.mixed = false;
@@ -85,6 +87,7 @@ void interp_end_frame(interp *ip)
     }
     if (!s)
         return;
+    interp_budget_peak(ip);
     interp_fix_camera(ip);
     interp_proj_end_frame(ip);
     interp_zorder_end_frame(ip);
@@ -181,6 +184,7 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
         return;
     interp_proj_clear(ip);
     /* Everything drawn so far is gone; the next draw fixes the camera anew. */
+    interp_budget_peak(ip);
     scene_clear_geometry(ip->scene);
     ip->nclear_rects = 0;
     ip->camera_fixed = false;

@@ -1074,8 +1074,10 @@ static int write_mipmapped(povwriter *w, outbuf *ob, const scene_vertex *verts,
         } else {
             double k = r.lambda * POVMIP_STEPS;
             k = k < -1e6 ? -1e6 : k > 1e6 ? 1e6 : k;
-            single[ns].key = (int32_t)lround(k);
-            single[ns++].i = (uint32_t)i;
+            for (size_t j = i; j < i + run; j++) {
+                single[ns].key = (int32_t)lround(k);
+                single[ns++].i = (uint32_t)j;
+            }
         }
         i += run;
     }

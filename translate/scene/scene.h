@@ -238,7 +238,7 @@ typedef struct scene_fog {
 typedef struct scene_texture {
     uint8_t *rgba;
     int width, height;
-    uint64_t hash;
+    uint64_t hash;           /* of the size and texels (scene_add_texture) */
     bool repeat_s, repeat_t; /* GL_REPEAT; else clamped */
     bool mirror_s, mirror_t; /* repeated as GL_MIRRORED_REPEAT */
     bool border_s, border_t; /* clamped as GL_CLAMP (the border colour counts
@@ -446,8 +446,11 @@ scene_solid *scene_add_solid(scene *s);
 
 /* The index of a texture with these pixels and sampling (the scene takes
  * rgba, which it frees, or frees at once when it already holds an equal
- * texture), or -1 on failure (rgba freed). */
+ * texture), or -1 on failure (rgba freed). t->hash is the scene's to set. */
 int32_t scene_add_texture(scene *s, const scene_texture *t);
+/* Whether a and b are sampled alike: every field but the texels and their
+ * hash (size, wrap, filters, environment, alpha test, mipmap link). */
+bool scene_texture_sampling_same(const scene_texture *a, const scene_texture *b);
 
 /* Index of a material equal (bytewise) to m in the pool, adding it when
  * new; -1 on failure. Build m zeroed. */
