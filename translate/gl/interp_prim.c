@@ -190,6 +190,25 @@ static void painter_shift(interp *ip, mat4 *to_eye)
     interp_painter_apply(ip, ip->painter, to_eye);
 }
 
+/* The next segment of a line draw without a depth test: one painter's
+ * step nearer than the one before, as GL draws it over what came before
+ * where both light a pixel (a strip's joints, wide lines, crossings).
+ * *delta takes eye points of the draw's own shift (base) to the new one. */
+static bool painter_step(interp *ip, uint32_t base, mat4 *delta)
+{
+    const gl_attribs *a = &ip->st.a;
+    if ((a->caps[INTERP_CAP_DEPTH_TEST] && (a->depth.func == GL_LESS || a->depth.func == GL_LEQUAL)) ||
+        ip->painter >= PAINTER_MAX || !ip->scene)
+        return false;
+    mat4 from = mat4_identity(), inv;
+    interp_painter_apply(ip, base, &from);
+    if (!mat4_invert(&from, &inv))
+        return false;
+    *delta = inv;
+    interp_painter_apply(ip, ++ip->painter, delta);
+    return true;
+}
+
 bool interp_object_to_eye(const interp *ip, const mat4 *mv, const mat4 *proj,
                          const int32_t vp[4], mat4 *out)
 {
@@ -760,6 +779,9 @@ typedef struct assembly {
     bool list_quads; /* quads split along v1-v3, as Mesa does in a list or when clipping */
     bool stipple;       /* glLineStipple applies (interp_stipple.c) */
     double stipple_s;   /* GL's stipple counter (a float in Mesa) */
+    bool step;          /* a line draw (not outlined faces, which interp_proj may step) */
+    uint32_t segments;  /* segments added so far: each after the first a painter's step */
+    uint32_t painter;   /* the draw's own painter's shift (ip->painter when it began) */
     int relit;          /* INTERP_RELIT_*: filled faces lit as GL does (interp_relit.c) */
     bool lit_edges;     /* outlined (GL_LINE, GL_POINT) lit faces: GL's lit colours, relit_col */
     bool fog_split;     /* triangles behind the eye get their own fog (interp_fogbehind.c) */
@@ -841,6 +863,14 @@ static void add_segment(assembly *as, uint32_t i0, uint32_t i1, uint32_t provoki
     ln.stipple = as->stipple;
     ln.have_win = t[0] == 0 && t[1] == 1 && interp_gl_window(ip, v0->pos, ln.win[0]) &&
                   interp_gl_window(ip, v1->pos, ln.win[1]);
+    mat4 delta;
+    if (as->step && as->segments++ > 0 && painter_step(ip, as->painter, &delta))
+        for (int e = 0; e < 2; e++) {
+            double in[4] = {ln.p[e][0], ln.p[e][1], ln.p[e][2], 1}, o[4];
+            mat4_apply(&delta, in, o);
+            for (int k = 0; k < 3; k++)
+                ln.p[e][k] = o[k] / o[3];
+        }
     interp_add_line(ip, &ln, &as->stipple_s);
 }
 
@@ -1383,6 +1413,11 @@ static void end_primitive(interp *ip)
     as.ip = ip;
     as.s = s;
     as.base = (uint32_t)ip->prim_first;
+    as.painter = ip->painter;
+    /* of one colour, whichever segment shows is the same: no step (a
+     * draw of thousands, stroke text, would use up the painter's range) */
+    as.step = (mode == GL_LINES || mode == GL_LINE_STRIP || mode == GL_LINE_LOOP) &&
+              !prim_one_colour(ip);
     as.flat = a->lighting.shade_model == GL_FLAT;
     as.first = a->lighting.provoking == GL_FIRST_VERTEX_CONVENTION;
     as.swap = a->polygon.front_face == GL_CW;
