@@ -86,7 +86,8 @@
     X(NOTE_POLYGON_OFFSET, "approximated: glPolygonOffset moves an offset polygon one pixel's width along the camera's rays (away from the eye for a positive offset), not by GL's window-depth offset; offset GLU and GLUT shapes are drawn as GL's facets") \
     X(NOTE_DEPTH_ONLY, "approximated: draws with every colour channel masked (glColorMask) are left out, but they wrote depth, which hides in GL what is drawn behind them later") \
     X(NOTE_FOG_BEHIND, "approximated: fogged primitives reaching behind the eye, which OpenGL fogs by |eye z| interpolated across the near-plane cut (denser near the eye than their distance)") \
-    X(NOTE_RELIT_SPECULAR, "approximated: textured faces under GL_SEPARATE_SPECULAR_COLOR with a highlight, lit past white or showing their back under one-sided lighting, lit per pixel (unclamped, normals toward the viewer)")
+    X(NOTE_RELIT_SPECULAR, "approximated: textured faces under GL_SEPARATE_SPECULAR_COLOR with a highlight, lit past white or showing their back under one-sided lighting, lit per pixel (unclamped, normals toward the viewer)") \
+    X(NOTE_COLOR_MATERIAL_BEGIN, "approximated: a glColor between glBegin and glEnd of the first draw after a glEnable(GL_COLOR_MATERIAL) that kept a glMaterial colour (as Mesa keeps it): the primitive's vertices before it take that material, where Mesa takes the colour current then")
 
 typedef enum diag_kind {
 #define DIAG_ENUM_(name, text) DIAG_##name,

@@ -352,6 +352,10 @@ static inline void set_colour(interp *ip, float c0, float c1, float c2, float c3
     put4(a->current.color, c0, c1, c2, c3);
     if (!a->caps[INTERP_CAP_COLOR_MATERIAL])
         return;
+    if (ip->cm.stale) {
+        interp_cm_colour(ip);
+        return;
+    }
     if (a->lighting.color_material_face == GL_FRONT_AND_BACK &&
         a->lighting.color_material_mode == GL_AMBIENT_AND_DIFFUSE) {
         /* GL's default, interp_color_material_update's first case */
@@ -590,6 +594,9 @@ void interp_diag(interp *ip, diag_kind kind, const char *fmt, ...)
     diag_add(ip->log, kind, prefix, "%s", msg);
 }
 
+/* notes_seen holds a bit per note kind. */
+_Static_assert(DIAG_COUNT - DIAG_FIRST_NOTE <= 64, "more note kinds than notes_seen has bits");
+
 void interp_clear_notes(interp *ip) { ip->notes_seen = 0; }
 
 void interp_frame_note(interp *ip, diag_kind kind) { interp_note(ip, kind); }
@@ -654,9 +661,10 @@ static void set_cap(interp *ip, const rgl_cmd *cmd, bool on)
     bool was = ip->st.a.caps[i];
     ip->st.a.caps[i] = on;
     /* GL 1.x 2.13.3: while COLOR_MATERIAL is on, the material tracks the
-     * current colour, starting at the glEnable. */
-    if (i == INTERP_CAP_COLOR_MATERIAL && on && !was)
-        interp_color_material_update(ip);
+     * current colour, starting at the glEnable (as Mesa does it:
+     * interp_cm_enable). */
+    if (i == INTERP_CAP_COLOR_MATERIAL && on != was)
+        interp_cm_enable(ip, on);
 }
 
 void interp_enable(interp *ip, const rgl_cmd *cmd) { set_cap(ip, cmd, true); }
@@ -672,6 +680,7 @@ void interp_pushattrib(interp *ip, const rgl_cmd *cmd)
                     INTERP_ATTRIB_DEPTH);
         return;
     }
+    interp_cm_flush(ip);
     gl_attrib_entry *e = &st->attrib_stack[st->attrib_depth++];
     e->mask = (uint32_t)cmd->arg[0].v.u;
     e->saved = st->a;
@@ -685,6 +694,7 @@ void interp_popattrib(interp *ip, const rgl_cmd *cmd)
         interp_diag(ip, DIAG_GL_STACK_UNDERFLOW, "attribute stack underflow");
         return;
     }
+    interp_cm_flush(ip);
     const gl_attrib_entry *e = &st->attrib_stack[--st->attrib_depth];
     const gl_attribs *s = &e->saved;
     gl_attribs *a = &st->a;
@@ -726,9 +736,19 @@ void interp_popattrib(interp *ip, const rgl_cmd *cmd)
         a->pixel = s->pixel;
     if (m & GL_SCISSOR_BIT)
         a->scissor = s->scissor;
+    bool cm_was = a->caps[INTERP_CAP_COLOR_MATERIAL];
     for (int i = 0; i < INTERP_CAP_COUNT; i++)
         if ((m & GL_ENABLE_BIT) || (m & cap_groups[i]))
             a->caps[i] = s->caps[i];
+    /* Mesa copies the current colour into the tracked terms when the pop
+     * turns colour material on or restores the colour or material under
+     * it (measured: tests/programs/cmat_*.c). */
+    if (!a->caps[INTERP_CAP_COLOR_MATERIAL]) {
+        ip->cm.stale = false;
+    } else if (!cm_was || (m & (GL_CURRENT_BIT | GL_LIGHTING_BIT))) {
+        ip->cm.stale = false;
+        interp_color_material_update(ip);
+    }
 }
 
 /* ---- Calls with no effect on the picture ------------------------------------------------- */

@@ -245,6 +245,16 @@ struct interp {
         uint8_t cm_extra[2];
     } vmat;
 
+    /* GL_COLOR_MATERIAL as Mesa follows it (interp_light.c, "Colour
+     * material"): the terms glMaterial set since the last draw (by face,
+     * SCENE_CM_* bits), and after a glEnable that kept some of them, the
+     * colour current then and whether a draw came since. */
+    struct interp_cm {
+        uint8_t held[2];
+        bool stale, drawn;
+        float ref[4];
+    } cm;
+
     /* The frame's accumulation-buffer passes (interp_accum.c): after the
      * first glAccum(GL_ACCUM or GL_LOAD), what later passes draw is dropped
      * back to mark until glAccum(GL_RETURN); each pass's first draw gives
@@ -740,6 +750,23 @@ int interp_nurbs_copy(interp *dst, const interp *src);
 /* Marks the colour glColor sets into the material with GL_COLOR_MATERIAL
  * (interp_light.c). */
 void interp_color_material_update(interp *ip);
+
+/* Colour material as Mesa follows it (interp_light.c): interp_cm_colour
+ * after the current colour changed while GL_COLOR_MATERIAL is on (in place
+ * of interp_color_material_update); interp_cm_enable at the cap's change;
+ * interp_cm_draw as a draw starts. interp_cm_on: the material's terms
+ * colour material names come from the colour now (on, and not kept from
+ * before the glEnable). */
+void interp_cm_colour(interp *ip);
+void interp_cm_enable(interp *ip, bool on);
+void interp_cm_draw(interp *ip);
+/* Mesa flushes its vertex buffer here (glNewList, glEndList, glCallList,
+ * glPushAttrib, glPopAttrib): a glMaterial before no longer holds. */
+static inline void interp_cm_flush(interp *ip) { ip->cm.held[0] = ip->cm.held[1] = 0; }
+static inline bool interp_cm_on(const interp *ip)
+{
+    return ip->st.a.caps[INTERP_CAP_COLOR_MATERIAL] && !ip->cm.stale;
+}
 
 /* The scene material index of the current lighting state, with the light
  * set of the lights enabled now (interp_light.c, interp_lightset.c); -1 on

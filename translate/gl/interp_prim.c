@@ -50,7 +50,7 @@ void interp_color(interp *ip, const rgl_cmd *cmd)
     for (uint32_t k = 0; k < 4; k++)
         c[k] = k < n ? (float)normalise(type, cmd_value(cmd, k)) : 1.0f;
     if (ip->st.a.caps[INTERP_CAP_COLOR_MATERIAL])
-        interp_color_material_update(ip);
+        interp_cm_colour(ip);
 }
 
 /* The current secondary colour and fog coordinate: taken by each vertex
@@ -118,7 +118,7 @@ static void draw_notes(interp *ip)
         (c[INTERP_CAP_TEXTURE_2D] || c[INTERP_CAP_TEXTURE_1D]) &&
         a->texture.env_mode == GL_MODULATE) {
         const float *sp = a->lighting.material[0].specular, *bp = a->lighting.material[1].specular;
-        bool cm_spec = c[INTERP_CAP_COLOR_MATERIAL] &&
+        bool cm_spec = interp_cm_on(ip) &&
                        a->lighting.color_material_mode == GL_SPECULAR;
         if (cm_spec || sp[0] > 0 || sp[1] > 0 || sp[2] > 0 || bp[0] > 0 || bp[1] > 0 || bp[2] > 0)
             interp_note(ip, DIAG_NOTE_SINGLE_COLOR);
@@ -338,6 +338,7 @@ static void map_blend(interp *ip, float c[4])
 
 static void begin_mode(interp *ip, GLenum mode)
 {
+    interp_cm_draw(ip);
     ip->in_begin = true;
     ip->prim_mode = mode;
     ip->prim_skip = true;
@@ -394,7 +395,7 @@ static inline void surface_colour(const interp *ip, float c0, float c1, float c2
          * (interp_color_material_update keeps the material's diffuse equal
          * to glColor when colour material covers it). */
         const gl_material *fm = &a->lighting.material[0];
-        if (!a->caps[INTERP_CAP_COLOR_MATERIAL])
+        if (!interp_cm_on(ip))
             c0 = fm->diffuse[0], c1 = fm->diffuse[1], c2 = fm->diffuse[2];
         c3 = fm->diffuse[3];
     }
