@@ -400,6 +400,10 @@ void rgl_texture_defined(rgl_stream *s, uint32_t target, const uint8_t *from, bo
 int rgl_tex_slot(uint32_t target);
 uint32_t rgl_tex_slot_target(int slot);
 
+/* Whether the current context is GL major.minor or later, or lists
+ * extension ext (a whole name). False without a context (snaptex.c). */
+bool rgl_gl_has(int major, int minor, const char *ext);
+
 /* The active texture unit of the current context (0 without a context,
  * without multitexture, inside glBegin/glEnd, or past RGL_MAX_TEX_UNITS). */
 uint32_t rgl_tex_active_unit(const rgl_stream *s);

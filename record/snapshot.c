@@ -279,6 +279,9 @@ static void snap_raster(rgl_buf *b)
     rgl_emit(b, RGL_OP_Fogf, "ef", GL_FOG_START, (double)get_f(GL_FOG_START));
     rgl_emit(b, RGL_OP_Fogf, "ef", GL_FOG_END, (double)get_f(GL_FOG_END));
     rgl_emit(b, RGL_OP_Fogfv, "eN", GL_FOG_COLOR, fc, 4);
+    /* No core version has it: the extension string says whether to ask. */
+    if (rgl_gl_has(1000, 0, "GL_NV_fog_distance"))
+        rgl_emit(b, RGL_OP_Fogi, "ei", GL_FOG_DISTANCE_MODE_NV, get_i(GL_FOG_DISTANCE_MODE_NV));
 
     rgl_emit(b, RGL_OP_BlendFunc, "ee", (uint32_t)get_i(GL_BLEND_SRC), (uint32_t)get_i(GL_BLEND_DST));
     rgl_emit(b, RGL_OP_AlphaFunc, "ef", (uint32_t)get_i(GL_ALPHA_TEST_FUNC),

@@ -174,6 +174,7 @@ void interp_default_state(gl_state *st)
     a->depth.clear = 1;
     a->fog.mode = GL_EXP;
     a->fog.coord_src = GL_FRAGMENT_DEPTH;
+    a->fog.distance = GL_EYE_PLANE_ABSOLUTE_NV; /* Mesa's; NV_fog_distance says GL_EYE_RADIAL_NV may be */
     a->lighting.color_control = GL_SINGLE_COLOR;
     a->fog.density = 1;
     a->fog.start = 0;

@@ -184,6 +184,7 @@ typedef struct gl_attribs {
         GLenum mode;
         float density, start, end, color[4];
         GLenum coord_src; /* GL_FOG_COORD_SRC */
+        GLenum distance;  /* GL_FOG_DISTANCE_MODE_NV */
     } fog; /* GL_FOG_BIT */
     struct {
         GLenum perspective, point, line, polygon, fog;

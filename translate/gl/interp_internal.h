@@ -166,7 +166,8 @@ struct interp {
     size_t cap_relit_copy;
     bool relit_over;       /* some vertex was lit past 1 in a channel */
     bool prim_relit;       /* the look being made is of GL-lit faces */
-    double *fogz;          /* GL's eye z of each vertex, when fogged (interp_fogbehind.c) */
+    double (*fogz)[4];     /* GL's eye point and fog distance of each vertex, when fogged
+                              (interp_fogbehind.c) */
     size_t cap_fogz;
     bool fog_split;        /* the primitive's triangles behind the eye get their own fog */
 
@@ -564,9 +565,13 @@ void interp_fogsec_vertex(interp *ip, float color[4]);
  * coordinates gets their one factor (look.fog_fixed), or a note. */
 void interp_fogsec_track(interp *ip);
 void interp_fogsec_look(interp *ip, scene_look *look);
-/* The fog of eye-plane distance |z_eye| on a line end's or point's colour,
- * when fog is on and comes from the depth (interp_fogsec.c). */
-void interp_fogsec_eye(interp *ip, double z_eye, float color[4]);
+/* The fog of the eye distance of eye-space point eye on a line end's or
+ * point's colour, when fog is on and comes from the depth (interp_fogsec.c). */
+void interp_fogsec_eye(interp *ip, const double eye[3], float color[4]);
+/* GL_FOG_DISTANCE_MODE_NV as the scene's enum scene_fog_distance, and the
+ * distance c it takes of an eye-space point (interp_fogbehind.c). */
+int interp_fog_distance_kind(const interp *ip);
+double interp_fog_distance(const interp *ip, const double eye[3]);
 bool interp_accum_clear(interp *ip);
 
 /* Evaluator state (interp_eval.c): copied with the context state (-1 on

@@ -354,7 +354,7 @@ void interp_fog(interp *ip, const rgl_cmd *cmd)
     uint32_t need = pname == GL_FOG_COLOR ? 4 : 1;
     switch (pname) {
     case GL_FOG_MODE: case GL_FOG_DENSITY: case GL_FOG_START: case GL_FOG_END:
-    case GL_FOG_INDEX: case GL_FOG_COLOR: case GL_FOG_COORD_SRC:
+    case GL_FOG_INDEX: case GL_FOG_COLOR: case GL_FOG_COORD_SRC: case GL_FOG_DISTANCE_MODE_NV:
         break;
     default:
         interp_bad_enum(ip, "fog parameter", pname);
@@ -396,6 +396,15 @@ void interp_fog(interp *ip, const rgl_cmd *cmd)
         }
         ip->st.a.fog.coord_src = interp_enum_of(v[0]);
         break;
+    case GL_FOG_DISTANCE_MODE_NV: { /* NV_fog_distance, which Mesa has */
+        GLenum d = interp_enum_of(v[0]);
+        if (d != GL_EYE_RADIAL_NV && d != GL_EYE_PLANE && d != GL_EYE_PLANE_ABSOLUTE_NV) {
+            interp_bad_enum(ip, "fog distance mode", d);
+            return;
+        }
+        ip->st.a.fog.distance = d;
+        break;
+    }
     default: break; /* colour index: no effect here */
     }
 }
@@ -486,6 +495,7 @@ void interp_fix_fog(interp *ip)
     f.start = a->fog.start;
     f.end = a->fog.end;
     memcpy(f.color, a->fog.color, sizeof f.color);
+    f.distance = interp_fog_distance_kind(ip);
     if (!s->fog.on)
         s->fog = f;
     else if (memcmp(&s->fog, &f, sizeof f) != 0)

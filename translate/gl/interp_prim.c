@@ -888,7 +888,7 @@ static void add_segment(assembly *as, uint32_t i0, uint32_t i1, uint32_t provoki
             double te = t[0] + (t[1] - t[0]) * dash[d][e];
             for (int k = 0; k < 4; k++)
                 l->color[e][k] = (float)(c0->color[k] + (c1->color[k] - c0->color[k]) * te);
-            interp_fogsec_eye(as->ip, q[e][2], l->color[e]);
+            interp_fogsec_eye(as->ip, q[e], l->color[e]);
         }
     }
 }
@@ -929,7 +929,7 @@ static void add_point(assembly *as, uint32_t i, uint32_t colour_from)
     }
     pt->round = as->point_smooth;
     memcpy(pt->color, as->s->verts[colour_from].color, sizeof pt->color);
-    interp_fogsec_eye(as->ip, p[2], pt->color);
+    interp_fogsec_eye(as->ip, p, pt->color);
     pt->color[3] *= (float)fade;
 }
 

@@ -858,7 +858,7 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
             memset(&fp, 0, sizeof fp);
             for (int k = 0; k < 4; k++)
                 fp.m[k * 4 + 2] = look->fog_plane[k];
-            povlight_fog_declare(&w->light, ob, "rgl_fog", &fp);
+            povlight_fog_declare(&w->light, ob, "rgl_fog", &fp, SCENE_FOG_ABS_Z);
         } else if (look->fog) {
             povfog_declare(&w->light, ob, "rgl_fog", to_eye, look);
         }
