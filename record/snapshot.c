@@ -174,6 +174,34 @@ static void snap_stencil(rgl_buf *b)
         rgl_emit(b, RGL_OP_Enable, "e", GL_STENCIL_TEST);
 }
 
+/* The back faces' stencil state (GL 2.0), only where it differs from the
+ * front's: a 1.3 reader stops at these rows, so they come last and only
+ * when they say something. */
+static void snap_stencil_back(rgl_buf *b)
+{
+    if (!rgl_gl_has(2, 0, "GL_ATI_separate_stencil")) /* its queries are GL 2.0's */
+        return;
+    GLint f[7] = {GL_ALWAYS, 0, -1, GL_KEEP, GL_KEEP, GL_KEEP, -1};
+    GLint k[7] = {GL_ALWAYS, 0, -1, GL_KEEP, GL_KEEP, GL_KEEP, -1};
+    static const GLenum qf[7] = {GL_STENCIL_FUNC, GL_STENCIL_REF, GL_STENCIL_VALUE_MASK,
+                                 GL_STENCIL_FAIL, GL_STENCIL_PASS_DEPTH_FAIL,
+                                 GL_STENCIL_PASS_DEPTH_PASS, GL_STENCIL_WRITEMASK};
+    static const GLenum qb[7] = {GL_STENCIL_BACK_FUNC, GL_STENCIL_BACK_REF,
+                                 GL_STENCIL_BACK_VALUE_MASK, GL_STENCIL_BACK_FAIL,
+                                 GL_STENCIL_BACK_PASS_DEPTH_FAIL, GL_STENCIL_BACK_PASS_DEPTH_PASS,
+                                 GL_STENCIL_BACK_WRITEMASK};
+    for (int i = 0; i < 7; i++) {
+        glGetIntegerv(qf[i], &f[i]);
+        glGetIntegerv(qb[i], &k[i]);
+    }
+    if (memcmp(f, k, sizeof f) == 0)
+        return;
+    rgl_emit(b, RGL_OP_StencilFuncSeparate, "eeie", GL_BACK, (uint32_t)k[0], k[1], (uint32_t)k[2]);
+    rgl_emit(b, RGL_OP_StencilOpSeparate, "eeee", GL_BACK, (uint32_t)k[3], (uint32_t)k[4],
+             (uint32_t)k[5]);
+    rgl_emit(b, RGL_OP_StencilMaskSeparate, "ee", GL_BACK, (uint32_t)k[6]);
+}
+
 /* The polygon stipple mask, unless it is GL's (all ones). glGetPolygonStipple
  * packs it as the pack state says and into a bound pack buffer: both are
  * set aside for the read (the program's own reads stay as they were), so
@@ -379,5 +407,6 @@ bool rgl_snapshot_take(rgl_stream *s, rgl_buf *out)
     rgl_quadrics_snapshot(out);
     snap_lists(s, out);
     snap_matrices(out, mode);
+    snap_stencil_back(out);
     return true;
 }

@@ -163,9 +163,12 @@ void interp_default_state(gl_state *st)
     a->color_buffer.alpha_func = GL_ALWAYS;
     for (int i = 0; i < 4; i++)
         a->color_buffer.mask[i] = true;
-    a->stencil.func = GL_ALWAYS;
-    a->stencil.fail = a->stencil.zfail = a->stencil.zpass = GL_KEEP;
-    a->stencil.value_mask = a->stencil.write_mask = 0xffffffffu;
+    for (int f = 0; f < 2; f++) {
+        struct gl_stencil_face *sf = &a->stencil.face[f];
+        sf->func = GL_ALWAYS;
+        sf->fail = sf->zfail = sf->zpass = GL_KEEP;
+        sf->value_mask = sf->write_mask = 0xffffffffu;
+    }
     a->line.stipple_factor = 1;
     a->line.stipple_pattern = 0xffff;
     memset(a->polygon.stipple, 0xff, sizeof a->polygon.stipple);

@@ -150,9 +150,14 @@ typedef struct gl_attribs {
         uint16_t stipple_pattern; /* bit 0 first */
     } line; /* GL_LINE_BIT */
     struct {
-        GLenum func, fail, zfail, zpass;
-        int32_t ref, clear;
-        uint32_t value_mask, write_mask;
+        /* front and back faces' (GL 2.0 two-sided stencil; points, lines,
+         * bitmaps and pixels take the front's) */
+        struct gl_stencil_face {
+            GLenum func, fail, zfail, zpass;
+            int32_t ref;
+            uint32_t value_mask, write_mask;
+        } face[2];
+        int32_t clear;
     } stencil; /* GL_STENCIL_BUFFER_BIT */
     struct {
         float size;

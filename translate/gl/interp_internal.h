@@ -69,6 +69,8 @@ struct interp {
         int32_t cleared; /* the clear value there */
         bool written, mixed; /* something / values the scene cannot hold */
         bool write, only; /* this draw writes the stencil; and no colour */
+        bool two_side;    /* its front and back faces' states treat it differently */
+        uint8_t tri_faces; /* the faces whose triangles it writes: 1 front, 2 back */
         uint8_t clip;     /* this draw kept 1 inside, 2 outside the region */
         size_t n;         /* the region's triangles at this draw */
     } stencil; /* interp_stencil.c */
@@ -667,13 +669,16 @@ bool interp_clip_segment(const interp *ip, double p0[3], double p1[3], double *t
 bool interp_clip_point(const interp *ip, const double p[3]);
 
 /* The stencil test (interp_stencil.c). interp_stencil_draw: at a draw's
- * start, sets ip->stencil.write/clip and returns false when the test
- * hides the whole draw; interp_stencil_writes: draws now write the
+ * start, sets ip->stencil.write/clip/two_side and returns false when the
+ * test hides the whole draw (two_side: the front faces' state decided it,
+ * the back faces' would not have; interp_prim.c notes a back face drawn); interp_stencil_writes: draws now write the
  * stencil buffer; interp_stencil_look: the region a drawn look is kept
  * to; interp_stencil_tri: a triangle (eye space) a writing draw covers;
  * interp_stencil_clear: glClear of the stencil buffer. */
 bool interp_stencil_draw(interp *ip);
 bool interp_stencil_writes(const interp *ip);
+/* The test is on with the two faces' states apart (glStencil*Separate). */
+bool interp_stencil_faces_differ(const interp *ip);
 void interp_stencil_look(interp *ip, scene_look *look);
 void interp_stencil_tri(interp *ip, double p[3][3]);
 void interp_stencil_clear(interp *ip);

@@ -744,6 +744,7 @@ typedef struct assembly {
     scene *s;
     uint32_t base;  /* absolute index of the primitive's first vertex */
     bool facing;    /* facing must be computed (culling or mixed modes) */
+    bool back;      /* with facing: the triangle being filled is a back face */
     bool cull_front, cull_back;
     bool swap;      /* glFrontFace(GL_CW): reorder so that front is CCW */
     bool check_bad; /* some vertex is not finite */
@@ -1019,7 +1020,8 @@ static bool is_ccw(const interp *ip, const uint32_t *idx, int n)
  * eye. False when the face is not drawn. */
 static bool fill_tri_checks(assembly *as, uint32_t a, uint32_t b, uint32_t c)
 {
-    if (as->ip->stencil.write) { /* its window region, for later stencil tests */
+    /* its window region, for later stencil tests (of the faces that write) */
+    if (as->ip->stencil.write && (as->ip->stencil.tri_faces & (as->back ? 2 : 1))) {
         double p[3][3];
         const scene_vertex *v = as->s->verts + as->base;
         if (eye_pos(as->ip, &v[a], p[0]) && eye_pos(as->ip, &v[b], p[1]) &&
@@ -1101,6 +1103,9 @@ static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t prov
         front = is_ccw(ip, idx, n) != as->swap;
         if ((front && as->cull_front) || (!front && as->cull_back))
             return;
+        if (!front && ip->stencil.two_side)
+            interp_note(ip, DIAG_NOTE_STENCIL_TWO_SIDE);
+        as->back = !front;
         mode = a->polygon.mode[front ? 0 : 1];
     }
     if (as->relit == INTERP_RELIT_PROBE) {
@@ -1246,6 +1251,9 @@ static inline void facing_tri(assembly *as, uint32_t a, uint32_t b, uint32_t c,
     bool front = is_ccw3(as->ip, a, b, c) != as->swap;
     if (front ? as->cull_front : as->cull_back)
         return;
+    if (!front && as->ip->stencil.two_side) /* it took the front faces' stencil */
+        interp_note(as->ip, DIAG_NOTE_STENCIL_TWO_SIDE);
+    as->back = !front;
     if (as->relit && (as->relit == INTERP_RELIT_ALL || !front))
         relit_keep(as, a, b, c, provoking);
     else
@@ -1469,7 +1477,8 @@ static void end_primitive(interp *ip)
     as.cull_front = cull && (cm == GL_FRONT || cm == GL_FRONT_AND_BACK);
     as.cull_back = cull && (cm == GL_BACK || cm == GL_FRONT_AND_BACK);
     /* Back faces may need GL's lighting (interp_relit.c). */
-    as.facing = cull || a->polygon.mode[0] != a->polygon.mode[1] || interp_relit_wanted(ip);
+    as.facing = cull || a->polygon.mode[0] != a->polygon.mode[1] || interp_relit_wanted(ip) ||
+                ip->stencil.two_side || ip->stencil.tri_faces != 3;
     if (as.facing && !compute_clip(ip, n)) {
         s->failed = true;
         return;
