@@ -202,6 +202,27 @@ static void snap_stencil_back(rgl_buf *b)
     rgl_emit(b, RGL_OP_StencilMaskSeparate, "ee", GL_BACK, (uint32_t)k[6]);
 }
 
+/* The draw buffer, where it is not the context's default (GL_BACK when
+ * double-buffered, else GL_FRONT) and the default framebuffer is drawn
+ * into: last in the snapshot, as the back faces' stencil. */
+static void snap_draw_buffer(rgl_buf *b)
+{
+    uint32_t visual = rgl_draw_visual();
+    if (!visual)
+        return;
+    if (rgl_gl_has(3, 0, "GL_EXT_framebuffer_object")) {
+        GLint fbo = SENTINEL_I;
+        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
+        if (fbo != 0)
+            return;
+    }
+    GLint db = SENTINEL_I;
+    glGetIntegerv(GL_DRAW_BUFFER, &db);
+    GLint def = (visual & 2) ? GL_BACK : GL_FRONT;
+    if (db != SENTINEL_I && db != def)
+        rgl_emit(b, RGL_OP_DrawBuffer, "ee", (uint32_t)db, visual);
+}
+
 /* The polygon stipple mask, unless it is GL's (all ones). glGetPolygonStipple
  * packs it as the pack state says and into a bound pack buffer: both are
  * set aside for the read (the program's own reads stay as they were), so
@@ -408,5 +429,6 @@ bool rgl_snapshot_take(rgl_stream *s, rgl_buf *out)
     snap_lists(s, out);
     snap_matrices(out, mode);
     snap_stencil_back(out);
+    snap_draw_buffer(out);
     return true;
 }

@@ -176,6 +176,7 @@ void interp_default_state(gl_state *st)
     a->depth.mask = true;
     a->depth.clear = 1;
     a->fog.mode = GL_EXP;
+    a->color_buffer.draw_buffer = INTERP_DRAW_BUFFER_DEFAULT;
     a->fog.coord_src = GL_FRAGMENT_DEPTH;
     a->fog.distance = GL_EYE_PLANE_ABSOLUTE_NV; /* Mesa's; NV_fog_distance says GL_EYE_RADIAL_NV may be */
     a->lighting.color_control = GL_SINGLE_COLOR;
@@ -356,7 +357,7 @@ static inline void set_colour(interp *ip, float c0, float c1, float c2, float c3
     put4(a->current.color, c0, c1, c2, c3);
     if (!a->caps[INTERP_CAP_COLOR_MATERIAL])
         return;
-    if (ip->cm.stale) {
+    if (ip->st.cm.stale) {
         interp_cm_colour(ip);
         return;
     }
@@ -748,9 +749,9 @@ void interp_popattrib(interp *ip, const rgl_cmd *cmd)
      * turns colour material on or restores the colour or material under
      * it (measured: tests/programs/cmat_*.c). */
     if (!a->caps[INTERP_CAP_COLOR_MATERIAL]) {
-        ip->cm.stale = false;
+        ip->st.cm.stale = false;
     } else if (!cm_was || (m & (GL_CURRENT_BIT | GL_LIGHTING_BIT))) {
-        ip->cm.stale = false;
+        ip->st.cm.stale = false;
         interp_color_material_update(ip);
     }
 }

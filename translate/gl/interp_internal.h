@@ -93,6 +93,7 @@ struct interp {
                              (interp_pixels.c) */
     int32_t pixels_org[2]; /* window position of scene.overlay's pixel (0, 0) */
     int pixels_depth_state; /* how the overlay's pixels were depth-tested (interp_pixdepth.c) */
+    bool pixels_result_due; /* a glCopyPixels under a logic op waits for its @CopyPixelsResult */
     double pixels_ndc_z;    /* their raster position's device z, when all share one */
     uint64_t shape_facets; /* facets of tessellated shapes and evaluator mesh points in this
                               frame (interp_shape.c, interp_eval.c) */
@@ -237,6 +238,7 @@ struct interp {
         int16_t slot[2 * SCENE_MAX_LIGHTSETS];
     } lsets;
     bool vertex_lighting; /* interp_set_vertex_lighting */
+    bool show_front;      /* interp_set_shown_front */
 
     /* glMaterial between the vertices of the open primitive
      * (interp_vmaterial.c): each vertex's material once one changed, and
@@ -247,16 +249,6 @@ struct interp {
         size_t n, cap;
         uint8_t cm_extra[2];
     } vmat;
-
-    /* GL_COLOR_MATERIAL as Mesa follows it (interp_light.c, "Colour
-     * material"): the terms glMaterial set since the last draw (by face,
-     * SCENE_CM_* bits), and after a glEnable that kept some of them, the
-     * colour current then and whether a draw came since. */
-    struct interp_cm {
-        uint8_t held[2];
-        bool stale, drawn;
-        float ref[4];
-    } cm;
 
     /* The frame's accumulation-buffer passes (interp_accum.c): after the
      * first glAccum(GL_ACCUM or GL_LOAD), what later passes draw is dropped
@@ -683,6 +675,12 @@ void interp_stencil_look(interp *ip, scene_look *look);
 void interp_stencil_tri(interp *ip, double p[3][3]);
 void interp_stencil_clear(interp *ip);
 
+/* The colour buffers (interp_buffers.c): interp_draw_buffer_hidden: what
+ * is drawn now goes to no buffer the frame shows; interp_set_shown_front:
+ * the frame shows the front buffer (it ends with glFlush or glFinish), or
+ * the back one of a double-buffered context. */
+bool interp_draw_buffer_hidden(const interp *ip);
+
 /* The colour and depth masks (interp_masks.c): true when a draw changes
  * no colour (every colour channel masked) and is left out, with a note
  * when it writes depth; notes a partial colour mask. */
@@ -772,10 +770,10 @@ void interp_cm_enable(interp *ip, bool on);
 void interp_cm_draw(interp *ip);
 /* Mesa flushes its vertex buffer here (glNewList, glEndList, glCallList,
  * glPushAttrib, glPopAttrib): a glMaterial before no longer holds. */
-static inline void interp_cm_flush(interp *ip) { ip->cm.held[0] = ip->cm.held[1] = 0; }
+static inline void interp_cm_flush(interp *ip) { ip->st.cm.held[0] = ip->st.cm.held[1] = 0; }
 static inline bool interp_cm_on(const interp *ip)
 {
-    return ip->st.a.caps[INTERP_CAP_COLOR_MATERIAL] && !ip->cm.stale;
+    return ip->st.a.caps[INTERP_CAP_COLOR_MATERIAL] && !ip->st.cm.stale;
 }
 
 /* The scene material index of the current lighting state, with the light

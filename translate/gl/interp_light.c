@@ -93,25 +93,25 @@ void interp_color_material_update(interp *ip)
  * changes the face or mode. */
 static void cm_resolve(interp *ip)
 {
-    if (memcmp(ip->st.a.current.color, ip->cm.ref, sizeof ip->cm.ref) != 0) {
-        ip->cm.stale = false;
+    if (memcmp(ip->st.a.current.color, ip->st.cm.ref, sizeof ip->st.cm.ref) != 0) {
+        ip->st.cm.stale = false;
         interp_color_material_update(ip);
     }
 }
 
 void interp_cm_colour(interp *ip)
 {
-    if (!ip->cm.stale) {
+    if (!ip->st.cm.stale) {
         interp_color_material_update(ip);
         return;
     }
-    if (!ip->cm.drawn && !ip->in_begin)
+    if (!ip->st.cm.drawn && !ip->in_begin)
         return; /* the draw decides (cm_resolve) */
     /* Mesa draws the primitive with each vertex's colour; the vertices
      * before this one took the material. */
     if (ip->in_begin && !ip->prim_skip && ip->scene && ip->scene->nverts > ip->prim_first)
         interp_note(ip, DIAG_NOTE_COLOR_MATERIAL_BEGIN);
-    ip->cm.stale = false;
+    ip->st.cm.stale = false;
     interp_color_material_update(ip);
 }
 
@@ -119,9 +119,9 @@ void interp_cm_enable(interp *ip, bool on)
 {
     gl_attribs *a = &ip->st.a;
     if (!on) {
-        if (ip->cm.stale && !ip->cm.drawn)
+        if (ip->st.cm.stale && !ip->st.cm.drawn)
             cm_resolve(ip);
-        ip->cm.stale = false;
+        ip->st.cm.stale = false;
         return;
     }
     int faces = face_mask(a->lighting.color_material_face);
@@ -129,8 +129,8 @@ void interp_cm_enable(interp *ip, bool on)
     uint8_t kept[2] = {0, 0};
     for (int f = 0; f < 2; f++)
         if (faces & (1 << f))
-            kept[f] = ip->cm.held[f] & bits;
-    ip->cm.held[0] = ip->cm.held[1] = 0;
+            kept[f] = ip->st.cm.held[f] & bits;
+    ip->st.cm.held[0] = ip->st.cm.held[1] = 0;
     if (!kept[0] && !kept[1]) {
         interp_color_material_update(ip);
         return;
@@ -145,18 +145,18 @@ void interp_cm_enable(interp *ip, bool on)
         if (kept[f] & SCENE_CM_SPECULAR) memcpy(g->specular, m[f].specular, sizeof g->specular);
         if (kept[f] & SCENE_CM_EMISSION) memcpy(g->emission, m[f].emission, sizeof g->emission);
     }
-    ip->cm.stale = true;
-    ip->cm.drawn = false;
-    memcpy(ip->cm.ref, a->current.color, sizeof ip->cm.ref);
+    ip->st.cm.stale = true;
+    ip->st.cm.drawn = false;
+    memcpy(ip->st.cm.ref, a->current.color, sizeof ip->st.cm.ref);
 }
 
 void interp_cm_draw(interp *ip)
 {
-    ip->cm.held[0] = ip->cm.held[1] = 0;
-    if (!ip->cm.stale || ip->cm.drawn)
+    ip->st.cm.held[0] = ip->st.cm.held[1] = 0;
+    if (!ip->st.cm.stale || ip->st.cm.drawn)
         return;
     cm_resolve(ip);
-    ip->cm.drawn = true;
+    ip->st.cm.drawn = true;
 }
 
 void interp_material(interp *ip, const rgl_cmd *cmd)
@@ -201,7 +201,7 @@ void interp_material(interp *ip, const rgl_cmd *cmd)
         if (!(faces & (1 << f)))
             continue;
         uint8_t skip = tracked_faces & (1 << f) ? tracked : 0;
-        ip->cm.held[f] |= set & (uint8_t)~skip;
+        ip->st.cm.held[f] |= set & (uint8_t)~skip;
         gl_material *m = &ip->st.a.lighting.material[f];
         if (!(skip & SCENE_CM_AMBIENT) && (pname == GL_AMBIENT || pname == GL_AMBIENT_AND_DIFFUSE))
             memcpy(m->ambient, v, sizeof v);
@@ -236,8 +236,8 @@ void interp_colormaterial(interp *ip, const rgl_cmd *cmd)
     bool same = a->lighting.color_material_face == face && a->lighting.color_material_mode == mode;
     a->lighting.color_material_face = face;
     a->lighting.color_material_mode = mode;
-    if (a->caps[INTERP_CAP_COLOR_MATERIAL] && !(same && ip->cm.stale)) {
-        ip->cm.stale = false;
+    if (a->caps[INTERP_CAP_COLOR_MATERIAL] && !(same && ip->st.cm.stale)) {
+        ip->st.cm.stale = false;
         interp_color_material_update(ip);
     }
 }
