@@ -421,7 +421,9 @@ void interp_surface_colour(const interp *ip, float out[4])
  * under GL_NORMALIZE, rescaled under GL_RESCALE_NORMAL). lit_prepare
  * finds the modelview's inverse (kept while the matrix is bit for bit the
  * same) and the lighting state once for a primitive's vertices. */
-static void lit_prepare(interp *ip, interp_lit_prep *lp)
+/* back: as GL lights back faces (two-sided lighting's back material and
+ * the normal turned). */
+static void lit_prepare_side(interp *ip, interp_lit_prep *lp, bool back)
 {
     const gl_attribs *a = &ip->st.a;
     const mat4 *mv = interp_matrix(ip, INTERP_MV);
@@ -430,7 +432,7 @@ static void lit_prepare(interp *ip, interp_lit_prep *lp)
         ip->lit_mv_ok = mat4_invert(mv, &ip->lit_mv_inv);
         ip->lit_mv_set = true;
     }
-    interp_lit_prepare(ip, false, lp);
+    interp_lit_prepare(ip, back, lp);
     lp->mv = mv;
     lp->inv = ip->lit_mv_ok ? &ip->lit_mv_inv : NULL;
     lp->normalize = a->caps[INTERP_CAP_NORMALIZE];
@@ -438,6 +440,8 @@ static void lit_prepare(interp *ip, interp_lit_prep *lp)
     const double *im = ip->lit_mv_inv.m;
     lp->rescale_r = sqrt(im[2] * im[2] + im[6] * im[6] + im[10] * im[10]);
 }
+
+static void lit_prepare(interp *ip, interp_lit_prep *lp) { lit_prepare_side(ip, lp, false); }
 
 static void lit_colour_at(const interp *ip, const interp_lit_prep *lp, double x, double y,
                           double z, const float cn[3], const float colour[4], float out[4],
@@ -484,7 +488,13 @@ static void lit_line_colour(interp *ip, double x, double y, double z, float out[
     lit_colour_at(ip, &lp, x, y, z, a->current.normal, a->current.color, out, peak);
 }
 
-void interp_relit_prepare(interp *ip, interp_lit_prep *lp) { lit_prepare(ip, lp); }
+/* The faces moved are back faces (or, one-sided, all of a textured
+ * split's, lit as front faces are): under two-sided lighting, lit as GL
+ * lights back faces. */
+void interp_relit_prepare(interp *ip, interp_lit_prep *lp)
+{
+    lit_prepare_side(ip, lp, ip->st.a.lighting.two_side);
+}
 
 void interp_relit_colour(interp *ip, const interp_lit_prep *lp, const interp_relit_in *in,
                          float c[4], double *peak)
