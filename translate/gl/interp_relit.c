@@ -66,13 +66,14 @@ int interp_relit_split(interp *ip, const scene_look *look)
         return 0;
     const gl_attribs *a = &ip->st.a;
     if (a->lighting.two_side) {
-        /* POV-Ray lights back faces with interior_texture, one texture for
-         * the whole mesh: right for one back material, not for colours
-         * that vary per vertex (colour material, glMaterial between
-         * vertices). Those back faces take GL's lit colours; textured ones
-         * keep the interior texture. */
-        const scene_material *m = look->material >= 0 ? &ip->scene->materials[look->material] : NULL;
-        return m && m->color_material[1] && look->texture < 0 ? INTERP_RELIT_BACK : 0;
+        /* GL lights a back face (by its winding) with the back material
+         * and the normal turned; POV-Ray's interior_texture goes by the
+         * side the interpolated normal faces and is one texture for the
+         * whole mesh. So a back face whose normals face the viewer came
+         * out lit as a front face (bright where GL's is dark), and colours
+         * that vary per vertex came out in one. Untextured back faces take
+         * GL's lit colours; textured ones keep the interior texture. */
+        return look->texture < 0 ? INTERP_RELIT_BACK : 0;
     }
     /* GL_SEPARATE_SPECULAR_COLOR adds the highlight after the texture: an
      * unlit copy cannot carry it (interp_lit_color sums it in). */
