@@ -762,7 +762,7 @@ void interp_color_material_update(interp *ip);
 /* Colour material as Mesa follows it (interp_light.c): interp_cm_colour
  * after the current colour changed while GL_COLOR_MATERIAL is on (in place
  * of interp_color_material_update); interp_cm_enable at the cap's change;
- * interp_cm_draw as a draw starts. interp_cm_on: the material's terms
+ * interp_cm_draw as a draw (or glRasterPos) starts. interp_cm_on: the material's terms
  * colour material names come from the colour now (on, and not kept from
  * before the glEnable). */
 void interp_cm_colour(interp *ip);

@@ -44,6 +44,7 @@ void interp_rasterpos(interp *ip, const rgl_cmd *cmd)
 {
     if (interp_reject_in_begin(ip))
         return;
+    interp_cm_draw(ip); /* Mesa lights it from its flushed current state */
     double obj[4] = {0, 0, 0, 1};
     uint32_t n = cmd_value_count(cmd);
     for (uint32_t k = 0; k < n && k < 4; k++)
