@@ -353,7 +353,7 @@ static void test_fogged_lines(void)
     if (sc.nlines == 1) {
         CHECK_NEAR(sc.lines[0].color[0][0], 0.8, 1e-3);
         CHECK_NEAR(sc.lines[0].color[0][2], 0.2, 1e-3);
-        CHECK_NEAR(sc.lines[0].color[1][0], 0.2, 1e-3);
+        CHECK_NEAR(sc.lines[0].color[2][0], 0.2, 1e-3);
     }
     if (sc.npoints == 1)
         CHECK_NEAR(sc.points[0].color[2], 0.5, 1e-3);
@@ -409,7 +409,7 @@ static void test_fog_distance(void)
     CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 1);
     CHECK_EQ_U(sc.nlines, 1);
     if (sc.nlines == 1)
-        CHECK_NEAR(sc.lines[0].color[1][0], 0.5, 2e-3);
+        CHECK_NEAR(sc.lines[0].color[2][0], 0.5, 2e-3);
     CHECK(sc.fog.on && sc.fog.distance == SCENE_FOG_RADIAL);
     size_t own = 0, plain = 0;
     for (size_t i = 0; i < sc.nmeshes; i++)
