@@ -974,8 +974,10 @@ static inline void interp_unrec_use(interp *ip, unrec_use u)
 }
 
 /* The uses of a pixel operation: one that draws into the colour buffer
- * (bitmaps, glDrawPixels, glCopyPixels), reads it (glCopyPixels,
- * glCopyTex*Image) or reads an image from the program's memory (textures,
+ * (bitmaps, glDrawPixels, glCopyPixels), reads it where the trace lacks
+ * what it read (glCopyPixels, glCopyTex*Image not read back: those read
+ * back hold the program's read buffer's pixels, whichever it was) or
+ * reads an image from the program's memory (textures,
  * pixels, bitmaps, stipples); under GL_MAP_COLOR or GL_MAP_STENCIL, the
  * pixel maps' too. */
 void interp_unrec_pixel_uses(interp *ip, bool draws, bool reads, bool from_memory);

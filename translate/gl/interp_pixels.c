@@ -420,7 +420,7 @@ void interp_copypixels(interp *ip, const rgl_cmd *cmd)
         interp_bad_value(ip, "glCopyPixels: negative size");
         return;
     }
-    interp_unrec_pixel_uses(ip, true, true, false);
+    interp_unrec_pixel_uses(ip, true, !id, false);
     if (!ip->st.a.current.raster_valid || !ip->scene || w == 0 || h == 0)
         return;
     if (type != GL_COLOR) {
