@@ -224,11 +224,19 @@ enum {
     SCENE_BLEND_INVISIBLE = 2, /* GL_ZERO, GL_ONE: nothing drawn */
 };
 
-/* glFog, in eye space: GL's fog factor of the eye-plane distance |z|. */
+/* The eye distance c that glFog's factor takes (NV_fog_distance). */
+enum scene_fog_distance {
+    SCENE_FOG_ABS_Z = 0, /* |z_eye|: GL_EYE_PLANE_ABSOLUTE_NV, Mesa's default */
+    SCENE_FOG_Z = 1,     /* z_eye, negative in front of the eye: GL_EYE_PLANE */
+    SCENE_FOG_RADIAL = 2 /* sqrt(x^2 + y^2 + z^2) in eye space: GL_EYE_RADIAL_NV */
+};
+
+/* glFog, in eye space: GL's fog factor of the eye distance (distance). */
 typedef struct scene_fog {
     bool on;
     int mode; /* GL_LINEAR, GL_EXP, GL_EXP2 */
     float density, start, end, color[4];
+    int distance; /* enum scene_fog_distance */
 } scene_fog;
 
 /* An image the scene maps (issue 5): level 0 of a GL texture as the GL
