@@ -504,6 +504,64 @@ static void test_shared_facets(void)
     seq_free(&bodies[0]);
 }
 
+/* The triangle of tri() wound clockwise: a back face under GL_CCW. */
+static void tri_cw(seq *s)
+{
+    CMD(s, Begin, GL_TRIANGLES);
+    CMD(s, Vertex3f, 0, 0, -5);
+    CMD(s, Vertex3f, 0, 1, -5);
+    CMD(s, Vertex3f, 1, 0, -5);
+    CMD0(s, End);
+}
+
+/* glStencil*Separate: a back face that does not write stays out of the
+ * region; faces tested differently are exact while one facing is drawn
+ * (culling chooses the back state), noted once a back face takes the
+ * front's; a bad face is an invalid enum. */
+static void test_stencil_two_side(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 100, 100);
+    CMD(&s, MatrixMode, GL_PROJECTION);
+    CMD(&s, Frustum, -1, 1, -1, 1, 1, 100);
+    CMD(&s, MatrixMode, GL_MODELVIEW);
+    CMD(&s, Clear, GL_STENCIL_BUFFER_BIT);
+    CMD(&s, Enable, GL_STENCIL_TEST);
+    CMD(&s, StencilFunc, GL_ALWAYS, 1, 255);
+    CMD(&s, StencilOp, GL_KEEP, GL_KEEP, GL_REPLACE);
+    CMD(&s, StencilOpSeparate, GL_BACK, GL_KEEP, GL_KEEP, GL_KEEP);
+    CMD(&s, StencilOpSeparate, GL_LEFT, GL_KEEP, GL_KEEP, GL_KEEP); /* refused */
+    CMD(&s, ColorMask, 0, 0, 0, 0);
+    tri_cw(&s); /* back: writes nothing */
+    tri(&s);    /* front: the region */
+    CMD(&s, ColorMask, 1, 1, 1, 1);
+    CMD(&s, StencilOp, GL_KEEP, GL_KEEP, GL_KEEP);
+    CMD(&s, StencilFuncSeparate, GL_FRONT, GL_EQUAL, 1, 255);
+    CMD(&s, StencilFuncSeparate, GL_BACK, GL_NOTEQUAL, 1, 255);
+    tri(&s); /* front faces only: inside, exact */
+    CMD(&s, Enable, GL_CULL_FACE);
+    CMD(&s, CullFace, GL_FRONT);
+    tri_cw(&s); /* back faces only: outside, exact */
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 1);
+    CHECK_EQ_U(sc.nstencil, 1);
+    CHECK_EQ_U(sc.nmeshes, 2);
+    if (sc.nmeshes == 2) {
+        CHECK_EQ_U(sc.meshes[0].look.stencil_out, 0);
+        CHECK_EQ_U(sc.meshes[1].look.stencil_out, 1);
+    }
+    CHECK_EQ_U(count(DIAG_NOTE_STENCIL_TWO_SIDE), 0);
+    CHECK_EQ_U(count(DIAG_NOTE_STENCIL), 0);
+    seq_init(&s);
+    CMD(&s, Disable, GL_CULL_FACE);
+    tri_cw(&s); /* a back face under the front faces' test: noted */
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_NOTE_STENCIL_TWO_SIDE), 1);
+    interp_destroy(ip);
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -517,6 +575,7 @@ int main(void)
     test_line_stipple();
     test_stencil();
     test_shared_facets();
+    test_stencil_two_side();
     scene_finish(&sc);
     return CHECK_RESULT("test_shapes");
 }

@@ -198,9 +198,14 @@ typedef struct gl_attribs {
         uint16_t stipple_pattern; /* bit 0 first */
     } line; /* GL_LINE_BIT */
     struct {
-        GLenum func, fail, zfail, zpass;
-        int32_t ref, clear;
-        uint32_t value_mask, write_mask;
+        /* front and back faces' (GL 2.0 two-sided stencil; points, lines,
+         * bitmaps and pixels take the front's) */
+        struct gl_stencil_face {
+            GLenum func, fail, zfail, zpass;
+            int32_t ref;
+            uint32_t value_mask, write_mask;
+        } face[2];
+        int32_t clear;
     } stencil; /* GL_STENCIL_BUFFER_BIT */
     struct {
         float size;
@@ -222,6 +227,8 @@ typedef struct gl_attribs {
         GLenum blend_equation, logic_op;
         float alpha_ref;
         bool mask[4];
+        GLenum draw_buffer; /* glDrawBuffer; INTERP_DRAW_BUFFER_DEFAULT: the
+                               context's default, the buffer it shows */
     } color_buffer; /* GL_COLOR_BUFFER_BIT */
     struct {
         GLenum func;
@@ -232,6 +239,7 @@ typedef struct gl_attribs {
         GLenum mode;
         float density, start, end, color[4];
         GLenum coord_src; /* GL_FOG_COORD_SRC */
+        GLenum distance;  /* GL_FOG_DISTANCE_MODE_NV */
     } fog; /* GL_FOG_BIT */
     struct {
         GLenum perspective, point, line, polygon, fog;
@@ -292,6 +300,8 @@ typedef struct interp_quadric {
 
 #define INTERP_QUADRICS 64
 
+#define INTERP_DRAW_BUFFER_DEFAULT 0xffffffffu
+
 /* The whole context state that frames carry over: GL's state, apart from
  * the interpreter's bookkeeping of the frame it translates (struct interp,
  * interp_internal.h). */
@@ -313,6 +323,18 @@ typedef struct gl_state {
     gl_tex_unit_parked units[INTERP_TEX_UNITS]; /* the active unit's slot is stale */
     float unit_texcoord[INTERP_TEX_UNITS][4]; /* current, units 1..; unit 0's is a.current */
     interp_quadric quadrics[INTERP_QUADRICS]; /* GLU quadric objects (interp_shape.c) */
+    /* GL_COLOR_MATERIAL as Mesa follows it (interp_light.c, "Colour
+     * material"; not attributes): the terms glMaterial set since the last
+     * draw (by face, SCENE_CM_* bits), and after a glEnable that kept some
+     * of them, the colour current then and whether a draw came since. */
+    struct gl_cm {
+        uint8_t held[2];
+        bool stale, drawn;
+        float ref[4];
+    } cm;
+    /* The context's colour buffers (glDrawBuffer's visual, format.md
+     * 3.19): 0 unknown, else 1 | 2 double-buffered | 4 stereo. */
+    uint32_t visual;
     /* The parts on the heap, made on first use (NULL until then: GL's
      * initial state), owned by the interpreter; interp_copy_state copies
      * what they hold: texture objects and the unpack state
@@ -342,6 +364,13 @@ void interp_set_budget_shift(interp *ip, unsigned shift);
  * drawn unlit, as OpenGL shades them (raygl2pov --vertex-lighting,
  * interp_gouraud.c); off (the default): POV-Ray lights each pixel. */
 void interp_set_vertex_lighting(interp *ip, bool on);
+
+/* Whether the frame about to run shows the front buffer (it ends with
+ * glFlush or glFinish: a single-buffered frame) rather than a
+ * double-buffered context's back buffer; draws into the other one are
+ * left out (interp_buffers.c). Until set: the back one. */
+void interp_set_shown_front(interp *ip, bool front);
+
 /* Whether the scenes are rendered with shadows (the default; off:
  * raygl2pov --no-shadows): the notes of highlights the shadowed render
  * approximates are said only then, those of the shadowless one only

@@ -25,6 +25,7 @@ typedef struct assembly {
     scene *s;
     uint32_t base;  /* absolute index of the primitive's first vertex */
     bool facing;    /* facing must be computed (culling or mixed modes) */
+    bool back;      /* with facing: the triangle being filled is a back face */
     bool cull_front, cull_back;
     bool swap;      /* glFrontFace(GL_CW): reorder so that front is CCW */
     bool check_bad; /* some vertex is not finite */
@@ -36,6 +37,9 @@ typedef struct assembly {
     bool list_quads; /* quads split along v1-v3, as Mesa does in a list or when clipping */
     bool stipple;       /* glLineStipple applies (interp_stipple.c) */
     double stipple_s;   /* GL's stipple counter (a float in Mesa) */
+    bool step;          /* a line draw (not outlined faces, which interp_proj may step) */
+    uint32_t segments;  /* segments added so far: each after the first a painter's step */
+    uint32_t painter;   /* the draw's own painter's shift (ip->painter when it began) */
     int relit;          /* INTERP_RELIT_*: filled faces lit as GL does (interp_relit.c) */
     bool lit_edges;     /* outlined (GL_LINE, GL_POINT) lit faces: GL's lit colours, relit_col */
     bool fog_split;     /* triangles behind the eye get their own fog (interp_fogbehind.c) */
@@ -92,6 +96,25 @@ static const float *edge_colour(const assembly *as, uint32_t i)
     return as->s->verts[i].color;
 }
 
+/* The next segment of a line draw without a depth test: one painter's
+ * step nearer than the one before, as GL draws it over what came before
+ * where both light a pixel (a strip's joints, wide lines, crossings).
+ * *delta takes eye points of the draw's own shift (base) to the new one. */
+static bool painter_step(interp *ip, uint32_t base, mat4 *delta)
+{
+    const gl_attribs *a = &ip->st.a;
+    if ((a->caps[INTERP_CAP_DEPTH_TEST] && (a->depth.func == GL_LESS || a->depth.func == GL_LEQUAL)) ||
+        ip->painter >= INTERP_PAINTER_MAX || !ip->scene)
+        return false;
+    mat4 from = mat4_identity(), inv;
+    interp_painter_apply(ip, base, &from);
+    if (!mat4_invert(&from, &inv))
+        return false;
+    *delta = inv;
+    interp_painter_apply(ip, ++ip->painter, delta);
+    return true;
+}
+
 /* A segment of the primitive, between pool vertices i0 and i1, with the
  * colours GL gives it (flat: the provoking vertex's). */
 static void add_segment(assembly *as, uint32_t i0, uint32_t i1, uint32_t provoking)
@@ -117,6 +140,14 @@ static void add_segment(assembly *as, uint32_t i0, uint32_t i1, uint32_t provoki
     ln.stipple = as->stipple;
     ln.have_win = t[0] == 0 && t[1] == 1 && interp_gl_window(ip, v0->pos, ln.win[0]) &&
                   interp_gl_window(ip, v1->pos, ln.win[1]);
+    mat4 delta;
+    if (as->step && as->segments++ > 0 && painter_step(ip, as->painter, &delta))
+        for (int e = 0; e < 2; e++) {
+            double in[4] = {ln.p[e][0], ln.p[e][1], ln.p[e][2], 1}, o[4];
+            mat4_apply(&delta, in, o);
+            for (int k = 0; k < 3; k++)
+                ln.p[e][k] = o[k] / o[3];
+        }
     interp_add_line(ip, &ln, &as->stipple_s);
 }
 
@@ -226,7 +257,8 @@ static bool is_ccw(const interp *ip, const uint32_t *idx, int n)
  * eye. False when the face is not drawn. */
 static bool fill_tri_checks(assembly *as, uint32_t a, uint32_t b, uint32_t c)
 {
-    if (as->ip->stencil.write) { /* its window region, for later stencil tests */
+    /* its window region, for later stencil tests (of the faces that write) */
+    if (as->ip->stencil.write && (as->ip->stencil.tri_faces & (as->back ? 2 : 1))) {
         double p[3][3];
         const scene_vertex *v = as->s->verts + as->base;
         if (eye_pos(as->ip, &v[a], p[0]) && eye_pos(as->ip, &v[b], p[1]) &&
@@ -308,6 +340,9 @@ static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t prov
         front = is_ccw(ip, idx, n) != as->swap;
         if ((front && as->cull_front) || (!front && as->cull_back))
             return;
+        if (!front && ip->stencil.two_side)
+            interp_note(ip, DIAG_NOTE_STENCIL_TWO_SIDE);
+        as->back = !front;
         mode = a->polygon.mode[front ? 0 : 1];
     }
     if (as->relit == INTERP_RELIT_PROBE) {
@@ -454,6 +489,9 @@ static inline void facing_tri(assembly *as, uint32_t a, uint32_t b, uint32_t c,
     bool front = is_ccw3(as->ip, a, b, c) != as->swap;
     if (front ? as->cull_front : as->cull_back)
         return;
+    if (!front && as->ip->stencil.two_side) /* it took the front faces' stencil */
+        interp_note(as->ip, DIAG_NOTE_STENCIL_TWO_SIDE);
+    as->back = !front;
     if (as->relit && (as->relit == INTERP_RELIT_ALL || !front))
         relit_keep(as, a, b, c, provoking);
     else
@@ -661,6 +699,11 @@ static void end_primitive(interp *ip)
     as.ip = ip;
     as.s = s;
     as.base = (uint32_t)ip->prim_first;
+    as.painter = ip->painter;
+    /* of one colour, whichever segment shows is the same: no step (a
+     * draw of thousands, stroke text, would use up the painter's range) */
+    as.step = (mode == GL_LINES || mode == GL_LINE_STRIP || mode == GL_LINE_LOOP) &&
+              !prim_one_colour(ip);
     as.flat = a->lighting.shade_model == GL_FLAT;
     as.first = a->lighting.provoking == GL_FIRST_VERTEX_CONVENTION;
     as.swap = a->polygon.front_face == GL_CW;
@@ -698,7 +741,8 @@ static void end_primitive(interp *ip)
     as.cull_front = cull && (cm == GL_FRONT || cm == GL_FRONT_AND_BACK);
     as.cull_back = cull && (cm == GL_BACK || cm == GL_FRONT_AND_BACK);
     /* Back faces may need GL's lighting (interp_relit.c). */
-    as.facing = cull || a->polygon.mode[0] != a->polygon.mode[1] || interp_relit_wanted(ip);
+    as.facing = cull || a->polygon.mode[0] != a->polygon.mode[1] || interp_relit_wanted(ip) ||
+                ip->stencil.two_side || ip->stencil.tri_faces != 3;
     if (as.facing && !compute_clip(ip, n)) {
         s->failed = true;
         return;
@@ -737,9 +781,10 @@ static void end_primitive(interp *ip)
     if (as.relit && as.relit != INTERP_RELIT_PROBE && !interp_relit_need_clear(ip, n))
         as.relit = 0;
     /* Outlined faces lit: GL lights their vertices (one-sided lighting;
-     * interp_relit.c keeps what that needs). */
+     * interp_relit.c keeps what that needs; under two-sided lighting its
+     * colours are the back faces'). */
     if (look.lit && (a->polygon.mode[0] != GL_FILL || a->polygon.mode[1] != GL_FILL)) {
-        if (interp_relit_wanted(ip)) {
+        if (interp_relit_wanted(ip) && !a->lighting.two_side) {
             interp_relit_flush(ip);
             as.lit_edges = ip->relit_made >= n && ip->relit_col;
         }

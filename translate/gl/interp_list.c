@@ -464,6 +464,7 @@ static void call_list(interp *ip, uint32_t name)
 
 void interp_calllist(interp *ip, const rgl_cmd *cmd)
 {
+    interp_cm_flush(ip);
     call_list(ip, (uint32_t)cmd->arg[0].v.u);
 }
 
@@ -492,6 +493,7 @@ void interp_calllists(interp *ip, const rgl_cmd *cmd)
         return;
     }
     const uint8_t *p = blob->bytes;
+    interp_cm_flush(ip);
     ip->cmds_run += (uint64_t)n; /* each name costs as a command */
     for (int64_t i = 0; i < n && !ip->cut; i++, p += ts) {
         uint32_t off;
@@ -527,7 +529,11 @@ void interp_calllists(interp *ip, const rgl_cmd *cmd)
 /* ---- Definitions ------------------------------------------------------------------------ */
 
 void interp_genlists(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
-void interp_endlist(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
+void interp_endlist(interp *ip, const rgl_cmd *cmd)
+{
+    (void)cmd;
+    interp_cm_flush(ip);
+}
 
 /* The recorder writes glNewList where the list ends, carrying its body. */
 void interp_newlist(interp *ip, const rgl_cmd *cmd)
@@ -535,6 +541,7 @@ void interp_newlist(interp *ip, const rgl_cmd *cmd)
     uint32_t name = (uint32_t)cmd->arg[0].v.u;
     GLenum mode = arg_enum(cmd, 1);
     uint32_t body = (uint32_t)cmd->arg[2].v.u;
+    interp_cm_flush(ip);
     if (mode != GL_COMPILE && mode != GL_COMPILE_AND_EXECUTE) {
         interp_bad_enum(ip, "list mode", mode);
         return;

@@ -9,7 +9,9 @@
  * shows in front of the scene, unlit, pixel for pixel (docs/mapping.md
  * "Bitmaps and pixel rectangles"). Where the depth test would let the 3D
  * scene hide them, or geometry drawn later covers them, they still show:
- * a note says so.
+ * a note says so. A glCopyPixels under a logic op is followed by the
+ * window pixels it left, read back by the recorder (@CopyPixelsResult),
+ * which replace it: exact whatever the op (and the scene under it).
  */
 #include "interp_internal.h"
 
@@ -43,6 +45,7 @@ void interp_rasterpos(interp *ip, const rgl_cmd *cmd)
 {
     if (interp_reject_in_begin(ip))
         return;
+    interp_cm_draw(ip); /* Mesa lights it from its flushed current state */
     double obj[4] = {0, 0, 0, 1};
     uint32_t n = cmd_value_count(cmd);
     for (uint32_t k = 0; k < n && k < 4; k++)
@@ -154,6 +157,9 @@ static uint64_t scene_items(const scene *s)
 void interp_pixels_end_frame(interp *ip)
 {
     scene *s = ip->scene;
+    if (ip->pixels_result_due) /* a copy under a logic op drawn as it is */
+        interp_note(ip, DIAG_NOTE_COLOR_MASK);
+    ip->pixels_result_due = false;
     if (s)
         s->overlay_at_depth = false;
     if (!s || !s->overlay)
@@ -280,7 +286,8 @@ void interp_bitmap(interp *ip, const rgl_cmd *cmd)
         return;
     double *rp = a->current.raster_pos;
     size_t row = (size_t)(w + 7) / 8, need = row * (size_t)h;
-    if (id && w > 0 && h > 0 && (uint64_t)w * (uint64_t)h <= (1u << 26)) {
+    if (id && w > 0 && h > 0 && (uint64_t)w * (uint64_t)h <= (1u << 26) &&
+        !interp_draw_buffer_hidden(ip)) {
         bool over = pixels_begin(ip);
         uint32_t lost = 0;
         const uint8_t *bits = ip->scene ? interp_pixels_fetch(ip, id, need, &lost) : NULL;
@@ -427,6 +434,8 @@ static bool conv_keep(interp *ip, uint32_t id, GLenum format, GLenum type, int64
 static void draw_pixels(interp *ip, uint32_t id, GLenum format, GLenum type, int64_t w,
                         int64_t h)
 {
+    if (interp_draw_buffer_hidden(ip))
+        return; /* into a colour buffer the frame does not show */
     size_t need = interp_pixel_bytes(format, type, w, h);
     if (!need) {
         interp_note(ip, DIAG_NOTE_PIXELS_OTHER);
@@ -486,7 +495,7 @@ void interp_copypixels(interp *ip, const rgl_cmd *cmd)
         interp_bad_value(ip, "glCopyPixels: negative size");
         return;
     }
-    interp_unrec_pixel_uses(ip, true, true, false);
+    interp_unrec_pixel_uses(ip, true, !id, false);
     if (!ip->st.a.current.raster_valid || !ip->scene || w == 0 || h == 0)
         return;
     if (type != GL_COLOR) {
@@ -497,6 +506,44 @@ void interp_copypixels(interp *ip, const rgl_cmd *cmd)
         interp_diag(ip, DIAG_IGNORED, "glCopyPixels: the recorder could not read the pixels");
         return;
     }
+    /* Under a logic op the recorder reads back what GL left there
+     * (@CopyPixelsResult, next): until it comes, the copy as it is. */
+    const gl_attribs *a = &ip->st.a;
+    if (ip->pixels_result_due)
+        interp_note(ip, DIAG_NOTE_COLOR_MASK);
+    ip->pixels_result_due = a->caps[INTERP_CAP_COLOR_LOGIC_OP] && a->color_buffer.logic_op != GL_COPY &&
+                            !interp_draw_buffer_hidden(ip);
     /* The recorder read the source as 8-bit RGBA, before pixel transfer. */
     draw_pixels(ip, id, GL_RGBA, GL_UNSIGNED_BYTE, w, h);
+}
+
+/* The window pixels a glCopyPixels under a logic op left, as GL left them:
+ * written into the overlay as they are, opaque. */
+void interp_copypixelsresult(interp *ip, const rgl_cmd *cmd)
+{
+    int64_t x = cmd->arg[0].v.i, y = cmd->arg[1].v.i, w = cmd->arg[2].v.i, h = cmd->arg[3].v.i;
+    uint32_t id = (uint32_t)cmd->arg[4].v.u;
+    if (!ip->pixels_result_due || !ip->scene || w <= 0 || h <= 0 || !id ||
+        w > INTERP_MAX_VIEWPORT || h > INTERP_MAX_VIEWPORT)
+        return; /* not after such a copy, or nothing to show */
+    ip->pixels_result_due = false;
+    uint32_t lost = 0;
+    const uint8_t *src = interp_pixels_fetch(ip, id, (size_t)w * (size_t)h * 4, &lost);
+    uint8_t *ov = src ? overlay(ip) : NULL;
+    if (!ov || !interp_budget_texels(ip, (uint64_t)w * (uint64_t)h))
+        return;
+    int ow = ip->scene->overlay_w, oh = ip->scene->overlay_h;
+    for (int64_t j = 0; j < h; j++) {
+        int64_t oy = y + j - ip->pixels_org[1];
+        if (oy < 0 || oy >= oh)
+            continue;
+        for (int64_t i = 0; i < w; i++) {
+            int64_t ox = x + i - ip->pixels_org[0];
+            if (ox < 0 || ox >= ow)
+                continue;
+            uint8_t *d = ov + ((size_t)oy * (size_t)ow + (size_t)ox) * 4;
+            memcpy(d, src + ((size_t)j * (size_t)w + (size_t)i) * 4, 3);
+            d[3] = 255;
+        }
+    }
 }

@@ -38,7 +38,7 @@ void interp_color(interp *ip, const rgl_cmd *cmd)
     for (uint32_t k = 0; k < 4; k++)
         c[k] = k < n ? (float)normalise(type, cmd_value(cmd, k)) : 1.0f;
     if (ip->st.a.caps[INTERP_CAP_COLOR_MATERIAL])
-        interp_color_material_update(ip);
+        interp_cm_colour(ip);
 }
 
 /* The current secondary colour and fog coordinate: taken by each vertex
@@ -111,7 +111,7 @@ static void draw_notes(interp *ip)
         (c[INTERP_CAP_TEXTURE_2D] || c[INTERP_CAP_TEXTURE_1D]) &&
         a->texture.env_mode == GL_MODULATE) {
         const float *sp = a->lighting.material[0].specular, *bp = a->lighting.material[1].specular;
-        bool cm_spec = c[INTERP_CAP_COLOR_MATERIAL] &&
+        bool cm_spec = interp_cm_on(ip) &&
                        a->lighting.color_material_mode == GL_SPECULAR;
         if (cm_spec || sp[0] > 0 || sp[1] > 0 || sp[2] > 0 || bp[0] > 0 || bp[1] > 0 || bp[2] > 0)
             interp_note(ip, DIAG_NOTE_SINGLE_COLOR);
@@ -331,6 +331,7 @@ static void map_blend(interp *ip, float c[4])
 
 void interp_begin_mode(interp *ip, GLenum mode)
 {
+    interp_cm_draw(ip);
     ip->in_begin = true;
     ip->prim_mode = mode;
     ip->prim_skip = true;
@@ -388,7 +389,7 @@ static inline void surface_colour(const interp *ip, float c0, float c1, float c2
          * (interp_color_material_update keeps the material's diffuse equal
          * to glColor when colour material covers it). */
         const gl_material *fm = &a->lighting.material[0];
-        if (!a->caps[INTERP_CAP_COLOR_MATERIAL])
+        if (!interp_cm_on(ip))
             c0 = fm->diffuse[0], c1 = fm->diffuse[1], c2 = fm->diffuse[2];
         c3 = fm->diffuse[3];
     }
@@ -414,7 +415,9 @@ void interp_surface_colour(const interp *ip, float out[4])
  * under GL_NORMALIZE, rescaled under GL_RESCALE_NORMAL). lit_prepare
  * finds the modelview's inverse (kept while the matrix is bit for bit the
  * same) and the lighting state once for a primitive's vertices. */
-static void lit_prepare(interp *ip, interp_lit_prep *lp)
+/* back: as GL lights back faces (two-sided lighting's back material and
+ * the normal turned). */
+static void lit_prepare_side(interp *ip, interp_lit_prep *lp, bool back)
 {
     const gl_attribs *a = &ip->st.a;
     const mat4 *mv = interp_matrix(ip, INTERP_MV);
@@ -423,7 +426,7 @@ static void lit_prepare(interp *ip, interp_lit_prep *lp)
         ip->lit_mv_ok = mat4_invert(mv, &ip->lit_mv_inv);
         ip->lit_mv_set = true;
     }
-    interp_lit_prepare(ip, false, lp);
+    interp_lit_prepare(ip, back, lp);
     lp->mv = mv;
     lp->inv = ip->lit_mv_ok ? &ip->lit_mv_inv : NULL;
     lp->normalize = a->caps[INTERP_CAP_NORMALIZE];
@@ -431,6 +434,8 @@ static void lit_prepare(interp *ip, interp_lit_prep *lp)
     const double *im = ip->lit_mv_inv.m;
     lp->rescale_r = sqrt(im[2] * im[2] + im[6] * im[6] + im[10] * im[10]);
 }
+
+static void lit_prepare(interp *ip, interp_lit_prep *lp) { lit_prepare_side(ip, lp, false); }
 
 static void lit_colour_at(const interp *ip, const interp_lit_prep *lp, double x, double y,
                           double z, const float cn[3], const float colour[4], float out[4],
@@ -477,7 +482,13 @@ static void lit_line_colour(interp *ip, double x, double y, double z, float out[
     lit_colour_at(ip, &lp, x, y, z, a->current.normal, a->current.color, out, peak);
 }
 
-void interp_relit_prepare(interp *ip, interp_lit_prep *lp) { lit_prepare(ip, lp); }
+/* The faces moved are back faces (or, one-sided, all of a textured
+ * split's, lit as front faces are): under two-sided lighting, lit as GL
+ * lights back faces. */
+void interp_relit_prepare(interp *ip, interp_lit_prep *lp)
+{
+    lit_prepare_side(ip, lp, ip->st.a.lighting.two_side);
+}
 
 void interp_relit_colour(interp *ip, const interp_lit_prep *lp, const interp_relit_in *in,
                          float c[4], double *peak)

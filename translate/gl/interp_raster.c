@@ -170,6 +170,10 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
         interp_bad_value(ip, "glClear mask has unknown bits");
         return;
     }
+    /* A colour clear of a buffer the frame does not show leaves its
+     * picture alone (interp_buffers.c); depth and stencil are shared. */
+    if ((mask & GL_COLOR_BUFFER_BIT) && interp_draw_buffer_hidden(ip))
+        mask &= ~(uint32_t)GL_COLOR_BUFFER_BIT;
     if ((mask & GL_DEPTH_BUFFER_BIT) && !(mask & GL_COLOR_BUFFER_BIT) &&
         ip->st.render_mode == GL_RENDER)
         interp_proj_depth_clear(ip);

@@ -347,7 +347,7 @@ int32_t interp_texture_for_unit(interp *ip, int k)
         interp_note(ip, DIAG_NOTE_TEX_CLAMP_BORDER);
     const gl_attribs *ga = &ip->st.a;
     GLenum cmm = ga->lighting.color_material_mode;
-    if (env == GL_MODULATE && ga->caps[INTERP_CAP_LIGHTING] && ga->caps[INTERP_CAP_COLOR_MATERIAL] &&
+    if (env == GL_MODULATE && ga->caps[INTERP_CAP_LIGHTING] && interp_cm_on(ip) &&
         (cmm == GL_DIFFUSE || cmm == GL_AMBIENT_AND_DIFFUSE) &&
         (ip->prim_blend != SCENE_BLEND_OPAQUE || mipmap_filter(o->min_filter) ||
          o->target == GL_TEXTURE_CUBE_MAP || ga->lighting.two_side || ip->draw_unit[1] >= 0))

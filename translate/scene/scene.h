@@ -253,17 +253,25 @@ typedef struct scene_options {
                          coordinates: scene.view takes them to eye space */
 } scene_options;
 
-/* glFog, in eye space: GL's fog factor of the eye-plane distance |z|. */
+/* The eye distance c that glFog's factor takes (NV_fog_distance). */
+enum scene_fog_distance {
+    SCENE_FOG_ABS_Z = 0, /* |z_eye|: GL_EYE_PLANE_ABSOLUTE_NV, Mesa's default */
+    SCENE_FOG_Z = 1,     /* z_eye, negative in front of the eye: GL_EYE_PLANE */
+    SCENE_FOG_RADIAL = 2 /* sqrt(x^2 + y^2 + z^2) in eye space: GL_EYE_RADIAL_NV */
+};
+
+/* glFog, in eye space: GL's fog factor of the eye distance c (distance). */
 enum {
-    SCENE_FOG_LINEAR = 1, /* GL_LINEAR: (end - |z|) / (end - start) */
-    SCENE_FOG_EXP,        /* GL_EXP: e^-(density |z|) */
-    SCENE_FOG_EXP2,       /* GL_EXP2: e^-((density |z|)^2) */
+    SCENE_FOG_LINEAR = 1, /* GL_LINEAR: (end - c) / (end - start) */
+    SCENE_FOG_EXP,        /* GL_EXP: e^-(density c) */
+    SCENE_FOG_EXP2,       /* GL_EXP2: e^-((density c)^2) */
 };
 
 typedef struct scene_fog {
     bool on;
     int mode; /* SCENE_FOG_* */
     float density, start, end, color[4];
+    int distance; /* enum scene_fog_distance */
 } scene_fog;
 
 /* How a texture's colour and the fragment's combine (glTexEnv's
