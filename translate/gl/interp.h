@@ -70,6 +70,7 @@
  *   interp_scissor.c  the scissor test, scissored clears
  *   interp_stencil.c  the stencil test
  *   interp_masks.c    colour and depth write masks
+ *   interp_buffers.c  glDrawBuffer: the colour buffers a draw goes to
  *   interp_zorder.c   draw order without a depth test: whether it can
  *                     change a pixel
  *   interp_accum.c    the accumulation buffer
