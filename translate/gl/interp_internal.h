@@ -808,6 +808,10 @@ uint32_t interp_lightset_current(interp *ip);
  * per-channel form makes exact (not open to textures). */
 void interp_lightset_textured(interp *ip, const scene_look *look);
 
+/* The spot factor of directional light l (w = 0), one number for every
+ * vertex: GL spots such a light too (1 when its cutoff is 180). */
+double interp_spot_parallel(const gl_light *l);
+
 void interp_lit_color(const interp *ip, const double p[3], const double n[3], bool back,
                       const float colour[4], float out[4]);
 /* The same, with the largest channel before GL clamps it in *peak. */
