@@ -600,12 +600,21 @@ void povlight_front_normal(const povlight *pl, const mat4 *to_eye, const mat4 *t
 /* ---- Fog -------------------------------------------------------------------------------- */
 
 /* GL fogs a fragment by f of its eye-plane distance c = |z_eye| (GL 1.x
- * 3.10; Mesa uses |z_eye|): LINEAR (end - c) / (end - start), EXP
+ * 3.10; Mesa uses |z_eye|): LINEAR (end - c) / (end - start) (fog_span), EXP
  * e^(-density c), EXP2 e^(-(density c)^2), clamped to [0, 1], and shows
  * f C + (1 - f) fog colour. The layer is the fog colour with transmit f,
  * over the surface's own texture: POV-Ray shows (1 - f) fog + f C, and
  * leaves the background alone as GL does. The pattern is evaluated in the
  * mesh's object space, so z_eye is row 2 of its matrix. */
+/* GL_LINEAR's end - start, the divisor of (end - c). Where the two are
+ * equal Mesa fogs by clamp(c - end) (its fog scale is 1 then, with the
+ * sign of 1 / (end - start) lost), i.e. (end - c) / -1. */
+static double fog_span(const scene_fog *fg)
+{
+    double span = (double)fg->end - fg->start;
+    return span != 0 ? span : -1;
+}
+
 void povlight_fog_declare(const povlight *pl, outbuf *ob, const char *name, const mat4 *to_eye)
 {
     const scene_fog *fg = &pl->s->fog;
@@ -617,14 +626,10 @@ void povlight_fog_declare(const povlight *pl, outbuf *ob, const char *name, cons
     outbuf_puts(ob, name);
     outbuf_puts(ob, "=texture{pigment{function{min(1,max(0,");
     switch (fg->mode) {
-    case GL_LINEAR: {
-        double span = (double)fg->end - fg->start;
-        if (span == 0)
-            span = 1e-30;
-        put_num(ob, fg->end / span);
+    case GL_LINEAR:
+        put_num(ob, fg->end / fog_span(fg));
         outbuf_puts(ob, "-abs(");
         break;
-    }
     case GL_EXP2:
         outbuf_puts(ob, "exp(-pow(abs(");
         break;
@@ -639,14 +644,10 @@ void povlight_fog_declare(const povlight *pl, outbuf *ob, const char *name, cons
     }
     put_num(ob, r[3]);
     switch (fg->mode) {
-    case GL_LINEAR: {
-        double span = (double)fg->end - fg->start;
-        if (span == 0)
-            span = 1e-30;
+    case GL_LINEAR:
         outbuf_puts(ob, ")/");
-        put_num(ob, span);
+        put_num(ob, fog_span(fg));
         break;
-    }
     case GL_EXP2:
         outbuf_puts(ob, ")*");
         put_num(ob, fg->density);
