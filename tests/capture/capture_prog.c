@@ -37,9 +37,12 @@
  *                       also bitmap text after the triangle
  *                       (glutBitmapCharacter, glutBitmapString: their
  *                       glBitmap calls are recorded)
- *   --stroke            GLUT: each frame also writes stroke text over the
- *                       triangle (glutStrokeString: freeglut's glBegin and
- *                       glVertex calls are recorded)
+ *   --stroke            with --api glut, stroke text after the triangle
+ *                       (glutStrokeCharacter, glutStrokeString: their line
+ *                       strips are recorded)
+ *
+ * Built twice: as it is, for raygl record, and with -include raygl/gl.h
+ * (capture_prog_dropin), the drop-in header's build of the same program.
  */
 #include <EGL/egl.h>
 #include <GL/freeglut.h>
@@ -69,7 +72,8 @@ typedef struct gl_fns {
 
 static struct {
     const char *api, *lookup, *hang;
-    int single, frames, threads, teapot, exec_child, fork_child, delay_ms, unrecorded, nurbs, stroke;
+    int single, frames, threads, teapot, exec_child, fork_child, delay_ms, unrecorded, nurbs,
+        stroke;
     const char *self, *done;
 } opt = {"glx", "direct", NULL, 0, 3, 1, 0, 0, 0, 0, 0, 0, 0, NULL, NULL};
 
@@ -157,16 +161,18 @@ static void bitmap_text(void)
     glutBitmapString(GLUT_BITMAP_8_BY_13, (const unsigned char *)"GB");
 }
 
-/* Stroke text over the frame, as a GLUT program writes it. */
+/* Stroke text: freeglut draws each character as line strips, then moves
+ * on with glTranslatef. */
 static void stroke_text(void)
 {
     if (strcmp(opt.api, "glut") != 0)
         return;
-    glColor3f(1, 1, 0.4f);
+    glColor3f(1, 1, 1);
     glPushMatrix();
-    glTranslatef(-0.7f, 0.3f, 0);
-    glScalef(0.0025f, 0.0025f, 1);
-    glutStrokeString(GLUT_STROKE_ROMAN, (const unsigned char *)"RayGL");
+    glTranslatef(-0.9f, 0.5f, 0);
+    glScalef(0.002f, 0.002f, 1);
+    glutStrokeCharacter(GLUT_STROKE_ROMAN, 'R');
+    glutStrokeString(GLUT_STROKE_MONO_ROMAN, (const unsigned char *)"G\nB");
     glPopMatrix();
 }
 
@@ -401,6 +407,7 @@ static void glut_display(void)
     }
     draw(glut_frame, 0);
     glutSwapBuffers();
+    after_frame(glut_frame);
     glut_frame++;
     glutPostRedisplay();
 }

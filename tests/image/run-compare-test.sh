@@ -9,7 +9,8 @@
 #    given (the image tests' thresholds), and must pass;
 # 3. bad input gives one clear line and exit 1 (not a trace; the snapshot's
 #    resource damaged; a frame list without snapshots), bad usage exit 2,
-#    and nothing is written outside the output folder;
+#    and nothing is written outside the output folder; -o NEW/SUB/DIR
+#    makes the missing folders;
 # 4. run from another folder it finds raygl2pov itself; options (its own
 #    and raygl2pov's) and the output folder are checked before rendering;
 #    a stop signal leaves no partial file.
@@ -64,6 +65,15 @@ mkdir elsewhere
     { cat sib.log; fail "raygl-compare without --raygl2pov, run from another folder"; }
 [ -s sib/compare-00000.png ] || fail "no sib/compare-00000.png"
 
+# -o NEW/SUB/DIR makes the missing folders, as raygl2pov -o does (issue
+# 27); a usage error found before rendering removes what it made.
+"$cmp" run.raygl -o new/sub/dir --raygl2pov "$r2p" --povray "$povray" -- --no-shadows >nest.log 2>&1 ||
+    { cat nest.log; fail "raygl-compare -o new/sub/dir"; }
+[ -s new/sub/dir/compare-00000.png ] || fail "no new/sub/dir/compare-00000.png"
+mkdir kept
+"$cmp" run.raygl -o kept/a/b --raygl2pov "$r2p" -- --bogus >nest.log 2>&1
+[ $? -eq 2 ] && [ -d kept ] && [ ! -e kept/a ] || { cat nest.log; fail "-o kept/a/b left kept/a after a usage error"; }
+
 # A floor it cannot meet fails.
 "$cmp" run.raygl -o cmp --raygl2pov "$r2p" --povray "$povray" --tol 0 --min-match 1 \
     -- --no-shadows >floor.log 2>&1
@@ -101,7 +111,8 @@ PY
 # Truncated inside the last frame: nothing left to compare.
 head -c $((size - 100)) run.raygl >cut.raygl
 "$cmp" cut.raygl -o cut --raygl2pov "$r2p" >cut.log 2>&1
-[ $? -eq 1 ] && grep -q 'no frame holds a usable snapshot' cut.log || { cat cut.log; fail "truncated"; }
+[ $? -eq 1 ] && grep -q 'no frame holds a usable snapshot (record with `raygl record --snapshots`' cut.log ||
+    { cat cut.log; fail "truncated"; }
 # Bad usage.
 "$cmp" run.raygl >usage.log 2>&1
 [ $? -eq 2 ] || fail "no -o is not a usage error"
@@ -164,7 +175,7 @@ rm -f stand-in-povray stand-in.started
 for f in *; do
     case $f in
     run.raygl|gl.png|program.log|cmp.log|cmp|floor.log|bad.raygl|bad.log|damaged.raygl|dmg.log|dmg|cut.raygl|cut.log|cut|usage.log) ;;
-    elsewhere|sib|sib.log|opt.log|random.raygl|stop|stop.log) ;;
+    elsewhere|sib|sib.log|opt.log|random.raygl|stop|stop.log|new|nest.log|kept) ;;
     *) fail "unexpected file $f" ;;
     esac
 done

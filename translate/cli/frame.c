@@ -395,7 +395,7 @@ int translator_write_pov(translator *t, outbuf *ob, const pov_frame_info *info)
     return povwriter_scene(t->writer, ob, &t->scene, info);
 }
 
-int translator_write_images(translator *t, const char *dir)
+int translator_write_images(translator *t, const char *dir, char *failed, size_t cap)
 {
     const povtex_image *im = povwriter_image(t->writer, 0);
     if (!im)
@@ -410,8 +410,13 @@ int translator_write_images(translator *t, const char *dir)
     }
     snprintf(sub, dl + sizeof "/" POVTEX_DIR, "%s/%s", dir, POVTEX_DIR);
     int rc = mkdir(sub, 0777) == 0 || errno == EEXIST ? 0 : -1;
-    for (size_t i = 0; rc == 0 && (im = povwriter_image(t->writer, i)) != NULL; i++)
+    if (rc != 0)
+        snprintf(failed, cap, "%s", sub);
+    for (size_t i = 0; rc == 0 && (im = povwriter_image(t->writer, i)) != NULL; i++) {
         rc = pngout_place(sub, im->name, im->rgba, im->width, im->height, im->alpha);
+        if (rc != 0)
+            snprintf(failed, cap, "%s/%s", sub, im->name);
+    }
     int e = errno;
     tr_free(sub);
     errno = e;

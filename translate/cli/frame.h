@@ -86,7 +86,8 @@ int translator_write_pov(translator *t, outbuf *ob, const pov_frame_info *info);
 
 /* Writes the texture images that scene refers to into dir/textures
  * (POVTEX_DIR, made when missing; existing images are kept: pngout.h).
- * Returns 0, or -1 with errno set. */
-int translator_write_images(translator *t, const char *dir);
+ * Returns 0, or -1 with errno set and failed (cap bytes) naming the image
+ * or the folder that could not be written. */
+int translator_write_images(translator *t, const char *dir, char *failed, size_t cap);
 
 #endif

@@ -16,6 +16,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <inttypes.h>
+#include <limits.h>
 #include <locale.h>
 #include <pthread.h>
 #include <signal.h>
@@ -33,6 +34,7 @@
 #include "frame.h"
 #include "gltfwrite.h"
 #include "look.h"
+#include "mkdirs.h"
 #include "naming.h"
 #include "outbuf.h"
 #include "options.h"
@@ -205,42 +207,6 @@ static char *join_path(const char *dir, const char *file)
     return p;
 }
 
-/* mkdir -p. Returns 0, or -1 with errno. */
-static int make_dirs(const char *path)
-{
-    char *p = tr_realloc(NULL, strlen(path) + 1);
-    if (!p)
-        return -1;
-    strcpy(p, path);
-    for (char *s = p + 1; *s; s++) {
-        if (*s != '/')
-            continue;
-        *s = '\0';
-        if (mkdir(p, 0777) != 0 && errno != EEXIST) {
-            int e = errno;
-            tr_free(p);
-            errno = e;
-            return -1;
-        }
-        *s = '/';
-    }
-    int rc = mkdir(p, 0777);
-    int e = errno;
-    tr_free(p);
-    if (rc != 0 && e != EEXIST) {
-        errno = e;
-        return -1;
-    }
-    struct stat st;
-    if (stat(path, &st) != 0)
-        return -1;
-    if (!S_ISDIR(st.st_mode)) {
-        errno = ENOTDIR;
-        return -1;
-    }
-    return 0;
-}
-
 static int fd_flush(void *user, const char *data, size_t n)
 {
     int fd = *(int *)user;
@@ -278,6 +244,8 @@ typedef struct slot {
     int width, height;
     int antialias_depth; /* the scene's, for the .ini */
     int write_errno;    /* writing the temporary .pov failed */
+    char *write_failed; /* the file it could not write (a texture), or NULL:
+                           the temporary .pov */
     const char *look_note; /* look_apply's, static */
     char *published;       /* "DIR/NAME" once written */
     long tmp_id;           /* the temporary .pov's cleanup entry, or -1 */
@@ -390,8 +358,16 @@ static void write_temp(job *j, translator *t, size_t k, slot *s, outbuf *ob)
         if (rc == 0)
             rc = outbuf_flush(ob);
         errno = 0;
+        char failed[PATH_MAX] = "";
         if (rc == 0)
-            rc = translator_write_images(t, j->o->outdir);
+            rc = translator_write_images(t, j->o->outdir, failed, sizeof failed);
+        if (rc != 0 && failed[0]) {
+            int fe = errno;
+            s->write_failed = tr_realloc(NULL, strlen(failed) + 1);
+            if (s->write_failed)
+                strcpy(s->write_failed, failed);
+            errno = fe;
+        }
     }
     int e = errno ? errno : ENOMEM;
     if (close(fd) != 0 && rc == 0) {
@@ -575,6 +551,50 @@ static void publish_glb(const options *o, totals *tot, size_t k, slot *s, const 
     s->tmp_id = -1;
     tr_free(tmp);
     tr_free(fin);
+}
+
+/* DIR/POV_FOLDER_CHECK, read first by every .ini (povwrite.h); kept as
+ * it is when unchanged, so rendered frames stay up to date. Returns 0, or
+ * -1 with the message said. */
+static int write_folder_check(const options *o)
+{
+    char *tmp = temp_path(o->outdir, 0, ".inc"), *fin = join_path(o->outdir, POV_FOLDER_CHECK);
+    int rc = -1, e = ENOMEM, fd = -1;
+    long id = -1;
+    if (tmp && fin) {
+        cleanup_lock();
+        id = cleanup_file(tmp);
+        fd = id >= 0 ? open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666) : -1;
+        e = id >= 0 ? errno : ENOMEM;
+        cleanup_unlock();
+    }
+    if (fd >= 0) {
+        outbuf ob;
+        errno = 0;
+        rc = outbuf_init(&ob, 4096, fd_flush, &fd);
+        if (rc == 0)
+            rc = pov_write_folder_check(&ob, o->outdir);
+        if (rc == 0)
+            rc = outbuf_flush(&ob);
+        e = errno ? errno : EIO;
+        outbuf_finish(&ob);
+        if (close(fd) != 0 && rc == 0) {
+            rc = -1;
+            e = errno;
+        }
+        if (rc == 0 && place(tmp, fin) != 0) {
+            rc = -1;
+            e = errno;
+        }
+        if (rc != 0)
+            unlink(tmp);
+    }
+    if (rc != 0)
+        say(o, "%s: cannot write: %s", fin ? fin : o->outdir, strerror(e));
+    cleanup_drop(id);
+    tr_free(tmp);
+    tr_free(fin);
+    return rc;
 }
 
 /* Writes the .ini of slot k and renames both files into place. */
@@ -905,9 +925,14 @@ int main(int argc, char **argv)
         opt_free(&o);
         return EXIT_INPUT;
     }
-    if (make_dirs(o.outdir) != 0) {
+    if (mkdirs(o.outdir, NULL) != 0) {
         fprintf(stderr, PROG ": %s: cannot create the output folder: %s\n", o.outdir,
                 strerror(errno));
+        rgl_reader_destroy(reader);
+        opt_free(&o);
+        return EXIT_INPUT;
+    }
+    if (!o.gltf && write_folder_check(&o) != 0) {
         rgl_reader_destroy(reader);
         opt_free(&o);
         return EXIT_INPUT;
@@ -982,9 +1007,10 @@ int main(int argc, char **argv)
                 say_decode_error(&o, where, &s->error);
             tot.status = EXIT_INPUT;
         } else if (s->write_errno) {
-            char *tmp = temp_path(o.outdir, k, scene_ext(&o));
+            char *tmp = s->write_failed ? NULL : temp_path(o.outdir, k, scene_ext(&o));
             fprintf(stderr, "%s" PROG ": %s: cannot write: %s\n", progress_shown ? "\r\033[K" : "",
-                    tmp ? tmp : o.outdir, strerror(s->write_errno));
+                    s->write_failed ? s->write_failed : tmp ? tmp : o.outdir,
+                    strerror(s->write_errno));
             progress_shown = false;
             tr_free(tmp);
             tot.status = EXIT_INPUT;
@@ -1011,6 +1037,8 @@ int main(int argc, char **argv)
         unrec_finish(&s->unrec);
         tr_free(s->incomplete);
         s->incomplete = NULL;
+        tr_free(s->write_failed);
+        s->write_failed = NULL;
         progress(&o, k + 1, j.nslots);
     }
     for (int t = 0; t < started; t++)

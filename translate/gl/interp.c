@@ -232,6 +232,8 @@ void interp_destroy(interp *ip)
     tr_free(ip->fogz);
     tr_free(ip->vmat.mats);
     tr_free(ip->clipv);
+    tr_free(ip->ras_runs);
+    tr_free(ip->ras_pieces);
     interp_textures_free(ip);
     interp_eval_free(ip);
     interp_nurbs_free(ip);

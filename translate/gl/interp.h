@@ -361,6 +361,12 @@ const char *interp_frame_missing(const interp *ip, uint32_t *count);
  * frames would have carried), for interp_frame_missing. */
 void interp_missing(interp *ip, const char *what);
 
+/* The line segments the current frame assembled (each pair of GL_LINES,
+ * edge of a strip or loop, outlined polygon edge), whether or not GL
+ * lights a pixel of them: for tests (a segment becomes as many scene
+ * lines as its pixels need, none when it lights none). */
+uint64_t interp_frame_segments(const interp *ip);
+
 /* The state, for tests and for the frame driver. */
 const gl_state *interp_state(const interp *ip);
 

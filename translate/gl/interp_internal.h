@@ -153,6 +153,11 @@ struct interp {
     size_t cap_edge;
     double (*clipv)[5]; /* clip-space x, y, w of each vertex (culling), then x/w, y/w */
     size_t cap_clipv;
+    uint64_t segments;            /* interp_frame_segments */
+    struct ras_run *ras_runs;     /* a segment's pixels (interp_lines.c) */
+    size_t cap_ras_runs;
+    struct ras_piece *ras_pieces; /* and the strips that cover them */
+    size_t cap_ras_pieces;
     float prim_alpha;        /* the first vertex's alpha (interp_alpha_vertex) */
     bool prim_alpha_varies;  /* another vertex's differs */
     float (*relit_col)[4]; /* GL's lit colour of each vertex (interp_relit.c) */
@@ -694,17 +699,42 @@ void interp_stencil_clear(interp *ip);
 bool interp_masks_hide(interp *ip);
 
 /* Line stipple (interp_stipple.c). interp_stipple_on: lines drawn now are
- * stippled. interp_stipple_dashes: the dashes of eye-space segment p0-p1
- * (w0-w1 in the window, scene_camera_project's), as [from, to] fractions of the
- * segment in eye space (at most max), GL's counter starting at *counter
- * and advanced past the segment. */
+ * stippled. interp_stipple_dashes: the dashes GL draws of window segment
+ * w0-w1 (already clipped), as [from, to] fractions of it (at most max),
+ * GL's counter starting at *counter and advanced past the segment. */
+#define INTERP_STIPPLE_DASHES 2048
 bool interp_stipple_on(const interp *ip);
+size_t interp_stipple_dashes(const interp *ip, const double w0[2], const double w1[2],
+                             double *counter, double (*dash)[2], size_t max);
 /* Polygon stipple (interp_pstipple.c): the look of a filled draw made now
  * takes the stipple when GL_POLYGON_STIPPLE is on and the mask has a hole. */
 void interp_pstipple_look(const interp *ip, scene_look *look);
-size_t interp_stipple_dashes(const interp *ip, const scene_camera *cam, const double p0[3],
-                             const double p1[3], const double w0[2], const double w1[2],
-                             uint64_t *counter, double (*dash)[2], size_t max);
+
+/* Lines and points as GL rasterises them (interp_lines.c). A segment in
+ * eye space, already clipped by the user planes, with GL's colour at its
+ * ends (the provoking vertex's at both when flat); width as glLineWidth
+ * set it. interp_add_line clips it by the near and far planes and the
+ * viewport and adds the strips that cover GL's pixels (each dash of them
+ * when stippled, the counter running on). interp_add_point adds the
+ * pixels of a point of that size (GL's size, after glPointParameter)
+ * whose centre p is inside the view volume. */
+typedef struct interp_line {
+    double p[2][3];
+    float color[2][4];
+    float width;
+    bool smooth, stipple;
+    bool have_win;     /* win: the ends' window positions as GL computes them */
+    double win[2][2];
+} interp_line;
+/* The window position (the frame's, in pixels) of object point obj drawn
+ * now, computed in float as Mesa computes it, so that ties at pixel edges
+ * and diamond corners fall its way; false when the draw is not made with
+ * the camera's own projection and viewport (then the camera's mapping,
+ * in double, places it). */
+bool interp_gl_window(const interp *ip, const float obj[3], double out[2]);
+void interp_add_line(interp *ip, const interp_line *ln, double *stipple_counter);
+void interp_add_point(interp *ip, const double p[3], const double *win, const float color[4],
+                      double size, bool smooth, bool params);
 
 /* glPolygonOffset (interp_offset.c). interp_offset_active: polygons drawn
  * now are offset (their shapes are drawn as GL's facets);

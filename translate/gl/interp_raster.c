@@ -58,6 +58,7 @@ void interp_begin_frame(interp *ip)
     ip->cleared = false;
     ip->painter = 0;
     ip->shape_facets = 0;
+    ip->segments = 0;
     ip->pixels_mark = 0;
     ip->nclear_rects = 0;
     interp_proj_begin_frame(ip);
