@@ -200,6 +200,12 @@ struct interp {
     int nclear_seq;
     bool preset_back_cleared; /* the first translation found a background
                                  drawn with the depth test, then cleared */
+    /* Depth-only clears after draws since the colour clear split the
+     * frame into epochs, each in front of the ones before: this one, the
+     * count the first translation found (preset in the second), whether
+     * this one has draws. */
+    uint32_t depth_epoch, depth_epochs;
+    bool epoch_drawn;
 
     /* Display lists (interp_list.c). The table is context state that
      * interp_copy_state carries; the groups are the frame's list calls
@@ -506,6 +512,10 @@ void interp_proj_own_draw(interp *ip);
 void interp_proj_depth_clear(interp *ip);
 void interp_proj_vote(interp *ip, GLenum mode);
 void interp_proj_layer(interp *ip, mat4 *w);
+/* Maps the window depth of w (the draw's projection and viewport) into the
+ * camera's: the draw's glDepthRange and its depth epoch. False when that
+ * is the identity. */
+bool interp_proj_depth_map(interp *ip, mat4 *w);
 /* At the frame's end: an orthographic camera and its near plane step back
  * by the painter's reach (interp_proj.c). */
 void interp_proj_end_frame(interp *ip);

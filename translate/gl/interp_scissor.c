@@ -57,34 +57,21 @@ static bool draw_box(const interp *ip, int64_t r[4])
 {
     const gl_attribs *a = &ip->st.a;
     const int32_t *cv = ip->cam_viewport, *vp = a->viewport.rect;
-    r[0] = cv[0];
-    r[1] = cv[1];
-    r[2] = (int64_t)cv[0] + cv[2];
-    r[3] = (int64_t)cv[1] + cv[3];
-    bool cut = false;
+    bool cut = interp_scissor_cuts(ip, cv);
+    const int32_t *b = cut ? a->scissor.box : cv;
+    r[0] = b[0];
+    r[1] = b[1];
+    r[2] = (int64_t)b[0] + b[2];
+    r[3] = (int64_t)b[1] + b[3];
     if (!ip->frame_begin && memcmp(vp, cv, sizeof ip->cam_viewport) != 0) {
         int64_t v[4] = {vp[0], vp[1], (int64_t)vp[0] + vp[2], (int64_t)vp[1] + vp[3]};
-        for (int k = 0; k < 2; k++) {
-            if (v[k] > r[k]) {
-                r[k] = v[k];
-                cut = true;
-            }
-            if (v[k + 2] < r[k + 2]) {
-                r[k + 2] = v[k + 2];
-                cut = true;
-            }
+        bool inside = v[0] <= cv[0] && v[1] <= cv[1] && v[2] >= (int64_t)cv[0] + cv[2] &&
+                      v[3] >= (int64_t)cv[1] + cv[3];
+        for (int k = 0; k < 2 && !inside; k++) {
+            r[k] = v[k] > r[k] ? v[k] : r[k];
+            r[k + 2] = v[k + 2] < r[k + 2] ? v[k + 2] : r[k + 2];
         }
-    }
-    if (interp_scissor_cuts(ip, cv)) {
-        const int32_t *b = a->scissor.box;
-        int64_t v[4] = {b[0], b[1], (int64_t)b[0] + b[2], (int64_t)b[1] + b[3]};
-        for (int k = 0; k < 2; k++) {
-            if (v[k] > r[k])
-                r[k] = v[k];
-            if (v[k + 2] < r[k + 2])
-                r[k + 2] = v[k + 2];
-        }
-        cut = true;
+        cut = cut || !inside;
     }
     return cut;
 }
@@ -92,7 +79,11 @@ static bool draw_box(const interp *ip, int64_t r[4])
 bool interp_scissor_hides(const interp *ip)
 {
     int64_t r[4];
-    return draw_box(ip, r) && (r[0] >= r[2] || r[1] >= r[3]);
+    if (!draw_box(ip, r))
+        return false;
+    const int32_t *cv = ip->cam_viewport;
+    return r[2] <= r[0] || r[3] <= r[1] || r[2] <= cv[0] || r[3] <= cv[1] ||
+           r[0] >= (int64_t)cv[0] + cv[2] || r[1] >= (int64_t)cv[1] + cv[3];
 }
 
 void interp_scissor_look(const interp *ip, scene_look *look)
