@@ -278,7 +278,8 @@ static void front_replay(translator *t, interp *ip, size_t first, size_t i, uint
  * (NULL: the first draw's). False when it stopped before the frame's
  * commands (out->status says why). */
 static bool build_pass(translator *t, size_t i, diag_log *log, frame_result *out,
-                       const mat4 *preset, const int32_t *preset_vp, bool back_cleared)
+                       const mat4 *preset, const int32_t *preset_vp, bool back_cleared,
+                       uint32_t epochs)
 {
     interp *ip = t->ip;
     const rgl_frame_info *fi = &out->info;
@@ -307,6 +308,7 @@ static bool build_pass(translator *t, size_t i, diag_log *log, frame_result *out
         interp_unrecorded_batch(ip);
     if (preset)
         interp_proj_preset(ip, preset, preset_vp, back_cleared);
+    interp_proj_preset_epochs(ip, epochs);
     if (first < i) {
         interp_set_frame(ip, i, NULL);
         front_replay(t, ip, first, i, fi->stream, log);
@@ -353,19 +355,25 @@ rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result
     out->status = get_frame(t, i, &out->info, &out->error);
     if (out->status != RGL_OK)
         return out->status;
-    if (!build_pass(t, i, log, out, NULL, NULL, false))
+    if (!build_pass(t, i, log, out, NULL, NULL, false, 0))
         return out->status;
     /* A frame of several projections whose first draw was not the 3D
-     * scene's: once more with the 3D scene's camera (interp_proj.c). */
+     * scene's: once more with the 3D scene's camera; a frame with
+     * depth-only clears between draws: once more with their count
+     * (interp_proj.c). */
     mat4 proj;
     int32_t vp[4];
-    bool back_cleared;
-    if (out->status == RGL_OK && !t->scene.failed &&
-        interp_proj_choice(ip, &proj, vp, &back_cleared)) {
-        if (log)
-            diag_clear(log);
-        if (!build_pass(t, i, log, out, &proj, vp, back_cleared))
-            return out->status;
+    bool back_cleared = false;
+    if (out->status == RGL_OK && !t->scene.failed) {
+        bool chosen = interp_proj_choice(ip, &proj, vp, &back_cleared);
+        uint32_t epochs = interp_proj_depth_epochs(ip, chosen ? &proj : NULL, chosen ? vp : NULL);
+        if (chosen || epochs) {
+            if (log)
+                diag_clear(log);
+            if (!build_pass(t, i, log, out, chosen ? &proj : NULL, chosen ? vp : NULL,
+                            back_cleared, epochs))
+                return out->status;
+        }
     }
     out->unrecorded = interp_unrecorded(ip);
     interp_budget_used(ip, &out->used, &out->limit);

@@ -407,6 +407,13 @@ void interp_frame_note_held(interp *ip, diag_kind kind, const char *why);
  * interp_begin_frame, passing back_cleared on) (interp_proj.c). */
 bool interp_proj_choice(const interp *ip, mat4 *proj, int32_t vp[4], bool *back_cleared);
 void interp_proj_preset(interp *ip, const mat4 *proj, const int32_t vp[4], bool back_cleared);
+/* The depth-only clears between draws in the frame's last colour-cleared
+ * part, after the first draw of the camera proj, vp (NULL: the one the
+ * first draw fixed): when not 0, translate the frame again with them
+ * preset (after interp_begin_frame), so each part lies in front of the
+ * ones before. */
+uint32_t interp_proj_depth_epochs(const interp *ip, const mat4 *proj, const int32_t vp[4]);
+void interp_proj_preset_epochs(interp *ip, uint32_t n);
 
 /* Forgets which notes the frame logged, so each is logged again once. */
 void interp_clear_notes(interp *ip);

@@ -25,7 +25,7 @@ static double fog_factor(const gl_attribs *a, double c)
     switch (a->fog.mode) {
     case GL_LINEAR: {
         double span = (double)a->fog.end - a->fog.start;
-        f = span != 0 ? (a->fog.end - c) / span : 1;
+        f = span != 0 ? (a->fog.end - c) / span : c - a->fog.end; /* Mesa's, at start = end */
         break;
     }
     case GL_EXP2: {

@@ -194,6 +194,12 @@ struct interp {
     int nclear_seq;
     bool preset_back_cleared; /* the first translation found a background
                                  drawn with the depth test, then cleared */
+    /* Depth-only clears after draws since the colour clear split the
+     * frame into epochs, each in front of the ones before: this one, the
+     * count the first translation found (preset in the second), whether
+     * this one has draws. */
+    uint32_t depth_epoch, depth_epochs;
+    bool epoch_drawn;
 
     /* Display lists (interp_list.c): the table is GL state (st.lists);
      * here where bodies come from, the nesting, and the groups: the
@@ -555,6 +561,10 @@ void interp_proj_own_draw(interp *ip);
 void interp_proj_depth_clear(interp *ip);
 void interp_proj_vote(interp *ip, GLenum mode);
 void interp_proj_layer(interp *ip, mat4 *w);
+/* Maps the window depth of w (the draw's projection and viewport) into the
+ * camera's: the draw's glDepthRange and its depth epoch. False when that
+ * is the identity. */
+bool interp_proj_depth_map(interp *ip, mat4 *w);
 /* At the frame's end: an orthographic camera and its near plane step back
  * by the painter's reach (interp_proj.c). */
 void interp_proj_end_frame(interp *ip);
@@ -918,6 +928,10 @@ uint32_t interp_lightset_current(interp *ip);
 /* Notes a lit, textured draw under a set whose highlights only the
  * per-channel form makes exact (not open to textures). */
 void interp_lightset_textured(interp *ip, const scene_look *look);
+
+/* The spot factor of directional light l (w = 0), one number for every
+ * vertex: GL spots such a light too (1 when its cutoff is 180). */
+double interp_spot_parallel(const gl_light *l);
 
 void interp_lit_color(const interp *ip, const double p[3], const double n[3], bool back,
                       const float colour[4], float out[4]);

@@ -516,6 +516,29 @@ void interp_fix_fog(interp *ip)
         interp_note_held(ip, DIAG_NOTE_FOG, "what changed is unused by the fog mode");
 }
 
+/* GL's spot factor of light l (cutoff not 180) for the unit vector vp from
+ * the vertex toward the light (GL 2.1 2.14.1). */
+static double spot_factor(const gl_light *l, const double vp[3])
+{
+    const float *sd = l->spot_direction;
+    double sl = sqrt((double)sd[0] * sd[0] + (double)sd[1] * sd[1] + (double)sd[2] * sd[2]);
+    double cs = sl > 0 ? -(vp[0] * sd[0] + vp[1] * sd[1] + vp[2] * sd[2]) / sl : 0;
+    return cs >= cos(l->spot_cutoff * M_PI / 180) ? pow(fmax(cs, 0), l->spot_exponent) : 0;
+}
+
+double interp_spot_parallel(const gl_light *l)
+{
+    if (l->spot_cutoff == 180 || l->position[3] != 0)
+        return 1;
+    double vp[3] = {l->position[0], l->position[1], l->position[2]};
+    double d = sqrt(vp[0] * vp[0] + vp[1] * vp[1] + vp[2] * vp[2]);
+    if (!(d > 0) || !isfinite(d))
+        return 1; /* no direction: it lights nothing but ambient */
+    for (int k = 0; k < 3; k++)
+        vp[k] /= d;
+    return spot_factor(l, vp);
+}
+
 void interp_lit_color(const interp *ip, const double p[3], const double n[3], bool back,
                       const float colour[4], float out[4])
 {
@@ -614,12 +637,8 @@ void interp_lit_prepared(const interp *ip, const interp_lit_prep *lp, const doub
         } else {
             memcpy(vp, dircache[i].vp, sizeof vp);
         }
-        if (l->spot_cutoff != 180 && l->position[3] != 0) {
-            const float *sd = l->spot_direction;
-            double sl = sqrt((double)sd[0] * sd[0] + (double)sd[1] * sd[1] + (double)sd[2] * sd[2]);
-            double cs = sl > 0 ? -(vp[0] * sd[0] + vp[1] * sd[1] + vp[2] * sd[2]) / sl : 0;
-            spot = cs >= cos(l->spot_cutoff * M_PI / 180) ? pow(fmax(cs, 0), l->spot_exponent) : 0;
-        }
+        if (l->spot_cutoff != 180)
+            spot = spot_factor(l, vp);
         double nl = nn[0] * vp[0] + nn[1] * vp[1] + nn[2] * vp[2];
         double sp = 0;
         if (nl > 0) {

@@ -41,22 +41,39 @@ static void take_lit_colour(interp *ip, const double obj[4])
         a->current.raster_color[k] = c[k] > 0 ? (c[k] < 1 ? c[k] : 1) : 0;
 }
 
+/* q = m p in single precision, term by term in Mesa's order
+ * (TRANSFORM_POINT). */
+static void apply_f32(const mat4 *m, const float p[4], float q[4])
+{
+    for (int i = 0; i < 4; i++) {
+        float s = (float)m->m[i] * p[0];
+        s = s + (float)m->m[4 + i] * p[1];
+        s = s + (float)m->m[8 + i] * p[2];
+        q[i] = s + (float)m->m[12 + i] * p[3];
+    }
+}
+
 void interp_rasterpos(interp *ip, const rgl_cmd *cmd)
 {
     if (interp_reject_in_begin(ip))
         return;
     interp_cm_draw(ip); /* Mesa lights it from its flushed current state */
-    double obj[4] = {0, 0, 0, 1};
+    double dobj[4] = {0, 0, 0, 1};
+    float obj[4] = {0, 0, 0, 1};
     uint32_t n = cmd_value_count(cmd);
     for (uint32_t k = 0; k < n && k < 4; k++)
-        obj[k] = cmd_value(cmd, k);
+        obj[k] = (float)(dobj[k] = cmd_value(cmd, k));
     gl_attribs *a = &ip->st.a;
-    double eye[4], clip[4];
-    mat4_apply(interp_matrix(ip, INTERP_MV), obj, eye);
-    mat4_apply(interp_matrix(ip, INTERP_PROJ), eye, clip);
+    /* In single precision as Mesa computes it (_mesa_RasterPos): a bitmap
+     * lands on the floor of the position, so a position GL puts a hair
+     * below a whole pixel and double arithmetic on it (or a hair above)
+     * moves the bitmap a pixel (glRasterPos2i under gluOrtho2D). */
+    float eye[4], clip[4];
+    apply_f32(interp_matrix(ip, INTERP_MV), obj, eye);
+    apply_f32(interp_matrix(ip, INTERP_PROJ), eye, clip);
     /* The position is a point clipped against the view volume: outside
      * it, the raster position is invalid. */
-    double w = clip[3];
+    float w = clip[3];
     bool in = isfinite(w) && w > 0;
     for (int k = 0; k < 3 && in; k++)
         in = isfinite(clip[k]) && clip[k] >= -w && clip[k] <= w;
@@ -64,14 +81,24 @@ void interp_rasterpos(interp *ip, const rgl_cmd *cmd)
     if (!in)
         return;
     const int32_t *vp = a->viewport.rect;
+    float d = 1.0f / w, hw = (float)vp[2] * 0.5f, hh = (float)vp[3] * 0.5f;
+    a->current.raster_pos[0] = clip[0] * d * hw + (hw + (float)vp[0]);
+    a->current.raster_pos[1] = clip[1] * d * hh + (hh + (float)vp[1]);
+    /* The depth in double: pixels placed at it meet the geometry, whose
+     * depth is the scene's. */
+    double deye[4], dclip[4];
+    mat4_apply(interp_matrix(ip, INTERP_MV), dobj, deye);
+    mat4_apply(interp_matrix(ip, INTERP_PROJ), deye, dclip);
+    if (!(dclip[3] > 0) || !isfinite(dclip[2] / dclip[3])) {
+        for (int k = 0; k < 4; k++)
+            dclip[k] = clip[k];
+    }
     double n_ = a->viewport.near, f_ = a->viewport.far;
-    a->current.raster_pos[0] = vp[0] + (clip[0] / w + 1) * vp[2] / 2;
-    a->current.raster_pos[1] = vp[1] + (clip[1] / w + 1) * vp[3] / 2;
-    a->current.raster_pos[2] = n_ + (clip[2] / w + 1) / 2 * (f_ - n_);
-    a->current.raster_pos[3] = w;
-    interp_pixdepth_raster(ip, clip);
+    a->current.raster_pos[2] = n_ + (dclip[2] / dclip[3] + 1) / 2 * (f_ - n_);
+    a->current.raster_pos[3] = dclip[3];
+    interp_pixdepth_raster(ip, dclip);
     if (a->caps[INTERP_CAP_LIGHTING])
-        take_lit_colour(ip, obj);
+        take_lit_colour(ip, dobj);
     else
         take_colour(ip);
 }
@@ -295,8 +322,8 @@ void interp_bitmap(interp *ip, const rgl_cmd *cmd)
         if (ov && interp_budget_texels(ip, (uint64_t)w * (uint64_t)h)) {
             /* The lower left corner at (floor(xr - xo), floor(yr - yo)),
              * in the overlay's coordinates. */
-            double fx = floor(rp[0] - xo) - ip->pixels_org[0];
-            double fy = floor(rp[1] - yo) - ip->pixels_org[1];
+            double fx = floorf((float)rp[0] - (float)xo) - ip->pixels_org[0];
+            double fy = floorf((float)rp[1] - (float)yo) - ip->pixels_org[1];
             int ow = ip->scene->overlay_w, oh = ip->scene->overlay_h;
             for (int64_t j = 0; j < h; j++) {
                 double y = fy + (double)j;
@@ -312,8 +339,10 @@ void interp_bitmap(interp *ip, const rgl_cmd *cmd)
             }
         }
     }
-    rp[0] += xm;
-    rp[1] += ym;
+    /* Single precision, as GL keeps the position: a run of fractional
+     * advances lands where Mesa's does. */
+    rp[0] = (float)rp[0] + (float)xm;
+    rp[1] = (float)rp[1] + (float)ym;
 }
 
 /* Draws w x h RGBA pixels (floats, before pixel transfer) at the raster

@@ -206,7 +206,14 @@ static bool setup_transform(interp *ip)
     if (!ip->frame_begin) {
         const int32_t *vp = ip->st.a.viewport.rect;
         bool same_vp = memcmp(vp, ip->cam_viewport, sizeof ip->cam_viewport) == 0;
-        if (!same_vp || !mat4_equal_f32(proj, &ip->cam_proj)) {
+        mat4 w = interp_window_matrix(proj, vp);
+        bool own = same_vp && mat4_equal_f32(proj, &ip->cam_proj);
+        if (!own)
+            interp_proj_layer(ip, &w);
+        /* glDepthRange and depth-only clears move the draw's depth: along
+         * the camera's rays, so the picture keeps its pixels. */
+        bool moved = interp_proj_depth_map(ip, &w);
+        if (!own || moved) {
             /* Drawn with another projection or viewport: map its window
              * position into the camera's eye space. Window x, y and depth
              * are GL's, so colours and depth order are exact; lighting,
@@ -218,13 +225,11 @@ static bool setup_transform(interp *ip)
                 interp_note(ip, DIAG_NOTE_PROJECTION);
             if (!ip->cam_from_ndc_ok)
                 return false;
-            mat4 w = interp_window_matrix(proj, vp);
-            interp_proj_layer(ip, &w);
             mat4 remap = mat4_mul(&ip->cam_from_ndc, &w);
             to_eye = mat4_mul(&remap, mv);
-        } else {
-            interp_proj_own_draw(ip);
         }
+        if (own)
+            interp_proj_own_draw(ip);
     }
     if (!mat4_finite(&to_eye) || !mat4_finite(&ip->prim_clip)) {
         interp_diag(ip, DIAG_BAD_NUMBER, "matrix with NaN or infinite elements: draw skipped");

@@ -171,9 +171,16 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
         return;
     }
     /* A colour clear of a buffer the frame does not show leaves its
-     * picture alone (interp_buffers.c); depth and stencil are shared. */
-    if ((mask & GL_COLOR_BUFFER_BIT) && interp_draw_buffer_hidden(ip))
+     * picture alone (interp_buffers.c); depth and stencil are shared. The
+     * write masks apply to the clear (GL 1.x 4.2.3): with red, green and
+     * blue masked it changes no colour, under glDepthMask(GL_FALSE) no
+     * depth. */
+    const gl_attribs *a = &ip->st.a;
+    const bool *cm = a->color_buffer.mask;
+    if ((mask & GL_COLOR_BUFFER_BIT) && (interp_draw_buffer_hidden(ip) || (!cm[0] && !cm[1] && !cm[2])))
         mask &= ~(uint32_t)GL_COLOR_BUFFER_BIT;
+    if (!a->depth.mask)
+        mask &= ~(uint32_t)GL_DEPTH_BUFFER_BIT;
     if ((mask & GL_DEPTH_BUFFER_BIT) && !(mask & GL_COLOR_BUFFER_BIT) &&
         ip->st.render_mode == GL_RENDER)
         interp_proj_depth_clear(ip);
@@ -181,7 +188,8 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
         interp_stencil_clear(ip);
     if (!(mask & GL_COLOR_BUFFER_BIT) || !ip->scene || ip->st.render_mode != GL_RENDER)
         return;
-    const gl_attribs *a = &ip->st.a;
+    if (!cm[0] || !cm[1] || !cm[2])
+        interp_note(ip, DIAG_NOTE_COLOR_MASK); /* cleared whole */
     if (a->caps[INTERP_CAP_SCISSOR_TEST] && interp_scissor_clear(ip))
         return; /* a partial clear: what is drawn stays */
     if (interp_accum_clear(ip))

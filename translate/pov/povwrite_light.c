@@ -599,7 +599,7 @@ void povlight_front_normal(const povlight *pl, const mat4 *to_eye, const mat4 *t
 
 /* GL fogs a fragment by f of its eye distance c (GL 1.x 3.10; Mesa takes
  * |z_eye| unless GL_FOG_DISTANCE_MODE_NV says z_eye or the radial
- * distance): LINEAR (end - c) / (end - start), EXP e^(-density c), EXP2
+ * distance): LINEAR (end - c) / (end - start) (fog_span), EXP e^(-density c), EXP2
  * e^(-(density c)^2), clamped to [0, 1], and shows f C + (1 - f) fog
  * colour. The layer is the fog colour with transmit f, over the surface's
  * own texture: POV-Ray shows (1 - f) fog + f C, and leaves the background
@@ -618,6 +618,15 @@ static void put_eye_row(outbuf *ob, const mat4 *to_eye, int row)
         outbuf_puts(ob, axis[k]);
     }
     put_num(ob, r[3]);
+}
+
+/* GL_LINEAR's end - start, the divisor of (end - c). Where the two are
+ * equal Mesa fogs by clamp(c - end) (its fog scale is 1 then, with the
+ * sign of 1 / (end - start) lost), i.e. (end - c) / -1. */
+static double fog_span(const scene_fog *fg)
+{
+    double span = (double)fg->end - fg->start;
+    return span != 0 ? span : -1;
 }
 
 static void put_fog_distance(outbuf *ob, const mat4 *to_eye, int distance)
@@ -653,17 +662,13 @@ void povlight_fog_declare(const povlight *pl, outbuf *ob, const char *name, cons
     outbuf_puts(ob, name);
     outbuf_puts(ob, "=texture{pigment{function{min(1,max(0,");
     switch (fg->mode) {
-    case SCENE_FOG_LINEAR: {
-        double span = (double)fg->end - fg->start;
-        if (span == 0)
-            span = 1e-30;
-        put_num(ob, fg->end / span);
+    case SCENE_FOG_LINEAR:
+        put_num(ob, fg->end / fog_span(fg));
         outbuf_putc(ob, '-');
         put_fog_distance(ob, to_eye, distance);
         outbuf_putc(ob, '/');
-        put_num(ob, span);
+        put_num(ob, fog_span(fg));
         break;
-    }
     case SCENE_FOG_EXP2:
         outbuf_puts(ob, "exp(-pow(");
         put_fog_distance(ob, to_eye, distance);
