@@ -408,8 +408,11 @@ static int write_overlay(povwriter *w, outbuf *ob, const scene *s)
         }
         double tt = near_t(cam, from, r);
         /* Just past the near plane: a ten-thousandth of its distance for
-         * a camera with a centre, a hair along the ray for a parallel one. */
-        tt = ortho ? (tt < 0 && !cam->has_clip ? 0 : tt) + 1e-4 : (tt > 0 ? tt * (1 + 1e-4) : 1e-3);
+         * a camera with a centre, a hair along the ray for a parallel one,
+         * past POV-Ray's least intersection depth (1e-4: on the camera
+         * plane it meets nothing) and the float rounding of the corners. */
+        double hair = 1e-3 + 1e-6 * sqrt(dot3(from, from));
+        tt = ortho ? (tt < 0 && !cam->has_clip ? 0 : tt) + hair : (tt > 0 ? tt * (1 + 1e-4) : 1e-3);
         /* Depth-tested pixels at one depth: in that plane (interp_pixdepth.c). */
         if (s->overlay_at_depth) {
             const double *a = s->overlay_plane;

@@ -365,6 +365,7 @@ typedef struct scene {
      * coordinates when there is one; look.c). */
     bool have_view;
     mat4 view;
+    double view_look_at[3]; /* that gluLookAt's centre, world coordinates */
 
     /* Bitmaps and pixel rectangles (interp_pixels.c): one RGBA image of
      * overlay_w x overlay_h pixels, the camera's viewport, bottom row
