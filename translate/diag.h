@@ -94,7 +94,8 @@
     X(NOTE_DEPTH_ONLY, "approximated: draws with every colour channel masked (glColorMask) are left out, but they wrote depth, which hides in GL what is drawn behind them later") \
     X(NOTE_FOG_BEHIND, "approximated: fogged primitives reaching behind the eye, which OpenGL fogs by |eye z| interpolated across the near-plane cut (denser near the eye than their distance)") \
     X(NOTE_RELIT_SPECULAR, "approximated: textured faces under GL_SEPARATE_SPECULAR_COLOR with a highlight, lit past white or showing their back under one-sided lighting, lit per pixel (unclamped, normals toward the viewer)") \
-    X(NOTE_LIT_OUTLINE, "approximated: lit faces outlined (glPolygonMode GL_LINE or GL_POINT) under two-sided lighting take their material's colour unlit, where OpenGL draws them in their vertices' lit colours")
+    X(NOTE_LIT_OUTLINE, "approximated: lit faces outlined (glPolygonMode GL_LINE or GL_POINT) under two-sided lighting take their material's colour unlit, where OpenGL draws them in their vertices' lit colours") \
+    X(NOTE_QUALITY, "approximated with --quality below 6: POV-Ray computes no image maps there, so textured surfaces show their texture's mean colour")
 
 typedef enum diag_kind {
 #define DIAG_ENUM_(name, text) DIAG_##name,

@@ -167,6 +167,20 @@ bool opt_set_quality(options *o, const char *v, const opt_ctx *ctx, opt_err *err
     if (e == v || *e || n < 0 || n > 11 || v[0] == ' ' || v[0] == '+')
         return opt_fail(err, "%s '%s': expected a POV-Ray quality from 0 to 11", ctx->option, v);
     o->look.quality = n == 0 ? -1 : (int)n; /* -1: Quality=0 asked for */
+    o->pov.quick = n < 6; /* POV-Ray's quick colours: no image maps */
+    return true;
+}
+
+bool opt_set_preview(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
+{
+    bool on;
+    if (!opt_bool(v, &on, ctx, err))
+        return false;
+    if (on) { /* quality 4: no reflections, media, image maps; no shadows here */
+        o->look.quality = 4;
+        o->pov.quick = true;
+        o->pov.no_shadows = true;
+    }
     return true;
 }
 

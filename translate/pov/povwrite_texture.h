@@ -33,6 +33,7 @@ typedef struct povtex_image {
 typedef struct povtex {
     povtex_image *imgs;
     size_t n, cap;
+    bool quick; /* image pigments carry quick_color, their mean (pov_options.quick) */
 } povtex;
 
 void povtex_reset(povtex *pt);
@@ -54,9 +55,10 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
                bool keep_alpha, const float tint[3], float scale[2], float offset[2]);
 
 /* The text inside pigment{ } that samples image i of pt as GL samples
- * texture t: `uv_mapping image_map{png "NAME" gamma 2.2 interpolate 2}`.
+ * texture t: `uv_mapping image_map{png "NAME" gamma 2.2 interpolate 2}`,
+ * with pt->quick ` quick_color rgb<mean>` after it.
  * Returns the number of bytes (< POVTEX_PIGMENT_MAX) written to buf. */
-#define POVTEX_PIGMENT_MAX 128
+#define POVTEX_PIGMENT_MAX 192
 size_t povtex_pigment(const povtex *pt, size_t i, const scene_texture *t,
                       char buf[POVTEX_PIGMENT_MAX]);
 

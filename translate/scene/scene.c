@@ -560,3 +560,12 @@ bool scene_lights_specular_channels(const scene_light *l, size_t n, double t[3])
     return true;
 }
 
+bool scene_textured(const scene *s)
+{
+    for (size_t i = 0; i < s->nmeshes; i++) {
+        const scene_mesh *m = &s->meshes[i];
+        if (m->tri_count > 0 && (m->look.texture >= 0 || m->look.texture1 >= 0))
+            return true;
+    }
+    return false;
+}

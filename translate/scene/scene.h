@@ -456,6 +456,9 @@ int32_t scene_material_index(scene *s, const scene_material *m);
 
 bool scene_look_equal(const scene_look *a, const scene_look *b);
 
+/* Whether a mesh with triangles is textured. */
+bool scene_textured(const scene *s);
+
 /* The one multiple r of their diffuse colours (scene_light.color) that
  * fits the specular colours of lights l[0..n-1] best (least squares over
  * every channel; 0 without diffuse); true when each specular colour is r
