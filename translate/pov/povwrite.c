@@ -526,11 +526,26 @@ static int write_overlay(povwriter *w, outbuf *ob, const scene *s)
         if (rc != 0)
             return rc < 0 ? -1 : 0;
     }
-    int img = povtex_overlay(&w->tex, s->overlay, s->overlay_w, s->overlay_h);
+    /* Cropped to the box of what was drawn: a HUD's line of text is not a
+     * frame-sized image. */
+    int W = s->overlay_w, H = s->overlay_h, x0 = W, x1 = -1, y0 = H, y1 = -1;
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++)
+            if (s->overlay[4 * ((size_t)y * (size_t)W + (size_t)x) + 3]) {
+                x0 = x < x0 ? x : x0;
+                x1 = x > x1 ? x : x1;
+                y0 = y < y0 ? y : y0;
+                y1 = y > y1 ? y : y1;
+            }
+    if (x1 < 0)
+        return 0; /* nothing drawn */
+    int img = povtex_overlay(&w->tex, s->overlay, W, x0, y0, x1 - x0 + 1, y1 - y0 + 1);
     char pigment[POVTEX_PIGMENT_MAX];
     if (img < 0 || povtex_image_pigment(&w->tex, (size_t)img, false, pigment) == 0)
         return -1;
-    static const double uv[4][2] = {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}};
+    double u0 = (double)x0 / W - 0.5, u1 = (double)(x1 + 1) / W - 0.5;
+    double v0 = (double)y0 / H - 0.5, v1 = (double)(y1 + 1) / H - 0.5;
+    const double uv[4][2] = {{u0, v0}, {u1, v0}, {u1, v1}, {u0, v1}};
     double p[4][3];
     for (int c = 0; c < 4; c++)
         if (!overlay_point(s, uv[c][0], uv[c][1], p[c]))

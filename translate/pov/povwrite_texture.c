@@ -183,7 +183,7 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
     return (int)(pt->n - 1);
 }
 
-int povtex_overlay(povtex *pt, const uint8_t *rgba, int w, int h)
+int povtex_overlay(povtex *pt, const uint8_t *rgba, int stride, int x0, int y0, int w, int h)
 {
     size_t n = (size_t)w * (size_t)h * 4;
     if (tr_grow((void **)&pt->imgs, &pt->cap, pt->n + 1, sizeof *pt->imgs) != 0)
@@ -191,7 +191,9 @@ int povtex_overlay(povtex *pt, const uint8_t *rgba, int w, int h)
     uint8_t *px = tr_realloc(NULL, n);
     if (!px)
         return -1;
-    memcpy(px, rgba, n);
+    for (int y = 0; y < h; y++)
+        memcpy(px + (size_t)y * (size_t)w * 4,
+               rgba + ((size_t)(y0 + y) * (size_t)stride + (size_t)x0) * 4, (size_t)w * 4);
     bool alpha = false;
     for (size_t i = 3; i < n && !alpha; i += 4)
         alpha = px[i] != 255;

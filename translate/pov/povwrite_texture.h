@@ -77,10 +77,11 @@ int povtex_alpha_pigment(outbuf *ob, povtex *pt, const scene *s, int32_t t, size
 size_t povtex_image_pigment(const povtex *pt, size_t i, bool linear,
                             char buf[POVTEX_PIGMENT_MAX]);
 
-/* Adds a copy of the frame's image of bitmaps and pixel rectangles
- * (scene.overlay: w x h RGBA, bottom row first; its alpha kept, 0 where
- * nothing was drawn). Returns its index in pt, -1 when memory ran out. */
-int povtex_overlay(povtex *pt, const uint8_t *rgba, int w, int h);
+/* Adds a copy of the cw x ch box at (x0, y0) of the frame's image of
+ * bitmaps and pixel rectangles (scene.overlay: RGBA rows of w pixels,
+ * bottom row first; its alpha kept, 0 where nothing was drawn). Returns
+ * its index in pt, -1 when memory ran out. */
+int povtex_overlay(povtex *pt, const uint8_t *rgba, int w, int x0, int y0, int cw, int ch);
 
 /* Vertex colours as one image (docs/mapping.md section 12): per face a
  * 2 x 2 texel block A, B, C, D = B + C - A, which bilinear filtering turns
