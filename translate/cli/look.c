@@ -634,6 +634,11 @@ int look_write_scene(outbuf *ob, const look_settings *l, const scene *s,
             }
         outbuf_puts(ob, ">}\n");
     }
+    if (ninclude)
+        /* POV-Ray's own default finish again (its manual's ambient 0.1,
+         * diffuse 0.6, no emission): the scene's unlit default (povwrite.c)
+         * is RayGL's, and would make the user's objects flat and unlit. */
+        outbuf_puts(ob, "#default{finish{ambient 0.1 diffuse 0.6 emission 0}}\n");
     for (size_t i = 0; i < ninclude; i++) {
         /* Names are [A-Za-z0-9._-] (look_copy_includes): nothing to escape. */
         outbuf_puts(ob, "#include \"");
