@@ -409,6 +409,7 @@ static void *worker(void *arg)
         translator_set_heavy(t, heavy_enter, &w);
         translator_set_vertex_lighting(t, j->o->vertex_lighting);
         translator_set_shadows(t, !j->o->pov.no_shadows);
+        translator_set_pov(t, !j->o->gltf);
     }
     outbuf ob;
     bool ob_ok = outbuf_init(&ob, 1 << 20, fd_flush, NULL) == 0;

@@ -243,6 +243,7 @@ struct interp {
     } lsets;
     bool vertex_lighting; /* interp_set_vertex_lighting */
     bool no_shadows;      /* interp_set_shadows(ip, false) */
+    bool not_pov;         /* interp_set_pov(ip, false) */
 
     /* glMaterial between the vertices of the open primitive
      * (interp_vmaterial.c): each vertex's material once one changed, and
