@@ -95,7 +95,7 @@
     X(NOTE_FOG_BEHIND, "approximated: fogged primitives reaching behind the eye, which OpenGL fogs by |eye z| interpolated across the near-plane cut (denser near the eye than their distance)") \
     X(NOTE_RELIT_SPECULAR, "approximated: textured faces under GL_SEPARATE_SPECULAR_COLOR with a highlight, lit past white or showing their back under one-sided lighting, lit per pixel (unclamped, normals toward the viewer)") \
     X(NOTE_LIT_OUTLINE, "approximated: lit faces outlined (glPolygonMode GL_LINE or GL_POINT) under two-sided lighting take their material's colour unlit, where OpenGL draws them in their vertices' lit colours") \
-    X(NOTE_QUALITY, "approximated with --quality below 6: POV-Ray computes no image maps there, so textured surfaces show their texture's mean colour")
+    X(NOTE_QUALITY, "approximated with --quality below 6: POV-Ray computes no image maps or transmitted light there: textured surfaces show their texture's mean colour, translucent ones and translucent bitmap or pixel-rectangle pixels hide what is behind them")
 
 typedef enum diag_kind {
 #define DIAG_ENUM_(name, text) DIAG_##name,

@@ -444,7 +444,7 @@ static void *worker(void *arg)
         scene *sc = translator_scene_edit(t);
         if (s->status == RGL_OK)
             s->look_note = look_apply(&j->o->look, sc);
-        if (s->status == RGL_OK && s->log && !j->o->gltf && j->o->pov.quick && scene_textured(sc)) {
+        if (s->status == RGL_OK && s->log && !j->o->gltf && j->o->pov.quick && scene_needs_quality6(sc)) {
             char prefix[32];
             snprintf(prefix, sizeof prefix, "frame %zu", s->frame);
             diag_add(s->log, DIAG_NOTE_QUALITY, prefix, "%s", diag_kind_name(DIAG_NOTE_QUALITY));

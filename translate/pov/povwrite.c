@@ -383,14 +383,6 @@ static double near_t(const scene_camera *cam, const double from[3], const double
     return best;
 }
 
-/* Bitmaps and pixel rectangles (scene.overlay): one image covering the
- * camera's view exactly, pixel for pixel (image_map without
- * interpolation: each ray through a pixel centre meets its texel's
- * centre), just beyond the near plane, so in front of the whole scene, or
- * at the depth GL tested its pixels at (scene.overlay_at_depth).
- * Unlit (the #default finish), casting no shadow, seen in no reflection
- * or radiosity. Transparent where nothing was drawn. */
-
 /* Where the ray through image point (u, v) in [-1/2, 1/2]^2 meets the
  * overlay's plane. False: not finite. */
 static bool overlay_point(const scene *s, double u, double v, double p[3])
@@ -442,14 +434,22 @@ static int write_overlay_runs(outbuf *ob, const scene *s)
         }
     if (nruns == 0)
         return 1;
-    /* The runs' colours, each once: texture_list indices. */
+    /* The runs' colours, each once: texture_list indices, found through an
+     * open-addressed table of 2 to 4 slots a run (a key is never 0: its
+     * alpha is not). */
+    size_t nslots = 1;
+    while (nslots < 2 * nruns)
+        nslots *= 2;
     uint32_t *cols = tr_realloc(NULL, nruns * sizeof *cols);
     uint32_t *idx = tr_realloc(NULL, nruns * sizeof *idx);
-    if (!cols || !idx) {
+    uint32_t *slot = tr_realloc(NULL, nslots * 2 * sizeof *slot);
+    if (!cols || !idx || !slot) {
         tr_free(cols);
         tr_free(idx);
+        tr_free(slot);
         return -1;
     }
+    memset(slot, 0, nslots * 2 * sizeof *slot);
     size_t ncols = 0, r = 0;
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W; x++) {
@@ -458,12 +458,15 @@ static int write_overlay_runs(outbuf *ob, const scene *s)
                 continue;
             uint32_t key = (uint32_t)c[0] | (uint32_t)c[1] << 8 | (uint32_t)c[2] << 16 |
                            (uint32_t)c[3] << 24;
-            size_t k = 0;
-            while (k < ncols && cols[k] != key)
-                k++;
-            if (k == ncols)
+            size_t h = (key * 0x9e3779b1u) & (nslots - 1);
+            while (slot[2 * h] && slot[2 * h] != key)
+                h = (h + 1) & (nslots - 1);
+            if (!slot[2 * h]) {
+                slot[2 * h] = key;
+                slot[2 * h + 1] = (uint32_t)ncols;
                 cols[ncols++] = key;
-            idx[r++] = (uint32_t)k;
+            }
+            idx[r++] = slot[2 * h + 1];
         }
     outbuf_puts(ob, "mesh2{vertex_vectors{");
     outbuf_u64(ob, 4 * nruns);
@@ -516,9 +519,17 @@ static int write_overlay_runs(outbuf *ob, const scene *s)
     outbuf_puts(ob, "}\nno_shadow no_reflection no_radiosity}\n");
     tr_free(cols);
     tr_free(idx);
+    tr_free(slot);
     return 1;
 }
 
+/* Bitmaps and pixel rectangles (scene.overlay): one image covering the
+ * camera's view exactly, pixel for pixel (image_map without
+ * interpolation: each ray through a pixel centre meets its texel's
+ * centre), just beyond the near plane, so in front of the whole scene, or
+ * at the depth GL tested its pixels at (scene.overlay_at_depth).
+ * Unlit (the #default finish), casting no shadow, seen in no reflection
+ * or radiosity. Transparent where nothing was drawn. */
 static int write_overlay(povwriter *w, outbuf *ob, const scene *s)
 {
     if (w->light.opt.quick) {

@@ -456,8 +456,9 @@ int32_t scene_material_index(scene *s, const scene_material *m);
 
 bool scene_look_equal(const scene_look *a, const scene_look *b);
 
-/* Whether a mesh with triangles is textured. */
-bool scene_textured(const scene *s);
+/* Whether the scene needs what POV-Ray computes only from quality 6 up:
+ * a textured or blended mesh, or a translucent pixel of the overlay. */
+bool scene_needs_quality6(const scene *s);
 
 /* The one multiple r of their diffuse colours (scene_light.color) that
  * fits the specular colours of lights l[0..n-1] best (least squares over
