@@ -15,7 +15,6 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -497,10 +496,12 @@ static int write_overlay_runs(outbuf *ob, const scene *s)
         uint32_t c = cols[k];
         /* The PNG's values as the image map used them (gamma 2.2 =
          * assumed_gamma); its alpha as transmit. */
-        char buf[96];
-        snprintf(buf, sizeof buf, ",texture{pigment{rgbt<%u/255,%u/255,%u/255,%u/255>}}\n",
-                 c & 255, c >> 8 & 255, c >> 16 & 255, 255 - (c >> 24));
-        outbuf_puts(ob, buf);
+        const uint32_t v[4] = {c & 255, c >> 8 & 255, c >> 16 & 255, 255 - (c >> 24)};
+        for (int q = 0; q < 4; q++) {
+            outbuf_puts(ob, q ? "/255," : ",texture{pigment{rgbt<");
+            outbuf_u64(ob, v[q]);
+        }
+        outbuf_puts(ob, "/255>}}\n");
     }
     outbuf_puts(ob, "}\nface_indices{");
     outbuf_u64(ob, 2 * nruns);
