@@ -213,6 +213,9 @@ RAYGL_API void rayglDrawPixels(GLsizei width, GLsizei height, GLenum format, GLe
 RAYGL_API void rayglCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type);
 /* The polygon stipple: its 32 x 32 mask read as glBitmap's bits. */
 RAYGL_API void rayglPolygonStipple(const GLubyte *mask);
+/* The draw buffer, with the context's colour buffers (double-buffered,
+ * stereo) as found at the call. */
+RAYGL_API void rayglDrawBuffer(GLenum mode);
 
 /* Texture copies, their framebuffer rectangle read back at the call; 3D
  * textures, their pixels read as glTexImage2D's (unpack image height and

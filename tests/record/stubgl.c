@@ -491,6 +491,10 @@ void glCopyPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type)
 {
     LOGV("glCopyPixels", x, y, w, h, type);
 }
+void glDrawBuffer(GLenum mode)
+{
+    LOGV("glDrawBuffer", mode);
+}
 
 /* ---- Texture copies and 3D textures (record/entry_texcopy.c) ----------------------- */
 

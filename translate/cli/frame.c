@@ -216,11 +216,14 @@ static interp *carried_state(translator *t, uint32_t stream, size_t i, size_t *b
  * single-buffered frames back to the last one that clears it
  * (frame_front.c). A frame with a state snapshot restores GL's state, not
  * the front buffer: the chain goes on through it. *capped: the chain went
- * on past FRONT_MAX_FRAMES. */
-static size_t front_first(translator *t, size_t i, const rgl_frame_info *fi, bool *capped)
+ * on past FRONT_MAX_FRAMES; *flushed: frame i ends with glFlush or glFinish
+ * (it shows the front buffer: interp_set_shown_front). */
+static size_t front_first(translator *t, size_t i, const rgl_frame_info *fi, bool *capped,
+                          bool *flushed)
 {
     *capped = false;
     front_scan fs = front_scan_frame(fi);
+    *flushed = fs.flushed;
     if (!fs.flushed || fs.clears_color)
         return i;
     size_t first = i;
@@ -294,8 +297,8 @@ static bool build_pass(translator *t, size_t i, diag_log *log, frame_result *out
     interp_reset(ip);
     size_t bad = 0;
     int64_t last = -1;
-    bool capped = false;
-    size_t first = front_first(t, i, fi, &capped);
+    bool capped = false, flushed = false;
+    size_t first = front_first(t, i, fi, &capped, &flushed);
     rgl_frame_info f0 = *fi; /* the first frame shown: its state starts the replay */
     if (first < i && get_frame(t, first, &f0, &out->error) != RGL_OK) {
         first = i;
@@ -310,6 +313,7 @@ static bool build_pass(translator *t, size_t i, diag_log *log, frame_result *out
         interp_copy_state(ip, src);
     }
     interp_begin_frame(ip);
+    interp_set_shown_front(ip, flushed); /* the front buffer, or the back one */
     if (!(fi->flags & RGL_FRAME_LIVE_CONTEXT))
         interp_unrecorded_batch(ip);
     if (preset)
@@ -375,6 +379,7 @@ rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result
             return out->status;
     }
     out->unrecorded = interp_unrecorded(ip);
+    interp_budget_used(ip, &out->used, &out->limit);
     const char *cut = interp_frame_cut(ip);
     if (cut)
         snprintf(out->cut, sizeof out->cut, "%s", cut);

@@ -69,6 +69,8 @@ void interp_begin_frame(interp *ip)
     if (ip->scene)
         scene_reset(ip->scene);
     interp_lists_begin_frame(ip);
+    interp_texture_begin_frame(ip);
+    interp_pixels_begin_frame(ip);
     /* the scene's stencil region starts empty (interp_stencil.c) */
     ip->stencil.first = 0;
     ip->stencil.written = ip->stencil.mixed = false;
@@ -85,6 +87,7 @@ void interp_end_frame(interp *ip)
     }
     if (!s)
         return;
+    interp_budget_peak(ip);
     interp_fix_camera(ip);
     interp_proj_end_frame(ip);
     interp_zorder_end_frame(ip);
@@ -167,6 +170,10 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
         interp_bad_value(ip, "glClear mask has unknown bits");
         return;
     }
+    /* A colour clear of a buffer the frame does not show leaves its
+     * picture alone (interp_buffers.c); depth and stencil are shared. */
+    if ((mask & GL_COLOR_BUFFER_BIT) && interp_draw_buffer_hidden(ip))
+        mask &= ~(uint32_t)GL_COLOR_BUFFER_BIT;
     if ((mask & GL_DEPTH_BUFFER_BIT) && !(mask & GL_COLOR_BUFFER_BIT) &&
         ip->st.render_mode == GL_RENDER)
         interp_proj_depth_clear(ip);
@@ -181,6 +188,7 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
         return;
     interp_proj_clear(ip);
     /* Everything drawn so far is gone; the next draw fixes the camera anew. */
+    interp_budget_peak(ip);
     scene_clear_geometry(ip->scene);
     ip->nclear_rects = 0;
     ip->camera_fixed = false;
