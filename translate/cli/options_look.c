@@ -153,6 +153,18 @@ bool opt_set_quality(options *o, const char *v, const opt_ctx *ctx, opt_err *err
     return true;
 }
 
+bool opt_set_preview(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
+{
+    bool on;
+    if (!opt_bool(v, &on, ctx, err))
+        return false;
+    if (on) { /* quality 4: no reflections, media, image maps; no shadows here */
+        o->look.options.quality = 4;
+        o->look.options.no_shadows = true;
+    }
+    return true;
+}
+
 bool opt_set_include(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
 {
     look_settings *l = &o->look;

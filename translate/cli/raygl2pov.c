@@ -153,6 +153,10 @@ int main(int argc, char **argv)
         .quiet = o.quiet,
         .verbose = o.verbose,
         .vertex_lighting = o.vertex_lighting,
+        .pov = o.writer == driver_writer("pov"),
+        /* POV-Ray's quick colours below quality 6 (-1: Quality=0) */
+        .quality_note = o.writer == driver_writer("pov") && o.look.options.quality != 0 &&
+                        o.look.options.quality < 6,
         .writer = o.writer,
         .name_pattern = o.name_pattern,
         .look = &o.look,

@@ -47,6 +47,9 @@ typedef struct driver_settings {
     bool verbose;                 /* also the notes held and calls not recorded
                                      that cannot change the picture */
     bool vertex_lighting;         /* interp_set_vertex_lighting */
+    bool pov;                     /* the scenes are for POV-Ray (interp_set_pov) */
+    bool quality_note;            /* POV-Ray renders below quality 6: say so of a
+                                     frame that needs more (scene_needs_quality6) */
     const writer_def *writer;
     const char *name_pattern;     /* naming.h; NULL: the default */
     const look_settings *look;

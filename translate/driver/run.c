@@ -177,6 +177,11 @@ static void run_slot(job *j, worker_ctx *w, size_t k, slot *s, outbuf *ob)
     scene *sc = translator_scene_edit(w->t);
     if (s->status == RGL_OK && look_apply(d->look, sc, &s->look_note) != 0)
         s->status = RGL_E_NOMEM;
+    if (s->status == RGL_OK && s->log && d->quality_note && scene_needs_quality6(sc)) {
+        char prefix[32];
+        snprintf(prefix, sizeof prefix, "frame %zu", s->frame);
+        diag_add(s->log, DIAG_NOTE_QUALITY, prefix, "%s", diag_kind_name(DIAG_NOTE_QUALITY));
+    }
     writer_keep(sc, &s->kept);
     if (s->status == RGL_OK && d->outdir)
         write_temp(j, w, k, s, ob);
@@ -190,6 +195,7 @@ static void *worker(void *arg)
         translator_set_heavy(w.t, heavy_enter, &w);
         translator_set_vertex_lighting(w.t, j->d->vertex_lighting);
         translator_set_shadows(w.t, !j->d->look->options.no_shadows);
+        translator_set_pov(w.t, j->d->pov);
     }
     w.w = j->wd->create ? j->wd->create(j->wrun) : j->wrun;
     outbuf ob;

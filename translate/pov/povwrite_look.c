@@ -89,6 +89,11 @@ void povlook_includes(outbuf *ob, const scene *s, const char *const *names, size
                 outbuf_putc(ob, ',');
         }
     outbuf_puts(ob, ">}\n");
+    if (n)
+        /* POV-Ray's own default finish again (its manual's ambient 0.1,
+         * diffuse 0.6, no emission): the scene's unlit default (povwrite.c)
+         * is RayGL's, and would make the user's objects flat and unlit. */
+        outbuf_puts(ob, "#default{finish{ambient 0.1 diffuse 0.6 emission 0}}\n");
     for (size_t i = 0; i < n; i++) {
         /* Names are [A-Za-z0-9._-] (povlook_copy_includes): nothing to escape. */
         outbuf_puts(ob, "#include \"");
