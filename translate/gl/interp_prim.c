@@ -1083,10 +1083,9 @@ static inline void relit_keep(assembly *as, uint32_t a, uint32_t b, uint32_t c,
     ip->relit_need[a] = ip->relit_need[b] = ip->relit_need[c] = ip->relit_need[provoking] = 1;
 }
 
-/* One polygon (triangle, quad or GL_POLYGON) with vertices idx (relative),
- * its provoking vertex, and whether its edge flags count. */
-static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t provoking,
-                         bool edge_flags)
+/* One polygon (triangle, quad or GL_POLYGON) with vertices idx (relative)
+ * and its provoking vertex. */
+static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t provoking)
 {
     interp *ip = as->ip;
     const gl_attribs *a = &ip->st.a;
@@ -1119,7 +1118,7 @@ static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t prov
         return;
     }
     for (int k = 0; k < n; k++) {
-        if (edge_flags && !(ip->edge[idx[k]] & 1))
+        if (!(ip->edge[idx[k]] & 1))
             continue; /* GL draws only boundary edges (and their vertices) */
         if (mode == GL_LINE)
             add_segment(as, as->base + idx[k], as->base + idx[(k + 1) % n], as->base + provoking);
@@ -1128,6 +1127,11 @@ static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t prov
     }
 }
 
+/* Every mode takes edge flags, strips and fans too: GL 2.1 2.6.2 says
+ * their edges are all boundary edges, but Mesa (gallium's draw module,
+ * the reference here) flags edge (a, b) of each triangle or quad it
+ * emits by a's flag, in the vertex orders below (tests/programs/
+ * edgeflag_strips.c). */
 static void assemble_polygons(assembly *as, GLenum mode, uint32_t n)
 {
     uint32_t t[4];
@@ -1135,7 +1139,7 @@ static void assemble_polygons(assembly *as, GLenum mode, uint32_t n)
     case GL_TRIANGLES:
         for (uint32_t i = 0; i + 3 <= n; i += 3) {
             t[0] = i, t[1] = i + 1, t[2] = i + 2;
-            emit_polygon(as, t, 3, pv(as, i + 2, i), true);
+            emit_polygon(as, t, 3, pv(as, i + 2, i));
         }
         break;
     case GL_TRIANGLE_STRIP:
@@ -1145,13 +1149,13 @@ static void assemble_polygons(assembly *as, GLenum mode, uint32_t n)
             else
                 t[0] = i + 1, t[1] = i;
             t[2] = i + 2;
-            emit_polygon(as, t, 3, pv(as, i + 2, i), false);
+            emit_polygon(as, t, 3, pv(as, i + 2, i));
         }
         break;
     case GL_TRIANGLE_FAN:
         for (uint32_t i = 0; i + 3 <= n; i++) {
             t[0] = 0, t[1] = i + 1, t[2] = i + 2;
-            emit_polygon(as, t, 3, pv(as, i + 2, i + 1), false);
+            emit_polygon(as, t, 3, pv(as, i + 2, i + 1));
         }
         break;
     case GL_QUADS:
@@ -1160,13 +1164,13 @@ static void assemble_polygons(assembly *as, GLenum mode, uint32_t n)
             uint32_t f = as->list_quads ? 1 : 0;
             for (uint32_t k = 0; k < 4; k++)
                 t[k] = i + (k + f) % 4;
-            emit_polygon(as, t, 4, i + 3, true);
+            emit_polygon(as, t, 4, i + 3);
         }
         break;
     case GL_QUAD_STRIP:
         for (uint32_t i = 0; i + 4 <= n; i += 2) {
             t[0] = i, t[1] = i + 1, t[2] = i + 3, t[3] = i + 2;
-            emit_polygon(as, t, 4, i + 3, false);
+            emit_polygon(as, t, 4, i + 3);
         }
         break;
     case GL_POLYGON:
@@ -1178,7 +1182,7 @@ static void assemble_polygons(assembly *as, GLenum mode, uint32_t n)
             }
             for (uint32_t i = 0; i < n; i++)
                 all[i] = i;
-            emit_polygon(as, all, (int)n, 0, true);
+            emit_polygon(as, all, (int)n, 0);
             tr_free(all);
         }
         break;
