@@ -1632,11 +1632,15 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     else if (o->min_filter != o->mag_filter)
         interp_note(ip, DIAG_NOTE_TEX_SAMPLING);
     /* GL_CLAMP under a linear filter blends the border colour into the
-     * outer half of the edge texels (GL 2.1 3.8.8); the image written is
-     * padded with its edge texels instead (docs/mapping.md "Wrap"). */
-    bool linear = o->mag_filter == GL_LINEAR || o->min_filter == GL_LINEAR ||
-                  o->min_filter == GL_LINEAR_MIPMAP_NEAREST || o->min_filter == GL_LINEAR_MIPMAP_LINEAR;
-    if (linear && (o->wrap_s == GL_CLAMP || (o->target != GL_TEXTURE_1D && o->wrap_t == GL_CLAMP)))
+     * outer half of the edge texels (GL 2.1 3.8.8): the writer samples
+     * GL's filter every half texel (povwrite_texture.c), except for the
+     * levels of a mipmap, padded with the edge texels' mix with the border
+     * (docs/mapping.md "Wrap"). */
+    bool linear_levels = o->min_filter == GL_LINEAR_MIPMAP_NEAREST ||
+                         o->min_filter == GL_LINEAR_MIPMAP_LINEAR ||
+                         (mipmap_filter(o->min_filter) && o->mag_filter == GL_LINEAR);
+    if (linear_levels &&
+        (o->wrap_s == GL_CLAMP || (o->target != GL_TEXTURE_1D && o->wrap_t == GL_CLAMP)))
         interp_note(ip, DIAG_NOTE_TEX_CLAMP_BORDER);
     const gl_attribs *ga = &ip->st.a;
     GLenum cmm = ga->lighting.color_material_mode;
@@ -1667,6 +1671,8 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     st.border_t = o->target != GL_TEXTURE_1D &&
                   (o->wrap_t == GL_CLAMP || o->wrap_t == GL_CLAMP_TO_BORDER ||
                    o->wrap_t == GL_MIRROR_CLAMP_TO_BORDER_EXT);
+    st.to_border_s = o->wrap_s == GL_CLAMP_TO_BORDER;
+    st.to_border_t = o->target != GL_TEXTURE_1D && o->wrap_t == GL_CLAMP_TO_BORDER;
     memcpy(st.border, o->border, sizeof st.border);
     st.env_mode = env;
     memcpy(st.env_color, u.texture->env_color, sizeof st.env_color);

@@ -236,7 +236,8 @@ static int32_t texture_index(writer *w, int32_t t)
     outbuf_u64(&w->images.ob, view);
     outbuf_putc(&w->images.ob, '}');
     w->st.images++;
-    /* GL_CLAMP's border colour has no glTF counterpart: clamped to the edge. */
+    /* The border colour (GL_CLAMP, GL_CLAMP_TO_BORDER) has no glTF
+     * counterpart: clamped to the edge. */
     size_t smp = item(&w->samplers);
     outbuf *o = &w->samplers.ob;
     outbuf_puts(o, "{\"magFilter\":");
@@ -249,7 +250,7 @@ static int32_t texture_index(writer *w, int32_t t)
     outbuf_u64(o, tx->repeat_t ? GL_REPEAT : GL_CLAMP_TO_EDGE);
     outbuf_putc(o, '}');
     if ((!tx->repeat_s && tx->border_s) || (!tx->repeat_t && tx->border_t))
-        note(w, "GL_CLAMP's border colour: clamped to the edge texel");
+        note(w, "the border colour of GL_CLAMP and GL_CLAMP_TO_BORDER: clamped to the edge texel");
     size_t k = item(&w->textures);
     outbuf_puts(&w->textures.ob, "{\"sampler\":");
     outbuf_u64(&w->textures.ob, smp);

@@ -216,6 +216,7 @@ static bool texture_same(const scene_texture *a, const scene_texture *b)
     return a->hash == b->hash && a->width == b->width && a->height == b->height &&
            a->repeat_s == b->repeat_s && a->repeat_t == b->repeat_t && a->linear == b->linear &&
            a->border_s == b->border_s && a->border_t == b->border_t &&
+           a->to_border_s == b->to_border_s && a->to_border_t == b->to_border_t &&
            memcmp(a->border, b->border, sizeof a->border) == 0 &&
            a->env_mode == b->env_mode && a->colour_is_texel == b->colour_is_texel &&
            memcmp(a->env_color, b->env_color, sizeof a->env_color) == 0 &&

@@ -240,6 +240,8 @@ typedef struct scene_texture {
     bool mirror_s, mirror_t; /* repeated as GL_MIRRORED_REPEAT */
     bool border_s, border_t; /* clamped as GL_CLAMP (the border colour counts
                                 under linear filtering), not GL_CLAMP_TO_EDGE */
+    bool to_border_s, to_border_t; /* GL_CLAMP_TO_BORDER: the border colour
+                                outside the texture, under either filter */
     float border[4];         /* GL_TEXTURE_BORDER_COLOR */
     bool linear;             /* magnification GL_LINEAR */
     uint32_t env_mode;       /* GL_MODULATE, GL_REPLACE, GL_DECAL, GL_BLEND */
