@@ -18,7 +18,7 @@
 /* ---- Versions and limits ------------------------------------------------ */
 
 #define RGL_FORMAT_MAJOR 1
-#define RGL_FORMAT_MINOR 3
+#define RGL_FORMAT_MINOR 4
 
 #define RGL_FILE_MAGIC "\x89RGL\r\n\x1a\n"
 #define RGL_FILE_MAGIC_SIZE 8

@@ -407,6 +407,9 @@ uint32_t rgl_tex_active_unit(const rgl_stream *s);
 /* The snapshot's texture objects, then every unit's state in one block
  * after one glActiveTexture, the active unit last (snaptex.c). */
 void rgl_snap_textures(rgl_stream *s, rgl_buf *out);
+/* Whether the current context is GL major.minor or later, or lists
+ * extension ext (a whole name); false without a context (snaptex.c). */
+bool rgl_gl_has(int major, int minor, const char *ext);
 
 /* Whether target is a proxy texture target (GL reads no pixels for it). */
 bool rgl_tex_is_proxy(uint32_t target);

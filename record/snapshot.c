@@ -36,6 +36,7 @@ static const GLenum caps_off[] = {
     GL_MAP1_TEXTURE_COORD_4, GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP2_COLOR_4, GL_MAP2_INDEX,
     GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1, GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3,
     GL_MAP2_TEXTURE_COORD_4, GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_POLYGON_STIPPLE,
+    GL_COLOR_LOGIC_OP,
 };
 
 static GLint get_i(GLenum pname)
@@ -270,6 +271,29 @@ static void snap_eval(rgl_buf *b)
     }
 }
 
+/* The blend colour, the separate blend functions and equations and the
+ * logic op, each where the context has it (GL 1.4 and 2.0, or their
+ * extensions; the blend equation with ARB_imaging too). */
+static void snap_blend(rgl_buf *b)
+{
+    if (rgl_gl_has(1, 4, "GL_EXT_blend_color") || rgl_gl_has(1, 4, "GL_ARB_imaging")) {
+        GLfloat c[4] = {0, 0, 0, 0};
+        glGetFloatv(GL_BLEND_COLOR, c);
+        rgl_emit(b, RGL_OP_BlendColor, "ffff", (double)c[0], (double)c[1], (double)c[2],
+                 (double)c[3]);
+    }
+    if (rgl_gl_has(1, 4, "GL_EXT_blend_func_separate"))
+        rgl_emit(b, RGL_OP_BlendFuncSeparate, "eeee", (uint32_t)get_i(GL_BLEND_SRC_RGB),
+                 (uint32_t)get_i(GL_BLEND_DST_RGB), (uint32_t)get_i(GL_BLEND_SRC_ALPHA),
+                 (uint32_t)get_i(GL_BLEND_DST_ALPHA));
+    if (rgl_gl_has(2, 0, "GL_EXT_blend_equation_separate"))
+        rgl_emit(b, RGL_OP_BlendEquationSeparate, "ee", (uint32_t)get_i(GL_BLEND_EQUATION_RGB),
+                 (uint32_t)get_i(GL_BLEND_EQUATION_ALPHA));
+    else if (rgl_gl_has(1, 4, "GL_ARB_imaging") || rgl_gl_has(1, 4, "GL_EXT_blend_minmax"))
+        rgl_emit(b, RGL_OP_BlendEquation, "e", (uint32_t)get_i(GL_BLEND_EQUATION));
+    rgl_emit(b, RGL_OP_LogicOp, "e", (uint32_t)get_i(GL_LOGIC_OP_MODE));
+}
+
 static void snap_raster(rgl_buf *b)
 {
     GLfloat fc[4] = {0};
@@ -281,6 +305,7 @@ static void snap_raster(rgl_buf *b)
     rgl_emit(b, RGL_OP_Fogfv, "eN", GL_FOG_COLOR, fc, 4);
 
     rgl_emit(b, RGL_OP_BlendFunc, "ee", (uint32_t)get_i(GL_BLEND_SRC), (uint32_t)get_i(GL_BLEND_DST));
+    snap_blend(b);
     rgl_emit(b, RGL_OP_AlphaFunc, "ef", (uint32_t)get_i(GL_ALPHA_TEST_FUNC),
              (double)get_f(GL_ALPHA_TEST_REF));
     rgl_emit(b, RGL_OP_DepthFunc, "e", (uint32_t)get_i(GL_DEPTH_FUNC));

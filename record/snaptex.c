@@ -48,7 +48,7 @@ uint32_t rgl_tex_slot_target(int slot)
 
 /* Whether the current context is GL major.minor or later, or lists
  * extension ext (a whole name). False without a context. */
-static bool gl_has(int major, int minor, const char *ext)
+bool rgl_gl_has(int major, int minor, const char *ext)
 {
     const char *v = (const char *)glGetString(GL_VERSION);
     int ma = 0, mi = 0;
@@ -66,7 +66,7 @@ static bool gl_has(int major, int minor, const char *ext)
 
 static bool has_multitexture(void)
 {
-    return gl_has(1, 3, "GL_ARB_multitexture");
+    return rgl_gl_has(1, 3, "GL_ARB_multitexture");
 }
 
 uint32_t rgl_tex_active_unit(const rgl_stream *s)
@@ -257,9 +257,9 @@ void rgl_snap_textures(rgl_stream *s, rgl_buf *b)
 {
     snap_units su = {
         .has = {true, true,
-                gl_has(3, 1, "GL_ARB_texture_rectangle") ||
-                    gl_has(3, 1, "GL_NV_texture_rectangle"),
-                gl_has(1, 2, "GL_EXT_texture3D"), gl_has(1, 3, "GL_ARB_texture_cube_map")},
+                rgl_gl_has(3, 1, "GL_ARB_texture_rectangle") ||
+                    rgl_gl_has(3, 1, "GL_NV_texture_rectangle"),
+                rgl_gl_has(1, 2, "GL_EXT_texture3D"), rgl_gl_has(1, 3, "GL_ARB_texture_cube_map")},
         .multi = has_multitexture(),
         .units = 1,
     };

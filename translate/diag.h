@@ -86,7 +86,9 @@
     X(NOTE_POLYGON_OFFSET, "approximated: glPolygonOffset moves an offset polygon one pixel's width along the camera's rays (away from the eye for a positive offset), not by GL's window-depth offset; offset GLU and GLUT shapes are drawn as GL's facets") \
     X(NOTE_DEPTH_ONLY, "approximated: draws with every colour channel masked (glColorMask) are left out, but they wrote depth, which hides in GL what is drawn behind them later") \
     X(NOTE_FOG_BEHIND, "approximated: fogged primitives reaching behind the eye, which OpenGL fogs by |eye z| interpolated across the near-plane cut (denser near the eye than their distance)") \
-    X(NOTE_RELIT_SPECULAR, "approximated: textured faces under GL_SEPARATE_SPECULAR_COLOR with a highlight, lit past white or showing their back under one-sided lighting, lit per pixel (unclamped, normals toward the viewer)")
+    X(NOTE_RELIT_SPECULAR, "approximated: textured faces under GL_SEPARATE_SPECULAR_COLOR with a highlight, lit past white or showing their back under one-sided lighting, lit per pixel (unclamped, normals toward the viewer)") \
+    X(NOTE_LOGIC_OP, "approximated: logic ops (glLogicOp) that read the colour buffer, of draws over anything but the clear colour, that cover a pixel twice or vary in colour over a face, or of lit, textured or fogged draws, are drawn as GL_COPY") \
+    X(NOTE_BLEND_DEST, "approximated: blending whose result OpenGL takes from the colour behind in a way transmit and filter cannot show (GL_MIN, GL_MAX, destination factors, channel factors of the colour behind) is drawn as GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA except over the clear colour")
 
 typedef enum diag_kind {
 #define DIAG_ENUM_(name, text) DIAG_##name,

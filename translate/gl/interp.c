@@ -159,6 +159,9 @@ void interp_default_state(gl_state *st)
     a->color_buffer.blend_src = GL_ONE;
     a->color_buffer.blend_dst = GL_ZERO;
     a->color_buffer.blend_equation = GL_FUNC_ADD;
+    a->color_buffer.blend_src_alpha = GL_ONE;
+    a->color_buffer.blend_dst_alpha = GL_ZERO;
+    a->color_buffer.blend_equation_alpha = GL_FUNC_ADD;
     a->color_buffer.logic_op = GL_COPY;
     a->color_buffer.alpha_func = GL_ALWAYS;
     for (int i = 0; i < 4; i++)
@@ -235,6 +238,7 @@ void interp_destroy(interp *ip)
     interp_textures_free(ip);
     interp_eval_free(ip);
     interp_nurbs_free(ip);
+    interp_dest_free(ip);
     tr_free(ip);
 }
 

@@ -170,8 +170,10 @@ typedef struct gl_attribs {
     } transform; /* GL_TRANSFORM_BIT */
     struct {
         float clear[4];
-        GLenum blend_src, blend_dst, alpha_func;
+        GLenum blend_src, blend_dst, alpha_func; /* blend_*: the colour's factors */
         GLenum blend_equation, logic_op;
+        GLenum blend_src_alpha, blend_dst_alpha, blend_equation_alpha;
+        float blend_color[4]; /* glBlendColor */
         float alpha_ref;
         bool mask[4];
     } color_buffer; /* GL_COLOR_BUFFER_BIT */

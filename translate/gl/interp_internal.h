@@ -75,6 +75,7 @@ struct interp {
     interp_textures *tex; /* texture objects and unpack state; NULL: none yet */
     struct interp_eval *eval; /* evaluator maps; NULL: all at their initial values */
     struct interp_nurbs *nurbs; /* GLU NURBS objects and the open shape; NULL: none yet */
+    struct interp_dest *dest; /* the frame's drawn footprint (interp_dest.c); NULL: none yet */
     scene *scene; /* NULL: state only */
     diag_log *log;
     uint8_t *begin_ok; /* by opcode: allowed between glBegin and glEnd */
@@ -141,6 +142,8 @@ struct interp {
     int draw_unit[2];   /* the draw's first two enabled texture units, or -1 */
     bool prim_tex_from1; /* the look's texture is draw_unit[1]'s (tex1 coordinates) */
     bool prim_blend_mapped; /* its vertex colours carry another blend function as transmit */
+    bool prim_fx;         /* interp_blend.c maps its colours at glEnd */
+    float prim_filter;    /* the look's filter (scene_look.filter) */
     bool prim_color_sum;  /* the secondary colour goes into the vertex colours (interp_fogsec.c) */
     bool prim_fog_vertex; /* the fog of the fog coordinate goes into them, no fog layer */
     bool prim_coord_same; /* every vertex so far had the fog coordinate prim_coord0 */
@@ -687,6 +690,24 @@ size_t interp_stipple_dashes(const interp *ip, const scene_camera *cam, const do
  * rays by its offset (a note when it does). */
 bool interp_offset_active(const interp *ip);
 void interp_offset_apply(interp *ip, mat4 *to_eye);
+
+/* Blending and logic ops (interp_blend.c). interp_blend_begin: at a
+ * draw's start, -1 when interp_prim.c maps the blend itself, else the
+ * SCENE_BLEND_* its vertices are stored with; interp_blend_end, at glEnd
+ * with the draw's n vertices in the pool (object space), turns them into
+ * what the scene shows of GL's blend or logic op, and sets prim_blend and
+ * prim_filter (or notes what it cannot). */
+bool interp_blend_factor_ok(GLenum f);
+int interp_blend_begin(interp *ip, GLenum mode);
+void interp_blend_end(interp *ip, uint32_t n);
+
+/* What the colour buffer holds under the open draw (interp_dest.c): true,
+ * with bg the clear colour, when the frame cleared it and nothing drawn
+ * since reaches the draw's n vertices' footprint; with need_once, also
+ * only when no two of its primitives share a pixel. interp_dest_free
+ * releases what it keeps. */
+bool interp_dest_draw(interp *ip, uint32_t n, bool need_once, float bg[4]);
+void interp_dest_free(interp *ip);
 
 /* The scissor test (interp_scissor.c). interp_scissor_cuts: it is on and
  * its box leaves out part of viewport vp. interp_scissor_clear: a glClear

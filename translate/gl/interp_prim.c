@@ -105,10 +105,7 @@ static void draw_notes(interp *ip)
     /* Polygon stipple: interp_pstipple.c; line stipple: interp_stipple.c. */
     if (interp_scissor_cuts(ip, a->viewport.rect) && ip->prim_mode <= GL_LINE_STRIP)
         interp_note(ip, DIAG_NOTE_SCISSOR); /* lines and points: drawn whole */
-    if (c[INTERP_CAP_BLEND] && a->color_buffer.blend_equation != GL_FUNC_ADD)
-        interp_note(ip, DIAG_NOTE_BLEND_EQUATION);
-    if (c[INTERP_CAP_COLOR_LOGIC_OP] && a->color_buffer.logic_op != GL_COPY)
-        interp_note(ip, DIAG_NOTE_COLOR_MASK); /* the masks: interp_masks.c */
+    /* Blend equations and logic ops: interp_blend.c. */
     if (!c[INTERP_CAP_DEPTH_TEST] || (a->depth.func != GL_LESS && a->depth.func != GL_LEQUAL))
         interp_note(ip, DIAG_NOTE_DEPTH);
     /* GL 1.x 3.9: with GL_SINGLE_COLOR the texture modulates the specular
@@ -292,8 +289,13 @@ static uint8_t blend_mode(interp *ip, GLenum mode)
 {
     const gl_attribs *a = &ip->st.a;
     ip->prim_blend_mapped = false;
+    int fx = interp_blend_begin(ip, mode);
+    if (fx >= 0)
+        return (uint8_t)fx;
     if (!a->caps[INTERP_CAP_BLEND])
         return SCENE_BLEND_OPAQUE;
+    if (a->color_buffer.blend_equation != GL_FUNC_ADD)
+        interp_note(ip, DIAG_NOTE_BLEND_EQUATION); /* lit, textured or fogged */
     GLenum src = a->color_buffer.blend_src, dst = a->color_buffer.blend_dst;
     if (src == GL_SRC_ALPHA && dst == GL_ONE_MINUS_SRC_ALPHA)
         return SCENE_BLEND_ALPHA;
@@ -342,6 +344,8 @@ static void begin_mode(interp *ip, GLenum mode)
     ip->prim_mode = mode;
     ip->prim_skip = true;
     ip->prim_plain = 0;
+    ip->prim_fx = false;
+    ip->prim_filter = 0;
     interp_vmat_begin(ip);
     ip->prim_color_sum = ip->prim_fog_vertex = false;
     if (!ip->scene || !interp_render_mode_draws(ip))
@@ -357,8 +361,8 @@ static void begin_mode(interp *ip, GLenum mode)
         return;
     ip->prim_skip = false;
     ip->prim_first = ip->scene->nverts;
-    ip->prim_blend = blend_mode(ip, mode);
     interp_draw_units(ip);
+    ip->prim_blend = blend_mode(ip, mode);
     interp_fogsec_begin(ip, mode);
     const uint8_t *c = ip->st.a.caps;
     bool lit = c[INTERP_CAP_LIGHTING];
@@ -1342,6 +1346,7 @@ scene_look interp_current_look(interp *ip)
     look.lit = ip->st.a.caps[INTERP_CAP_LIGHTING] && !interp_vertex_lit(ip);
     look.flat = ip->st.a.lighting.shade_model == GL_FLAT;
     look.blend = ip->prim_blend;
+    look.filter = ip->prim_filter;
     look.fog = ip->st.a.caps[INTERP_CAP_FOG] && !ip->prim_fog_vertex;
     if (ip->st.a.caps[INTERP_CAP_ALPHA_TEST]) {
         GLenum f = ip->st.a.color_buffer.alpha_func;
@@ -1434,6 +1439,7 @@ static void end_primitive(interp *ip)
     GLenum mode = ip->prim_mode;
     if (n == 0)
         return;
+    interp_blend_end(ip, n);
     interp_fog_behind_check(ip, n);
     assembly as;
     memset(&as, 0, sizeof as);
@@ -1566,6 +1572,7 @@ void interp_abort_begin(interp *ip)
         return;
     ip->in_begin = false;
     ip->prim_plain = 0;
+    ip->prim_fx = false;
     ip->prim_color_sum = ip->prim_fog_vertex = false;
     if (ip->scene && !ip->prim_skip && ip->scene->nverts >= ip->prim_first)
         ip->scene->nverts = ip->prim_first;

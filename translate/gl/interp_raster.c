@@ -264,59 +264,9 @@ void interp_polygonoffset(interp *ip, const rgl_cmd *cmd)
     ip->st.a.polygon.offset_units = (float)arg_num(&cmd->arg[1]);
 }
 
-/* ---- Per-fragment state (issue 4 translates blending and alpha) ---------------- */
+/* ---- Per-fragment state (blending: interp_blend.c) ----------------------------- */
 
 static bool is_compare(GLenum f) { return f >= GL_NEVER && f <= GL_ALWAYS; }
-
-static bool is_blend_factor(GLenum f)
-{
-    switch (f) {
-    case GL_ZERO: case GL_ONE: case GL_SRC_COLOR: case GL_ONE_MINUS_SRC_COLOR:
-    case GL_DST_COLOR: case GL_ONE_MINUS_DST_COLOR: case GL_SRC_ALPHA:
-    case GL_ONE_MINUS_SRC_ALPHA: case GL_DST_ALPHA: case GL_ONE_MINUS_DST_ALPHA:
-    case GL_SRC_ALPHA_SATURATE: case GL_CONSTANT_COLOR: case GL_ONE_MINUS_CONSTANT_COLOR:
-    case GL_CONSTANT_ALPHA: case GL_ONE_MINUS_CONSTANT_ALPHA:
-        return true;
-    default:
-        return false;
-    }
-}
-
-void interp_blendfunc(interp *ip, const rgl_cmd *cmd)
-{
-    GLenum s = arg_enum(cmd, 0), d = arg_enum(cmd, 1);
-    if (!is_blend_factor(s) || !is_blend_factor(d)) {
-        interp_bad_enum(ip, "blend factor", is_blend_factor(s) ? d : s);
-        return;
-    }
-    ip->st.a.color_buffer.blend_src = s;
-    ip->st.a.color_buffer.blend_dst = d;
-}
-
-/* GL 1.4 (ARB_imaging in Mesa's compatibility context): the scene blends
- * as GL_FUNC_ADD; the others are noted where a blended draw uses them. */
-void interp_blendequation(interp *ip, const rgl_cmd *cmd)
-{
-    GLenum m = arg_enum(cmd, 0);
-    if (m != GL_FUNC_ADD && m != GL_FUNC_SUBTRACT && m != GL_FUNC_REVERSE_SUBTRACT &&
-        m != GL_MIN && m != GL_MAX) {
-        interp_bad_enum(ip, "blend equation", m);
-        return;
-    }
-    ip->st.a.color_buffer.blend_equation = m;
-}
-
-/* The sixteen logic ops, GL_CLEAR .. GL_SET (GL 1.1 table 4.3); drawn with
- * GL_COLOR_LOGIC_OP on, any of them is noted, as the colour mask is. */
-void interp_logicop(interp *ip, const rgl_cmd *cmd)
-{
-    GLenum op = arg_enum(cmd, 0);
-    if (op < GL_CLEAR || op > GL_SET) {
-        interp_bad_enum(ip, "logic op", op);
-        return;
-    }
-    ip->st.a.color_buffer.logic_op = op;
-}
 
 void interp_alphafunc(interp *ip, const rgl_cmd *cmd)
 {

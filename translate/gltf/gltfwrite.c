@@ -352,6 +352,9 @@ static int32_t material_index(writer *w, const scene_look *look, bool lines, boo
     }
     if (look->blend == SCENE_BLEND_ALPHA) {
         outbuf_puts(&m, ",\"alphaMode\":\"BLEND\"");
+        if (look->filter > 0)
+            note(w, "blending that multiplies the colour behind (a filter): written as alpha "
+                    "blending of the colour, which glTF's BLEND mode has alone");
         if (look->alpha_test != SCENE_ALPHA_OFF)
             note(w, "the alpha test of a blended draw: not written (glTF has one alpha mode)");
     } else if (look->alpha_test == SCENE_ALPHA_ABOVE) {

@@ -87,6 +87,10 @@ typedef struct scene_look {
                           (scene_pstipple_index); 0: none */
     uint8_t pstipple_org[2]; /* the window position of the image's lower left, mod 32 */
     uint8_t pad3_[2];
+    float filter; /* with SCENE_BLEND_ALPHA: the share of what is behind that
+                     shows multiplied by the colour (POV-Ray's filter); the
+                     colour's alpha is then the surface's own share, the
+                     rest passes unchanged (transmit 1 - filter - alpha) */
 } scene_look;
 
 /* The alpha test of a look (glAlphaFunc with GL_ALPHA_TEST on). */
