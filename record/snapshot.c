@@ -36,7 +36,7 @@ static const GLenum caps_off[] = {
     GL_MAP1_TEXTURE_COORD_4, GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP2_COLOR_4, GL_MAP2_INDEX,
     GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1, GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3,
     GL_MAP2_TEXTURE_COORD_4, GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_POLYGON_STIPPLE,
-    GL_COLOR_LOGIC_OP,
+    GL_COLOR_LOGIC_OP, GL_SCISSOR_TEST,
 };
 
 static GLint get_i(GLenum pname)
@@ -322,6 +322,14 @@ static void snap_raster(rgl_buf *b)
     GLdouble cd[2] = {1, 0};
     glGetDoublev(GL_DEPTH_CLEAR_VALUE, cd);
     rgl_emit(b, RGL_OP_ClearDepth, "d", cd[0]);
+    GLfloat ca[4] = {0};
+    glGetFloatv(GL_ACCUM_CLEAR_VALUE, ca);
+    rgl_emit(b, RGL_OP_ClearAccum, "ffff", (double)ca[0], (double)ca[1], (double)ca[2],
+             (double)ca[3]);
+    GLint sb[4] = {0, 0, 0, 0};
+    glGetIntegerv(GL_SCISSOR_BOX, sb);
+    if (sb[2] >= 0 && sb[3] >= 0)
+        rgl_emit(b, RGL_OP_Scissor, "iiii", sb[0], sb[1], sb[2], sb[3]);
     rgl_emit(b, RGL_OP_ShadeModel, "e", (uint32_t)get_i(GL_SHADE_MODEL));
     rgl_emit(b, RGL_OP_FrontFace, "e", (uint32_t)get_i(GL_FRONT_FACE));
     rgl_emit(b, RGL_OP_CullFace, "e", (uint32_t)get_i(GL_CULL_FACE_MODE));

@@ -88,7 +88,9 @@
     X(NOTE_FOG_BEHIND, "approximated: fogged primitives reaching behind the eye, which OpenGL fogs by |eye z| interpolated across the near-plane cut (denser near the eye than their distance)") \
     X(NOTE_RELIT_SPECULAR, "approximated: textured faces under GL_SEPARATE_SPECULAR_COLOR with a highlight, lit past white or showing their back under one-sided lighting, lit per pixel (unclamped, normals toward the viewer)") \
     X(NOTE_LOGIC_OP, "approximated: logic ops (glLogicOp) that read the colour buffer, of draws over anything but the clear colour, that cover a pixel twice or vary in colour over a face, or of lit, textured or fogged draws, are drawn as GL_COPY") \
-    X(NOTE_BLEND_DEST, "approximated: blending whose result OpenGL takes from the colour behind in a way transmit and filter cannot show (GL_MIN, GL_MAX, destination factors, channel factors of the colour behind) is drawn as GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA except over the clear colour")
+    X(NOTE_BLEND_DEST, "approximated: blending whose result OpenGL takes from the colour behind in a way transmit and filter cannot show (GL_MIN, GL_MAX, destination factors, channel factors of the colour behind) is drawn as GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA except over the clear colour") \
+    X(NOTE_DEPTH_CLEAR, "approximated: a depth-buffer clear (glClear GL_DEPTH_BUFFER_BIT, scissored or not) between draws that overlap on screen: later draws behind earlier ones stay hidden, where OpenGL draws them over") \
+    X(NOTE_ACCUM_CLEAR, "approximated: the accumulation buffer's clear value other than zero (glClearAccum), accumulation clears and operations cut by the scissor box, and passes onto a buffer the frame did not clear: the returned passes are drawn as if accumulated onto zero over the whole window")
 
 typedef enum diag_kind {
 #define DIAG_ENUM_(name, text) DIAG_##name,

@@ -718,6 +718,8 @@ void interp_popattrib(interp *ip, const rgl_cmd *cmd)
         a->color_buffer = s->color_buffer;
     if (m & GL_DEPTH_BUFFER_BIT)
         a->depth = s->depth;
+    if (m & GL_ACCUM_BUFFER_BIT)
+        a->accum = s->accum;
     if (m & GL_FOG_BIT)
         a->fog = s->fog;
     if (m & GL_HINT_BIT)

@@ -155,6 +155,9 @@ typedef struct gl_attribs {
         uint32_t value_mask, write_mask;
     } stencil; /* GL_STENCIL_BUFFER_BIT */
     struct {
+        float clear[4]; /* glClearAccum, clamped to [-1, 1] */
+    } accum; /* GL_ACCUM_BUFFER_BIT */
+    struct {
         float size;
         /* glPointParameter (GL 1.4 3.3): the derived size's clamp, the
          * size below which points fade, the distance attenuation. */

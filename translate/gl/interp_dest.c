@@ -38,8 +38,17 @@ struct interp_dest {
     bool overlay;
     uint32_t clear_rects;
     bool all; /* something could not be placed: every pixel counts as drawn */
-    double (*rect)[4]; /* x0, y0, x1, y1 */
+    double (*rect)[6]; /* x0, y0, x1, y1, and the depth range z0, z1 */
     size_t nrect, cap;
+    /* The frame's depth clears since its last colour clear: the window
+     * box each cleared and the rectangles drawn before it. */
+#define DEST_DEPTH_CLEARS 64
+    struct {
+        double box[4];
+        size_t mark;
+    } dclear[DEST_DEPTH_CLEARS];
+    uint32_t ndclear;
+    bool dclear_lost; /* more than DEST_DEPTH_CLEARS, or one not placed */
 };
 
 void interp_dest_free(interp *ip)
@@ -51,10 +60,10 @@ void interp_dest_free(interp *ip)
     }
 }
 
-static void box_empty(double b[4])
+static void box_empty(double b[6])
 {
-    b[0] = b[1] = INFINITY;
-    b[2] = b[3] = -INFINITY;
+    b[0] = b[1] = b[4] = INFINITY;
+    b[2] = b[3] = b[5] = -INFINITY;
 }
 
 static bool box_set(const double b[4]) { return b[0] <= b[2] && b[1] <= b[3]; }
@@ -67,13 +76,19 @@ static void box_add(double b[4], double x, double y)
     b[3] = fmax(b[3], y);
 }
 
-/* Adds eye point p to box b: false when p is not in front of the camera. */
-static bool box_eye(const scene_camera *cam, double b[4], const double p[3])
+/* Adds eye point p to box b, and its depth along the view to b's depth
+ * range: false when p is not in front of the camera. */
+static bool box_eye(const scene_camera *cam, double b[6], const double p[3])
 {
     double w[2];
     if (!scene_camera_project(cam, p, w) || !isfinite(w[0]) || !isfinite(w[1]))
         return false;
     box_add(b, w[0], w[1]);
+    const double *d = cam->direction, *o = cam->location;
+    double dl = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    double z = dl > 0 ? ((p[0] - o[0]) * d[0] + (p[1] - o[1]) * d[1] + (p[2] - o[2]) * d[2]) / dl : 0;
+    b[4] = fmin(b[4], z);
+    b[5] = fmax(b[5], z);
     return true;
 }
 
@@ -93,7 +108,7 @@ static bool to_eye3(const mat4 *m, bool in_eye, const float v[3], double out[3])
     return true;
 }
 
-static void rect_keep(interp *ip, const double b[4])
+static void rect_keep(interp *ip, const double b[6])
 {
     struct interp_dest *d = ip->dest;
     if (d->all || !box_set(b))
@@ -109,7 +124,7 @@ static void rect_keep(interp *ip, const double b[4])
 /* The triangles [t0, t1) of a mesh placed by m (the mesh's own to_eye, or
  * an instance's times it). */
 static bool tris_box(const scene *s, const mat4 *m, bool in_eye, size_t t0, size_t t1,
-                     double b[4])
+                     double b[6])
 {
     for (size_t t = t0; t < t1; t++)
         for (int k = 0; k < 3; k++) {
@@ -157,6 +172,8 @@ static void sync(interp *ip)
         d->clear_rects = 0;
         d->all = false;
         d->nrect = 0;
+        d->ndclear = 0; /* a colour clear erased what they cleared under */
+        d->dclear_lost = false;
     }
     if (d->all)
         return;
@@ -169,7 +186,7 @@ static void sync(interp *ip)
         size_t done = i + 1 == d->meshes ? d->last_tris : 0;
         if (m->proto || m->tri_count <= done)
             continue;
-        double b[4];
+        double b[6];
         box_empty(b);
         if (!tris_box(s, &m->to_eye, m->in_eye, m->first_tri + done, m->first_tri + m->tri_count, b))
             d->all = true;
@@ -181,7 +198,7 @@ static void sync(interp *ip)
     }
     for (; d->lines < s->nlines && !d->all; d->lines++) {
         const scene_line *l = &s->lines[d->lines];
-        double b[4];
+        double b[6];
         box_empty(b);
         for (int e = 0; e < 2; e++)
             for (int sg = -1; sg <= 1; sg += 2) {
@@ -195,7 +212,7 @@ static void sync(interp *ip)
     }
     for (; d->points < s->npoints && !d->all; d->points++) {
         const scene_point *pt = &s->points[d->points];
-        double b[4];
+        double b[6];
         box_empty(b);
         for (int c = 0; c < 4; c++) {
             double p[3];
@@ -209,7 +226,7 @@ static void sync(interp *ip)
     }
     for (; d->solids < s->nsolids && !d->all; d->solids++) {
         const scene_solid *so = &s->solids[d->solids];
-        double lo[3], hi[3], b[4];
+        double lo[3], hi[3], b[6];
         solid_bounds(so, lo, hi);
         box_empty(b);
         for (int c = 0; c < 8; c++) {
@@ -228,7 +245,7 @@ static void sync(interp *ip)
             break;
         }
         const scene_proto *pr = &s->protos[in->proto];
-        double b[4];
+        double b[6];
         box_empty(b);
         for (size_t k = 0; k < pr->nmeshes && pr->first_mesh + k < s->nmeshes && !d->all; k++) {
             const scene_mesh *m = &s->meshes[pr->first_mesh + k];
@@ -240,7 +257,7 @@ static void sync(interp *ip)
     }
     double W = cam->width, H = cam->height;
     if (s->overlay && !d->overlay) {
-        double b[4];
+        double b[6];
         box_empty(b);
         for (int y = 0; y < s->overlay_h; y++)
             for (int x = 0; x < s->overlay_w; x++)
@@ -248,15 +265,16 @@ static void sync(interp *ip)
                     box_add(b, x - W / 2, y - H / 2);
                     box_add(b, x + 1 - W / 2, y + 1 - H / 2);
                 }
+        b[4] = b[5] = 0; /* in front of everything */
         rect_keep(ip, b);
         d->overlay = true;
     }
     for (; d->clear_rects < ip->nclear_rects; d->clear_rects++) {
         const int32_t *bx = ip->clear_rects[d->clear_rects].box;
-        double b[4] = {(double)bx[0] - ip->cam_viewport[0] - W / 2,
+        double b[6] = {(double)bx[0] - ip->cam_viewport[0] - W / 2,
                        (double)bx[1] - ip->cam_viewport[1] - H / 2,
                        (double)bx[0] + bx[2] - ip->cam_viewport[0] - W / 2,
-                       (double)bx[1] + bx[3] - ip->cam_viewport[1] - H / 2};
+                       (double)bx[1] + bx[3] - ip->cam_viewport[1] - H / 2, INFINITY, INFINITY};
         rect_keep(ip, b);
     }
 }
@@ -404,24 +422,29 @@ static bool polys_overlap(const dest_poly *a, const dest_poly *b)
     return true;
 }
 
-bool interp_dest_draw(interp *ip, uint32_t n, bool need_once, float bg[4])
+static bool dest_make(interp *ip)
 {
-    scene *s = ip->scene;
-    if (!s || !ip->cleared || ip->accum.active || !ip->camera_fixed)
-        return false;
     if (!ip->dest) {
         ip->dest = tr_realloc(NULL, sizeof *ip->dest);
         if (!ip->dest)
             return false;
         memset(ip->dest, 0, sizeof *ip->dest);
-        ip->dest->generation = s->generation - 1; /* made at the first sync */
+        ip->dest->generation = ip->scene->generation - 1; /* made at the first sync */
     }
+    return true;
+}
+
+bool interp_dest_draw(interp *ip, uint32_t n, bool need_once, float bg[4])
+{
+    scene *s = ip->scene;
+    if (!s || !ip->cleared || ip->accum.active || !ip->camera_fixed || !dest_make(ip))
+        return false;
     dest_poly *polys = tr_realloc(NULL, DEST_SELF_MAX * sizeof *polys);
     if (!polys)
         return false;
     size_t np = 0;
     bool ok = draw_polys(ip, n, polys, DEST_SELF_MAX, &np);
-    double b[4];
+    double b[6];
     box_empty(b);
     for (size_t i = 0; ok && i < np; i++)
         for (int k = 0; k < polys[i].n; k++)
@@ -450,4 +473,68 @@ bool interp_dest_draw(interp *ip, uint32_t n, bool need_once, float bg[4])
     }
     memcpy(bg, s->background, 4 * sizeof *bg);
     return true;
+}
+
+/* ---- Depth clears ------------------------------------------------------------ */
+
+void interp_dest_depth_clear(interp *ip)
+{
+    scene *s = ip->scene;
+    const gl_attribs *a = &ip->st.a;
+    if (!s || !dest_make(ip))
+        return;
+    if (!ip->camera_fixed || (s->ntris == 0 && s->nlines == 0 && s->npoints == 0 &&
+                              s->nsolids == 0 && s->ninstances == 0))
+        return; /* nothing drawn yet, or nothing placed: nothing it clears under */
+    sync(ip);
+    struct interp_dest *d = ip->dest;
+    if (d->ndclear >= DEST_DEPTH_CLEARS || d->all) {
+        d->dclear_lost = true;
+        return;
+    }
+    double W = s->camera.width, H = s->camera.height;
+    const int32_t *vp = ip->cam_viewport;
+    double *b = d->dclear[d->ndclear].box;
+    b[0] = -INFINITY, b[1] = -INFINITY, b[2] = INFINITY, b[3] = INFINITY;
+    if (a->caps[INTERP_CAP_SCISSOR_TEST] && interp_scissor_cuts(ip, a->viewport.rect)) {
+        const int32_t *x = a->scissor.box;
+        b[0] = (double)x[0] - vp[0] - W / 2, b[1] = (double)x[1] - vp[1] - H / 2;
+        b[2] = (double)x[0] + x[2] - vp[0] - W / 2, b[3] = (double)x[1] + x[3] - vp[1] - H / 2;
+    }
+    d->dclear[d->ndclear++].mark = d->nrect;
+}
+
+/* Whether r and q share area inside box b (open intervals: touching at an
+ * edge is not sharing). */
+static bool meet_in(const double *r, const double *q, const double *b)
+{
+    double x0 = fmax(fmax(r[0], q[0]), b[0]), x1 = fmin(fmin(r[2], q[2]), b[2]);
+    double y0 = fmax(fmax(r[1], q[1]), b[1]), y1 = fmin(fmin(r[3], q[3]), b[3]);
+    return x0 < x1 && y0 < y1;
+}
+
+void interp_dest_end_frame(interp *ip)
+{
+    struct interp_dest *d = ip->dest;
+    if (!d || !ip->scene || (d->ndclear == 0 && !d->dclear_lost))
+        return;
+    sync(ip);
+    bool differs = d->dclear_lost || (d->all && d->ndclear > 0);
+    /* GL's later draws inside the box pass the depth test where the scene
+     * has earlier geometry in front of them: the scene shows the earlier. */
+    for (uint32_t c = 0; c < d->ndclear && !differs; c++) {
+        size_t mark = d->dclear[c].mark;
+        if ((uint64_t)mark * (d->nrect - mark) > (uint64_t)1 << 24) {
+            differs = true;
+            break;
+        }
+        for (size_t l = mark; l < d->nrect && !differs; l++)
+            for (size_t e = 0; e < mark && !differs; e++)
+                differs = d->rect[l][5] > d->rect[e][4] &&
+                          meet_in(d->rect[l], d->rect[e], d->dclear[c].box);
+    }
+    if (differs)
+        interp_note(ip, DIAG_NOTE_DEPTH_CLEAR);
+    d->ndclear = 0;
+    d->dclear_lost = false;
 }

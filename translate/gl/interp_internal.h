@@ -71,6 +71,9 @@ struct interp {
         bool write, only; /* this draw writes the stencil; and no colour */
         uint8_t clip;     /* this draw kept 1 inside, 2 outside the region */
         size_t n;         /* the region's triangles at this draw */
+        bool box_pending; /* the region is box (window pixels), to be made into
+                             triangles once the camera is fixed */
+        int32_t box[4];
     } stencil; /* interp_stencil.c */
     interp_textures *tex; /* texture objects and unpack state; NULL: none yet */
     struct interp_eval *eval; /* evaluator maps; NULL: all at their initial values */
@@ -267,6 +270,8 @@ struct interp {
         double max_jitter;  /* of the projection, in pixels */
         double focus_min, focus_max; /* lens passes' focal distances */
         double eye_sum[2], eye_sum2; /* their eyes' offsets (first pass's eye space) */
+        bool buffer_odd;   /* a clear or operation the passes alone do not show */
+        bool cleared;      /* the frame cleared the accumulation buffer */
     } accum;
 
     /* rayglFrameBegin */
@@ -691,6 +696,13 @@ size_t interp_stipple_dashes(const interp *ip, const scene_camera *cam, const do
 bool interp_offset_active(const interp *ip);
 void interp_offset_apply(interp *ip, mat4 *to_eye);
 
+/* glClear of the accumulation buffer (interp_accum.c). */
+void interp_accum_buffer_clear(interp *ip);
+
+/* A scissored glClear of the stencil buffer (interp_stencil.c): only the
+ * scissor box takes the clear value. */
+void interp_stencil_clear_box(interp *ip);
+
 /* Blending and logic ops (interp_blend.c). interp_blend_begin: at a
  * draw's start, -1 when interp_prim.c maps the blend itself, else the
  * SCENE_BLEND_* its vertices are stored with; interp_blend_end, at glEnd
@@ -708,6 +720,12 @@ void interp_blend_end(interp *ip, uint32_t n);
  * releases what it keeps. */
 bool interp_dest_draw(interp *ip, uint32_t n, bool need_once, float bg[4]);
 void interp_dest_free(interp *ip);
+/* A glClear of the depth buffer (scissored or not) after draws; at the
+ * frame's end, a note where a later draw inside its box lies behind an
+ * earlier one there, which GL's clear lets it cover and the scene does not
+ * (interp_dest.c). */
+void interp_dest_depth_clear(interp *ip);
+void interp_dest_end_frame(interp *ip);
 
 /* The scissor test (interp_scissor.c). interp_scissor_cuts: it is on and
  * its box leaves out part of viewport vp. interp_scissor_clear: a glClear

@@ -69,7 +69,7 @@ void interp_begin_frame(interp *ip)
     interp_lists_begin_frame(ip);
     /* the scene's stencil region starts empty (interp_stencil.c) */
     ip->stencil.first = 0;
-    ip->stencil.written = ip->stencil.mixed = false;
+    ip->stencil.written = ip->stencil.mixed = ip->stencil.box_pending = false;
 }
 
 void interp_end_frame(interp *ip)
@@ -86,6 +86,7 @@ void interp_end_frame(interp *ip)
     interp_fix_camera(ip);
     interp_proj_end_frame(ip);
     interp_pixels_end_frame(ip);
+    interp_dest_end_frame(ip);
     interp_scissor_end_frame(ip);
     if (!ip->cleared)
         for (int i = 0; i < 4; i++)
@@ -167,8 +168,17 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
     if ((mask & GL_DEPTH_BUFFER_BIT) && !(mask & GL_COLOR_BUFFER_BIT) &&
         ip->st.render_mode == GL_RENDER)
         interp_proj_depth_clear(ip);
-    if ((mask & GL_STENCIL_BUFFER_BIT) && ip->st.render_mode == GL_RENDER)
-        interp_stencil_clear(ip);
+    if ((mask & GL_DEPTH_BUFFER_BIT) && ip->st.render_mode == GL_RENDER && ip->st.a.depth.mask &&
+        !((mask & GL_COLOR_BUFFER_BIT) && !interp_scissor_cuts(ip, ip->st.a.viewport.rect)))
+        interp_dest_depth_clear(ip);
+    if ((mask & GL_ACCUM_BUFFER_BIT) && ip->st.render_mode == GL_RENDER)
+        interp_accum_buffer_clear(ip);
+    if ((mask & GL_STENCIL_BUFFER_BIT) && ip->st.render_mode == GL_RENDER) {
+        if (ip->st.a.caps[INTERP_CAP_SCISSOR_TEST] && interp_scissor_cuts(ip, ip->st.a.viewport.rect))
+            interp_stencil_clear_box(ip);
+        else
+            interp_stencil_clear(ip);
+    }
     if (!(mask & GL_COLOR_BUFFER_BIT) || !ip->scene || ip->st.render_mode != GL_RENDER)
         return;
     const gl_attribs *a = &ip->st.a;
