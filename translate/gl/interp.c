@@ -146,6 +146,7 @@ void interp_default_state(gl_state *st)
     a->line.width = 1;
     a->point.size = 1;
     a->point.size_max = 1024; /* Mesa's largest point, interp_pointsize's limit */
+    a->point.sprite_origin = GL_UPPER_LEFT;
     a->point.fade_threshold = 1;
     a->point.atten[0] = 1;
     a->lighting.provoking = GL_LAST_VERTEX_CONVENTION;
@@ -239,6 +240,7 @@ void interp_destroy(interp *ip)
     interp_eval_free(ip);
     interp_nurbs_free(ip);
     interp_dest_free(ip);
+    interp_sprites_free(ip);
     tr_free(ip);
 }
 

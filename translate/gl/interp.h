@@ -162,6 +162,7 @@ typedef struct gl_attribs {
         /* glPointParameter (GL 1.4 3.3): the derived size's clamp, the
          * size below which points fade, the distance attenuation. */
         float size_min, size_max, fade_threshold, atten[3];
+        GLenum sprite_origin; /* GL_POINT_SPRITE_COORD_ORIGIN */
     } point; /* GL_POINT_BIT */
     struct {
         int32_t rect[4]; /* x, y, width, height */
@@ -208,6 +209,8 @@ typedef struct gl_attribs {
         double obj_plane[4][4];   /* GL_OBJECT_PLANE */
         double eye_plane[4][4];   /* GL_EYE_PLANE, times the inverse modelview
                                      current at the glTexGen call */
+        bool coord_replace;       /* GL_POINT_SPRITE's GL_COORD_REPLACE */
+        float lod_bias;           /* GL_TEXTURE_FILTER_CONTROL's GL_TEXTURE_LOD_BIAS */
     } texture; /* GL_TEXTURE_BIT */
     struct {
         int32_t grid_n[2][2];    /* [dimension - 1][u, v]: glMapGrid's partitions */

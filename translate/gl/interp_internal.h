@@ -146,6 +146,8 @@ struct interp {
     bool prim_tex_from1; /* the look's texture is draw_unit[1]'s (tex1 coordinates) */
     bool prim_blend_mapped; /* its vertex colours carry another blend function as transmit */
     bool prim_fx;         /* interp_blend.c maps its colours at glEnd */
+    struct interp_sprite *sprites; /* its textured points (interp_sprite.c) */
+    size_t nsprites, cap_sprites;
     float prim_filter;    /* the look's filter (scene_look.filter) */
     bool prim_color_sum;  /* the secondary colour goes into the vertex colours (interp_fogsec.c) */
     bool prim_fog_vertex; /* the fog of the fog coordinate goes into them, no fog layer */
@@ -698,6 +700,15 @@ void interp_offset_apply(interp *ip, mat4 *to_eye);
 
 /* glClear of the accumulation buffer (interp_accum.c). */
 void interp_accum_buffer_clear(interp *ip);
+
+/* Textured points and point sprites (interp_sprite.c): interp_point_textured
+ * takes point pt of vertex v (true: pt is not to be kept) when the draw is
+ * textured; interp_point_sprites_end adds what it took as textured squares
+ * at the draw's end; interp_lines_textured notes a textured line draw. */
+bool interp_point_textured(interp *ip, scene_point *pt, const scene_vertex *v);
+void interp_point_sprites_end(interp *ip);
+void interp_lines_textured(interp *ip);
+void interp_sprites_free(interp *ip);
 
 /* A scissored glClear of the stencil buffer (interp_stencil.c): only the
  * scissor box takes the clear value. */

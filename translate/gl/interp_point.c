@@ -80,14 +80,13 @@ void interp_pointparameter(interp *ip, const rgl_cmd *cmd)
             interp_bad_enum(ip, "point sprite origin", e);
             return;
         }
-        break; /* point sprites are drawn untextured: nothing to keep */
+        a->point.sprite_origin = e;
+        break;
     }
     default:
         interp_bad_enum(ip, "point parameter", pname);
         return;
     }
-    if (a->point.fade_threshold != 1)
-        interp_note(ip, DIAG_NOTE_POINT_FADE);
 }
 
 void interp_provokingvertex(interp *ip, const rgl_cmd *cmd)

@@ -754,6 +754,7 @@ typedef struct assembly {
     bool first; /* GL_FIRST_VERTEX_CONVENTION (glProvokingVertex) */
     float line_width, point_size;
     bool line_smooth, point_smooth;
+    bool point_sprite; /* GL_POINT_SPRITE: square, its size not rounded (GL 2.1 3.3.1) */
     bool point_params; /* glPointParameter away from its defaults */
     bool list_quads; /* quads split along v1-v3, as Mesa does in a list or when clipping */
     bool stipple;       /* glLineStipple applies (interp_stipple.c) */
@@ -922,8 +923,12 @@ static void add_point(assembly *as, uint32_t i, uint32_t colour_from)
     double size = as->point_size, fade = 1;
     if (as->point_params)
         size = interp_point_size(&as->ip->st.a, p, &fade);
-    if (!as->point_params || !as->point_smooth)
-        size = raster_width((float)size, as->point_smooth);
+    /* GL fades points below the threshold when multisampling (GL 2.1 3.3) */
+    if (size < as->ip->st.a.point.fade_threshold)
+        interp_note(as->ip, DIAG_NOTE_POINT_FADE);
+    bool exact = as->point_smooth || as->point_sprite;
+    if (!as->point_params || !exact)
+        size = raster_width((float)size, exact);
     double h = size * 0.5;
     for (int k = 0; k < 3; k++) {
         pt->p[k] = (float)p[k];
@@ -934,6 +939,8 @@ static void add_point(assembly *as, uint32_t i, uint32_t colour_from)
     memcpy(pt->color, as->s->verts[colour_from].color, sizeof pt->color);
     interp_fogsec_eye(as->ip, p[2], pt->color);
     pt->color[3] *= (float)fade;
+    if (interp_point_textured(as->ip, pt, &as->s->verts[i]))
+        as->s->npoints--; /* a textured square instead (interp_sprite.c) */
 }
 
 /* Whether a vertex of the primitive lies outside the view volume. Mesa
@@ -1425,7 +1432,7 @@ static void check_normals(interp *ip, uint32_t n)
     }
 }
 
-static void end_primitive(interp *ip)
+static void end_primitive_body(interp *ip)
 {
     scene *s = ip->scene;
     const gl_attribs *a = &ip->st.a;
@@ -1454,9 +1461,10 @@ static void end_primitive(interp *ip)
     if (as.stipple && (ip->prim_mode <= GL_LINE_STRIP || a->polygon.mode[0] == GL_LINE ||
                        a->polygon.mode[1] == GL_LINE))
         interp_note(ip, DIAG_NOTE_STIPPLE);
-    as.point_smooth = a->caps[INTERP_CAP_POINT_SMOOTH];
+    as.point_sprite = a->caps[INTERP_CAP_POINT_SPRITE];
+    as.point_smooth = a->caps[INTERP_CAP_POINT_SMOOTH] && !as.point_sprite;
     as.line_width = raster_width(a->line.width, as.line_smooth);
-    as.point_size = raster_width(a->point.size, as.point_smooth);
+    as.point_size = raster_width(a->point.size, as.point_smooth || as.point_sprite);
     as.point_params = interp_point_params_set(a);
     as.list_quads = ip->list_depth > (ip->list_ce ? 1 : 0);
     as.alpha_test = interp_alpha_testing(ip);
@@ -1465,6 +1473,8 @@ static void end_primitive(interp *ip)
             as.check_bad = true;
 
     if (mode <= GL_LINE_STRIP) {
+        if (mode != GL_POINTS)
+            interp_lines_textured(ip);
         if (ip->prim_in_eye)
             vertices_to_eye(ip, n);
         as.check_bad = true;
@@ -1540,6 +1550,14 @@ static void end_primitive(interp *ip)
     interp_relit_done(ip);
     if (look.lit)
         interp_gouraud_check(ip, first_tri);
+    if (a->polygon.mode[0] == GL_LINE || a->polygon.mode[1] == GL_LINE)
+        interp_lines_textured(ip);
+}
+
+static void end_primitive(interp *ip)
+{
+    end_primitive_body(ip);
+    interp_point_sprites_end(ip);
 }
 
 void interp_end(interp *ip, const rgl_cmd *cmd)

@@ -1199,9 +1199,9 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
         o->min_filter = e;
 }
 
-/* glTexEnv's other targets (GL 1.4, 2.0): GL_TEXTURE_FILTER_CONTROL's
- * GL_TEXTURE_LOD_BIAS and GL_POINT_SPRITE's GL_COORD_REPLACE, accepted and
- * noted (no mipmaps, no point sprites drawn). */
+/* glTexEnv's other targets (GL 1.4, 2.0): the active unit's
+ * GL_TEXTURE_FILTER_CONTROL GL_TEXTURE_LOD_BIAS (interp_texture_lod_bias)
+ * and GL_POINT_SPRITE's GL_COORD_REPLACE (interp_sprite.c). */
 static void interp_texenv_other(interp *ip, GLenum target, GLenum pname, const rgl_arg *pa)
 {
     double v = pa->kind == RGL_ARG_SCALAR ? arg_num(pa) : (pa->count ? pa->array[0] : 0);
@@ -1210,8 +1210,11 @@ static void interp_texenv_other(interp *ip, GLenum target, GLenum pname, const r
             interp_bad_enum(ip, "texture filter control pname", pname);
             return;
         }
-        if (v != 0)
-            interp_note(ip, DIAG_NOTE_TEX_LOD_BIAS);
+        if (!isfinite(v)) {
+            interp_bad_value(ip, "texture level-of-detail bias");
+            return;
+        }
+        ip->st.a.texture.lod_bias = (float)(v < -1000 ? -1000 : v > 1000 ? 1000 : v);
         return;
     }
     if (pname != GL_COORD_REPLACE) {
@@ -1223,8 +1226,7 @@ static void interp_texenv_other(interp *ip, GLenum target, GLenum pname, const r
         interp_bad_enum(ip, "GL_COORD_REPLACE value", e);
         return;
     }
-    if (e == GL_TRUE)
-        interp_note(ip, DIAG_NOTE_POINT_SPRITE);
+    ip->st.a.texture.coord_replace = e == GL_TRUE;
 }
 
 void interp_texenv(interp *ip, const rgl_cmd *cmd)
