@@ -340,6 +340,24 @@ static void snap_raster(rgl_buf *b)
     rgl_emit(b, RGL_OP_PolygonOffset, "ff", (double)get_f(GL_POLYGON_OFFSET_FACTOR),
              (double)get_f(GL_POLYGON_OFFSET_UNITS));
     rgl_emit(b, RGL_OP_PointSize, "f", (double)get_f(GL_POINT_SIZE));
+    /* Point parameters (GL 1.4) and sprites (GL 2.0), where the context
+     * has them. */
+    if (rgl_gl_has(1, 4, "GL_ARB_point_parameters")) {
+        GLfloat att[3] = {1, 0, 0};
+        glGetFloatv(GL_POINT_DISTANCE_ATTENUATION, att);
+        rgl_emit(b, RGL_OP_PointParameterf, "ef", GL_POINT_SIZE_MIN, (double)get_f(GL_POINT_SIZE_MIN));
+        rgl_emit(b, RGL_OP_PointParameterf, "ef", GL_POINT_SIZE_MAX, (double)get_f(GL_POINT_SIZE_MAX));
+        rgl_emit(b, RGL_OP_PointParameterf, "ef", GL_POINT_FADE_THRESHOLD_SIZE,
+                 (double)get_f(GL_POINT_FADE_THRESHOLD_SIZE));
+        rgl_emit(b, RGL_OP_PointParameterfv, "eN", GL_POINT_DISTANCE_ATTENUATION, att, 3);
+    }
+    if (rgl_gl_has(2, 0, "GL_ARB_point_sprite")) {
+        if (glIsEnabled(GL_POINT_SPRITE))
+            rgl_emit(b, RGL_OP_Enable, "e", GL_POINT_SPRITE);
+        if (rgl_gl_has(2, 0, "GL_VERSION_2_0")) /* core alone has the origin */
+            rgl_emit(b, RGL_OP_PointParameteri, "ei", GL_POINT_SPRITE_COORD_ORIGIN,
+                     get_i(GL_POINT_SPRITE_COORD_ORIGIN));
+    }
     rgl_emit(b, RGL_OP_LineWidth, "f", (double)get_f(GL_LINE_WIDTH));
     GLint vp[4] = {0};
     glGetIntegerv(GL_VIEWPORT, vp);
