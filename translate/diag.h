@@ -79,7 +79,6 @@
     X(NOTE_SHADOW_HIGHLIGHT, "approximated with shadows: highlights of lights whose specular is not one multiple of their diffuse colour") \
     X(NOTE_POINT_FADE, "not translated: the point fade threshold (GL_POINT_FADE_THRESHOLD_SIZE; GL fades points only when multisampling)") \
     X(NOTE_TEX_MIRROR_CLAMP, "approximated: mirror-clamp texture wraps (GL_MIRROR_CLAMP_EXT and its kin) drawn as the image mirrored once, then clamped to its edge texels") \
-    X(NOTE_TEX_LOD_BIAS, "not translated: texture level-of-detail bias (GL_TEXTURE_LOD_BIAS; mipmap levels are chosen without it)") \
     X(NOTE_TEX_3D, "approximated: 3D textures drawn as the slice (GL_NEAREST) or the blend of two slices (GL_LINEAR) that r picks where r is constant over a primitive; untextured where it varies") \
     X(NOTE_FRONT_BUFFER, "approximated: a single-buffered frame shows the drawing of at most 64 earlier frames since the last colour clear (the front buffer holds all of it)") \
     X(NOTE_POLYGON_OFFSET, "approximated: glPolygonOffset moves an offset polygon one pixel's width along the camera's rays (away from the eye for a positive offset), not by GL's window-depth offset; offset GLU and GLUT shapes are drawn as GL's facets") \

@@ -426,7 +426,7 @@ static void test_mip_runs(void)
     povwriter *w = povwriter_create();
     write_sdl_with(w, NULL);
     CHECK(strstr(sdl, "#declare rgl_mip0l=function(x,y){ln(") != NULL);
-    CHECK(strstr(sdl, "uv_mapping function{(min(") != NULL);
+    CHECK(strstr(sdl, "uv_mapping function{min(") != NULL);
     CHECK_EQ_U(povwriter_image(w, 4) != NULL, 1); /* 16, 8, 4, 2, 1 */
     CHECK(povwriter_image(w, 5) == NULL);
     CHECK(strstr(sdl, "nan") == NULL && strstr(sdl, "inf") == NULL);
@@ -556,6 +556,48 @@ static void test_clamp_border(void)
     }
 }
 
+/* GL_TEXTURE_LOD_BIAS of the object plus the unit's (glTexEnv
+ * GL_TEXTURE_FILTER_CONTROL), clamped to GL_MAX_TEXTURE_LOD_BIAS (16), on
+ * each level of the chain; the writer adds it to lambda before the clamp
+ * to GL_TEXTURE_MIN_LOD (written as level min_lod / (n - 1), not 0). */
+static void test_lod_bias(void)
+{
+    uint8_t a[2 * 2 * 3], b[3];
+    memset(a, 200, sizeof a);
+    memset(b, 50, sizeof b);
+    uint32_t ia = add_bytes(a, sizeof a), ib = add_bytes(b, sizeof b);
+    static const float obj[3] = {1.5f, 20, 0.5f}, unit[3] = {0, 0, -1}, want[3] = {1.5f, 16, -0.5f};
+    for (int c = 0; c < 3; c++) {
+        interp *ip = fresh();
+        seq s;
+        seq_init(&s);
+        CMD(&s, BindTexture, GL_TEXTURE_2D, 1);
+        CMD(&s, Enable, GL_TEXTURE_2D);
+        CMD(&s, TexImage2D, GL_TEXTURE_2D, 0, GL_RGB, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, ia);
+        CMD(&s, TexImage2D, GL_TEXTURE_2D, 1, GL_RGB, 1, 1, 0, GL_RGB, GL_UNSIGNED_BYTE, ib);
+        CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_LINEAR);
+        CMD(&s, TexParameterf, GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, obj[c]);
+        CMD(&s, TexParameterf, GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD, 0.5);
+        CMD(&s, TexEnvf, GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, unit[c]);
+        triangle(&s);
+        run(ip, &s);
+        int32_t t = sc.nmeshes == 1 ? sc.meshes[0].look.texture : -1;
+        CHECK(t >= 0 && sc.textures[t].mip_next >= 0);
+        if (t >= 0) {
+            CHECK_NEAR(sc.textures[t].lod_bias, want[c], 1e-6);
+            if (sc.textures[t].mip_next >= 0)
+                CHECK_NEAR(sc.textures[sc.textures[t].mip_next].lod_bias, want[c], 1e-6);
+        }
+        write_sdl();
+        static const char *const bias[3] = {"+(1.5)))", "+(16)))", "+(-0.5)))"};
+        const char *f = strstr(sdl, "uv_mapping function{min((1),max((0.5),rgl_mip0l(x,y)");
+        CHECK(f && strncmp(f + strlen("uv_mapping function{min((1),max((0.5),rgl_mip0l(x,y)"), bias[c],
+                           strlen(bias[c])) == 0);
+        interp_destroy(ip);
+    }
+    free_res();
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -568,6 +610,7 @@ int main(void)
     test_mip_runs();
     test_cube();
     test_clamp_border();
+    test_lod_bias();
     scene_finish(&sc);
     return CHECK_RESULT("test_tex_env");
 }

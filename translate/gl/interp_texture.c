@@ -42,6 +42,7 @@ typedef struct tex_obj {
     uint32_t levels;      /* bit k: level k defined */
     int32_t base_level, max_level; /* GL_TEXTURE_BASE_LEVEL, GL_TEXTURE_MAX_LEVEL */
     float min_lod, max_lod;        /* GL_TEXTURE_MIN_LOD, GL_TEXTURE_MAX_LOD */
+    float lod_bias;                /* GL_TEXTURE_LOD_BIAS */
     bool generate_mipmap;          /* GL_GENERATE_MIPMAP */
     tex_image *face[6];            /* a cube map's level 0: +X, -X, +Y, -Y, +Z, -Z */
     GLenum wrap_s, wrap_t, min_filter, mag_filter;
@@ -55,6 +56,9 @@ typedef struct tex_obj {
     uint32_t lost;   /* pixels whose damage left the image missing or partly
                         stale (0: none): every frame drawing with it says so */
 } tex_obj;
+
+/* GL_MAX_TEXTURE_LOD_BIAS of Mesa (llvmpipe's PIPE_CAPF_MAX_TEXTURE_LOD_BIAS). */
+#define TEX_MAX_LOD_BIAS 16.0
 
 struct interp_textures {
     tex_obj *objs; /* named objects, unordered */
@@ -1118,9 +1122,11 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
                         "drawn as it is)");
         return;
     case GL_TEXTURE_LOD_BIAS:
-        if (v != 0)
-            interp_note(ip, DIAG_NOTE_TEX_LOD_BIAS);
-        return;
+        if (!isfinite(v)) {
+            interp_bad_value(ip, "texture level-of-detail bias");
+            return;
+        }
+        break;
     case GL_TEXTURE_MAG_FILTER:
         if (e != GL_NEAREST && e != GL_LINEAR) {
             interp_bad_enum(ip, "texture magnification filter", e);
@@ -1183,6 +1189,8 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
         o->min_lod = (float)(v < -1000 ? -1000 : v > 1000 ? 1000 : v);
     } else if (pname == GL_TEXTURE_MAX_LOD) {
         o->max_lod = (float)(v < -1000 ? -1000 : v > 1000 ? 1000 : v);
+    } else if (pname == GL_TEXTURE_LOD_BIAS) {
+        o->lod_bias = (float)(v < -1000 ? -1000 : v > 1000 ? 1000 : v);
     } else if (pname == GL_GENERATE_MIPMAP) {
         o->generate_mipmap = v != 0;
     } else if (pname == GL_DEPTH_TEXTURE_MODE) {
@@ -1521,13 +1529,20 @@ static int32_t cube_for_draw(interp *ip, tex_obj *o, const interp_tex_unit *u, i
  * st holds the sampling they share; ms and mt double each level as the
  * mirror clamp does the base (interp_tex_mirror_fill), so the level of
  * detail the writer computes from the sizes stays GL's. */
-static int32_t mip_chain(interp *ip, tex_obj *o, scene_texture *st, bool ms, bool mt)
+static int32_t mip_chain(interp *ip, tex_obj *o, scene_texture *st, bool ms, bool mt, float unit_bias)
 {
     int b = o->base_level, q = last_level(o, b);
     int32_t next = -1;
     st->mip_filter = o->min_filter;
     st->min_lod = o->min_lod;
     st->max_lod = o->max_lod;
+    /* GL 2.1 3.8.8: the object's bias and the unit's, clamped to
+     * GL_MAX_TEXTURE_LOD_BIAS (Mesa's 16), added to lambda before the
+     * GL_TEXTURE_MIN_LOD .. MAX_LOD clamp. */
+    double bias = (double)o->lod_bias + unit_bias;
+    st->lod_bias = (float)(bias < -TEX_MAX_LOD_BIAS ? -TEX_MAX_LOD_BIAS
+                           : bias > TEX_MAX_LOD_BIAS ? TEX_MAX_LOD_BIAS
+                                                     : bias);
     for (int k = q; k >= b; k--) {
         const tex_image *im = *level_slot(o, k);
         scene_texture lt = *st;
@@ -1706,7 +1721,7 @@ int32_t interp_texture_for_unit(interp *ip, int k)
                          (env == GL_DECAL && b != GL_RGBA && b != GL_ALPHA);
 
     if (mipmap_filter(o->min_filter) && !slice) { /* the levels, each its own scene texture */
-        idx = mip_chain(ip, o, &st, ms, mt);
+        idx = mip_chain(ip, o, &st, ms, mt, u.texture->lod_bias);
         goto out;
     }
     struct tex_cache *tc = &ip->tex->cache[ip->draw_unit[1] == k];

@@ -225,6 +225,7 @@ static bool texture_same(const scene_texture *a, const scene_texture *b)
            a->alpha_af == b->alpha_af && a->alpha_uses_af == b->alpha_uses_af &&
            a->mip_next == b->mip_next && a->mip_filter == b->mip_filter &&
            a->min_lod == b->min_lod && a->max_lod == b->max_lod && a->cube == b->cube &&
+           a->lod_bias == b->lod_bias &&
            memcmp(a->rgba, b->rgba, (size_t)a->width * (size_t)a->height * 4) == 0;
 }
 

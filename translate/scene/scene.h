@@ -265,6 +265,7 @@ typedef struct scene_texture {
     uint32_t mip_filter;
     int32_t mip_next;
     float min_lod, max_lod;
+    float lod_bias; /* added to lambda before the clamp (GL_TEXTURE_LOD_BIAS) */
     /* A cube map (GL_TEXTURE_CUBE_MAP): this is face +X, and mip_next
      * links -X, +Y, -Y, +Z, -Z in turn (mip_filter 0); the coordinates are
      * the vertices' (tex[0], tex[1], tex1[0]) = (s, t, r). */
