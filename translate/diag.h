@@ -90,7 +90,8 @@
     X(NOTE_DEPTH_CLEAR, "approximated: a depth-buffer clear (glClear GL_DEPTH_BUFFER_BIT, scissored or not) between draws that overlap on screen: later draws behind earlier ones stay hidden, where OpenGL draws them over") \
     X(NOTE_ACCUM_CLEAR, "approximated: the accumulation buffer's clear value other than zero (glClearAccum), accumulation clears and operations cut by the scissor box, and passes onto a buffer the frame did not clear: the returned passes are drawn as if accumulated onto zero over the whole window") \
     X(NOTE_POINT_TEXTURE, "not translated: textured smooth points without GL_POINT_SPRITE (drawn untextured discs)") \
-    X(NOTE_TEX_LINES, "not translated: textured lines (drawn untextured)")
+    X(NOTE_TEX_LINES, "not translated: textured lines (drawn untextured)") \
+    X(NOTE_TEX_COMPARE, "not translated: depth-texture comparison (GL_TEXTURE_COMPARE_MODE) where r varies over a primitive or the texture is mipmapped: the depth values drawn instead")
 
 typedef enum diag_kind {
 #define DIAG_ENUM_(name, text) DIAG_##name,

@@ -598,6 +598,43 @@ static void test_lod_bias(void)
     free_res();
 }
 
+/* GL_COMPARE_R_TO_TEXTURE: with r constant over the triangle the texels
+ * are the comparison's results (GL_LEQUAL, r 0.5: depth 0.2 fails, 0.8
+ * passes), no note; with r varying the depths are drawn, noted. */
+static void test_compare(void)
+{
+    static const float depth[2] = {0.2f, 0.8f};
+    uint32_t id = add_bytes(depth, sizeof depth);
+    for (int c = 0; c < 2; c++) {
+        interp *ip = fresh();
+        seq s;
+        seq_init(&s);
+        CMD(&s, BindTexture, GL_TEXTURE_2D, 1);
+        CMD(&s, Enable, GL_TEXTURE_2D);
+        CMD(&s, TexImage2D, GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, 2, 1, 0, GL_DEPTH_COMPONENT, GL_FLOAT, id);
+        CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_R_TO_TEXTURE);
+        CMD(&s, Begin, GL_TRIANGLES);
+        CMD(&s, TexCoord3f, 0, 0, 0.5);
+        CMD(&s, Vertex2f, 0, 0);
+        CMD(&s, TexCoord3f, 1, 0, c ? 0.6 : 0.5);
+        CMD(&s, Vertex2f, 1, 0);
+        CMD(&s, TexCoord3f, 0, 1, 0.5);
+        CMD(&s, Vertex2f, 0, 1);
+        CMD0(&s, End);
+        run(ip, &s);
+        CHECK_EQ_U(count(DIAG_NOTE_TEX_COMPARE), c);
+        int32_t t = sc.nmeshes == 1 ? sc.meshes[0].look.texture : -1;
+        CHECK(t >= 0);
+        if (t >= 0 && c == 0)
+            CHECK(sc.textures[t].rgba[0] == 0 && sc.textures[t].rgba[4] == 255);
+        if (t >= 0 && c == 1) /* the depths: 51, 204 */
+            CHECK(sc.textures[t].rgba[0] == 51 && sc.textures[t].rgba[4] == 204);
+        interp_destroy(ip);
+    }
+    free_res();
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -611,6 +648,7 @@ int main(void)
     test_cube();
     test_clamp_border();
     test_lod_bias();
+    test_compare();
     scene_finish(&sc);
     return CHECK_RESULT("test_tex_env");
 }

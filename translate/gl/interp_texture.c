@@ -51,6 +51,7 @@ typedef struct tex_obj {
                         other (height = rows x depth3); 0 for 1D and 2D */
     float border[4]; /* GL_TEXTURE_BORDER_COLOR */
     GLenum depth_mode; /* GL_DEPTH_TEXTURE_MODE */
+    GLenum compare_mode, compare_func; /* GL_TEXTURE_COMPARE_MODE, _FUNC */
     bool depth;        /* the base level (or level 0) has a depth internal format:
                           every level drawn as depth_mode */
     uint32_t lost;   /* pixels whose damage left the image missing or partly
@@ -97,6 +98,8 @@ static void obj_defaults(tex_obj *o, uint32_t name)
     o->min_lod = -1000;
     o->max_lod = 1000;
     o->depth_mode = GL_LUMINANCE;
+    o->compare_mode = GL_NONE;
+    o->compare_func = GL_LEQUAL;
 }
 
 /* The image of level k, or NULL. */
@@ -1116,11 +1119,13 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
             interp_bad_enum(ip, "texture compare mode", e);
             return;
         }
-        if (e != GL_NONE)
-            interp_diag(ip, DIAG_IGNORED,
-                        "texture compare mode GL_COMPARE_R_TO_TEXTURE not translated (depth "
-                        "drawn as it is)");
-        return;
+        break;
+    case GL_TEXTURE_COMPARE_FUNC:
+        if (e < GL_NEVER || e > GL_ALWAYS) {
+            interp_bad_enum(ip, "texture compare function", e);
+            return;
+        }
+        break;
     case GL_TEXTURE_LOD_BIAS:
         if (!isfinite(v)) {
             interp_bad_value(ip, "texture level-of-detail bias");
@@ -1195,6 +1200,10 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
         o->generate_mipmap = v != 0;
     } else if (pname == GL_DEPTH_TEXTURE_MODE) {
         tex_depth_mode(ip, o, e);
+    } else if (pname == GL_TEXTURE_COMPARE_MODE) {
+        o->compare_mode = e;
+    } else if (pname == GL_TEXTURE_COMPARE_FUNC) {
+        o->compare_func = e;
     } else if (pname == GL_TEXTURE_WRAP_R) {
         o->wrap_r = e;
     } else if (pname == GL_TEXTURE_WRAP_S)
@@ -1595,6 +1604,47 @@ static tex_image *tex3d_slice(interp *ip, const tex_obj *o, int k)
     return img;
 }
 
+/* GL 2.1 3.8.14: with GL_COMPARE_R_TO_TEXTURE a depth texture's texel is
+ * 1 where r (clamped to [0, 1]) passes the compare function against the
+ * depth D and 0 elsewhere, then taken as luminance, intensity or alpha by
+ * GL_DEPTH_TEXTURE_MODE; under GL_LINEAR Mesa filters the four results.
+ * Where r is constant over the primitive that is an image of results,
+ * which POV-Ray's filter samples as GL does; the depth comes from the
+ * 8-bit texels kept. NULL, with a note, where r varies. */
+static tex_image *tex_compared(interp *ip, const tex_obj *o, int k)
+{
+    interp_textures *t = ip->tex;
+    double lo = t->r_min[k], hi = t->r_max[k];
+    if (!(lo <= hi) || hi - lo > 1e-6 || !isfinite(lo)) {
+        interp_note(ip, DIAG_NOTE_TEX_COMPARE);
+        return NULL;
+    }
+    const tex_image *src = o->img;
+    size_t n = (size_t)src->width * (size_t)src->height;
+    if (!interp_budget_texels(ip, n * 4))
+        return NULL;
+    tex_image *img = tr_realloc(NULL, sizeof *img + n * 4);
+    if (!img) {
+        ip->scene->failed = true;
+        return NULL;
+    }
+    img->refs = 1;
+    img->width = src->width;
+    img->height = src->height;
+    double r = lo < 0 ? 0 : lo > 1 ? 1 : lo;
+    bool alpha = o->depth_mode == GL_ALPHA;
+    for (size_t i = 0; i < n; i++) {
+        const uint8_t *s = src->rgba + i * 4;
+        double d = (alpha ? s[3] : s[0]) / 255.0;
+        bool pass = scene_alpha_pass(o->compare_func, (float)r, (float)d);
+        uint8_t v = pass ? 255 : 0, *q = img->rgba + i * 4;
+        q[0] = q[1] = q[2] = alpha ? 255 : v;
+        q[3] = o->depth_mode == GL_LUMINANCE ? 255 : v;
+    }
+    img->hash = interp_tex_image_hash(img);
+    return img;
+}
+
 int32_t interp_texture_for_draw(interp *ip)
 {
     interp_draw_units(ip);
@@ -1623,6 +1673,12 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     tex_image *slice = NULL;
     if (o->depth3 && !(slice = tex3d_slice(ip, o, k)))
         return -1;
+    if (!slice && o->depth && o->compare_mode == GL_COMPARE_R_TO_TEXTURE) {
+        if (mipmap_filter(o->min_filter))
+            interp_note(ip, DIAG_NOTE_TEX_COMPARE); /* level by level: not drawn */
+        else
+            slice = tex_compared(ip, o, k);
+    }
     const tex_image *im = slice ? slice : *level_slot(o, o->base_level); /* complete: not NULL */
     int32_t idx = -1;
     GLenum env = u.texture->env_mode;
@@ -1871,8 +1927,8 @@ void interp_vertex_texcoord3(interp *ip, int unit, const double obj[4], const fl
     out[0] = (float)(r[0] / q);
     out[1] = (float)(r[1] / q);
     out[2] = (float)(r[2] / q);
-    if (u.caps[UCAP(TEXTURE_3D)] && !u.caps[UCAP(TEXTURE_CUBE_MAP)] && ip->tex && unit >= 0 &&
-        unit < INTERP_TEX_UNITS) {
+    /* r over the primitive: a 3D texture's slice, a depth comparison */
+    if (!u.caps[UCAP(TEXTURE_CUBE_MAP)] && ip->tex && unit >= 0 && unit < INTERP_TEX_UNITS) {
         double rq = r[2] / q;
         interp_textures *t = ip->tex;
         t->r_min[unit] = fmin(t->r_min[unit], rq);
