@@ -175,10 +175,42 @@ static void snap_stencil(rgl_buf *b)
         rgl_emit(b, RGL_OP_Enable, "e", GL_STENCIL_TEST);
 }
 
-/* The polygon stipple mask, unless it is GL's (all ones). glGetPolygonStipple
- * packs it as the pack state says and into a bound pack buffer: both are
- * set aside for the read (the program's own reads stay as they were), so
- * the bytes come in the trace's layout (bottom row first, MSB first). */
+/* The pixel transfer of colours (scales, biases, GL_MAP_COLOR, where they
+ * differ from GL's initial state) and every pixel map that is not GL's
+ * initial one (one entry, 0). glGetPixelMap writes into a bound pack
+ * buffer: called with it set aside (snap_pstipple). */
+static void snap_pixel(rgl_buf *b)
+{
+    static const GLenum scale[8] = {GL_RED_SCALE, GL_GREEN_SCALE, GL_BLUE_SCALE, GL_ALPHA_SCALE,
+                                    GL_RED_BIAS, GL_GREEN_BIAS, GL_BLUE_BIAS, GL_ALPHA_BIAS};
+    for (int k = 0; k < 8; k++) {
+        GLfloat v = k < 4 ? 1 : 0;
+        glGetFloatv(scale[k], &v);
+        if (v != (k < 4 ? 1 : 0))
+            rgl_emit(b, RGL_OP_PixelTransferf, "ef", scale[k], (double)v);
+    }
+    if (get_i(GL_MAP_COLOR))
+        rgl_emit(b, RGL_OP_PixelTransferi, "ei", GL_MAP_COLOR, 1);
+    for (GLenum m = GL_PIXEL_MAP_I_TO_I; m <= GL_PIXEL_MAP_A_TO_A; m++) {
+        GLint size = get_i(GL_PIXEL_MAP_I_TO_I_SIZE + (m - GL_PIXEL_MAP_I_TO_I));
+        if (size < 1 || size > 256)
+            continue;
+        GLfloat v[256] = {0};
+        glGetPixelMapfv(m, v);
+        if (size == 1 && v[0] == 0)
+            continue;
+        uint8_t le[256 * 4];
+        for (GLint i = 0; i < size; i++)
+            rgl_put_f(le + i * 4, v[i]);
+        rgl_emit(b, RGL_OP_PixelMapfv, "eiB", m, size, (const void *)le, (size_t)size * 4);
+    }
+}
+
+/* The polygon stipple mask, unless it is GL's (all ones), and the pixel
+ * maps (snap_pixel). glGetPolygonStipple packs it as the pack state says
+ * and into a bound pack buffer: both are set aside for the reads (the
+ * program's own reads stay as they were), so the bytes come in the
+ * trace's layout (bottom row first, MSB first). */
 static void snap_pstipple(const rgl_stream *s, rgl_buf *b)
 {
     static const GLenum pn[5] = {GL_PACK_ROW_LENGTH, GL_PACK_SKIP_ROWS, GL_PACK_SKIP_PIXELS,
@@ -196,6 +228,7 @@ static void snap_pstipple(const rgl_stream *s, rgl_buf *b)
     GLubyte m[128];
     memset(m, 0xff, sizeof m);
     glGetPolygonStipple(m);
+    snap_pixel(b);
     if (s->pack_buffer)
         glBindBuffer(GL_PIXEL_PACK_BUFFER, s->pack_buffer);
     for (int k = 0; k < 5; k++)

@@ -103,6 +103,8 @@ void interp_default_state(gl_state *st)
     a->current.raster_valid = true;
     a->pixel.zoom[0] = a->pixel.zoom[1] = 1;
     set4(a->pixel.scale, 1, 1, 1, 1);
+    for (int k = 0; k < 10; k++)
+        a->pixel.map_size[k] = 1;
     memcpy(a->caps, cap_defaults, sizeof a->caps);
 
     for (int d = 0; d < 2; d++) { /* glMapGrid: 1 partition of [0, 1] */

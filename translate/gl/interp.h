@@ -219,8 +219,11 @@ typedef struct gl_attribs {
     struct {
         float zoom[2];         /* glPixelZoom */
         float scale[4], bias[4]; /* GL_RED_SCALE .. GL_ALPHA_BIAS */
-        uint32_t others;       /* other glPixelTransfer pnames set away from
-                                  their defaults (not translated) */
+        bool map_color;        /* GL_MAP_COLOR */
+        /* glPixelMap: GL_PIXEL_MAP_I_TO_I .. GL_PIXEL_MAP_A_TO_A in order,
+         * each map_size entries (GL 2.1 table 6.18: initially one, 0) */
+        uint16_t map_size[10];
+        float map[10][256];
     } pixel; /* GL_PIXEL_MODE_BIT */
     struct {
         int32_t box[4]; /* x, y, width, height */

@@ -127,20 +127,17 @@ void interp_pixeltransfer(interp *ip, const rgl_cmd *cmd)
             (pname == scales[k] ? a->pixel.scale : a->pixel.bias)[k] = (float)v;
             return;
         }
-    /* Others that change colour pixels: index shift and offset (colour
-     * index pixels only), colour mapping, and the depth scale and bias. */
-    static const GLenum others[] = {GL_MAP_COLOR, GL_MAP_STENCIL, GL_INDEX_SHIFT,
-                                    GL_INDEX_OFFSET, GL_DEPTH_SCALE, GL_DEPTH_BIAS};
-    for (size_t k = 0; k < sizeof others / sizeof others[0]; k++)
-        if (pname == others[k]) {
-            bool def = pname == GL_DEPTH_SCALE ? v == 1 : v == 0;
-            if (def)
-                a->pixel.others &= ~(1u << k);
-            else
-                a->pixel.others |= 1u << k;
-            return;
-        }
-    interp_bad_enum(ip, "glPixelTransfer pname", pname);
+    /* Colour maps (interp_pixmap.c). */
+    if (pname == GL_MAP_COLOR) {
+        a->pixel.map_color = v != 0;
+        return;
+    }
+    /* The stencil map and the depth scale and bias change only stencil and
+     * depth pixels, which are not drawn (noted there); Mesa does not shift
+     * or offset the colour indices it draws in RGBA (interp_pixmap.c). */
+    if (pname != GL_MAP_STENCIL && pname != GL_DEPTH_SCALE && pname != GL_DEPTH_BIAS &&
+        pname != GL_INDEX_SHIFT && pname != GL_INDEX_OFFSET)
+        interp_bad_enum(ip, "glPixelTransfer pname", pname);
 }
 
 /* ---- The frame's image of pixels --------------------------------------------------- */
@@ -312,12 +309,7 @@ void interp_bitmap(interp *ip, const rgl_cmd *cmd)
 static void draw_rect(interp *ip, float *px, int64_t w, int64_t h)
 {
     const gl_attribs *a = &ip->st.a;
-    size_t n = (size_t)w * (size_t)h;
-    for (size_t i = 0; i < n; i++)
-        for (int k = 0; k < 4; k++)
-            px[i * 4 + k] = clamp01(px[i * 4 + k] * a->pixel.scale[k] + a->pixel.bias[k]);
-    if (a->pixel.others)
-        interp_note(ip, DIAG_NOTE_PIXELS_OTHER);
+    interp_pixels_transfer(ip, px, (size_t)w * (size_t)h);
     bool over = pixels_begin(ip);
     uint8_t *ov = overlay(ip);
     if (!ov)
@@ -359,7 +351,8 @@ static void draw_rect(interp *ip, float *px, int64_t w, int64_t h)
 static void draw_pixels(interp *ip, uint32_t id, GLenum format, GLenum type, int64_t w,
                         int64_t h)
 {
-    size_t need = interp_pixel_bytes(format, type, w, h);
+    bool index = format == GL_COLOR_INDEX;
+    size_t need = index ? interp_pixels_index_bytes(type, w, h) : interp_pixel_bytes(format, type, w, h);
     if (!need) {
         interp_note(ip, DIAG_NOTE_PIXELS_OTHER);
         return;
@@ -373,7 +366,10 @@ static void draw_pixels(interp *ip, uint32_t id, GLenum format, GLenum type, int
         ip->scene->failed = true;
         return;
     }
-    interp_pixels_float(px, src, (size_t)w * (size_t)h, format, type);
+    if (index)
+        interp_pixels_index(ip, px, src, (size_t)w * (size_t)h, type);
+    else
+        interp_pixels_float(px, src, (size_t)w * (size_t)h, format, type);
     draw_rect(ip, px, w, h);
     tr_free(px);
 }
