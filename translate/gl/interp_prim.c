@@ -1521,7 +1521,8 @@ static void end_primitive_body(interp *ip)
     as.to_eye = ip->prim_in_eye ? &id : &ip->prim_to_eye;
     as.in_eye = ip->prim_in_eye;
     size_t first_tri = s->ntris;
-    if (look.texture >= 0) /* the split reads relit_over, the colours' peak */
+    /* the split reads relit_over, the colours' peak */
+    if (look.texture >= 0 || (look.lit && interp_relit_wanted(ip) && interp_relit_may_saturate(ip)))
         interp_relit_flush(ip);
     as.relit = interp_relit_split(ip, &look);
     if (as.relit && as.relit != INTERP_RELIT_PROBE && !interp_relit_need_clear(ip, n))
