@@ -924,7 +924,8 @@ void interp_relit_colour(interp *ip, const interp_lit_prep *lp, const interp_rel
                          float c[4], double *peak);
 int interp_relit_split(interp *ip, const scene_look *look);
 /* Whether a lit vertex of the open primitive can come out past white in a
- * channel (a bound from the material, colour material and the lights). */
+ * channel without its highlight (a bound from the material, colour
+ * material and the lights). */
 bool interp_relit_may_saturate(const interp *ip);
 bool interp_relit_need_clear(interp *ip, uint32_t n);
 bool interp_relit_vertices(interp *ip, uint32_t n);

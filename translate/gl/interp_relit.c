@@ -11,9 +11,11 @@
  * emission from a colour array, issue 22). For those faces the
  * primitive's vertices are copied with GL's lit colour (as
  * --vertex-lighting does, interp_gouraud.c) into a second, unlit mesh;
- * the other faces keep POV-Ray's lighting. Whether a primitive can reach
- * white is bounded first from the material and the lights, so that most
- * primitives never have GL's colour made.
+ * the other faces keep POV-Ray's lighting. Untextured, that is done where
+ * the colour without its highlights can pass white (a bound from the
+ * material and the lights, so that most primitives never have GL's colour
+ * made): a highlight that saturates keeps POV-Ray's per-pixel lighting, as
+ * highlights do everywhere (see --vertex-lighting).
  */
 #include "interp_internal.h"
 #include "talloc.h"
@@ -71,10 +73,10 @@ bool interp_relit_may_saturate(const interp *ip)
     bool cm = a->caps[INTERP_CAP_COLOR_MATERIAL], any = ip->vmat.changed;
     bool cm_a = any || (cm && (cmm == GL_AMBIENT || cmm == GL_AMBIENT_AND_DIFFUSE));
     bool cm_d = any || (cm && (cmm == GL_DIFFUSE || cmm == GL_AMBIENT_AND_DIFFUSE));
-    bool cm_s = any || (cm && cmm == GL_SPECULAR), cm_e = any || (cm && cmm == GL_EMISSION);
+    bool cm_e = any || (cm && cmm == GL_EMISSION);
     for (int k = 0; k < 3; k++) {
         double ka = cm_a ? 1 : m->ambient[k], kd = cm_d ? 1 : m->diffuse[k];
-        double ks = cm_s ? 1 : m->specular[k], ke = cm_e ? 1 : m->emission[k];
+        double ke = cm_e ? 1 : m->emission[k];
         double sum = ke + ka * a->lighting.model_ambient[k];
         for (int l = 0; l < INTERP_MAX_LIGHTS; l++) {
             if (!a->caps[INTERP_CAP_LIGHT0 + l])
@@ -86,7 +88,7 @@ bool interp_relit_may_saturate(const interp *ip)
             double att = li->position[3] == 0 ? 1
                          : at[0] > 0 && at[1] >= 0 && at[2] >= 0 ? 1 / (double)at[0]
                                                                  : INFINITY;
-            sum += att * (ka * li->ambient[k] + kd * li->diffuse[k] + ks * li->specular[k]);
+            sum += att * (ka * li->ambient[k] + kd * li->diffuse[k]);
         }
         if (!(sum <= 1 + 0.5 / 255))
             return true;
