@@ -481,6 +481,24 @@ static bool normal_matrix(const mat4 *m, double n[3][3])
     return true;
 }
 
+/* A look's filter (scene_look.filter: what is behind shows as filter x
+ * colour + transmit) as the alpha blending glTF has: what is behind keeps
+ * the mean of its weights, the surface adds its own share (noted where
+ * the material says BLEND). */
+static void filter_as_alpha(const scene_look *look, const float c[4], float out[4])
+{
+    memcpy(out, c, 4 * sizeof *out);
+    if (look->blend != SCENE_BLEND_ALPHA || !(look->filter > 0))
+        return;
+    double f = look->filter < 1 ? look->filter : 1, t = fmax(0, 1 - f - c[3]), keep = 0;
+    for (int k = 0; k < 3; k++)
+        keep += (f * c[k] + t) / 3;
+    double a = fmin(1, fmax(0, 1 - keep));
+    for (int k = 0; k < 3; k++)
+        out[k] = a > 0 ? (float)(c[3] * c[k] / a) : 0;
+    out[3] = (float)a;
+}
+
 /* Appends one vertex to the primitive: position through m (NULL: as is),
  * normal through nm, made unit length (glTF requires it). */
 static void push_vertex(writer *w, const double p[3], const double nrm[3], const float col[4],
@@ -665,7 +683,9 @@ static void mesh_faces(writer *w, const scene_mesh *me, const mat4 *m, double (*
             const scene_vertex *cv = me->look.flat ? pv : v;
             double n[3] = {cv->normal[0], cv->normal[1], cv->normal[2]};
             uint32_t k = (uint32_t)w->nv;
-            push_vertex(w, p, n, cv->color, v->tex, m, nm);
+            float fc[4];
+            filter_as_alpha(&me->look, cv->color, fc);
+            push_vertex(w, p, n, fc, v->tex, m, nm);
             add_index(w, k);
             if (!me->look.flat) {
                 w->stamp[g] = w->gen;
