@@ -201,6 +201,40 @@ static void test_blends(void)
     }
 }
 
+/* A multiplying blend on faces drawn as lines: lines have no filter, so
+ * over the clear colour alone they take GL's product, opaque, and over an
+ * earlier draw they are noted (before, the lines took the filter's colour
+ * with alpha 0 and vanished, silently). */
+static void test_filter_lines(void)
+{
+    for (int c = 0; c < 2; c++) {
+        interp *ip = fresh();
+        seq s;
+        seq_init(&s);
+        view(&s, true);
+        CMD(&s, Color3f, 0.8, 0.2, 0.2);
+        quad(&s, 10, 10, 50, 50);
+        CMD(&s, PolygonMode, GL_FRONT_AND_BACK, GL_LINE);
+        CMD(&s, Enable, GL_BLEND);
+        CMD(&s, BlendFunc, GL_ZERO, GL_SRC_COLOR);
+        CMD(&s, Color3f, 0.9, 0.6, 0.1);
+        if (c == 0)
+            quad(&s, 60, 60, 90, 90);
+        else
+            quad(&s, 20, 20, 60, 60);
+        run(ip, &s);
+        CHECK_EQ_U(count(DIAG_NOTE_BLEND_DEST), c == 1 ? 1 : 0);
+        CHECK(sc.nlines == 4);
+        if (sc.nlines && c == 0) {
+            const float *col = sc.lines[sc.nlines - 1].color[0];
+            CHECK(near(col[0], (230 / 255.0) * (51 / 255.0)) &&
+                  near(col[1], (153 / 255.0) * (102 / 255.0)) &&
+                  near(col[2], (26 / 255.0) * (153 / 255.0)) && col[3] == 1);
+        }
+        interp_destroy(ip);
+    }
+}
+
 /* Blending off, and no logic op: nothing of this path, no note. */
 static void test_off(void)
 {
@@ -225,6 +259,7 @@ int main(void)
     test_self_overlap();
     test_source_ops();
     test_blends();
+    test_filter_lines();
     test_off();
     scene_finish(&sc);
     return CHECK_RESULT("test_blend");

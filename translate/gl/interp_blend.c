@@ -328,7 +328,9 @@ void interp_blend_end(interp *ip, uint32_t n)
     const gl_attribs *a = &ip->st.a;
     scene_vertex *v = s->verts + ip->prim_first;
     bool logic = a->caps[INTERP_CAP_COLOR_LOGIC_OP];
-    bool faces = ip->prim_mode > GL_LINE_STRIP;
+    /* a filter needs a mesh's look: faces filled on both sides */
+    bool faces = ip->prim_mode > GL_LINE_STRIP && a->polygon.mode[0] == GL_FILL &&
+                 a->polygon.mode[1] == GL_FILL;
     if (n == 0)
         return;
 
