@@ -54,14 +54,12 @@ for colours in one vertex; do
             "$r2p" $name.raygl -o $name -q
             t1=$(now)
             awk "BEGIN {print $t1 - $t0}" >>r2p.t
-            (
-                cd $name
-                if [ -n "$timev" ]; then
-                    "$timev" -v povray frame-00000.ini +W16 +H16 -D +Oout.png >pov.log 2>&1
-                else
-                    povray frame-00000.ini +W16 +H16 -D +Oout.png >pov.log 2>&1
-                fi
-            )
+            # From where raygl2pov ran: the .ini's paths are relative to it.
+            if [ -n "$timev" ]; then
+                "$timev" -v povray $name/frame-00000.ini +W16 +H16 -D +O$name/out.png >$name/pov.log 2>&1
+            else
+                povray $name/frame-00000.ini +W16 +H16 -D +O$name/out.png >$name/pov.log 2>&1
+            fi
             sed -n 's/.*Parse Time:.*(\([0-9.]*\) seconds).*/\1/p' $name/pov.log >>parse.t
             sed -n 's/.*Maximum resident set size (kbytes): \([0-9]*\).*/\1/p' $name/pov.log |
                 awk '{print $1 / 1024}' >>peak.t

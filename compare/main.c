@@ -26,7 +26,9 @@
 
 #include "cleanup.h"
 #include "format.h"
+#include "framesel.h"
 #include "imagediff.h"
+#include "mkdirs.h"
 #include "sibling.h"
 
 #ifndef RAYGL_VERSION
@@ -47,8 +49,9 @@ typedef struct cmp_options {
 static void usage(FILE *f)
 {
     fputs("Usage: " PROG " TRACE -o DIR [OPTION]... [-- RAYGL2POV-OPTION...]\n"
-          "Render the frames of TRACE that hold a snapshot (recorded with RAYGL_SNAPSHOTS=1)\n"
-          "with raygl2pov and POV-Ray, and compare each with the image the program showed.\n"
+          "Render the frames of TRACE that hold a snapshot (recorded with `raygl record\n"
+          "--snapshots`, or RAYGL_SNAPSHOTS=1) with raygl2pov and POV-Ray, and compare each\n"
+          "with the image the program showed.\n"
           "\n"
           "  -o, --output DIR        write DIR/pov/ (the scenes, rendered) and, per frame,\n"
           "                          DIR/compare-NNNNN.png: OpenGL | POV-Ray | difference\n"
@@ -158,48 +161,21 @@ static int parse_args(int argc, char **argv, cmp_options *o)
     return 0;
 }
 
-/* Marks the frames of LIST (N, A-B, A-, each optionally :STEP;
- * comma-separated, as raygl2pov takes it) in sel[0..n). Returns 0 or -1
- * for a malformed list. */
+/* Marks the frames of LIST (format/framesel.h: as raygl2pov takes it) in
+ * sel[0..n). Returns 0 or -1 for a malformed list. */
 static int select_frames(const char *list, bool *sel, size_t n)
 {
     const char *s = list;
     if (!*s)
         return -1;
-    for (;;) {
-        char *end;
-        errno = 0;
-        unsigned long a = strtoul(s, &end, 10), b = a;
-        if (errno || end == s || *s == '-' || *s == '+')
+    while (*s) {
+        rgl_frame_range r;
+        if (rgl_framesel_next(&s, &r) != RGL_FRAMESEL_OK)
             return -1;
-        s = end;
-        if (*s == '-') {
-            s++;
-            if (*s == ',' || *s == '\0') {
-                b = n ? n - 1 : 0;
-            } else {
-                b = strtoul(s, &end, 10);
-                if (errno || end == s || *s == '-' || *s == '+' || b < a)
-                    return -1;
-                s = end;
-            }
-        }
-        unsigned long step = 1;
-        if (*s == ':') {
-            s++;
-            step = strtoul(s, &end, 10);
-            if (errno || end == s || *s == '-' || *s == '+' || step == 0)
-                return -1;
-            s = end;
-        }
-        for (unsigned long k = a; k <= b && k < n; k += step)
+        for (uint64_t k = r.first; k < n && k <= r.last; k = r.step < n ? k + r.step : n)
             sel[k] = true;
-        if (*s == '\0')
-            return 0;
-        if (*s != ',')
-            return -1;
-        s++;
     }
+    return 0;
 }
 
 /* Snapshot images that did not decode, with the frames that share them:
@@ -520,8 +496,8 @@ int main(int argc, char **argv)
     }
     if (o.frames) {
         if (select_frames(o.frames, sel, nframes) != 0) {
-            fprintf(stderr, PROG ": --frames %s: expected N, A-B or A-, comma-separated\n",
-                    o.frames);
+            fprintf(stderr, PROG ": --frames %s: expected N, A-B or A-, each optionally with "
+                    ":STEP, comma-separated\n", o.frames);
             rc = 2;
             goto out;
         }
@@ -562,22 +538,25 @@ int main(int argc, char **argv)
     free(bad.v);
     if (nsnap == 0) {
         fprintf(stderr, PROG ": %s: no %sframe holds a usable snapshot (record with "
-                "RAYGL_SNAPSHOTS=1)\n", o.trace, o.frames ? "selected " : "");
+                "`raygl record --snapshots`, or RAYGL_SNAPSHOTS=1 for a program that links "
+                "libraygl)\n", o.trace, o.frames ? "selected " : "");
         rc = 1;
         goto out;
     }
-    bool made_dir = mkdir(o.dir, 0777) == 0;
-    if (!made_dir && errno != EEXIST) {
-        fprintf(stderr, PROG ": %s: %s\n", o.dir, strerror(errno));
+    /* -o NEW/SUB/DIR makes what is missing, as raygl2pov -o does. */
+    size_t made;
+    if (mkdirs(o.dir, &made) != 0) {
+        fprintf(stderr, PROG ": %s: cannot create the output folder: %s\n", o.dir,
+                strerror(errno));
+        mkdirs_undo(o.dir, made);
         rc = 1;
         goto out;
     }
     int r2p_rc = run_raygl2pov(&o, r2p, trace_abs, list);
     if (r2p_rc == 2) {
         /* Its line (above) names the option; nothing was rendered, and the
-         * folder goes when this run made it. */
-        if (made_dir)
-            rmdir(o.dir);
+         * folders go when this run made them. */
+        mkdirs_undo(o.dir, made);
         rc = 2;
         goto out;
     }

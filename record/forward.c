@@ -11,6 +11,7 @@
 
 #include <dlfcn.h>
 #include <pthread.h>
+#include <stdatomic.h>
 #include <stdbool.h>
 #include <string.h>
 
@@ -20,6 +21,7 @@
 
 #include "recorder.h"
 #include "relink.h"
+#include "unrecorded.h"
 
 #if defined(__GNUC__)
 __thread const rgl_fwd_fn *rgl_tls_fwd __attribute__((tls_model("initial-exec")));
@@ -114,6 +116,32 @@ static bool egl_is_current(void)
     return f() != NULL;
 }
 
+/* GLUT's text hooks (gluttext.c): 0 not tried yet, 1 in place, -1 not
+ * possible. Written under relink_mu. */
+static _Atomic int text_hooked;
+
+/* Under relink_mu. */
+static int hook_glut_text(void)
+{
+    void (*glut)(void) = (rgl_fwd_fn)glutBitmapCharacter;
+    void *p;
+    memcpy(&p, &glut, sizeof p);
+    return rgl_relink(p, rgl_glut_text_names, rgl_glut_text_hooks, RGL_GLUT_TEXT_HOOKS);
+}
+
+bool rgl_forward_glut_text(void)
+{
+    int h = text_hooked;
+    if (h == 0) {
+        pthread_mutex_lock(&relink_mu);
+        if (text_hooked == 0)
+            text_hooked = hook_glut_text() == 0 ? 1 : -1;
+        h = text_hooked;
+        pthread_mutex_unlock(&relink_mu);
+    }
+    return h > 0;
+}
+
 /* The gl* calls of GLU, GLUT and the program go where the twins' go
  * (relink.c). */
 static void relink_shapes(const rgl_fwd_fn *t)
@@ -129,6 +157,9 @@ static void relink_shapes(const rgl_fwd_fn *t)
         memcpy(&p, &glut, sizeof p);
         rgl_relink(p, rgl_fwd_names, t, RGL_FWD_COUNT);
         rgl_relink(NULL, rgl_fwd_names, t, RGL_FWD_COUNT);
+        /* The hooks forward through the thread's table themselves. */
+        if (text_hooked > 0)
+            hook_glut_text();
         relinked = t;
     }
     pthread_mutex_unlock(&relink_mu);

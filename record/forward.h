@@ -13,6 +13,8 @@
 #ifndef RGL_FORWARD_H
 #define RGL_FORWARD_H
 
+#include <stdbool.h>
+
 typedef void (*rgl_fwd_fn)(void);
 
 #if defined(__GNUC__)
@@ -27,6 +29,12 @@ extern _Thread_local const rgl_fwd_fn *rgl_tls_fwd;
  * table once per process (dlsym). Returns the table, never NULL; a function
  * found nowhere is a stub that returns 0. Thread-safe. */
 const rgl_fwd_fn *rgl_forward_select(void);
+
+/* Points libglut's GOT slots for the names of rgl_glut_text_names at
+ * rgl_glut_text_hooks (unrecorded.h, gluttext.c), once per process; a
+ * relink for OSMesa keeps them. Returns whether they are in place (false
+ * where relink.c cannot write them). Thread-safe. */
+bool rgl_forward_glut_text(void);
 
 #define RGL_FWD_TABLE() (__builtin_expect(rgl_tls_fwd != 0, 1) ? rgl_tls_fwd : rgl_forward_select())
 #define RGL_FWD_CALL(i, name, ...) ((__typeof__(name) *)RGL_FWD_TABLE()[i])(__VA_ARGS__)

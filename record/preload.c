@@ -10,21 +10,14 @@
  * - Lookups: glXGetProcAddress(ARB), eglGetProcAddress and dlsym on a GL
  *   library's handle return the recording function for the names RayGL
  *   knows, and what they found becomes the real function.
- * - `raygl record`'s side: the status file it reads when the program has
- *   ended, and --exit (ending the program after its last kept frame).
+ * - A program that links libraygl itself: this library stands down.
+ * (`raygl record`'s status file and --exit are the recorder's: session.c.)
  */
 #include <dlfcn.h>
-#include <errno.h>
-#include <fcntl.h>
-#include <limits.h>
 #include <link.h>
-#include <pthread.h>
-#include <signal.h>
 #include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
-#include <unistd.h>
 
 #define RGL_PRELOAD_NAMES
 #include "preload_real.h"
@@ -404,104 +397,18 @@ __asm__(".text\n"
 RGL_EXPORT void *dlsym(void *handle, const char *name) { return rgl_dlsym_hook(handle, name); }
 #endif
 
-/* ---- raygl record: status file and --exit ---------------------------------- */
-
-/* RAYGL_STATUS_FILE: a file `raygl record` made and reads once the program
- * has ended. Each recording process of the run appends a line: "failed"
- * when its trace could not be written or recording stopped early, "exit"
- * when --exit ended it with the trace closed. */
-static char status_path[PATH_MAX];
-
-/* Seconds between --exit's SIGTERM and its SIGKILL (docs/raygl.1). */
-#define RGL_EXIT_GRACE_S 3
-
-static void status_line(const char *line)
-{
-    if (!status_path[0])
-        return;
-    int e = errno;
-    /* No O_CREAT: a process that outlives raygl record finds no file. */
-    int fd = open(status_path, O_WRONLY | O_APPEND | O_CLOEXEC | O_NOCTTY);
-    if (fd >= 0) {
-        ssize_t r = write(fd, line, strlen(line));
-        (void)r;
-        close(fd);
-    }
-    errno = e;
-}
-
-/* The recorder's own report (one line on stderr), and the status line. */
-static void on_failure(const char *message, void *user)
-{
-    (void)user;
-    char line[512];
-    size_t n = strlen(message);
-    if (n > sizeof line - 1)
-        n = sizeof line - 1;
-    memcpy(line, message, n);
-    line[n++] = '\n';
-    int e = errno;
-    ssize_t r = write(STDERR_FILENO, line, n);
-    (void)r;
-    errno = e;
-    status_line("failed\n");
-}
-
-static void *exit_reaper(void *arg)
-{
-    (void)arg;
-    struct timespec t = {RGL_EXIT_GRACE_S, 0};
-    while (nanosleep(&t, &t) != 0 && errno == EINTR)
-        ;
-    kill(getpid(), SIGKILL);
-    return NULL;
-}
-
-/* --exit: the thread's stream has no frame left to keep. The trace is
- * closed (every kept frame and the index on disk) before the program is
- * asked to end, so however it ends, the trace is whole. A program that
- * catches SIGTERM gets the grace period to finish. */
-static void end_program(void)
-{
-    static atomic_bool started;
-    if (atomic_exchange(&started, true))
-        return;
-    int e = errno;
-    rayglRecordClose();
-    status_line("exit\n");
-    /* The reaper blocks every signal, so none of the program's lands on it. */
-    sigset_t all, old;
-    sigfillset(&all);
-    pthread_sigmask(SIG_SETMASK, &all, &old);
-    pthread_attr_t attr;
-    if (pthread_attr_init(&attr) == 0) {
-        pthread_t t;
-        pthread_attr_setdetachstate(&attr, PTHREAD_CREATE_DETACHED);
-        pthread_create(&t, &attr, exit_reaper, NULL);
-        pthread_attr_destroy(&attr);
-    }
-    pthread_sigmask(SIG_SETMASK, &old, NULL);
-    kill(getpid(), SIGTERM);
-    errno = e;
-}
-
-/* RAYGL_STATUS_FILE and RAYGL_EXIT=1, set by raygl record. */
-static void record_front_end_init(void)
-{
-    const char *v = getenv("RAYGL_STATUS_FILE");
-    if (v && *v && strlen(v) < sizeof status_path) {
-        strcpy(status_path, v);
-        rayglRecordSetErrorHandler(on_failure, NULL);
-    }
-    v = getenv("RAYGL_EXIT");
-    if (v && strcmp(v, "1") == 0)
-        rgl_selection_over_hook = end_program;
-}
-
 /* ---- Start ----------------------------------------------------------------- */
 
 /* The real functions are found once here; those of a GL library the
- * program opens later, at their first use or lookup. */
+ * program opens later, at their first use or lookup.
+ *
+ * A program that links libraygl (built with the drop-in header) records
+ * with it: this library then stands down, and only forwards, or both
+ * would record the program (two traces, the one raygl record names cut
+ * short when the other's RAYGL_EXIT ends the program). libraygl reads the
+ * same variables (RAYGL_TRACE, the frame selection, RAYGL_EXIT,
+ * RAYGL_STATUS_FILE). This library exports no raygl* name, so the lookup
+ * finds libraygl's only. */
 __attribute__((constructor)) static void preload_init(void)
 {
     void *(*ds)(void *, const char *) = real_dlsym();
@@ -510,6 +417,8 @@ __attribute__((constructor)) static void preload_init(void)
         if (f && (i >= sizeof ours / sizeof ours[0] || f != ours[i]))
             rgl_real_fns[i] = f;
     }
-    record_front_end_init();
-    rgl_recorder_init();
+    if (ds && ds(RTLD_DEFAULT, "rayglRecordOpen"))
+        rgl_recorder_stand_down();
+    else
+        rgl_recorder_init();
 }

@@ -85,14 +85,18 @@ static struct recorder {
     _Atomic int status;        /* enum raygl_record_status */
     _Atomic uint32_t gen;      /* bumps at every open: streams reset */
     _Atomic bool report_pending;
-    bool env_disabled;         /* RAYGL_RECORD=0 */
+    bool env_disabled;         /* RAYGL_RECORD=0, or stood down */
+    bool stood_down;           /* rgl_recorder_stand_down() */
     _Atomic bool snapshots;    /* RAYGL_SNAPSHOTS=1, rayglRecordSnapshots() */
     bool forked_child;
     bool trace_excl;           /* RAYGL_TRACE_EXCL=1: never overwrite (raygl record) */
 
-    /* Which ended frames are kept: RAYGL_FRAMES=A-B, RAYGL_EVERY=N,
+    /* Which ended frames are kept: RAYGL_FRAMES=LIST (format/framesel.h;
+     * none: every frame), RAYGL_EVERY=N (folded into each item's step),
      * RAYGL_SIGNAL=SIG (only the first frame ending after each signal). */
-    uint32_t sel_first, sel_last, sel_every;
+    rgl_frame_range sel[RGL_SEL_MAX];
+    size_t nsel;
+    uint64_t sel_end; /* the last frame it can keep; UINT64_MAX: no end */
     int sel_signal;
     _Atomic bool sel_armed;
 
@@ -123,8 +127,9 @@ static struct recorder {
     .file_mu = PTHREAD_MUTEX_INITIALIZER,
     .fd = -1,
     .dfd = -1,
-    .sel_last = UINT32_MAX,
-    .sel_every = 1,
+    .sel = {{0, UINT64_MAX, 1}},
+    .nsel = 1,
+    .sel_end = UINT64_MAX,
 };
 
 static void stream_destroy_key(void *arg);
@@ -231,6 +236,7 @@ static void fail_report(void)
     void (*h)(const char *, void *) = g.handler_set ? g.handler : default_handler;
     if (h)
         h(g.error, g.handler_user);
+    rgl_session_failed();
 }
 
 void rgl_fail(int err, const char *what)
@@ -878,12 +884,22 @@ static void stream_free(rgl_stream *s)
     rgl_free(s);
 }
 
+/* Whether RAYGL_FRAMES (with RAYGL_EVERY) selects the program's
+ * `shown`th frame (from 0). */
+static bool in_selection(uint64_t shown)
+{
+    for (size_t i = 0; i < g.nsel; i++)
+        if (rgl_framesel_has(&g.sel[i], shown))
+            return true;
+    return false;
+}
+
 /* Whether the frame the program ended as its `shown`th (from 0) is kept.
  * A dropped frame costs nothing in the file: every frame starts with the
  * resolved state, and lists and textures are resources. */
 static bool frame_selected(uint32_t shown)
 {
-    if (shown < g.sel_first || shown > g.sel_last || (shown - g.sel_first) % g.sel_every)
+    if (!in_selection(shown))
         return false;
     if (g.sel_signal)
         return atomic_exchange(&g.sel_armed, false);
@@ -897,18 +913,12 @@ static bool selection_over(const rgl_stream *s, bool kept)
 {
     if (g.sel_signal && kept)
         return true;
-    if (g.sel_last == UINT32_MAX)
-        return false;
-    uint32_t last = g.sel_first + (g.sel_last - g.sel_first) / g.sel_every * g.sel_every;
-    return s->shown > last;
+    return g.sel_end != UINT64_MAX && s->shown > g.sel_end;
 }
-
-void (*rgl_selection_over_hook)(void);
 
 bool rgl_frame_wanted(const rgl_stream *s)
 {
-    uint32_t n = s->shown;
-    if (n < g.sel_first || n > g.sel_last || (n - g.sel_first) % g.sel_every)
+    if (!in_selection(s->shown))
         return false;
     return !g.sel_signal || atomic_load(&g.sel_armed);
 }
@@ -1070,7 +1080,7 @@ static void on_select_signal(int sig)
     atomic_store(&g.sel_armed, true);
 }
 
-/* A frame number from the environment: digits only, below UINT32_MAX. */
+/* A count from the environment: digits only, below UINT32_MAX. */
 static bool parse_u32(const char *v, char **end, uint32_t *out)
 {
     if (*v < '0' || *v > '9')
@@ -1083,27 +1093,36 @@ static bool parse_u32(const char *v, char **end, uint32_t *out)
     return true;
 }
 
-/* RAYGL_FRAMES=A-B (or A-, or A), RAYGL_EVERY=N, RAYGL_SIGNAL=number.
- * `raygl record` checks the values and reports bad ones; here a malformed
- * value is ignored (the recorder never stops the program). */
+/* RAYGL_FRAMES=LIST (as raygl2pov --frames takes it), RAYGL_EVERY=N,
+ * RAYGL_SIGNAL=number. `raygl record` checks the values and reports bad
+ * ones; here a malformed value is ignored (the recorder never stops the
+ * program). */
 static void select_from_env(void)
 {
     const char *v = getenv("RAYGL_FRAMES");
-    char *end;
-    uint32_t a, b;
-    if (v && parse_u32(v, &end, &a)) {
-        if (*end == '\0') {
-            g.sel_first = g.sel_last = a;
-        } else if (*end == '-' && end[1] == '\0') {
-            g.sel_first = a;
-        } else if (*end == '-' && parse_u32(end + 1, &end, &b) && *end == '\0' && b >= a) {
-            g.sel_first = a;
-            g.sel_last = b;
-        }
+    rgl_frame_range sel[RGL_SEL_MAX];
+    size_t n = 0;
+    bool ok = v && *v;
+    while (ok && *v) {
+        ok = n < RGL_SEL_MAX && rgl_framesel_next(&v, &sel[n]) == RGL_FRAMESEL_OK;
+        n++;
     }
+    if (ok) {
+        memcpy(g.sel, sel, n * sizeof sel[0]);
+        g.nsel = n;
+    }
+    char *end;
+    uint32_t a;
     v = getenv("RAYGL_EVERY");
     if (v && parse_u32(v, &end, &a) && *end == '\0' && a > 0)
-        g.sel_every = a;
+        for (size_t i = 0; i < g.nsel; i++) /* one in a of each item's frames */
+            g.sel[i].step = g.sel[i].step > UINT64_MAX / a ? UINT64_MAX : g.sel[i].step * a;
+    g.sel_end = 0;
+    for (size_t i = 0; i < g.nsel && g.sel_end != UINT64_MAX; i++) {
+        uint64_t last = rgl_framesel_last(&g.sel[i]);
+        if (last > g.sel_end)
+            g.sel_end = last;
+    }
     v = getenv("RAYGL_SIGNAL");
     if (v && parse_u32(v, &end, &a) && *end == '\0' && a > 0 && a < (uint32_t)NSIG) {
         struct sigaction sa;
@@ -1125,13 +1144,18 @@ static void init_once(void)
     if (v && strcmp(v, "1") == 0)
         atomic_store(&g.snapshots, true);
     v = getenv("RAYGL_RECORD");
-    if (v && strcmp(v, "0") == 0) {
+    if ((v && strcmp(v, "0") == 0) || g.stood_down) {
         g.env_disabled = true;
         atomic_store(&g.status, RAYGL_DISABLED);
     }
     v = getenv("RAYGL_TRACE_EXCL");
     g.trace_excl = v && strcmp(v, "1") == 0;
-    select_from_env();
+    /* A recorder that stood down leaves the signal and raygl record's
+     * status file to the one that records. */
+    if (!g.stood_down) {
+        select_from_env();
+        rgl_session_init();
+    }
     pthread_key_create(&g.key, stream_destroy_key);
     pthread_atfork(fork_prepare, fork_parent, fork_child);
     atexit(at_exit);
@@ -1140,6 +1164,12 @@ static void init_once(void)
 static void ensure_init(void) { pthread_once(&g.once, init_once); }
 
 void rgl_recorder_init(void) { ensure_init(); }
+
+void rgl_recorder_stand_down(void)
+{
+    g.stood_down = true;
+    ensure_init();
+}
 
 /* Opens the trace named by RAYGL_TRACE (or the default name) at the first
  * recorded call. */
@@ -1232,9 +1262,8 @@ void rgl_frame_end(void)
     bool over = selection_over(s, frame_write(s, true));
     pthread_mutex_unlock(s->lock);
     fail_report();
-    void (*hook)(void) = rgl_selection_over_hook;
-    if (over && hook)
-        hook();
+    if (over)
+        rgl_session_selection_over();
 }
 
 void rgl_list_compile_begin(rgl_stream *s, uint32_t list, uint32_t mode)

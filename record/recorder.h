@@ -17,6 +17,7 @@
 #include <stdint.h>
 
 #include "format.h"
+#include "framesel.h"
 #include "wire.h"
 
 #if defined(__GNUC__)
@@ -168,6 +169,12 @@ extern _Thread_local int rgl_tls_passthrough;
  * RAYGL_SIGNAL handler) ahead of the first recorded call. */
 void rgl_recorder_init(void);
 
+/* Initialises the recorder never to record: libraygl-preload.so in a
+ * program that links libraygl, which records (preload.c). It then reads
+ * neither the frame selection nor raygl record's variables, and sets no
+ * signal handler. Before any other recorder call. */
+void rgl_recorder_stand_down(void);
+
 /* Slow path of rgl_reserve: initialises the recorder and the thread's stream
  * on first use, starts a frame (state snapshot), grows the buffer. Returns
  * the stream, with n bytes free at its pos, or NULL when not recording
@@ -220,11 +227,20 @@ void rgl_resolve_matrices(void);
  * writes nothing. */
 void rgl_frame_end(void);
 
-/* Called by rgl_frame_end(), with no recorder lock held, after each frame
- * end that leaves the thread's stream no later frame to keep (RAYGL_FRAMES's
- * last step ended; with RAYGL_SIGNAL, a frame was kept). NULL in libraygl;
- * libraygl-preload.so sets it for `raygl record --exit` (preload.c). */
-extern void (*rgl_selection_over_hook)(void);
+/* The most items RAYGL_FRAMES may list (raygl record checks it). */
+#define RGL_SEL_MAX 64
+
+/* raygl record's side of the recorder (session.c). rgl_session_init reads
+ * RAYGL_STATUS_FILE and RAYGL_EXIT (from the recorder's initialisation);
+ * rgl_session_failed appends "failed" to the status file (after the
+ * failure message); rgl_session_selection_over is called by
+ * rgl_frame_end(), with no recorder lock held, after each frame end that
+ * leaves the thread's stream no later frame to keep (the last frame of
+ * RAYGL_FRAMES ended; with RAYGL_SIGNAL, a frame was kept): with
+ * RAYGL_EXIT=1 it closes the trace and ends the program. */
+void rgl_session_init(void);
+void rgl_session_failed(void);
+void rgl_session_selection_over(void);
 
 /* Whether the frame s is recording will be kept when it ends (RAYGL_FRAMES,
  * RAYGL_EVERY, RAYGL_SIGNAL; `raygl record`); a dropped frame's image is

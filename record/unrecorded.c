@@ -2,6 +2,7 @@
  * unrecorded calls (unrecorded.h). */
 #include "unrecorded.h"
 
+#include <GL/gl.h>
 #include <stdint.h>
 
 void rgl_unrecorded_slow(unsigned id)
@@ -11,6 +12,21 @@ void rgl_unrecorded_slow(unsigned id)
     rgl_stream *s = rgl_stream_current();
     if (s && s->unrecorded)
         s->unrecorded[id]++;
+}
+
+void rgl_unrecorded_count_state(unsigned id, unsigned pname, int value)
+{
+    rgl_stream *s = rgl_tls_stream;
+    if (rgl_tls_passthrough == 0 && !(s && s->in_begin)) {
+        /* GL without a current context leaves the sentinel (as
+         * rgl_live_context asks). */
+        const GLint sentinel = (GLint)0x7eadbeef;
+        GLint cur = sentinel;
+        glGetIntegerv((GLenum)pname, &cur);
+        if (cur != sentinel && cur == value)
+            return;
+    }
+    rgl_unrecorded_count(id);
 }
 
 void rgl_unrecorded_flush(rgl_stream *s, rgl_buf *b)

@@ -36,6 +36,27 @@ static inline void rgl_unrecorded_count(unsigned id)
         rgl_unrecorded_slow(id);
 }
 
+/* Counts one call of unrecorded entry point `id`, whose one argument
+ * `value` sets the GL state `pname` (format/unrecorded.def's STATE column),
+ * unless GL's current value already equals it: such a call changes
+ * nothing. GL is asked only with a live context, outside glBegin/glEnd and
+ * the passthrough; otherwise the call is counted. */
+void rgl_unrecorded_count_state(unsigned id, unsigned pname, int value);
+
+/* GLUT's text (gluttext.c): the twins of glutBitmapCharacter,
+ * glutBitmapString, glutStrokeCharacter and glutStrokeString call the real
+ * function between these, so that freeglut's own gl* calls are recorded.
+ * rgl_glut_text_enter returns 1 when they will be (libraygl, libglut's
+ * slots hooked), else 0 (the twin counts the call then); pass its result
+ * to rgl_glut_text_leave. Calling thread only. */
+int rgl_glut_text_enter(void);
+void rgl_glut_text_leave(int entered);
+
+/* The gl* names freeglut draws text with, and their hooks (libraygl). */
+#define RGL_GLUT_TEXT_HOOKS 8
+extern const char *const rgl_glut_text_names[RGL_GLUT_TEXT_HOOKS];
+extern void (*const rgl_glut_text_hooks[RGL_GLUT_TEXT_HOOKS])(void);
+
 /* Appends one @NotRecorded command per entry point counted since the last
  * flush to b (NULL: through the stream's write window, onto its open
  * frame), and zeroes those counts. Calling thread's stream only. Stops at

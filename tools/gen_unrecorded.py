@@ -27,8 +27,8 @@ build needs nothing new. The C prototypes come from gl.xml and the headers
 verbatim, and the compiler checks every definition against the system
 headers' declarations.
 
-Usage: gen_unrecorded.py MODE COMMANDS_DEF GL_XML GL_H GLEXT_H GLU_H
-       FREEGLUT_HEADER...   (freeglut_std.h, freeglut_ext.h, freeglut_ucall.h;
+Usage: gen_unrecorded.py MODE COMMANDS_DEF UNRECORDED_DEF GL_XML GL_H GLEXT_H
+       GLU_H FREEGLUT_HEADER...   (freeglut_std.h, freeglut_ext.h, freeglut_ucall.h;
        output on stdout)
 """
 import re
@@ -54,17 +54,34 @@ QUERIES = {
 QUERY_PREFIXES = ("glGet", "glIs", "gluGet", "glutGet")
 
 
-# Seen through by libraygl-preload.so: not interposed (no ldscript line,
-# and its lookups hand out the real function), so that the gl* calls they
-# make reach the recorder as the program's (freeglut draws bitmap text
-# with glBitmap, a recorded row: docs/design.md "What is not recorded").
-# Their twins still count them for the drop-in header, where freeglut's
-# glBitmap calls go to libGL unrecorded.
-SEEN_THROUGH = {"glutBitmapCharacter", "glutBitmapString"}
+# GLUT's text, seen through by the preload (format/unrecorded.def marks it
+# UNREC_SEEN): its libraygl twins (the drop-in header) raise the flag under
+# which freeglut's own gl* calls for the text (glBitmap for bitmap text,
+# line strips for stroke text) reach the raygl* twins (record/gluttext.c),
+# and count the call only where that cannot be done.
+GLUT_TEXT = {"glutBitmapCharacter", "glutBitmapString", "glutStrokeCharacter",
+             "glutStrokeString"}
 
 
 def is_query(name):
     return name in QUERIES or name.startswith(QUERY_PREFIXES)
+
+
+def classification(unrecorded_def):
+    """format/unrecorded.def's rows: {name: (effect, state)} in file order,
+    and the effects marked UNREC_SEEN (seen through by the preload library:
+    not interposed, so that the gl* calls freeglut or GLU make for them
+    reach the recorder as the program's)."""
+    with open(unrecorded_def, encoding="utf-8") as f:
+        text = re.sub(r"/\*.*?\*/", " ", f.read(), flags=re.S)
+    seen = set()
+    for m in re.finditer(r"^UNREC_EFFECT\(\s*(\w+)\s*,[^,]*,\s*(\w+)\s*,", text, re.M):
+        if m.group(2) == "UNREC_SEEN":
+            seen.add(m.group(1))
+    rows = []
+    for m in re.finditer(r"^UNREC\(\s*(\w+)\s*,\s*(\w+)\s*,\s*(\w+)\s*\)", text, re.M):
+        rows.append((m.group(1), m.group(2), m.group(3)))
+    return rows, seen
 
 
 def recorded_names(commands_def):
@@ -86,6 +103,7 @@ class Entry:
         self.params = params  # [(declaration text, name)]
         self.ext_only = False  # declared by glext.h only, not gl.h
         self.seen_through = False  # not interposed by the preload library
+        self.state = None  # the GL state its one argument sets (unrecorded.def)
 
 
 def declared(header_texts, name):
@@ -177,23 +195,49 @@ def header_entries(path, api, prefix):
     return out
 
 
+def fail(msg):
+    raise SystemExit("gen_unrecorded.py: " + msg)
+
+
 def entries(argv):
-    commands_def, gl_xml, gl_h, glext_h, glu_h = argv[:5]
+    commands_def, unrecorded_def, gl_xml, gl_h, glext_h, glu_h = argv[:6]
     texts = []
     for p in (gl_h, glext_h):
         with open(p, encoding="utf-8", errors="replace") as f:
             texts.append(f.read())
     recorded = recorded_names(commands_def)
     all_entries = gl_entries(gl_xml, texts) + header_entries(glu_h, "GLAPI", "glu")
-    for h in argv[5:]:
+    for h in argv[6:]:
         all_entries += header_entries(h, "FGAPI", "glut")
-    seen, out = set(), []
+    rows, seen_effects = classification(unrecorded_def)
+    where = "format/unrecorded.def"
+    names = [r[0] for r in rows]
+    for a, b in zip(names, names[1:]):
+        if a.encode() >= b.encode():
+            fail("%s: %s before %s: rows out of strcmp order, or a duplicate" % (where, a, b))
+    row = {r[0]: r for r in rows}
+    stale = sorted(n for n in row if n in recorded or is_query(n))
+    if stale:
+        fail("%s: %s recorded or a query now: drop the row%s" %
+             (where, ", ".join(stale), "s" if len(stale) > 1 else ""))
+    seen, out, missing = set(), [], []
     for e in all_entries:
         if e.name in seen or e.name in recorded or is_query(e.name):
             continue
         seen.add(e.name)
-        e.seen_through = e.name in SEEN_THROUGH
+        r = row.get(e.name)
+        if r is None:
+            missing.append(e.name)
+            continue
+        e.seen_through = r[1] in seen_effects
+        if r[2] != "0":
+            if len(e.params) != 1 or not e.params[0][0].startswith("GLenum") or e.ret != "void":
+                fail("%s: %s: a STATE column needs one GLenum argument" % (where, e.name))
+            e.state = r[2]
         out.append(e)
+    if missing:
+        fail("%s: no row for %s (say what %s can change in the picture)" %
+             (where, ", ".join(sorted(missing)), "they" if len(missing) > 1 else "it"))
     # Ids are this order: the trace stores names, so ids may change freely.
     out.sort(key=lambda e: e.name)
     return out
@@ -239,9 +283,21 @@ def out_twins(es):
         print()
         print("RGL_EXPORT %s" % proto(e, twin_name(e.name)))
         print("{")
-        print("    rgl_unrecorded_count(%d);" % i)
-        ret = "" if e.ret == "void" else "return "
-        print("    %s%s(%s);" % (ret, e.name, call_args(e)))
+        if e.state:
+            print("    rgl_unrecorded_count_state(%d, %s, (GLint)%s);" % (i, e.state, e.params[0][1]))
+            ret = "" if e.ret == "void" else "return "
+            print("    %s%s(%s);" % (ret, e.name, call_args(e)))
+        elif e.name in GLUT_TEXT:
+            assert e.ret == "void" and e.seen_through, e.name
+            print("    int seen = rgl_glut_text_enter();")
+            print("    if (!seen)")
+            print("        rgl_unrecorded_count(%d);" % i)
+            print("    %s(%s);" % (e.name, call_args(e)))
+            print("    rgl_glut_text_leave(seen);")
+        else:
+            print("    rgl_unrecorded_count(%d);" % i)
+            ret = "" if e.ret == "void" else "return "
+            print("    %s%s(%s);" % (ret, e.name, call_args(e)))
         print("}")
         print("RGL_SAME_TYPE(%s, %s);" % (e.name, twin_name(e.name)))
     print()
@@ -358,9 +414,9 @@ def out_glnames(es):
 def main(argv):
     modes = {"twins": out_twins, "header": out_header, "ldscript": out_ldscript,
              "dropin": out_dropin, "stub": out_stub, "glnames": out_glnames}
-    if len(argv) < 8 or argv[1] not in modes:
+    if len(argv) < 9 or argv[1] not in modes:
         sys.stderr.write("usage: gen_unrecorded.py twins|header|ldscript|dropin|stub|glnames COMMANDS_DEF "
-                         "GL_XML GL_H GLEXT_H GLU_H FREEGLUT_HEADER...\n")
+                         "UNRECORDED_DEF GL_XML GL_H GLEXT_H GLU_H FREEGLUT_HEADER...\n")
         return 2
     try:
         es = entries(argv[2:])

@@ -3,8 +3,9 @@
 # machine too: installs the packages it needs (tools/deps.sh), then runs
 # `meson test` in a normal build (build/) and an AddressSanitizer +
 # UndefinedBehaviorSanitizer build (build-asan/), each configured with
-# this script's options whatever an earlier `meson setup` chose (the quick
-# start's build/ has no -Dwerror), then the Debian packages' test
+# this script's options whatever an earlier `meson setup` chose (one
+# without -Dwerror, say; the quick start builds in build-quickstart/, which
+# this never touches), then the Debian packages' test
 # (tools/test-deb.sh: in CI, or with RAYGL_TEST_DEB=1; it installs and
 # purges packages). Prints `N passed, N failed` last and exits non-zero
 # on any failure.

@@ -170,6 +170,10 @@ static void stop_children(void)
 /* The stop signal once the waiter has it, else 0. */
 static atomic_int stopping;
 
+static void (*_Atomic on_stop)(int sig);
+
+void cleanup_on_stop(void (*fn)(int sig)) { atomic_store(&on_stop, fn); }
+
 /* The stop itself, with the lock held for good: nothing registered is made
  * from now on. */
 _Noreturn static void stop(int sig)
@@ -181,6 +185,9 @@ _Noreturn static void stop(int sig)
     for (size_t i = nentries; i-- > 0;)
         if (entries[i].kind == KIND_DIR)
             rmdir(entries[i].path);
+    void (*fn)(int) = atomic_load(&on_stop);
+    if (fn)
+        fn(sig);
     /* End by the signal, as the shell expects of Ctrl-C. */
     signal(sig, SIG_DFL);
     sigset_t one;

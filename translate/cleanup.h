@@ -46,6 +46,12 @@ long cleanup_tool(pid_t pid);
  * waited for); -1 is ignored. Thread-safe. */
 void cleanup_drop(long id);
 
+/* What the stop says once it has stopped the children and removed the
+ * files, just before the process ends by the signal: fn(sig) runs on the
+ * waiting thread with the registry's lock held (fn must not register or
+ * drop anything). NULL: nothing. The last one set counts. */
+void cleanup_on_stop(void (*fn)(int sig));
+
 /* A child's start: the stop signals unblocked and at their defaults, so
  * Ctrl-C reaches it as if started from the shell. For posix_spawn (the
  * attributes' mask and defaults are set), and for a forked child before

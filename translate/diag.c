@@ -11,9 +11,12 @@ static const char *const kind_names[DIAG_COUNT] = {
 #undef DIAG_NAME_
 };
 
-/* Every note fits whole after the longest prefix and ": ". */
-#define DIAG_FITS_(name, text) \
-    _Static_assert(sizeof(text) + DIAG_PREFIX + 2 <= DIAG_TEXT, "DIAG_TEXT too short for " #name);
+/* Every note fits whole after the longest prefix and ": ", held notes with
+ * the mark, the longest reason and ")". */
+#define DIAG_FITS_(name, text)                                                                   \
+    _Static_assert(sizeof(text) + DIAG_PREFIX + 2 + sizeof DIAG_HELD_MARK + DIAG_WHY + 1 <=       \
+                       DIAG_TEXT,                                                                \
+                   "DIAG_TEXT too short for " #name);
 DIAG_KINDS(DIAG_FITS_)
 #undef DIAG_FITS_
 
@@ -51,6 +54,19 @@ void diag_add(diag_log *log, diag_kind kind, const char *prefix, const char *fmt
     e->kept++;
 }
 
+void diag_add_held(diag_log *log, diag_kind kind, const char *prefix, const char *why)
+{
+    if (!log || !diag_is_note(kind))
+        return;
+    diag_entry *e = &log->e[kind];
+    uint32_t m = e->kept;
+    diag_add(log, kind, prefix, "%s" DIAG_HELD_MARK "%.*s)", kind_names[kind], DIAG_WHY - 1,
+             why ? why : "");
+    e->held++;
+    if (e->kept > m)
+        e->held_kept |= 1u << m;
+}
+
 void diag_drop(diag_log *log, diag_kind kind)
 {
     if (!log || (unsigned)kind >= DIAG_COUNT)
@@ -66,8 +82,12 @@ void diag_merge(diag_log *dst, const diag_log *src)
         const diag_entry *s = &src->e[k];
         d->count += s->count;
         d->dropped += s->dropped;
-        for (uint32_t i = 0; i < s->kept && d->kept < DIAG_KEEP; i++)
+        d->held += s->held;
+        for (uint32_t i = 0; i < s->kept && d->kept < DIAG_KEEP; i++) {
+            if (diag_is_held(s, i))
+                d->held_kept |= 1u << d->kept;
             memcpy(d->text[d->kept++], s->text[i], DIAG_TEXT);
+        }
     }
 }
 

@@ -5,6 +5,11 @@
  * so a trace with a million bad calls costs a million increments, not a
  * million lines. Workers keep one log per frame; the CLI merges the logs in
  * frame order, so the output does not depend on -j.
+ *
+ * A note is said where its approximation can change a pixel of the frame;
+ * where it cannot (the draws it concerns do not overlap, say), it is held:
+ * kept and counted apart, marked, and printed only with --verbose (nothing
+ * said in vain, docs/mapping.md "Notes").
  */
 #ifndef RGL_DIAG_H
 #define RGL_DIAG_H
@@ -13,12 +18,14 @@
 #include <stdint.h>
 
 #define DIAG_KEEP 3   /* messages kept per kind and log */
-/* Longest message kept, with its NUL: every note whole after a prefix
- * (diag.c checks it at compile time). A longer message, which only a
- * hostile trace's text can make, is not kept cut: it is left out whole and
- * counted in `dropped`. */
-#define DIAG_TEXT 512
+/* Longest message kept, with its NUL: every note whole after a prefix, held
+ * notes with their reason (diag.c checks it at compile time). A longer
+ * message, which only a hostile trace's text can make, is not kept cut: it
+ * is left out whole and counted in `dropped`. */
+#define DIAG_TEXT 768
 #define DIAG_PREFIX 192 /* "frame N, label, cmd N (glName) @0xN", with its NUL */
+#define DIAG_WHY 160    /* longest reason a held note gives, with its NUL */
+#define DIAG_HELD_MARK " (cannot change a pixel of this frame: "
 
 /* Kinds. The GL_* ones are calls GL rejects (and the interpreter skips);
  * the NOTE_* ones are said once per run: state that is not translated (yet)
@@ -45,13 +52,13 @@
     X(NOTE_LISTS, "not translated yet: display lists (calls skipped)") \
     X(NOTE_ARRAYS, "not translated yet: vertex arrays (draws skipped)") \
     X(NOTE_QUADRICS, "not translated yet: GLU quadrics (skipped)") \
-    X(NOTE_STIPPLE, "approximated: stippled lines: the dashes are cut along the line in window space, so a dash's end may lie a pixel from where OpenGL's fragments end it") \
+    X(NOTE_STIPPLE, "approximated: stippled outlines of polygons (glPolygonMode GL_LINE): the pattern restarts at each polygon, where OpenGL restarts it at each triangle it cuts the polygon into") \
     X(NOTE_SCISSOR, "not translated: scissor test of geometry (drawn whole)") \
     X(NOTE_SCISSOR_CLEAR, "approximated: a scissored clear does not erase what was drawn before it inside its box") \
     X(NOTE_CLIP_PLANE, "not translated: user clip planes") \
     X(NOTE_STENCIL, "approximated: stencil buffer contents the scene does not follow (values other than one written over the cleared buffer by filled triangles; glStencilOp fail and zfail operations): drawn as if the test passed") \
     X(NOTE_COLOR_MASK, "not translated: colour mask and logic op") \
-    X(NOTE_DEPTH, "approximated: depth test off or not GL_LESS (draws in one plane show in draw order, others nearest first; where parts of one strip or fan overlap in one plane, either may show)") \
+    X(NOTE_DEPTH, "approximated: draws without a depth test, with depth writes off (glDepthMask) or with a depth function other than GL_LESS or GL_LEQUAL overlap others on screen: the nearer shows where OpenGL shows the later or tests otherwise (draws in one plane show in draw order; where parts of one strip or fan overlap in one plane, either may show)") \
     X(NOTE_PROJECTION, "approximated: lit, fogged or depth-tested textured geometry drawn with another projection or viewport than the frame's camera is lit, fogged and textured as seen from that camera") \
     X(NOTE_CAMERA, "approximated: projection matrix is not a camera POV-Ray can express (default camera used)") \
     X(NOTE_PROJECTIVE_MODELVIEW, "approximated: projective modelview applied to the vertices") \
@@ -92,7 +99,8 @@
     X(NOTE_POINT_TEXTURE, "not translated: textured smooth points without GL_POINT_SPRITE (drawn untextured discs)") \
     X(NOTE_TEX_LINES, "not translated: textured lines (drawn untextured)") \
     X(NOTE_PIXELS_MAP_COLOR, "approximated: glPixelTransfer scales, biases and colour maps (GL_MAP_COLOR) of pixel rectangles are applied once, as GL says; Mesa applies them twice in some programs") \
-    X(NOTE_TEX_COMPARE, "not translated: depth-texture comparison (GL_TEXTURE_COMPARE_MODE) where r varies over a primitive or the texture is mipmapped: the depth values drawn instead")
+    X(NOTE_TEX_COMPARE, "not translated: depth-texture comparison (GL_TEXTURE_COMPARE_MODE) where r varies over a primitive or the texture is mipmapped: the depth values drawn instead") \
+    X(NOTE_LIT_OUTLINE, "approximated: lit faces outlined (glPolygonMode GL_LINE or GL_POINT) under two-sided lighting take their material's colour unlit, where OpenGL draws them in their vertices' lit colours")
 
 typedef enum diag_kind {
 #define DIAG_ENUM_(name, text) DIAG_##name,
@@ -104,9 +112,11 @@ typedef enum diag_kind {
 #define DIAG_FIRST_NOTE DIAG_NOTE_LIGHTING
 
 typedef struct diag_entry {
-    uint64_t count;
+    uint64_t count;   /* held notes included */
     uint64_t dropped; /* counted, but too long to keep whole */
+    uint64_t held;    /* notes that cannot change a pixel of their frame */
     uint32_t kept;
+    uint32_t held_kept; /* bit m: text[m] is a held note */
     char text[DIAG_KEEP][DIAG_TEXT];
 } diag_entry;
 
@@ -132,6 +142,17 @@ bool diag_is_note(diag_kind kind);
 __attribute__((format(printf, 4, 5)))
 #endif
 void diag_add(diag_log *log, diag_kind kind, const char *prefix, const char *fmt, ...);
+
+/* Counts one held note of `kind` (a NOTE_* kind whose approximation
+ * cannot change a pixel of its frame) and keeps "prefix: text (cannot
+ * change a pixel of this frame: why)" as diag_add keeps its message. */
+void diag_add_held(diag_log *log, diag_kind kind, const char *prefix, const char *why);
+
+/* Whether kept message m of e is a held note. */
+static inline bool diag_is_held(const diag_entry *e, uint32_t m)
+{
+    return m < DIAG_KEEP && (e->held_kept >> m & 1u);
+}
 
 /* Counts one diagnostic of `kind` whose message did not fit whole. */
 void diag_drop(diag_log *log, diag_kind kind);

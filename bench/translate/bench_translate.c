@@ -371,7 +371,7 @@ static size_t write_frame_sdl(size_t tris, const char *dir, const char *name, bo
     snprintf(path, sizeof path, "%s/%s", dir, name);
     FILE *f = fopen(path, "wb");
     if (!f || fwrite(ob.buf, 1, ob.len, f) != ob.len || fclose(f) != 0 ||
-        translator_write_images(t, dir) != 0) {
+        translator_write_images(t, dir, path, sizeof path) != 0) {
         perror(path);
         ntris = 0;
     }

@@ -31,12 +31,18 @@
  *   --ignore-term       ignore SIGTERM (raygl record --exit then kills)
  *   --unrecorded        each frame also makes calls RayGL passes through
  *                       unrecorded (glIndexi, glIndexMask,
- *                       glBlendColor found with
+ *                       glSampleCoverage found with
  *                       glXGetProcAddressARB) and queries (glGetError,
  *                       glGetIntegerv, glIsEnabled); with --api glut
  *                       also bitmap text after the triangle
  *                       (glutBitmapCharacter, glutBitmapString: their
  *                       glBitmap calls are recorded)
+ *   --stroke            with --api glut, stroke text after the triangle
+ *                       (glutStrokeCharacter, glutStrokeString: their line
+ *                       strips are recorded)
+ *
+ * Built twice: as it is, for raygl record, and with -include raygl/gl.h
+ * (capture_prog_dropin), the drop-in header's build of the same program.
  */
 #include <EGL/egl.h>
 #include <GL/freeglut.h>
@@ -66,9 +72,10 @@ typedef struct gl_fns {
 
 static struct {
     const char *api, *lookup, *hang;
-    int single, frames, threads, teapot, exec_child, fork_child, delay_ms, unrecorded, nurbs;
+    int single, frames, threads, teapot, exec_child, fork_child, delay_ms, unrecorded, nurbs,
+        stroke;
     const char *self, *done;
-} opt = {"glx", "direct", NULL, 0, 3, 1, 0, 0, 0, 0, 0, 0, NULL, NULL};
+} opt = {"glx", "direct", NULL, 0, 3, 1, 0, 0, 0, 0, 0, 0, 0, NULL, NULL};
 
 static gl_fns gl;
 
@@ -131,11 +138,10 @@ static void unrecorded_calls(void)
 {
     glIndexi(0);
     glIndexMask(~0u);
-    void (*blend_color)(GLfloat, GLfloat, GLfloat, GLfloat) =
-        (void (*)(GLfloat, GLfloat, GLfloat, GLfloat))glXGetProcAddressARB(
-            (const GLubyte *)"glBlendColor");
-    if (blend_color)
-        blend_color(0, 0, 0, 0);
+    void (*sample_coverage)(GLfloat, GLboolean) =
+        (void (*)(GLfloat, GLboolean))glXGetProcAddressARB((const GLubyte *)"glSampleCoverage");
+    if (sample_coverage)
+        sample_coverage(1, GL_FALSE);
     GLint v[4];
     glGetIntegerv(GL_VIEWPORT, v);
     (void)glIsEnabled(GL_LIGHTING);
@@ -152,6 +158,21 @@ static void bitmap_text(void)
     glRasterPos2f(-0.9f, -0.9f);
     glutBitmapCharacter(GLUT_BITMAP_8_BY_13, 'R');
     glutBitmapString(GLUT_BITMAP_8_BY_13, (const unsigned char *)"GB");
+}
+
+/* Stroke text: freeglut draws each character as line strips, then moves
+ * on with glTranslatef. */
+static void stroke_text(void)
+{
+    if (strcmp(opt.api, "glut") != 0)
+        return;
+    glColor3f(1, 1, 1);
+    glPushMatrix();
+    glTranslatef(-0.9f, 0.5f, 0);
+    glScalef(0.002f, 0.002f, 1);
+    glutStrokeCharacter(GLUT_STROKE_ROMAN, 'R');
+    glutStrokeString(GLUT_STROKE_MONO_ROMAN, (const unsigned char *)"G\nB");
+    glPopMatrix();
 }
 
 static void GLAPIENTRY tess_begin(GLenum mode) { glBegin(mode); }
@@ -214,6 +235,8 @@ static void draw(int frame, int thread)
     gl.End();
     if (opt.unrecorded)
         bitmap_text();
+    if (opt.stroke)
+        stroke_text();
 }
 
 /* The extra frame left unfinished for --hang. */
@@ -383,6 +406,7 @@ static void glut_display(void)
     }
     draw(glut_frame, 0);
     glutSwapBuffers();
+    after_frame(glut_frame);
     glut_frame++;
     glutPostRedisplay();
 }
@@ -427,6 +451,8 @@ int main(int argc, char **argv)
             opt.single = 1;
         else if (strcmp(a, "--unrecorded") == 0)
             opt.unrecorded = 1;
+        else if (strcmp(a, "--stroke") == 0)
+            opt.stroke = 1;
         else if (strcmp(a, "--teapot") == 0)
             opt.teapot = 1;
         else if (strcmp(a, "--nurbs") == 0)

@@ -13,8 +13,13 @@
 #   glut-solid               3 glutSolidTeapot, none of the GL calls
 #                            freeglut makes to draw them
 #   unrecorded               calls passed through unrecorded: counted per
-#                            frame (@NotRecorded), reported by raygl2pov;
-#                            queries not counted
+#                            frame (@NotRecorded), reported by raygl2pov
+#                            where they can change the picture (--verbose:
+#                            all, marked); queries not counted
+#   quiet                    a plain GLUT program with stroke text: its
+#                            window-system calls counted, freeglut's strokes
+#                            recorded; raygl2pov prints nothing, and the
+#                            frame (without the text) is exact (POVRAY)
 #   nurbs                    3 GLU NURBS surfaces: recorded as the GLU calls,
 #                            none of the GL calls GLU draws them with;
 #                            translated as meshes
@@ -38,6 +43,17 @@
 #   status                   exit 74 when the trace fails; else the program's
 #   signals                  TERM to raygl reaches the program; INT keeps its
 #                            default action; stdin reaches the program
+#   frames                   raygl record --frames takes raygl2pov's grammar
+#                            (lists, :STEP) and keeps the frames raygl2pov
+#                            --frames selects
+# Cases on capture_prog_dropin (the drop-in header's build; its path after
+# OUTDIR):
+#   dropin-text              GLUT bitmap and stroke text recorded by the
+#                            linked libraygl as the preload records it
+#   dropin-record            raygl record of it: one trace, the named one,
+#                            complete and closed (the preload stands down)
+#   dropin-exit              RAYGL_FRAMES/RAYGL_EXIT and RAYGL_SIGNAL for a
+#                            linked program run without raygl record
 # Cases through POV-Ray and raygl-compare, with floors (tests/capture/meson.build):
 #   glxgears FLOORS...       glxgears (GLX, display lists, lighting)
 #   hack NAME FLOORS...      an xscreensaver hack (EGL)
@@ -45,6 +61,7 @@ set -u
 [ $# -ge 8 ] || { echo "usage: $0 CASE RAYGL PRELOAD PROG RAYGL2POV COMPARE POVRAY OUTDIR" >&2; exit 2; }
 case=$1 raygl=$2 preload=$3 prog=$4 r2p=$5 cmp=$6 povray=$7 out=$8
 shift 8
+here=$(cd "$(dirname "$0")" && pwd) || exit 1
 absolute() {
     case $1 in
     /*) printf '%s\n' "$1" ;;
@@ -54,6 +71,7 @@ absolute() {
 }
 raygl=$(absolute "$raygl") preload=$(absolute "$preload") prog=$(absolute "$prog")
 r2p=$(absolute "$r2p") cmp=$(absolute "$cmp") povray=$(absolute "$povray")
+case $case in dropin-*) din=$(absolute "${1:-}") ;; esac
 fail() { echo "capture test $case: FAIL: $*"; exit 1; }
 skip() { echo "capture test $case: SKIP: $*"; exit 77; }
 
@@ -78,6 +96,21 @@ fi
 record() { env ${san:+LD_PRELOAD=$san} sh "$raygl" record "$@"; }
 
 dump() { "$r2p" "$1" --dump 2>&1; }
+
+# compare_figures NAME LOG: with RAYGL_FIGURES set (meson sets it to
+# tests/image/figures.txt), the lowest within and silhouette of the frames
+# raygl-compare measured in LOG held to the file's line for NAME.
+compare_figures() {
+    [ -n "${RAYGL_FIGURES:-}" ] || return 0
+    set -- "$1" $(awk '/^frame [0-9]+: [0-9]+x[0-9]+ within / {
+        t = $5; sub(/\/255$/, "", t); w = $6; sub(/,$/, "", w); w += 0; s = $11 + 0
+        if (n++ == 0 || w < mw) mw = w
+        if (n == 1 || s < ms) ms = s
+    } END { if (n) printf "%s %.5f %.5f\n", t, mw, ms }' "$2")
+    [ $# -eq 4 ] || fail "no figures in $2"
+    "$here/../image/check-figures.sh" "$RAYGL_FIGURES" "$@" ||
+        fail "the figures do not hold to $RAYGL_FIGURES (above)"
+}
 count() { # TRACE PATTERN: lines of the dump matching it
     dump "$1" | grep -c -- "$2"
 }
@@ -164,7 +197,13 @@ unrecorded)
     # program's (three characters a frame), the GLUT calls not counted.
     expect t.raygl 'glBitmap(width=8, height=1[34],' 9
     expect t.raygl 'glutBitmap' 0
-    expect t.raygl '@NotRecorded(name="glBlendColor", count=1)' 3
+    # Stroke text: its line strips recorded, the GLUT calls not counted
+    # (they were, though their drawing is in the trace).
+    record -o st.raygl -- "$prog" --api glut --stroke --frames 1 >prog.log 2>&1 ||
+        { cat prog.log; fail "the program failed (stroke text)"; }
+    [ "$(count st.raygl 'glBegin(mode=GL_LINE_STRIP)')" -ge 6 ] || fail "stroke text: no line strips recorded"
+    expect st.raygl 'glutStroke' 0
+    expect t.raygl '@NotRecorded(name="glSampleCoverage", count=1)' 3
     expect t.raygl '@NotRecorded(name="glutInit", count=1)' 1
     expect t.raygl 'glGetError\|glGetIntegerv\|glIsEnabled' 0
     translate t.raygl 3
@@ -173,12 +212,17 @@ unrecorded)
     [ "$(ls t-pov/textures | grep -c '^rgl-tex-.*\.png$')" -ge 1 ] || fail "no image of the bitmap text written"
     [ "$(grep -l 'no_shadow no_reflection no_radiosity' t-pov/frame-*.pov | wc -l)" -eq 3 ] ||
         fail "the bitmap text is not in every scene"
+    # None of them can change these frames: colour-index state, the blend
+    # colour with no draw blending by it, the window system. --verbose says
+    # each once, marked.
+    grep -q 'not recorded' "$log" && { cat "$log"; fail "raygl2pov reports calls that cannot change the picture"; }
+    "$r2p" t.raygl -o t-pov -v >v.log 2>&1 || { cat v.log; fail "raygl2pov -v failed"; }
     for want in "glIndexi: 3 calls not recorded, from frame 0" \
-        "glBlendColor: 3 calls not recorded, from frame 0" \
+        "glSampleCoverage: 3 calls not recorded, from frame 0" \
         "glutInit: 1 call not recorded, from frame 0"; do
-        grep -q "t.raygl: $want\$" "$log" || { cat "$log"; fail "raygl2pov does not say '$want'"; }
+        grep -q "t.raygl: $want (cannot change the picture: " v.log || { cat v.log; fail "raygl2pov -v does not say '$want'"; }
     done
-    [ "$(grep -c 'glIndexi:' "$log")" -eq 1 ] || fail "glIndexi reported more than once"
+    [ "$(grep -c 'glIndexi:' v.log)" -eq 1 ] || fail "glIndexi reported more than once"
     # With snapshots: the counts come before @Snapshot, each frame's last
     # command; the recorder's own glReadBuffer and glPixelTransfer calls
     # are not the program's.
@@ -191,6 +235,34 @@ unrecorded)
     dump s.raygl | awk '/^frame / { if (n++ && last !~ /@Snapshot/) bad = 1 }
         /^  [0-9]/ { last = $0 } END { exit bad || last !~ /@Snapshot/ }' ||
         fail "@Snapshot is not each frame's last command"
+    ;;
+quiet)
+    record -o q.raygl -- "$prog" --api glut --stroke >prog.log 2>&1 || { cat prog.log; fail "the program failed"; }
+    expect q.raygl '^frame ' 3
+    expect q.raygl 'glBegin(mode=GL_TRIANGLES)' 3
+    # freeglut's strokes are the program's calls (glutStrokeString is let
+    # through uninterposed, uncounted); the window system's calls counted.
+    [ "$(count q.raygl 'glBegin(mode=GL_LINE_STRIP)')" -ge 15 ] || fail "the stroke text is not recorded"
+    expect q.raygl '@NotRecorded(name="glutStroke' 0
+    expect q.raygl '@NotRecorded(name="glutInit", count=1)' 1
+    "$r2p" q.raygl -o q-pov >q.log 2>&1 || { cat q.log; fail "raygl2pov failed"; }
+    [ ! -s q.log ] || { cat q.log; fail "raygl2pov printed messages for a frame where nothing can differ from what it says"; }
+    "$r2p" q.raygl -o q-pov -v >v.log 2>&1 || { cat v.log; fail "raygl2pov -v failed"; }
+    grep -q "q.raygl: glutInit: 1 call not recorded, from frame 0 (cannot change the picture: " v.log ||
+        { cat v.log; fail "raygl2pov -v does not list glutInit"; }
+    # The frame itself (the text aside: its lines are the lines' own
+    # approximation) through raygl compare, with the unlit floors: exact,
+    # and raygl2pov says nothing of it.
+    if [ -x "$povray" ] || command -v "$povray" >/dev/null 2>&1; then
+        record --snapshots -o e.raygl -- "$prog" --api glut >prog.log 2>&1 || { cat prog.log; fail "the program failed (snapshots)"; }
+        "$r2p" e.raygl -o e-pov >e.log 2>&1 || { cat e.log; fail "raygl2pov failed (snapshots)"; }
+        [ ! -s e.log ] || { cat e.log; fail "raygl2pov printed messages for an exact frame"; }
+        sh "$raygl" compare e.raygl -o cmp --raygl2pov "$r2p" --povray "$povray" --tol 2 --min-match 0.99 \
+            --min-silhouette 0.99 >cmp.log 2>&1
+        rc=$?
+        cat cmp.log
+        [ $rc -eq 0 ] || fail "raygl compare: the frames are not exact (exit $rc)"
+    fi
     ;;
 nurbs)
     record -o t.raygl -- "$prog" --api glx --nurbs >prog.log 2>&1 || { cat prog.log; fail "the program failed"; }
@@ -298,7 +370,20 @@ usage)
     code 2 sh "$raygl" record --signal NOPE -- true && line 'record: --signal NOPE' signal
     code 2 sh "$raygl" record --signal KILL -- true && line 'record: --signal KILL' sigkill
     code 2 sh "$raygl" record -o && line 'record: -o needs' '-o'
-    code 1 sh "$raygl" record -- /nonexistent/prog && line 'record: /nonexistent/prog: program not found' missing
+    # Not found 127, not executable 126, as env, timeout and xargs say.
+    code 127 sh "$raygl" record -- /nonexistent/prog && line 'record: /nonexistent/prog: program not found' missing
+    code 127 sh "$raygl" record -- no-such-program-anywhere && line 'record: no-such-program-anywhere: program not found' 'missing on PATH'
+    printf '#!/bin/sh\n' >noexec && chmod 644 noexec
+    code 126 sh "$raygl" record -- ./noexec && line 'record: ./noexec: not executable' 'not executable'
+    mkdir -p pathdir && cp noexec pathdir/noexec-on-path
+    code 126 env PATH="$PWD/pathdir:$PATH" sh "$raygl" record -- noexec-on-path &&
+        line "record: $PWD/pathdir/noexec-on-path: not executable" 'not executable on PATH'
+    code 126 sh "$raygl" record -- /tmp && line 'record: /tmp: is a folder' 'a folder as program'
+    for want in 127 126; do # what env says of the same
+        case $want in 127) p=/nonexistent/prog ;; 126) p=./noexec ;; esac
+        env "$p" >/dev/null 2>&1
+        [ $? -eq $want ] || fail "env $p does not exit $want here: the test's premise"
+    done
     mkdir d
     code 1 sh "$raygl" record -o d -- true && line 'record: d is a folder' folder
     code 1 env RAYGL_PRELOAD_LIB=/nonexistent.so sh "$raygl" record -- true &&
@@ -496,6 +581,7 @@ glxgears)
     cat cmp.log
     [ $rc -eq 0 ] || fail "raygl-compare exited with $rc"
     [ "$(grep -c '^frame [0-9]*: 300x300 within' cmp.log)" -eq 3 ] || fail "not 3 frames compared"
+    compare_figures capture-glxgears cmp.log
     ;;
 hack)
     name=$1
@@ -511,6 +597,118 @@ hack)
     rc=$?
     cat cmp.log
     [ $rc -eq 0 ] || fail "raygl-compare exited with $rc"
+    compare_figures "capture-hack-$name" cmp.log
+    ;;
+frames)
+    # Each LIST: raygl record and raygl2pov --frames both take it or both
+    # refuse it (exit 2) ...
+    "$prog" --api glx --frames 1 >/dev/null 2>&1
+    record -q -o all.raygl -- "$prog" --api glx --frames 12 >prog.log 2>&1 || { cat prog.log; fail "full run"; }
+    for l in 3 0-2 5- 1,4 1,4, 0-11:3 2-:4 1,3-5,9- 0-3:2,8 007 3-3 \
+        '' , ,3 3,,4 x 3-1 1-5:0 1: :2 1-2-3 -3 3:2:1 '1 2' 1.5 +3 3- -- 1-x 99999999999999999999; do
+        sh "$raygl" record -q --frames "$l" -o none.raygl -- true >rec.log 2>&1
+        a=$?
+        "$r2p" all.raygl --dump --frames "$l" >r2p.log 2>&1
+        b=$?
+        [ $a -eq 2 ] || a=0
+        [ $b -eq 2 ] || b=0
+        [ $a -eq $b ] || { cat rec.log r2p.log; fail "--frames '$l': raygl record says $a, raygl2pov $b"; }
+    done
+    # ... and the frames kept are those raygl2pov selects (frame k's first
+    # vertex is at x = -0.8 + 0.1 k); --every N is :N on each item.
+    xs() { "$r2p" "$@" --dump | sed -n 's/.*glVertex2f(x=\(-*[0-9.e-]*\), y=-0.8).*/\1/p' | tr '\n' ' '; }
+    for sel in '1,4' '0-11:3' '2-:4' '1,3-5,9-' '0-3:2,8' '0-5 --every 2' '1,6-9 --every 3' '--every 5'; do
+        case $sel in
+        --every*) l='' e=${sel#--every } ;;
+        *' --every '*) l=${sel%% *} e=${sel##* } ;;
+        *) l=$sel e='' ;;
+        esac
+        set -- ${l:+--frames "$l"} ${e:+--every "$e"}
+        record -q -o sel.raygl "$@" -- "$prog" --api glx --frames 12 >prog.log 2>&1 || { cat prog.log; fail "--frames $sel"; }
+        if [ -n "$e" ]; then
+            want=$(xs all.raygl --frames "$(echo "${l:-0-}" | sed "s/\(,\|\$\)/:$e\1/g; s/:$e:$e/:$e/g")")
+        else
+            want=$(xs all.raygl --frames "$l")
+        fi
+        got=$(xs sel.raygl)
+        [ -n "$want" ] && [ "$got" = "$want" ] || fail "--frames $sel kept x = $got, raygl2pov selects $want"
+    done
+    # --exit ends after the last frame of the list.
+    record -q -o e.raygl --frames 1,3-4 --exit -- "$prog" --api glx --frames 1000 --delay-ms 10 --done finished \
+        >prog.log 2>&1 || { cat prog.log; fail "--frames 1,3-4 --exit"; }
+    [ ! -e finished ] || fail "--frames 1,3-4 --exit did not end the program"
+    triangles e.raygl 3
+    closed e.raygl
+    sh "$raygl" record --frames 1,3- --exit -- true >rec.log 2>&1
+    [ $? -eq 2 ] && grep -q 'record: --exit needs a last frame' rec.log || { cat rec.log; fail "--frames 1,3- --exit"; }
+    ;;
+dropin-text | dropin-record | dropin-exit)
+    [ -x "$din" ] || fail "no drop-in build $din"
+    # The drop-in build's frames, recorded by the libraygl it links.
+    linked() { env ${san:+LD_PRELOAD=$san} RAYGL_TRACE="$@"; }
+    case $case in
+    dropin-text)
+        # The same program with bitmap and stroke text, recorded through
+        # the preload and through the drop-in header: the same commands
+        # (their calls not recorded aside; the preload also sees the
+        # glViewport of freeglut's default reshape).
+        args='--api glut --unrecorded --stroke'
+        record -q -o pre.raygl -- "$prog" $args >prog.log 2>&1 || { cat prog.log; fail "the program (preload)"; }
+        linked din.raygl "$din" $args >prog.log 2>&1 || { cat prog.log; fail "the drop-in build"; }
+        for t in pre din; do
+            dump $t.raygl | sed -n 's/^  [0-9][0-9]* @0x[0-9a-f]* //p' |
+                grep -v '^@NotRecorded\|^glViewport' >$t.cmds
+        done
+        expect din.raygl 'glBitmap(width=8, height=1[34],' 9
+        [ "$(count din.raygl 'glBegin(mode=GL_LINE_STRIP)')" -ge 18 ] || fail "drop-in: no stroke text"
+        cmp -s pre.cmds din.cmds || { diff pre.cmds din.cmds | head -20; fail "the drop-in build records other commands"; }
+        expect din.raygl 'glutBitmap\|glutStroke' 0
+        translate din.raygl 3
+        [ "$(ls din-pov/textures | grep -c '^rgl-tex-.*\.png$')" -ge 1 ] || fail "no image of the bitmap text written"
+        ;;
+    dropin-record)
+        # One recorder: the named trace, every frame, closed; no second
+        # trace beside it.
+        record -o t.raygl -- "$din" --api glut --frames 5 >prog.log 2>&1 || { cat prog.log; fail "raygl record of the drop-in build"; }
+        triangles t.raygl 5
+        closed t.raygl
+        [ "$(ls | grep -c '\.raygl$')" -eq 1 ] || fail "more than one trace: $(ls | grep '\.raygl$' | tr '\n' ' ')"
+        # --exit ends it after the last kept frame, the trace whole.
+        record -o e.raygl --frames 1-3 --exit -- "$din" --api glut --frames 1000 --done finished >prog.log 2>&1 ||
+            { cat prog.log; fail "--frames 1-3 --exit: exit $?"; }
+        [ ! -e finished ] || fail "--exit did not end the drop-in build"
+        triangles e.raygl 3
+        closed e.raygl
+        [ "$(ls | grep -c '\.raygl$')" -eq 2 ] || fail "more traces than named: $(ls | grep '\.raygl$' | tr '\n' ' ')"
+        # A trace that cannot be written: 74, from the linked recorder.
+        mkdir gone
+        record -o gone/t.raygl -- sh -c 'rmdir gone && "$0" --api glut' "$din" >prog.log 2>&1
+        rc=$?
+        [ $rc -eq 74 ] || { cat prog.log; fail "a trace the drop-in build could not create: exit $rc, expected 74"; }
+        ;;
+    dropin-exit)
+        # RAYGL_EXIT without raygl record: the trace closed after frame 2,
+        # then SIGTERM (143), the program stopped early.
+        linked x.raygl RAYGL_FRAMES=1-2 RAYGL_EXIT=1 "$din" --api glut --frames 1000 --done finished >prog.log 2>&1
+        rc=$?
+        [ $rc -eq 143 ] || { cat prog.log; fail "RAYGL_EXIT: exit $rc, expected 143 (SIGTERM)"; }
+        [ ! -e finished ] || fail "RAYGL_EXIT did not end the program"
+        triangles x.raygl 2
+        closed x.raygl
+        # A list and RAYGL_EVERY, as raygl record passes them.
+        linked l.raygl RAYGL_FRAMES=0,4-9 RAYGL_EVERY=2 "$din" --api glut --frames 10 >prog.log 2>&1 ||
+            { cat prog.log; fail "RAYGL_FRAMES=0,4-9 RAYGL_EVERY=2"; }
+        triangles l.raygl 4
+        # RAYGL_SIGNAL: the frame after the signal.
+        (exec env ${san:+LD_PRELOAD=$san} RAYGL_TRACE=s.raygl RAYGL_SIGNAL=10 "$din" --api glut --frames 100 \
+            --delay-ms 20 >prog.log 2>&1) &
+        pid=$!
+        wait_for s.raygl || { kill $pid; fail "no trace under RAYGL_SIGNAL"; }
+        kill -USR1 $pid
+        wait $pid || fail "the program failed under RAYGL_SIGNAL"
+        triangles s.raygl 1
+        ;;
+    esac
     ;;
 *) echo "unknown case $case" >&2; exit 2 ;;
 esac

@@ -9,14 +9,19 @@
 #    given (the image tests' thresholds), and must pass;
 # 3. bad input gives one clear line and exit 1 (not a trace; the snapshot's
 #    resource damaged; a frame list without snapshots), bad usage exit 2,
-#    and nothing is written outside the output folder;
+#    and nothing is written outside the output folder; -o NEW/SUB/DIR
+#    makes the missing folders;
 # 4. run from another folder it finds raygl2pov itself; options (its own
 #    and raygl2pov's) and the output folder are checked before rendering;
 #    a stop signal leaves no partial file.
+# With RAYGL_FIGURES set (meson sets it to tests/image/figures.txt), the
+# figures of step 2 are held to the file's line for "compare"
+# (check-figures.sh).
 set -u
 [ $# -ge 5 ] || { echo "usage: $0 PROG RAYGL_COMPARE RAYGL2POV POVRAY OUTDIR [FLOOR-OPTION...]" >&2; exit 2; }
 prog=$1 cmp=$2 r2p=$3 povray=$4 out=$5
 shift 5
+here=$(cd "$(dirname "$0")" && pwd) || exit 1
 fail() { echo "compare test: FAIL: $*"; exit 1; }
 absolute() {
     case $1 in
@@ -43,6 +48,12 @@ rc=$?
 cat cmp.log
 [ $rc -eq 0 ] || fail "raygl-compare exited with $rc"
 grep -q '^frame 0: 320x240 within .* silhouette ' cmp.log || fail "no figures for frame 0"
+if [ -n "${RAYGL_FIGURES:-}" ]; then
+    # shellcheck disable=SC2046 # three words on purpose
+    "$here/check-figures.sh" "$RAYGL_FIGURES" compare $(sed -n \
+        's|^frame 0: [0-9x]* within \([0-9]*\)/255 \([0-9.]*\),.* silhouette \([0-9.]*\) .*|\1 \2 \3|p' cmp.log) ||
+        fail "the figures do not hold to $RAYGL_FIGURES (above)"
+fi
 [ -s cmp/compare-00000.png ] || fail "no cmp/compare-00000.png"
 [ -s cmp/pov/frame-00000.png ] || fail "no cmp/pov/frame-00000.png"
 
@@ -53,6 +64,15 @@ mkdir elsewhere
     --frames 0-0:1 -- --no-shadows) >sib.log 2>&1 ||
     { cat sib.log; fail "raygl-compare without --raygl2pov, run from another folder"; }
 [ -s sib/compare-00000.png ] || fail "no sib/compare-00000.png"
+
+# -o NEW/SUB/DIR makes the missing folders, as raygl2pov -o does (issue
+# 27); a usage error found before rendering removes what it made.
+"$cmp" run.raygl -o new/sub/dir --raygl2pov "$r2p" --povray "$povray" -- --no-shadows >nest.log 2>&1 ||
+    { cat nest.log; fail "raygl-compare -o new/sub/dir"; }
+[ -s new/sub/dir/compare-00000.png ] || fail "no new/sub/dir/compare-00000.png"
+mkdir kept
+"$cmp" run.raygl -o kept/a/b --raygl2pov "$r2p" -- --bogus >nest.log 2>&1
+[ $? -eq 2 ] && [ -d kept ] && [ ! -e kept/a ] || { cat nest.log; fail "-o kept/a/b left kept/a after a usage error"; }
 
 # A floor it cannot meet fails.
 "$cmp" run.raygl -o cmp --raygl2pov "$r2p" --povray "$povray" --tol 0 --min-match 1 \
@@ -91,7 +111,8 @@ PY
 # Truncated inside the last frame: nothing left to compare.
 head -c $((size - 100)) run.raygl >cut.raygl
 "$cmp" cut.raygl -o cut --raygl2pov "$r2p" >cut.log 2>&1
-[ $? -eq 1 ] && grep -q 'no frame holds a usable snapshot' cut.log || { cat cut.log; fail "truncated"; }
+[ $? -eq 1 ] && grep -q 'no frame holds a usable snapshot (record with `raygl record --snapshots`' cut.log ||
+    { cat cut.log; fail "truncated"; }
 # Bad usage.
 "$cmp" run.raygl >usage.log 2>&1
 [ $? -eq 2 ] || fail "no -o is not a usage error"
@@ -154,7 +175,7 @@ rm -f stand-in-povray stand-in.started
 for f in *; do
     case $f in
     run.raygl|gl.png|program.log|cmp.log|cmp|floor.log|bad.raygl|bad.log|damaged.raygl|dmg.log|dmg|cut.raygl|cut.log|cut|usage.log) ;;
-    elsewhere|sib|sib.log|opt.log|random.raygl|stop|stop.log) ;;
+    elsewhere|sib|sib.log|opt.log|random.raygl|stop|stop.log|new|nest.log|kept) ;;
     *) fail "unexpected file $f" ;;
     esac
 done

@@ -4,22 +4,26 @@
 #
 #   run-frames-test.sh --name NAME --program PROG --raygl2pov R2P --povray POVRAY
 #                      --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]...
-#                      [-- IMGCMP-OPTIONS...]
+#                      [--r2p-says nothing|REGEX]... [--figures FILE] [-- IMGCMP-OPTIONS...]
 #
 # 1. PROG --trace DIR/NAME/NAME.raygl --png-dir DIR/NAME [--size WxH] draws
 #    the frames with OSMesa (DIR/NAME/gl-NNNNN.png);
 # 2. for each frame N: R2P NAME.raygl -o pov --frames N [OPT...], so that
 #    the notes said are that frame's (raygl2pov says each note once a run);
 # 3. POVRAY pov/frame-NNNNN.ini -D -A;
-# 4. IMGCMP [IMGCMP-OPTIONS] gl-NNNNN.png pov/frame-NNNNN.png.
+# 4. IMGCMP [IMGCMP-OPTIONS] gl-NNNNN.png pov/frame-NNNNN.png;
+# 5. with --figures FILE, check-figures.sh holds each frame's figures to
+#    FILE's line NAME/N, and FILE may have no line for a frame past the last.
 #
 # Prints one line per frame:
 #   frame N: PASS|FAIL within W silhouette S note yes|no
-# then "frames NAME: P of T pass". Exit 0 when every frame passes, 1
-# otherwise or when a step fails, 2 on bad usage.
+# then "frames NAME: P of T pass". With --r2p-says, the frames' messages
+# must be nothing or match (image-test-args.sh). Exit 0 when every frame
+# passes (and its figures hold), 1 otherwise or when a step fails, 2 on bad
+# usage.
 set -u
 usage() {
-    echo "usage: $0 --name NAME --program PROG --raygl2pov R2P --povray POVRAY --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]... [-- IMGCMP-OPTIONS...]" >&2
+    echo "usage: $0 --name NAME --program PROG --raygl2pov R2P --povray POVRAY --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]... [--r2p-says nothing|REGEX]... [--figures FILE] [-- IMGCMP-OPTIONS...]" >&2
     exit 2
 }
 . "$(dirname "$0")/image-test-args.sh"
@@ -57,6 +61,8 @@ done
 
 pass=0
 n=0
+figures_bad=0
+check=$(dirname "$0")/check-figures.sh
 while [ $n -lt "$nframes" ]; do
     f=$(printf '%05d' $n)
     # shellcheck disable=SC2086 # r2p_opts: words checked above, split on purpose
@@ -90,7 +96,18 @@ while [ $n -lt "$nframes" ]; do
     if [ $verdict = FAIL ] && [ $note = yes ]; then
         grep 'approximated\|not translated\|left out' "$dir/raygl2pov-$f.log" | sed 's/^/    /'
     fi
+    measured=$(figures_of "$dir/imgcmp-$f.log")
+    if [ -n "$figures" ] && [ -n "$measured" ]; then
+        # shellcheck disable=SC2086 # three words on purpose
+        "$check" "$figures" "$name/$n" $measured || figures_bad=1
+    fi
     n=$((n + 1))
 done
+if [ -n "$figures" ]; then
+    "$check" --frames "$figures" "$name" "$nframes" || figures_bad=1
+fi
 echo "frames $name: $pass of $nframes pass"
-[ $pass -eq "$nframes" ]
+said=ok
+r2p_says_check "$dir"/raygl2pov-[0-9]*.log || said=bad
+[ $figures_bad -eq 0 ] || echo "frames $name: FAIL: the figures do not hold to $figures (above)"
+[ $pass -eq "$nframes" ] && [ $said = ok ] && [ $figures_bad -eq 0 ]

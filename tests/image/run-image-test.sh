@@ -3,16 +3,20 @@
 #
 #   run-image-test.sh --name NAME --program PROG --raygl2pov R2P --povray POVRAY
 #                     --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]...
+#                     [--r2p-says nothing|REGEX]... [--figures FILE]
 #                     [--no-program-leak-check] [--ini-antialias] [-- IMGCMP-OPTIONS...]
 #
 # 1. PROG --trace DIR/NAME/NAME.raygl --png DIR/NAME/gl.png [--size WxH]
 #    draws one frame with OSMesa, records it and writes the GL image;
 # 2. in DIR/NAME: R2P NAME.raygl -o pov [OPT...]   translates the trace
-#    (each --r2p-opt adds one raygl2pov option, e.g. --no-shadows);
+#    (each --r2p-opt adds one raygl2pov option, e.g. --no-shadows); with
+#    --r2p-says, what it prints must be nothing, or match (image-test-args.sh);
 # 3. in DIR/NAME: POVRAY pov/frame-00000.ini -D -A   renders it (the .ini
 #    names the size, the gamma and pov/frame-00000.png);
 # 4. IMGCMP [IMGCMP-OPTIONS] --diff DIR/NAME/diff.png gl.png pov/frame-00000.png
-#    prints the figures and decides.
+#    prints the figures and decides;
+# 5. with --figures FILE, check-figures.sh holds the figures to FILE's line
+#    for NAME (tests/image/figures.txt: a drop below it fails).
 #
 # --ini-antialias renders with the .ini's antialiasing (raygl2pov turns it
 # on for a frame that accumulated jittered passes) instead of -A.
@@ -28,7 +32,7 @@
 set -u
 
 usage() {
-    echo "usage: $0 --name NAME --program PROG --raygl2pov R2P --povray POVRAY --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]... [--no-program-leak-check] [--ini-antialias] [-- IMGCMP-OPTIONS...]" >&2
+    echo "usage: $0 --name NAME --program PROG --raygl2pov R2P --povray POVRAY --imgcmp IMGCMP --outdir DIR [--size WxH] [--r2p-opt OPT]... [--r2p-says nothing|REGEX]... [--figures FILE] [--no-program-leak-check] [--ini-antialias] [-- IMGCMP-OPTIONS...]" >&2
     exit 2
 }
 
@@ -99,6 +103,7 @@ if [ -s "$dir/raygl2pov.log" ]; then
     echo "raygl2pov said:"
     sed -n '1,20p' "$dir/raygl2pov.log"
 fi
+r2p_says_check "$dir/raygl2pov.log" || fail "raygl2pov's messages (--r2p-says)"
 [ -f "$dir/pov/frame-00000.pov" ] && [ -f "$dir/pov/frame-00000.ini" ] ||
     fail "raygl2pov wrote no pov/frame-00000.pov and .ini (it wrote: $(ls "$dir/pov" 2>/dev/null | tr '\n' ' '))"
 nframes=$(ls "$dir/pov" | grep -c '^frame-[0-9]*\.pov$')
@@ -125,10 +130,24 @@ fi
 grep 'Warning:' "$dir/povray.log" | sort | uniq -c | sed 's/^/povray: /'
 
 # 4. The comparison.
-"$imgcmp" "$@" --diff "$dir/diff.png" "$dir/gl.png" "$dir/pov/frame-00000.png"
+"$imgcmp" "$@" --diff "$dir/diff.png" "$dir/gl.png" "$dir/pov/frame-00000.png" >"$dir/imgcmp.log" 2>&1
 rc=$?
+cat "$dir/imgcmp.log"
+# 5. The figures against the file's, whatever imgcmp decided, so that a
+# test log always holds them (tools/update-figures.py).
+frc=0
+measured=$(figures_of "$dir/imgcmp.log")
+if [ -n "$figures" ] && [ -n "$measured" ]; then
+    # shellcheck disable=SC2086 # three words on purpose
+    "$(dirname "$0")/check-figures.sh" "$figures" "$name" $measured
+    frc=$?
+fi
 if [ $rc -ne 0 ]; then
     echo "image test $name: FAIL (see $dir/diff.png: GL | POV | difference)"
+    exit 1
+fi
+if [ $frc -ne 0 ]; then
+    echo "image test $name: FAIL: the figures do not hold to $figures (above)"
     exit 1
 fi
 echo "image test $name: PASS"

@@ -1,9 +1,9 @@
 #!/bin/sh
-# test_install.sh: `meson install --destdir` of this build, then the
-# installed files used as the README says for a prefix outside the
-# system's paths: a program built with `pkg-config raygl` and the drop-in
-# header, run with LD_LIBRARY_PATH, its trace read by the installed
-# raygl2pov, the man pages found with MANPATH.
+# test_install.sh: `meson install --destdir` of this build (its own
+# install log untouched), then the installed files used as the README says
+# for a prefix outside the system's paths: a program built with
+# `pkg-config raygl` and the drop-in header, run with LD_LIBRARY_PATH, its
+# trace read by the installed raygl2pov, the man pages found with MANPATH.
 #
 #   test_install.sh BUILD-DIR PREFIX LIBDIR B_SANITIZE CC
 set -u
@@ -16,8 +16,22 @@ dest=$t/dest
 root=$dest$prefix
 lib=$root/$libdir
 
-meson install -C "$build" --no-rebuild --destdir "$dest" >"$t/install.log" 2>&1 ||
-    { cat "$t/install.log"; fail "meson install --destdir failed"; }
+# The build folder's install state is its user's (stage.sh): it must be
+# the same afterwards.
+. "$(dirname "$0")/stage.sh"
+log=$build/meson-logs/install-log.txt
+before=$t/log-before
+if [ -e "$log" ]; then cp -p "$log" "$before"; else : >"$t/no-log"; fi
+shadow=$t/build
+stage_install "$build" "$shadow" "$dest" ||
+    { cat "$shadow.install.log"; fail "meson install --destdir failed"; }
+if [ -e "$t/no-log" ]; then
+    [ ! -e "$log" ] || fail "the staged install made $log"
+else
+    cmp -s "$before" "$log" || fail "the staged install changed $log"
+fi
+grep -q "^$dest$prefix/bin/raygl2pov\$" "$shadow/meson-logs/install-log.txt" ||
+    fail "the test's own install log does not list $dest$prefix/bin/raygl2pov"
 
 for f in bin/raygl bin/raygl2pov bin/raygl2gltf bin/raygl-render bin/raygl-compare \
     share/man/man1/raygl2gltf.1 include/raygl.h include/raygl/gl.h include/raygl/cmdtable.h \

@@ -2,7 +2,7 @@
 # test_testsh.sh: tools/test.sh with stand-ins for meson, ninja, deps.sh
 # and test-deb.sh. It installs the packages first; it configures build/
 # and build-asan/ with its own options even where build/ exists already
-# (the quick start's, without -Dwerror); it counts the packages' test like
+# (a developer's, without -Dwerror); it counts the packages' test like
 # a suite in CI and not elsewhere; a failing deps.sh is one failure.
 #
 #   test_testsh.sh SOURCE-DIR
@@ -52,8 +52,8 @@ esac
 STUB_MESON
 chmod +x "$t/tree/tools/deps.sh" "$t/tree/tools/test-deb.sh" "$t/bin/meson" "$t/bin/ninja" || exit 1
 
-# run NAME [VAR=VALUE...]: tools/test.sh in a tree whose build/ the quick
-# start made; its output in $t/NAME.out, its status in $t/NAME.rc.
+# run NAME [VAR=VALUE...]: tools/test.sh in a tree whose build/ an earlier
+# meson setup made; its output in $t/NAME.out, its status in $t/NAME.rc.
 run() {
     name=$1
     shift

@@ -12,7 +12,9 @@
 # the signal goes only once every started povray has said so. raygl2pov
 # while translating: frozen with SIGSTOP at a moment its temporary scenes
 # exist, then signalled. Then the real POV-Ray, signalled once its
-# .pov-state exists.
+# .pov-state exists. A stopped render says what is done and that the same
+# command renders the rest, as its last line (issue 27); Blender's import
+# script's own temporary image is removed too (a stand-in Blender).
 . "$(dirname "$0")/common.sh"
 
 cd "$work" || exit 1
@@ -42,7 +44,7 @@ wait_marks() {
 
 # check_clean DIR WHAT: only complete frames and their inputs in DIR.
 check_clean() {
-    left=$(ls -A "$1" | grep -v -E '^(frame-[0-9]+\.(pov|ini|png)|render\.list|textures)$')
+    left=$(ls -A "$1" | grep -v -E '^(frame-[0-9]+\.(pov|ini|png|glb)|render\.list|textures|raygl-folder\.inc)$')
     [ -z "$left" ] && ok "$2: nothing partial left" || fail "$2: left $(echo $left)"
     for p in "$1"/*.png; do
         [ -e "$p" ] || continue
@@ -73,6 +75,11 @@ stop() {
     st=$?
     [ "$st" -ne 0 ] && ok "$what: exits $st" || fail "$what: exited 0"
     check_clean "$dir" "$what"
+    said=$(tail -n 1 "$work/err")
+    case $said in
+    *": stopped (SIG$sig): "*" the same command again renders the other "*) ok "$what: says so: $said" ;;
+    *) fail "$what: last line '$said', not what was done" ;;
+    esac
 }
 
 "$r2p" anim.raygl -o a -q || fail "translate"
@@ -90,6 +97,34 @@ done
 stop INT group a "raygl-render after a finished frame" \
     "$render" a -j 2 --povray "$work/stand-in-povray"
 [ -s a/frame-00000.png ] && ok "the finished frame kept" || fail "frame 0 lost"
+grep -q '^raygl-render: stopped (SIGINT): 1 of 4 frames rendered (0 in this run, 1 before), 2 renders stopped and removed; the same command again renders the other 3$' "$work/err" &&
+    ok "the counts said" || fail "the stop's counts: $(tail -n 1 "$work/err")"
+
+# Blender: the import script writes its image under the name raygl-render
+# gives (--temp) and renames it; a stop while it writes removes it. The
+# stand-in writes every file the script would, then blocks.
+cat >stand-in-blender <<EOF2
+#!/bin/sh
+out='' tmp=''
+while [ \$# -gt 0 ]; do
+    case \$1 in
+    --output) out=\$2; shift ;;
+    --temp) tmp=\$2; shift ;;
+    esac
+    shift
+done
+[ -n "\$tmp" ] || tmp=\${out%/*}/.\${out##*/}.\$\$.tmp.png
+printf 'partial' >"\$out"
+printf 'half an image' >"\$tmp"
+: >"$work/marks/\$\$"
+exec sleep 300
+EOF2
+chmod +x stand-in-blender
+"$r2p" anim.raygl -o g --format gltf -q || fail "translate to glTF"
+for sig in INT TERM; do
+    stop $sig group g "raygl-render --engine blender, SIG$sig to the group" \
+        "$render" g -j 2 --engine blender --blender "$work/stand-in-blender"
+done
 
 # raygl2pov while translating: frozen (SIGSTOP to its group) at a moment a
 # temporary scene exists, then SIGINT and SIGCONT: the temporary files go,
@@ -117,7 +152,7 @@ st=$?
 if [ $caught -eq 1 ]; then
     [ "$st" -ne 0 ] && ok "translation stopped with temporary files: exits $st" ||
         fail "translation stopped: exited 0"
-    left=$(ls -A tr | grep -v -E '^frame-[0-9]+\.(pov|ini)$')
+    left=$(ls -A tr | grep -v -E '^(frame-[0-9]+\.(pov|ini)|raygl-folder\.inc)$')
     [ -z "$left" ] && ok "translation stopped: no temporary file left" ||
         fail "translation stopped: left $(echo $left)"
 else
@@ -142,7 +177,7 @@ for target in group proc; do
     wait $pid
     [ $? -ne 0 ] && ok "real POV-Ray, SIGINT to the $target: interrupted" ||
         fail "real POV-Ray, SIGINT to the $target: exited 0"
-    left=$(ls -A real | grep -v -E '^(frame-[0-9]+\.(pov|ini|png)|render\.list|textures)$')
+    left=$(ls -A real | grep -v -E '^(frame-[0-9]+\.(pov|ini|png)|render\.list|textures|raygl-folder\.inc)$')
     [ -z "$left" ] && ok "real POV-Ray, SIGINT to the $target: nothing partial left" ||
         fail "real POV-Ray, SIGINT to the $target: left $(echo $left)"
     pgrep -g "$pid" >/dev/null && fail "real POV-Ray, SIGINT to the $target: a process left"

@@ -8,7 +8,9 @@
 # and the others still render (exit 1); a missing povray, an unknown
 # option, a frame range outside the trace and a bad settings file fail
 # clearly without touching what was rendered; an interrupted render leaves
-# no partial file; --video when ffmpeg is installed.
+# no partial file; --video when ffmpeg is installed; `povray DIR/NAME.ini`
+# renders from where raygl2pov ran and, from inside DIR, stops saying
+# where to run it; raygl-render renders from another folder.
 . "$(dirname "$0")/common.sh"
 
 cd "$work" || exit 1
@@ -24,6 +26,24 @@ grep -q "6 frames rendered in .* 2 at once), 0 already rendered, 0 failed" "$wor
 grep -q "frames/min, .* left" "$work/err" && fail "a progress bar without a terminal"
 ls -a frames | grep -q partial && fail "partial files left: $(ls -a out)"
 cp -p frames/frame-00002.png keep.png
+
+# ---- the .ini by hand (issue 27): from where raygl2pov ran it renders;
+# from inside the folder, where its relative paths cannot hold, POV-Ray
+# stops with a line saying where to run it from (not "Cannot create
+# render state output file"); raygl-render renders from anywhere.
+povray=$(command -v povray)
+rm -f frames/frame-00001.png
+povray frames/frame-00001.ini >"$work/out" 2>"$work/err" && [ -s frames/frame-00001.png ] &&
+    ok "povray frames/NAME.ini from where raygl2pov ran" || fail "povray frames/frame-00001.ini: $(tail -n 3 "$work/err")"
+(cd frames && "$povray" frame-00001.ini) >"$work/out" 2>&1
+rc=$?
+tr '\n' ' ' <"$work/out" | sed 's/  */ /g' >"$work/said"
+[ $rc -ne 0 ] && grep -q 'run povray from the folder raygl2pov ran in, the one that holds frames: this .ini names its files from there (povray frames/frame-00001.ini)' "$work/said" &&
+    ok "from inside the folder: POV-Ray says where to run it" || fail "povray from inside the folder: exit $rc: $(tail -n 5 "$work/out")"
+mkdir elsewhere
+rm -f frames/frame-00001.png
+(cd elsewhere && "$render" "$work/frames" --frames 1 -q) >"$work/out" 2>"$work/err" && [ -s frames/frame-00001.png ] &&
+    ok "raygl-render from another folder" || fail "raygl-render from another folder: $(cat "$work/err")"
 
 # ---- resumable: nothing again; a changed look renders again
 run "$r2p" anim.raygl -o frames --render

@@ -5,7 +5,7 @@
 #
 # Bad usage exits 2; a damaged trace exits 1 with the file and offset named
 # and every intact frame written; an unwritable folder exits 1 and leaves no
-# half-written file; hostile rayglFrameBegin names stay inside the output
+# half-written file, and a read-only textures/ is named as such; hostile rayglFrameBegin names stay inside the output
 # folder; -j N and a comma-decimal locale give the same bytes as -j 1;
 # --dump and --frames do what they say.
 set -u
@@ -71,7 +71,12 @@ for f in frame-00000 frame-00001 frame-00002 frame-00003 frame-00004 x passwd a_
     [ -s "out/$f.pov" ] && [ -s "out/$f.ini" ] || fail "out/$f.pov or .ini missing"
 done
 n=$(ls out | wc -l)
-[ "$n" -eq 20 ] || fail "expected 20 files in out, found $n: $(ls out | tr '\n' ' ')"
+[ "$n" -eq 21 ] || fail "expected 21 files in out, found $n: $(ls out | tr '\n' ' ')"
+# Every .ini reads the folder check first (POV-Ray reads INI paths from
+# the current folder: run from elsewhere, it says where to run from).
+[ -s out/raygl-folder.inc ] && grep -q '^Include_Header=raygl-folder.inc$' out/x.ini &&
+    grep -q 'file_exists(concat("out/", input_file_name))' out/raygl-folder.inc ||
+    fail "the folder check: $(cat out/x.ini out/raygl-folder.inc)"
 # Nothing escapes the output folder.
 found=$(cd "$work/sandbox" && find . -newer "$good" -type f | grep -v '^\./a/b/out/' || true)
 [ -z "$found" ] && ok "nothing written outside the output folder" ||
@@ -121,7 +126,7 @@ fi
 # ---- --frames and --dump
 run "$good" -o sub --frames 1,3-4
 expect_rc 0 "--frames 1,3-4"
-[ "$(ls sub | tr '\n' ' ')" = "frame-00001.ini frame-00001.pov frame-00003.ini frame-00003.pov frame-00004.ini frame-00004.pov " ] ||
+[ "$(ls sub | tr '\n' ' ')" = "frame-00001.ini frame-00001.pov frame-00003.ini frame-00003.pov frame-00004.ini frame-00004.pov raygl-folder.inc " ] ||
     fail "--frames wrote: $(ls sub | tr '\n' ' ')"
 run "$good" --frames 40-
 expect_rc 2 "--frames without -o or --dump"
@@ -179,7 +184,7 @@ grep -q "afile/sub: cannot create the output folder" "$work/err" || fail "folder
 rc=$(cat "$work/rc")
 expect_rc 1 "full disk"
 grep -q "cannot write" "$work/err" || fail "full-disk message: $(cat "$work/err")"
-[ -z "$(ls -A full)" ] && ok "no file left after the failed write" ||
+[ -z "$(ls -A full | grep -v '^raygl-folder\.inc$')" ] && ok "no file left after the failed write" ||
     fail "left after a failed write: $(ls -A full | tr '\n' ' ')"
 
 # ---- a new user's first hour (issue 11)
@@ -211,15 +216,40 @@ expect_rc 0 "a textured trace"
 grep -q 'image_map{png "textures/rgl-tex-' "$work/tex/frame-00000.pov" && ok "the scene names textures/" ||
     fail "the scene's image_map: $(grep image_map "$work/tex/frame-00000.pov" | head -1)"
 
-# ---- calls not recorded (@NotRecorded): one report per trace, by name
+# A read-only textures/: the error names the image it could not write,
+# not the frame's temporary scene (issue 27). Root writes there anyway:
+# then as nobody, where setpriv can.
+ro=$work/ro
+chmod 711 "$work"
+mkdir "$ro" && cp "$work/tex.raygl" "$ro/" && chmod 777 "$ro" && chmod 644 "$ro/tex.raygl"
+as=''
+[ "$(id -u)" -eq 0 ] && command -v setpriv >/dev/null 2>&1 &&
+    as='setpriv --reuid=65534 --regid=65534 --clear-groups'
+$as "$r2p" "$ro/tex.raygl" -o "$ro/out" -q 2>"$work/err" && rm -f "$ro/out/textures/"* &&
+    chmod 555 "$ro/out/textures" || fail "read-only textures: setup: $(cat "$work/err")"
+if $as sh -c ': >"$1/out/textures/probe"' sh "$ro" 2>/dev/null; then
+    ok "read-only textures: SKIP (the folder takes files anyway)"
+else
+    $as "$r2p" "$ro/tex.raygl" -o "$ro/out" -q >"$work/out" 2>"$work/err"
+    rc=$?
+    expect_rc 1 "a read-only textures folder"
+    grep -q "^raygl2pov: $ro/out/textures/rgl-tex-[0-9a-f]*\.png: cannot write: Permission denied\$" "$work/err" &&
+        ok "the message names the texture" || fail "read-only textures message: $(cat "$work/err")"
+fi
+chmod 755 "$ro/out/textures" 2>/dev/null
+
+# ---- calls not recorded (@NotRecorded): one report per trace, by name;
+# only those that can change the picture (names this version records now
+# say what is missing), the others with --verbose and --dump
 unrec=$work/traces/unrecorded.raygl
 p="raygl2pov: $unrec:"
-printf '%s\n' "$p gl??31mEvil?: 2 calls not recorded, from frame 1" \
-    "$p glAccum: 1,204 calls not recorded, from frame 0" \
-    "$p glActiveTexture: 1 call not recorded, from frame 2" \
-    "$p glMap1f: 5 calls not recorded, from frame 1" \
-    "$p glRasterPos2i: 1 call not recorded, from frame 0" \
-    "$p glutBitmapCharacter: 7 calls not recorded, from frame 2" >"$work/unrec.want"
+miss="what it does is missing from the trace"
+printf '%s\n' "$p gl??31mEvil?: 2 calls not recorded, from frame 1: $miss" \
+    "$p glAccum: 1,204 calls not recorded, from frame 0: $miss" \
+    "$p glActiveTexture: 1 call not recorded, from frame 2: $miss" \
+    "$p glMap1f: 5 calls not recorded, from frame 1: $miss" \
+    "$p glRasterPos2i: 1 call not recorded, from frame 0: $miss" \
+    "$p glutBitmapCharacter: 7 calls not recorded, from frame 2: the bitmap text is missing (raygl record, which sees freeglut's own calls, records it)" >"$work/unrec.want"
 for j in 1 3; do
     run "$unrec" -o "$work/unrec$j" -j $j
     expect_rc 0 "calls not recorded, -j $j"
@@ -229,17 +259,35 @@ for j in 1 3; do
 done
 run "$unrec" -o "$work/unrec4" --frames 1
 grep 'not recorded' "$work/err" >"$work/unrec.got"
-printf '%s\n' "$p gl??31mEvil?: 2 calls not recorded, from frame 1" \
-    "$p glAccum: 204 calls not recorded, from frame 1" \
-    "$p glMap1f: 5 calls not recorded, from frame 1" >"$work/unrec.want1"
+printf '%s\n' "$p gl??31mEvil?: 2 calls not recorded, from frame 1: $miss" \
+    "$p glAccum: 204 calls not recorded, from frame 1: $miss" \
+    "$p glMap1f: 5 calls not recorded, from frame 1: $miss" >"$work/unrec.want1"
 cmp -s "$work/unrec.want1" "$work/unrec.got" && ok "--frames 1: that frame's calls only" ||
     fail "--frames 1: $(diff "$work/unrec.want1" "$work/unrec.got")"
 run "$unrec" -o "$work/unrec5" --quiet
 grep -q 'not recorded' "$work/err" && fail "--quiet still reports calls not recorded" ||
     ok "--quiet: no report"
+for v in -v --verbose; do
+    run "$unrec" -o "$work/unrec6" $v
+    grep 'not recorded' "$work/err" >"$work/unrec.got"
+    { sed -n 1,3p "$work/unrec.want"
+      echo "$p glCompressedTexImage2D: 3 calls not recorded, from frame 0 (cannot change the picture: it acts only on textured draws, which no frame from it on has): compressed texture images: the textures they fill are drawn without them"
+      sed -n 4,6p "$work/unrec.want"
+      echo "$p glutInit: 1 call not recorded, from frame 0 (cannot change the picture: the window system (windows, menus, input, callbacks, the main loop))"
+    } >"$work/unrec.want2"
+    cmp -s "$work/unrec.want2" "$work/unrec.got" && ok "$v: every call not recorded, marked" ||
+        fail "$v: $(diff "$work/unrec.want2" "$work/unrec.got")"
+done
+run "$unrec" -o "$work/unrec7" -v -q
+grep -q 'not recorded' "$work/err" && fail "-v -q: the later --quiet does not win" || ok "-v -q: quiet"
 run "$unrec" --dump
 grep -q '@NotRecorded(name="glAccum", count=1000)' "$work/out" && ok "--dump shows @NotRecorded" ||
     fail "--dump: no @NotRecorded"
+grep -qx '#   glutInit: 1 call not recorded, from frame 0 (cannot change the picture: the window system (windows, menus, input, callbacks, the main loop))' "$work/out" &&
+    grep -qx '#   glCompressedTexImage2D: 3 calls not recorded, from frame 0 (changes the picture only with textured draws): .*' "$work/out" &&
+    grep -qx '#   glAccum: 1,204 calls not recorded, from frame 0: what it does is missing from the trace' "$work/out" &&
+    ok "--dump: every call not recorded, by what it can change" ||
+    fail "--dump: the summary of calls not recorded: $(grep '^#' "$work/out")"
 
 if [ $fails -ne 0 ]; then
     echo "test_cli: $fails failure(s)"

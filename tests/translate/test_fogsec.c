@@ -353,7 +353,7 @@ static void test_fogged_lines(void)
     if (sc.nlines == 1) {
         CHECK_NEAR(sc.lines[0].color[0][0], 0.8, 1e-3);
         CHECK_NEAR(sc.lines[0].color[0][2], 0.2, 1e-3);
-        CHECK_NEAR(sc.lines[0].color[1][0], 0.2, 1e-3);
+        CHECK_NEAR(sc.lines[0].color[2][0], 0.2, 1e-3);
     }
     if (sc.npoints == 1)
         CHECK_NEAR(sc.points[0].color[2], 0.5, 1e-3);

@@ -266,7 +266,7 @@ static void test_outlines(void)
     nurbs_cmd(&s, RGL_OP_NurbsCurve, v, 5, blobs, nf);
     CMD(&s, EndCurve, NURB);
     run(ip, &s);
-    CHECK_EQ_U(sc.nlines, 16);
+    CHECK_EQ_U(interp_frame_segments(ip), 16);
     interp_destroy(ip);
 
     /* GLU_DOMAIN_DISTANCE at 40 steps a unit: GLU's own grid, no note. */

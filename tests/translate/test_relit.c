@@ -136,10 +136,10 @@ static void test_mixed_strip(void)
 }
 
 /* A textured GL_MODULATE face whose lit colour passes 1 (an emission of
- * 0.5 over the default light) takes GL's clamped colour; lit to at most
- * 1 (no emission), or GL_REPLACE, or untextured, POV-Ray lights it; so
- * it does with GL_SEPARATE_SPECULAR_COLOR and a highlight, which GL adds
- * after the texture, with a note. */
+ * 0.5 over the default light) takes GL's clamped colour, and so does an
+ * untextured one; lit to at most 1 (no emission), or GL_REPLACE, POV-Ray
+ * lights it; so it does with GL_SEPARATE_SPECULAR_COLOR and a highlight,
+ * which GL adds after the texture, with a note. */
 static void test_modulate_past_white(void)
 {
     static uint8_t rgb[12] = {200, 150, 90, 200, 150, 90, 200, 150, 90, 200, 150, 90};
@@ -167,7 +167,7 @@ static void test_modulate_past_white(void)
         CHECK_EQ_U(sc.ntris, 1);
         if (sc.nmeshes >= 1 && sc.ntris == 1) {
             const scene_mesh *m = &sc.meshes[sc.nmeshes - 1];
-            CHECK(m->look.lit == (c != 0));
+            CHECK(m->look.lit == (c != 0 && c != 3));
             if (c == 0) {
                 CHECK(m->look.texture >= 0);
                 CHECK_NEAR(sc.verts[sc.tris[0].v[0]].color[0], 1, 1e-6); /* 1.34 clamped */
@@ -255,6 +255,35 @@ static void test_fog_behind(void)
     }
 }
 
+/* A lit triangle outlined (glPolygonMode GL_LINE, a larger one so that
+ * its edges light pixels): its lines take GL's lit vertex colour
+ * (DEFAULT_LIT) under one-sided lighting, not the material's 0.8; under
+ * two-sided lighting that is not followed, and said. */
+static void test_lit_outline(void)
+{
+    for (int two = 0; two < 2; two++) {
+        interp *ip = fresh_depth();
+        seq s;
+        seq_init(&s);
+        lit(&s);
+        if (two)
+            CMD(&s, LightModeli, GL_LIGHT_MODEL_TWO_SIDE, 1);
+        CMD(&s, PolygonMode, GL_FRONT_AND_BACK, GL_LINE);
+        CMD(&s, Begin, GL_TRIANGLES);
+        CMD(&s, Vertex3f, -0.8, -0.8, -0.5);
+        CMD(&s, Vertex3f, 0.8, -0.7, -0.5);
+        CMD(&s, Vertex3f, 0.1, 0.8, -0.5);
+        CMD0(&s, End);
+        run(ip, &s);
+        CHECK_EQ_U(sc.ntris, 0);
+        CHECK(sc.nlines > 0);
+        if (!two && sc.nlines > 0)
+            CHECK_NEAR(sc.lines[0].color[0][0], DEFAULT_LIT, 1e-3);
+        CHECK_EQ_U(dlog.e[DIAG_NOTE_LIT_OUTLINE].count, (uint64_t)two);
+        interp_destroy(ip);
+    }
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -264,6 +293,7 @@ int main(void)
     test_modulate_past_white();
     test_separate_specular_back();
     test_fog_behind();
+    test_lit_outline();
     scene_finish(&sc);
     free_res();
     return CHECK_RESULT("test_relit");

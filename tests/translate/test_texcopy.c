@@ -136,6 +136,7 @@ static void test_3d(void)
     run(ip, &s);
     CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM) + count(DIAG_GL_INVALID_VALUE), 0);
     CHECK_EQ_U(count(DIAG_NOTE_TEX_3D), 1);
+    CHECK_EQ_U(dlog.e[DIAG_NOTE_TEX_3D].held, 1); /* GL_NEAREST: OpenGL's own slice */
     check_texel(drawn(), 0, 0, 120, 1, 2, 255);
 
     /* Linear: r = 0.5 lies halfway between slices 1 and 2. */
@@ -152,6 +153,8 @@ static void test_3d(void)
     if (sc.nmeshes >= 2)
         check_texel(&sc.textures[sc.meshes[sc.nmeshes - 2].look.texture], 0, 0, 90, 1, 2, 255);
     check_texel(drawn(), 0, 0, 180, 1, 2, 255);
+    /* GL_LINEAR's blend, rounded to 8 bits before filtering: said. */
+    CHECK_EQ_U(count(DIAG_NOTE_TEX_3D) - dlog.e[DIAG_NOTE_TEX_3D].held, 1);
     seq_init(&s);
     CMD(&s, TexParameteri, GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     CMD(&s, TexParameteri, GL_TEXTURE_3D, GL_TEXTURE_WRAP_R, GL_REPEAT);
@@ -371,6 +374,8 @@ static void test_mirror_clamp(void)
         run(ip, &s);
         CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 0);
         CHECK_EQ_U(count(DIAG_NOTE_TEX_MIRROR_CLAMP), 1);
+        /* GL_NEAREST: each mode as OpenGL samples it. */
+        CHECK_EQ_U(dlog.e[DIAG_NOTE_TEX_MIRROR_CLAMP].held, 1);
         /* The image mirrored once beside itself: [-1, 1] onto [0, 1]. */
         const scene_texture *t = drawn();
         CHECK(t && t->width == 4 && !t->repeat_s && t->border_s == (k == 2));
@@ -383,6 +388,22 @@ static void test_mirror_clamp(void)
             CHECK_NEAR(sc.verts[sc.nverts - 2].tex[0], 0.75, 1e-6);
             CHECK_NEAR(sc.verts[sc.nverts - 1].tex[1], 1, 1e-6); /* t repeats: unchanged */
         }
+        interp_destroy(ip);
+    }
+    /* GL_MIRROR_CLAMP_EXT under linear filtering blends the border in at
+     * the edge, where the image drawn is clamped to its edge texels. */
+    for (int lin = 0; lin < 2; lin++) {
+        interp *ip = fresh();
+        seq s;
+        seq_init(&s);
+        setup(&s, GL_TEXTURE_2D, 1);
+        CMD(&s, TexImage2D, GL_TEXTURE_2D, 0, GL_RGBA, 2, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, id);
+        CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_MIRROR_CLAMP_EXT);
+        CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, lin ? GL_LINEAR : GL_NEAREST);
+        triangle(&s, 1, 1);
+        run(ip, &s);
+        CHECK_EQ_U(count(DIAG_NOTE_TEX_MIRROR_CLAMP), 1);
+        CHECK_EQ_U(dlog.e[DIAG_NOTE_TEX_MIRROR_CLAMP].held, lin ? 0 : 1);
         interp_destroy(ip);
     }
     free_res();

@@ -2,7 +2,7 @@
 # Cycles on the CPU, the way raygl-render --engine blender runs it:
 #
 #   blender -b -noaudio --factory-startup --python-exit-code 1 \
-#       -P raygl-blender.py -- --input F.glb --output F.png \
+#       -P raygl-blender.py -- --input F.glb --output F.png [--temp T.png] \
 #       [--samples N] [--threads N] [--lighting SPEC|COMPAT|RAW]
 #
 # What it sets, and why (docs/mapping-gltf.md "Blender"):
@@ -43,13 +43,13 @@ class Failure(Exception):
 def parse_args(argv):
     args = argv[argv.index("--") + 1:] if "--" in argv else []
     opts = {"input": None, "output": None, "samples": 16, "threads": 0,
-            "lighting": "COMPAT"}
+            "lighting": "COMPAT", "temp": None}
     i = 0
     while i < len(args):
         key = args[i][2:] if args[i].startswith("--") else None
         if key not in opts or i + 1 >= len(args):
             raise Failure("usage: blender -b -P raygl-blender.py -- --input F.glb "
-                          "--output F.png [--samples N] [--threads N] "
+                          "--output F.png [--temp T.png] [--samples N] [--threads N] "
                           "[--lighting SPEC|COMPAT|RAW] (bad argument %r)" % args[i])
         opts[key] = args[i + 1]
         i += 2
@@ -218,7 +218,9 @@ def render(opts):
     bpy.ops.render.render()
     out = opts["output"]
     folder, name = os.path.split(out)
-    tmp = os.path.join(folder, ".%s.%d.tmp.png" % (name, os.getpid()))
+    # raygl-render names the temporary itself (--temp), so that a stop
+    # while Blender writes it removes it too.
+    tmp = opts["temp"] or os.path.join(folder, ".%s.%d.tmp.png" % (name, os.getpid()))
     try:
         bpy.data.images["Render Result"].save_render(filepath=tmp, scene=scene)
         if not os.path.isfile(tmp) or os.path.getsize(tmp) == 0:

@@ -75,6 +75,8 @@ void translator_set_budget_shift(translator *t, unsigned shift)
         interp_set_budget_shift(t->cursors[k].ip, shift);
 }
 
+void translator_set_shadows(translator *t, bool on) { interp_set_shadows(t->ip, on); }
+
 void translator_set_vertex_lighting(translator *t, bool on)
 {
     interp_set_vertex_lighting(t->ip, on);
@@ -271,8 +273,10 @@ static void front_replay(translator *t, interp *ip, size_t first, size_t i, uint
     if (tmp) {
         interp_clear_notes(ip);
         for (int k = DIAG_FIRST_NOTE; k < DIAG_COUNT; k++)
-            if (tmp->e[k].count)
+            if (tmp->e[k].count > tmp->e[k].held)
                 interp_frame_note(ip, (diag_kind)k);
+            else if (tmp->e[k].held)
+                interp_frame_note_held(ip, (diag_kind)k, "nor of the earlier frames it shows");
         tr_free(tmp);
     }
 }
@@ -305,6 +309,8 @@ static bool build_pass(translator *t, size_t i, diag_log *log, frame_result *out
         interp_copy_state(ip, src);
     }
     interp_begin_frame(ip);
+    if (!(fi->flags & RGL_FRAME_LIVE_CONTEXT))
+        interp_unrecorded_batch(ip);
     if (preset)
         interp_proj_preset(ip, preset, preset_vp, back_cleared);
     if (first < i) {
@@ -389,7 +395,7 @@ int translator_write_pov(translator *t, outbuf *ob, const pov_frame_info *info)
     return povwriter_scene(t->writer, ob, &t->scene, info);
 }
 
-int translator_write_images(translator *t, const char *dir)
+int translator_write_images(translator *t, const char *dir, char *failed, size_t cap)
 {
     const povtex_image *im = povwriter_image(t->writer, 0);
     if (!im)
@@ -404,8 +410,13 @@ int translator_write_images(translator *t, const char *dir)
     }
     snprintf(sub, dl + sizeof "/" POVTEX_DIR, "%s/%s", dir, POVTEX_DIR);
     int rc = mkdir(sub, 0777) == 0 || errno == EEXIST ? 0 : -1;
-    for (size_t i = 0; rc == 0 && (im = povwriter_image(t->writer, i)) != NULL; i++)
+    if (rc != 0)
+        snprintf(failed, cap, "%s", sub);
+    for (size_t i = 0; rc == 0 && (im = povwriter_image(t->writer, i)) != NULL; i++) {
         rc = pngout_place(sub, im->name, im->rgba, im->width, im->height, im->alpha);
+        if (rc != 0)
+            snprintf(failed, cap, "%s/%s", sub, im->name);
+    }
     int e = errno;
     tr_free(sub);
     errno = e;

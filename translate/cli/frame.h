@@ -63,6 +63,9 @@ void translator_set_budget_shift(translator *t, unsigned shift);
  * (interp_set_vertex_lighting). */
 void translator_set_vertex_lighting(translator *t, bool on);
 
+/* Shadows in the scenes or not (interp_set_shadows). */
+void translator_set_shadows(translator *t, bool on);
+
 /* Heavy frames (interp_set_heavy): fn(ctx) is called from translator_build
  * when its frame turns heavy, and may block. */
 void translator_set_heavy(translator *t, void (*fn)(void *ctx), void *ctx);
@@ -83,7 +86,8 @@ int translator_write_pov(translator *t, outbuf *ob, const pov_frame_info *info);
 
 /* Writes the texture images that scene refers to into dir/textures
  * (POVTEX_DIR, made when missing; existing images are kept: pngout.h).
- * Returns 0, or -1 with errno set. */
-int translator_write_images(translator *t, const char *dir);
+ * Returns 0, or -1 with errno set and failed (cap bytes) naming the image
+ * or the folder that could not be written. */
+int translator_write_images(translator *t, const char *dir, char *failed, size_t cap);
 
 #endif

@@ -1,6 +1,6 @@
 /* main.c: raygl2pov, the command line.
  *
- *   raygl2pov TRACE -o DIR [--frames A-B[,C...]] [-j N] [--dump] [--quiet]
+ *   raygl2pov TRACE -o DIR [--frames A-B[,C...]] [-j N] [--dump] [--quiet | --verbose]
  *
  * Workers (one translator each) take the selected frames in file order and
  * write each scene to a temporary file in DIR; the main thread then takes
@@ -16,6 +16,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <inttypes.h>
+#include <limits.h>
 #include <locale.h>
 #include <pthread.h>
 #include <signal.h>
@@ -33,6 +34,7 @@
 #include "frame.h"
 #include "gltfwrite.h"
 #include "look.h"
+#include "mkdirs.h"
 #include "naming.h"
 #include "outbuf.h"
 #include "options.h"
@@ -120,6 +122,10 @@ static void parse_args(int argc, char **argv, options *o)
     }
     if (!opt_finish_parse(o, &err))
         usage_error(err.msg);
+    /* --dump shows everything: the notes and calls not recorded that
+     * cannot change the picture too. */
+    if (o->dump && !o->quiet)
+        o->verbose = true;
     const char *pov_only = o->gltf ? pov_only_option(o) : NULL;
     if (pov_only) {
         snprintf(err.msg, sizeof err.msg, "%s: POV-Ray only, not with --format gltf", pov_only);
@@ -201,42 +207,6 @@ static char *join_path(const char *dir, const char *file)
     return p;
 }
 
-/* mkdir -p. Returns 0, or -1 with errno. */
-static int make_dirs(const char *path)
-{
-    char *p = tr_realloc(NULL, strlen(path) + 1);
-    if (!p)
-        return -1;
-    strcpy(p, path);
-    for (char *s = p + 1; *s; s++) {
-        if (*s != '/')
-            continue;
-        *s = '\0';
-        if (mkdir(p, 0777) != 0 && errno != EEXIST) {
-            int e = errno;
-            tr_free(p);
-            errno = e;
-            return -1;
-        }
-        *s = '/';
-    }
-    int rc = mkdir(p, 0777);
-    int e = errno;
-    tr_free(p);
-    if (rc != 0 && e != EEXIST) {
-        errno = e;
-        return -1;
-    }
-    struct stat st;
-    if (stat(path, &st) != 0)
-        return -1;
-    if (!S_ISDIR(st.st_mode)) {
-        errno = ENOTDIR;
-        return -1;
-    }
-    return 0;
-}
-
 static int fd_flush(void *user, const char *data, size_t n)
 {
     int fd = *(int *)user;
@@ -274,6 +244,8 @@ typedef struct slot {
     int width, height;
     int antialias_depth; /* the scene's, for the .ini */
     int write_errno;    /* writing the temporary .pov failed */
+    char *write_failed; /* the file it could not write (a texture), or NULL:
+                           the temporary .pov */
     const char *look_note; /* look_apply's, static */
     char *published;       /* "DIR/NAME" once written */
     long tmp_id;           /* the temporary .pov's cleanup entry, or -1 */
@@ -386,8 +358,16 @@ static void write_temp(job *j, translator *t, size_t k, slot *s, outbuf *ob)
         if (rc == 0)
             rc = outbuf_flush(ob);
         errno = 0;
+        char failed[PATH_MAX] = "";
         if (rc == 0)
-            rc = translator_write_images(t, j->o->outdir);
+            rc = translator_write_images(t, j->o->outdir, failed, sizeof failed);
+        if (rc != 0 && failed[0]) {
+            int fe = errno;
+            s->write_failed = tr_realloc(NULL, strlen(failed) + 1);
+            if (s->write_failed)
+                strcpy(s->write_failed, failed);
+            errno = fe;
+        }
     }
     int e = errno ? errno : ENOMEM;
     if (close(fd) != 0 && rc == 0) {
@@ -428,6 +408,7 @@ static void *worker(void *arg)
     if (t) {
         translator_set_heavy(t, heavy_enter, &w);
         translator_set_vertex_lighting(t, j->o->vertex_lighting);
+        translator_set_shadows(t, !j->o->pov.no_shadows);
     }
     outbuf ob;
     bool ob_ok = outbuf_init(&ob, 1 << 20, fd_flush, NULL) == 0;
@@ -509,22 +490,32 @@ static void name_add(names *u, const char *s)
 typedef struct totals {
     diag_log log;      /* counts of everything; the messages already printed */
     uint64_t printed[DIAG_COUNT];
+    uint64_t printed_held[DIAG_COUNT]; /* held notes printed (--verbose) */
     int status;        /* exit status so far */
     size_t written;
 } totals;
 
+/* Each note once per run: the first said, and with --verbose the first
+ * held (marked); other kinds DIAG_KEEP times, then a count. */
 static void print_diags(const options *o, totals *tot, const diag_log *log)
 {
     for (int k = 0; k < DIAG_COUNT; k++) {
         const diag_entry *e = &log->e[k];
         tot->log.e[k].count += e->count;
         tot->log.e[k].dropped += e->dropped;
+        tot->log.e[k].held += e->held;
+        bool note = diag_is_note((diag_kind)k);
         for (uint32_t m = 0; m < e->kept; m++) {
-            bool note = diag_is_note((diag_kind)k);
-            if ((note && tot->printed[k] >= 1) || (!note && tot->printed[k] >= DIAG_KEEP))
-                break;
+            if (note && diag_is_held(e, m)) {
+                if (!o->verbose || tot->printed_held[k] >= 1)
+                    continue;
+                tot->printed_held[k]++;
+            } else {
+                if (tot->printed[k] >= (note ? 1u : DIAG_KEEP))
+                    continue;
+                tot->printed[k]++;
+            }
             say(o, "%s", e->text[m]);
-            tot->printed[k]++;
         }
     }
 }
@@ -560,6 +551,50 @@ static void publish_glb(const options *o, totals *tot, size_t k, slot *s, const 
     s->tmp_id = -1;
     tr_free(tmp);
     tr_free(fin);
+}
+
+/* DIR/POV_FOLDER_CHECK, read first by every .ini (povwrite.h); kept as
+ * it is when unchanged, so rendered frames stay up to date. Returns 0, or
+ * -1 with the message said. */
+static int write_folder_check(const options *o)
+{
+    char *tmp = temp_path(o->outdir, 0, ".inc"), *fin = join_path(o->outdir, POV_FOLDER_CHECK);
+    int rc = -1, e = ENOMEM, fd = -1;
+    long id = -1;
+    if (tmp && fin) {
+        cleanup_lock();
+        id = cleanup_file(tmp);
+        fd = id >= 0 ? open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666) : -1;
+        e = id >= 0 ? errno : ENOMEM;
+        cleanup_unlock();
+    }
+    if (fd >= 0) {
+        outbuf ob;
+        errno = 0;
+        rc = outbuf_init(&ob, 4096, fd_flush, &fd);
+        if (rc == 0)
+            rc = pov_write_folder_check(&ob, o->outdir);
+        if (rc == 0)
+            rc = outbuf_flush(&ob);
+        e = errno ? errno : EIO;
+        outbuf_finish(&ob);
+        if (close(fd) != 0 && rc == 0) {
+            rc = -1;
+            e = errno;
+        }
+        if (rc == 0 && place(tmp, fin) != 0) {
+            rc = -1;
+            e = errno;
+        }
+        if (rc != 0)
+            unlink(tmp);
+    }
+    if (rc != 0)
+        say(o, "%s: cannot write: %s", fin ? fin : o->outdir, strerror(e));
+    cleanup_drop(id);
+    tr_free(tmp);
+    tr_free(fin);
+    return rc;
 }
 
 /* Writes the .ini of slot k and renames both files into place. */
@@ -691,6 +726,15 @@ static void print_summary(const options *o, const totals *tot)
             say(o, "%" PRIu64 " calls skipped in all (%s), %" PRIu64 " shown", n,
                 diag_kind_name((diag_kind)k), tot->printed[k]);
     }
+    /* --verbose: how often each note was said and held, frames counted
+     * once each (a frame logs a note at most once either way). */
+    for (int k = DIAG_FIRST_NOTE; o->verbose && k < DIAG_COUNT; k++) {
+        const diag_entry *e = &tot->log.e[k];
+        if (e->held)
+            say(o, "note held in %" PRIu64 " frame%s where it cannot change a pixel, said in %"
+                PRIu64 ": %s", e->held, e->held == 1 ? "" : "s", e->count - e->held,
+                diag_kind_name((diag_kind)k));
+    }
     for (int k = 0; k < DIAG_COUNT; k++)
         if (tot->log.e[k].dropped)
             say(o, "%" PRIu64 " message%s (%s) left out whole: longer than %d characters",
@@ -700,8 +744,11 @@ static void print_summary(const options *o, const totals *tot)
 
 /* ---- --dump ---------------------------------------------------------------------------- */
 
+/* Prints the commands of one sequence; adds its @NotRecorded counts to
+ * unrec as frame `frame`'s. */
 static bool dump_sequence(const options *o, const uint8_t *data, size_t size, uint64_t off,
-                          const char *indent, const char *where)
+                          const char *indent, const char *where, unrec_table *unrec,
+                          uint64_t frame)
 {
     rgl_cmd_iter it;
     rgl_cmd cmd;
@@ -711,6 +758,8 @@ static bool dump_sequence(const options *o, const uint8_t *data, size_t size, ui
     while ((st = rgl_cmd_next(&it, &cmd)) == RGL_OK) {
         rgl_cmd_format(&cmd, line, sizeof line);
         printf("%s%" PRIu64 " @0x%" PRIx64 " %s\n", indent, cmd.index, cmd.offset, line);
+        if (cmd.opcode == RGL_OP_NotRecorded)
+            (void)unrec_add(unrec, cmd.arg[0].bytes, cmd.arg[0].count, cmd.arg[1].v.u, frame);
     }
     if (st == RGL_END)
         return true;
@@ -719,9 +768,17 @@ static bool dump_sequence(const options *o, const uint8_t *data, size_t size, ui
     return false;
 }
 
+static void dump_line(const char *text, void *user)
+{
+    (void)user;
+    printf("#   %s\n", text);
+}
+
 static int dump(const options *o, rgl_reader *r)
 {
     int status = 0;
+    unrec_table unrec; /* the dumped frames' calls not recorded */
+    unrec_init(&unrec);
     size_t isz;
     const char *info = rgl_reader_info(r, &isz);
     if (info) {
@@ -767,13 +824,21 @@ static int dump(const options *o, rgl_reader *r)
                 char w2[96];
                 snprintf(w2, sizeof w2, "frame %zu, snapshot #%u", i, fi.state);
                 if (res.kind == RGL_RES_COMMANDS &&
-                    !dump_sequence(o, res.data, res.size, res.data_offset, "    ", w2))
+                    !dump_sequence(o, res.data, res.size, res.data_offset, "    ", w2, &unrec, i))
                     status = EXIT_INPUT;
             }
         }
-        if (!dump_sequence(o, fi.commands, fi.commands_size, fi.commands_offset, "  ", where))
+        if (!dump_sequence(o, fi.commands, fi.commands_size, fi.commands_offset, "  ", where,
+                           &unrec, i))
             status = EXIT_INPUT;
     }
+    if (unrec.n || unrec.other_calls) {
+        /* Every one, marked by what it can change (no frame is translated
+         * here to tell whether it does). */
+        printf("# not recorded (@NotRecorded) in these frames:\n");
+        unrec_report(&unrec, UNREC_REPORT_DUMP, dump_line, NULL);
+    }
+    unrec_finish(&unrec);
     fflush(stdout);
     return status;
 }
@@ -860,9 +925,14 @@ int main(int argc, char **argv)
         opt_free(&o);
         return EXIT_INPUT;
     }
-    if (make_dirs(o.outdir) != 0) {
+    if (mkdirs(o.outdir, NULL) != 0) {
         fprintf(stderr, PROG ": %s: cannot create the output folder: %s\n", o.outdir,
                 strerror(errno));
+        rgl_reader_destroy(reader);
+        opt_free(&o);
+        return EXIT_INPUT;
+    }
+    if (!o.gltf && write_folder_check(&o) != 0) {
         rgl_reader_destroy(reader);
         opt_free(&o);
         return EXIT_INPUT;
@@ -937,9 +1007,10 @@ int main(int argc, char **argv)
                 say_decode_error(&o, where, &s->error);
             tot.status = EXIT_INPUT;
         } else if (s->write_errno) {
-            char *tmp = temp_path(o.outdir, k, scene_ext(&o));
+            char *tmp = s->write_failed ? NULL : temp_path(o.outdir, k, scene_ext(&o));
             fprintf(stderr, "%s" PROG ": %s: cannot write: %s\n", progress_shown ? "\r\033[K" : "",
-                    tmp ? tmp : o.outdir, strerror(s->write_errno));
+                    s->write_failed ? s->write_failed : tmp ? tmp : o.outdir,
+                    strerror(s->write_errno));
             progress_shown = false;
             tr_free(tmp);
             tot.status = EXIT_INPUT;
@@ -966,13 +1037,16 @@ int main(int argc, char **argv)
         unrec_finish(&s->unrec);
         tr_free(s->incomplete);
         s->incomplete = NULL;
+        tr_free(s->write_failed);
+        s->write_failed = NULL;
         progress(&o, k + 1, j.nslots);
     }
     for (int t = 0; t < started; t++)
         pthread_join(threads[t], NULL);
     clear_progress();
     if (!o.quiet)
-        unrec_report(&unrec, say_line, &o);
+        unrec_report(&unrec, o.verbose ? UNREC_REPORT_VERBOSE : UNREC_REPORT_MATTERS, say_line,
+                     &o);
     unrec_finish(&unrec);
     print_summary(&o, &tot);
 

@@ -134,36 +134,20 @@ bool opt_set_frames(options *o, const char *spec, const opt_ctx *ctx, opt_err *e
     const char *p = spec;
     size_t n0 = o->nranges;
     while (*p) {
-        frame_range r = {0, 0, 1};
-        const char *e;
-        if (!parse_u64(p, &e, &r.first))
+        frame_range r;
+        switch (rgl_framesel_next(&p, &r)) {
+        case RGL_FRAMESEL_OK: break;
+        case RGL_FRAMESEL_NUMBER:
             return opt_fail(err, "%s '%s': expected a frame number at '%s'", ctx->option, spec, p);
-        r.last = r.first;
-        p = e;
-        if (*p == '-') {
-            p++;
-            if (*p == ',' || *p == ':' || *p == '\0')
-                r.last = UINT64_MAX;
-            else if (!parse_u64(p, &e, &r.last))
-                return opt_fail(err, "%s '%s': expected a frame number at '%s'", ctx->option,
-                                spec, p);
-            else
-                p = e;
-            if (r.last < r.first)
-                return opt_fail(err, "%s '%s': range %llu-%llu runs backwards", ctx->option, spec,
-                                (unsigned long long)r.first, (unsigned long long)r.last);
-        }
-        if (*p == ':') {
-            p++;
-            if (!parse_u64(p, &e, &r.step) || r.step == 0)
-                return opt_fail(err, "%s '%s': expected a step of 1 or more at '%s'", ctx->option,
-                                spec, p);
-            p = e;
-        }
-        if (*p == ',')
-            p++;
-        else if (*p)
+        case RGL_FRAMESEL_BACKWARDS:
+            return opt_fail(err, "%s '%s': range %llu-%llu runs backwards", ctx->option, spec,
+                            (unsigned long long)r.first, (unsigned long long)r.last);
+        case RGL_FRAMESEL_STEP:
+            return opt_fail(err, "%s '%s': expected a step of 1 or more at '%s'", ctx->option,
+                            spec, p);
+        case RGL_FRAMESEL_UNEXPECTED:
             return opt_fail(err, "%s '%s': unexpected '%c'", ctx->option, spec, *p);
+        }
         if (tr_grow((void **)&o->ranges, &o->cap_ranges, o->nranges + 1, sizeof r) != 0)
             return opt_fail(err, "out of memory");
         o->ranges[o->nranges++] = r;
@@ -177,11 +161,9 @@ bool opt_frame_selected(const options *o, uint64_t i)
 {
     if (o->nranges == 0)
         return true;
-    for (size_t k = 0; k < o->nranges; k++) {
-        const frame_range *r = &o->ranges[k];
-        if (i >= r->first && i <= r->last && (i - r->first) % r->step == 0)
+    for (size_t k = 0; k < o->nranges; k++)
+        if (rgl_framesel_has(&o->ranges[k], i))
             return true;
-    }
     return false;
 }
 
@@ -239,9 +221,23 @@ bool opt_set_dump(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
     return opt_bool(v, &o->dump, ctx, err);
 }
 
+/* --quiet and --verbose: the later one wins. */
 bool opt_set_quiet(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
 {
-    return opt_bool(v, &o->quiet, ctx, err);
+    if (!opt_bool(v, &o->quiet, ctx, err))
+        return false;
+    if (o->quiet)
+        o->verbose = false;
+    return true;
+}
+
+bool opt_set_verbose(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
+{
+    if (!opt_bool(v, &o->verbose, ctx, err))
+        return false;
+    if (o->verbose)
+        o->quiet = false;
+    return true;
 }
 
 bool opt_set_help(options *o, const char *v, const opt_ctx *ctx, opt_err *err)

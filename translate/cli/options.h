@@ -14,6 +14,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "framesel.h"
 #include "povwrite.h"
 #include "look.h"
 #include "render.h"
@@ -28,10 +29,9 @@ enum {
     OPT_RENDER_ONLY = 4, /* only raygl-render takes it */
 };
 
-/* Frames first..last (inclusive; last = UINT64_MAX for "A-"), every step-th. */
-typedef struct frame_range {
-    uint64_t first, last, step;
-} frame_range;
+/* Frames first..last (inclusive; last = UINT64_MAX for "A-"), every
+ * step-th: one item of a --frames list (format/framesel.h). */
+typedef rgl_frame_range frame_range;
 
 /* Settings files read from settings files, at most this deep. */
 #define OPT_SETTINGS_MAX_DEPTH 8
@@ -42,7 +42,7 @@ typedef struct options {
     frame_range *ranges;
     size_t nranges;
     int jobs; /* 0 until opt_finish_parse: one per core */
-    bool dump, quiet, help, version;
+    bool dump, quiet, verbose, help, version;
     pov_options pov; /* shadows, reflection, area lights (options_light.c) */
     bool vertex_lighting; /* --vertex-lighting (interp_gouraud.c) */
     bool gltf;            /* --format gltf: .glb files (gltfwrite.h) */

@@ -238,11 +238,14 @@ void interp_destroy(interp *ip)
     tr_free(ip->fogz);
     tr_free(ip->vmat.mats);
     tr_free(ip->clipv);
+    tr_free(ip->ras_runs);
+    tr_free(ip->ras_pieces);
     interp_textures_free(ip);
     interp_eval_free(ip);
     interp_nurbs_free(ip);
     interp_dest_free(ip);
     interp_sprites_free(ip);
+    interp_zorder_free(ip);
     tr_free(ip);
 }
 
@@ -558,9 +561,9 @@ rgl_status interp_run_slow(interp *ip, const uint8_t *data, size_t size, uint64_
 
 /* ---- Diagnostics ---------------------------------------------------------------- */
 
-static void make_prefix(const interp *ip, char *out, size_t cap)
+static void make_prefix_at(const interp *ip, char *out, size_t cap, bool has_cmd, uint64_t index,
+                           const char *name, uint64_t offset)
 {
-    const rgl_cmd *c = ip->cmd;
     int n = snprintf(out, cap, "frame %llu", (unsigned long long)ip->frame_index);
     if (n < 0 || (size_t)n >= cap)
         return;
@@ -570,10 +573,16 @@ static void make_prefix(const interp *ip, char *out, size_t cap)
             return;
         n += k;
     }
-    if (c)
-        snprintf(out + n, cap - (size_t)n, ", cmd %llu (%s) @0x%llx",
-                 (unsigned long long)c->index, c->info ? c->info->name : "?",
-                 (unsigned long long)c->offset);
+    if (has_cmd)
+        snprintf(out + n, cap - (size_t)n, ", cmd %llu (%s) @0x%llx", (unsigned long long)index,
+                 name ? name : "?", (unsigned long long)offset);
+}
+
+static void make_prefix(const interp *ip, char *out, size_t cap)
+{
+    const rgl_cmd *c = ip->cmd;
+    make_prefix_at(ip, out, cap, c != NULL, c ? c->index : 0, c && c->info ? c->info->name : NULL,
+                   c ? c->offset : 0);
 }
 
 void interp_diag(interp *ip, diag_kind kind, const char *fmt, ...)
@@ -598,9 +607,16 @@ void interp_diag(interp *ip, diag_kind kind, const char *fmt, ...)
     diag_add(ip->log, kind, prefix, "%s", msg);
 }
 
-void interp_clear_notes(interp *ip) { ip->notes_seen = 0; }
+_Static_assert(DIAG_COUNT - DIAG_FIRST_NOTE <= 64, "the notes of a frame are bits of a uint64_t");
+
+void interp_clear_notes(interp *ip) { ip->notes_seen = ip->notes_held = 0; }
 
 void interp_frame_note(interp *ip, diag_kind kind) { interp_note(ip, kind); }
+
+void interp_frame_note_held(interp *ip, diag_kind kind, const char *why)
+{
+    interp_note_held(ip, kind, why);
+}
 
 bool interp_note_said(const interp *ip, diag_kind kind)
 {
@@ -616,6 +632,34 @@ void interp_note(interp *ip, diag_kind kind)
     char prefix[DIAG_PREFIX];
     make_prefix(ip, prefix, sizeof prefix);
     diag_add(ip->log, kind, prefix, "%s", diag_kind_name(kind));
+}
+
+void interp_note_cmd(interp *ip, diag_kind kind, bool has_cmd, uint64_t index, const char *name,
+                     uint64_t offset, const char *why)
+{
+    uint64_t bit = 1ull << (kind - DIAG_FIRST_NOTE);
+    if (!ip->log || (ip->notes_seen & bit) || (why && (ip->notes_held & bit)))
+        return;
+    char prefix[DIAG_PREFIX];
+    make_prefix_at(ip, prefix, sizeof prefix, has_cmd, index, name, offset);
+    if (why) {
+        ip->notes_held |= bit;
+        diag_add_held(ip->log, kind, prefix, why);
+    } else {
+        ip->notes_seen |= bit;
+        diag_add(ip->log, kind, prefix, "%s", diag_kind_name(kind));
+    }
+}
+
+void interp_note_held(interp *ip, diag_kind kind, const char *why)
+{
+    uint64_t bit = 1ull << (kind - DIAG_FIRST_NOTE);
+    if (!ip->log || ((ip->notes_seen | ip->notes_held) & bit))
+        return;
+    ip->notes_held |= bit;
+    char prefix[DIAG_PREFIX];
+    make_prefix(ip, prefix, sizeof prefix);
+    diag_add_held(ip->log, kind, prefix, why);
 }
 
 void interp_bad_enum(interp *ip, const char *what, uint32_t value)

@@ -283,6 +283,11 @@ void interp_set_budget_shift(interp *ip, unsigned shift);
  * drawn unlit, as OpenGL shades them (raygl2pov --vertex-lighting,
  * interp_gouraud.c); off (the default): POV-Ray lights each pixel. */
 void interp_set_vertex_lighting(interp *ip, bool on);
+/* Whether the scenes are rendered with shadows (the default; off:
+ * raygl2pov --no-shadows): the notes of highlights the shadowed render
+ * approximates are said only then, those of the shadowless one only
+ * without (interp_lightset.c). */
+void interp_set_shadows(interp *ip, bool on);
 void interp_destroy(interp *ip);
 
 /* Back to GL's initial state; the scene and log stay attached. */
@@ -302,8 +307,10 @@ void interp_set_resources(interp *ip, interp_resource_fn fn, void *ctx);
 /* Attaches a scene (or NULL) and a log (or NULL). */
 void interp_attach(interp *ip, scene *out, diag_log *log);
 
-/* Logs note `kind` once for the frame (the frame's own notes, frame.c). */
+/* Logs note `kind` once for the frame (the frame's own notes, frame.c);
+ * held: as a note that cannot change a pixel of it, for the reason why. */
 void interp_frame_note(interp *ip, diag_kind kind);
+void interp_frame_note_held(interp *ip, diag_kind kind, const char *why);
 
 /* The camera a frame using several projections should have: true, with
  * its projection and viewport, when it is not the one the frame's first
@@ -365,6 +372,12 @@ const char *interp_frame_missing(const interp *ip, uint32_t *count);
  * frames would have carried), for interp_frame_missing. */
 void interp_missing(interp *ip, const char *what);
 
+/* The line segments the current frame assembled (each pair of GL_LINES,
+ * edge of a strip or loop, outlined polygon edge), whether or not GL
+ * lights a pixel of them: for tests (a segment becomes as many scene
+ * lines as its pixels need, none when it lights none). */
+uint64_t interp_frame_segments(const interp *ip);
+
 /* The state, for tests and for the frame driver. */
 const gl_state *interp_state(const interp *ip);
 
@@ -382,5 +395,9 @@ struct unrec_table;
 /* The calls the current frame's @NotRecorded commands say were not
  * recorded (unrecorded.h); empty for an interpreter without a scene. */
 const struct unrec_table *interp_unrecorded(const interp *ip);
+
+/* Says that the frame being built was recorded without a live GL context
+ * (its uses then include UNREC_USE_BATCH: unrecorded.h). */
+void interp_unrecorded_batch(interp *ip);
 
 #endif

@@ -245,6 +245,7 @@ void interp_accum(interp *ip, const rgl_cmd *cmd)
     switch (op) {
     case GL_ACCUM:
     case GL_LOAD:
+        interp_unrec_use(ip, UNREC_USE_READ);
         if (!isfinite(value))
             value = 0;
         if (!a->active) {

@@ -224,6 +224,7 @@ void interp_arrayelement(interp *ip, const rgl_cmd *cmd)
         interp_arrays_forget(ip);
         return;
     }
+    interp_unrec_use(ip, UNREC_USE_ARRAYS);
     array_element(ip, (uint32_t)i);
     interp_arrays_forget(ip);
 }
@@ -250,6 +251,7 @@ static size_t index_bytes(GLenum type)
 static void draw(interp *ip, GLenum mode, int64_t first, int64_t count, const uint8_t *idx,
                  size_t its)
 {
+    interp_unrec_use(ip, UNREC_USE_ARRAYS);
     /* Each element is checked, then drawn: it costs as a command does. */
     ip->cmds_run += (uint64_t)count;
     if (interp_budget_over(ip, ip->cmd ? ip->cmd->offset : 0))
@@ -273,9 +275,11 @@ static void draw(interp *ip, GLenum mode, int64_t first, int64_t count, const ui
     float unit_tc[INTERP_TEX_UNITS][4];
     memcpy(unit_tc, ip->st.unit_texcoord, sizeof unit_tc);
     interp_prim_begin(ip, mode);
+    ip->prim_indexed = idx != NULL;
     for (int64_t i = 0; i < count && !ip->cut; i++)
         array_element(ip, idx ? index_at(idx, its, (size_t)i) : (uint32_t)(first + i));
     interp_prim_end(ip);
+    ip->prim_indexed = false;
     memcpy(a->current.color, color, sizeof color);
     memcpy(a->current.normal, normal, sizeof normal);
     memcpy(a->current.texcoord, texcoord, sizeof texcoord);

@@ -317,8 +317,8 @@ static void eval_coord(interp *ip, int two, double u, double v)
     memcpy(material, a->lighting.material, sizeof material);
 
     double val[4], du[4], dv[4];
-    if (map_on(ip, two, E_INDEX))
-        interp_note(ip, DIAG_NOTE_EVAL_INDEX);
+    if (map_on(ip, two, E_INDEX)) /* GL 2.1 5.1: the index goes unused in RGBA */
+        interp_note_held(ip, DIAG_NOTE_EVAL_INDEX, "an RGBA window ignores colour indices");
     if (map_on(ip, two, E_COLOR)) {
         eval_map_at(ip, two, E_COLOR, u, v, val, NULL, NULL);
         for (int c = 0; c < 4; c++)

@@ -88,6 +88,8 @@ struct interp {
     char label[48];
     const rgl_cmd *cmd; /* the command being executed */
     uint64_t notes_seen; /* NOTE_* kinds already logged in this frame */
+    uint64_t notes_held; /* NOTE_* kinds already logged held in this frame */
+    struct interp_zorder *zorder; /* the frame's runs of depth modes; NULL: none yet */
     bool cleared;        /* the frame cleared the colour buffer */
     uint32_t painter;    /* draws without a depth test since the frame's start
                             or last clear (interp_prim.c, painter_shift) */
@@ -141,6 +143,7 @@ struct interp {
      * through a const interp). */
     interp_litdir litdir[INTERP_MAX_LIGHTS];
     bool prim_in_eye;   /* prim_to_eye is applied to the vertices themselves */
+    bool prim_indexed;  /* drawn from an index array (glDrawElements and kin) */
     uint8_t prim_blend; /* SCENE_BLEND_* of the primitive */
     int draw_unit[2];   /* the draw's first two enabled texture units, or -1 */
     bool prim_tex_from1; /* the look's texture is draw_unit[1]'s (tex1 coordinates) */
@@ -158,6 +161,11 @@ struct interp {
     size_t cap_edge;
     double (*clipv)[5]; /* clip-space x, y, w of each vertex (culling), then x/w, y/w */
     size_t cap_clipv;
+    uint64_t segments;            /* interp_frame_segments */
+    struct ras_run *ras_runs;     /* a segment's pixels (interp_lines.c) */
+    size_t cap_ras_runs;
+    struct ras_piece *ras_pieces; /* and the strips that cover them */
+    size_t cap_ras_pieces;
     float prim_alpha;        /* the first vertex's alpha (interp_alpha_vertex) */
     bool prim_alpha_varies;  /* another vertex's differs */
     float (*relit_col)[4]; /* GL's lit colour of each vertex (interp_relit.c) */
@@ -242,6 +250,7 @@ struct interp {
         int16_t slot[2 * SCENE_MAX_LIGHTSETS];
     } lsets;
     bool vertex_lighting; /* interp_set_vertex_lighting */
+    bool no_shadows;      /* interp_set_shadows(ip, false) */
 
     /* glMaterial between the vertices of the open primitive
      * (interp_vmaterial.c): each vertex's material once one changed, and
@@ -347,8 +356,29 @@ __attribute__((format(printf, 3, 4)))
 #endif
 void interp_diag(interp *ip, diag_kind kind, const char *fmt, ...);
 
-/* Logs a NOTE_* kind once per frame (the CLI then says it once per run). */
+/* Logs a NOTE_* kind once per frame (the CLI then says it once per run):
+ * call it where the approximation can change a pixel of the frame. */
 void interp_note(interp *ip, diag_kind kind);
+/* Logs a NOTE_* kind once per frame as held: its approximation applies but
+ * cannot change a pixel of this frame, for the reason why (at most
+ * DIAG_WHY - 1 bytes; printed only with --verbose). Nothing once the note is
+ * said in the frame. */
+void interp_note_held(interp *ip, diag_kind kind, const char *why);
+/* interp_note (why NULL) or interp_note_held, naming the command given
+ * (has_cmd: one) instead of the current one: a note decided at the frame's
+ * end names the draw it concerns. */
+void interp_note_cmd(interp *ip, diag_kind kind, bool has_cmd, uint64_t index, const char *name,
+                     uint64_t offset, const char *why);
+
+/* Draw order without a depth test (interp_zorder.c): each draw opens a
+ * run of its depth mode (a depth function other than GL_LESS, GL_LEQUAL or
+ * GL_ALWAYS says NOTE_DEPTH at once); at the frame's end NOTE_DEPTH is said
+ * where the ray tracer's nearest-first can show another primitive than
+ * OpenGL's draw order, else held. */
+void interp_zorder_draw(interp *ip);
+void interp_zorder_begin_frame(interp *ip);
+void interp_zorder_end_frame(interp *ip);
+void interp_zorder_free(interp *ip);
 /* Whether interp_note(kind) would log nothing now (said in this frame, or
  * no log): a costly test for a note may be skipped then. */
 bool interp_note_said(const interp *ip, diag_kind kind);
@@ -679,17 +709,43 @@ void interp_stencil_clear(interp *ip);
 bool interp_masks_hide(interp *ip);
 
 /* Line stipple (interp_stipple.c). interp_stipple_on: lines drawn now are
- * stippled. interp_stipple_dashes: the dashes of eye-space segment p0-p1
- * (w0-w1 in the window, scene_camera_project's), as [from, to] fractions of the
- * segment in eye space (at most max), GL's counter starting at *counter
- * and advanced past the segment. */
+ * stippled. interp_stipple_dashes: the dashes GL draws of window segment
+ * w0-w1 (already clipped), as [from, to] fractions of it (at most max),
+ * GL's counter starting at *counter and advanced past the segment. */
+#define INTERP_STIPPLE_DASHES 2048
 bool interp_stipple_on(const interp *ip);
+size_t interp_stipple_dashes(const interp *ip, const double w0[2], const double w1[2],
+                             double *counter, double (*dash)[2], size_t max);
 /* Polygon stipple (interp_pstipple.c): the look of a filled draw made now
  * takes the stipple when GL_POLYGON_STIPPLE is on and the mask has a hole. */
 void interp_pstipple_look(const interp *ip, scene_look *look);
-size_t interp_stipple_dashes(const interp *ip, const scene_camera *cam, const double p0[3],
-                             const double p1[3], const double w0[2], const double w1[2],
-                             uint64_t *counter, double (*dash)[2], size_t max);
+
+/* Lines and points as GL rasterises them (interp_lines.c). A segment in
+ * eye space, already clipped by the user planes, with GL's colour at its
+ * ends (the provoking vertex's at both when flat); width as glLineWidth
+ * set it. interp_add_line clips it by the near and far planes and the
+ * viewport and adds the strips that cover GL's pixels (each dash of them
+ * when stippled, the counter running on). interp_add_point adds the
+ * pixels of a point of that size (GL's size, after glPointParameter)
+ * whose centre p is inside the view volume; a sprite (GL_POINT_SPRITE)
+ * is the square of that size unrounded, GL's pixel centres inside it. */
+typedef struct interp_line {
+    double p[2][3];
+    float color[2][4];
+    float width;
+    bool smooth, stipple;
+    bool have_win;     /* win: the ends' window positions as GL computes them */
+    double win[2][2];
+} interp_line;
+/* The window position (the frame's, in pixels) of object point obj drawn
+ * now, computed in float as Mesa computes it, so that ties at pixel edges
+ * and diamond corners fall its way; false when the draw is not made with
+ * the camera's own projection and viewport (then the camera's mapping,
+ * in double, places it). */
+bool interp_gl_window(const interp *ip, const float obj[3], double out[2]);
+void interp_add_line(interp *ip, const interp_line *ln, double *stipple_counter);
+void interp_add_point(interp *ip, const double p[3], const double *win, const float color[4],
+                      double size, bool smooth, bool params, bool sprite);
 
 /* glPolygonOffset (interp_offset.c). interp_offset_active: polygons drawn
  * now are offset (their shapes are drawn as GL's facets);
@@ -713,9 +769,9 @@ void interp_accum_buffer_clear(interp *ip);
 
 /* Textured points and point sprites (interp_sprite.c): interp_point_textured
  * takes point pt of vertex v (true: pt is not to be kept) when the draw is
- * textured; interp_point_sprites_end adds what it took as textured squares
+ * textured (a smooth point without sprites: noted, not taken); interp_point_sprites_end adds what it took as textured squares
  * at the draw's end; interp_lines_textured notes a textured line draw. */
-bool interp_point_textured(interp *ip, scene_point *pt, const scene_vertex *v);
+bool interp_point_textured(interp *ip, const scene_point *pt, const scene_vertex *v, bool smooth);
 void interp_point_sprites_end(interp *ip);
 void interp_lines_textured(interp *ip);
 void interp_sprites_free(interp *ip);
@@ -938,5 +994,24 @@ void interp_relit_done(interp *ip);
 void interp_surface_colour(const interp *ip, float out[4]);
 
 static inline float clamp01(float x) { return x > 0 ? (x < 1 ? x : 1) : 0; /* NaN -> 0 */ }
+
+/* Records that this frame draws something unrecorded calls of use u act on
+ * (format/unrecorded.def's UNREC_USE rows; interp_unrecorded.c). */
+static inline void interp_unrec_use(interp *ip, unrec_use u)
+{
+    if (ip->scene)
+        ip->unrecorded.uses |= 1u << u;
+}
+
+/* The uses of a pixel operation: one that draws into the colour buffer
+ * (bitmaps, glDrawPixels, glCopyPixels), reads it (glCopyPixels,
+ * glCopyTex*Image) or reads an image from the program's memory (textures,
+ * pixels, bitmaps, stipples); under GL_MAP_COLOR or GL_MAP_STENCIL, the
+ * pixel maps' too. */
+void interp_unrec_pixel_uses(interp *ip, bool draws, bool reads, bool from_memory);
+
+/* The uses of a draw beginning now (begin_mode): blending, stencil,
+ * points, multisample coverage (textures: interp_draw_units). */
+void interp_unrec_draw_uses(interp *ip, GLenum mode);
 
 #endif

@@ -390,10 +390,24 @@ void interp_fix_fog(interp *ip)
     f.start = a->fog.start;
     f.end = a->fog.end;
     memcpy(f.color, a->fog.color, sizeof f.color);
-    if (!s->fog.on)
+    if (!s->fog.on) {
         s->fog = f;
-    else if (memcmp(&s->fog, &f, sizeof f) != 0)
+        return;
+    }
+    /* Only what the mode uses can differ in the picture (GL 2.1 3.10):
+     * GL_LINEAR's start and end, GL_EXP's and GL_EXP2's density. */
+    scene_fog a0 = s->fog, a1 = f;
+    scene_fog *both[2] = {&a0, &a1};
+    for (int k = 0; k < 2; k++) {
+        if (both[k]->mode == GL_LINEAR)
+            both[k]->density = 0;
+        else
+            both[k]->start = both[k]->end = 0;
+    }
+    if (memcmp(&a0, &a1, sizeof a0) != 0)
         interp_note(ip, DIAG_NOTE_FOG);
+    else if (memcmp(&s->fog, &f, sizeof f) != 0)
+        interp_note_held(ip, DIAG_NOTE_FOG, "what changed is unused by the fog mode");
 }
 
 void interp_lit_color(const interp *ip, const double p[3], const double n[3], bool back,

@@ -66,15 +66,28 @@ static uint64_t hash_lights(const scene_light *l, size_t n)
  * nor one multiple per channel gets highlights of one fitted multiple
  * (povwrite_light.c), and a spot whose specular differs from its diffuse
  * is approximated with --no-shadows. */
+void interp_set_shadows(interp *ip, bool on) { ip->no_shadows = !on; }
+
+/* Each approximation holds for one of the two renders: said for the one
+ * the scenes are made for, held for the other. */
+static void note_render(interp *ip, diag_kind kind, bool with_shadows)
+{
+    if (with_shadows != ip->no_shadows)
+        interp_note(ip, kind);
+    else
+        interp_note_held(ip, kind, with_shadows ? "rendered without shadows (--no-shadows)"
+                                                : "rendered with shadows");
+}
+
 static void note_set(interp *ip, const scene_light *l, size_t n)
 {
     double ratio, t[3];
     if (!scene_lights_specular_ratio(l, n, &ratio) && !scene_lights_specular_channels(l, n, t))
-        interp_note(ip, DIAG_NOTE_SHADOW_HIGHLIGHT);
+        note_render(ip, DIAG_NOTE_SHADOW_HIGHLIGHT, true);
     for (size_t i = 0; i < n; i++)
         if (l[i].kind == SCENE_LIGHT_SPOT &&
             memcmp(l[i].color, l[i].specular, sizeof l[i].color) != 0)
-            interp_note(ip, DIAG_NOTE_SPOT_SPECULAR);
+            note_render(ip, DIAG_NOTE_SPOT_SPECULAR, false);
 }
 
 void interp_lightset_textured(interp *ip, const scene_look *look)
@@ -92,7 +105,7 @@ void interp_lightset_textured(interp *ip, const scene_look *look)
      * No lights (none could be kept): nothing to note, and s->lights may
      * be NULL. */
     if (n > 0 && !scene_lights_specular_ratio(s->lights + first, n, &ratio))
-        interp_note(ip, DIAG_NOTE_SHADOW_HIGHLIGHT);
+        note_render(ip, DIAG_NOTE_SHADOW_HIGHLIGHT, true);
 }
 
 uint32_t interp_lightset_current(interp *ip)

@@ -135,6 +135,8 @@ void interp_draw_units(interp *ip)
         }
         ip->draw_unit[n++] = (int)k;
     }
+    if (n > 0)
+        interp_unrec_use(ip, UNREC_USE_TEXTURE);
 }
 
 void interp_multitex_unbind(interp *ip, uint32_t name)

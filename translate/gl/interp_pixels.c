@@ -270,6 +270,7 @@ void interp_bitmap(interp *ip, const rgl_cmd *cmd)
         interp_diag(ip, DIAG_BAD_NUMBER, "glBitmap: NaN or infinite origin or move");
         return;
     }
+    interp_unrec_pixel_uses(ip, true, false, true);
     gl_attribs *a = &ip->st.a;
     if (!a->current.raster_valid) /* GL 2.1 3.7: ignored, the position stays */
         return;
@@ -385,6 +386,7 @@ void interp_drawpixels(interp *ip, const rgl_cmd *cmd)
         interp_bad_value(ip, "glDrawPixels: negative size");
         return;
     }
+    interp_unrec_pixel_uses(ip, true, false, true);
     if (!ip->st.a.current.raster_valid || !ip->scene || !id || w == 0 || h == 0)
         return;
     draw_pixels(ip, id, format, type, w, h);
@@ -405,6 +407,7 @@ void interp_copypixels(interp *ip, const rgl_cmd *cmd)
         interp_bad_value(ip, "glCopyPixels: negative size");
         return;
     }
+    interp_unrec_pixel_uses(ip, true, true, false);
     if (!ip->st.a.current.raster_valid || !ip->scene || w == 0 || h == 0)
         return;
     if (type != GL_COLOR) {

@@ -105,9 +105,9 @@ static void draw_notes(interp *ip)
     /* Polygon stipple: interp_pstipple.c; line stipple: interp_stipple.c. */
     if (interp_scissor_cuts(ip, a->viewport.rect) && ip->prim_mode <= GL_LINE_STRIP)
         interp_note(ip, DIAG_NOTE_SCISSOR); /* lines and points: drawn whole */
-    /* Blend equations and logic ops: interp_blend.c. */
-    if (!c[INTERP_CAP_DEPTH_TEST] || (a->depth.func != GL_LESS && a->depth.func != GL_LEQUAL))
-        interp_note(ip, DIAG_NOTE_DEPTH);
+    /* Blend equations and logic ops: interp_blend.c; the fade threshold:
+     * add_point, for points below it. */
+    interp_zorder_draw(ip); /* NOTE_DEPTH, at the frame's end */
     /* GL 1.x 3.9: with GL_SINGLE_COLOR the texture modulates the specular
      * term too; POV-Ray adds the highlight after the texture, which is
      * GL_SEPARATE_SPECULAR_COLOR. */
@@ -353,6 +353,7 @@ static void begin_mode(interp *ip, GLenum mode)
     interp_accum_draw(ip);
     if (ip->accum.active)
         return; /* a later accumulation pass: the scene holds the first */
+    interp_unrec_draw_uses(ip, mode);
     draw_notes(ip);
     interp_proj_vote(ip, mode);
     interp_fix_camera(ip);
@@ -758,8 +759,9 @@ typedef struct assembly {
     bool point_params; /* glPointParameter away from its defaults */
     bool list_quads; /* quads split along v1-v3, as Mesa does in a list or when clipping */
     bool stipple;       /* glLineStipple applies (interp_stipple.c) */
-    uint64_t stipple_s; /* GL's stipple counter */
+    double stipple_s;   /* GL's stipple counter (a float in Mesa) */
     int relit;          /* INTERP_RELIT_*: filled faces lit as GL does (interp_relit.c) */
+    bool lit_edges;     /* outlined (GL_LINE, GL_POINT) lit faces: GL's lit colours, relit_col */
     bool fog_split;     /* triangles behind the eye get their own fog (interp_fogbehind.c) */
     const scene_look *look; /* the mesh's look, and where its vertices are, for fog_split */
     const mat4 *to_eye;
@@ -804,121 +806,52 @@ static bool eye_pos(const interp *ip, const scene_vertex *v, double out[3])
     return isfinite(out[0]) && isfinite(out[1]) && isfinite(out[2]);
 }
 
-/* Width in pixels as GL rasterises it: aliased widths round to an integer,
- * at least 1 (GL 1.x 3.3, 3.4.2). */
-static float raster_width(float w, bool smooth)
+/* The colour GL rasterises pool vertex i with: its own, or for an
+ * outlined lit face GL's lit colour (the pool holds the colour POV-Ray
+ * lights a filled face with). */
+static const float *edge_colour(const assembly *as, uint32_t i)
 {
-    if (!(w > 0))
-        return 1;
-    if (smooth)
-        return w;
-    float r = floorf(w + 0.5f);
-    return r < 1 ? 1 : r;
+    if (as->lit_edges)
+        return as->ip->relit_col[i - as->base];
+    return as->s->verts[i].color;
 }
 
-/* Unit vectors along the camera's image axes, in eye space. */
-static void image_axes(const scene_camera *cam, double r[3], double u[3])
-{
-    double rl = sqrt(cam->right[0] * cam->right[0] + cam->right[1] * cam->right[1] +
-                     cam->right[2] * cam->right[2]);
-    double ul = sqrt(cam->up[0] * cam->up[0] + cam->up[1] * cam->up[1] + cam->up[2] * cam->up[2]);
-    for (int k = 0; k < 3; k++) {
-        r[k] = rl > 0 ? cam->right[k] / rl : (k == 0);
-        u[k] = ul > 0 ? cam->up[k] / ul : (k == 1);
-    }
-}
-
-/* GL draws an aliased line of width w as w pixels across its minor axis
- * in every column (or row) it covers, from one end to the other (GL 1.x
- * 3.4.2): a parallelogram with its short sides along the minor axis. An
- * antialiased one is a rectangle w wide. Both become a band in the plane
- * of the segment and an image axis, whose edges sit the right number of
- * pixels off at each end's own depth, so its image is GL's parallelogram. */
+/* A segment of the primitive, between pool vertices i0 and i1, with the
+ * colours GL gives it (flat: the provoking vertex's). */
 static void add_segment(assembly *as, uint32_t i0, uint32_t i1, uint32_t provoking)
 {
     interp *ip = as->ip;
     const scene_vertex *v0 = &as->s->verts[i0], *v1 = &as->s->verts[i1];
-    const scene_camera *cam = &as->s->camera;
-    double p[2][3], w0[2], w1[2], t[2];
+    interp_line ln;
+    double t[2];
     if (ip->stencil.only)
         return; /* into the stencil buffer alone (not followed: a note) */
-    if (!eye_pos(ip, v0, p[0]) || !eye_pos(ip, v1, p[1]) ||
-        !interp_clip_segment(ip, p[0], p[1], &t[0], &t[1]))
+    ip->segments++;
+    if (!eye_pos(ip, v0, ln.p[0]) || !eye_pos(ip, v1, ln.p[1]) ||
+        !interp_clip_segment(ip, ln.p[0], ln.p[1], &t[0], &t[1]))
         return;
-    if (!scene_camera_project(cam, p[0], w0) || !scene_camera_project(cam, p[1], w1))
-        return;
-    double dx = w1[0] - w0[0], dy = w1[1] - w0[1], len = hypot(dx, dy);
-    if (!(len > 1e-6))
-        return; /* no extent on screen: GL draws nothing */
-    double ox, oy; /* offset of an edge from the centre line, in pixels */
-    if (as->line_smooth) {
-        ox = -dy / len * as->line_width * 0.5;
-        oy = dx / len * as->line_width * 0.5;
-    } else if (fabs(dx) >= fabs(dy)) {
-        ox = 0;
-        oy = as->line_width * 0.5;
-    } else {
-        ox = as->line_width * 0.5;
-        oy = 0;
-    }
-    /* Stippled: the dashes GL draws (interp_stipple.c); else the whole. */
-    double dash[1024][2] = {{0, 1}};
-    size_t ndash = 1;
-    if (as->stipple)
-        ndash = interp_stipple_dashes(ip, cam, p[0], p[1], w0, w1, &as->stipple_s, dash,
-                                      sizeof dash / sizeof dash[0]);
-    double r[3], u[3];
-    image_axes(cam, r, u);
-    const scene_vertex *c0 = as->flat ? &as->s->verts[provoking] : v0;
-    const scene_vertex *c1 = as->flat ? &as->s->verts[provoking] : v1;
-    for (size_t d = 0; d < ndash; d++) {
-        double q[2][3], px[2], py[2];
-        for (int e = 0; e < 2; e++)
-            for (int k = 0; k < 3; k++)
-                q[e][k] = p[0][k] + (p[1][k] - p[0][k]) * dash[d][e];
-        if (!scene_camera_pixel_size(cam, q[0], &px[0], &py[0]) ||
-            !scene_camera_pixel_size(cam, q[1], &px[1], &py[1]))
-            continue;
-        scene_line *l = scene_add_line(as->s);
-        if (!l)
-            return;
-        for (int e = 0; e < 2; e++)
-            for (int k = 0; k < 3; k++) {
-                l->p[e][k] = (float)q[e][k];
-                l->half[e][k] = (float)(ox * px[e] * r[k] + oy * py[e] * u[k]);
-            }
-        /* cut by a clip plane or the stipple: the colour there */
-        for (int e = 0; e < 2; e++) {
-            double te = t[0] + (t[1] - t[0]) * dash[d][e];
-            for (int k = 0; k < 4; k++)
-                l->color[e][k] = (float)(c0->color[k] + (c1->color[k] - c0->color[k]) * te);
-            interp_fogsec_eye(as->ip, q[e][2], l->color[e]);
-        }
-    }
+    const float *c0 = edge_colour(as, as->flat ? provoking : i0);
+    const float *c1 = edge_colour(as, as->flat ? provoking : i1);
+    /* cut by a clip plane: the colour there */
+    for (int e = 0; e < 2; e++)
+        for (int k = 0; k < 4; k++)
+            ln.color[e][k] = (float)(c0[k] + (c1[k] - c0[k]) * t[e]);
+    ln.width = as->line_width;
+    ln.smooth = as->line_smooth;
+    ln.stipple = as->stipple;
+    ln.have_win = t[0] == 0 && t[1] == 1 && interp_gl_window(ip, v0->pos, ln.win[0]) &&
+                  interp_gl_window(ip, v1->pos, ln.win[1]);
+    interp_add_line(ip, &ln, &as->stipple_s);
 }
 
-/* GL's aliased point: a square of size x size pixels centred on the
- * point (GL 1.x 3.3); a smooth one is round. GL clips a point by its
- * centre alone (2.12): inside the view volume it is drawn whole, outside
- * not at all. */
+/* GL's point (GL 1.x 3.3) clipped by its centre alone (2.12): inside the
+ * view volume it is drawn whole, outside not at all. */
 static void add_point(assembly *as, uint32_t i, uint32_t colour_from)
 {
-    double p[3], px, py, r[3], u[3], w[2];
-    const scene_camera *cam = &as->s->camera;
+    double p[3];
     if (as->ip->stencil.only)
         return;
-    if (!eye_pos(as->ip, &as->s->verts[i], p) || !interp_clip_point(as->ip, p) ||
-        !scene_camera_pixel_size(cam, p, &px, &py) || !scene_camera_project(cam, p, w))
-        return;
-    if (fabs(w[0]) > cam->width * 0.5 || fabs(w[1]) > cam->height * 0.5)
-        return;
-    for (int k = 0; k < 2 && cam->has_clip; k++)
-        if (cam->clip[k][0] * p[0] + cam->clip[k][1] * p[1] + cam->clip[k][2] * p[2] +
-                cam->clip[k][3] + (k == 0 ? interp_painter_reach(as->ip) : 0) < 0)
-            return; /* the near plane (0) lets the painter's shift through */
-    image_axes(cam, r, u);
-    scene_point *pt = scene_add_point(as->s);
-    if (!pt)
+    if (!eye_pos(as->ip, &as->s->verts[i], p) || !interp_clip_point(as->ip, p))
         return;
     double size = as->point_size, fade = 1;
     if (as->point_params)
@@ -926,21 +859,20 @@ static void add_point(assembly *as, uint32_t i, uint32_t colour_from)
     /* GL fades points below the threshold when multisampling (GL 2.1 3.3) */
     if (size < as->ip->st.a.point.fade_threshold)
         interp_note(as->ip, DIAG_NOTE_POINT_FADE);
-    bool exact = as->point_smooth || as->point_sprite;
-    if (!as->point_params || !exact)
-        size = raster_width((float)size, exact);
-    double h = size * 0.5;
-    for (int k = 0; k < 3; k++) {
-        pt->p[k] = (float)p[k];
-        pt->right[k] = (float)(h * px * r[k]);
-        pt->up[k] = (float)(h * py * u[k]);
-    }
-    pt->round = as->point_smooth;
-    memcpy(pt->color, as->s->verts[colour_from].color, sizeof pt->color);
-    interp_fogsec_eye(as->ip, p[2], pt->color);
-    pt->color[3] *= (float)fade;
-    if (interp_point_textured(as->ip, pt, &as->s->verts[i]))
-        as->s->npoints--; /* a textured square instead (interp_sprite.c) */
+    float c[4];
+    memcpy(c, edge_colour(as, colour_from), sizeof c);
+    c[3] *= (float)fade;
+    double win[2];
+    bool gl_win = interp_gl_window(as->ip, as->s->verts[i].pos, win);
+    size_t first = as->s->npoints;
+    interp_add_point(as->ip, p, gl_win ? win : NULL, c, size, as->point_smooth, as->point_params,
+                     as->point_sprite);
+    bool taken = as->s->npoints > first;
+    for (size_t k = first; k < as->s->npoints && taken; k++)
+        taken = interp_point_textured(as->ip, &as->s->points[k], &as->s->verts[i],
+                                      as->point_smooth);
+    if (taken)
+        as->s->npoints = first; /* textured squares instead (interp_sprite.c) */
 }
 
 /* Whether a vertex of the primitive lies outside the view volume. Mesa
@@ -1128,6 +1060,7 @@ static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t prov
             fill_tri(as, idx[0], idx[k], idx[k + 1], provoking);
         return;
     }
+    as->stipple_s = 0; /* each polygon restarts the stipple (NOTE_STIPPLE) */
     for (int k = 0; k < n; k++) {
         if (!(ip->edge[idx[k]] & 1))
             continue; /* GL draws only boundary edges (and their vertices) */
@@ -1346,6 +1279,17 @@ static void vertices_to_eye(interp *ip, uint32_t n)
     }
 }
 
+/* Whether the open primitive's vertices (in the pool from prim_first on;
+ * none for a solid, of the current colour) share one colour. */
+static bool prim_one_colour(const interp *ip)
+{
+    const scene *s = ip->scene;
+    for (size_t i = ip->prim_first + 1; i < s->nverts; i++)
+        if (memcmp(s->verts[i].color, s->verts[ip->prim_first].color, sizeof(float[4])) != 0)
+            return false;
+    return true;
+}
+
 scene_look interp_current_look(interp *ip)
 {
     scene_look look;
@@ -1372,12 +1316,15 @@ scene_look interp_current_look(interp *ip)
     if (look.texture1 >= 0) {
         const scene_texture *t0 = look.texture >= 0 ? &ip->scene->textures[look.texture] : NULL;
         const scene_texture *t1 = &ip->scene->textures[look.texture1];
+        bool one_colour = t0 && !(t0->env_mode == GL_MODULATE && t1->env_mode == GL_MODULATE) &&
+                          !t0->colour_is_texel && (look.lit || !look.flat);
         if (t1->colour_is_texel) /* the second unit's texel replaces the first's result */
             look.texture = -1;
-        else if ((t0 && !(t0->env_mode == GL_MODULATE && t1->env_mode == GL_MODULATE) &&
-                  !t0->colour_is_texel && (look.lit || !look.flat)) ||
+        else if ((one_colour && (look.lit || !prim_one_colour(ip))) ||
                  (t0 && look.blend != SCENE_BLEND_OPAQUE))
             interp_note(ip, DIAG_NOTE_MULTITEX); /* see the note's text */
+        else if (one_colour) /* unlit, and every vertex has the colour it is combined with */
+            interp_note_held(ip, DIAG_NOTE_MULTITEX, "the draw's vertices share one colour");
     }
     if (look.texture < 0 && look.texture1 >= 0) {
         /* An incomplete (or replaced) first unit passes its input on: the
@@ -1458,15 +1405,20 @@ static void end_primitive_body(interp *ip)
     as.swap = a->polygon.front_face == GL_CW;
     as.line_smooth = a->caps[INTERP_CAP_LINE_SMOOTH];
     as.stipple = interp_stipple_on(ip);
-    if (as.stipple && (ip->prim_mode <= GL_LINE_STRIP || a->polygon.mode[0] == GL_LINE ||
-                       a->polygon.mode[1] == GL_LINE))
+    /* Stippled lines are cut as Mesa cuts them (interp_stipple.c); the
+     * edges of outlined polygons restart the pattern where Mesa's own
+     * triangles begin, which the translator does not follow. */
+    if (as.stipple && ip->prim_mode > GL_LINE_STRIP &&
+        (a->polygon.mode[0] == GL_LINE || a->polygon.mode[1] == GL_LINE))
         interp_note(ip, DIAG_NOTE_STIPPLE);
     as.point_sprite = a->caps[INTERP_CAP_POINT_SPRITE];
     as.point_smooth = a->caps[INTERP_CAP_POINT_SMOOTH] && !as.point_sprite;
-    as.line_width = raster_width(a->line.width, as.line_smooth);
-    as.point_size = raster_width(a->point.size, as.point_smooth || as.point_sprite);
+    as.line_width = a->line.width;
+    as.point_size = a->point.size;
     as.point_params = interp_point_params_set(a);
-    as.list_quads = ip->list_depth > (ip->list_ce ? 1 : 0);
+    /* Mesa splits quads along v1-v3 in a list, and when drawn from an
+     * index array (tests/programs/conf_arrays_quad_split.c). */
+    as.list_quads = ip->list_depth > (ip->list_ce ? 1 : 0) || ip->prim_indexed;
     as.alpha_test = interp_alpha_testing(ip);
     for (uint32_t i = 0; i < n && !as.check_bad; i++)
         if (!vertex_ok(&s->verts[as.base + i]))
@@ -1527,6 +1479,16 @@ static void end_primitive_body(interp *ip)
     as.relit = interp_relit_split(ip, &look);
     if (as.relit && as.relit != INTERP_RELIT_PROBE && !interp_relit_need_clear(ip, n))
         as.relit = 0;
+    /* Outlined faces lit: GL lights their vertices (one-sided lighting;
+     * interp_relit.c keeps what that needs). */
+    if (look.lit && (a->polygon.mode[0] != GL_FILL || a->polygon.mode[1] != GL_FILL)) {
+        if (interp_relit_wanted(ip)) {
+            interp_relit_flush(ip);
+            as.lit_edges = ip->relit_made >= n && ip->relit_col;
+        }
+        if (!as.lit_edges)
+            interp_note(ip, DIAG_NOTE_LIT_OUTLINE);
+    }
     bool filled = !as.check_bad && a->polygon.mode[0] == GL_FILL;
     if (filled && !as.facing && !as.relit)
         assemble_filled(&as, mode, n);

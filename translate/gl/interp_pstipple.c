@@ -19,6 +19,7 @@ void interp_polygonstipple(interp *ip, const rgl_cmd *cmd)
     uint32_t id = (uint32_t)cmd->arg[0].v.u, lost = 0;
     if (!id)
         return; /* unread (a NULL mask is GL's error too): the mask stays */
+    interp_unrec_pixel_uses(ip, false, false, true);
     const uint8_t *bits = ip->scene ? interp_pixels_fetch(ip, id, 128, &lost) : NULL;
     if (bits)
         memcpy(ip->st.a.polygon.stipple, bits, 128);

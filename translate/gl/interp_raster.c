@@ -54,13 +54,15 @@ void interp_begin_frame(interp *ip)
     ip->camera_fixed = false;
     ip->frame_begin = false;
     ip->frame_name[0] = '\0';
-    ip->notes_seen = 0;
+    ip->notes_seen = ip->notes_held = 0;
     ip->cleared = false;
     ip->painter = 0;
     ip->shape_facets = 0;
+    ip->segments = 0;
     ip->pixels_mark = 0;
     ip->nclear_rects = 0;
     interp_proj_begin_frame(ip);
+    interp_zorder_begin_frame(ip);
     unrec_clear(&ip->unrecorded);
     interp_accum_begin_frame(ip);
     interp_bounds_begin_frame(ip);
@@ -85,6 +87,7 @@ void interp_end_frame(interp *ip)
         return;
     interp_fix_camera(ip);
     interp_proj_end_frame(ip);
+    interp_zorder_end_frame(ip);
     interp_pixels_end_frame(ip);
     interp_dest_end_frame(ip);
     interp_scissor_end_frame(ip);

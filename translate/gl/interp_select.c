@@ -79,7 +79,7 @@ bool interp_render_mode_draws(interp *ip)
     if (ip->st.render_mode == GL_RENDER)
         return true;
     if (ip->scene)
-        interp_note(ip, DIAG_NOTE_RENDER_MODE);
+        interp_note_held(ip, DIAG_NOTE_RENDER_MODE, "OpenGL draws none of it either");
     return false;
 }
 

@@ -8,8 +8,9 @@
  * across the square and t from 0 to 1 down (GL_UPPER_LEFT, the default
  * GL_POINT_SPRITE_COORD_ORIGIN) or up (GL_LOWER_LEFT), and point
  * antialiasing is ignored. Either way the point becomes a textured square
- * in the scene: the four corners of the square interp_prim.c computed for
- * it (its size with the distance attenuation of glPointParameter), in eye
+ * in the scene: the four corners of the square interp_add_point computed
+ * for it (its size with the distance attenuation of glPointParameter,
+ * GL's pixels of an aliased point, a sprite's own square), in eye
  * space, with the texture and environment of the draw, unlit (a lit
  * point's colour is GL's, taken at its vertex). A smooth textured point
  * without sprites (a textured disc) and textured lines stay untextured,
@@ -31,13 +32,13 @@ void interp_sprites_free(interp *ip)
     ip->nsprites = ip->cap_sprites = 0;
 }
 
-bool interp_point_textured(interp *ip, scene_point *pt, const scene_vertex *v)
+bool interp_point_textured(interp *ip, const scene_point *pt, const scene_vertex *v, bool smooth)
 {
     if (ip->draw_unit[0] < 0)
         return false;
     interp_tex_unit u = interp_unit(ip, (uint32_t)ip->draw_unit[0]);
     bool sprite = ip->st.a.caps[INTERP_CAP_POINT_SPRITE];
-    if (pt->round && !sprite) {
+    if (smooth && !sprite) {
         interp_note(ip, DIAG_NOTE_POINT_TEXTURE);
         return false;
     }

@@ -66,6 +66,7 @@ void interp_copyteximage1d(interp *ip, const rgl_cmd *cmd)
         return;
     if (!copy_ok(ip, w, 1, level, border))
         return;
+    interp_unrec_pixel_uses(ip, false, true, false);
     if (!id)
         copy_unread(ip, "glCopyTexImage1D", w, 1);
     interp_tex_image(ip, arg_enum(cmd, 0), (int32_t)level, (int32_t)cmd->arg[2].v.i, w, 1,
@@ -81,6 +82,7 @@ void interp_copyteximage2d(interp *ip, const rgl_cmd *cmd)
         return;
     if (!copy_ok(ip, w, h, level, border))
         return;
+    interp_unrec_pixel_uses(ip, false, true, false);
     if (!id)
         copy_unread(ip, "glCopyTexImage2D", w, h);
     interp_tex_image(ip, arg_enum(cmd, 0), (int32_t)level, (int32_t)cmd->arg[2].v.i, w, h,
@@ -95,6 +97,7 @@ void interp_copytexsubimage1d(interp *ip, const rgl_cmd *cmd)
         return;
     if (!copy_ok(ip, w, 1, level, 0))
         return;
+    interp_unrec_pixel_uses(ip, false, true, false);
     if (!id)
         copy_unread(ip, "glCopyTexSubImage1D", w, 1);
     interp_tex_subimage(ip, 1, arg_enum(cmd, 0), level, cmd->arg[2].v.i, 0, w, 1, GL_RGBA,
@@ -109,6 +112,7 @@ void interp_copytexsubimage2d(interp *ip, const rgl_cmd *cmd)
         return;
     if (!copy_ok(ip, w, h, level, 0))
         return;
+    interp_unrec_pixel_uses(ip, false, true, false);
     if (!id)
         copy_unread(ip, "glCopyTexSubImage2D", w, h);
     interp_tex_subimage(ip, 2, arg_enum(cmd, 0), level, cmd->arg[2].v.i, cmd->arg[3].v.i, w, h,
@@ -141,6 +145,7 @@ void interp_copytexsubimage3d(interp *ip, const rgl_cmd *cmd)
     if (interp_reject_in_begin(ip) || !target3d_ok(ip, arg_enum(cmd, 0), false) ||
         !size3d_ok(ip, w, h, 1, cmd->arg[1].v.i))
         return;
+    interp_unrec_pixel_uses(ip, false, true, false);
     if (!id)
         copy_unread(ip, "glCopyTexSubImage3D", w, h);
     interp_tex_subimage3d(ip, cmd->arg[1].v.i, cmd->arg[2].v.i, cmd->arg[3].v.i,
@@ -160,6 +165,7 @@ void interp_teximage3d(interp *ip, const rgl_cmd *cmd)
     }
     if (target == GL_PROXY_TEXTURE_3D)
         return;
+    interp_unrec_pixel_uses(ip, false, false, true);
     interp_tex_image3d(ip, (int32_t)cmd->arg[1].v.i, (int32_t)cmd->arg[2].v.i, cmd->arg[3].v.i,
                        cmd->arg[4].v.i, cmd->arg[5].v.i, (int32_t)border, arg_enum(cmd, 7),
                        arg_enum(cmd, 8), (uint32_t)cmd->arg[9].v.u);
@@ -170,6 +176,7 @@ void interp_texsubimage3d(interp *ip, const rgl_cmd *cmd)
     if (interp_reject_in_begin(ip) || !target3d_ok(ip, arg_enum(cmd, 0), false) ||
         !size3d_ok(ip, cmd->arg[5].v.i, cmd->arg[6].v.i, cmd->arg[7].v.i, cmd->arg[1].v.i))
         return;
+    interp_unrec_pixel_uses(ip, false, false, true);
     interp_tex_subimage3d(ip, cmd->arg[1].v.i, cmd->arg[2].v.i, cmd->arg[3].v.i,
                           cmd->arg[4].v.i, cmd->arg[5].v.i, cmd->arg[6].v.i, cmd->arg[7].v.i,
                           arg_enum(cmd, 8), arg_enum(cmd, 9), (uint32_t)cmd->arg[10].v.u);

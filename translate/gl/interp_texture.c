@@ -727,6 +727,7 @@ static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t inte
 
 void interp_teximage1d(interp *ip, const rgl_cmd *cmd)
 {
+    interp_unrec_pixel_uses(ip, false, false, true);
     tex_image_set(ip, arg_enum(cmd, 0), (int32_t)cmd->arg[1].v.i, (int32_t)cmd->arg[2].v.i,
                   cmd->arg[3].v.i, 1, (int32_t)cmd->arg[4].v.i, arg_enum(cmd, 5),
                   arg_enum(cmd, 6), (uint32_t)cmd->arg[7].v.u);
@@ -734,6 +735,7 @@ void interp_teximage1d(interp *ip, const rgl_cmd *cmd)
 
 void interp_teximage2d(interp *ip, const rgl_cmd *cmd)
 {
+    interp_unrec_pixel_uses(ip, false, false, true);
     tex_image_set(ip, arg_enum(cmd, 0), (int32_t)cmd->arg[1].v.i, (int32_t)cmd->arg[2].v.i,
                   cmd->arg[3].v.i, cmd->arg[4].v.i, (int32_t)cmd->arg[5].v.i, arg_enum(cmd, 6),
                   arg_enum(cmd, 7), (uint32_t)cmd->arg[8].v.u);
@@ -763,6 +765,7 @@ static tex_image *image_own(interp *ip, tex_image **slot)
 
 void interp_texsubimage2d(interp *ip, const rgl_cmd *cmd)
 {
+    interp_unrec_pixel_uses(ip, false, false, true);
     interp_tex_subimage(ip, 2, arg_enum(cmd, 0), cmd->arg[1].v.i, cmd->arg[2].v.i,
                         cmd->arg[3].v.i, cmd->arg[4].v.i, cmd->arg[5].v.i, arg_enum(cmd, 6),
                         arg_enum(cmd, 7), (uint32_t)cmd->arg[8].v.u);
@@ -1600,7 +1603,12 @@ static tex_image *tex3d_slice(interp *ip, const tex_obj *o, int k)
         ip->scene->failed = true;
         return NULL;
     }
-    interp_note(ip, DIAG_NOTE_TEX_3D);
+    /* GL_LINEAR's blend of two slices is rounded to 8 bits before it is
+     * filtered across s and t: a level off where GL rounds once. */
+    if (o->mag_filter == GL_LINEAR)
+        interp_note(ip, DIAG_NOTE_TEX_3D);
+    else
+        interp_note_held(ip, DIAG_NOTE_TEX_3D, "GL_NEAREST picks the one slice OpenGL samples");
     return img;
 }
 
@@ -1726,8 +1734,21 @@ int32_t interp_texture_for_unit(interp *ip, int k)
      * (interp_vertex_texcoord maps [-1, 1] onto it). */
     bool ms = interp_mirror_clamp(o->wrap_s);
     bool mt = o->target != GL_TEXTURE_1D && interp_mirror_clamp(o->wrap_t);
-    if (ms || mt)
-        interp_note(ip, DIAG_NOTE_TEX_MIRROR_CLAMP);
+    if ((ms && o->wrap_s == GL_MIRROR_CLAMP_EXT) || (mt && o->wrap_t == GL_MIRROR_CLAMP_EXT)) {
+        /* The mirrored image clamped to its edge is GL's own sampling but
+         * where GL_MIRROR_CLAMP_EXT blends the border colour into the
+         * edge texels under linear filtering (as GL_CLAMP does). */
+        bool linear = o->mag_filter == GL_LINEAR || o->min_filter == GL_LINEAR ||
+                      o->min_filter == GL_LINEAR_MIPMAP_NEAREST ||
+                      o->min_filter == GL_LINEAR_MIPMAP_LINEAR;
+        if (linear)
+            interp_note(ip, DIAG_NOTE_TEX_MIRROR_CLAMP);
+        else
+            interp_note_held(ip, DIAG_NOTE_TEX_MIRROR_CLAMP, "GL_NEAREST samples no border");
+    } else if (ms || mt) {
+        interp_note_held(ip, DIAG_NOTE_TEX_MIRROR_CLAMP,
+                         "GL_MIRROR_CLAMP_TO_EDGE and _TO_BORDER are sampled as OpenGL does");
+    }
     scene_texture st;
     memset(&st, 0, sizeof st);
     st.width = im->width * (ms ? 2 : 1);

@@ -1154,7 +1154,7 @@ static void write_lines_points(writer *w)
                 continue;
             for (int e = 0; e < 2; e++) {
                 double p[3] = {l->p[e][0], l->p[e][1], l->p[e][2]};
-                push_vertex(w, p, zero, l->color[e], nouv, NULL, NULL);
+                push_vertex(w, p, zero, l->color[2 * e], nouv, NULL, NULL);
             }
         }
         flush_prim(w, &pj, 1, mat, true, false, false);

@@ -219,8 +219,8 @@ static int write_bands(povwriter *w, outbuf *ob)
     return povmesh2_write(w, ob, w->bverts, w->btris, w->nbtris, &look, NULL);
 }
 
-/* Lines: one mesh2 of flat quads in eye space (see scene.h: each is the
- * band GL rasterises). */
+/* Lines: one mesh2 of flat quads in eye space (scene.h: the strips that
+ * cover GL's pixels). */
 static int write_lines(povwriter *w, outbuf *ob, const scene *s)
 {
     w->nbverts = w->nbtris = 0;
@@ -237,7 +237,7 @@ static int write_lines(povwriter *w, outbuf *ob, const scene *s)
             c[2][k] = l->p[1][k] + l->half[1][k];
             c[3][k] = l->p[1][k] - l->half[1][k];
         }
-        const float *col[4] = {l->color[0], l->color[0], l->color[1], l->color[1]};
+        const float *col[4] = {l->color[0], l->color[1], l->color[2], l->color[3]};
         if (add_quad(w, c, col) != 0)
             return -1;
     }
@@ -274,36 +274,16 @@ static void scene_anchor(const scene *s, float out[3])
         }
 }
 
-/* Points: squares as one mesh2, round ones as discs facing the camera.
- * They stay outside the near/far clip: the interpreter kept only points
- * whose centres GL would draw, and GL then draws them whole. */
+/* Points: their rectangles as one mesh2. They stay outside the near/far
+ * clip: the interpreter kept only points whose centres GL would draw, and
+ * GL then draws them whole. */
 static int write_points(povwriter *w, outbuf *ob, const scene *s)
 {
-    const scene_camera *cam = &s->camera;
     w->nbverts = w->nbtris = 0;
     for (size_t i = 0; i < s->npoints; i++) {
         const scene_point *pt = &s->points[i];
         if (!finite3f(pt->p) || !finite3f(pt->right) || !finite3f(pt->up))
             continue;
-        if (pt->round) {
-            float r = sqrtf(pt->up[0] * pt->up[0] + pt->up[1] * pt->up[1] + pt->up[2] * pt->up[2]);
-            double n[3];
-            for (int k = 0; k < 3; k++)
-                n[k] = cam->kind == SCENE_CAMERA_ORTHOGRAPHIC ? -cam->direction[k]
-                                                              : cam->location[k] - pt->p[k];
-            if (!(r > 0) || !isfinite(r) || !finite3d(n) || (n[0] == 0 && n[1] == 0 && n[2] == 0))
-                continue;
-            outbuf_puts(ob, "disc{");
-            put_vec3f(ob, pt->p);
-            outbuf_putc(ob, ',');
-            put_vec3d(ob, n);
-            outbuf_putc(ob, ',');
-            outbuf_f32(ob, r);
-            outbuf_putc(ob, ' ');
-            povwrite_unlit_texture(ob, pt->color);
-            outbuf_puts(ob, w->light.opt.no_shadows ? " no_shadow}\n" : "}\n");
-            continue;
-        }
         static const int sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
         float c[4][3];
         for (int v = 0; v < 4; v++)
@@ -723,6 +703,44 @@ static void put_ini_value(outbuf *ob, const char *a, const char *b)
     outbuf_putc(ob, '\n');
 }
 
+/* dir inside an SDL string: a backslash escapes (quotes and control
+ * characters never reach here: pov_ini_path_ok). */
+static void put_sdl_path(outbuf *ob, const char *dir)
+{
+    for (const char *p = dir; *p; p++) {
+        if (*p == '\\')
+            outbuf_putc(ob, '\\');
+        outbuf_putc(ob, *p);
+    }
+}
+
+int pov_write_folder_check(outbuf *ob, const char *dir)
+{
+    if (!pov_ini_path_ok(dir))
+        return -1;
+    size_t dl = strlen(dir);
+    const char *sep = dl > 0 && dir[dl - 1] == '/' ? "" : "/";
+    outbuf_puts(ob, "// Written by raygl2pov, read first by every .ini of this folder\n"
+                    "// (Include_Header): their paths are relative to the folder raygl2pov\n"
+                    "// ran in, and POV-Ray reads INI paths from the current folder. Run\n"
+                    "// from anywhere else, the render stops here and says so.\n"
+                    "#ifndef (" POV_RENDER_DECLARE ")\n"
+                    "#if (!file_exists(concat(\"");
+    put_sdl_path(ob, dir);
+    outbuf_puts(ob, sep);
+    outbuf_puts(ob, "\", input_file_name)))\n"
+                    "#error concat(\"run povray from the folder raygl2pov ran in, the one that "
+                    "holds ");
+    put_sdl_path(ob, dir);
+    outbuf_puts(ob, ": this .ini names its files from there (povray ");
+    put_sdl_path(ob, dir);
+    outbuf_puts(ob, sep);
+    outbuf_puts(ob, "\", substr(input_file_name, 1, strlen(input_file_name) - 4), \".ini)\")\n"
+                    "#end\n"
+                    "#end\n");
+    return ob->failed ? -1 : 0;
+}
+
 int pov_write_ini(outbuf *ob, const scene *s, const char *dir, const char *pov_file,
                   const char *png_file)
 {
@@ -743,6 +761,7 @@ int pov_write_ini(outbuf *ob, const scene *s, const char *dir, const char *pov_f
                     "; raygl2pov ran in (POV-Ray reads INI paths from the current folder).\n");
     outbuf_puts(ob, "Library_Path=");
     put_ini_value(ob, dir, NULL);
+    outbuf_puts(ob, "Include_Header=" POV_FOLDER_CHECK "\n");
     outbuf_puts(ob, "Input_File_Name=");
     put_ini_value(ob, pov_file, NULL);
     outbuf_puts(ob, "Output_File_Name=");

@@ -66,4 +66,18 @@ int pov_write_ini(outbuf *ob, const scene *s, const char *dir, const char *pov_f
 /* True when pov_write_ini can express this folder name. */
 bool pov_ini_path_ok(const char *dir);
 
+/* The file every .ini of a folder reads first (Include_Header): POV-Ray
+ * resolves an INI's paths against the current folder only, so from any
+ * other folder than the one raygl2pov ran in (the output folder itself,
+ * say) the render would fail with "Cannot create render state output
+ * file". This header stops the parse first with a message saying where
+ * to run it from. raygl-render, which passes its own library path and
+ * output name, declares POV_RENDER_DECLARE to skip the check. */
+#define POV_FOLDER_CHECK "raygl-folder.inc"
+#define POV_RENDER_DECLARE "raygl_render"
+
+/* Writes POV_FOLDER_CHECK's text for output folder dir (as the user gave
+ * it, pov_ini_path_ok). Returns 0, or -1 when the sink failed. */
+int pov_write_folder_check(outbuf *ob, const char *dir);
+
 #endif

@@ -285,7 +285,9 @@ static const float *mesh_tint(povwriter *w, const scene_vertex *verts, const sce
 
 /* A corner's colour as 8-bit values in 16-bit lanes, red lowest: taken
  * from the face before when the corner is one of its (strips share two),
- * else made, the colour opaque. False when it is not. */
+ * else made, the colour opaque and in [0, 1]. False when it is not (a
+ * line's strip carries GL's colour ramp on past its end, where GL clamps
+ * per pixel: 8 bits would clamp the corner). */
 static inline bool corner_q(const float *c, const float *const pc[3], const uint64_t pq[3],
                             uint64_t *q)
 {
@@ -296,7 +298,8 @@ static inline bool corner_q(const float *c, const float *const pc[3], const uint
     } else if (c == pc[2]) {
         *q = pq[2];
     } else {
-        if (c[3] != 1)
+        if (c[3] != 1 || !(c[0] >= 0 && c[0] <= 1 && c[1] >= 0 && c[1] <= 1 && c[2] >= 0 &&
+                           c[2] <= 1))
             return false;
         *q = (uint64_t)povtex_quantise(c[0]) | (uint64_t)povtex_quantise(c[1]) << 16 |
              (uint64_t)povtex_quantise(c[2]) << 32;

@@ -10,6 +10,7 @@
 #include <signal.h>
 #include <spawn.h>
 #include <stdarg.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,6 +22,7 @@
 
 #include "cleanup.h"
 #include "options.h"
+#include "povwrite.h"
 #include "sibling.h"
 #include "talloc.h"
 
@@ -53,17 +55,16 @@ static char *xprintf(char *unused, const char *fmt, ...)
 }
 #define aprintf(...) xprintf(NULL, __VA_ARGS__)
 
-static bool progress_shown;
+/* Atomic: the stop (cleanup.h) reads it on its own thread. */
+static atomic_bool progress_shown;
 
 #if defined(__GNUC__)
 __attribute__((format(printf, 2, 3)))
 #endif
 static void say(const char *prog, const char *fmt, ...)
 {
-    if (progress_shown) {
+    if (atomic_exchange(&progress_shown, false))
         fputs("\r\033[K", stderr);
-        progress_shown = false;
-    }
     va_list ap;
     fprintf(stderr, "%s: ", prog);
     va_start(ap, fmt);
@@ -364,13 +365,17 @@ typedef struct running {
     pid_t pid;
     size_t index;
     int retried; /* started again after a transient failure */
-    char *tmp_png, *tmp_log, *tmp_state;
-    long ids[4]; /* cleanup entries: the three files and the child */
+    /* The partial PNG, log, POV-Ray's state file, and the import script's
+     * own temporary image (Blender; its --temp). */
+    char *tmp_png, *tmp_log, *tmp_state, *tmp_script;
+    long ids[5]; /* cleanup entries: the child, then the four files */
 } running;
+
+#define RUN_CHILD 0
 
 static void forget(running *r)
 {
-    for (int i = 0; i < 4; i++) {
+    for (int i = 0; i < 5; i++) {
         cleanup_drop(r->ids[i]);
         r->ids[i] = -1;
     }
@@ -379,9 +384,19 @@ static void forget(running *r)
 /* The child is reaped: a stop must not signal its pid again. */
 static void reaped(running *r)
 {
-    cleanup_drop(r->ids[3]);
-    r->ids[3] = -1;
+    cleanup_drop(r->ids[RUN_CHILD]);
+    r->ids[RUN_CHILD] = -1;
     r->pid = 0;
+}
+
+/* Drops the names of r's partial files (not the files). */
+static void free_names(running *r)
+{
+    tr_free(r->tmp_png);
+    tr_free(r->tmp_log);
+    tr_free(r->tmp_state);
+    tr_free(r->tmp_script);
+    r->tmp_png = r->tmp_log = r->tmp_state = r->tmp_script = NULL;
 }
 
 /* POV-Ray gives up when its worker threads are slow to start, which
@@ -412,16 +427,18 @@ static int start_frame(const char *prog, const render_settings *rs, const char *
     const char *program = engine_program(rs);
     cleanup_lock();
     forget(r);
-    tr_free(r->tmp_png);
-    tr_free(r->tmp_log);
-    tr_free(r->tmp_state);
+    free_names(r);
     r->tmp_png = partial_file(stem, "png");
     r->tmp_log = partial_file(stem, "log");
     r->tmp_state = partial_file(stem, "pov-state");
-    if (r->tmp_png && r->tmp_log && r->tmp_state) {
-        r->ids[0] = cleanup_file(r->tmp_png);
-        r->ids[1] = cleanup_file(r->tmp_log);
-        r->ids[2] = cleanup_file(r->tmp_state);
+    /* The import script writes its image under this name and renames it
+     * to --output: named here, so a stop during the write removes it. */
+    r->tmp_script = partial_file(stem, "tmp.png");
+    if (r->tmp_png && r->tmp_log && r->tmp_state && r->tmp_script) {
+        r->ids[1] = cleanup_file(r->tmp_png);
+        r->ids[2] = cleanup_file(r->tmp_log);
+        r->ids[3] = cleanup_file(r->tmp_state);
+        r->ids[4] = cleanup_file(r->tmp_script);
     }
     char *ini = aprintf("%s%s", stem, frame_ext(rs)),
          *oarg = r->tmp_png ? aprintf(is_blender(rs) ? "%s" : "+O%s", r->tmp_png) : NULL,
@@ -434,8 +451,8 @@ static int start_frame(const char *prog, const render_settings *rs, const char *
     const char *slash = strrchr(stem, '/');
     char *larg = slash ? aprintf("+L%.*s", (int)(slash - stem), stem) : aprintf("+L.");
     int rc = -1;
-    if (ini && oarg && wt && larg && script && r->tmp_state && r->ids[0] >= 0 &&
-        r->ids[1] >= 0 && r->ids[2] >= 0) {
+    if (ini && oarg && wt && larg && script && r->tmp_state && r->ids[1] >= 0 &&
+        r->ids[2] >= 0 && r->ids[3] >= 0 && r->ids[4] >= 0) {
         posix_spawn_file_actions_t fa;
         posix_spawn_file_actions_init(&fa);
         posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
@@ -445,18 +462,22 @@ static int start_frame(const char *prog, const render_settings *rs, const char *
         posix_spawnattr_t at;
         posix_spawnattr_init(&at);
         cleanup_spawnattr(&at);
-        char *pargv[] = {(char *)program, ini, larg, wt, oarg, "-D", NULL};
+        /* Its own library path and output name work from any folder: the
+         * .ini's check of the folder (povwrite.h) is skipped. */
+        char *pargv[] = {(char *)program, ini, larg, wt, oarg, "-D",
+                         "Declare=" POV_RENDER_DECLARE "=1", NULL};
         /* Blender's own options first, the script's after "--". */
         char *bargv[] = {(char *)program, "-b", "-noaudio", "--factory-startup",
                          "--python-exit-code", "1", "-P", script, "--", "--input", ini,
-                         "--output", oarg, "--samples", samples, "--threads", wt, NULL};
+                         "--output", oarg, "--temp", r->tmp_script, "--samples", samples,
+                         "--threads", wt, NULL};
         char **argv = is_blender(rs) ? bargv : pargv;
         int e = posix_spawnp(&r->pid, program, &fa, &at, argv, environ);
         posix_spawnattr_destroy(&at);
         posix_spawn_file_actions_destroy(&fa);
         if (e == 0) {
             rc = 0;
-            r->ids[3] = cleanup_child(r->pid);
+            r->ids[RUN_CHILD] = cleanup_child(r->pid);
         } else {
             say(prog, "%s: cannot run %s: %s", ini, program, strerror(e));
         }
@@ -472,10 +493,7 @@ static int start_frame(const char *prog, const render_settings *rs, const char *
     tr_free(larg);
     if (rc != 0) {
         forget(r);
-        tr_free(r->tmp_png);
-        tr_free(r->tmp_log);
-        tr_free(r->tmp_state);
-        r->tmp_png = r->tmp_log = r->tmp_state = NULL;
+        free_names(r);
         r->pid = 0;
     }
     cleanup_unlock();
@@ -600,13 +618,12 @@ clean:
         unlink(r->tmp_log);
     if (r->tmp_state)
         unlink(r->tmp_state);
+    if (r->tmp_script)
+        unlink(r->tmp_script);
     forget(r);
     tr_free(png);
     tr_free(log);
-    tr_free(r->tmp_png);
-    tr_free(r->tmp_log);
-    tr_free(r->tmp_state);
-    r->tmp_png = r->tmp_log = r->tmp_state = NULL;
+    free_names(r);
     return ok;
 }
 
@@ -651,7 +668,48 @@ static void progress(const render_job *j, size_t done, size_t total, size_t rend
     }
     fprintf(stderr, "\r\033[K%s: [%s] %zu/%zu frames, %s frames/min, %s left", j->prog, bar, done,
             total, rate, left);
-    progress_shown = true;
+    atomic_store(&progress_shown, true);
+}
+
+/* What a local render has done so far, for the stop's line. */
+static struct {
+    const char *prog;
+    atomic_size_t total, rendered, skipped, active;
+} tally;
+
+static void tally_set(size_t rendered, size_t skipped, int active)
+{
+    atomic_store(&tally.rendered, rendered);
+    atomic_store(&tally.skipped, skipped);
+    atomic_store(&tally.active, (size_t)active);
+}
+
+static const char *stop_name(int sig)
+{
+    switch (sig) {
+    case SIGINT: return "SIGINT";
+    case SIGTERM: return "SIGTERM";
+    case SIGHUP: return "SIGHUP";
+    }
+    return "a signal";
+}
+
+/* Said by the stop (cleanup_on_stop) once the renders under way are
+ * stopped and their partial files removed: what is done, what is not,
+ * and that the same command renders the rest. On the stop's thread; the
+ * main thread waits on the registry's lock or in waitpid by then. */
+static void say_stopped(int sig)
+{
+    size_t total = atomic_load(&tally.total), now = atomic_load(&tally.rendered),
+           before = atomic_load(&tally.skipped), stopped = atomic_load(&tally.active);
+    size_t have = now + before;
+    fprintf(stderr,
+            "%s%s: stopped (%s): %zu of %zu frame%s rendered (%zu in this run, %zu before), "
+            "%zu render%s stopped and removed; the same command again renders the other %zu\n",
+            atomic_exchange(&progress_shown, false) ? "\r\033[K" : "", tally.prog,
+            stop_name(sig), have, total, total == 1 ? "" : "s", now, before, stopped,
+            stopped == 1 ? "" : "s", total > have ? total - have : 0);
+    fflush(stderr);
 }
 
 /* "6 frames rendered in 0:00:02 (..., 2 at once), 0 already rendered, 0
@@ -686,7 +744,7 @@ static int render_local(const render_job *j, size_t *nfailed)
     }
     memset(run, 0, (size_t)jobs * sizeof *run);
     for (int s = 0; s < jobs; s++)
-        for (int k = 0; k < 4; k++)
+        for (int k = 0; k < 5; k++)
             run[s].ids[k] = -1;
     scan_includes(j->dir);
 
@@ -694,6 +752,10 @@ static int render_local(const render_job *j, size_t *nfailed)
     bool stop = false;
     double t0 = now();
     int active = 0;
+    tally.prog = j->prog;
+    atomic_store(&tally.total, j->nstems);
+    tally_set(0, 0, 0);
+    cleanup_on_stop(say_stopped);
     while (next < j->nstems || active > 0) {
         while (!stop && active < jobs && next < j->nstems) {
             size_t i = next++;
@@ -720,6 +782,7 @@ static int render_local(const render_job *j, size_t *nfailed)
         if (active == 0)
             continue;
         progress(j, done, j->nstems, rendered, t0);
+        tally_set(rendered, skipped, active);
         int st;
         pid_t pid = waitpid(-1, &st, 0);
         if (pid < 0) {
@@ -749,11 +812,10 @@ static int render_local(const render_job *j, size_t *nfailed)
             done++;
         }
     }
+    cleanup_on_stop(NULL);
     progress(j, done, j->nstems, rendered, t0);
-    if (progress_shown) {
+    if (atomic_exchange(&progress_shown, false))
         fputs("\r\033[K", stderr);
-        progress_shown = false;
-    }
     tr_free(run);
     size_t notrun = j->nstems - done;
     char how[32];
@@ -1070,7 +1132,7 @@ int render_task(const render_settings *r, const char *prog, const char *dir, lon
     if (!up_to_date(r, stem)) {
         running run;
         memset(&run, 0, sizeof run);
-        for (int k = 0; k < 4; k++)
+        for (int k = 0; k < 5; k++)
             run.ids[k] = -1;
         for (int attempt = 0;; attempt++) {
             if (start_frame(prog, r, stem, 1, &run) != 0) {
@@ -1087,9 +1149,7 @@ int render_task(const render_settings *r, const char *prog, const char *dir, lon
             break;
         }
         forget(&run);
-        tr_free(run.tmp_png);
-        tr_free(run.tmp_log);
-        tr_free(run.tmp_state);
+        free_names(&run);
     }
     tr_free(stem);
     return rc;

@@ -479,8 +479,7 @@ bool scene_camera_lookat(scene_camera *cam, const double loc[3], const double lo
     return ok;
 }
 
-/* p - location = t direction + a right + b up. */
-static bool camera_coords(const scene_camera *cam, const double p[3], double x[3])
+bool scene_camera_coords(const scene_camera *cam, const double p[3], double x[3])
 {
     double a[3][3], rel[3];
     for (int k = 0; k < 3; k++) {
@@ -489,13 +488,13 @@ static bool camera_coords(const scene_camera *cam, const double p[3], double x[3
         a[k][2] = cam->up[k];
         rel[k] = p[k] - cam->location[k];
     }
-    return solve3(a, rel, x);
+    return solve3(a, rel, x) && isfinite(x[0]) && isfinite(x[1]) && isfinite(x[2]);
 }
 
 bool scene_camera_project(const scene_camera *cam, const double p[3], double out[2])
 {
     double x[3];
-    if (!camera_coords(cam, p, x))
+    if (!scene_camera_coords(cam, p, x))
         return false;
     double t = 1;
     if (cam->kind != SCENE_CAMERA_ORTHOGRAPHIC) {
@@ -514,7 +513,7 @@ bool scene_camera_pixel_size(const scene_camera *cam, const double p[3], double 
     double t = 1, x[3];
     if (cam->kind != SCENE_CAMERA_ORTHOGRAPHIC) {
         /* The image spans t right by t up at that depth. */
-        if (!camera_coords(cam, p, x) || !(x[0] > 0))
+        if (!scene_camera_coords(cam, p, x) || !(x[0] > 0))
             return false;
         t = x[0];
     }

@@ -123,25 +123,28 @@ typedef struct scene_instance {
     mat4 to_eye;    /* prototype space -> eye space */
 } scene_instance;
 
-/* A line segment in eye space, drawn as GL rasterises it: a flat band
- * facing the camera, from p[0] to p[1], whose edges lie at p[i] +- half[i]
- * (eye-space vectors parallel to the image plane, sized so that the band
- * covers the pixels GL's line of that width covers). */
+/* A strip of a line in eye space: a flat quad facing the camera, from
+ * p[0] to p[1], whose edges lie at p[i] +- half[i] (eye-space vectors
+ * parallel to the image plane). The interpreter sizes and places the
+ * strips of a line so that their image covers exactly the pixels GL
+ * lights for it (docs/mapping.md section 5). */
 typedef struct scene_line {
     float p[2][3];
     float half[2][3];
-    float color[2][4]; /* equal when flat shaded */
+    /* at the corners p[0] - half[0], p[0] + half[0], p[1] + half[1],
+     * p[1] - half[1]; all equal when flat shaded */
+    float color[4][4];
 } scene_line;
 
-/* A point in eye space, inside the view volume (GL clips points by their
- * centre): GL's square of size x size pixels, corners at p +- right +- up
- * (eye-space half extents along the image axes), or, when round
- * (GL_POINT_SMOOTH), a disc of radius |up| facing the camera. */
+/* A rectangle of a point's pixels in eye space, at the point's depth
+ * (GL clips points by their centre: the interpreter keeps those GL
+ * draws): corners at p +- right +- up (half extents along the image
+ * axes). A square point is one; a round one (GL_POINT_SMOOTH) one per
+ * run of alike rows of its pixels. */
 typedef struct scene_point {
     float p[3];
     float right[3], up[3];
     float color[4];
-    bool round;
 } scene_point;
 
 typedef enum scene_camera_kind {
@@ -511,6 +514,14 @@ bool scene_camera_lookat(scene_camera *cam, const double loc[3], const double lo
 /* Window position in pixels (x right, y up, origin at the image centre) of
  * eye point p. Returns false when p is not in front of the camera. */
 bool scene_camera_project(const scene_camera *cam, const double p[3], double out[2]);
+
+/* The camera coordinates of eye point p: p = location + x[0] direction +
+ * x[1] right + x[2] up. x[0] is the parameter t of the camera's ray through
+ * p (location + t (direction + u right + v up) for a perspective camera,
+ * u = x[1] / t, v = x[2] / t; offset by t direction for an orthographic
+ * one): points on one ray compare their distance by it. Linear in p.
+ * Returns false when the camera's axes are degenerate. */
+bool scene_camera_coords(const scene_camera *cam, const double p[3], double x[3]);
 
 /* Eye-space size of one pixel (horizontal and vertical) at eye point p.
  * Returns false when p is not in front of the camera. */

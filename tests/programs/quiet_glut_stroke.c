@@ -1,0 +1,35 @@
+/* quiet_glut_stroke.c: stroke text in a GLUT frame built with the drop-in
+ * header (GLUT window: run under Xvfb). The drop-in header sees only the
+ * program's own calls: freeglut draws the strokes with gl* calls of its own
+ * that go to GL unrecorded, so the scene lacks the text, and raygl2pov must
+ * say so (issue 22: a call not recorded reported where it changes the
+ * picture, with what it changes). Under raygl record the same calls are
+ * recorded (tests/capture, case quiet). A filled bar under the text is
+ * drawn as ever.
+ */
+#include "harness.h"
+
+#include <raygl/gl.h>
+
+#include <GL/freeglut.h>
+
+static int draw(int w, int h)
+{
+    glViewport(0, 0, w, h);
+    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, 320, 0, 240, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glColor3f(0.2f, 0.3f, 0.6f);
+    glRectf(10.13f, 20.37f, 310.13f, 60.37f);
+    glColor3f(1.0f, 1.0f, 0.4f);
+    glTranslatef(20.0f, 100.0f, 0.0f);
+    glScalef(0.25f, 0.25f, 1.0f);
+    glutStrokeString(GLUT_STROKE_ROMAN, (const unsigned char *)"RayGL");
+    return 0;
+}
+
+RGL_TEST_MAIN(draw)
