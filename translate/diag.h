@@ -98,7 +98,7 @@
     X(NOTE_ACCUM_CLEAR, "approximated: the accumulation buffer's clear value other than zero (glClearAccum), accumulation clears and operations cut by the scissor box, and passes onto a buffer the frame did not clear: the returned passes are drawn as if accumulated onto zero over the whole window") \
     X(NOTE_POINT_TEXTURE, "not translated: textured smooth points without GL_POINT_SPRITE (drawn untextured discs)") \
     X(NOTE_TEX_LINES, "not translated: textured lines (drawn untextured)") \
-    X(NOTE_PIXELS_MAP_COLOR, "approximated: glPixelTransfer scales, biases and colour maps (GL_MAP_COLOR) of pixel rectangles are applied once, as GL says; Mesa applies them twice in some programs") \
+    X(NOTE_PIXELS_MAP_COLOR, "approximated: glPixelTransfer colour maps (GL_MAP_COLOR) of pixel rectangles, and scales and biases of colour-index ones, are applied once, as GL says; Mesa applies them twice in some programs") \
     X(NOTE_TEX_COMPARE, "not translated: depth-texture comparison (GL_TEXTURE_COMPARE_MODE) where r varies over a primitive or the texture is mipmapped: the depth values drawn instead") \
     X(NOTE_LIT_OUTLINE, "approximated: lit faces outlined (glPolygonMode GL_LINE or GL_POINT) under two-sided lighting take their material's colour unlit, where OpenGL draws them in their vertices' lit colours")
 

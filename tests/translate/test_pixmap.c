@@ -3,8 +3,9 @@
  * glPixelMap's three forms fill the maps (integer entries of colour maps
  * normalised), a map GL refuses is refused; a colour index drawn in RGBA
  * takes the I_TO_* maps' entries, the index masked to each map's size;
- * scales, biases and GL_MAP_COLOR of pixel rectangles are noted, and
- * nothing else is.
+ * GL_MAP_COLOR of pixel rectangles, and scales and biases of colour-index
+ * ones, are noted, and nothing else is (scales and biases of RGBA pixels:
+ * Mesa's, not noted).
  */
 #include <GL/gl.h>
 #include <stdio.h>
@@ -73,11 +74,40 @@ static void test_index(void)
     free_res();
 }
 
+/* RGBA pixels under a scale and a bias: applied once, as Mesa does, and
+ * not noted; under GL_MAP_COLOR: noted. */
+static void test_rgba_transfer(void)
+{
+    static const uint8_t rgba[4] = {200, 100, 0, 255};
+    uint32_t id = add_bytes(rgba, sizeof rgba);
+    for (int c = 0; c < 2; c++) {
+        interp *ip = fresh();
+        seq s;
+        seq_init(&s);
+        setup(&s);
+        CMD(&s, PixelTransferf, GL_RED_SCALE, 0.5);
+        CMD(&s, PixelTransferf, GL_BLUE_BIAS, 0.25);
+        if (c == 1)
+            CMD(&s, PixelTransferi, GL_MAP_COLOR, 1);
+        CMD(&s, DrawPixels, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, id);
+        run(ip, &s);
+        CHECK_EQ_U(count(DIAG_NOTE_PIXELS_MAP_COLOR), c == 1);
+        CHECK(sc.overlay != NULL);
+        if (sc.overlay && c == 0) { /* 200 x 0.5, 0 + 0.25 */
+            const uint8_t *p = sc.overlay + (2 * (size_t)sc.overlay_w + 2) * 4;
+            CHECK(p[0] == 100 && p[1] == 100 && (p[2] == 63 || p[2] == 64) && p[3] == 255);
+        }
+        interp_destroy(ip);
+    }
+    free_res();
+}
+
 int main(void)
 {
     scene_init(&sc);
     fx_fetch = fetch_res;
     test_index();
+    test_rgba_transfer();
     scene_finish(&sc);
     return CHECK_RESULT("test_pixmap");
 }

@@ -756,11 +756,12 @@ void interp_offset_apply(interp *ip, mat4 *to_eye);
 
 /* Pixel maps and transfer (interp_pixmap.c): interp_pixels_transfer
  * applies the scales, biases and colour maps to n RGBA pixels (GL 2.1
- * 3.6.5; noted, as Mesa applies them once or twice);
+ * 3.6.5; colour maps, and scales and biases of pixels from_index colour
+ * indices, noted, as Mesa applies them once or twice);
  * interp_pixels_index_bytes is the size of w x h colour indices of
  * type (0: a type not translated), interp_pixels_index turns n of them
  * into RGBA by the index shift, offset and the I_TO_* maps. */
-void interp_pixels_transfer(interp *ip, float *px, size_t n);
+void interp_pixels_transfer(interp *ip, float *px, size_t n, bool from_index);
 size_t interp_pixels_index_bytes(GLenum type, int64_t w, int64_t h);
 void interp_pixels_index(interp *ip, float *px, const uint8_t *src, size_t n, GLenum type);
 

@@ -305,12 +305,13 @@ void interp_bitmap(interp *ip, const rgl_cmd *cmd)
     rp[1] += ym;
 }
 
-/* Draws w x h RGBA pixels (floats, before pixel transfer) at the raster
- * position with the pixel zoom (GL 2.1 3.6.4 and 3.6.5). */
-static void draw_rect(interp *ip, float *px, int64_t w, int64_t h)
+/* Draws w x h RGBA pixels (floats, before pixel transfer; index: from
+ * colour indices) at the raster position with the pixel zoom (GL 2.1
+ * 3.6.4 and 3.6.5). */
+static void draw_rect(interp *ip, float *px, int64_t w, int64_t h, bool index)
 {
     const gl_attribs *a = &ip->st.a;
-    interp_pixels_transfer(ip, px, (size_t)w * (size_t)h);
+    interp_pixels_transfer(ip, px, (size_t)w * (size_t)h, index);
     bool over = pixels_begin(ip);
     uint8_t *ov = overlay(ip);
     if (!ov)
@@ -371,7 +372,7 @@ static void draw_pixels(interp *ip, uint32_t id, GLenum format, GLenum type, int
         interp_pixels_index(ip, px, src, (size_t)w * (size_t)h, type);
     else
         interp_pixels_float(px, src, (size_t)w * (size_t)h, format, type);
-    draw_rect(ip, px, w, h);
+    draw_rect(ip, px, w, h, index);
     tr_free(px);
 }
 

@@ -83,12 +83,14 @@ static bool transfer_identity(const gl_attribs *a)
     return true;
 }
 
-void interp_pixels_transfer(interp *ip, float *px, size_t n)
+void interp_pixels_transfer(interp *ip, float *px, size_t n, bool from_index)
 {
     const gl_attribs *a = &ip->st.a;
     if (n == 0)
         return;
-    if (a->pixel.map_color || !transfer_identity(a))
+    /* Scales and biases of RGBA pixels: Mesa's once (pixels_draw,
+     * pixels_copy exact). */
+    if (a->pixel.map_color || (from_index && !transfer_identity(a)))
         interp_note(ip, DIAG_NOTE_PIXELS_MAP_COLOR);
     for (size_t i = 0; i < n; i++)
         for (int k = 0; k < 4; k++) {
