@@ -218,6 +218,9 @@ RAYGL_API void rayglPolygonStipple(const GLubyte *mask);
 RAYGL_API void rayglPixelMapfv(GLenum map, GLsizei mapsize, const GLfloat *values);
 RAYGL_API void rayglPixelMapuiv(GLenum map, GLsizei mapsize, const GLuint *values);
 RAYGL_API void rayglPixelMapusv(GLenum map, GLsizei mapsize, const GLushort *values);
+/* The draw buffer, with the context's colour buffers (double-buffered,
+ * stereo) as found at the call. */
+RAYGL_API void rayglDrawBuffer(GLenum mode);
 
 /* Texture copies, their framebuffer rectangle read back at the call; 3D
  * textures, their pixels read as glTexImage2D's (unpack image height and

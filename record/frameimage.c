@@ -212,6 +212,21 @@ bool rgl_read_rgba(int32_t x, int32_t y, int32_t w, int32_t h, uint8_t *px)
     return true;
 }
 
+bool rgl_read_drawn_rgba(int32_t x, int32_t y, int32_t w, int32_t h, uint8_t *px)
+{
+    gl_version v;
+    if (!rgl_live_context() || !read_version(&v) || !v.compat)
+        return false;
+    GLint buf;
+    if (!choose_read_buffer(&v, &buf))
+        return false;
+    saved_state st;
+    save_and_set(&v, &st, buf);
+    glReadPixels(x, y, w, h, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    restore(&st);
+    return true;
+}
+
 void rgl_frame_image(void)
 {
     rgl_stream *s = rgl_tls_stream;

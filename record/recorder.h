@@ -261,6 +261,8 @@ void rgl_frame_image(void);
  * copies, before its pixel transfer (frameimage.c). False, px untouched,
  * without a live compatibility context. Outside glBegin/glEnd only. */
 bool rgl_read_rgba(int32_t x, int32_t y, int32_t w, int32_t h, uint8_t *px);
+/* The same from the buffer the program draws into (frameimage.c). */
+bool rgl_read_drawn_rgba(int32_t x, int32_t y, int32_t w, int32_t h, uint8_t *px);
 
 /* Whether frames get snapshots: RAYGL_SNAPSHOTS=1 at initialisation, or
  * rayglRecordSnapshots(). */
@@ -289,6 +291,11 @@ bool rgl_glut_ready(void);
  * encodes GL state as ordinary commands into out. Returns false when no live
  * context is current (nothing is written then). */
 bool rgl_snapshot_take(rgl_stream *s, rgl_buf *out);
+
+/* The context's colour buffers as @DrawBuffer's visual: 0 without a
+ * context, else 1 | 2 double-buffered | 4 stereo (entry_raster.c). Not
+ * between glBegin and glEnd. */
+uint32_t rgl_draw_visual(void);
 
 /* True when a GL context is current on the calling thread (a query that GL
  * without one leaves unanswered). */
@@ -416,6 +423,10 @@ void rgl_texture_defined(rgl_stream *s, uint32_t target, const uint8_t *from, bo
 int rgl_tex_slot(uint32_t target);
 uint32_t rgl_tex_slot_target(int slot);
 
+/* Whether the current context is GL major.minor or later, or lists
+ * extension ext (a whole name). False without a context (snaptex.c). */
+bool rgl_gl_has(int major, int minor, const char *ext);
+
 /* The active texture unit of the current context (0 without a context,
  * without multitexture, inside glBegin/glEnd, or past RGL_MAX_TEX_UNITS). */
 uint32_t rgl_tex_active_unit(const rgl_stream *s);
@@ -423,9 +434,6 @@ uint32_t rgl_tex_active_unit(const rgl_stream *s);
 /* The snapshot's texture objects, then every unit's state in one block
  * after one glActiveTexture, the active unit last (snaptex.c). */
 void rgl_snap_textures(rgl_stream *s, rgl_buf *out);
-/* Whether the current context is GL major.minor or later, or lists
- * extension ext (a whole name); false without a context (snaptex.c). */
-bool rgl_gl_has(int major, int minor, const char *ext);
 
 /* Whether target is a proxy texture target (GL reads no pixels for it). */
 bool rgl_tex_is_proxy(uint32_t target);

@@ -177,10 +177,13 @@ static void snap_stencil(rgl_buf *b)
 
 /* The pixel transfer of colours (scales, biases, GL_MAP_COLOR, where they
  * differ from GL's initial state) and every pixel map that is not GL's
- * initial one (one entry, 0). glGetPixelMap writes into a bound pack
- * buffer: called with it set aside (snap_pstipple). */
-static void snap_pixel(rgl_buf *b)
+ * initial one (one entry, 0): near the end of the snapshot, as the maps'
+ * rows are 1.4's. glGetPixelMap writes into a bound pack buffer: set
+ * aside for the reads. */
+static void snap_pixel(const rgl_stream *s, rgl_buf *b)
 {
+    if (s->pack_buffer)
+        glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
     static const GLenum scale[8] = {GL_RED_SCALE, GL_GREEN_SCALE, GL_BLUE_SCALE, GL_ALPHA_SCALE,
                                     GL_RED_BIAS, GL_GREEN_BIAS, GL_BLUE_BIAS, GL_ALPHA_BIAS};
     for (int k = 0; k < 8; k++) {
@@ -204,13 +207,63 @@ static void snap_pixel(rgl_buf *b)
             rgl_put_f(le + i * 4, v[i]);
         rgl_emit(b, RGL_OP_PixelMapfv, "eiB", m, size, (const void *)le, (size_t)size * 4);
     }
+    if (s->pack_buffer)
+        glBindBuffer(GL_PIXEL_PACK_BUFFER, s->pack_buffer);
 }
 
-/* The polygon stipple mask, unless it is GL's (all ones), and the pixel
- * maps (snap_pixel). glGetPolygonStipple packs it as the pack state says
- * and into a bound pack buffer: both are set aside for the reads (the
- * program's own reads stay as they were), so the bytes come in the
- * trace's layout (bottom row first, MSB first). */
+/* The back faces' stencil state (GL 2.0), only where it differs from the
+ * front's: a 1.3 reader stops at these rows, so they come last and only
+ * when they say something. */
+static void snap_stencil_back(rgl_buf *b)
+{
+    if (!rgl_gl_has(2, 0, "GL_ATI_separate_stencil")) /* its queries are GL 2.0's */
+        return;
+    GLint f[7] = {GL_ALWAYS, 0, -1, GL_KEEP, GL_KEEP, GL_KEEP, -1};
+    GLint k[7] = {GL_ALWAYS, 0, -1, GL_KEEP, GL_KEEP, GL_KEEP, -1};
+    static const GLenum qf[7] = {GL_STENCIL_FUNC, GL_STENCIL_REF, GL_STENCIL_VALUE_MASK,
+                                 GL_STENCIL_FAIL, GL_STENCIL_PASS_DEPTH_FAIL,
+                                 GL_STENCIL_PASS_DEPTH_PASS, GL_STENCIL_WRITEMASK};
+    static const GLenum qb[7] = {GL_STENCIL_BACK_FUNC, GL_STENCIL_BACK_REF,
+                                 GL_STENCIL_BACK_VALUE_MASK, GL_STENCIL_BACK_FAIL,
+                                 GL_STENCIL_BACK_PASS_DEPTH_FAIL, GL_STENCIL_BACK_PASS_DEPTH_PASS,
+                                 GL_STENCIL_BACK_WRITEMASK};
+    for (int i = 0; i < 7; i++) {
+        glGetIntegerv(qf[i], &f[i]);
+        glGetIntegerv(qb[i], &k[i]);
+    }
+    if (memcmp(f, k, sizeof f) == 0)
+        return;
+    rgl_emit(b, RGL_OP_StencilFuncSeparate, "eeie", GL_BACK, (uint32_t)k[0], k[1], (uint32_t)k[2]);
+    rgl_emit(b, RGL_OP_StencilOpSeparate, "eeee", GL_BACK, (uint32_t)k[3], (uint32_t)k[4],
+             (uint32_t)k[5]);
+    rgl_emit(b, RGL_OP_StencilMaskSeparate, "ee", GL_BACK, (uint32_t)k[6]);
+}
+
+/* The draw buffer, where it is not the context's default (GL_BACK when
+ * double-buffered, else GL_FRONT) and the default framebuffer is drawn
+ * into: last in the snapshot, as the back faces' stencil. */
+static void snap_draw_buffer(rgl_buf *b)
+{
+    uint32_t visual = rgl_draw_visual();
+    if (!visual)
+        return;
+    if (rgl_gl_has(3, 0, "GL_EXT_framebuffer_object")) {
+        GLint fbo = SENTINEL_I;
+        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
+        if (fbo != 0)
+            return;
+    }
+    GLint db = SENTINEL_I;
+    glGetIntegerv(GL_DRAW_BUFFER, &db);
+    GLint def = (visual & 2) ? GL_BACK : GL_FRONT;
+    if (db != SENTINEL_I && db != def)
+        rgl_emit(b, RGL_OP_DrawBuffer, "ee", (uint32_t)db, visual);
+}
+
+/* The polygon stipple mask, unless it is GL's (all ones). glGetPolygonStipple
+ * packs it as the pack state says and into a bound pack buffer: both are
+ * set aside for the read (the program's own reads stay as they were), so
+ * the bytes come in the trace's layout (bottom row first, MSB first). */
 static void snap_pstipple(const rgl_stream *s, rgl_buf *b)
 {
     static const GLenum pn[5] = {GL_PACK_ROW_LENGTH, GL_PACK_SKIP_ROWS, GL_PACK_SKIP_PIXELS,
@@ -228,7 +281,6 @@ static void snap_pstipple(const rgl_stream *s, rgl_buf *b)
     GLubyte m[128];
     memset(m, 0xff, sizeof m);
     glGetPolygonStipple(m);
-    snap_pixel(b);
     if (s->pack_buffer)
         glBindBuffer(GL_PIXEL_PACK_BUFFER, s->pack_buffer);
     for (int k = 0; k < 5; k++)
@@ -306,7 +358,8 @@ static void snap_eval(rgl_buf *b)
 
 /* The blend colour, the separate blend functions and equations and the
  * logic op, each where the context has it (GL 1.4 and 2.0, or their
- * extensions; the blend equation with ARB_imaging too). */
+ * extensions; the blend equation with ARB_imaging too): after glBlendFunc
+ * and near the end of the snapshot, as the first three are 1.4's rows. */
 static void snap_blend(rgl_buf *b)
 {
     if (rgl_gl_has(1, 4, "GL_EXT_blend_color") || rgl_gl_has(1, 4, "GL_ARB_imaging")) {
@@ -336,9 +389,11 @@ static void snap_raster(rgl_buf *b)
     rgl_emit(b, RGL_OP_Fogf, "ef", GL_FOG_START, (double)get_f(GL_FOG_START));
     rgl_emit(b, RGL_OP_Fogf, "ef", GL_FOG_END, (double)get_f(GL_FOG_END));
     rgl_emit(b, RGL_OP_Fogfv, "eN", GL_FOG_COLOR, fc, 4);
+    /* No core version has it: the extension string says whether to ask. */
+    if (rgl_gl_has(1000, 0, "GL_NV_fog_distance"))
+        rgl_emit(b, RGL_OP_Fogi, "ei", GL_FOG_DISTANCE_MODE_NV, get_i(GL_FOG_DISTANCE_MODE_NV));
 
     rgl_emit(b, RGL_OP_BlendFunc, "ee", (uint32_t)get_i(GL_BLEND_SRC), (uint32_t)get_i(GL_BLEND_DST));
-    snap_blend(b);
     rgl_emit(b, RGL_OP_AlphaFunc, "ef", (uint32_t)get_i(GL_ALPHA_TEST_FUNC),
              (double)get_f(GL_ALPHA_TEST_REF));
     rgl_emit(b, RGL_OP_DepthFunc, "e", (uint32_t)get_i(GL_DEPTH_FUNC));
@@ -460,5 +515,10 @@ bool rgl_snapshot_take(rgl_stream *s, rgl_buf *out)
     rgl_quadrics_snapshot(out);
     snap_lists(s, out);
     snap_matrices(out, mode);
+    /* 1.4's rows last: a 1.3 reader stops at the first of them. */
+    snap_blend(out);
+    snap_pixel(s, out);
+    snap_stencil_back(out);
+    snap_draw_buffer(out);
     return true;
 }

@@ -100,6 +100,9 @@
     X(NOTE_TEX_LINES, "not translated: textured lines (drawn untextured)") \
     X(NOTE_PIXELS_MAP_COLOR, "approximated: glPixelTransfer colour maps (GL_MAP_COLOR) of pixel rectangles, and scales and biases of colour-index ones, are applied once, as GL says; Mesa applies them twice in some programs") \
     X(NOTE_TEX_COMPARE, "not translated: depth-texture comparison (GL_TEXTURE_COMPARE_MODE) where r varies over a primitive or the texture is mipmapped: the depth values drawn instead") \
+    X(NOTE_COLOR_MATERIAL_BEGIN, "approximated: a glColor between glBegin and glEnd of the first draw after a glEnable(GL_COLOR_MATERIAL) that kept a glMaterial colour (as Mesa keeps it): the primitive's vertices before it take that material, where Mesa takes the colour current then") \
+    X(NOTE_STENCIL_TWO_SIDE, "approximated: two-sided stencil (glStencilFuncSeparate, glStencilOpSeparate, glStencilMaskSeparate) testing or writing the front and back faces of one draw differently: the whole draw takes the front faces' stencil state") \
+    X(NOTE_DRAW_BUFFER_DEPTH, "approximated: draws into a colour buffer the frame does not show (glDrawBuffer) are left out, but they wrote depth, which hides in GL what is drawn behind them later") \
     X(NOTE_LIT_OUTLINE, "approximated: lit faces outlined (glPolygonMode GL_LINE or GL_POINT) under two-sided lighting take their material's colour unlit, where OpenGL draws them in their vertices' lit colours")
 
 typedef enum diag_kind {

@@ -544,6 +544,11 @@ static int write_shapes(const char *dir)
     EV(Rectf, -2, -2, 2, 2);
     EV(StencilFunc, 0x0205, 1, 255); /* GL_NOTEQUAL */
     EV(SolidSphere, 1, 12, 8);
+    /* Two-sided stencil (format 1.4): back faces tested and written apart. */
+    EV(StencilFuncSeparate, 0x0405, 0x0202, 1, 255); /* GL_BACK, GL_EQUAL */
+    EV(StencilOpSeparate, 0x0405, 0x1E00, 0x1E00, 0x1E01); /* GL_BACK, KEEP, KEEP, REPLACE */
+    EV(StencilMaskSeparate, 0x0404, 0); /* GL_FRONT */
+    EV(Rectf, 2, -2, -2, 2); /* clockwise: a back face */
     return write_file(dir, "shapes.bin", seq, eval_len);
 }
 

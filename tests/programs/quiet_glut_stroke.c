@@ -1,9 +1,9 @@
 /* quiet_glut_stroke.c: stroke text in a GLUT frame built with the drop-in
- * header (GLUT window: run under Xvfb). The drop-in header sees only the
- * program's own calls: freeglut draws the strokes with gl* calls of its own
- * that go to GL unrecorded, so the scene lacks the text, and raygl2pov must
- * say so (issue 22: a call not recorded reported where it changes the
- * picture, with what it changes). Under raygl record the same calls are
+ * header (GLUT window: run under Xvfb). The drop-in GLUT records the
+ * program's glutStrokeString as the strokes freeglut draws (GL_LINE_STRIPs,
+ * record/gluttext.c), so the scene has the text and raygl2pov has nothing
+ * to say (issue 22: no message in vain); before the newcomer branch the
+ * call went unrecorded and was said. Under raygl record the same calls are
  * recorded (tests/capture, case quiet). A filled bar under the text is
  * drawn as ever.
  */

@@ -511,6 +511,10 @@ void glPixelMapusv(GLenum map, GLsizei mapsize, const GLushort *values)
     LOGV("glPixelMapusv", map, mapsize);
     arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], values);
 }
+void glDrawBuffer(GLenum mode)
+{
+    LOGV("glDrawBuffer", mode);
+}
 
 /* ---- Texture copies and 3D textures (record/entry_texcopy.c) ----------------------- */
 

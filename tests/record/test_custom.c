@@ -569,10 +569,11 @@ static size_t forwarded(const char *name)
     return n;
 }
 
-/* glBitmap, glDrawPixels and glCopyPixels (record/entry_raster.c): the
- * bits GL reads with the unpack state undone, nothing read or recorded
- * for a call GL refuses (its pointer faults), everything forwarded, and
- * glCopyPixels without a context marked @Skipped. */
+/* glBitmap, glDrawPixels, glCopyPixels and glDrawBuffer
+ * (record/entry_raster.c): the bits GL reads with the unpack state undone,
+ * nothing read or recorded for a call GL refuses (its pointer faults),
+ * everything forwarded, glCopyPixels without a context marked @Skipped,
+ * glDrawBuffer with no visual where there is no context. */
 void test_raster(const char *dir)
 {
     char path[128];
@@ -613,8 +614,12 @@ void test_raster(const char *dir)
     rayglDrawPixels(2, 1, GL_RGB, GL_UNSIGNED_BYTE, rgb);
     rayglCopyPixels(1, 2, 3, 4, GL_COLOR); /* no context: not read */
     rayglCopyPixels(1, 2, 3, 4, GL_DEPTH);
+    rayglDrawBuffer(GL_FRONT); /* no context: the visual unknown */
+    rayglBegin(GL_POINTS);
+    rayglDrawBuffer(GL_BACK); /* refused between glBegin and glEnd */
+    rayglEnd();
     CHECK(forwarded("glBitmap") == 4 && forwarded("glDrawPixels") == 4 &&
-          forwarded("glCopyPixels") == 4);
+          forwarded("glCopyPixels") == 4 && forwarded("glDrawBuffer") == 2);
     rayglPixelStorei(GL_UNPACK_ALIGNMENT, 4); /* GL's default, for the tests after */
     rayglFrameEnd();
     rayglRecordClose();
@@ -634,6 +639,8 @@ void test_raster(const char *dir)
     CHECK(count_lines(&c, "glCopyPixels(") == 1);
     CHECK(count_lines(&c, "glCopyPixels(x=1, y=2, width=3, height=4, type=GL_DEPTH, pixels=#0)") == 1);
     CHECK(count_lines(&c, "@Skipped(opcode=0x14e, reason=0x2)") == 1);
+    CHECK(count_lines(&c, "glDrawBuffer(") == 1);
+    CHECK(count_lines(&c, "glDrawBuffer(mode=GL_FRONT, visual=0)") == 1);
     trace_cmds_free(&c);
     rgl_resource res;
     /* The bitmap: pixels 1 0 1 0 1 and 0 1 0 1 0, most significant bit first. */

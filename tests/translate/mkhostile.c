@@ -10,6 +10,9 @@
  *                     no drawing (work without output).
  * DIR/bomb-lines.raygl the same with lines of 30 vertices, and
  *                     DIR/bomb-texture.raygl with a texture upload per call.
+ * DIR/bomb-slices.raygl the same drawing another slice of a 3D texture per call.
+ * DIR/honest-texture.raygl one mipmapped 256 x 256 texture drawn by 10240
+ *                     triangles from lists: no cut, counted once (issue 22).
  * DIR/bomb-names.raygl 50000 textures and lists, then a list bomb of lookups.
  * DIR/texframes.raygl a texture uploaded and drawn in frame 0, drawn again in
  *                     frame 1 (STATE_CARRIED).
@@ -149,6 +152,90 @@ static void texture_bomb(const char *dir)
     CMD(&s, CallList, 1);
     frame(b, 0, &s);
     finish(b, true, dir, "bomb-texture.raygl");
+    seq_free(&body);
+    seq_free(&s);
+    rgl_trace_builder_destroy(b);
+}
+
+static void chain(rgl_trace_builder *b, seq *s, uint32_t first, int depth, const seq *body);
+
+/* A list whose every call draws a textured triangle at another r of a
+ * 64 x 64 x 64 3D texture (the texture matrix moves on at each call): a
+ * new slice image at every draw, each counted, however the lists share. */
+static void slice_bomb(const char *dir)
+{
+    rgl_trace_builder *b = rgl_trace_builder_create();
+    static uint8_t lum[64 * 64 * 64];
+    for (size_t i = 0; i < sizeof lum; i++)
+        lum[i] = (uint8_t)(i * 29 + (i >> 12));
+    uint32_t px = resource(b, RGL_RES_BYTES, lum, sizeof lum);
+    seq body, s;
+    seq_init(&body);
+    CMD(&body, MatrixMode, GL_TEXTURE);
+    CMD(&body, Translatef, 0, 0, 1.0 / 4096);
+    CMD(&body, MatrixMode, GL_MODELVIEW);
+    CMD(&body, Begin, GL_TRIANGLES);
+    CMD(&body, TexCoord3f, 0, 0, 0.5);
+    CMD(&body, Vertex3f, 0, 0, -1);
+    CMD(&body, TexCoord3f, 1, 0, 0.5);
+    CMD(&body, Vertex3f, 1, 0, -1);
+    CMD(&body, TexCoord3f, 0, 1, 0.5);
+    CMD(&body, Vertex3f, 0, 1, -1);
+    CMD0(&body, End);
+    CMD(&body, CallList, 1);
+    CMD(&body, CallList, 1);
+    uint32_t id = resource(b, RGL_RES_COMMANDS, body.data, body.len);
+    seq_init(&s);
+    camera(&s);
+    CMD(&s, BindTexture, GL_TEXTURE_3D, 1);
+    CMD(&s, TexParameteri, GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    CMD(&s, TexParameteri, GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    CMD(&s, TexImage3D, GL_TEXTURE_3D, 0, GL_LUMINANCE, 64, 64, 64, 0, GL_LUMINANCE,
+        GL_UNSIGNED_BYTE, px);
+    CMD(&s, Enable, GL_TEXTURE_3D);
+    CMD(&s, NewList, 1, GL_COMPILE, id);
+    CMD(&s, CallList, 1);
+    frame(b, 0, &s);
+    finish(b, true, dir, "bomb-slices.raygl");
+    seq_free(&body);
+    seq_free(&s);
+    rgl_trace_builder_destroy(b);
+}
+
+/* The honest counterpart: one 256 x 256 texture, mipmapped by
+ * gluBuild2DMipmaps, drawn by 10240 triangles (a list of 10 called 1024
+ * times through a doubling chain): counted once, never cut (issue 22). */
+static void honest_texture(const char *dir)
+{
+    rgl_trace_builder *b = rgl_trace_builder_create();
+    static uint8_t lum[256 * 256];
+    for (size_t i = 0; i < sizeof lum; i++)
+        lum[i] = (uint8_t)(i * 13 + (i >> 8));
+    uint32_t px = resource(b, RGL_RES_BYTES, lum, sizeof lum);
+    seq body, s;
+    seq_init(&body);
+    for (int k = 0; k < 10; k++) {
+        CMD(&body, Begin, GL_TRIANGLES);
+        CMD(&body, TexCoord2f, 0, 0);
+        CMD(&body, Vertex3f, 0, 0, -1);
+        CMD(&body, TexCoord2f, 1, 0);
+        CMD(&body, Vertex3f, 1, 0, -1);
+        CMD(&body, TexCoord2f, 0, 1);
+        CMD(&body, Vertex3f, 0, 1, -1);
+        CMD0(&body, End);
+        CMD(&body, Translatef, 1e-3, 0, 0);
+    }
+    seq_init(&s);
+    camera(&s);
+    CMD(&s, BindTexture, GL_TEXTURE_2D, 1);
+    CMD(&s, Build2DMipmaps, GL_TEXTURE_2D, GL_LUMINANCE, 256, 256, GL_LUMINANCE, GL_UNSIGNED_BYTE,
+        px);
+    CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    CMD(&s, Enable, GL_TEXTURE_2D);
+    chain(b, &s, 10, 10, &body);
+    CMD(&s, CallList, 10);
+    frame(b, 0, &s);
+    finish(b, true, dir, "honest-texture.raygl");
     seq_free(&body);
     seq_free(&s);
     rgl_trace_builder_destroy(b);
@@ -512,6 +599,8 @@ int main(int argc, char **argv)
     bomb(dir, "bomb-empty.raygl", 2, 4000);
     bomb(dir, "bomb-lines.raygl", 3, 30);
     texture_bomb(dir);
+    slice_bomb(dir);
+    honest_texture(dir);
     names_bomb(dir);
     texture_frames(dir);
     fill_all(dir);

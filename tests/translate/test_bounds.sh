@@ -5,7 +5,8 @@
 #
 # 1. Display-list bombs (mkhostile.c) finish under a 1 GiB address-space
 #    cap and a time limit, write their frame, and say when it was cut, in
-#    the messages and in the .pov; two frames that fill every budget just
+#    the messages and in the .pov; an honest trace that draws one texture
+#    10240 times is not cut, and --dump shows it counted once; two frames that fill every budget just
 #    short of a cut fit too, and give the same bytes with -j 2 (one heavy
 #    frame at a time); a heavy frame translated twice (heavy-redo) is
 #    not held up by its own turn.
@@ -72,6 +73,8 @@ bomb-lines 1048576 lines and points
 bomb-solid 262144 solids
 bomb-empty 67108864 commands run
 bomb-texture 268435456 texture bytes
+bomb-slices 268435456 texture bytes
+honest-texture
 bomb-names 67108864 commands run
 bomb-calls300 16777216 vertices assembled
 bomb-calls
@@ -87,6 +90,17 @@ for f in frame-00000.pov frame-00001.pov; do
 done
 [ "$rc" -eq 0 ] && ok "fill-all: -j 2 gives the same bytes"
 rm -rf "$work/o1"
+# One texture drawn by 10240 triangles is counted once (issue 22): the
+# upload read (65536 bytes) and held with its levels (349524), and one
+# copy of the levels in the scene (349524); --dump says what it used.
+"$r2p" "$work/honest-texture.raygl" -o "$work/o" -j 1 --dump -q >"$work/out" 2>&1
+used=$(sed -n 's/^frame 0: budget: .*, texture bytes \([0-9]*\) of 268435456$/\1/p' "$work/out")
+if [ -n "$used" ] && [ "$used" -le 1048576 ] &&
+    grep -q "^frame 0: budget: .* triangles 10240 of 4194304," "$work/out"; then
+    ok "honest-texture: 10240 draws of one texture use $used texture bytes"
+else
+    fail "honest-texture: budget line: $(grep budget "$work/out")"
+fi
 # A heavy frame translated twice (a first draw of another projection)
 # takes the heavy turn once: the second pass once waited for the turn it
 # held itself, for ever.

@@ -369,6 +369,78 @@ static void test_fogged_lines(void)
     interp_destroy(ip);
 }
 
+/* GL_FOG_DISTANCE_MODE_NV: its three values taken, others refused; the
+ * radial distance at a line's end; a large triangle gets GL's
+ * interpolated distance as its own fog plane, a small one the per-pixel
+ * radial layer; GL_EYE_PLANE fogs by the signed z. */
+static void test_fog_distance(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 320, 240);
+    CMD(&s, MatrixMode, GL_PROJECTION);
+    CMD(&s, Frustum, -1, 1, -1, 1, 1, 30);
+    CMD(&s, MatrixMode, GL_MODELVIEW);
+    CMD(&s, Enable, GL_FOG);
+    CMD(&s, Fogi, GL_FOG_MODE, GL_LINEAR);
+    CMD(&s, Fogf, GL_FOG_START, 0);
+    CMD(&s, Fogf, GL_FOG_END, 10);
+    CMD(&s, Fogfv, GL_FOG_COLOR, 0, 0, 1, 1);
+    CMD(&s, Fogi, GL_FOG_DISTANCE_MODE_NV, GL_LINEAR); /* refused */
+    CMD(&s, Fogi, GL_FOG_DISTANCE_MODE_NV, GL_EYE_RADIAL_NV);
+    CMD(&s, Color3f, 1, 0, 0);
+    CMD(&s, Begin, GL_LINES);
+    CMD(&s, Vertex3f, 0, 0, -2);
+    CMD(&s, Vertex3f, 3, 0, -4); /* 5 from the eye: f 0.5 */
+    CMD0(&s, End);
+    CMD(&s, Begin, GL_TRIANGLES); /* large: GL's interpolation is its own plane */
+    CMD(&s, Vertex3f, -4, -3, -4);
+    CMD(&s, Vertex3f, 4, -3, -4);
+    CMD(&s, Vertex3f, 0, 3, -4);
+    CMD0(&s, End);
+    CMD(&s, Begin, GL_TRIANGLES); /* small: the radial distance per pixel */
+    CMD(&s, Vertex3f, 0, 0, -6);
+    CMD(&s, Vertex3f, 0.01, 0, -6);
+    CMD(&s, Vertex3f, 0, 0.01, -6);
+    CMD0(&s, End);
+    run(ip, &s);
+    interp_end_frame(ip);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 1);
+    CHECK_EQ_U(sc.nlines, 1);
+    if (sc.nlines == 1)
+        CHECK_NEAR(sc.lines[0].color[2][0], 0.5, 2e-3);
+    CHECK(sc.fog.on && sc.fog.distance == SCENE_FOG_RADIAL);
+    size_t own = 0, plain = 0;
+    for (size_t i = 0; i < sc.nmeshes; i++)
+        if (sc.meshes[i].look.fog)
+            *(sc.meshes[i].look.fog_own ? &own : &plain) += 1;
+    CHECK_EQ_U(own, 1);
+    CHECK_EQ_U(plain, 1);
+    write_sdl();
+    CHECK(strstr(sdl, "-sqrt(pow(") != NULL);
+    interp_destroy(ip);
+
+    ip = fresh();
+    seq_init(&s);
+    CMD(&s, Enable, GL_FOG);
+    CMD(&s, Fogi, GL_FOG_DISTANCE_MODE_NV, GL_EYE_PLANE);
+    CMD(&s, Begin, GL_TRIANGLES);
+    CMD(&s, Vertex3f, -1, -1, -5);
+    CMD(&s, Vertex3f, 1, -1, -5);
+    CMD(&s, Vertex3f, 0, 1, -5);
+    CMD0(&s, End);
+    run(ip, &s);
+    interp_end_frame(ip);
+    CHECK(sc.fog.on && sc.fog.distance == SCENE_FOG_Z);
+    write_sdl();
+    const char *fog = strstr(sdl, "#declare rgl_fog=");
+    CHECK(fog && strstr(fog, "min(1,max(0,exp(-(") != NULL);
+    if (fog && !strstr(fog, "min(1,max(0,exp(-("))
+        fprintf(stderr, "%.200s\n", fog);
+    interp_destroy(ip);
+}
+
 /* GL_COMBINE settings equal to a fixed mode, and the rest. */
 static void test_combine(void)
 {
@@ -512,6 +584,7 @@ int main(void)
     test_arrays();
     test_combine();
     test_fogged_lines();
+    test_fog_distance();
     scene_finish(&sc);
     free_res();
     return CHECK_RESULT("test_fogsec");

@@ -5,6 +5,7 @@
  * multiple of a set.
  */
 #include <GL/gl.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "check.h"
@@ -323,6 +324,86 @@ static void test_vertex_material(void)
     interp_destroy(ip);
 }
 
+/* GL_COLOR_MATERIAL as Mesa 22 follows it (measured with OSMesa; see
+ * interp_light.c "Colour material"): each case from a fresh interpreter,
+ * its front diffuse red channel after the commands. The material's diffuse
+ * is grey (0.4), the current colour red unless said. */
+static float cm_case(int k)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Enable, GL_LIGHTING);
+    CMD(&s, Color3f, 1, 0, 0);
+    CMD(&s, Materialfv, GL_FRONT_AND_BACK, GL_DIFFUSE, 0.4, 0.4, 0.4, 1);
+    switch (k) {
+    case 0: /* a glMaterial since the last draw: the glEnable keeps it */
+        CMD(&s, Enable, GL_COLOR_MATERIAL);
+        tri(&s, -2);
+        break;
+    case 1: /* a draw in between: the glEnable copies the colour */
+        tri(&s, -2);
+        CMD(&s, Enable, GL_COLOR_MATERIAL);
+        break;
+    case 2: /* a glColor that ends where it started counts for nothing */
+        CMD(&s, Enable, GL_COLOR_MATERIAL);
+        CMD(&s, Color3f, 0, 1, 0);
+        CMD(&s, Color3f, 1, 0, 0);
+        tri(&s, -2);
+        break;
+    case 3: /* after a draw, any glColor counts */
+        CMD(&s, Enable, GL_COLOR_MATERIAL);
+        tri(&s, -2);
+        CMD(&s, Color3f, 1, 0, 0);
+        break;
+    case 4: /* a second glEnable copies it */
+        CMD(&s, Enable, GL_COLOR_MATERIAL);
+        CMD(&s, Disable, GL_COLOR_MATERIAL);
+        CMD(&s, Enable, GL_COLOR_MATERIAL);
+        break;
+    case 5: /* a colour change seen at the glDisable */
+        CMD(&s, Enable, GL_COLOR_MATERIAL);
+        CMD(&s, Color3f, 0.5, 0, 0);
+        CMD(&s, Disable, GL_COLOR_MATERIAL);
+        break;
+    case 6: /* glColorMaterial naming another mode copies it */
+        CMD(&s, Enable, GL_COLOR_MATERIAL);
+        CMD(&s, ColorMaterial, GL_FRONT_AND_BACK, GL_DIFFUSE);
+        break;
+    case 7: /* Mesa's vertex buffer flushed at glPushAttrib/glPopAttrib */
+        CMD(&s, PushAttrib, GL_LIGHTING_BIT);
+        CMD0(&s, PopAttrib);
+        CMD(&s, Enable, GL_COLOR_MATERIAL);
+        break;
+    default: /* glMaterial of a tracked term while on: nothing */
+        tri(&s, -2);
+        CMD(&s, Enable, GL_COLOR_MATERIAL);
+        CMD(&s, Materialfv, GL_FRONT_AND_BACK, GL_DIFFUSE, 0, 0, 1, 1);
+        CMD(&s, Disable, GL_COLOR_MATERIAL);
+        break;
+    }
+    run(ip, &s);
+    float r = interp_state(ip)->a.lighting.material[0].diffuse[0];
+    if (k == 0 || k == 2) { /* the draw lights with the material, not the colour */
+        CHECK(sc.nmaterials == 1 && sc.materials[0].color_material[0] == 0);
+        CHECK(sc.nmaterials == 1 && sc.materials[0].diffuse[0][0] == 0.4f);
+    }
+    interp_destroy(ip);
+    return r;
+}
+
+static void test_color_material_enable(void)
+{
+    static const float want[9] = {0.4f, 1, 0.4f, 1, 1, 0.5f, 1, 1, 1};
+    for (int k = 0; k < 9; k++) {
+        float r = cm_case(k);
+        if (r != want[k])
+            fprintf(stderr, "colour material case %d: diffuse red %g, want %g\n", k, (double)r,
+                    (double)want[k]);
+        CHECK(r == want[k]);
+    }
+}
+
 /* --vertex-lighting: a lit triangle drawn unlit in GL's lit colours;
  * two-sided lighting keeps POV-Ray's. LIGHT0 along -z onto the normal
  * (0, 0, 1): e + a Ga + d (N.L) = 0.2 x 0.2 + 0.8 = 0.84 per channel. */
@@ -384,6 +465,7 @@ int main(void)
     test_ratio();
     test_array_current();
     test_vertex_material();
+    test_color_material_enable();
     test_vertex_lighting();
     test_gouraud_note();
     scene_finish(&sc);

@@ -247,22 +247,53 @@ static void test_depth_order(void)
     build(&f, true);
     expect("convex polygon", DIAG_NOTE_DEPTH, 0, 1);
 
-    /* A line strip of one colour per segment: segments meet at their ends
-     * only (GL draws the joint once). */
+    /* A line strip of one colour per segment, 3 pixels wide: at its sharp
+     * joints both segments light a few pixels (GL shows the later); each
+     * segment is a painter's step nearer than the one before, so the
+     * ray tracer shows the later too. */
+    for (int masked = 0; masked < 2; masked++) {
+        seq_init(&f);
+        ortho(&f);
+        if (masked) {
+            CMD(&f, Enable, GL_DEPTH_TEST);
+            CMD(&f, DepthMask, 0);
+        }
+        CMD(&f, ShadeModel, GL_FLAT);
+        CMD(&f, LineWidth, 3);
+        CMD(&f, Begin, GL_LINE_STRIP);
+        for (int k = 0; k < 6; k++) {
+            CMD(&f, Color3f, k & 1, 1 - (k & 1), 0);
+            CMD(&f, Vertex2f, 0.1 + 0.15 * k, k & 1 ? 0.8 : 0.2);
+        }
+        CMD0(&f, End);
+        build(&f, true);
+        /* Depth-tested with depth writes off, the later segment passes GL's
+         * test too, but no painter's step separates the segments: at the
+         * joints the two colours lie in one plane, either may show. */
+        if (masked)
+            expect("line strip, depth writes off", DIAG_NOTE_DEPTH, 1, 0);
+        else
+            expect("line strip", DIAG_NOTE_DEPTH, 0, 1);
+    }
+    /* A 1-pixel strip turning by a right angle, depth writes off: its
+     * segments share no pixel (the joint's is drawn once, by the second),
+     * though their rectangles touch: nothing can differ. */
     seq_init(&f);
     ortho(&f);
+    CMD(&f, Enable, GL_DEPTH_TEST);
+    CMD(&f, DepthMask, 0);
     CMD(&f, ShadeModel, GL_FLAT);
-    CMD(&f, LineWidth, 3);
     CMD(&f, Begin, GL_LINE_STRIP);
-    for (int k = 0; k < 6; k++) {
-        CMD(&f, Color3f, k & 1, 1 - (k & 1), 0);
-        CMD(&f, Vertex2f, 0.1 + 0.15 * k, k & 1 ? 0.8 : 0.2);
-    }
+    CMD(&f, Color3f, 1, 0, 0);
+    CMD(&f, Vertex2f, 8.3 / 64, 8.4 / 64);
+    CMD(&f, Vertex2f, 40.3 / 64, 8.4 / 64);
+    CMD(&f, Color3f, 0, 0, 1);
+    CMD(&f, Vertex2f, 40.3 / 64, 40.4 / 64);
     CMD0(&f, End);
     build(&f, true);
-    expect("line strip", DIAG_NOTE_DEPTH, 0, 1);
-    /* Two crossing lines of one GL_LINES draw, of two colours: in one plane
-     * either may show at the crossing. */
+    expect("thin line strip, depth writes off", DIAG_NOTE_DEPTH, 0, 1);
+    /* Two crossing lines of one GL_LINES draw, of two colours: GL shows
+     * the second at the crossing, a painter's step nearer. */
     seq_init(&f);
     ortho(&f);
     CMD(&f, LineWidth, 3);
@@ -275,7 +306,20 @@ static void test_depth_order(void)
     CMD(&f, Vertex2f, 0.9, 0.1);
     CMD0(&f, End);
     build(&f, true);
-    expect("crossing lines, one draw", DIAG_NOTE_DEPTH, 1, 0);
+    expect("crossing lines, one draw", DIAG_NOTE_DEPTH, 0, 1);
+    /* Two overlapping points of one draw, of two colours: points share
+     * their draw's plane, either may show. */
+    seq_init(&f);
+    ortho(&f);
+    CMD(&f, PointSize, 6);
+    CMD(&f, Begin, GL_POINTS);
+    CMD(&f, Color3f, 1, 0, 0);
+    CMD(&f, Vertex2f, 0.5, 0.5);
+    CMD(&f, Color3f, 0, 0, 1);
+    CMD(&f, Vertex2f, 0.53, 0.52);
+    CMD0(&f, End);
+    build(&f, true);
+    expect("overlapping points, one draw", DIAG_NOTE_DEPTH, 1, 0);
     /* The same lines in two draws: the later shows, as in GL. */
     seq_init(&f);
     ortho(&f);

@@ -147,6 +147,55 @@ static void test_front_buffer(void)
         seq_free(&f[k]);
 }
 
+/* glDrawBuffer (interp_buffers.c): a swap-ended frame of a double-buffered
+ * context shows the back buffer, a flushed one the front; GL_NONE draws
+ * nowhere; a colour clear of the buffer not shown keeps the scene; a
+ * single-buffered context refuses GL_BACK. */
+static void test_draw_buffer(void)
+{
+    seq f[3];
+    for (int k = 0; k < 3; k++)
+        seq_init(&f[k]);
+    CMD(&f[0], Clear, GL_COLOR_BUFFER_BIT);
+    CMD(&f[0], DrawBuffer, GL_FRONT, 3);
+    tri(&f[0], 0);
+    CMD(&f[0], DrawBuffer, GL_BACK, 3);
+    tri(&f[0], 0.1);
+    CMD(&f[0], DrawBuffer, GL_FRONT_AND_BACK, 3);
+    tri(&f[0], 0.2);
+    CMD(&f[0], DrawBuffer, GL_NONE, 3);
+    tri(&f[0], 0.3);
+    CMD(&f[0], DrawBuffer, GL_FRONT, 3);
+    CMD(&f[0], Clear, GL_COLOR_BUFFER_BIT); /* the front's alone */
+    CMD(&f[1], DrawBuffer, GL_FRONT, 3);
+    CMD(&f[1], Clear, GL_COLOR_BUFFER_BIT);
+    tri(&f[1], 0);
+    CMD(&f[1], DrawBuffer, GL_BACK, 3);
+    tri(&f[1], 0.1);
+    CMD0(&f[1], Flush); /* shows the front buffer */
+    CMD(&f[2], DrawBuffer, GL_BACK, 1); /* single-buffered: refused */
+    tri(&f[2], 0);
+    CMD(&f[2], DrawBuffer, GL_NONE, 1);
+    tri(&f[2], 0.1);
+    trace t;
+    trace_init(&t);
+    for (uint32_t k = 0; k < 3; k++)
+        trace_frame(&t, 0, k, 0, 0, &f[k]);
+    trace_finish(&t);
+    rgl_reader *r;
+    CHECK(rgl_reader_open_memory(t.data, t.size, &r, NULL) == RGL_OK);
+    translator *tr = translator_create(r, NULL);
+    CHECK(tr != NULL);
+    static const size_t expect[3] = {2, 1, 1};
+    for (size_t i = 0; tr && i < 3; i++)
+        CHECK_EQ_U(tris_of(tr, i), expect[i]);
+    translator_destroy(tr);
+    rgl_reader_destroy(r);
+    trace_free(&t);
+    for (int k = 0; k < 3; k++)
+        seq_free(&f[k]);
+}
+
 /* A chain of flushes with no clear replays at most FRONT_MAX_FRAMES
  * earlier frames, with a note. */
 static void test_front_buffer_capped(void)
@@ -350,6 +399,7 @@ int main(void)
     test_long_message_dropped();
     test_front_buffer();
     test_front_buffer_capped();
+    test_draw_buffer();
     test_projection_layers();
     test_ortho_near_zero();
     scene_finish(&sc);

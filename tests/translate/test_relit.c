@@ -58,8 +58,10 @@ static void lit(seq *s)
 #define DEFAULT_LIT 0.84
 
 /* case 0: a front face, lit by POV-Ray; 1: a back face, lit as GL does;
- * 2: the back face with two-sided lighting (POV-Ray's); 3: the back face
- * culled; 4: --vertex-lighting (all GL's already). */
+ * 2: the back face with two-sided lighting, lit as GL does too (the back
+ * material, the normal turned away from the light: the ambient term
+ * 0.2 * 0.2 alone); 3: the back face culled; 4: --vertex-lighting (all
+ * GL's already). */
 static void test_back_faces(void)
 {
     for (int c = 0; c < 5; c++) {
@@ -81,11 +83,11 @@ static void test_back_faces(void)
             continue;
         }
         const scene_mesh *m = &sc.meshes[sc.nmeshes - 1];
-        bool gl_lit = c == 1 || c == 4;
+        bool gl_lit = c == 1 || c == 2 || c == 4;
         CHECK_EQ_U(m->tri_count, 1);
         CHECK(m->look.lit == !gl_lit);
         if (gl_lit && sc.ntris == 1)
-            CHECK_NEAR(sc.verts[sc.tris[0].v[0]].color[0], DEFAULT_LIT, 1e-6);
+            CHECK_NEAR(sc.verts[sc.tris[0].v[0]].color[0], c == 2 ? 0.04 : DEFAULT_LIT, 1e-6);
         CHECK_EQ_U(notes(), 0);
         interp_destroy(ip);
     }

@@ -471,6 +471,97 @@ static void test_stencil(void)
     interp_destroy(ip);
 }
 
+/* Issue 22: a list of a tessellated shape called many times and shared
+ * holds its facets once; the frame's cap on facets (2^21) counts them so.
+ * Before, the 1025th call of a 2048-facet sphere was skipped. */
+static void test_shared_facets(void)
+{
+    interp *ip = fresh();
+    seq_init(&bodies[0]);
+    CMD(&bodies[0], SolidSphere, 0.5, 64, 32); /* 2048 facets; flat lit: tessellated */
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 64, 64);
+    CMD(&s, MatrixMode, GL_PROJECTION);
+    CMD(&s, Ortho, -20, 20, -20, 20, 1, 100); /* each call faces the camera alike */
+    CMD(&s, MatrixMode, GL_MODELVIEW);
+    CMD(&s, Enable, GL_DEPTH_TEST);
+    CMD(&s, Enable, GL_LIGHTING);
+    CMD(&s, ShadeModel, GL_FLAT);
+    CMD(&s, NewList, 1, GL_COMPILE, 1);
+    CMD0(&s, EndList);
+    CMD(&s, Translatef, 0, 0, -50);
+    for (int i = 0; i < 1100; i++) {
+        CMD(&s, Translatef, 0.01, 0, 0);
+        CMD(&s, CallList, 1);
+    }
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_IGNORED), 0);
+    CHECK_EQ_U(sc.nsolids, 0);
+    CHECK_EQ_U(sc.ninstances, 1100);
+    CHECK(sc.ntris <= 2 * 2048);
+    interp_destroy(ip);
+    seq_free(&bodies[0]);
+}
+
+/* The triangle of tri() wound clockwise: a back face under GL_CCW. */
+static void tri_cw(seq *s)
+{
+    CMD(s, Begin, GL_TRIANGLES);
+    CMD(s, Vertex3f, 0, 0, -5);
+    CMD(s, Vertex3f, 0, 1, -5);
+    CMD(s, Vertex3f, 1, 0, -5);
+    CMD0(s, End);
+}
+
+/* glStencil*Separate: a back face that does not write stays out of the
+ * region; faces tested differently are exact while one facing is drawn
+ * (culling chooses the back state), noted once a back face takes the
+ * front's; a bad face is an invalid enum. */
+static void test_stencil_two_side(void)
+{
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 100, 100);
+    CMD(&s, MatrixMode, GL_PROJECTION);
+    CMD(&s, Frustum, -1, 1, -1, 1, 1, 100);
+    CMD(&s, MatrixMode, GL_MODELVIEW);
+    CMD(&s, Clear, GL_STENCIL_BUFFER_BIT);
+    CMD(&s, Enable, GL_STENCIL_TEST);
+    CMD(&s, StencilFunc, GL_ALWAYS, 1, 255);
+    CMD(&s, StencilOp, GL_KEEP, GL_KEEP, GL_REPLACE);
+    CMD(&s, StencilOpSeparate, GL_BACK, GL_KEEP, GL_KEEP, GL_KEEP);
+    CMD(&s, StencilOpSeparate, GL_LEFT, GL_KEEP, GL_KEEP, GL_KEEP); /* refused */
+    CMD(&s, ColorMask, 0, 0, 0, 0);
+    tri_cw(&s); /* back: writes nothing */
+    tri(&s);    /* front: the region */
+    CMD(&s, ColorMask, 1, 1, 1, 1);
+    CMD(&s, StencilOp, GL_KEEP, GL_KEEP, GL_KEEP);
+    CMD(&s, StencilFuncSeparate, GL_FRONT, GL_EQUAL, 1, 255);
+    CMD(&s, StencilFuncSeparate, GL_BACK, GL_NOTEQUAL, 1, 255);
+    tri(&s); /* front faces only: inside, exact */
+    CMD(&s, Enable, GL_CULL_FACE);
+    CMD(&s, CullFace, GL_FRONT);
+    tri_cw(&s); /* back faces only: outside, exact */
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 1);
+    CHECK_EQ_U(sc.nstencil, 1);
+    CHECK_EQ_U(sc.nmeshes, 2);
+    if (sc.nmeshes == 2) {
+        CHECK_EQ_U(sc.meshes[0].look.stencil_out, 0);
+        CHECK_EQ_U(sc.meshes[1].look.stencil_out, 1);
+    }
+    CHECK_EQ_U(count(DIAG_NOTE_STENCIL_TWO_SIDE), 0);
+    CHECK_EQ_U(count(DIAG_NOTE_STENCIL), 0);
+    seq_init(&s);
+    CMD(&s, Disable, GL_CULL_FACE);
+    tri_cw(&s); /* a back face under the front faces' test: noted */
+    run(ip, &s);
+    CHECK_EQ_U(count(DIAG_NOTE_STENCIL_TWO_SIDE), 1);
+    interp_destroy(ip);
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -483,6 +574,8 @@ int main(void)
     test_color_mask();
     test_line_stipple();
     test_stencil();
+    test_shared_facets();
+    test_stencil_two_side();
     scene_finish(&sc);
     return CHECK_RESULT("test_shapes");
 }

@@ -534,6 +534,97 @@ static void test_multitex(void)
     free_res();
 }
 
+/* Issue 22: the texture budget counts each image once a frame, however
+ * often it is drawn; what is new (rewritten texels, another slice) is
+ * still counted every time, so a hostile trace stays bounded. */
+static void test_budget_once(void)
+{
+    enum { T = 64, N = 10000 };
+    static uint8_t px[T * T * 4], other[T * T * 4];
+    for (size_t i = 0; i < sizeof px; i++) {
+        px[i] = (uint8_t)(i * 7 + (i >> 8));
+        other[i] = (uint8_t)(px[i] ^ 0x5a);
+    }
+    uint32_t id = add_bytes(px, sizeof px), id2 = add_bytes(other, sizeof other);
+    uint32_t rect = add_bytes(px, 16 * 16 * 4);
+    /* The levels' bytes: 64 x 64 down to 1 x 1, 4 bytes a texel. */
+    uint64_t chain = 0;
+    for (int s0 = T; s0 >= 1; s0 /= 2)
+        chain += (uint64_t)s0 * (uint64_t)s0 * 4;
+    interp_budget_use used, limit;
+
+    /* A mipmapped texture drawn N times, each triangle its own primitive. */
+    interp *ip = fresh();
+    seq s;
+    seq_init(&s);
+    CMD(&s, BindTexture, GL_TEXTURE_2D, 1);
+    CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
+    CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    CMD(&s, TexImage2D, GL_TEXTURE_2D, 0, GL_RGBA, T, T, 0, GL_RGBA, GL_UNSIGNED_BYTE, id);
+    CMD(&s, Enable, GL_TEXTURE_2D);
+    for (int i = 0; i < N; i++)
+        triangle(&s);
+    run(ip, &s);
+    interp_budget_used(ip, &used, &limit);
+    CHECK(interp_frame_cut(ip) == NULL);
+    CHECK_EQ_U(sc.ntextures, 7);
+    /* The upload (read, converted, its levels made) and one copy of the
+     * levels for the scene: what a single draw costs. */
+    uint64_t once = 2 * (uint64_t)T * T * 4 + (chain - (uint64_t)T * T * 4) + chain;
+    CHECK_EQ_U(used.texels, once);
+    CHECK_EQ_U(limit.texels, INTERP_BUDGET_TEXELS);
+    /* N draws of one primitive, texture or not, are N meshes' worth. */
+    CHECK(used.triangles == N && used.assembled == 3 * N);
+
+    /* Texels rewritten before each draw: every draw holds another image. */
+    seq_init(&s);
+    for (int i = 0; i < 100; i++) {
+        CMD(&s, TexSubImage2D, GL_TEXTURE_2D, 0, 0, 0, T, T, GL_RGBA, GL_UNSIGNED_BYTE,
+            i % 2 ? id : id2);
+        triangle(&s);
+    }
+    run(ip, &s);
+    uint64_t before = used.texels;
+    interp_budget_used(ip, &used, &limit);
+    CHECK(used.texels - before >= 100 * chain);
+    interp_destroy(ip);
+
+    /* A pixel rectangle drawn N times is read and converted once; each
+     * draw costs the pixels it writes. */
+    ip = fresh();
+    seq_init(&s);
+    CMD(&s, Viewport, 0, 0, 320, 240);
+    CMD(&s, RasterPos2f, 0, 0);
+    for (int i = 0; i < N; i++)
+        CMD(&s, DrawPixels, 16, 16, GL_RGBA, GL_UNSIGNED_BYTE, rect);
+    run(ip, &s);
+    interp_budget_used(ip, &used, &limit);
+    CHECK(interp_frame_cut(ip) == NULL);
+    /* the overlay, one read and conversion, N x 256 pixels written */
+    CHECK_EQ_U(used.texels, 320 * 240 * 4 + 16 * 16 * 4 + 16 * 16 * 16 + (uint64_t)N * 256);
+    /* the rectangle's first pixel at the raster position, the window's centre */
+    const uint8_t *o = sc.overlay ? sc.overlay + (120 * 320 + 160) * 4 : NULL;
+    CHECK(o && o[0] == px[0] && o[1] == px[1] && o[2] == px[2]);
+    interp_destroy(ip);
+
+    /* A 3D texture at another r at every draw: a new slice each time. */
+    ip = fresh();
+    seq_init(&s);
+    setup(&s, GL_TEXTURE_3D, 3);
+    CMD(&s, TexImage3D, GL_TEXTURE_3D, 0, GL_RGBA, 16, 16, 16, 0, GL_RGBA, GL_UNSIGNED_BYTE, id);
+    for (int i = 0; i < 8; i++) {
+        CMD(&s, TexCoord3f, 0, 0, (i % 4 + 0.5) / 16);
+        CMD(&s, Rectf, 0, 0, 1, 1);
+    }
+    run(ip, &s);
+    interp_budget_used(ip, &used, &limit);
+    /* read and held (2 x 16 KiB), then 4 slices made and copied once each */
+    CHECK_EQ_U(used.texels, 2 * 16384 + 4 * 2 * 1024);
+    CHECK_EQ_U(sc.ntextures, 4);
+    interp_destroy(ip);
+    free_res();
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -545,6 +636,7 @@ int main(void)
     test_texgen();
     test_images();
     test_multitex();
+    test_budget_once();
     scene_finish(&sc);
     return CHECK_RESULT("test_textures");
 }

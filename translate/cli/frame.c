@@ -215,11 +215,14 @@ static interp *carried_state(translator *t, uint32_t stream, size_t i, size_t *b
  * single-buffered frames back to the last one that clears it
  * (frame_front.c). A frame with a state snapshot restores GL's state, not
  * the front buffer: the chain goes on through it. *capped: the chain went
- * on past FRONT_MAX_FRAMES. */
-static size_t front_first(translator *t, size_t i, const rgl_frame_info *fi, bool *capped)
+ * on past FRONT_MAX_FRAMES; *flushed: frame i ends with glFlush or glFinish
+ * (it shows the front buffer: interp_set_shown_front). */
+static size_t front_first(translator *t, size_t i, const rgl_frame_info *fi, bool *capped,
+                          bool *flushed)
 {
     *capped = false;
     front_scan fs = front_scan_frame(fi);
+    *flushed = fs.flushed;
     if (!fs.flushed || fs.clears_color)
         return i;
     size_t first = i;
@@ -285,7 +288,8 @@ static void front_replay(translator *t, interp *ip, size_t first, size_t i, uint
  * (NULL: the first draw's). False when it stopped before the frame's
  * commands (out->status says why). */
 static bool build_pass(translator *t, size_t i, diag_log *log, frame_result *out,
-                       const mat4 *preset, const int32_t *preset_vp, bool back_cleared)
+                       const mat4 *preset, const int32_t *preset_vp, bool back_cleared,
+                       uint32_t epochs)
 {
     interp *ip = t->ip;
     const rgl_frame_info *fi = &out->info;
@@ -293,8 +297,8 @@ static bool build_pass(translator *t, size_t i, diag_log *log, frame_result *out
     interp_reset(ip);
     size_t bad = 0;
     int64_t last = -1;
-    bool capped = false;
-    size_t first = front_first(t, i, fi, &capped);
+    bool capped = false, flushed = false;
+    size_t first = front_first(t, i, fi, &capped, &flushed);
     rgl_frame_info f0 = *fi; /* the first frame shown: its state starts the replay */
     if (first < i && get_frame(t, first, &f0, &out->error) != RGL_OK) {
         first = i;
@@ -309,10 +313,12 @@ static bool build_pass(translator *t, size_t i, diag_log *log, frame_result *out
         interp_copy_state(ip, src);
     }
     interp_begin_frame(ip);
+    interp_set_shown_front(ip, flushed); /* the front buffer, or the back one */
     if (!(fi->flags & RGL_FRAME_LIVE_CONTEXT))
         interp_unrecorded_batch(ip);
     if (preset)
         interp_proj_preset(ip, preset, preset_vp, back_cleared);
+    interp_proj_preset_epochs(ip, epochs);
     if (first < i) {
         interp_set_frame(ip, i, NULL);
         front_replay(t, ip, first, i, fi->stream, log);
@@ -359,21 +365,28 @@ rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result
     out->status = get_frame(t, i, &out->info, &out->error);
     if (out->status != RGL_OK)
         return out->status;
-    if (!build_pass(t, i, log, out, NULL, NULL, false))
+    if (!build_pass(t, i, log, out, NULL, NULL, false, 0))
         return out->status;
     /* A frame of several projections whose first draw was not the 3D
-     * scene's: once more with the 3D scene's camera (interp_proj.c). */
+     * scene's: once more with the 3D scene's camera; a frame with
+     * depth-only clears between draws: once more with their count
+     * (interp_proj.c). */
     mat4 proj;
     int32_t vp[4];
-    bool back_cleared;
-    if (out->status == RGL_OK && !t->scene.failed &&
-        interp_proj_choice(ip, &proj, vp, &back_cleared)) {
-        if (log)
-            diag_clear(log);
-        if (!build_pass(t, i, log, out, &proj, vp, back_cleared))
-            return out->status;
+    bool back_cleared = false;
+    if (out->status == RGL_OK && !t->scene.failed) {
+        bool chosen = interp_proj_choice(ip, &proj, vp, &back_cleared);
+        uint32_t epochs = interp_proj_depth_epochs(ip, chosen ? &proj : NULL, chosen ? vp : NULL);
+        if (chosen || epochs) {
+            if (log)
+                diag_clear(log);
+            if (!build_pass(t, i, log, out, chosen ? &proj : NULL, chosen ? vp : NULL,
+                            back_cleared, epochs))
+                return out->status;
+        }
     }
     out->unrecorded = interp_unrecorded(ip);
+    interp_budget_used(ip, &out->used, &out->limit);
     const char *cut = interp_frame_cut(ip);
     if (cut)
         snprintf(out->cut, sizeof out->cut, "%s", cut);

@@ -17,6 +17,7 @@
 
 #include "diag.h"
 #include "format.h"
+#include "interp.h"
 #include "outbuf.h"
 #include "povwrite.h"
 #include "scene.h"
@@ -45,6 +46,8 @@ typedef struct frame_result {
     char cut[DIAG_TEXT];
     char missing[DIAG_TEXT];
     uint32_t nmissing;
+    /* What the frame used of its budget, and the budget (--dump). */
+    interp_budget_use used, limit;
 } frame_result;
 
 /* Builds the scene of frame i (file order), logging diagnostics into log

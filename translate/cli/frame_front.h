@@ -14,7 +14,8 @@
 /* What a frame's commands say about the front buffer. */
 typedef struct front_scan {
     bool flushed;      /* the last GL call is glFlush or glFinish */
-    bool clears_color; /* a glClear with GL_COLOR_BUFFER_BIT */
+    bool clears_color; /* a glClear with GL_COLOR_BUFFER_BIT, while the draw
+                          buffer may be the front one */
 } front_scan;
 
 /* Scans fi's commands (a damaged tail ends the scan). Recorder records and

@@ -253,6 +253,7 @@ typedef struct slot {
     char *incomplete;      /* why the scene is incomplete: the cut, then what
                               damage took (frame_result), or NULL */
     bool damaged;          /* a part of it was lost to damage */
+    interp_budget_use used, limit; /* of the frame budget (--dump) */
 } slot;
 
 typedef struct job {
@@ -429,6 +430,8 @@ static void *worker(void *arg)
         s->status = translator_build(t, s->frame, j->o->quiet ? NULL : s->log, &res);
         s->error = res.error;
         s->info = res.info;
+        s->used = res.used;
+        s->limit = res.limit;
         if (res.unrecorded)
             (void)unrec_copy(&s->unrec, res.unrecorded);
         if (res.frame_name) {
@@ -685,6 +688,23 @@ done:
     tr_free(tmp_ini);
     tr_free(fin_pov);
     tr_free(fin_ini);
+}
+
+/* --dump while translating: what the frame used of each budget
+ * (docs/mapping.md "Bounds"), on standard output after the dump. */
+static void say_budget(const options *o, const slot *s)
+{
+    if (!o->dump)
+        return;
+    const interp_budget_use *u = &s->used, *l = &s->limit;
+    printf("frame %zu: budget: commands %" PRIu64 " of %" PRIu64 ", vertices assembled %" PRIu64
+           " of %" PRIu64 ", vertices %" PRIu64 " of %" PRIu64 ", triangles %" PRIu64 " of %" PRIu64
+           ", lines and points %" PRIu64 " of %" PRIu64 ", solids %" PRIu64 " of %" PRIu64
+           ", instances %" PRIu64 " of %" PRIu64 ", texture bytes %" PRIu64 " of %" PRIu64 "\n",
+           s->frame, u->commands, l->commands, u->assembled, l->assembled, u->vertices,
+           l->vertices, u->triangles, l->triangles, u->lines, l->lines, u->solids, l->solids,
+           u->instances, l->instances, u->texels, l->texels);
+    fflush(stdout);
 }
 
 /* A frame written incomplete: the cut is a note (the frame is what the
@@ -1020,6 +1040,7 @@ int main(int argc, char **argv)
         } else {
             publish(&o, &tot, &used, k, s);
             say_incomplete(&o, &tot, s);
+            say_budget(&o, s);
         }
         if (fatal && s->status == RGL_OK && !s->write_errno) {
             char *tmp = temp_path(o.outdir, k, scene_ext(&o));

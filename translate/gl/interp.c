@@ -169,9 +169,12 @@ void interp_default_state(gl_state *st)
     a->color_buffer.alpha_func = GL_ALWAYS;
     for (int i = 0; i < 4; i++)
         a->color_buffer.mask[i] = true;
-    a->stencil.func = GL_ALWAYS;
-    a->stencil.fail = a->stencil.zfail = a->stencil.zpass = GL_KEEP;
-    a->stencil.value_mask = a->stencil.write_mask = 0xffffffffu;
+    for (int f = 0; f < 2; f++) {
+        struct gl_stencil_face *sf = &a->stencil.face[f];
+        sf->func = GL_ALWAYS;
+        sf->fail = sf->zfail = sf->zpass = GL_KEEP;
+        sf->value_mask = sf->write_mask = 0xffffffffu;
+    }
     a->line.stipple_factor = 1;
     a->line.stipple_pattern = 0xffff;
     memset(a->polygon.stipple, 0xff, sizeof a->polygon.stipple);
@@ -179,7 +182,9 @@ void interp_default_state(gl_state *st)
     a->depth.mask = true;
     a->depth.clear = 1;
     a->fog.mode = GL_EXP;
+    a->color_buffer.draw_buffer = INTERP_DRAW_BUFFER_DEFAULT;
     a->fog.coord_src = GL_FRAGMENT_DEPTH;
+    a->fog.distance = GL_EYE_PLANE_ABSOLUTE_NV; /* Mesa's; NV_fog_distance says GL_EYE_RADIAL_NV may be */
     a->lighting.color_control = GL_SINGLE_COLOR;
     a->fog.density = 1;
     a->fog.start = 0;
@@ -241,6 +246,7 @@ void interp_destroy(interp *ip)
     tr_free(ip->ras_runs);
     tr_free(ip->ras_pieces);
     interp_textures_free(ip);
+    interp_pixels_free(ip);
     interp_eval_free(ip);
     interp_nurbs_free(ip);
     interp_dest_free(ip);
@@ -363,6 +369,10 @@ static inline void set_colour(interp *ip, float c0, float c1, float c2, float c3
     put4(a->current.color, c0, c1, c2, c3);
     if (!a->caps[INTERP_CAP_COLOR_MATERIAL])
         return;
+    if (ip->st.cm.stale) {
+        interp_cm_colour(ip);
+        return;
+    }
     if (a->lighting.color_material_face == GL_FRONT_AND_BACK &&
         a->lighting.color_material_mode == GL_AMBIENT_AND_DIFFUSE) {
         /* GL's default, interp_color_material_update's first case */
@@ -607,9 +617,14 @@ void interp_diag(interp *ip, diag_kind kind, const char *fmt, ...)
     diag_add(ip->log, kind, prefix, "%s", msg);
 }
 
-_Static_assert(DIAG_COUNT - DIAG_FIRST_NOTE <= 64, "the notes of a frame are bits of a uint64_t");
+_Static_assert(DIAG_COUNT - DIAG_FIRST_NOTE <= 64 * INTERP_NOTE_WORDS,
+               "the notes of a frame are bits of INTERP_NOTE_WORDS uint64_t");
 
-void interp_clear_notes(interp *ip) { ip->notes_seen = ip->notes_held = 0; }
+void interp_clear_notes(interp *ip)
+{
+    memset(ip->notes_seen, 0, sizeof ip->notes_seen);
+    memset(ip->notes_held, 0, sizeof ip->notes_held);
+}
 
 void interp_frame_note(interp *ip, diag_kind kind) { interp_note(ip, kind); }
 
@@ -618,17 +633,28 @@ void interp_frame_note_held(interp *ip, diag_kind kind, const char *why)
     interp_note_held(ip, kind, why);
 }
 
+/* The word of the notes' bitsets that holds kind, and its bit there. */
+static size_t note_word(diag_kind kind, uint64_t *bit)
+{
+    unsigned i = (unsigned)(kind - DIAG_FIRST_NOTE);
+    *bit = 1ull << (i % 64);
+    return i / 64;
+}
+
 bool interp_note_said(const interp *ip, diag_kind kind)
 {
-    return !ip->log || (ip->notes_seen & (1ull << (kind - DIAG_FIRST_NOTE)));
+    uint64_t bit;
+    size_t w = note_word(kind, &bit);
+    return !ip->log || (ip->notes_seen[w] & bit);
 }
 
 void interp_note(interp *ip, diag_kind kind)
 {
-    uint64_t bit = 1ull << (kind - DIAG_FIRST_NOTE);
-    if (!ip->log || (ip->notes_seen & bit))
+    uint64_t bit;
+    size_t w = note_word(kind, &bit);
+    if (!ip->log || (ip->notes_seen[w] & bit))
         return;
-    ip->notes_seen |= bit;
+    ip->notes_seen[w] |= bit;
     char prefix[DIAG_PREFIX];
     make_prefix(ip, prefix, sizeof prefix);
     diag_add(ip->log, kind, prefix, "%s", diag_kind_name(kind));
@@ -637,26 +663,28 @@ void interp_note(interp *ip, diag_kind kind)
 void interp_note_cmd(interp *ip, diag_kind kind, bool has_cmd, uint64_t index, const char *name,
                      uint64_t offset, const char *why)
 {
-    uint64_t bit = 1ull << (kind - DIAG_FIRST_NOTE);
-    if (!ip->log || (ip->notes_seen & bit) || (why && (ip->notes_held & bit)))
+    uint64_t bit;
+    size_t w = note_word(kind, &bit);
+    if (!ip->log || (ip->notes_seen[w] & bit) || (why && (ip->notes_held[w] & bit)))
         return;
     char prefix[DIAG_PREFIX];
     make_prefix_at(ip, prefix, sizeof prefix, has_cmd, index, name, offset);
     if (why) {
-        ip->notes_held |= bit;
+        ip->notes_held[w] |= bit;
         diag_add_held(ip->log, kind, prefix, why);
     } else {
-        ip->notes_seen |= bit;
+        ip->notes_seen[w] |= bit;
         diag_add(ip->log, kind, prefix, "%s", diag_kind_name(kind));
     }
 }
 
 void interp_note_held(interp *ip, diag_kind kind, const char *why)
 {
-    uint64_t bit = 1ull << (kind - DIAG_FIRST_NOTE);
-    if (!ip->log || ((ip->notes_seen | ip->notes_held) & bit))
+    uint64_t bit;
+    size_t w = note_word(kind, &bit);
+    if (!ip->log || ((ip->notes_seen[w] | ip->notes_held[w]) & bit))
         return;
-    ip->notes_held |= bit;
+    ip->notes_held[w] |= bit;
     char prefix[DIAG_PREFIX];
     make_prefix(ip, prefix, sizeof prefix);
     diag_add_held(ip->log, kind, prefix, why);
@@ -706,9 +734,10 @@ static void set_cap(interp *ip, const rgl_cmd *cmd, bool on)
     bool was = ip->st.a.caps[i];
     ip->st.a.caps[i] = on;
     /* GL 1.x 2.13.3: while COLOR_MATERIAL is on, the material tracks the
-     * current colour, starting at the glEnable. */
-    if (i == INTERP_CAP_COLOR_MATERIAL && on && !was)
-        interp_color_material_update(ip);
+     * current colour, starting at the glEnable (as Mesa does it:
+     * interp_cm_enable). */
+    if (i == INTERP_CAP_COLOR_MATERIAL && on != was)
+        interp_cm_enable(ip, on);
 }
 
 void interp_enable(interp *ip, const rgl_cmd *cmd) { set_cap(ip, cmd, true); }
@@ -724,6 +753,7 @@ void interp_pushattrib(interp *ip, const rgl_cmd *cmd)
                     INTERP_ATTRIB_DEPTH);
         return;
     }
+    interp_cm_flush(ip);
     gl_attrib_entry *e = &st->attrib_stack[st->attrib_depth++];
     e->mask = (uint32_t)cmd->arg[0].v.u;
     e->saved = st->a;
@@ -737,6 +767,7 @@ void interp_popattrib(interp *ip, const rgl_cmd *cmd)
         interp_diag(ip, DIAG_GL_STACK_UNDERFLOW, "attribute stack underflow");
         return;
     }
+    interp_cm_flush(ip);
     const gl_attrib_entry *e = &st->attrib_stack[--st->attrib_depth];
     const gl_attribs *s = &e->saved;
     gl_attribs *a = &st->a;
@@ -780,9 +811,19 @@ void interp_popattrib(interp *ip, const rgl_cmd *cmd)
         a->pixel = s->pixel;
     if (m & GL_SCISSOR_BIT)
         a->scissor = s->scissor;
+    bool cm_was = a->caps[INTERP_CAP_COLOR_MATERIAL];
     for (int i = 0; i < INTERP_CAP_COUNT; i++)
         if ((m & GL_ENABLE_BIT) || (m & cap_groups[i]))
             a->caps[i] = s->caps[i];
+    /* Mesa copies the current colour into the tracked terms when the pop
+     * turns colour material on or restores the colour or material under
+     * it (measured: tests/programs/cmat_*.c). */
+    if (!a->caps[INTERP_CAP_COLOR_MATERIAL]) {
+        ip->st.cm.stale = false;
+    } else if (!cm_was || (m & (GL_CURRENT_BIT | GL_LIGHTING_BIT))) {
+        ip->st.cm.stale = false;
+        interp_color_material_update(ip);
+    }
 }
 
 /* ---- Calls with no effect on the picture ------------------------------------------------- */

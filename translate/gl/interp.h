@@ -74,7 +74,8 @@
  * bytes (a list that calls itself twice) cannot ask for unbounded time or
  * memory. Output is counted as the scene holds it: a display list drawn
  * many times and shared (interp_list.c) counts its vertices once and one
- * instance per call. A frame that would exceed one is cut there: the rest
+ * instance per call, a texture image drawn many times once
+ * (interp_texture.c). A frame that would exceed one is cut there: the rest
  * of its commands are skipped, what came before is kept, and
  * interp_frame_cut says why. */
 #define INTERP_BUDGET_COMMANDS (1u << 26)    /* commands run */
@@ -85,7 +86,8 @@
                                                 costs the writer as a few triangles) */
 #define INTERP_BUDGET_SOLIDS (1u << 18)      /* exact GLU/GLUT solids it holds */
 #define INTERP_BUDGET_INSTANCES (1u << 18)   /* placements of shared list output */
-#define INTERP_BUDGET_TEXELS (1u << 28)      /* texture bytes read, copied or held */
+#define INTERP_BUDGET_TEXELS (1u << 28)      /* texture bytes read, copied or held: each
+                                                image once, however often drawn */
 
 enum interp_matrix_mode { INTERP_MV, INTERP_PROJ, INTERP_TEX, INTERP_NMODES };
 
@@ -150,9 +152,14 @@ typedef struct gl_attribs {
         uint16_t stipple_pattern; /* bit 0 first */
     } line; /* GL_LINE_BIT */
     struct {
-        GLenum func, fail, zfail, zpass;
-        int32_t ref, clear;
-        uint32_t value_mask, write_mask;
+        /* front and back faces' (GL 2.0 two-sided stencil; points, lines,
+         * bitmaps and pixels take the front's) */
+        struct gl_stencil_face {
+            GLenum func, fail, zfail, zpass;
+            int32_t ref;
+            uint32_t value_mask, write_mask;
+        } face[2];
+        int32_t clear;
     } stencil; /* GL_STENCIL_BUFFER_BIT */
     struct {
         float clear[4]; /* glClearAccum, clamped to [-1, 1] */
@@ -180,6 +187,8 @@ typedef struct gl_attribs {
         float blend_color[4]; /* glBlendColor */
         float alpha_ref;
         bool mask[4];
+        GLenum draw_buffer; /* glDrawBuffer; INTERP_DRAW_BUFFER_DEFAULT: the
+                               context's default, the buffer it shows */
     } color_buffer; /* GL_COLOR_BUFFER_BIT */
     struct {
         GLenum func;
@@ -190,6 +199,7 @@ typedef struct gl_attribs {
         GLenum mode;
         float density, start, end, color[4];
         GLenum coord_src; /* GL_FOG_COORD_SRC */
+        GLenum distance;  /* GL_FOG_DISTANCE_MODE_NV */
     } fog; /* GL_FOG_BIT */
     struct {
         GLenum perspective, point, line, polygon, fog;
@@ -247,6 +257,8 @@ typedef struct gl_attrib_entry {
 } gl_attrib_entry;
 
 /* The whole context state that frames carry over. */
+#define INTERP_DRAW_BUFFER_DEFAULT 0xffffffffu
+
 typedef struct gl_state {
     gl_attribs a;
     mat4 modelview[INTERP_MODELVIEW_DEPTH];
@@ -264,6 +276,18 @@ typedef struct gl_state {
     uint32_t active_unit, client_unit; /* glActiveTexture, glClientActiveTexture */
     gl_tex_unit_parked units[INTERP_TEX_UNITS]; /* the active unit's slot is stale */
     float unit_texcoord[INTERP_TEX_UNITS][4]; /* current, units 1..; unit 0's is a.current */
+    /* GL_COLOR_MATERIAL as Mesa follows it (interp_light.c, "Colour
+     * material"; not attributes): the terms glMaterial set since the last
+     * draw (by face, SCENE_CM_* bits), and after a glEnable that kept some
+     * of them, the colour current then and whether a draw came since. */
+    struct gl_cm {
+        uint8_t held[2];
+        bool stale, drawn;
+        float ref[4];
+    } cm;
+    /* The context's colour buffers (glDrawBuffer's visual, format.md
+     * 3.19): 0 unknown, else 1 | 2 double-buffered | 4 stereo. */
+    uint32_t visual;
 } gl_state;
 
 typedef struct interp interp;
@@ -283,6 +307,13 @@ void interp_set_budget_shift(interp *ip, unsigned shift);
  * drawn unlit, as OpenGL shades them (raygl2pov --vertex-lighting,
  * interp_gouraud.c); off (the default): POV-Ray lights each pixel. */
 void interp_set_vertex_lighting(interp *ip, bool on);
+
+/* Whether the frame about to run shows the front buffer (it ends with
+ * glFlush or glFinish: a single-buffered frame) rather than a
+ * double-buffered context's back buffer; draws into the other one are
+ * left out (interp_buffers.c). Until set: the back one. */
+void interp_set_shown_front(interp *ip, bool front);
+
 /* Whether the scenes are rendered with shadows (the default; off:
  * raygl2pov --no-shadows): the notes of highlights the shadowed render
  * approximates are said only then, those of the shadowless one only
@@ -318,6 +349,13 @@ void interp_frame_note_held(interp *ip, diag_kind kind, const char *why);
  * interp_begin_frame, passing back_cleared on) (interp_proj.c). */
 bool interp_proj_choice(const interp *ip, mat4 *proj, int32_t vp[4], bool *back_cleared);
 void interp_proj_preset(interp *ip, const mat4 *proj, const int32_t vp[4], bool back_cleared);
+/* The depth-only clears between draws in the frame's last colour-cleared
+ * part, after the first draw of the camera proj, vp (NULL: the one the
+ * first draw fixed): when not 0, translate the frame again with them
+ * preset (after interp_begin_frame), so each part lies in front of the
+ * ones before. */
+uint32_t interp_proj_depth_epochs(const interp *ip, const mat4 *proj, const int32_t vp[4]);
+void interp_proj_preset_epochs(interp *ip, uint32_t n);
 
 /* Forgets which notes the frame logged, so each is logged again once. */
 void interp_clear_notes(interp *ip);
@@ -360,6 +398,16 @@ void interp_set_heavy(interp *ip, interp_heavy_fn fn, void *ctx);
 /* Why the current frame was cut (its budget ran out), as one line that
  * names where, or NULL when it was not. Valid until the next frame. */
 const char *interp_frame_cut(const interp *ip);
+
+/* What the current frame used of each budget (INTERP_BUDGET_*): the
+ * counts that only grow (commands, vertices assembled, texture bytes) as
+ * they stand, and the most the scene held of the others at any one time
+ * (a shared list call holds its geometry until it is found shared, a
+ * glClear drops what was drawn). limit: the budget as applied. */
+typedef struct interp_budget_use {
+    uint64_t commands, assembled, vertices, triangles, lines, solids, instances, texels;
+} interp_budget_use;
+void interp_budget_used(const interp *ip, interp_budget_use *used, interp_budget_use *limit);
 
 /* What the current frame was drawn without because the trace is damaged
  * (display-list bodies or texture images that could not be read): the

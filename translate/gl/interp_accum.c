@@ -200,6 +200,7 @@ static void conclude(interp *ip, double ret)
 /* Drops what was drawn since the first pass. */
 static void drop_pass(interp *ip)
 {
+    interp_budget_peak(ip);
     if (ip->scene)
         scene_truncate(ip->scene, &ip->accum.mark);
     ip->painter = ip->accum.painter;

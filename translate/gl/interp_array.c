@@ -189,7 +189,7 @@ static void array_element(interp *ip, uint32_t index)
             a->current.color[k] =
                 k < arr[ARR_COLOR].size ? (float)normalised(t, component(p, t, k)) : 1.0f;
         if (a->caps[INTERP_CAP_COLOR_MATERIAL])
-            interp_color_material_update(ip);
+            interp_cm_colour(ip);
     }
     /* GL 2.1 2.8: fog coordinates as they are, secondary colours
      * normalised as glSecondaryColor's (interp_fogsec.c draws them). */

@@ -20,10 +20,12 @@
 #include "interp_internal.h"
 
 #include <stdio.h>
+#include <string.h>
 
 void interp_bounds_begin_frame(interp *ip)
 {
     ip->cmds_run = ip->assembled = ip->texels = 0;
+    memset(&ip->peak, 0, sizeof ip->peak);
     ip->cut = false;
     ip->heavy = false;
     ip->cut_why[0] = '\0';
@@ -124,6 +126,44 @@ bool interp_budget_texels(interp *ip, uint64_t bytes)
 }
 
 const char *interp_frame_cut(const interp *ip) { return ip->cut ? ip->cut_why : NULL; }
+
+static void peak(uint64_t *p, uint64_t n)
+{
+    if (n > *p)
+        *p = n;
+}
+
+void interp_budget_peak(interp *ip)
+{
+    const scene *s = ip->scene;
+    if (!s)
+        return;
+    peak(&ip->peak.vertices, s->nverts);
+    peak(&ip->peak.triangles, s->ntris);
+    peak(&ip->peak.lines, (uint64_t)s->nlines + s->npoints);
+    peak(&ip->peak.solids, s->nsolids);
+    peak(&ip->peak.instances, s->ninstances);
+}
+
+void interp_budget_used(const interp *ip, interp_budget_use *used, interp_budget_use *limit)
+{
+    *used = ip->peak;
+    const scene *s = ip->scene;
+    if (s) { /* as they stand, mid-frame */
+        peak(&used->vertices, s->nverts);
+        peak(&used->triangles, s->ntris);
+        peak(&used->lines, (uint64_t)s->nlines + s->npoints);
+        peak(&used->solids, s->nsolids);
+        peak(&used->instances, s->ninstances);
+    }
+    used->commands = ip->cmds_run;
+    used->assembled = ip->assembled;
+    used->texels = ip->texels;
+    *limit = (interp_budget_use){INTERP_LIMIT(ip, COMMANDS),  INTERP_LIMIT(ip, ASSEMBLED),
+                                 INTERP_LIMIT(ip, VERTICES),  INTERP_LIMIT(ip, TRIANGLES),
+                                 INTERP_LIMIT(ip, LINES),     INTERP_LIMIT(ip, SOLIDS),
+                                 INTERP_LIMIT(ip, INSTANCES), INTERP_LIMIT(ip, TEXELS)};
+}
 
 void interp_missing(interp *ip, const char *what)
 {

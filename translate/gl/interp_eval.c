@@ -324,7 +324,7 @@ static void eval_coord(interp *ip, int two, double u, double v)
         for (int c = 0; c < 4; c++)
             a->current.color[c] = (float)val[c];
         if (a->caps[INTERP_CAP_COLOR_MATERIAL])
-            interp_color_material_update(ip);
+            interp_cm_colour(ip);
     }
     if (map_on(ip, two, E_NORMAL)) {
         eval_map_at(ip, two, E_NORMAL, u, v, val, NULL, NULL);

@@ -25,7 +25,7 @@ static double fog_factor(const gl_attribs *a, double c)
     switch (a->fog.mode) {
     case GL_LINEAR: {
         double span = (double)a->fog.end - a->fog.start;
-        f = span != 0 ? (a->fog.end - c) / span : 1;
+        f = span != 0 ? (a->fog.end - c) / span : c - a->fog.end; /* Mesa's, at start = end */
         break;
     }
     case GL_EXP2: {
@@ -81,12 +81,12 @@ void interp_fogsec_track(interp *ip)
         ip->prim_coord_same = false;
 }
 
-void interp_fogsec_eye(interp *ip, double z_eye, float color[4])
+void interp_fogsec_eye(interp *ip, const double eye[3], float color[4])
 {
     const gl_attribs *a = &ip->st.a;
     if (!a->caps[INTERP_CAP_FOG] || a->fog.coord_src != GL_FRAGMENT_DEPTH)
         return; /* unfogged, or fogged by the coordinate already */
-    double c = fabs(z_eye), f = fog_factor(a, c);
+    double c = interp_fog_distance(ip, eye), f = fog_factor(a, c);
     if (a->fog.mode != GL_LINEAR || ip->prim_blend_mapped ||
         c < fmin(a->fog.start, a->fog.end) || c > fmax(a->fog.start, a->fog.end))
         interp_note(ip, DIAG_NOTE_FOG_LINES);

@@ -34,6 +34,8 @@ struct interp_nurbs;                            /* interp_nurbs.c */
 
 /* One projection and viewport used in a frame, and its draws' weight. */
 #define INTERP_PROJ_VOTES 8
+/* Words of the frame's note bitsets: 64 NOTE_* kinds each. */
+#define INTERP_NOTE_WORDS 2
 typedef struct interp_proj_vote_t {
     mat4 proj;
     int32_t vp[4];
@@ -69,6 +71,8 @@ struct interp {
         int32_t cleared; /* the clear value there */
         bool written, mixed; /* something / values the scene cannot hold */
         bool write, only; /* this draw writes the stencil; and no colour */
+        bool two_side;    /* its front and back faces' states treat it differently */
+        uint8_t tri_faces; /* the faces whose triangles it writes: 1 front, 2 back */
         uint8_t clip;     /* this draw kept 1 inside, 2 outside the region */
         size_t n;         /* the region's triangles at this draw */
         bool box_pending; /* the region is box (window pixels), to be made into
@@ -87,8 +91,10 @@ struct interp {
     uint64_t frame_index;
     char label[48];
     const rgl_cmd *cmd; /* the command being executed */
-    uint64_t notes_seen; /* NOTE_* kinds already logged in this frame */
-    uint64_t notes_held; /* NOTE_* kinds already logged held in this frame */
+    /* NOTE_* kinds already logged in this frame, and logged held: bit
+     * (kind - DIAG_FIRST_NOTE) % 64 of word / 64 (interp.c note_word) */
+    uint64_t notes_seen[INTERP_NOTE_WORDS];
+    uint64_t notes_held[INTERP_NOTE_WORDS];
     struct interp_zorder *zorder; /* the frame's runs of depth modes; NULL: none yet */
     bool cleared;        /* the frame cleared the colour buffer */
     uint32_t painter;    /* draws without a depth test since the frame's start
@@ -97,12 +103,14 @@ struct interp {
                              (interp_pixels.c) */
     int32_t pixels_org[2]; /* window position of scene.overlay's pixel (0, 0) */
     int pixels_depth_state; /* how the overlay's pixels were depth-tested (interp_pixdepth.c) */
+    bool pixels_result_due; /* a glCopyPixels under a logic op waits for its @CopyPixelsResult */
     double pixels_ndc_z;    /* their raster position's device z, when all share one */
     uint64_t shape_facets; /* facets of tessellated shapes and evaluator mesh points in this
                               frame (interp_shape.c, interp_eval.c) */
 
     /* The frame's budget and completeness (interp_bounds.c). */
     uint64_t cmds_run, assembled, texels;
+    interp_budget_use peak; /* of the scene's counts (interp_budget_peak) */
     unsigned budget_shift; /* the budget divided by 2^shift (interp_set_budget_shift) */
     bool cut;                /* the budget ran out: the rest of the frame is skipped */
     bool heavy;              /* heavy_fn was called in this frame */
@@ -182,7 +190,8 @@ struct interp {
     size_t cap_relit_copy;
     bool relit_over;       /* some vertex was lit past 1 in a channel */
     bool prim_relit;       /* the look being made is of GL-lit faces */
-    double *fogz;          /* GL's eye z of each vertex, when fogged (interp_fogbehind.c) */
+    double (*fogz)[4];     /* GL's eye point and fog distance of each vertex, when fogged
+                              (interp_fogbehind.c) */
     size_t cap_fogz;
     bool fog_split;        /* the primitive's triangles behind the eye get their own fog */
 
@@ -208,6 +217,12 @@ struct interp {
     int nclear_seq;
     bool preset_back_cleared; /* the first translation found a background
                                  drawn with the depth test, then cleared */
+    /* Depth-only clears after draws since the colour clear split the
+     * frame into epochs, each in front of the ones before: this one, the
+     * count the first translation found (preset in the second), whether
+     * this one has draws. */
+    uint32_t depth_epoch, depth_epochs;
+    bool epoch_drawn;
 
     /* Display lists (interp_list.c). The table is context state that
      * interp_copy_state carries; the groups are the frame's list calls
@@ -219,6 +234,8 @@ struct interp {
     bool list_ce;        /* running a GL_COMPILE_AND_EXECUTE body as it is defined */
     uint32_t list_calls; /* this frame's, against a hostile trace's recursion */
     struct interp_groups *groups;
+    /* The frame's pixel rectangles, converted (interp_pixels.c). */
+    struct interp_pixconv *pixconv;
 
     /* The client arrays of the next draw: the @ArrayData records before
      * it (interp_array.c). */
@@ -250,6 +267,7 @@ struct interp {
         int16_t slot[2 * SCENE_MAX_LIGHTSETS];
     } lsets;
     bool vertex_lighting; /* interp_set_vertex_lighting */
+    bool show_front;      /* interp_set_shown_front */
     bool no_shadows;      /* interp_set_shadows(ip, false) */
 
     /* glMaterial between the vertices of the open primitive
@@ -399,6 +417,8 @@ bool interp_texture_rect_on(const interp *ip, uint32_t k);
 /* Forgets the r coordinates seen (interp_texture.c): a new primitive
  * starts, whose r decides which slice of a 3D texture it shows. */
 void interp_texture_r_reset(interp *ip);
+/* Forgets the scene textures the last frame made (interp_texture.c). */
+void interp_texture_begin_frame(interp *ip);
 
 /* glTexImage3D's effect on the bound 3D texture (interp_texture.c). */
 void interp_tex_image3d(interp *ip, int32_t level, int32_t internal, int64_t w, int64_t h,
@@ -446,6 +466,10 @@ size_t interp_pixel_bytes(GLenum format, GLenum type, int64_t w, int64_t h);
  * pixel rectangles to the camera's viewport, and notes that geometry drawn
  * after them shows behind them (interp_pixels.c). */
 void interp_pixels_end_frame(interp *ip);
+/* Forgets the last frame's converted pixel rectangles; frees them all
+ * (interp_pixels.c). */
+void interp_pixels_begin_frame(interp *ip);
+void interp_pixels_free(interp *ip);
 void interp_pixels_float(float *dst, const uint8_t *src, size_t n, GLenum format, GLenum type);
 const uint8_t *interp_pixels_fetch(interp *ip, uint32_t id, size_t need, uint32_t *lost);
 
@@ -495,6 +519,10 @@ static inline bool interp_budget_vertex_fast(interp *ip)
     return interp_budget_vertex(ip);
 }
 bool interp_budget_texels(interp *ip, uint64_t bytes);
+/* Takes the scene's counts into the frame's peaks (interp_budget_used):
+ * called before they fall (a shared list call, a clear, a dropped
+ * accumulation pass) and at the frame's end. */
+void interp_budget_peak(interp *ip);
 
 
 /* Index of a cap, or -1 for an enum glEnable does not accept. */
@@ -516,6 +544,10 @@ void interp_proj_own_draw(interp *ip);
 void interp_proj_depth_clear(interp *ip);
 void interp_proj_vote(interp *ip, GLenum mode);
 void interp_proj_layer(interp *ip, mat4 *w);
+/* Maps the window depth of w (the draw's projection and viewport) into the
+ * camera's: the draw's glDepthRange and its depth epoch. False when that
+ * is the identity. */
+bool interp_proj_depth_map(interp *ip, mat4 *w);
 /* At the frame's end: an orthographic camera and its near plane step back
  * by the painter's reach (interp_proj.c). */
 void interp_proj_end_frame(interp *ip);
@@ -594,9 +626,13 @@ void interp_fogsec_vertex(interp *ip, float color[4]);
  * coordinates gets their one factor (look.fog_fixed), or a note. */
 void interp_fogsec_track(interp *ip);
 void interp_fogsec_look(interp *ip, scene_look *look);
-/* The fog of eye-plane distance |z_eye| on a line end's or point's colour,
- * when fog is on and comes from the depth (interp_fogsec.c). */
-void interp_fogsec_eye(interp *ip, double z_eye, float color[4]);
+/* The fog of the eye distance of eye-space point eye on a line end's or
+ * point's colour, when fog is on and comes from the depth (interp_fogsec.c). */
+void interp_fogsec_eye(interp *ip, const double eye[3], float color[4]);
+/* GL_FOG_DISTANCE_MODE_NV as the scene's enum scene_fog_distance, and the
+ * distance c it takes of an eye-space point (interp_fogbehind.c). */
+int interp_fog_distance_kind(const interp *ip);
+double interp_fog_distance(const interp *ip, const double eye[3]);
 bool interp_accum_clear(interp *ip);
 
 /* Evaluator state (interp_eval.c): copied with the context state (-1 on
@@ -692,16 +728,25 @@ bool interp_clip_segment(const interp *ip, double p0[3], double p1[3], double *t
 bool interp_clip_point(const interp *ip, const double p[3]);
 
 /* The stencil test (interp_stencil.c). interp_stencil_draw: at a draw's
- * start, sets ip->stencil.write/clip and returns false when the test
- * hides the whole draw; interp_stencil_writes: draws now write the
+ * start, sets ip->stencil.write/clip/two_side and returns false when the
+ * test hides the whole draw (two_side: the front faces' state decided it,
+ * the back faces' would not have; interp_prim.c notes a back face drawn); interp_stencil_writes: draws now write the
  * stencil buffer; interp_stencil_look: the region a drawn look is kept
  * to; interp_stencil_tri: a triangle (eye space) a writing draw covers;
  * interp_stencil_clear: glClear of the stencil buffer. */
 bool interp_stencil_draw(interp *ip);
 bool interp_stencil_writes(const interp *ip);
+/* The test is on with the two faces' states apart (glStencil*Separate). */
+bool interp_stencil_faces_differ(const interp *ip);
 void interp_stencil_look(interp *ip, scene_look *look);
 void interp_stencil_tri(interp *ip, double p[3][3]);
 void interp_stencil_clear(interp *ip);
+
+/* The colour buffers (interp_buffers.c): interp_draw_buffer_hidden: what
+ * is drawn now goes to no buffer the frame shows; interp_set_shown_front:
+ * the frame shows the front buffer (it ends with glFlush or glFinish), or
+ * the back one of a double-buffered context. */
+bool interp_draw_buffer_hidden(const interp *ip);
 
 /* The colour and depth masks (interp_masks.c): true when a draw changes
  * no colour (every colour channel masked) and is left out, with a note
@@ -754,14 +799,16 @@ void interp_add_point(interp *ip, const double p[3], const double *win, const fl
 bool interp_offset_active(const interp *ip);
 void interp_offset_apply(interp *ip, mat4 *to_eye);
 
-/* Pixel maps and transfer (interp_pixmap.c): interp_pixels_transfer
- * applies the scales, biases and colour maps to n RGBA pixels (GL 2.1
- * 3.6.5; colour maps, and scales and biases of pixels from_index colour
- * indices, noted, as Mesa applies them once or twice);
+/* Pixel maps and transfer (interp_pixmap.c): interp_pixel_transfer
+ * applies the scales, biases and colour maps to one RGBA pixel (GL 2.1
+ * 3.6.5); interp_pixels_transfer_note notes colour maps, and scales and
+ * biases of pixels from_index colour indices, as Mesa applies them once
+ * or twice;
  * interp_pixels_index_bytes is the size of w x h colour indices of
  * type (0: a type not translated), interp_pixels_index turns n of them
  * into RGBA by the index shift, offset and the I_TO_* maps. */
-void interp_pixels_transfer(interp *ip, float *px, size_t n, bool from_index);
+void interp_pixels_transfer_note(interp *ip, bool from_index);
+void interp_pixel_transfer(const interp *ip, const float in[4], float out[4]);
 size_t interp_pixels_index_bytes(GLenum type, int64_t w, int64_t h);
 void interp_pixels_index(interp *ip, float *px, const uint8_t *src, size_t n, GLenum type);
 
@@ -858,6 +905,23 @@ int interp_nurbs_copy(interp *dst, const interp *src);
  * (interp_light.c). */
 void interp_color_material_update(interp *ip);
 
+/* Colour material as Mesa follows it (interp_light.c): interp_cm_colour
+ * after the current colour changed while GL_COLOR_MATERIAL is on (in place
+ * of interp_color_material_update); interp_cm_enable at the cap's change;
+ * interp_cm_draw as a draw (or glRasterPos) starts. interp_cm_on: the material's terms
+ * colour material names come from the colour now (on, and not kept from
+ * before the glEnable). */
+void interp_cm_colour(interp *ip);
+void interp_cm_enable(interp *ip, bool on);
+void interp_cm_draw(interp *ip);
+/* Mesa flushes its vertex buffer here (glNewList, glEndList, glCallList,
+ * glPushAttrib, glPopAttrib): a glMaterial before no longer holds. */
+static inline void interp_cm_flush(interp *ip) { ip->st.cm.held[0] = ip->st.cm.held[1] = 0; }
+static inline bool interp_cm_on(const interp *ip)
+{
+    return ip->st.a.caps[INTERP_CAP_COLOR_MATERIAL] && !ip->st.cm.stale;
+}
+
 /* The scene material index of the current lighting state, with the light
  * set of the lights enabled now (interp_light.c, interp_lightset.c); -1 on
  * failure. */
@@ -899,6 +963,10 @@ uint32_t interp_lightset_current(interp *ip);
 /* Notes a lit, textured draw under a set whose highlights only the
  * per-channel form makes exact (not open to textures). */
 void interp_lightset_textured(interp *ip, const scene_look *look);
+
+/* The spot factor of directional light l (w = 0), one number for every
+ * vertex: GL spots such a light too (1 when its cutoff is 180). */
+double interp_spot_parallel(const gl_light *l);
 
 void interp_lit_color(const interp *ip, const double p[3], const double n[3], bool back,
                       const float colour[4], float out[4]);
@@ -1005,8 +1073,10 @@ static inline void interp_unrec_use(interp *ip, unrec_use u)
 }
 
 /* The uses of a pixel operation: one that draws into the colour buffer
- * (bitmaps, glDrawPixels, glCopyPixels), reads it (glCopyPixels,
- * glCopyTex*Image) or reads an image from the program's memory (textures,
+ * (bitmaps, glDrawPixels, glCopyPixels), reads it where the trace lacks
+ * what it read (glCopyPixels, glCopyTex*Image not read back: those read
+ * back hold the program's read buffer's pixels, whichever it was) or
+ * reads an image from the program's memory (textures,
  * pixels, bitmaps, stipples); under GL_MAP_COLOR or GL_MAP_STENCIL, the
  * pixel maps' too. */
 void interp_unrec_pixel_uses(interp *ip, bool draws, bool reads, bool from_memory);

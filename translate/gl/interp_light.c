@@ -10,6 +10,8 @@
 
 #include <string.h>
 
+static uint8_t cm_bits(GLenum mode);
+
 static int face_mask(GLenum face)
 {
     switch (face) {
@@ -76,6 +78,87 @@ void interp_color_material_update(interp *ip)
     }
 }
 
+/* ---- Colour material ----------------------------------------------------------- */
+
+/* GL 2.1 2.14.3 has the tracked terms follow the current colour from the
+ * glEnable on. Mesa 22 (measured with OSMesa, tests/programs/cmat_*.c)
+ * keeps what a glMaterial set since the last draw instead: its vertex
+ * buffer still holds that glMaterial and writes it over the colour the
+ * glEnable copied. Those terms keep the material (the state is stale)
+ * until the colour changes: before the first draw, a glColor counts only
+ * if the colour differs at the draw (or at a glDisable) from the one
+ * current at the glEnable; after a draw, any glColor counts. A glMaterial
+ * of a tracked term while colour material is on changes nothing (Mesa's
+ * _mesa_Materialfv), and glColorMaterial copies the colour only when it
+ * changes the face or mode. */
+static void cm_resolve(interp *ip)
+{
+    if (memcmp(ip->st.a.current.color, ip->st.cm.ref, sizeof ip->st.cm.ref) != 0) {
+        ip->st.cm.stale = false;
+        interp_color_material_update(ip);
+    }
+}
+
+void interp_cm_colour(interp *ip)
+{
+    if (!ip->st.cm.stale) {
+        interp_color_material_update(ip);
+        return;
+    }
+    if (!ip->st.cm.drawn && !ip->in_begin)
+        return; /* the draw decides (cm_resolve) */
+    /* Mesa draws the primitive with each vertex's colour; the vertices
+     * before this one took the material. */
+    if (ip->in_begin && !ip->prim_skip && ip->scene && ip->scene->nverts > ip->prim_first)
+        interp_note(ip, DIAG_NOTE_COLOR_MATERIAL_BEGIN);
+    ip->st.cm.stale = false;
+    interp_color_material_update(ip);
+}
+
+void interp_cm_enable(interp *ip, bool on)
+{
+    gl_attribs *a = &ip->st.a;
+    if (!on) {
+        if (ip->st.cm.stale && !ip->st.cm.drawn)
+            cm_resolve(ip);
+        ip->st.cm.stale = false;
+        return;
+    }
+    int faces = face_mask(a->lighting.color_material_face);
+    uint8_t bits = cm_bits(a->lighting.color_material_mode);
+    uint8_t kept[2] = {0, 0};
+    for (int f = 0; f < 2; f++)
+        if (faces & (1 << f))
+            kept[f] = ip->st.cm.held[f] & bits;
+    ip->st.cm.held[0] = ip->st.cm.held[1] = 0;
+    if (!kept[0] && !kept[1]) {
+        interp_color_material_update(ip);
+        return;
+    }
+    gl_material m[2];
+    memcpy(m, a->lighting.material, sizeof m);
+    interp_color_material_update(ip);
+    for (int f = 0; f < 2; f++) {
+        gl_material *g = &a->lighting.material[f];
+        if (kept[f] & SCENE_CM_AMBIENT) memcpy(g->ambient, m[f].ambient, sizeof g->ambient);
+        if (kept[f] & SCENE_CM_DIFFUSE) memcpy(g->diffuse, m[f].diffuse, sizeof g->diffuse);
+        if (kept[f] & SCENE_CM_SPECULAR) memcpy(g->specular, m[f].specular, sizeof g->specular);
+        if (kept[f] & SCENE_CM_EMISSION) memcpy(g->emission, m[f].emission, sizeof g->emission);
+    }
+    ip->st.cm.stale = true;
+    ip->st.cm.drawn = false;
+    memcpy(ip->st.cm.ref, a->current.color, sizeof ip->st.cm.ref);
+}
+
+void interp_cm_draw(interp *ip)
+{
+    ip->st.cm.held[0] = ip->st.cm.held[1] = 0;
+    if (!ip->st.cm.stale || ip->st.cm.drawn)
+        return;
+    cm_resolve(ip);
+    ip->st.cm.drawn = true;
+}
+
 void interp_material(interp *ip, const rgl_cmd *cmd)
 {
     GLenum face = arg_enum(cmd, 0), pname = arg_enum(cmd, 1);
@@ -106,22 +189,31 @@ void interp_material(interp *ip, const rgl_cmd *cmd)
         return;
     }
     interp_vmat_before_change(ip);
+    /* The terms colour material tracks stay as they are (Mesa). */
+    const gl_attribs *a = &ip->st.a;
+    uint8_t set = cm_bits(pname), tracked = 0;
+    int tracked_faces = 0;
+    if (a->caps[INTERP_CAP_COLOR_MATERIAL]) {
+        tracked = cm_bits(a->lighting.color_material_mode);
+        tracked_faces = face_mask(a->lighting.color_material_face);
+    }
     for (int f = 0; f < 2; f++) {
         if (!(faces & (1 << f)))
             continue;
+        uint8_t skip = tracked_faces & (1 << f) ? tracked : 0;
+        ip->st.cm.held[f] |= set & (uint8_t)~skip;
         gl_material *m = &ip->st.a.lighting.material[f];
-        switch (pname) {
-        case GL_AMBIENT: memcpy(m->ambient, v, sizeof v); break;
-        case GL_DIFFUSE: memcpy(m->diffuse, v, sizeof v); break;
-        case GL_SPECULAR: memcpy(m->specular, v, sizeof v); break;
-        case GL_EMISSION: memcpy(m->emission, v, sizeof v); break;
-        case GL_AMBIENT_AND_DIFFUSE:
+        if (!(skip & SCENE_CM_AMBIENT) && (pname == GL_AMBIENT || pname == GL_AMBIENT_AND_DIFFUSE))
             memcpy(m->ambient, v, sizeof v);
+        if (!(skip & SCENE_CM_DIFFUSE) && (pname == GL_DIFFUSE || pname == GL_AMBIENT_AND_DIFFUSE))
             memcpy(m->diffuse, v, sizeof v);
-            break;
-        case GL_SHININESS: m->shininess = v[0]; break;
-        default: break; /* colour indexes: no effect in RGBA mode */
-        }
+        if (!(skip & SCENE_CM_SPECULAR) && pname == GL_SPECULAR)
+            memcpy(m->specular, v, sizeof v);
+        if (!(skip & SCENE_CM_EMISSION) && pname == GL_EMISSION)
+            memcpy(m->emission, v, sizeof v);
+        if (pname == GL_SHININESS)
+            m->shininess = v[0];
+        /* colour indexes: no effect in RGBA mode */
     }
 }
 
@@ -140,10 +232,14 @@ void interp_colormaterial(interp *ip, const rgl_cmd *cmd)
         interp_bad_enum(ip, "colour material mode", mode);
         return;
     }
-    ip->st.a.lighting.color_material_face = face;
-    ip->st.a.lighting.color_material_mode = mode;
-    if (ip->st.a.caps[INTERP_CAP_COLOR_MATERIAL])
+    gl_attribs *a = &ip->st.a;
+    bool same = a->lighting.color_material_face == face && a->lighting.color_material_mode == mode;
+    a->lighting.color_material_face = face;
+    a->lighting.color_material_mode = mode;
+    if (a->caps[INTERP_CAP_COLOR_MATERIAL] && !(same && ip->st.cm.stale)) {
+        ip->st.cm.stale = false;
         interp_color_material_update(ip);
+    }
 }
 
 void interp_light(interp *ip, const rgl_cmd *cmd)
@@ -258,7 +354,7 @@ void interp_fog(interp *ip, const rgl_cmd *cmd)
     uint32_t need = pname == GL_FOG_COLOR ? 4 : 1;
     switch (pname) {
     case GL_FOG_MODE: case GL_FOG_DENSITY: case GL_FOG_START: case GL_FOG_END:
-    case GL_FOG_INDEX: case GL_FOG_COLOR: case GL_FOG_COORD_SRC:
+    case GL_FOG_INDEX: case GL_FOG_COLOR: case GL_FOG_COORD_SRC: case GL_FOG_DISTANCE_MODE_NV:
         break;
     default:
         interp_bad_enum(ip, "fog parameter", pname);
@@ -300,6 +396,15 @@ void interp_fog(interp *ip, const rgl_cmd *cmd)
         }
         ip->st.a.fog.coord_src = interp_enum_of(v[0]);
         break;
+    case GL_FOG_DISTANCE_MODE_NV: { /* NV_fog_distance, which Mesa has */
+        GLenum d = interp_enum_of(v[0]);
+        if (d != GL_EYE_RADIAL_NV && d != GL_EYE_PLANE && d != GL_EYE_PLANE_ABSOLUTE_NV) {
+            interp_bad_enum(ip, "fog distance mode", d);
+            return;
+        }
+        ip->st.a.fog.distance = d;
+        break;
+    }
     default: break; /* colour index: no effect here */
     }
 }
@@ -341,7 +446,7 @@ int32_t interp_lit_material(interp *ip)
         memcpy(m.emission[f], g->emission, sizeof m.emission[f]);
         m.shininess[f] = g->shininess;
     }
-    if (a->caps[INTERP_CAP_COLOR_MATERIAL]) {
+    if (interp_cm_on(ip)) {
         int faces = face_mask(a->lighting.color_material_face);
         uint8_t bits = cm_bits(a->lighting.color_material_mode);
         for (int f = 0; f < 2; f++) {
@@ -390,6 +495,7 @@ void interp_fix_fog(interp *ip)
     f.start = a->fog.start;
     f.end = a->fog.end;
     memcpy(f.color, a->fog.color, sizeof f.color);
+    f.distance = interp_fog_distance_kind(ip);
     if (!s->fog.on) {
         s->fog = f;
         return;
@@ -408,6 +514,29 @@ void interp_fix_fog(interp *ip)
         interp_note(ip, DIAG_NOTE_FOG);
     else if (memcmp(&s->fog, &f, sizeof f) != 0)
         interp_note_held(ip, DIAG_NOTE_FOG, "what changed is unused by the fog mode");
+}
+
+/* GL's spot factor of light l (cutoff not 180) for the unit vector vp from
+ * the vertex toward the light (GL 2.1 2.14.1). */
+static double spot_factor(const gl_light *l, const double vp[3])
+{
+    const float *sd = l->spot_direction;
+    double sl = sqrt((double)sd[0] * sd[0] + (double)sd[1] * sd[1] + (double)sd[2] * sd[2]);
+    double cs = sl > 0 ? -(vp[0] * sd[0] + vp[1] * sd[1] + vp[2] * sd[2]) / sl : 0;
+    return cs >= cos(l->spot_cutoff * M_PI / 180) ? pow(fmax(cs, 0), l->spot_exponent) : 0;
+}
+
+double interp_spot_parallel(const gl_light *l)
+{
+    if (l->spot_cutoff == 180 || l->position[3] != 0)
+        return 1;
+    double vp[3] = {l->position[0], l->position[1], l->position[2]};
+    double d = sqrt(vp[0] * vp[0] + vp[1] * vp[1] + vp[2] * vp[2]);
+    if (!(d > 0) || !isfinite(d))
+        return 1; /* no direction: it lights nothing but ambient */
+    for (int k = 0; k < 3; k++)
+        vp[k] /= d;
+    return spot_factor(l, vp);
 }
 
 void interp_lit_color(const interp *ip, const double p[3], const double n[3], bool back,
@@ -430,8 +559,7 @@ void interp_lit_prepare(const interp *ip, bool back, interp_lit_prep *lp)
     int f = back && a->lighting.two_side ? 1 : 0;
     lp->face = f;
     lp->cm = 0;
-    if (a->caps[INTERP_CAP_COLOR_MATERIAL] &&
-        (face_mask(a->lighting.color_material_face) & (1 << f)))
+    if (interp_cm_on(ip) && (face_mask(a->lighting.color_material_face) & (1 << f)))
         lp->cm = cm_bits(a->lighting.color_material_mode);
     lp->local_viewer = a->lighting.local_viewer;
     lp->need_p = lp->local_viewer;
@@ -509,12 +637,8 @@ void interp_lit_prepared(const interp *ip, const interp_lit_prep *lp, const doub
         } else {
             memcpy(vp, dircache[i].vp, sizeof vp);
         }
-        if (l->spot_cutoff != 180 && l->position[3] != 0) {
-            const float *sd = l->spot_direction;
-            double sl = sqrt((double)sd[0] * sd[0] + (double)sd[1] * sd[1] + (double)sd[2] * sd[2]);
-            double cs = sl > 0 ? -(vp[0] * sd[0] + vp[1] * sd[1] + vp[2] * sd[2]) / sl : 0;
-            spot = cs >= cos(l->spot_cutoff * M_PI / 180) ? pow(fmax(cs, 0), l->spot_exponent) : 0;
-        }
+        if (l->spot_cutoff != 180)
+            spot = spot_factor(l, vp);
         double nl = nn[0] * vp[0] + nn[1] * vp[1] + nn[2] * vp[2];
         double sp = 0;
         if (nl > 0) {

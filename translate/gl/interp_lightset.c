@@ -20,10 +20,12 @@ static void make_light(const gl_light *g, uint32_t set, scene_light *l)
 {
     memset(l, 0, sizeof *l);
     float w = g->position[3];
+    float f = 1;
     if (w == 0) {
         l->kind = SCENE_LIGHT_PARALLEL;
         for (int k = 0; k < 3; k++)
             l->direction[k] = g->position[k];
+        f = (float)interp_spot_parallel(g);
     } else {
         l->kind = g->spot_cutoff == 180 ? SCENE_LIGHT_POINT : SCENE_LIGHT_SPOT;
         for (int k = 0; k < 3; k++) {
@@ -34,8 +36,13 @@ static void make_light(const gl_light *g, uint32_t set, scene_light *l)
     memcpy(l->color, g->diffuse, sizeof l->color);
     memcpy(l->ambient, g->ambient, sizeof l->ambient);
     memcpy(l->specular, g->specular, sizeof l->specular);
-    l->spot_exponent = g->spot_exponent;
-    l->spot_cutoff = g->spot_cutoff;
+    for (int k = 0; k < 3 && f != 1; k++) { /* a directional light's spot: one factor */
+        l->color[k] *= f;
+        l->ambient[k] *= f;
+        l->specular[k] *= f;
+    }
+    l->spot_exponent = w == 0 ? 0 : g->spot_exponent;
+    l->spot_cutoff = w == 0 ? 180 : g->spot_cutoff;
     memcpy(l->attenuation, g->attenuation, sizeof l->attenuation);
     l->set = set;
 }

@@ -230,7 +230,7 @@ static void smooth_quad(interp *ip, const seg_frame *f, int ax, const double k[4
     }
     for (int i = 0; i < 4; i++) {
         memcpy(l->color[i], col[i], sizeof l->color[i]);
-        interp_fogsec_eye(ip, e[i][2], l->color[i]);
+        interp_fogsec_eye(ip, e[i], l->color[i]);
     }
 }
 
@@ -365,7 +365,7 @@ static void add_strip(interp *ip, const interp_line *ln, const seg_frame *f, int
         if (flat)
             for (int k = 0; k < 3; k++)
                 l->color[2 * e][k] = fminf(fmaxf(l->color[2 * e][k], 0), 1);
-        interp_fogsec_eye(ip, pe[e][2], l->color[2 * e]);
+        interp_fogsec_eye(ip, pe[e], l->color[2 * e]);
         memcpy(l->color[2 * e + 1], l->color[2 * e], sizeof l->color[0]);
     }
 }
@@ -510,7 +510,7 @@ void interp_add_point(interp *ip, const double p[3], const double *win, const fl
     size_t nrows;
     float c[4];
     memcpy(c, color, sizeof c);
-    interp_fogsec_eye(ip, p[2], c);
+    interp_fogsec_eye(ip, p, c);
     if (sprite) {
         /* the quad of the size itself: its edges, not a pixel grid, decide
          * which centres it covers, as the textured square does */

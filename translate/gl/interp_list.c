@@ -266,6 +266,7 @@ static bool group_promote(interp *ip, list_group *g)
 
 typedef struct call_mark {
     size_t m0, v0, t0;
+    uint64_t facets; /* ip->shape_facets at the call */
     uint32_t generation;
     uint32_t painter; /* ip->painter at the call */
     bool painter_on;  /* the call began without a depth test */
@@ -360,6 +361,10 @@ static void share_output(interp *ip, uint32_t body, const call_mark *mk)
         s->nmeshes = mk->m0;
         s->nverts = mk->v0;
         s->ntris = mk->t0;
+        /* Its tessellated shapes are the prototype's: the frame's cap on
+         * facets (interp_shape.c) counts them once, as the scene holds
+         * them. */
+        ip->shape_facets = mk->facets;
         s->mesh_floor = s->nmeshes;
         return;
     }
@@ -419,6 +424,7 @@ static void call_list(interp *ip, uint32_t name)
         mk.m0 = s->nmeshes;
         mk.v0 = s->nverts;
         mk.t0 = s->ntris;
+        mk.facets = ip->shape_facets;
         mk.generation = s->generation;
         mk.painter = ip->painter;
         const gl_attribs *a = &ip->st.a;
@@ -450,12 +456,15 @@ static void call_list(interp *ip, uint32_t name)
                  name, body, (unsigned long long)err.offset, rgl_status_str(st));
         interp_missing(ip, what);
     }
-    if (share)
+    if (share) {
+        interp_budget_peak(ip);
         share_output(ip, body, &mk);
+    }
 }
 
 void interp_calllist(interp *ip, const rgl_cmd *cmd)
 {
+    interp_cm_flush(ip);
     call_list(ip, (uint32_t)cmd->arg[0].v.u);
 }
 
@@ -484,6 +493,7 @@ void interp_calllists(interp *ip, const rgl_cmd *cmd)
         return;
     }
     const uint8_t *p = blob->bytes;
+    interp_cm_flush(ip);
     ip->cmds_run += (uint64_t)n; /* each name costs as a command */
     for (int64_t i = 0; i < n && !ip->cut; i++, p += ts) {
         uint32_t off;
@@ -519,7 +529,11 @@ void interp_calllists(interp *ip, const rgl_cmd *cmd)
 /* ---- Definitions ------------------------------------------------------------------------ */
 
 void interp_genlists(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
-void interp_endlist(interp *ip, const rgl_cmd *cmd) { (void)ip; (void)cmd; }
+void interp_endlist(interp *ip, const rgl_cmd *cmd)
+{
+    (void)cmd;
+    interp_cm_flush(ip);
+}
 
 /* The recorder writes glNewList where the list ends, carrying its body. */
 void interp_newlist(interp *ip, const rgl_cmd *cmd)
@@ -527,6 +541,7 @@ void interp_newlist(interp *ip, const rgl_cmd *cmd)
     uint32_t name = (uint32_t)cmd->arg[0].v.u;
     GLenum mode = arg_enum(cmd, 1);
     uint32_t body = (uint32_t)cmd->arg[2].v.u;
+    interp_cm_flush(ip);
     if (mode != GL_COMPILE && mode != GL_COMPILE_AND_EXECUTE) {
         interp_bad_enum(ip, "list mode", mode);
         return;

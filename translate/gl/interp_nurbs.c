@@ -788,7 +788,7 @@ static void node_emit(interp *ip, const nurbs_node *n)
     if (n->has_color) {
         memcpy(a->current.color, n->color, sizeof color);
         if (a->caps[INTERP_CAP_COLOR_MATERIAL])
-            interp_color_material_update(ip);
+            interp_cm_colour(ip);
     }
     if (n->has_normal)
         memcpy(a->current.normal, n->normal, sizeof normal);

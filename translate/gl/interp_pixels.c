@@ -9,12 +9,15 @@
  * shows in front of the scene, unlit, pixel for pixel (docs/mapping.md
  * "Bitmaps and pixel rectangles"). Where the depth test would let the 3D
  * scene hide them, or geometry drawn later covers them, they still show:
- * a note says so.
+ * a note says so. A glCopyPixels under a logic op is followed by the
+ * window pixels it left, read back by the recorder (@CopyPixelsResult),
+ * which replace it: exact whatever the op (and the scene under it).
  */
 #include "interp_internal.h"
 
 #include <string.h>
 
+#include "namemap.h"
 #include "talloc.h"
 
 /* ---- The raster position --------------------------------------------------------- */
@@ -38,21 +41,39 @@ static void take_lit_colour(interp *ip, const double obj[4])
         a->current.raster_color[k] = c[k] > 0 ? (c[k] < 1 ? c[k] : 1) : 0;
 }
 
+/* q = m p in single precision, term by term in Mesa's order
+ * (TRANSFORM_POINT). */
+static void apply_f32(const mat4 *m, const float p[4], float q[4])
+{
+    for (int i = 0; i < 4; i++) {
+        float s = (float)m->m[i] * p[0];
+        s = s + (float)m->m[4 + i] * p[1];
+        s = s + (float)m->m[8 + i] * p[2];
+        q[i] = s + (float)m->m[12 + i] * p[3];
+    }
+}
+
 void interp_rasterpos(interp *ip, const rgl_cmd *cmd)
 {
     if (interp_reject_in_begin(ip))
         return;
-    double obj[4] = {0, 0, 0, 1};
+    interp_cm_draw(ip); /* Mesa lights it from its flushed current state */
+    double dobj[4] = {0, 0, 0, 1};
+    float obj[4] = {0, 0, 0, 1};
     uint32_t n = cmd_value_count(cmd);
     for (uint32_t k = 0; k < n && k < 4; k++)
-        obj[k] = cmd_value(cmd, k);
+        obj[k] = (float)(dobj[k] = cmd_value(cmd, k));
     gl_attribs *a = &ip->st.a;
-    double eye[4], clip[4];
-    mat4_apply(interp_matrix(ip, INTERP_MV), obj, eye);
-    mat4_apply(interp_matrix(ip, INTERP_PROJ), eye, clip);
+    /* In single precision as Mesa computes it (_mesa_RasterPos): a bitmap
+     * lands on the floor of the position, so a position GL puts a hair
+     * below a whole pixel and double arithmetic on it (or a hair above)
+     * moves the bitmap a pixel (glRasterPos2i under gluOrtho2D). */
+    float eye[4], clip[4];
+    apply_f32(interp_matrix(ip, INTERP_MV), obj, eye);
+    apply_f32(interp_matrix(ip, INTERP_PROJ), eye, clip);
     /* The position is a point clipped against the view volume: outside
      * it, the raster position is invalid. */
-    double w = clip[3];
+    float w = clip[3];
     bool in = isfinite(w) && w > 0;
     for (int k = 0; k < 3 && in; k++)
         in = isfinite(clip[k]) && clip[k] >= -w && clip[k] <= w;
@@ -60,14 +81,24 @@ void interp_rasterpos(interp *ip, const rgl_cmd *cmd)
     if (!in)
         return;
     const int32_t *vp = a->viewport.rect;
+    float d = 1.0f / w, hw = (float)vp[2] * 0.5f, hh = (float)vp[3] * 0.5f;
+    a->current.raster_pos[0] = clip[0] * d * hw + (hw + (float)vp[0]);
+    a->current.raster_pos[1] = clip[1] * d * hh + (hh + (float)vp[1]);
+    /* The depth in double: pixels placed at it meet the geometry, whose
+     * depth is the scene's. */
+    double deye[4], dclip[4];
+    mat4_apply(interp_matrix(ip, INTERP_MV), dobj, deye);
+    mat4_apply(interp_matrix(ip, INTERP_PROJ), deye, dclip);
+    if (!(dclip[3] > 0) || !isfinite(dclip[2] / dclip[3])) {
+        for (int k = 0; k < 4; k++)
+            dclip[k] = clip[k];
+    }
     double n_ = a->viewport.near, f_ = a->viewport.far;
-    a->current.raster_pos[0] = vp[0] + (clip[0] / w + 1) * vp[2] / 2;
-    a->current.raster_pos[1] = vp[1] + (clip[1] / w + 1) * vp[3] / 2;
-    a->current.raster_pos[2] = n_ + (clip[2] / w + 1) / 2 * (f_ - n_);
-    a->current.raster_pos[3] = w;
-    interp_pixdepth_raster(ip, clip);
+    a->current.raster_pos[2] = n_ + (dclip[2] / dclip[3] + 1) / 2 * (f_ - n_);
+    a->current.raster_pos[3] = dclip[3];
+    interp_pixdepth_raster(ip, dclip);
     if (a->caps[INTERP_CAP_LIGHTING])
-        take_lit_colour(ip, obj);
+        take_lit_colour(ip, dobj);
     else
         take_colour(ip);
 }
@@ -150,6 +181,9 @@ static uint64_t scene_items(const scene *s)
 void interp_pixels_end_frame(interp *ip)
 {
     scene *s = ip->scene;
+    if (ip->pixels_result_due) /* a copy under a logic op drawn as it is */
+        interp_note(ip, DIAG_NOTE_COLOR_MASK);
+    ip->pixels_result_due = false;
     if (s)
         s->overlay_at_depth = false;
     if (!s || !s->overlay)
@@ -276,7 +310,8 @@ void interp_bitmap(interp *ip, const rgl_cmd *cmd)
         return;
     double *rp = a->current.raster_pos;
     size_t row = (size_t)(w + 7) / 8, need = row * (size_t)h;
-    if (id && w > 0 && h > 0 && (uint64_t)w * (uint64_t)h <= (1u << 26)) {
+    if (id && w > 0 && h > 0 && (uint64_t)w * (uint64_t)h <= (1u << 26) &&
+        !interp_draw_buffer_hidden(ip)) {
         bool over = pixels_begin(ip);
         uint32_t lost = 0;
         const uint8_t *bits = ip->scene ? interp_pixels_fetch(ip, id, need, &lost) : NULL;
@@ -284,8 +319,8 @@ void interp_bitmap(interp *ip, const rgl_cmd *cmd)
         if (ov && interp_budget_texels(ip, (uint64_t)w * (uint64_t)h)) {
             /* The lower left corner at (floor(xr - xo), floor(yr - yo)),
              * in the overlay's coordinates. */
-            double fx = floor(rp[0] - xo) - ip->pixels_org[0];
-            double fy = floor(rp[1] - yo) - ip->pixels_org[1];
+            double fx = floorf((float)rp[0] - (float)xo) - ip->pixels_org[0];
+            double fy = floorf((float)rp[1] - (float)yo) - ip->pixels_org[1];
             int ow = ip->scene->overlay_w, oh = ip->scene->overlay_h;
             for (int64_t j = 0; j < h; j++) {
                 double y = fy + (double)j;
@@ -301,17 +336,19 @@ void interp_bitmap(interp *ip, const rgl_cmd *cmd)
             }
         }
     }
-    rp[0] += xm;
-    rp[1] += ym;
+    /* Single precision, as GL keeps the position: a run of fractional
+     * advances lands where Mesa's does. */
+    rp[0] = (float)rp[0] + (float)xm;
+    rp[1] = (float)rp[1] + (float)ym;
 }
 
 /* Draws w x h RGBA pixels (floats, before pixel transfer; index: from
  * colour indices) at the raster position with the pixel zoom (GL 2.1
  * 3.6.4 and 3.6.5). */
-static void draw_rect(interp *ip, float *px, int64_t w, int64_t h, bool index)
+static void draw_rect(interp *ip, const float *px, int64_t w, int64_t h, bool index)
 {
     const gl_attribs *a = &ip->st.a;
-    interp_pixels_transfer(ip, px, (size_t)w * (size_t)h, index);
+    interp_pixels_transfer_note(ip, index);
     bool over = pixels_begin(ip);
     uint8_t *ov = overlay(ip);
     if (!ov)
@@ -343,20 +380,97 @@ static void draw_rect(interp *ip, float *px, int64_t w, int64_t h, bool index)
             if (!(fk >= 0 && fk < (double)w))
                 continue;
             int64_t k = (int64_t)fk;
-            put_pixel(ov + ((size_t)y * (size_t)ow + (size_t)x) * 4,
-                      px + ((size_t)m * (size_t)w + (size_t)k) * 4, over);
+            /* Pixel transfer per pixel drawn: px is kept for later draws. */
+            float c[4];
+            interp_pixel_transfer(ip, px + ((size_t)m * (size_t)w + (size_t)k) * 4, c);
+            put_pixel(ov + ((size_t)y * (size_t)ow + (size_t)x) * 4, c, over);
         }
     }
+}
+
+/* ---- Pixel rectangles converted once a frame --------------------------------------- */
+
+/* A rectangle drawn again (a sprite, a tiled background, a glyph) is read
+ * and converted once a frame: each later draw costs the budget only the
+ * pixels it writes. */
+typedef struct pix_conv {
+    uint32_t id;
+    GLenum format, type;
+    int64_t w, h;
+    float *px; /* w x h RGBA, before pixel transfer */
+} pix_conv;
+
+struct interp_pixconv {
+    namemap ids; /* resource -> index in v */
+    pix_conv *v;
+    size_t n, cap;
+};
+
+void interp_pixels_begin_frame(interp *ip)
+{
+    struct interp_pixconv *c = ip->pixconv;
+    if (!c)
+        return;
+    for (size_t i = 0; i < c->n; i++)
+        tr_free(c->v[i].px);
+    c->n = 0;
+    namemap_clear(&c->ids);
+}
+
+void interp_pixels_free(interp *ip)
+{
+    interp_pixels_begin_frame(ip);
+    if (ip->pixconv) {
+        namemap_finish(&ip->pixconv->ids);
+        tr_free(ip->pixconv->v);
+        tr_free(ip->pixconv);
+        ip->pixconv = NULL;
+    }
+}
+
+/* Keeps px (w x h, converted from resource id) for the frame's later
+ * draws; false (px still the caller's) without memory for it. */
+static bool conv_keep(interp *ip, uint32_t id, GLenum format, GLenum type, int64_t w, int64_t h,
+                      float *px)
+{
+    if (!ip->pixconv) {
+        ip->pixconv = tr_realloc(NULL, sizeof *ip->pixconv);
+        if (!ip->pixconv)
+            return false;
+        memset(ip->pixconv, 0, sizeof *ip->pixconv);
+        namemap_init(&ip->pixconv->ids);
+    }
+    struct interp_pixconv *c = ip->pixconv;
+    int64_t i = namemap_get(&c->ids, id);
+    if (i < 0) {
+        if (c->n >= UINT32_MAX || tr_grow((void **)&c->v, &c->cap, c->n + 1, sizeof *c->v) != 0 ||
+            namemap_put(&c->ids, id, (uint32_t)c->n) != 0)
+            return false;
+        i = (int64_t)c->n++;
+    } else {
+        tr_free(c->v[i].px); /* the same pixels as another format, type or size */
+    }
+    c->v[i] = (pix_conv){id, format, type, w, h, px};
+    return true;
 }
 
 /* Converts resource id's w x h pixels of format/type and draws them. */
 static void draw_pixels(interp *ip, uint32_t id, GLenum format, GLenum type, int64_t w,
                         int64_t h)
 {
+    if (interp_draw_buffer_hidden(ip))
+        return; /* into a colour buffer the frame does not show */
     bool index = format == GL_COLOR_INDEX;
     size_t need = index ? interp_pixels_index_bytes(type, w, h) : interp_pixel_bytes(format, type, w, h);
     if (!need) {
         interp_note(ip, DIAG_NOTE_PIXELS_OTHER);
+        return;
+    }
+    const struct interp_pixconv *c = ip->pixconv;
+    int64_t i = c ? namemap_get(&c->ids, id) : -1;
+    if (i >= 0 && c->v[i].format == format && c->v[i].type == type && c->v[i].w == w &&
+        c->v[i].h == h) {
+        draw_rect(ip, c->v[i].px, w, h, false);
         return;
     }
     uint32_t lost = 0;
@@ -373,7 +487,9 @@ static void draw_pixels(interp *ip, uint32_t id, GLenum format, GLenum type, int
     else
         interp_pixels_float(px, src, (size_t)w * (size_t)h, format, type);
     draw_rect(ip, px, w, h, index);
-    tr_free(px);
+    /* indices are kept as the maps made them colours: not for later draws */
+    if (index || !conv_keep(ip, id, format, type, w, h, px))
+        tr_free(px);
 }
 
 void interp_drawpixels(interp *ip, const rgl_cmd *cmd)
@@ -408,7 +524,7 @@ void interp_copypixels(interp *ip, const rgl_cmd *cmd)
         interp_bad_value(ip, "glCopyPixels: negative size");
         return;
     }
-    interp_unrec_pixel_uses(ip, true, true, false);
+    interp_unrec_pixel_uses(ip, true, !id, false);
     if (!ip->st.a.current.raster_valid || !ip->scene || w == 0 || h == 0)
         return;
     if (type != GL_COLOR) {
@@ -419,6 +535,44 @@ void interp_copypixels(interp *ip, const rgl_cmd *cmd)
         interp_diag(ip, DIAG_IGNORED, "glCopyPixels: the recorder could not read the pixels");
         return;
     }
+    /* Under a logic op the recorder reads back what GL left there
+     * (@CopyPixelsResult, next): until it comes, the copy as it is. */
+    const gl_attribs *a = &ip->st.a;
+    if (ip->pixels_result_due)
+        interp_note(ip, DIAG_NOTE_COLOR_MASK);
+    ip->pixels_result_due = a->caps[INTERP_CAP_COLOR_LOGIC_OP] && a->color_buffer.logic_op != GL_COPY &&
+                            !interp_draw_buffer_hidden(ip);
     /* The recorder read the source as 8-bit RGBA, before pixel transfer. */
     draw_pixels(ip, id, GL_RGBA, GL_UNSIGNED_BYTE, w, h);
+}
+
+/* The window pixels a glCopyPixels under a logic op left, as GL left them:
+ * written into the overlay as they are, opaque. */
+void interp_copypixelsresult(interp *ip, const rgl_cmd *cmd)
+{
+    int64_t x = cmd->arg[0].v.i, y = cmd->arg[1].v.i, w = cmd->arg[2].v.i, h = cmd->arg[3].v.i;
+    uint32_t id = (uint32_t)cmd->arg[4].v.u;
+    if (!ip->pixels_result_due || !ip->scene || w <= 0 || h <= 0 || !id ||
+        w > INTERP_MAX_VIEWPORT || h > INTERP_MAX_VIEWPORT)
+        return; /* not after such a copy, or nothing to show */
+    ip->pixels_result_due = false;
+    uint32_t lost = 0;
+    const uint8_t *src = interp_pixels_fetch(ip, id, (size_t)w * (size_t)h * 4, &lost);
+    uint8_t *ov = src ? overlay(ip) : NULL;
+    if (!ov || !interp_budget_texels(ip, (uint64_t)w * (uint64_t)h))
+        return;
+    int ow = ip->scene->overlay_w, oh = ip->scene->overlay_h;
+    for (int64_t j = 0; j < h; j++) {
+        int64_t oy = y + j - ip->pixels_org[1];
+        if (oy < 0 || oy >= oh)
+            continue;
+        for (int64_t i = 0; i < w; i++) {
+            int64_t ox = x + i - ip->pixels_org[0];
+            if (ox < 0 || ox >= ow)
+                continue;
+            uint8_t *d = ov + ((size_t)oy * (size_t)ow + (size_t)ox) * 4;
+            memcpy(d, src + ((size_t)j * (size_t)w + (size_t)i) * 4, 3);
+            d[3] = 255;
+        }
+    }
 }

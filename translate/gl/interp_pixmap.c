@@ -83,24 +83,26 @@ static bool transfer_identity(const gl_attribs *a)
     return true;
 }
 
-void interp_pixels_transfer(interp *ip, float *px, size_t n, bool from_index)
+void interp_pixels_transfer_note(interp *ip, bool from_index)
 {
     const gl_attribs *a = &ip->st.a;
-    if (n == 0)
-        return;
     /* Scales and biases of RGBA pixels: Mesa's once (pixels_draw,
      * pixels_copy exact). */
     if (a->pixel.map_color || (from_index && !transfer_identity(a)))
         interp_note(ip, DIAG_NOTE_PIXELS_MAP_COLOR);
-    for (size_t i = 0; i < n; i++)
-        for (int k = 0; k < 4; k++) {
-            float c = clamp01(px[i * 4 + k] * a->pixel.scale[k] + a->pixel.bias[k]);
-            if (a->pixel.map_color) {
-                int m = MAP_R_TO_R + k, size = a->pixel.map_size[m];
-                c = a->pixel.map[m][(int)lrintf(c * (float)(size - 1))];
-            }
-            px[i * 4 + k] = c;
+}
+
+void interp_pixel_transfer(const interp *ip, const float in[4], float out[4])
+{
+    const gl_attribs *a = &ip->st.a;
+    for (int k = 0; k < 4; k++) {
+        float c = clamp01(in[k] * a->pixel.scale[k] + a->pixel.bias[k]);
+        if (a->pixel.map_color) {
+            int m = MAP_R_TO_R + k, size = a->pixel.map_size[m];
+            c = a->pixel.map[m][(int)lrintf(c * (float)(size - 1))];
         }
+        out[k] = c;
+    }
 }
 
 static size_t index_type_bytes(GLenum type)

@@ -50,7 +50,7 @@ void interp_color(interp *ip, const rgl_cmd *cmd)
     for (uint32_t k = 0; k < 4; k++)
         c[k] = k < n ? (float)normalise(type, cmd_value(cmd, k)) : 1.0f;
     if (ip->st.a.caps[INTERP_CAP_COLOR_MATERIAL])
-        interp_color_material_update(ip);
+        interp_cm_colour(ip);
 }
 
 /* The current secondary colour and fog coordinate: taken by each vertex
@@ -115,7 +115,7 @@ static void draw_notes(interp *ip)
         (c[INTERP_CAP_TEXTURE_2D] || c[INTERP_CAP_TEXTURE_1D]) &&
         a->texture.env_mode == GL_MODULATE) {
         const float *sp = a->lighting.material[0].specular, *bp = a->lighting.material[1].specular;
-        bool cm_spec = c[INTERP_CAP_COLOR_MATERIAL] &&
+        bool cm_spec = interp_cm_on(ip) &&
                        a->lighting.color_material_mode == GL_SPECULAR;
         if (cm_spec || sp[0] > 0 || sp[1] > 0 || sp[2] > 0 || bp[0] > 0 || bp[1] > 0 || bp[2] > 0)
             interp_note(ip, DIAG_NOTE_SINGLE_COLOR);
@@ -182,6 +182,25 @@ static void painter_shift(interp *ip, mat4 *to_eye)
     interp_painter_apply(ip, ip->painter, to_eye);
 }
 
+/* The next segment of a line draw without a depth test: one painter's
+ * step nearer than the one before, as GL draws it over what came before
+ * where both light a pixel (a strip's joints, wide lines, crossings).
+ * *delta takes eye points of the draw's own shift (base) to the new one. */
+static bool painter_step(interp *ip, uint32_t base, mat4 *delta)
+{
+    const gl_attribs *a = &ip->st.a;
+    if ((a->caps[INTERP_CAP_DEPTH_TEST] && (a->depth.func == GL_LESS || a->depth.func == GL_LEQUAL)) ||
+        ip->painter >= PAINTER_MAX || !ip->scene)
+        return false;
+    mat4 from = mat4_identity(), inv;
+    interp_painter_apply(ip, base, &from);
+    if (!mat4_invert(&from, &inv))
+        return false;
+    *delta = inv;
+    interp_painter_apply(ip, ++ip->painter, delta);
+    return true;
+}
+
 bool interp_object_to_eye(const interp *ip, const mat4 *mv, const mat4 *proj,
                          const int32_t vp[4], mat4 *out)
 {
@@ -210,7 +229,14 @@ static bool setup_transform(interp *ip)
     if (!ip->frame_begin) {
         const int32_t *vp = ip->st.a.viewport.rect;
         bool same_vp = memcmp(vp, ip->cam_viewport, sizeof ip->cam_viewport) == 0;
-        if (!same_vp || !mat4_equal_f32(proj, &ip->cam_proj)) {
+        mat4 w = interp_window_matrix(proj, vp);
+        bool own = same_vp && mat4_equal_f32(proj, &ip->cam_proj);
+        if (!own)
+            interp_proj_layer(ip, &w);
+        /* glDepthRange and depth-only clears move the draw's depth: along
+         * the camera's rays, so the picture keeps its pixels. */
+        bool moved = interp_proj_depth_map(ip, &w);
+        if (!own || moved) {
             /* Drawn with another projection or viewport: map its window
              * position into the camera's eye space. Window x, y and depth
              * are GL's, so colours and depth order are exact; lighting,
@@ -222,13 +248,11 @@ static bool setup_transform(interp *ip)
                 interp_note(ip, DIAG_NOTE_PROJECTION);
             if (!ip->cam_from_ndc_ok)
                 return false;
-            mat4 w = interp_window_matrix(proj, vp);
-            interp_proj_layer(ip, &w);
             mat4 remap = mat4_mul(&ip->cam_from_ndc, &w);
             to_eye = mat4_mul(&remap, mv);
-        } else {
-            interp_proj_own_draw(ip);
         }
+        if (own)
+            interp_proj_own_draw(ip);
     }
     if (!mat4_finite(&to_eye) || !mat4_finite(&ip->prim_clip)) {
         interp_diag(ip, DIAG_BAD_NUMBER, "matrix with NaN or infinite elements: draw skipped");
@@ -340,6 +364,7 @@ static void map_blend(interp *ip, float c[4])
 
 static void begin_mode(interp *ip, GLenum mode)
 {
+    interp_cm_draw(ip);
     ip->in_begin = true;
     ip->prim_mode = mode;
     ip->prim_skip = true;
@@ -399,7 +424,7 @@ static inline void surface_colour(const interp *ip, float c0, float c1, float c2
          * (interp_color_material_update keeps the material's diffuse equal
          * to glColor when colour material covers it). */
         const gl_material *fm = &a->lighting.material[0];
-        if (!a->caps[INTERP_CAP_COLOR_MATERIAL])
+        if (!interp_cm_on(ip))
             c0 = fm->diffuse[0], c1 = fm->diffuse[1], c2 = fm->diffuse[2];
         c3 = fm->diffuse[3];
     }
@@ -425,7 +450,9 @@ void interp_surface_colour(const interp *ip, float out[4])
  * under GL_NORMALIZE, rescaled under GL_RESCALE_NORMAL). lit_prepare
  * finds the modelview's inverse (kept while the matrix is bit for bit the
  * same) and the lighting state once for a primitive's vertices. */
-static void lit_prepare(interp *ip, interp_lit_prep *lp)
+/* back: as GL lights back faces (two-sided lighting's back material and
+ * the normal turned). */
+static void lit_prepare_side(interp *ip, interp_lit_prep *lp, bool back)
 {
     const gl_attribs *a = &ip->st.a;
     const mat4 *mv = interp_matrix(ip, INTERP_MV);
@@ -434,7 +461,7 @@ static void lit_prepare(interp *ip, interp_lit_prep *lp)
         ip->lit_mv_ok = mat4_invert(mv, &ip->lit_mv_inv);
         ip->lit_mv_set = true;
     }
-    interp_lit_prepare(ip, false, lp);
+    interp_lit_prepare(ip, back, lp);
     lp->mv = mv;
     lp->inv = ip->lit_mv_ok ? &ip->lit_mv_inv : NULL;
     lp->normalize = a->caps[INTERP_CAP_NORMALIZE];
@@ -442,6 +469,8 @@ static void lit_prepare(interp *ip, interp_lit_prep *lp)
     const double *im = ip->lit_mv_inv.m;
     lp->rescale_r = sqrt(im[2] * im[2] + im[6] * im[6] + im[10] * im[10]);
 }
+
+static void lit_prepare(interp *ip, interp_lit_prep *lp) { lit_prepare_side(ip, lp, false); }
 
 static void lit_colour_at(const interp *ip, const interp_lit_prep *lp, double x, double y,
                           double z, const float cn[3], const float colour[4], float out[4],
@@ -488,7 +517,13 @@ static void lit_line_colour(interp *ip, double x, double y, double z, float out[
     lit_colour_at(ip, &lp, x, y, z, a->current.normal, a->current.color, out, peak);
 }
 
-void interp_relit_prepare(interp *ip, interp_lit_prep *lp) { lit_prepare(ip, lp); }
+/* The faces moved are back faces (or, one-sided, all of a textured
+ * split's, lit as front faces are): under two-sided lighting, lit as GL
+ * lights back faces. */
+void interp_relit_prepare(interp *ip, interp_lit_prep *lp)
+{
+    lit_prepare_side(ip, lp, ip->st.a.lighting.two_side);
+}
 
 void interp_relit_colour(interp *ip, const interp_lit_prep *lp, const interp_relit_in *in,
                          float c[4], double *peak)
@@ -748,6 +783,7 @@ typedef struct assembly {
     scene *s;
     uint32_t base;  /* absolute index of the primitive's first vertex */
     bool facing;    /* facing must be computed (culling or mixed modes) */
+    bool back;      /* with facing: the triangle being filled is a back face */
     bool cull_front, cull_back;
     bool swap;      /* glFrontFace(GL_CW): reorder so that front is CCW */
     bool check_bad; /* some vertex is not finite */
@@ -760,6 +796,9 @@ typedef struct assembly {
     bool list_quads; /* quads split along v1-v3, as Mesa does in a list or when clipping */
     bool stipple;       /* glLineStipple applies (interp_stipple.c) */
     double stipple_s;   /* GL's stipple counter (a float in Mesa) */
+    bool step;          /* a line draw (not outlined faces, which interp_proj may step) */
+    uint32_t segments;  /* segments added so far: each after the first a painter's step */
+    uint32_t painter;   /* the draw's own painter's shift (ip->painter when it began) */
     int relit;          /* INTERP_RELIT_*: filled faces lit as GL does (interp_relit.c) */
     bool lit_edges;     /* outlined (GL_LINE, GL_POINT) lit faces: GL's lit colours, relit_col */
     bool fog_split;     /* triangles behind the eye get their own fog (interp_fogbehind.c) */
@@ -841,6 +880,14 @@ static void add_segment(assembly *as, uint32_t i0, uint32_t i1, uint32_t provoki
     ln.stipple = as->stipple;
     ln.have_win = t[0] == 0 && t[1] == 1 && interp_gl_window(ip, v0->pos, ln.win[0]) &&
                   interp_gl_window(ip, v1->pos, ln.win[1]);
+    mat4 delta;
+    if (as->step && as->segments++ > 0 && painter_step(ip, as->painter, &delta))
+        for (int e = 0; e < 2; e++) {
+            double in[4] = {ln.p[e][0], ln.p[e][1], ln.p[e][2], 1}, o[4];
+            mat4_apply(&delta, in, o);
+            for (int k = 0; k < 3; k++)
+                ln.p[e][k] = o[k] / o[3];
+        }
     interp_add_line(ip, &ln, &as->stipple_s);
 }
 
@@ -961,7 +1008,8 @@ static bool is_ccw(const interp *ip, const uint32_t *idx, int n)
  * eye. False when the face is not drawn. */
 static bool fill_tri_checks(assembly *as, uint32_t a, uint32_t b, uint32_t c)
 {
-    if (as->ip->stencil.write) { /* its window region, for later stencil tests */
+    /* its window region, for later stencil tests (of the faces that write) */
+    if (as->ip->stencil.write && (as->ip->stencil.tri_faces & (as->back ? 2 : 1))) {
         double p[3][3];
         const scene_vertex *v = as->s->verts + as->base;
         if (eye_pos(as->ip, &v[a], p[0]) && eye_pos(as->ip, &v[b], p[1]) &&
@@ -1042,6 +1090,9 @@ static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t prov
         front = is_ccw(ip, idx, n) != as->swap;
         if ((front && as->cull_front) || (!front && as->cull_back))
             return;
+        if (!front && ip->stencil.two_side)
+            interp_note(ip, DIAG_NOTE_STENCIL_TWO_SIDE);
+        as->back = !front;
         mode = a->polygon.mode[front ? 0 : 1];
     }
     if (as->relit == INTERP_RELIT_PROBE) {
@@ -1193,6 +1244,9 @@ static inline void facing_tri(assembly *as, uint32_t a, uint32_t b, uint32_t c,
     bool front = is_ccw3(as->ip, a, b, c) != as->swap;
     if (front ? as->cull_front : as->cull_back)
         return;
+    if (!front && as->ip->stencil.two_side) /* it took the front faces' stencil */
+        interp_note(as->ip, DIAG_NOTE_STENCIL_TWO_SIDE);
+    as->back = !front;
     if (as->relit && (as->relit == INTERP_RELIT_ALL || !front))
         relit_keep(as, a, b, c, provoking);
     else
@@ -1400,6 +1454,11 @@ static void end_primitive_body(interp *ip)
     as.ip = ip;
     as.s = s;
     as.base = (uint32_t)ip->prim_first;
+    as.painter = ip->painter;
+    /* of one colour, whichever segment shows is the same: no step (a
+     * draw of thousands, stroke text, would use up the painter's range) */
+    as.step = (mode == GL_LINES || mode == GL_LINE_STRIP || mode == GL_LINE_LOOP) &&
+              !prim_one_colour(ip);
     as.flat = a->lighting.shade_model == GL_FLAT;
     as.first = a->lighting.provoking == GL_FIRST_VERTEX_CONVENTION;
     as.swap = a->polygon.front_face == GL_CW;
@@ -1440,7 +1499,8 @@ static void end_primitive_body(interp *ip)
     as.cull_front = cull && (cm == GL_FRONT || cm == GL_FRONT_AND_BACK);
     as.cull_back = cull && (cm == GL_BACK || cm == GL_FRONT_AND_BACK);
     /* Back faces may need GL's lighting (interp_relit.c). */
-    as.facing = cull || a->polygon.mode[0] != a->polygon.mode[1] || interp_relit_wanted(ip);
+    as.facing = cull || a->polygon.mode[0] != a->polygon.mode[1] || interp_relit_wanted(ip) ||
+                ip->stencil.two_side || ip->stencil.tri_faces != 3;
     if (as.facing && !compute_clip(ip, n)) {
         s->failed = true;
         return;
@@ -1480,9 +1540,10 @@ static void end_primitive_body(interp *ip)
     if (as.relit && as.relit != INTERP_RELIT_PROBE && !interp_relit_need_clear(ip, n))
         as.relit = 0;
     /* Outlined faces lit: GL lights their vertices (one-sided lighting;
-     * interp_relit.c keeps what that needs). */
+     * interp_relit.c keeps what that needs; under two-sided lighting its
+     * colours are the back faces'). */
     if (look.lit && (a->polygon.mode[0] != GL_FILL || a->polygon.mode[1] != GL_FILL)) {
-        if (interp_relit_wanted(ip)) {
+        if (interp_relit_wanted(ip) && !a->lighting.two_side) {
             interp_relit_flush(ip);
             as.lit_edges = ip->relit_made >= n && ip->relit_col;
         }

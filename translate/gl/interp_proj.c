@@ -44,10 +44,14 @@ void interp_proj_begin_frame(interp *ip)
     ip->own_drawn = false;
     ip->draw_seq = 0;
     ip->nclear_seq = 0;
+    ip->depth_epoch = ip->depth_epochs = 0;
+    ip->epoch_drawn = false;
 }
 
 void interp_proj_clear(interp *ip)
 {
+    ip->depth_epoch = 0;
+    ip->epoch_drawn = false;
     ip->nvotes = 0; /* the scene starts over: so does the choice */
     ip->back_open = true;
     ip->own_drawn = false;
@@ -56,6 +60,12 @@ void interp_proj_clear(interp *ip)
 
 void interp_proj_depth_clear(interp *ip)
 {
+    /* Clears before the camera's first draw leave backgrounds, which the
+     * layers place (interp_proj_layer). */
+    if (ip->epoch_drawn && ip->own_drawn && ip->depth_epoch < UINT32_MAX) {
+        ip->depth_epoch++;
+        ip->epoch_drawn = false;
+    }
     if (ip->nclear_seq < INTERP_PROJ_VOTES)
         ip->clear_seq[ip->nclear_seq++] = ip->draw_seq;
 }
@@ -135,6 +145,60 @@ bool interp_proj_choice(const interp *ip, mat4 *proj, int32_t vp[4], bool *back_
     }
     *proj = b->proj;
     memcpy(vp, b->vp, sizeof b->vp);
+    return true;
+}
+
+uint32_t interp_proj_depth_epochs(const interp *ip, const mat4 *proj, const int32_t vp[4])
+{
+    if (ip->depth_epochs || !ip->camera_fixed || ip->frame_begin)
+        return 0;
+    if (!proj) {
+        proj = &ip->cam_proj;
+        vp = ip->cam_viewport;
+    }
+    /* As the second translation will count them, with this camera: the
+     * depth clears after its first draw with draws before them (since
+     * the last counted one) and after them. */
+    uint32_t first = UINT32_MAX;
+    for (int i = 0; i < ip->nvotes; i++)
+        if (memcmp(ip->votes[i].vp, vp, sizeof ip->votes[i].vp) == 0 &&
+            mat4_equal_f32(&ip->votes[i].proj, proj))
+            first = ip->votes[i].first_seq;
+    uint32_t n = 0, last = first;
+    for (int k = 0; k < ip->nclear_seq; k++) {
+        uint32_t c = ip->clear_seq[k];
+        if (first != UINT32_MAX && c > last && c < ip->draw_seq) {
+            n++;
+            last = c;
+        }
+    }
+    return n;
+}
+
+void interp_proj_preset_epochs(interp *ip, uint32_t n) { ip->depth_epochs = n; }
+
+bool interp_proj_depth_map(interp *ip, mat4 *w)
+{
+    ip->epoch_drawn = true;
+    const gl_attribs *a = &ip->st.a;
+    /* The camera's near and far planes are window depths 0 and 1. */
+    double n = ip->frame_begin ? 0 : a->viewport.near, f = ip->frame_begin ? 1 : a->viewport.far;
+    /* u, the window depth, 0..1; epoch e of E lies at (E - e + u) / (E + 1);
+     * back to NDC: 2 u' - 1 = a z + b. */
+    double e = ip->depth_epoch < ip->depth_epochs ? ip->depth_epoch : ip->depth_epochs;
+    double E = ip->depth_epochs;
+    double sa = (f - n) / (E + 1);
+    double sb = (f + n + 2 * (E - e)) / (E + 1) - 1;
+    /* A range of one depth makes the draws coplanar: GL_LESS keeps the
+     * first one's pixels, GL_LEQUAL the last's; a step per draw, far
+     * below a depth buffer's, orders them so. */
+    GLenum df = a->depth.func;
+    if (f == n && a->caps[INTERP_CAP_DEPTH_TEST] && (df == GL_LESS || df == GL_LEQUAL))
+        sb += (df == GL_LESS ? 1e-7 : -1e-7) * fmin(ip->draw_seq, 1e5);
+    if (sa == 1 && sb == 0)
+        return false;
+    for (int k = 0; k < 4; k++)
+        w->m[4 * k + 2] = sa * w->m[4 * k + 2] + sb * w->m[4 * k + 3];
     return true;
 }
 

@@ -54,7 +54,7 @@ void interp_begin_frame(interp *ip)
     ip->camera_fixed = false;
     ip->frame_begin = false;
     ip->frame_name[0] = '\0';
-    ip->notes_seen = ip->notes_held = 0;
+    interp_clear_notes(ip);
     ip->cleared = false;
     ip->painter = 0;
     ip->shape_facets = 0;
@@ -69,6 +69,8 @@ void interp_begin_frame(interp *ip)
     if (ip->scene)
         scene_reset(ip->scene);
     interp_lists_begin_frame(ip);
+    interp_texture_begin_frame(ip);
+    interp_pixels_begin_frame(ip);
     /* the scene's stencil region starts empty (interp_stencil.c) */
     ip->stencil.first = 0;
     ip->stencil.written = ip->stencil.mixed = ip->stencil.box_pending = false;
@@ -85,6 +87,7 @@ void interp_end_frame(interp *ip)
     }
     if (!s)
         return;
+    interp_budget_peak(ip);
     interp_fix_camera(ip);
     interp_proj_end_frame(ip);
     interp_zorder_end_frame(ip);
@@ -168,6 +171,17 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
         interp_bad_value(ip, "glClear mask has unknown bits");
         return;
     }
+    /* A colour clear of a buffer the frame does not show leaves its
+     * picture alone (interp_buffers.c); depth and stencil are shared. The
+     * write masks apply to the clear (GL 1.x 4.2.3): with red, green and
+     * blue masked it changes no colour, under glDepthMask(GL_FALSE) no
+     * depth. */
+    const gl_attribs *a = &ip->st.a;
+    const bool *cm = a->color_buffer.mask;
+    if ((mask & GL_COLOR_BUFFER_BIT) && (interp_draw_buffer_hidden(ip) || (!cm[0] && !cm[1] && !cm[2])))
+        mask &= ~(uint32_t)GL_COLOR_BUFFER_BIT;
+    if (!a->depth.mask)
+        mask &= ~(uint32_t)GL_DEPTH_BUFFER_BIT;
     if ((mask & GL_DEPTH_BUFFER_BIT) && !(mask & GL_COLOR_BUFFER_BIT) &&
         ip->st.render_mode == GL_RENDER)
         interp_proj_depth_clear(ip);
@@ -184,13 +198,15 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
     }
     if (!(mask & GL_COLOR_BUFFER_BIT) || !ip->scene || ip->st.render_mode != GL_RENDER)
         return;
-    const gl_attribs *a = &ip->st.a;
+    if (!cm[0] || !cm[1] || !cm[2])
+        interp_note(ip, DIAG_NOTE_COLOR_MASK); /* cleared whole */
     if (a->caps[INTERP_CAP_SCISSOR_TEST] && interp_scissor_clear(ip))
         return; /* a partial clear: what is drawn stays */
     if (interp_accum_clear(ip))
         return;
     interp_proj_clear(ip);
     /* Everything drawn so far is gone; the next draw fixes the camera anew. */
+    interp_budget_peak(ip);
     scene_clear_geometry(ip->scene);
     ip->nclear_rects = 0;
     ip->camera_fixed = false;

@@ -3,7 +3,9 @@
  *
  * Back faces under one-sided lighting: GL lights them with the front
  * material and the normal as given, pointing away from the viewer, where
- * POV-Ray turns every normal toward the viewer. Textured GL_MODULATE
+ * POV-Ray turns every normal toward the viewer. Back faces under two-sided
+ * lighting whose colours vary per vertex: POV-Ray's interior_texture is
+ * one texture for the whole mesh. Textured GL_MODULATE
  * surfaces lit past white: GL clamps the lit colour per vertex before the
  * texture multiplies it, POV-Ray does not. Untextured faces lit past white
  * too: GL clamps each vertex's colour and interpolates the clamped
@@ -25,8 +27,8 @@
 bool interp_relit_wanted(const interp *ip)
 {
     const gl_attribs *a = &ip->st.a;
-    return ip->scene && a->caps[INTERP_CAP_LIGHTING] && !a->lighting.two_side &&
-           !interp_vertex_lit(ip) && ip->prim_mode > GL_LINE_STRIP;
+    return ip->scene && a->caps[INTERP_CAP_LIGHTING] && !interp_vertex_lit(ip) &&
+           ip->prim_mode > GL_LINE_STRIP;
 }
 
 bool interp_relit_grow(interp *ip, size_t k)
@@ -100,9 +102,19 @@ int interp_relit_split(interp *ip, const scene_look *look)
 {
     if (!look->lit || !interp_relit_wanted(ip))
         return 0;
+    const gl_attribs *a = &ip->st.a;
+    if (a->lighting.two_side) {
+        /* GL lights a back face (by its winding) with the back material
+         * and the normal turned; POV-Ray's interior_texture goes by the
+         * side the interpolated normal faces and is one texture for the
+         * whole mesh. So a back face whose normals face the viewer came
+         * out lit as a front face (bright where GL's is dark), and colours
+         * that vary per vertex came out in one. Untextured back faces take
+         * GL's lit colours; textured ones keep the interior texture. */
+        return look->texture < 0 ? INTERP_RELIT_BACK : 0;
+    }
     /* GL_SEPARATE_SPECULAR_COLOR adds the highlight after the texture: an
      * unlit copy cannot carry it (interp_lit_color sums it in). */
-    const gl_attribs *a = &ip->st.a;
     const float *ks = a->lighting.material[0].specular;
     if (look->texture >= 0 && a->lighting.color_control != GL_SINGLE_COLOR &&
         (ks[0] > 0 || ks[1] > 0 || ks[2] > 0)) {

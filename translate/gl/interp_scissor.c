@@ -49,26 +49,54 @@ bool interp_scissor_cuts(const interp *ip, const int32_t vp[4])
              (int64_t)b[1] + b[3] >= (int64_t)vp[1] + vp[3]);
 }
 
+/* The window rectangle a draw now reaches, x0, y0, x1, y1: the scissor
+ * box, and the draw's viewport where it is not the camera's (GL clips
+ * each draw to its own viewport; the camera's bounds the picture). False
+ * when neither cuts the camera's viewport. */
+static bool draw_box(const interp *ip, int64_t r[4])
+{
+    const gl_attribs *a = &ip->st.a;
+    const int32_t *cv = ip->cam_viewport, *vp = a->viewport.rect;
+    bool cut = interp_scissor_cuts(ip, cv);
+    const int32_t *b = cut ? a->scissor.box : cv;
+    r[0] = b[0];
+    r[1] = b[1];
+    r[2] = (int64_t)b[0] + b[2];
+    r[3] = (int64_t)b[1] + b[3];
+    if (!ip->frame_begin && memcmp(vp, cv, sizeof ip->cam_viewport) != 0) {
+        int64_t v[4] = {vp[0], vp[1], (int64_t)vp[0] + vp[2], (int64_t)vp[1] + vp[3]};
+        bool inside = v[0] <= cv[0] && v[1] <= cv[1] && v[2] >= (int64_t)cv[0] + cv[2] &&
+                      v[3] >= (int64_t)cv[1] + cv[3];
+        for (int k = 0; k < 2 && !inside; k++) {
+            r[k] = v[k] > r[k] ? v[k] : r[k];
+            r[k + 2] = v[k + 2] < r[k + 2] ? v[k + 2] : r[k + 2];
+        }
+        cut = cut || !inside;
+    }
+    return cut;
+}
+
 bool interp_scissor_hides(const interp *ip)
 {
-    if (!interp_scissor_cuts(ip, ip->cam_viewport))
+    int64_t r[4];
+    if (!draw_box(ip, r))
         return false;
-    const int32_t *b = ip->st.a.scissor.box, *vp = ip->cam_viewport;
-    return b[2] == 0 || b[3] == 0 || (int64_t)b[0] + b[2] <= vp[0] ||
-           (int64_t)b[1] + b[3] <= vp[1] || (int64_t)b[0] >= (int64_t)vp[0] + vp[2] ||
-           (int64_t)b[1] >= (int64_t)vp[1] + vp[3];
+    const int32_t *cv = ip->cam_viewport;
+    return r[2] <= r[0] || r[3] <= r[1] || r[2] <= cv[0] || r[3] <= cv[1] ||
+           r[0] >= (int64_t)cv[0] + cv[2] || r[1] >= (int64_t)cv[1] + cv[3];
 }
 
 void interp_scissor_look(const interp *ip, scene_look *look)
 {
-    if (!interp_scissor_cuts(ip, ip->cam_viewport))
+    int64_t r[4];
+    if (!draw_box(ip, r))
         return;
-    const int32_t *b = ip->st.a.scissor.box;
+    const int32_t *cv = ip->cam_viewport;
     look->scissored = 1;
-    look->scissor[0] = (int32_t)((int64_t)b[0] - ip->cam_viewport[0]);
-    look->scissor[1] = (int32_t)((int64_t)b[1] - ip->cam_viewport[1]);
-    look->scissor[2] = b[2];
-    look->scissor[3] = b[3];
+    look->scissor[0] = (int32_t)(r[0] - cv[0]);
+    look->scissor[1] = (int32_t)(r[1] - cv[1]);
+    look->scissor[2] = (int32_t)(r[2] > r[0] ? r[2] - r[0] : 0);
+    look->scissor[3] = (int32_t)(r[3] > r[1] ? r[3] - r[1] : 0);
 }
 
 bool interp_scissor_clear(interp *ip)

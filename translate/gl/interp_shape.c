@@ -268,8 +268,8 @@ static bool exact_ok(interp *ip, bool closed, bool inside, bool faceted)
         return false; /* the mesh carries the texture coordinates */
     if (interp_offset_active(ip))
         return false; /* lines drawn over it lie on GL's facets */
-    if (interp_stencil_writes(ip))
-        return false; /* its triangles make the stencil region */
+    if (interp_stencil_writes(ip) || interp_stencil_faces_differ(ip))
+        return false; /* its triangles make the stencil region, or face it */
     return true;
 }
 

@@ -1,5 +1,6 @@
 /* interp_stencil.c: the stencil test (GL 1.x 4.1.5): glStencilFunc,
- * glStencilOp, glStencilMask, glClearStencil, and the common pattern.
+ * glStencilOp, glStencilMask, glClearStencil, their two-sided forms
+ * (glStencil*Separate, GL 2.0), and the common pattern.
  *
  * A ray tracer has no stencil buffer, but the common use draws shapes
  * into it (often with colour writes off) and then draws content where it
@@ -13,7 +14,9 @@
  * to the rest; nowhere, it is left out. Writes of other values over the
  * region, lines and points written into it, fail/zfail operations and
  * regions of more than STENCIL_REGION_MAX triangles are not followed (the
- * draw is drawn as if the test passed): a note says so.
+ * draw is drawn as if the test passed): a note says so. Two-sided state
+ * decides a draw by the face it can show; a draw showing both faces,
+ * which the two states treat differently, takes the front's, noted.
  *
  * A scissored clear (GL 2.1 4.2.3: only the scissor box is cleared) makes
  * the box the region when nothing was written since the last clear, adds
@@ -46,37 +49,92 @@ static bool is_op(GLenum op)
     }
 }
 
-void interp_stencilfunc(interp *ip, const rgl_cmd *cmd)
+/* The faces a glStencil*Separate names (GL 2.0 4.1.5), as a mask of
+ * face[] (1 front, 2 back); 0 after an invalid enum, said. */
+static int faces_of(interp *ip, GLenum face)
 {
-    GLenum f = arg_enum(cmd, 0);
+    switch (face) {
+    case GL_FRONT: return 1;
+    case GL_BACK: return 2;
+    case GL_FRONT_AND_BACK: return 3;
+    default:
+        interp_bad_enum(ip, "stencil face", face);
+        return 0;
+    }
+}
+
+static void set_func(interp *ip, int faces, const rgl_cmd *cmd, int first)
+{
+    GLenum f = arg_enum(cmd, first);
     if (!is_func(f)) {
         interp_bad_enum(ip, "stencil function", f);
         return;
     }
-    int64_t ref = rgl_arg_i(&cmd->arg[1], 0);
-    ip->st.a.stencil.func = f;
-    ip->st.a.stencil.ref = (int32_t)(ref < 0 ? 0 : ref > (int64_t)STENCIL_MAX ? STENCIL_MAX : ref);
-    ip->st.a.stencil.value_mask = (uint32_t)cmd->arg[2].v.u;
+    int64_t ref = rgl_arg_i(&cmd->arg[first + 1], 0);
+    for (int k = 0; k < 2; k++) {
+        if (!(faces & (1 << k)))
+            continue;
+        struct gl_stencil_face *sf = &ip->st.a.stencil.face[k];
+        sf->func = f;
+        sf->ref = (int32_t)(ref < 0 ? 0 : ref > (int64_t)STENCIL_MAX ? STENCIL_MAX : ref);
+        sf->value_mask = (uint32_t)cmd->arg[first + 2].v.u;
+    }
 }
 
-void interp_stencilop(interp *ip, const rgl_cmd *cmd)
+static void set_op(interp *ip, int faces, const rgl_cmd *cmd, int first)
 {
     GLenum op[3];
     for (int k = 0; k < 3; k++) {
-        op[k] = arg_enum(cmd, k);
+        op[k] = arg_enum(cmd, first + k);
         if (!is_op(op[k])) {
             interp_bad_enum(ip, "stencil operation", op[k]);
             return;
         }
     }
-    ip->st.a.stencil.fail = op[0];
-    ip->st.a.stencil.zfail = op[1];
-    ip->st.a.stencil.zpass = op[2];
+    for (int k = 0; k < 2; k++) {
+        if (!(faces & (1 << k)))
+            continue;
+        struct gl_stencil_face *sf = &ip->st.a.stencil.face[k];
+        sf->fail = op[0];
+        sf->zfail = op[1];
+        sf->zpass = op[2];
+    }
 }
 
+static void set_mask(interp *ip, int faces, uint32_t mask)
+{
+    for (int k = 0; k < 2; k++)
+        if (faces & (1 << k))
+            ip->st.a.stencil.face[k].write_mask = mask;
+}
+
+/* The one-sided calls set both faces (GL 2.0). */
+void interp_stencilfunc(interp *ip, const rgl_cmd *cmd) { set_func(ip, 3, cmd, 0); }
+void interp_stencilop(interp *ip, const rgl_cmd *cmd) { set_op(ip, 3, cmd, 0); }
 void interp_stencilmask(interp *ip, const rgl_cmd *cmd)
 {
-    ip->st.a.stencil.write_mask = (uint32_t)cmd->arg[0].v.u;
+    set_mask(ip, 3, (uint32_t)cmd->arg[0].v.u);
+}
+
+void interp_stencilfuncseparate(interp *ip, const rgl_cmd *cmd)
+{
+    int faces = faces_of(ip, arg_enum(cmd, 0));
+    if (faces)
+        set_func(ip, faces, cmd, 1);
+}
+
+void interp_stencilopseparate(interp *ip, const rgl_cmd *cmd)
+{
+    int faces = faces_of(ip, arg_enum(cmd, 0));
+    if (faces)
+        set_op(ip, faces, cmd, 1);
+}
+
+void interp_stencilmaskseparate(interp *ip, const rgl_cmd *cmd)
+{
+    int faces = faces_of(ip, arg_enum(cmd, 0));
+    if (faces)
+        set_mask(ip, faces, (uint32_t)cmd->arg[1].v.u);
 }
 
 void interp_clearstencil(interp *ip, const rgl_cmd *cmd)
@@ -194,7 +252,7 @@ static bool cut_box(interp *ip, const int32_t b[4])
 void interp_stencil_clear_box(interp *ip)
 {
     const gl_attribs *a = &ip->st.a;
-    uint32_t wm = a->stencil.write_mask & STENCIL_MAX;
+    uint32_t wm = a->stencil.face[0].write_mask & STENCIL_MAX;
     uint32_t c0 = (uint32_t)ip->stencil.cleared, v = (uint32_t)ip->stencil.value;
     int32_t out = (int32_t)((c0 & ~wm) | ((uint32_t)a->stencil.clear & wm));
     if (!ip->scene)
@@ -232,9 +290,10 @@ void interp_stencil_clear_box(interp *ip)
 void interp_stencil_clear(interp *ip)
 {
     const gl_attribs *a = &ip->st.a;
-    uint32_t wm = a->stencil.write_mask & STENCIL_MAX;
+    uint32_t wm = a->stencil.face[0].write_mask & STENCIL_MAX;
     ip->stencil.first = ip->scene ? ip->scene->nstencil : 0;
-    /* the write mask applies to clears too; a partial one keeps old bits */
+    /* the (front) write mask applies to clears too; a partial one keeps old
+     * bits */
     ip->stencil.cleared = (int32_t)(((uint32_t)ip->stencil.cleared & ~wm) |
                                     ((uint32_t)a->stencil.clear & wm));
     ip->stencil.written = false;
@@ -256,13 +315,13 @@ static bool test(GLenum f, uint32_t ref, uint32_t s)
     }
 }
 
-/* The value op leaves over cur, under the write mask. */
-static int32_t apply(const gl_attribs *a, GLenum op, int32_t cur)
+/* The value op of face sf leaves over cur, under its write mask. */
+static int32_t apply(const struct gl_stencil_face *sf, GLenum op, int32_t cur)
 {
     uint32_t v = (uint32_t)cur;
     switch (op) {
     case GL_ZERO: v = 0; break;
-    case GL_REPLACE: v = (uint32_t)a->stencil.ref; break;
+    case GL_REPLACE: v = (uint32_t)sf->ref; break;
     case GL_INCR: v = v < STENCIL_MAX ? v + 1 : v; break;
     case GL_DECR: v = v > 0 ? v - 1 : 0; break;
     case GL_INVERT: v = ~v & STENCIL_MAX; break;
@@ -270,30 +329,100 @@ static int32_t apply(const gl_attribs *a, GLenum op, int32_t cur)
     case GL_DECR_WRAP: v = (v - 1) & STENCIL_MAX; break;
     default: break;
     }
-    uint32_t wm = a->stencil.write_mask & STENCIL_MAX;
+    uint32_t wm = sf->write_mask & STENCIL_MAX;
     return (int32_t)(((uint32_t)cur & ~wm) | (v & wm));
+}
+
+static bool face_writes(const struct gl_stencil_face *sf)
+{
+    return (sf->write_mask & STENCIL_MAX) && sf->zpass != GL_KEEP;
 }
 
 bool interp_stencil_writes(const interp *ip)
 {
     const gl_attribs *a = &ip->st.a;
-    return a->caps[INTERP_CAP_STENCIL_TEST] && (a->stencil.write_mask & STENCIL_MAX) &&
-           a->stencil.zpass != GL_KEEP;
+    return a->caps[INTERP_CAP_STENCIL_TEST] &&
+           (face_writes(&a->stencil.face[0]) || face_writes(&a->stencil.face[1]));
+}
+
+/* What face sf's state does to a draw over the buffer the scene keeps:
+ * where it passes (inside the region, outside it), whether its fail or
+ * zfail operations write, and the values its zpass leaves. */
+typedef struct stencil_outcome {
+    bool pass_in, pass_out, fail_ops, writes;
+    int32_t v_in, v_out;
+} stencil_outcome;
+
+static stencil_outcome outcome(const interp *ip, const struct gl_stencil_face *sf)
+{
+    stencil_outcome o;
+    int32_t out = ip->stencil.cleared;
+    int32_t in = ip->stencil.written ? ip->stencil.value : out;
+    uint32_t m = sf->value_mask & STENCIL_MAX, ref = (uint32_t)sf->ref & m;
+    o.pass_in = test(sf->func, ref, (uint32_t)in & m);
+    o.pass_out = test(sf->func, ref, (uint32_t)out & m);
+    o.fail_ops = (sf->fail != GL_KEEP && !(o.pass_in && o.pass_out)) || sf->zfail != GL_KEEP;
+    o.writes = face_writes(sf);
+    o.v_in = o.writes ? apply(sf, sf->zpass, in) : in;
+    o.v_out = o.writes ? apply(sf, sf->zpass, out) : out;
+    return o;
+}
+
+/* The face whose state decides the draw: the front's, unless only back
+ * faces can be drawn (GL_CULL_FACE of GL_FRONT); points, lines, bitmaps and
+ * pixels are front-facing (GL 2.0 3.5.1, 4.1.5). A draw that may show both
+ * faces, tested alike but written by one face only, writes the region with
+ * that face's triangles alone (stencil.tri_faces, interp_prim.c); one tested
+ * differently, or written with two values, takes the front's state and is
+ * marked two_side (interp_prim.c notes it at a back face drawn). */
+static int deciding_face(interp *ip)
+{
+    const gl_attribs *a = &ip->st.a;
+    const struct gl_stencil_face *fr = &a->stencil.face[0], *bk = &a->stencil.face[1];
+    if (memcmp(fr, bk, sizeof *fr) == 0 || !ip->in_begin || ip->prim_mode <= GL_LINE_STRIP)
+        return 0;
+    bool cull = a->caps[INTERP_CAP_CULL_FACE];
+    bool front = !(cull && (a->polygon.cull_mode == GL_FRONT || a->polygon.cull_mode == GL_FRONT_AND_BACK));
+    bool back = !(cull && (a->polygon.cull_mode == GL_BACK || a->polygon.cull_mode == GL_FRONT_AND_BACK));
+    if (!back)
+        return 0;
+    if (!front)
+        return 1;
+    stencil_outcome of = outcome(ip, fr), ob = outcome(ip, bk);
+    bool pass_same = of.pass_in == ob.pass_in && of.pass_out == ob.pass_out &&
+                     of.fail_ops == ob.fail_ops;
+    bool passes = of.pass_in || of.pass_out;
+    bool fw = of.writes && passes, bw = ob.writes && passes;
+    bool write_same = (!fw && !bw) || (fw && bw && of.v_in == ob.v_in && of.v_out == ob.v_out);
+    if (pass_same && !write_same && fw != bw) {
+        ip->stencil.tri_faces = fw ? 1 : 2;
+        return fw ? 0 : 1;
+    }
+    ip->stencil.two_side = !pass_same || !write_same;
+    return 0;
+}
+
+bool interp_stencil_faces_differ(const interp *ip)
+{
+    const gl_attribs *a = &ip->st.a;
+    return a->caps[INTERP_CAP_STENCIL_TEST] &&
+           memcmp(&a->stencil.face[0], &a->stencil.face[1], sizeof a->stencil.face[0]) != 0;
 }
 
 bool interp_stencil_draw(interp *ip)
 {
     const gl_attribs *a = &ip->st.a;
-    ip->stencil.write = ip->stencil.only = false;
+    ip->stencil.write = ip->stencil.only = ip->stencil.two_side = false;
+    ip->stencil.tri_faces = 3;
     ip->stencil.clip = 0;
     if (!a->caps[INTERP_CAP_STENCIL_TEST] || !ip->scene)
         return true;
     make_box(ip);
+    const struct gl_stencil_face *sf = &a->stencil.face[deciding_face(ip)];
+    stencil_outcome o = outcome(ip, sf);
     int32_t out = ip->stencil.cleared;
     int32_t in = ip->stencil.written ? ip->stencil.value : out;
-    uint32_t m = a->stencil.value_mask & STENCIL_MAX, ref = (uint32_t)a->stencil.ref & m;
-    bool pass_in = test(a->stencil.func, ref, (uint32_t)in & m);
-    bool pass_out = test(a->stencil.func, ref, (uint32_t)out & m);
+    bool pass_in = o.pass_in, pass_out = o.pass_out;
     if (ip->stencil.mixed) {
         interp_note(ip, DIAG_NOTE_STENCIL);
         pass_in = pass_out = true; /* drawn where GL may not */
@@ -308,10 +437,10 @@ bool interp_stencil_draw(interp *ip)
         ip->stencil.clip = 1;
     else if (!pass_in && pass_out)
         ip->stencil.clip = 2;
-    if ((a->stencil.fail != GL_KEEP && !(pass_in && pass_out)) || a->stencil.zfail != GL_KEEP)
+    if (o.fail_ops)
         interp_note(ip, DIAG_NOTE_STENCIL); /* writes where the tests fail */
-    if (interp_stencil_writes(ip) && (pass_in || pass_out)) {
-        int32_t v_out = apply(a, a->stencil.zpass, out), v_in = apply(a, a->stencil.zpass, in);
+    if (o.writes && (pass_in || pass_out)) {
+        int32_t v_out = apply(sf, sf->zpass, out), v_in = apply(sf, sf->zpass, in);
         bool changes_in = pass_in && ip->stencil.written && v_in != in;
         bool changes_out = pass_out && v_out != out;
         if (changes_out) {

@@ -66,7 +66,7 @@ void interp_copyteximage1d(interp *ip, const rgl_cmd *cmd)
         return;
     if (!copy_ok(ip, w, 1, level, border))
         return;
-    interp_unrec_pixel_uses(ip, false, true, false);
+    interp_unrec_pixel_uses(ip, false, !id, false);
     if (!id)
         copy_unread(ip, "glCopyTexImage1D", w, 1);
     interp_tex_image(ip, arg_enum(cmd, 0), (int32_t)level, (int32_t)cmd->arg[2].v.i, w, 1,
@@ -82,7 +82,7 @@ void interp_copyteximage2d(interp *ip, const rgl_cmd *cmd)
         return;
     if (!copy_ok(ip, w, h, level, border))
         return;
-    interp_unrec_pixel_uses(ip, false, true, false);
+    interp_unrec_pixel_uses(ip, false, !id, false);
     if (!id)
         copy_unread(ip, "glCopyTexImage2D", w, h);
     interp_tex_image(ip, arg_enum(cmd, 0), (int32_t)level, (int32_t)cmd->arg[2].v.i, w, h,
@@ -97,7 +97,7 @@ void interp_copytexsubimage1d(interp *ip, const rgl_cmd *cmd)
         return;
     if (!copy_ok(ip, w, 1, level, 0))
         return;
-    interp_unrec_pixel_uses(ip, false, true, false);
+    interp_unrec_pixel_uses(ip, false, !id, false);
     if (!id)
         copy_unread(ip, "glCopyTexSubImage1D", w, 1);
     interp_tex_subimage(ip, 1, arg_enum(cmd, 0), level, cmd->arg[2].v.i, 0, w, 1, GL_RGBA,
@@ -112,7 +112,7 @@ void interp_copytexsubimage2d(interp *ip, const rgl_cmd *cmd)
         return;
     if (!copy_ok(ip, w, h, level, 0))
         return;
-    interp_unrec_pixel_uses(ip, false, true, false);
+    interp_unrec_pixel_uses(ip, false, !id, false);
     if (!id)
         copy_unread(ip, "glCopyTexSubImage2D", w, h);
     interp_tex_subimage(ip, 2, arg_enum(cmd, 0), level, cmd->arg[2].v.i, cmd->arg[3].v.i, w, h,
@@ -145,7 +145,7 @@ void interp_copytexsubimage3d(interp *ip, const rgl_cmd *cmd)
     if (interp_reject_in_begin(ip) || !target3d_ok(ip, arg_enum(cmd, 0), false) ||
         !size3d_ok(ip, w, h, 1, cmd->arg[1].v.i))
         return;
-    interp_unrec_pixel_uses(ip, false, true, false);
+    interp_unrec_pixel_uses(ip, false, !id, false);
     if (!id)
         copy_unread(ip, "glCopyTexSubImage3D", w, h);
     interp_tex_subimage3d(ip, cmd->arg[1].v.i, cmd->arg[2].v.i, cmd->arg[3].v.i,

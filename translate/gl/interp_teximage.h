@@ -14,12 +14,13 @@
 typedef struct tex_image {
     unsigned refs;
     int width, height;
-    uint64_t hash; /* of width, height and texels */
+    /* These texels as made or last changed: no two versions of any image
+     * share one (0: a temporary image, never looked up by it). Scene
+     * textures made from it are found by it (interp_texture.c), without
+     * a hash of the texels, which a change of a few would have to redo. */
+    uint64_t serial;
     uint8_t rgba[]; /* bottom row first */
 } tex_image;
-
-/* The hash kept in img->hash (interp_texture.c). */
-uint64_t interp_tex_image_hash(const tex_image *img);
 
 /* Writes img mirrored once along s (ms) and t (mt), the mirror image first,
  * to out: (ms ? 2 : 1) x (mt ? 2 : 1) times the image (mirror clamp). */

@@ -67,6 +67,6 @@ tex_image *interp_tex_slice(const tex_image *src, int depth, double r, bool line
     const uint8_t *a = src->rgba + (size_t)s0 * n, *b = src->rgba + (size_t)s1 * n;
     for (size_t i = 0; i < n; i++)
         img->rgba[i] = (uint8_t)(a[i] + f * ((float)b[i] - (float)a[i]) + 0.5f);
-    img->hash = interp_tex_image_hash(img);
+    img->serial = 0;
     return img;
 }

@@ -16,6 +16,7 @@
  * records the call (record/entry_custom.c, pixels_put), so glPixelStorei
  * is kept as state but never applied again here.
  */
+#include <stdatomic.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -68,15 +69,19 @@ struct interp_textures {
     /* object 0 of GL_TEXTURE_1D, GL_TEXTURE_2D, rectangle, 3D, GL_TEXTURE_CUBE_MAP */
     tex_obj zero[5];
     int32_t unpack[8];       /* glPixelStorei values, by pname - GL_UNPACK_SWAP_BYTES */
-    /* The last draw's scene texture, to skip rebuilding it per primitive:
-     * one per drawn unit (a draw's first and second). */
-    struct tex_cache {
-        const tex_image *img;
-        scene_texture st;
-        int32_t index;
-        const scene *sc;
-        size_t ntex;
-    } cache[2];
+    /* The scene textures made since the scene last dropped any (a clear,
+     * a new frame), by what each was made from: a draw of the same image
+     * sampled alike takes its scene texture again without copying texels
+     * or charging the frame budget (docs/mapping.md "Bounds"). */
+    struct tex_made {
+        uint64_t serial; /* the image's (tex_image.serial) */
+        uint64_t how;    /* MADE_* and what else the texels depend on */
+        double r;        /* a 3D texture's slice: its coordinate */
+        int32_t index;   /* in the scene's textures */
+    } *made;
+    size_t nmade, cap_made;
+    const scene *made_sc;
+    uint32_t made_gen; /* the scene's generation they belong to */
     /* The range of r over the primitive being drawn, per unit: a 3D
      * texture is drawn as a slice where it is constant. */
     double r_min[INTERP_TEX_UNITS], r_max[INTERP_TEX_UNITS];
@@ -172,7 +177,6 @@ static interp_textures *textures(interp *ip)
     t->zero[4].target = GL_TEXTURE_CUBE_MAP;
     r_reset(t);
     t->unpack[GL_UNPACK_ALIGNMENT - GL_UNPACK_SWAP_BYTES] = 4;
-    t->cache[0].index = t->cache[1].index = -1;
     ip->tex = t;
     return t;
 }
@@ -486,20 +490,11 @@ static void convert_pixels(uint8_t *dst, const uint8_t *src, size_t n, GLenum fo
     }
 }
 
-static uint64_t image_hash(const tex_image *img)
-{
-    uint64_t h = 0xcbf29ce484222325ull; /* FNV-1a, 64 bits */
-    uint32_t dims[2] = {(uint32_t)img->width, (uint32_t)img->height};
-    const uint8_t *d = (const uint8_t *)dims;
-    for (size_t i = 0; i < sizeof dims; i++)
-        h = (h ^ d[i]) * 0x100000001b3ull;
-    size_t n = (size_t)img->width * (size_t)img->height * 4;
-    for (size_t i = 0; i < n; i++)
-        h = (h ^ img->rgba[i]) * 0x100000001b3ull;
-    return h;
-}
+/* Process-wide: interpreters share images (interp_copy_state). */
+static atomic_uint_least64_t image_serials = 1;
 
-uint64_t interp_tex_image_hash(const tex_image *img) { return image_hash(img); }
+/* img's texels are final (made or changed): a new serial. */
+static void image_seal(tex_image *img) { img->serial = atomic_fetch_add(&image_serials, 1); }
 
 /* The texel bytes of pixel resource `id` holding exactly `need` bytes, or
  * NULL after a diagnostic; *lost is set to id when the trace's damage is
@@ -601,7 +596,7 @@ static void generate_levels(interp *ip, tex_obj *o, int b)
                     img->rgba[((size_t)y * (size_t)nw + (size_t)x) * 4 + (size_t)c] =
                         (uint8_t)((sum + (unsigned)(fx * fy) / 2) / (unsigned)(fx * fy));
                 }
-        img->hash = image_hash(img);
+        image_seal(img);
         tex_image **slot = level_slot(o, k);
         image_release(*slot);
         *slot = img;
@@ -716,7 +711,7 @@ static void tex_image_set(interp *ip, GLenum target, int32_t level, int32_t inte
                        px + ((size_t)(y + (two ? border : 0)) * (size_t)w +
                              (size_t)border) * ps,
                        (size_t)iw, format, type, base);
-    img->hash = image_hash(img);
+    image_seal(img);
     *slot = img;
     /* A rectangle has no mipmaps (ARB_texture_rectangle), whatever
      * GL_GENERATE_MIPMAP says. */
@@ -824,7 +819,7 @@ void interp_tex_subimage(interp *ip, int dims, GLenum target, int64_t level, int
     for (int64_t y = 0; y < h; y++)
         convert_pixels(img->rgba + ((size_t)(y0 + y) * (size_t)img->width + (size_t)x0) * 4,
                        px + (size_t)y * (size_t)w * ps, (size_t)w, format, type, o->base_format);
-    img->hash = image_hash(img);
+    image_seal(img);
     if (o->generate_mipmap && level == o->base_level && face < 0 &&
         o->target != GL_TEXTURE_RECTANGLE)
         generate_levels(ip, o, (int)level);
@@ -894,7 +889,7 @@ void interp_tex_image3d(interp *ip, int32_t level, int32_t internal, int64_t w, 
                                  (size_t)border) *
                                     ps,
                            (size_t)iw, format, type, base);
-    img->hash = image_hash(img);
+    image_seal(img);
     o->img = img;
     /* GL_GENERATE_MIPMAP: the levels follow (a 3D texture is drawn from
      * its level 0, so only their presence matters). */
@@ -940,7 +935,7 @@ void interp_tex_subimage3d(interp *ip, int64_t level, int64_t x0, int64_t y0, in
                                 (size_t)x0) * 4,
                            px + ((size_t)(z * h + y) * (size_t)w) * ps, (size_t)w, format, type,
                            o->base_format);
-    img->hash = image_hash(img);
+    image_seal(img);
 }
 
 /* gluBuild2DMipmaps: level 0 is the image scaled to powers of two no
@@ -1010,7 +1005,7 @@ void interp_build2dmipmaps(interp *ip, const rgl_cmd *cmd)
                 for (int c = 0; c < 4; c++)
                     d[c] = (uint8_t)(wsum > 0 ? acc[c] / wsum + 0.5 : 0);
             }
-        img->hash = image_hash(img);
+        image_seal(img);
         image_release(src);
         o->img = img;
         o->lw[0] = img->width;
@@ -1082,7 +1077,7 @@ static void tex_depth_mode(interp *ip, tex_obj *o, GLenum mode)
             t[0] = t[1] = t[2] = alpha ? 255 : d;
             t[3] = mode == GL_LUMINANCE ? 255 : d;
         }
-        img->hash = image_hash(img);
+        image_seal(img);
     }
 }
 
@@ -1360,8 +1355,9 @@ int interp_textures_copy(interp *dst, const interp *src)
         tr_free(t);
         return -1;
     }
-    memset(t->cache, 0, sizeof t->cache);
-    t->cache[0].index = t->cache[1].index = -1;
+    t->made = NULL;
+    t->nmade = t->cap_made = 0;
+    t->made_sc = NULL;
     t->nrm_ok = false;
     if (s->n && tr_grow((void **)&t->objs, &t->cap, s->n, sizeof *t->objs) != 0) {
         namemap_finish(&t->names);
@@ -1389,8 +1385,68 @@ void interp_textures_free(interp *ip)
         obj_release(&t->zero[k]);
     namemap_finish(&t->names);
     tr_free(t->objs);
+    tr_free(t->made);
     tr_free(t);
     ip->tex = NULL;
+}
+
+/* ---- Scene textures, made once -------------------------------------------------------- */
+
+/* tex_made.how: the image as it is, mirrored (mirror clamp) along s or t,
+ * a cube map's face, a 3D texture's slice (linear between two, the wrap
+ * mode of r above bit 32), a depth texture compared with r (the compare
+ * function above bit 16, the depth texture mode above bit 32). */
+enum {
+    MADE_PLAIN = 1,
+    MADE_MIRROR_S = 2,
+    MADE_MIRROR_T = 4,
+    MADE_FACE = 8,
+    MADE_SLICE = 16,
+    MADE_SLICE_LINEAR = 32,
+    MADE_COMPARE = 64
+};
+
+void interp_texture_begin_frame(interp *ip)
+{
+    if (ip->tex) {
+        ip->tex->nmade = 0;
+        ip->tex->made_sc = NULL;
+    }
+}
+
+/* The scene texture made from image `serial` by `how` (at r) and sampled
+ * as st (its texels aside), or -1. A scene that dropped textures since
+ * forgets them all. */
+static int32_t made_find(interp *ip, uint64_t serial, uint64_t how, double r,
+                         const scene_texture *st)
+{
+    interp_textures *t = ip->tex;
+    const scene *s = ip->scene;
+    if (t->made_sc != s || t->made_gen != s->generation) {
+        t->nmade = 0;
+        t->made_sc = s;
+        t->made_gen = s->generation;
+        return -1;
+    }
+    for (size_t i = t->nmade; i-- > 0;) {
+        const struct tex_made *m = &t->made[i];
+        if (m->serial == serial && m->how == how && m->r == r && m->index >= 0 &&
+            (size_t)m->index < s->ntextures &&
+            scene_texture_sampling_same(&s->textures[m->index], st))
+            return m->index;
+    }
+    return -1;
+}
+
+/* Remembers that scene texture index was made so (made_find). Without
+ * memory, the next draw makes it again, and no more. */
+static void made_add(interp *ip, uint64_t serial, uint64_t how, double r, int32_t index)
+{
+    interp_textures *t = ip->tex;
+    if (index < 0 || !serial || t->made_sc != ip->scene ||
+        tr_grow((void **)&t->made, &t->cap_made, t->nmade + 1, sizeof *t->made) != 0)
+        return;
+    t->made[t->nmade++] = (struct tex_made){serial, how, r, index};
 }
 
 /* ---- Drawing -------------------------------------------------------------------------- */
@@ -1513,13 +1569,17 @@ static int32_t cube_for_draw(interp *ip, tex_obj *o, const interp_tex_unit *u, i
         memset(&st, 0, sizeof st);
         st.width = im->width;
         st.height = im->height;
-        st.hash = im->hash;
         st.linear = o->mag_filter == GL_LINEAR;
         st.env_mode = env;
         memcpy(st.env_color, u->texture->env_color, sizeof st.env_color);
         st.colour_is_texel = env == GL_REPLACE && o->base_format != GL_ALPHA;
         st.cube = f == 0;
         st.mip_next = next;
+        int32_t have = made_find(ip, im->serial, MADE_FACE, 0, &st);
+        if (have >= 0) {
+            next = have;
+            continue;
+        }
         size_t n = (size_t)im->width * (size_t)im->height * 4;
         if (!interp_budget_texels(ip, n))
             return -1;
@@ -1532,6 +1592,7 @@ static int32_t cube_for_draw(interp *ip, tex_obj *o, const interp_tex_unit *u, i
         next = scene_add_texture(ip->scene, &st);
         if (next < 0)
             return -1;
+        made_add(ip, im->serial, MADE_FACE, 0, next);
     }
     return next;
 }
@@ -1560,8 +1621,13 @@ static int32_t mip_chain(interp *ip, tex_obj *o, scene_texture *st, bool ms, boo
         scene_texture lt = *st;
         lt.width = im->width * (ms ? 2 : 1);
         lt.height = im->height * (mt ? 2 : 1);
-        lt.hash = im->hash ^ (ms ? 0x9e3779b97f4a7c15ull : 0) ^ (mt ? 0xc2b2ae3d27d4eb4full : 0);
         lt.mip_next = next;
+        uint64_t how = MADE_PLAIN | (ms ? MADE_MIRROR_S : 0) | (mt ? MADE_MIRROR_T : 0);
+        int32_t have = made_find(ip, im->serial, how, 0, &lt);
+        if (have >= 0) {
+            next = have;
+            continue;
+        }
         size_t n = (size_t)lt.width * (size_t)lt.height * 4;
         if (!interp_budget_texels(ip, n))
             return -1;
@@ -1577,14 +1643,15 @@ static int32_t mip_chain(interp *ip, tex_obj *o, scene_texture *st, bool ms, boo
         next = scene_add_texture(ip->scene, &lt);
         if (next < 0)
             return -1;
+        made_add(ip, im->serial, how, 0, next);
     }
     return next;
 }
 
-/* The 2D image a 3D texture shows on a primitive over which r is
- * constant (interp_tex_slice); NULL, with a note, when r varies (or is
- * unknown: a GLU or GLUT solid). The caller frees it. */
-static tex_image *tex3d_slice(interp *ip, const tex_obj *o, int k)
+/* The r at which a 3D texture shows the 2D image of one slice
+ * (interp_tex_slice) on the primitive drawn: r constant over it. False,
+ * with a note, when r varies (or is unknown: a GLU or GLUT solid). */
+static bool slice_at(interp *ip, const tex_obj *o, int k, double *r)
 {
     interp_textures *t = ip->tex;
     double lo = t->r_min[k], hi = t->r_max[k];
@@ -1593,15 +1660,7 @@ static tex_image *tex3d_slice(interp *ip, const tex_obj *o, int k)
                     "3D texture %u drawn untextured: its r coordinate varies over a primitive",
                     o->name);
         interp_note(ip, DIAG_NOTE_TEX_3D);
-        return NULL;
-    }
-    size_t n = (size_t)o->img->width * (size_t)(o->img->height / o->depth3) * 4;
-    if (!interp_budget_texels(ip, n))
-        return NULL;
-    tex_image *img = interp_tex_slice(o->img, o->depth3, lo, o->mag_filter == GL_LINEAR, o->wrap_r);
-    if (!img) {
-        ip->scene->failed = true;
-        return NULL;
+        return false;
     }
     /* GL_LINEAR's blend of two slices is rounded to 8 bits before it is
      * filtered across s and t: a level off where GL rounds once. */
@@ -1609,7 +1668,8 @@ static tex_image *tex3d_slice(interp *ip, const tex_obj *o, int k)
         interp_note(ip, DIAG_NOTE_TEX_3D);
     else
         interp_note_held(ip, DIAG_NOTE_TEX_3D, "GL_NEAREST picks the one slice OpenGL samples");
-    return img;
+    *r = lo;
+    return true;
 }
 
 /* GL 2.1 3.8.14: with GL_COMPARE_R_TO_TEXTURE a depth texture's texel is
@@ -1618,16 +1678,10 @@ static tex_image *tex3d_slice(interp *ip, const tex_obj *o, int k)
  * GL_DEPTH_TEXTURE_MODE; under GL_LINEAR Mesa filters the four results.
  * Where r is constant over the primitive that is an image of results,
  * which POV-Ray's filter samples as GL does; the depth comes from the
- * 8-bit texels kept. NULL, with a note, where r varies. */
-static tex_image *tex_compared(interp *ip, const tex_obj *o, int k)
+ * 8-bit texels of src kept, compared with r (the caller's: constant).
+ * NULL over the budget or without memory. */
+static tex_image *tex_compared(interp *ip, const tex_obj *o, const tex_image *src, double r)
 {
-    interp_textures *t = ip->tex;
-    double lo = t->r_min[k], hi = t->r_max[k];
-    if (!(lo <= hi) || hi - lo > 1e-6 || !isfinite(lo)) {
-        interp_note(ip, DIAG_NOTE_TEX_COMPARE);
-        return NULL;
-    }
-    const tex_image *src = o->img;
     size_t n = (size_t)src->width * (size_t)src->height;
     if (!interp_budget_texels(ip, n * 4))
         return NULL;
@@ -1639,7 +1693,7 @@ static tex_image *tex_compared(interp *ip, const tex_obj *o, int k)
     img->refs = 1;
     img->width = src->width;
     img->height = src->height;
-    double r = lo < 0 ? 0 : lo > 1 ? 1 : lo;
+    r = r < 0 ? 0 : r > 1 ? 1 : r;
     bool alpha = o->depth_mode == GL_ALPHA;
     for (size_t i = 0; i < n; i++) {
         const uint8_t *s = src->rgba + i * 4;
@@ -1649,7 +1703,7 @@ static tex_image *tex_compared(interp *ip, const tex_obj *o, int k)
         q[0] = q[1] = q[2] = alpha ? 255 : v;
         q[3] = o->depth_mode == GL_LUMINANCE ? 255 : v;
     }
-    img->hash = interp_tex_image_hash(img);
+    img->serial = 0; /* temporary: found by its source (made_find) */
     return img;
 }
 
@@ -1677,18 +1731,26 @@ int32_t interp_texture_for_unit(interp *ip, int k)
         return cube_for_draw(ip, o, &u, k);
     if (!o || !complete(o))
         return -1;
-    /* A 3D texture: the slice its r picks, when r is constant. */
-    tex_image *slice = NULL;
-    if (o->depth3 && !(slice = tex3d_slice(ip, o, k)))
+    /* A 3D texture: the slice its r picks, when r is constant, made
+     * below unless the scene has it. */
+    double r = 0;
+    if (o->depth3 && !slice_at(ip, o, k, &r))
         return -1;
-    if (!slice && o->depth && o->compare_mode == GL_COMPARE_R_TO_TEXTURE) {
-        if (mipmap_filter(o->min_filter))
-            interp_note(ip, DIAG_NOTE_TEX_COMPARE); /* level by level: not drawn */
-        else
-            slice = tex_compared(ip, o, k);
+    const tex_image *im = o->depth3 ? o->img : *level_slot(o, o->base_level); /* complete: not NULL */
+    int iw = im->width, ih = o->depth3 ? im->height / o->depth3 : im->height;
+    /* A depth texture compared with r: the image of results where r is
+     * constant (tex_compared), made below unless the scene has it; else,
+     * noted, its depth values. */
+    bool compare = !o->depth3 && o->depth && o->compare_mode == GL_COMPARE_R_TO_TEXTURE;
+    if (compare) {
+        double lo = ip->tex->r_min[k], hi = ip->tex->r_max[k];
+        if (mipmap_filter(o->min_filter) || !(lo <= hi) || hi - lo > 1e-6 || !isfinite(lo)) {
+            interp_note(ip, DIAG_NOTE_TEX_COMPARE); /* level by level, or r varies */
+            compare = false;
+        } else {
+            r = lo;
+        }
     }
-    const tex_image *im = slice ? slice : *level_slot(o, o->base_level); /* complete: not NULL */
-    int32_t idx = -1;
     GLenum env = u.texture->env_mode;
     if (env == GL_COMBINE) { /* as the fixed mode it equals, if any */
         GLenum m = interp_combine_mode(u.texture, k, ip->draw_unit[0] == k);
@@ -1725,7 +1787,7 @@ int32_t interp_texture_for_unit(interp *ip, int k)
         interp_note(ip, DIAG_NOTE_TEX_CLAMP_BORDER);
     const gl_attribs *ga = &ip->st.a;
     GLenum cmm = ga->lighting.color_material_mode;
-    if (env == GL_MODULATE && ga->caps[INTERP_CAP_LIGHTING] && ga->caps[INTERP_CAP_COLOR_MATERIAL] &&
+    if (env == GL_MODULATE && ga->caps[INTERP_CAP_LIGHTING] && interp_cm_on(ip) &&
         (cmm == GL_DIFFUSE || cmm == GL_AMBIENT_AND_DIFFUSE) &&
         (ip->prim_blend != SCENE_BLEND_OPAQUE || mipmap_filter(o->min_filter) ||
          o->target == GL_TEXTURE_CUBE_MAP || ga->lighting.two_side || ip->draw_unit[1] >= 0))
@@ -1751,9 +1813,8 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     }
     scene_texture st;
     memset(&st, 0, sizeof st);
-    st.width = im->width * (ms ? 2 : 1);
-    st.height = im->height * (mt ? 2 : 1);
-    st.hash = im->hash ^ (ms ? 0x9e3779b97f4a7c15ull : 0) ^ (mt ? 0xc2b2ae3d27d4eb4full : 0);
+    st.width = iw * (ms ? 2 : 1);
+    st.height = ih * (mt ? 2 : 1);
     st.mip_next = -1;
     st.repeat_s = !clamps(o->wrap_s) && !ms;
     st.repeat_t = o->target == GL_TEXTURE_1D || (!clamps(o->wrap_t) && !mt);
@@ -1797,19 +1858,30 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     st.colour_is_texel = (env == GL_REPLACE && b != GL_ALPHA) ||
                          (env == GL_DECAL && b != GL_RGBA && b != GL_ALPHA);
 
-    if (mipmap_filter(o->min_filter) && !slice) { /* the levels, each its own scene texture */
-        idx = mip_chain(ip, o, &st, ms, mt, u.texture->lod_bias);
-        goto out;
+    if (mipmap_filter(o->min_filter) && !o->depth3) /* the levels, each its own scene texture */
+        return mip_chain(ip, o, &st, ms, mt, u.texture->lod_bias);
+    uint64_t how = (o->depth3    ? MADE_SLICE | (o->mag_filter == GL_LINEAR ? MADE_SLICE_LINEAR : 0) |
+                                    (uint64_t)o->wrap_r << 32
+                    : compare ? MADE_COMPARE | (uint64_t)o->compare_func << 16 |
+                                    (uint64_t)o->depth_mode << 32
+                              : MADE_PLAIN) |
+                   (ms ? MADE_MIRROR_S : 0) | (mt ? MADE_MIRROR_T : 0);
+    int32_t idx = made_find(ip, im->serial, how, r, &st);
+    if (idx >= 0)
+        return idx;
+    tex_image *slice = NULL;
+    if (o->depth3) {
+        if (!interp_budget_texels(ip, (uint64_t)iw * (uint64_t)ih * 4))
+            return -1;
+        slice = interp_tex_slice(o->img, o->depth3, r, o->mag_filter == GL_LINEAR, o->wrap_r);
+        if (!slice) {
+            ip->scene->failed = true;
+            return -1;
+        }
+    } else if (compare && !(slice = tex_compared(ip, o, im, r))) {
+        return -1;
     }
-    struct tex_cache *tc = &ip->tex->cache[ip->draw_unit[1] == k];
-    if (!slice && tc->img == im && tc->sc == ip->scene &&
-        tc->index >= 0 && (size_t)tc->index < ip->scene->ntextures &&
-        tc->ntex <= ip->scene->ntextures) {
-        const scene_texture *have = &ip->scene->textures[tc->index];
-        st.rgba = have->rgba;
-        if (memcmp(&st, have, sizeof st) == 0 && memcmp(&st, &tc->st, sizeof st) == 0)
-            return tc->index;
-    }
+    const tex_image *src = slice ? slice : im;
     size_t n = (size_t)st.width * (size_t)st.height * 4;
     if (!interp_budget_texels(ip, n))
         goto out;
@@ -1819,17 +1891,11 @@ int32_t interp_texture_for_unit(interp *ip, int k)
         goto out;
     }
     if (ms || mt)
-        interp_tex_mirror_fill(st.rgba, im, ms, mt);
+        interp_tex_mirror_fill(st.rgba, src, ms, mt);
     else
-        memcpy(st.rgba, im->rgba, n);
+        memcpy(st.rgba, src->rgba, n);
     idx = scene_add_texture(ip->scene, &st);
-    if (idx >= 0 && !slice) {
-        tc->img = im;
-        tc->sc = ip->scene;
-        tc->index = idx;
-        tc->ntex = ip->scene->ntextures;
-        tc->st = ip->scene->textures[idx];
-    }
+    made_add(ip, im->serial, how, r, idx);
 out:
     tr_free(slice);
     return idx;

@@ -95,7 +95,7 @@ bool interp_vmat_end(interp *ip, uint32_t n, gl_material saved[2])
         return true;
     bool two = a->lighting.two_side;
     uint8_t cm = 0;
-    if (a->caps[INTERP_CAP_COLOR_MATERIAL])
+    if (interp_cm_on(ip))
         cm = interp_cm_bits(a->lighting.color_material_mode);
     uint8_t vary[2] = {0, 0};
     bool shininess = false;

@@ -145,7 +145,6 @@ typedef struct zitem {
     double plane[4];    /* planar: n . X = d over camera coordinates X */
     double tmin, tmax;  /* the ray parameter over its corners */
     float lo[4], hi[4]; /* its colours' range, when keyed (nothing else varies them) */
-    float ends[2][3];   /* a line's ends in eye space */
     uint32_t run;
     uint8_t pool, flags, np;
     bool planar, keyed, whole; /* whole: covers the image, at any depth */
@@ -373,7 +372,6 @@ static void add_line(zctx *c, const scene_line *l, uint32_t run, uint8_t flags)
     zitem *it = item_new(c, run, ZP_LINES, flags);
     if (!it)
         return;
-    memcpy(it->ends, l->p, sizeof it->ends);
     double p[4][3];
     for (int k = 0; k < 3; k++) {
         p[0][k] = l->p[0][k] + l->half[0][k];
@@ -382,10 +380,11 @@ static void add_line(zctx *c, const scene_line *l, uint32_t run, uint8_t flags)
         p[3][k] = l->p[0][k] - l->half[0][k];
     }
     item_corners(c, it, (const double(*)[3])p, 4, true);
-    if (l->color[0][3] >= 1 && l->color[1][3] >= 1) {
-        key_colour(it, l->color[0], true);
-        key_colour(it, l->color[1], false);
-    }
+    bool opaque = true;
+    for (int k = 0; k < 4; k++)
+        opaque = opaque && l->color[k][3] >= 1;
+    for (int k = 0; k < 4 && opaque; k++)
+        key_colour(it, l->color[k], k == 0);
 }
 
 static void add_point(zctx *c, const scene_point *pt, uint32_t run, uint8_t flags)
@@ -662,7 +661,7 @@ static int overlap(const zctx *c, const zitem *a, const zitem *b, double (*out)[
     double area = poly_area((const double(*)[2])buf[cur], n);
     if (!(area > 1e-9))
         return 0;
-    if (area < 1 && !holds_centre(c, (const double(*)[2])buf[cur], n))
+    if (!holds_centre(c, (const double(*)[2])buf[cur], n))
         return 0;
     memcpy(out, buf[cur], (size_t)n * sizeof *out);
     return n;
@@ -696,22 +695,10 @@ static void t_range(const zctx *c, const zitem *it, const double (*poly)[2], int
 static double tol(double t) { return 2e-6 * fabs(t) + 1e-12; }
 
 /* Whether b, drawn after a, is nearer than a wherever both cover a pixel
- * (or they cannot differ there). unordered: which came first is unknown. */
-/* Whether lines a and b share an end: segments of one strip or loop, which
- * OpenGL's rasterisation draws without a pixel in common at the joint
- * (each segment's last pixel is the next one's first); how their bands
- * meet there is the lines' own approximation, not draw order. */
-static bool lines_joined(const zitem *a, const zitem *b)
-{
-    if (a->pool != ZP_LINES || b->pool != ZP_LINES)
-        return false;
-    for (int i = 0; i < 2; i++)
-        for (int j = 0; j < 2; j++)
-            if (memcmp(a->ends[i], b->ends[j], sizeof a->ends[i]) == 0)
-                return true;
-    return false;
-}
-
+ * centre (or they cannot differ there). unordered: which came first is
+ * unknown. Lines and points are the rectangles of the pixels GL lights
+ * (interp_lines.c), their edges between pixel centres: they meet where GL
+ * lights a pixel twice, and nowhere else. */
 static bool pair_ok(const zctx *c, const zitem *a, const zitem *b, bool unordered)
 {
     if (!a->whole && !b->whole &&
@@ -719,8 +706,6 @@ static bool pair_ok(const zctx *c, const zitem *a, const zitem *b, bool unordere
          b->box[3] <= a->box[1]))
         return true;
     if (same_colour(a, b))
-        return true;
-    if (lines_joined(a, b))
         return true;
     if (a->whole || b->whole)
         return false;

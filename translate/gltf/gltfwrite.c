@@ -1288,6 +1288,10 @@ static void write_extras(writer *w, outbuf *j, const gltf_frame_info *info)
         num(j, f[2]);
         outbuf_puts(j, ",\"color\":");
         nums(j, fc, 4);
+        if (s->fog.distance != SCENE_FOG_ABS_Z) { /* GL_FOG_DISTANCE_MODE_NV */
+            outbuf_puts(j, ",\"distance\":");
+            jstr(j, s->fog.distance == SCENE_FOG_RADIAL ? "radial" : "eyePlane");
+        }
         outbuf_putc(j, '}');
         note(w, "fog: glTF has none (kept in extras.fog)");
     }

@@ -18,7 +18,7 @@ void povfog_declare(const povlight *pl, outbuf *ob, const char *name, const mat4
                     const scene_look *look)
 {
     if (!look->fog_fixed) {
-        povlight_fog_declare(pl, ob, name, to_eye);
+        povlight_fog_declare(pl, ob, name, to_eye, pl->s->fog.distance);
         return;
     }
     const scene_fog *fg = &pl->s->fog;

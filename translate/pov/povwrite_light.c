@@ -611,61 +611,89 @@ void povlight_front_normal(const povlight *pl, const mat4 *to_eye, const mat4 *t
 
 /* ---- Fog -------------------------------------------------------------------------------- */
 
-/* GL fogs a fragment by f of its eye-plane distance c = |z_eye| (GL 1.x
- * 3.10; Mesa uses |z_eye|): LINEAR (end - c) / (end - start), EXP
- * e^(-density c), EXP2 e^(-(density c)^2), clamped to [0, 1], and shows
- * f C + (1 - f) fog colour. The layer is the fog colour with transmit f,
- * over the surface's own texture: POV-Ray shows (1 - f) fog + f C, and
- * leaves the background alone as GL does. The pattern is evaluated in the
- * mesh's object space, so z_eye is row 2 of its matrix. */
-void povlight_fog_declare(const povlight *pl, outbuf *ob, const char *name, const mat4 *to_eye)
+/* GL fogs a fragment by f of its eye distance c (GL 1.x 3.10; Mesa takes
+ * |z_eye| unless GL_FOG_DISTANCE_MODE_NV says z_eye or the radial
+ * distance): LINEAR (end - c) / (end - start) (fog_span), EXP e^(-density c), EXP2
+ * e^(-(density c)^2), clamped to [0, 1], and shows f C + (1 - f) fog
+ * colour. The layer is the fog colour with transmit f, over the surface's
+ * own texture: POV-Ray shows (1 - f) fog + f C, and leaves the background
+ * alone as GL does. The pattern is evaluated in the mesh's object space,
+ * so the eye coordinates are the rows of its matrix. */
+static void put_eye_row(outbuf *ob, const mat4 *to_eye, int row)
 {
-    const scene_fog *fg = &pl->s->fog;
-    double r[4] = {0, 0, 1, 0};
+    double r[4] = {0, 0, 0, 0};
+    r[row] = 1;
     if (to_eye)
         for (int k = 0; k < 4; k++)
-            r[k] = to_eye->m[k * 4 + 2];
-    outbuf_puts(ob, "#declare ");
-    outbuf_puts(ob, name);
-    outbuf_puts(ob, "=texture{pigment{function{min(1,max(0,");
-    switch (fg->mode) {
-    case GL_LINEAR: {
-        double span = (double)fg->end - fg->start;
-        if (span == 0)
-            span = 1e-30;
-        put_num(ob, fg->end / span);
-        outbuf_puts(ob, "-abs(");
-        break;
-    }
-    case GL_EXP2:
-        outbuf_puts(ob, "exp(-pow(abs(");
-        break;
-    default:
-        outbuf_puts(ob, "exp(-abs(");
-        break;
-    }
+            r[k] = to_eye->m[k * 4 + row];
     static const char *axis[3] = {"*x+", "*y+", "*z+"};
     for (int k = 0; k < 3; k++) {
         put_num(ob, r[k]);
         outbuf_puts(ob, axis[k]);
     }
     put_num(ob, r[3]);
-    switch (fg->mode) {
-    case GL_LINEAR: {
-        double span = (double)fg->end - fg->start;
-        if (span == 0)
-            span = 1e-30;
-        outbuf_puts(ob, ")/");
-        put_num(ob, span);
+}
+
+/* GL_LINEAR's end - start, the divisor of (end - c). Where the two are
+ * equal Mesa fogs by clamp(c - end) (its fog scale is 1 then, with the
+ * sign of 1 / (end - start) lost), i.e. (end - c) / -1. */
+static double fog_span(const scene_fog *fg)
+{
+    double span = (double)fg->end - fg->start;
+    return span != 0 ? span : -1;
+}
+
+static void put_fog_distance(outbuf *ob, const mat4 *to_eye, int distance)
+{
+    switch (distance) {
+    case SCENE_FOG_Z:
+        outbuf_putc(ob, '(');
+        put_eye_row(ob, to_eye, 2);
+        outbuf_putc(ob, ')');
+        break;
+    case SCENE_FOG_RADIAL:
+        outbuf_puts(ob, "sqrt(");
+        for (int row = 0; row < 3; row++) {
+            outbuf_puts(ob, row ? "+pow(" : "pow(");
+            put_eye_row(ob, to_eye, row);
+            outbuf_puts(ob, ",2)");
+        }
+        outbuf_putc(ob, ')');
+        break;
+    default:
+        outbuf_puts(ob, "abs(");
+        put_eye_row(ob, to_eye, 2);
+        outbuf_putc(ob, ')');
         break;
     }
+}
+
+void povlight_fog_declare(const povlight *pl, outbuf *ob, const char *name, const mat4 *to_eye,
+                          int distance)
+{
+    const scene_fog *fg = &pl->s->fog;
+    outbuf_puts(ob, "#declare ");
+    outbuf_puts(ob, name);
+    outbuf_puts(ob, "=texture{pigment{function{min(1,max(0,");
+    switch (fg->mode) {
+    case GL_LINEAR:
+        put_num(ob, fg->end / fog_span(fg));
+        outbuf_putc(ob, '-');
+        put_fog_distance(ob, to_eye, distance);
+        outbuf_putc(ob, '/');
+        put_num(ob, fog_span(fg));
+        break;
     case GL_EXP2:
-        outbuf_puts(ob, ")*");
+        outbuf_puts(ob, "exp(-pow(");
+        put_fog_distance(ob, to_eye, distance);
+        outbuf_putc(ob, '*');
         put_num(ob, fg->density);
         outbuf_puts(ob, ",2))");
         break;
     default:
-        outbuf_puts(ob, ")*");
+        outbuf_puts(ob, "exp(-");
+        put_fog_distance(ob, to_eye, distance);
+        outbuf_putc(ob, '*');
         put_num(ob, fg->density);
         outbuf_puts(ob, ")");
         break;

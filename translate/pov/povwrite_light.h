@@ -94,8 +94,10 @@ void povlight_texture_tinted(const povlight *pl, outbuf *ob, const scene_look *l
 
 /* The fog layer of a mesh whose object space goes to eye space by to_eye
  * (NULL: already eye space), declared as `name`:
- * `#declare name=texture{...}` and a newline. */
-void povlight_fog_declare(const povlight *pl, outbuf *ob, const char *name, const mat4 *to_eye);
+ * `#declare name=texture{...}` and a newline; distance: the eye distance
+ * the factor takes (enum scene_fog_distance). */
+void povlight_fog_declare(const povlight *pl, outbuf *ob, const char *name, const mat4 *to_eye,
+                          int distance);
 
 /* Point p (object space) in eye space through to_eye (NULL: eye space):
  * mat4_apply's sums without the w row and the multiply by w = 1 (m * 1 is

@@ -861,7 +861,7 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
             memset(&fp, 0, sizeof fp);
             for (int k = 0; k < 4; k++)
                 fp.m[k * 4 + 2] = look->fog_plane[k];
-            povlight_fog_declare(&w->light, ob, "rgl_fog", &fp);
+            povlight_fog_declare(&w->light, ob, "rgl_fog", &fp, SCENE_FOG_ABS_Z);
         } else if (look->fog) {
             povfog_declare(&w->light, ob, "rgl_fog", to_eye, look);
         }
@@ -1002,7 +1002,14 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     if (look->lit && look->material >= 0 && (size_t)look->material < w->light.s->nmaterials &&
         w->light.s->materials[look->material].two_sided) {
         /* GL_BACK's material on the faces' inner side (see the file
-         * comment); one texture for the whole mesh, in the first colour. */
+         * comment); one texture for the whole mesh, in the first colour.
+         * POV-Ray takes an interior_texture only beside a texture of the
+         * whole mesh: with a texture_list, the front one in that colour. */
+        if (colour_list && !vimage) {
+            outbuf_puts(ob, "texture{");
+            povlight_texture_body(&w->light, ob, look, c0, 0);
+            outbuf_puts(ob, "}\n");
+        }
         if (tx) { /* the back takes the texture too (GL textures both sides) */
             outbuf_puts(ob, "#declare rgl_back=");
             put_surface(w, ob, look, tx, pigment, c0, 1);
@@ -1074,8 +1081,10 @@ static int write_mipmapped(povwriter *w, outbuf *ob, const scene_vertex *verts,
         } else {
             double k = r.lambda * POVMIP_STEPS;
             k = k < -1e6 ? -1e6 : k > 1e6 ? 1e6 : k;
-            single[ns].key = (int32_t)lround(k);
-            single[ns++].i = (uint32_t)i;
+            for (size_t j = i; j < i + run; j++) {
+                single[ns].key = (int32_t)lround(k);
+                single[ns++].i = (uint32_t)j;
+            }
         }
         i += run;
     }

@@ -27,7 +27,9 @@ typedef struct povmip_run {
 /* The length of the run from tris[0] (nt > 0): triangles on one affine
  * map of their (u, v) into eye space (to_eye NULL: the vertices are in eye
  * space), planar; or 1 when tris[0] shares its map with no neighbour,
- * with its lambda at its centroid (not planar). tw, th: the base level's
+ * with its lambda at its centroid (not planar). A run over which lambda
+ * varies by less than 1/POVMIP_STEPS at its corners is not planar
+ * either: its lambda is the middle of theirs. tw, th: the base level's
  * size in texels. */
 #define POVMIP_STEPS 16
 size_t povmip_split(const scene_camera *cam, const mat4 *to_eye, const scene_vertex *verts,

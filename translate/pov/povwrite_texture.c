@@ -298,6 +298,26 @@ size_t povtex_image_pigment(const povtex *pt, size_t i, bool linear,
     return n > 0 && n < POVTEX_PIGMENT_MAX ? (size_t)n : 0;
 }
 
+size_t povtex_declared(outbuf *ob, povtex *pt, size_t i, bool linear,
+                       char name[POVTEX_DECLARED_MAX])
+{
+    int n = snprintf(name, POVTEX_DECLARED_MAX, "rgl_img%zu%s", i, linear ? "i" : "");
+    if (n <= 0 || n >= POVTEX_DECLARED_MAX)
+        return 0;
+    if (!pt->imgs[i].declared[linear]) {
+        char im[POVTEX_PIGMENT_MAX];
+        if (povtex_image_pigment(pt, i, linear, im) == 0)
+            return 0;
+        outbuf_puts(ob, "#declare ");
+        outbuf_puts(ob, name);
+        outbuf_puts(ob, "=pigment{");
+        outbuf_puts(ob, strncmp(im, "uv_mapping ", 11) == 0 ? im + 11 : im);
+        outbuf_puts(ob, "}\n");
+        pt->imgs[i].declared[linear] = true;
+    }
+    return (size_t)n;
+}
+
 int povtex_alpha_pigment(outbuf *ob, povtex *pt, const scene *s, int32_t t, size_t img,
                          const float uvlo[2], const float uvhi[2], unsigned id, char *buf,
                          size_t cap)

@@ -28,6 +28,7 @@ typedef struct povtex_image {
     int32_t lo[2], hi[2]; /* tile range of each clamped axis; 0, 1 otherwise */
     bool keep_alpha;
     uint8_t tint[3]; /* what the texels' colour was multiplied by (/255) */
+    bool declared[2]; /* its pigment (nearest, linear) declared in the frame (povtex_declared) */
 } povtex_image;
 
 typedef struct povtex {
@@ -74,6 +75,16 @@ int povtex_alpha_pigment(outbuf *ob, povtex *pt, const scene *s, int32_t t, size
  * nearest). */
 size_t povtex_image_pigment(const povtex *pt, size_t i, bool linear,
                             char buf[POVTEX_PIGMENT_MAX]);
+
+/* The name of a pigment declared once in the frame's SDL that samples
+ * image i (as povtex_image_pigment, without the uv_mapping): declared into
+ * ob, ahead of its first use, on the first call. POV-Ray reads an
+ * image_map's file again at every occurrence, so a pigment_map of levels
+ * per mesh (povmip_pigment) names them instead. Returns the name's length,
+ * 0 when it does not fit. */
+#define POVTEX_DECLARED_MAX 40
+size_t povtex_declared(outbuf *ob, povtex *pt, size_t i, bool linear,
+                       char name[POVTEX_DECLARED_MAX]);
 
 /* Adds a copy of the frame's image of bitmaps and pixel rectangles
  * (scene.overlay: w x h RGBA, bottom row first; its alpha kept, 0 where

@@ -211,9 +211,9 @@ scene_solid *scene_add_solid(scene *s)
     return add_item(s, (void **)&s->solids, &s->nsolids, &s->cap_solids, sizeof(scene_solid));
 }
 
-static bool texture_same(const scene_texture *a, const scene_texture *b)
+bool scene_texture_sampling_same(const scene_texture *a, const scene_texture *b)
 {
-    return a->hash == b->hash && a->width == b->width && a->height == b->height &&
+    return a->width == b->width && a->height == b->height &&
            a->repeat_s == b->repeat_s && a->repeat_t == b->repeat_t && a->linear == b->linear &&
            a->border_s == b->border_s && a->border_t == b->border_t &&
            a->to_border_s == b->to_border_s && a->to_border_t == b->to_border_t &&
@@ -225,12 +225,33 @@ static bool texture_same(const scene_texture *a, const scene_texture *b)
            a->alpha_af == b->alpha_af && a->alpha_uses_af == b->alpha_uses_af &&
            a->mip_next == b->mip_next && a->mip_filter == b->mip_filter &&
            a->min_lod == b->min_lod && a->max_lod == b->max_lod && a->cube == b->cube &&
-           a->lod_bias == b->lod_bias &&
+           a->lod_bias == b->lod_bias;
+}
+
+static bool texture_same(const scene_texture *a, const scene_texture *b)
+{
+    return a->hash == b->hash && scene_texture_sampling_same(a, b) &&
            memcmp(a->rgba, b->rgba, (size_t)a->width * (size_t)a->height * 4) == 0;
 }
 
-int32_t scene_add_texture(scene *s, const scene_texture *t)
+/* FNV-1a of the size and texels. */
+static uint64_t texels_hash(const scene_texture *t)
 {
+    uint64_t h = 0xcbf29ce484222325ull;
+    uint32_t dims[2] = {(uint32_t)t->width, (uint32_t)t->height};
+    const uint8_t *d = (const uint8_t *)dims;
+    for (size_t i = 0; i < sizeof dims; i++)
+        h = (h ^ d[i]) * 0x100000001b3ull;
+    size_t n = (size_t)t->width * (size_t)t->height * 4;
+    for (size_t i = 0; i < n; i++)
+        h = (h ^ t->rgba[i]) * 0x100000001b3ull;
+    return h;
+}
+
+int32_t scene_add_texture(scene *s, const scene_texture *in)
+{
+    scene_texture tt = *in, *t = &tt;
+    t->hash = texels_hash(t);
     for (size_t i = s->ntextures; i-- > 0;)
         if (texture_same(&s->textures[i], t)) {
             tr_free(t->rgba);

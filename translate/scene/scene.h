@@ -228,11 +228,19 @@ enum {
     SCENE_BLEND_INVISIBLE = 2, /* GL_ZERO, GL_ONE: nothing drawn */
 };
 
-/* glFog, in eye space: GL's fog factor of the eye-plane distance |z|. */
+/* The eye distance c that glFog's factor takes (NV_fog_distance). */
+enum scene_fog_distance {
+    SCENE_FOG_ABS_Z = 0, /* |z_eye|: GL_EYE_PLANE_ABSOLUTE_NV, Mesa's default */
+    SCENE_FOG_Z = 1,     /* z_eye, negative in front of the eye: GL_EYE_PLANE */
+    SCENE_FOG_RADIAL = 2 /* sqrt(x^2 + y^2 + z^2) in eye space: GL_EYE_RADIAL_NV */
+};
+
+/* glFog, in eye space: GL's fog factor of the eye distance (distance). */
 typedef struct scene_fog {
     bool on;
     int mode; /* GL_LINEAR, GL_EXP, GL_EXP2 */
     float density, start, end, color[4];
+    int distance; /* enum scene_fog_distance */
 } scene_fog;
 
 /* An image the scene maps (issue 5): level 0 of a GL texture as the GL
@@ -242,7 +250,7 @@ typedef struct scene_fog {
 typedef struct scene_texture {
     uint8_t *rgba;
     int width, height;
-    uint64_t hash;
+    uint64_t hash;           /* of the size and texels (scene_add_texture) */
     bool repeat_s, repeat_t; /* GL_REPEAT; else clamped */
     bool mirror_s, mirror_t; /* repeated as GL_MIRRORED_REPEAT */
     bool border_s, border_t; /* clamped as GL_CLAMP (the border colour counts
@@ -453,8 +461,11 @@ scene_solid *scene_add_solid(scene *s);
 
 /* The index of a texture with these pixels and sampling (the scene takes
  * rgba, which it frees, or frees at once when it already holds an equal
- * texture), or -1 on failure (rgba freed). */
+ * texture), or -1 on failure (rgba freed). t->hash is the scene's to set. */
 int32_t scene_add_texture(scene *s, const scene_texture *t);
+/* Whether a and b are sampled alike: every field but the texels and their
+ * hash (size, wrap, filters, environment, alpha test, mipmap link). */
+bool scene_texture_sampling_same(const scene_texture *a, const scene_texture *b);
 
 /* Index of a material equal (bytewise) to m in the pool, adding it when
  * new; -1 on failure. Build m zeroed. */
