@@ -2,12 +2,14 @@
 #include "cleanup.h"
 
 #include <errno.h>
+#include <poll.h>
 #include <pthread.h>
 #include <signal.h>
 #include <stdatomic.h>
 #include <stdbool.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/signalfd.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -167,12 +169,17 @@ static void stop_children(void)
     }
 }
 
-/* The stop signal once the waiter has it, else 0. */
-static atomic_int stopping;
-
 static void (*_Atomic on_stop)(int sig);
 
-void cleanup_on_stop(void (*fn)(int sig)) { atomic_store(&on_stop, fn); }
+/* With the lock: a stop under way keeps the words it began with (the
+ * main thread whose waitpid found no child, the stop having reaped them,
+ * ends its loop and clears them). */
+void cleanup_on_stop(void (*fn)(int sig))
+{
+    cleanup_lock();
+    atomic_store(&on_stop, fn);
+    cleanup_unlock();
+}
 
 /* The stop itself, with the lock held for good: nothing registered is made
  * from now on. */
@@ -198,31 +205,51 @@ _Noreturn static void stop(int sig)
     _exit(128 + sig);
 }
 
+/* A stop signal is taken from the pending ones only with the lock held,
+ * here or by the waiter (which polls for it without taking it): whoever
+ * holds the lock sees it pending or a stop under way, never a signal
+ * taken and not yet acted on. */
+void cleanup_check(void)
+{
+    sigset_t set;
+    stop_set(&set);
+    struct timespec zero = {0, 0};
+    cleanup_lock();
+    int sig = sigtimedwait(&set, NULL, &zero);
+    if (sig > 0)
+        stop(sig);
+    cleanup_unlock();
+}
+
+/* The stop signals as a file that is readable while one is pending. */
+static int stop_fd = -1;
+
 static void *waiter(void *arg)
 {
     (void)arg;
-    sigset_t set;
-    stop_set(&set);
-    int sig = 0;
-    while (sigwait(&set, &sig) != 0)
-        ;
-    atomic_store(&stopping, sig);
-    cleanup_lock();
-    stop(sig);
+    for (;;) {
+        struct pollfd p = {.fd = stop_fd, .events = POLLIN};
+        if (poll(&p, 1, -1) <= 0)
+            continue;
+        cleanup_lock();
+        struct signalfd_siginfo si;
+        if (read(stop_fd, &si, sizeof si) == (ssize_t)sizeof si)
+            stop((int)si.ssi_signo);
+        cleanup_unlock();
+    }
+    return NULL;
 }
 
 /* At exit, in the exiting thread. Another thread may be ending the process
  * while the waiter stops it: the main thread whose waitpid found no child
  * because the waiter reaped it returns from main. Exiting then would cut
  * the removal short. The lock waits for a stop under way, which ends the
- * process by its signal; a stop the waiter has taken but not begun is done
- * here; none begins after. */
+ * process by its signal; a stop signal still pending is acted on here;
+ * none is after. */
 static void at_exit(void)
 {
     cleanup_lock(); /* kept */
-    int sig = atomic_load(&stopping);
-    if (sig)
-        stop(sig);
+    cleanup_check();
 }
 
 static void ignore(int sig)
@@ -249,7 +276,8 @@ int cleanup_start(void)
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
     sigaction(SIGHUP, &sa, NULL);
-    if (atexit(at_exit) != 0)
+    stop_fd = signalfd(-1, &set, SFD_CLOEXEC | SFD_NONBLOCK);
+    if (stop_fd < 0 || atexit(at_exit) != 0)
         return -1;
     pthread_t t;
     pthread_attr_t a;

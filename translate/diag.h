@@ -103,7 +103,8 @@
     X(NOTE_COLOR_MATERIAL_BEGIN, "approximated: a glColor between glBegin and glEnd of the first draw after a glEnable(GL_COLOR_MATERIAL) that kept a glMaterial colour (as Mesa keeps it): the primitive's vertices before it take that material, where Mesa takes the colour current then") \
     X(NOTE_STENCIL_TWO_SIDE, "approximated: two-sided stencil (glStencilFuncSeparate, glStencilOpSeparate, glStencilMaskSeparate) testing or writing the front and back faces of one draw differently: the whole draw takes the front faces' stencil state") \
     X(NOTE_DRAW_BUFFER_DEPTH, "approximated: draws into a colour buffer the frame does not show (glDrawBuffer) are left out, but they wrote depth, which hides in GL what is drawn behind them later") \
-    X(NOTE_LIT_OUTLINE, "approximated: lit faces outlined (glPolygonMode GL_LINE or GL_POINT) under two-sided lighting take their material's colour unlit, where OpenGL draws them in their vertices' lit colours")
+    X(NOTE_LIT_OUTLINE, "approximated: lit faces outlined (glPolygonMode GL_LINE or GL_POINT) under two-sided lighting take their material's colour unlit, where OpenGL draws them in their vertices' lit colours") \
+    X(NOTE_QUALITY, "approximated with --quality below 6: POV-Ray computes no image maps or transmitted light there: textured surfaces show their texture's mean colour, translucent ones and translucent bitmap or pixel-rectangle pixels hide what is behind them")
 
 typedef enum diag_kind {
 #define DIAG_ENUM_(name, text) DIAG_##name,

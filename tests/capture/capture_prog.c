@@ -26,6 +26,9 @@
  *   --fork-child        after frame 0, fork; the child makes GL calls
  *                       (glBegin, glVertex2f(5, 5), glEnd) and exits
  *   --delay-ms N        sleep N ms after each frame
+ *   --until FILE        once FILE exists (checked after each frame), one
+ *                       more frame, then end as after the last (--frames
+ *                       stays the most; one thread)
  *   --done FILE         create FILE once every frame is drawn (a program
  *                       ended early leaves none)
  *   --ignore-term       ignore SIGTERM (raygl record --exit then kills)
@@ -74,8 +77,8 @@ static struct {
     const char *api, *lookup, *hang;
     int single, frames, threads, teapot, exec_child, fork_child, delay_ms, unrecorded, nurbs,
         stroke;
-    const char *self, *done;
-} opt = {"glx", "direct", NULL, 0, 3, 1, 0, 0, 0, 0, 0, 0, 0, NULL, NULL};
+    const char *self, *done, *until;
+} opt = {"glx", "direct", NULL, 0, 3, 1, 0, 0, 0, 0, 0, 0, 0, NULL, NULL, NULL};
 
 static gl_fns gl;
 
@@ -252,6 +255,16 @@ static void hang(void)
         pause();
 }
 
+/* Whether frame f is to be drawn. */
+static int more(int f)
+{
+    static int told;
+    if (f >= opt.frames || told)
+        return 0;
+    told = opt.until && access(opt.until, F_OK) == 0;
+    return 1;
+}
+
 static void after_frame(int frame)
 {
     if (opt.delay_ms > 0)
@@ -305,7 +318,7 @@ static void *glx_thread(void *arg)
         die("glXCreateContext");
     if (thread == 0)
         load_fns();
-    for (int f = 0; f < opt.frames; f++) {
+    for (int f = 0; more(f); f++) {
         draw(f, thread);
         if (opt.single)
             gl.Flush();
@@ -381,7 +394,7 @@ static void run_egl(void)
     if (surf == EGL_NO_SURFACE || ctx == EGL_NO_CONTEXT || !eglMakeCurrent(dpy, surf, surf, ctx))
         die("eglCreateContext");
     load_fns();
-    for (int f = 0; f < opt.frames; f++) {
+    for (int f = 0; more(f); f++) {
         draw(f, 0);
         eglSwapBuffers(dpy, surf);
     }
@@ -400,7 +413,7 @@ static int glut_frame;
 
 static void glut_display(void)
 {
-    if (glut_frame >= opt.frames) {
+    if (!more(glut_frame)) {
         glutLeaveMainLoop();
         return;
     }
@@ -463,6 +476,8 @@ int main(int argc, char **argv)
             opt.exec_child = 1;
         else if (strcmp(a, "--fork-child") == 0)
             opt.fork_child = 1;
+        else if (strcmp(a, "--until") == 0 && v)
+            opt.until = argv[++i];
         else if (strcmp(a, "--done") == 0 && v)
             opt.done = argv[++i];
         else if (strcmp(a, "--ignore-term") == 0)

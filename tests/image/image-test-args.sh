@@ -31,7 +31,7 @@ common_option() {
     --figures) figures=$2 ;;
     --r2p-opt)
         case $2 in
-        *[!A-Za-z0-9.=-]*) echo "$0: --r2p-opt '$2': letters, digits, '.', '=' and '-' only" >&2; exit 2 ;;
+        *[!A-Za-z0-9.,=-]*) echo "$0: --r2p-opt '$2': letters, digits, '.', ',', '=' and '-' only" >&2; exit 2 ;;
         esac
         r2p_opts="$r2p_opts $2" ;;
     --r2p-says)

@@ -56,12 +56,16 @@ check_clean() {
     done
 }
 
-# stop SIG TARGET DIR WHAT COMMAND...: runs COMMAND in a group of its own,
-# waits for 2 stand-ins, sends SIG to the process (TARGET=proc) or its
-# group (TARGET=group), and checks DIR.
+# stop SIG TARGET DIR WHAT BEFORE COMMAND...: runs COMMAND (4 frames, -j 2,
+# BEFORE of them rendered already) in a group of its own, waits for 2
+# stand-ins, sends SIG to the process (TARGET=proc) or its group
+# (TARGET=group), and checks DIR and the last line's counts: the 2 renders
+# under way when the signal came are the ones stopped, whether the stop or
+# the signal itself ended them, and none starts after it.
 stop() {
-    sig=$1 target=$2 dir=$3 what=$4
-    shift 4
+    sig=$1 target=$2 dir=$3 what=$4 before=$5
+    shift 5
+    counts="$before of 4 frames rendered (0 in this run, $before before), 2 renders stopped and removed; the same command again renders the other $((4 - before))"
     rm -f marks/*
     setsid "$@" >"$work/out" 2>"$work/err" &
     pid=$!
@@ -76,29 +80,25 @@ stop() {
     [ "$st" -ne 0 ] && ok "$what: exits $st" || fail "$what: exited 0"
     check_clean "$dir" "$what"
     said=$(tail -n 1 "$work/err")
-    case $said in
-    *": stopped (SIG$sig): "*" the same command again renders the other "*) ok "$what: says so: $said" ;;
-    *) fail "$what: last line '$said', not what was done" ;;
-    esac
+    [ "$said" = "$(basename "$1"): stopped (SIG$sig): $counts" ] && ok "$what: says so: $said" ||
+        fail "$what: last line '$said', not '$(basename "$1"): stopped (SIG$sig): $counts'"
 }
 
 "$r2p" anim.raygl -o a -q || fail "translate"
 for sig in INT TERM; do
     for target in proc group; do
-        stop $sig $target a "raygl-render, SIG$sig to the $target" \
+        stop $sig $target a "raygl-render, SIG$sig to the $target" 0 \
             "$render" a -j 2 --povray "$work/stand-in-povray"
         rm -rf b
-        stop $sig $target b "raygl2pov --render, SIG$sig to the $target" \
+        stop $sig $target b "raygl2pov --render, SIG$sig to the $target" 0 \
             "$r2p" anim.raygl -o b -j 2 --render --povray "$work/stand-in-povray"
     done
 done
 # A frame rendered before the stop stays.
 "$render" a --frames 0 -q || fail "render frame 0"
-stop INT group a "raygl-render after a finished frame" \
+stop INT group a "raygl-render after a finished frame" 1 \
     "$render" a -j 2 --povray "$work/stand-in-povray"
 [ -s a/frame-00000.png ] && ok "the finished frame kept" || fail "frame 0 lost"
-grep -q '^raygl-render: stopped (SIGINT): 1 of 4 frames rendered (0 in this run, 1 before), 2 renders stopped and removed; the same command again renders the other 3$' "$work/err" &&
-    ok "the counts said" || fail "the stop's counts: $(tail -n 1 "$work/err")"
 
 # Blender: the import script writes its image under the name raygl-render
 # gives (--temp) and renames it; a stop while it writes removes it. The
@@ -122,7 +122,7 @@ EOF2
 chmod +x stand-in-blender
 "$r2p" anim.raygl -o g --format gltf -q || fail "translate to glTF"
 for sig in INT TERM; do
-    stop $sig group g "raygl-render --engine blender, SIG$sig to the group" \
+    stop $sig group g "raygl-render --engine blender, SIG$sig to the group" 0 \
         "$render" g -j 2 --engine blender --blender "$work/stand-in-blender"
 done
 

@@ -155,6 +155,31 @@ int main(void)
     CHECK_NEAR(d1, d0, 1e-9);
     opt_free(&o);
 
+    /* --camera-orthographic alone (issue 27): the perspective view's
+     * framing at the depth it looked at, gluLookAt's centre |(0,3,7)| away
+     * (a view 1 away framed a close-up before: height 0.83), or without
+     * gluLookAt the centre of what the frame drew, the triangle 5 away. */
+    const double t22 = tan(22.5 * 3.14159265358979323846 / 180);
+    for (int lookat = 1; lookat >= 0; lookat--) {
+        s = build(lookat);
+        opt_init(&o);
+        CHECK(set(&o, opt_set_camera_orthographic, "on"));
+        look_apply(&o.look, s);
+        const scene_camera *c = &s->camera;
+        CHECK(c->kind == SCENE_CAMERA_ORTHOGRAPHIC);
+        double up = sqrt(c->up[0] * c->up[0] + c->up[1] * c->up[1] + c->up[2] * c->up[2]);
+        double right =
+            sqrt(c->right[0] * c->right[0] + c->right[1] * c->right[1] + c->right[2] * c->right[2]);
+        double want = 2 * (lookat ? sqrt(58.0) : 5.0) * t22;
+        printf("orthographic, %s: view height %.6f (want %.6f)\n",
+               lookat ? "gluLookAt" : "no gluLookAt", up, want);
+        /* The triangle, drawn without a depth test, is moved toward the
+         * camera by the painter's shift (interp_proj.c): 1/20000 nearer. */
+        CHECK_NEAR(up, want, lookat ? 1e-6 : want * 1e-4);
+        CHECK_NEAR(right / up, 160.0 / 120.0, 1e-6);
+        opt_free(&o);
+    }
+
     /* Sizes: one given keeps the aspect; both given keep the vertical view. */
     s = build(1);
     opt_init(&o);

@@ -21,6 +21,13 @@
  *       that time. (It used to wait 10 s too, while the inner waited 10 s
  *       for each child in turn: the inner was killed, its file left.)
  *       About 10 s.
+ *   a stop pending      the tool holds the registry's lock when SIGINT
+ *       comes (as raygl-render does while it acts on a povray the Ctrl-C
+ *       to the group ended), then calls cleanup_check, or exits. Either
+ *       must make the stop, the lock still held: the tool ends by SIGINT,
+ *       the file gone, the stop's words said. (The waiter used to take the
+ *       signal without the lock: the check could find nothing pending and
+ *       the tool go on, or exit 0.)
  */
 #include <errno.h>
 #include <fcntl.h>
@@ -28,6 +35,7 @@
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -137,6 +145,41 @@ static int inner(const char *file, int ready)
         pause();
 }
 
+static const char *said_path;
+
+static void say_stop(int sig)
+{
+    int fd = open(said_path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd >= 0) {
+        if (sig == SIGINT && write(fd, "s", 1) != 1)
+            _exit(3);
+        close(fd);
+    }
+}
+
+/* SIGINT while the lock is held; then cleanup_check (check) or exit. The
+ * pause lets the waiter wake and reach the lock first. */
+static void stop_pending(const char *file, int check)
+{
+    if (cleanup_start() != 0)
+        exit(3);
+    cleanup_on_stop(say_stop);
+    cleanup_lock();
+    long id = cleanup_file(file);
+    FILE *f = id >= 0 ? fopen(file, "w") : NULL;
+    if (!f || fclose(f) != 0)
+        exit(3);
+    kill(getpid(), SIGINT);
+    struct timespec t = {0, 200 * 1000 * 1000};
+    while (nanosleep(&t, &t) != 0 && errno == EINTR)
+        ;
+    if (check) {
+        cleanup_check();
+        exit(5);
+    }
+    exit(0);
+}
+
 static const char *self;
 
 /* The outer tool: starts the inner as raygl-compare starts raygl2pov, then
@@ -212,6 +255,23 @@ int main(int argc, char **argv)
         st = run(plain_exit, file, locked);
         CHECK(WIFEXITED(st) && WEXITSTATUS(st) == 7);
         unlink(file);
+    }
+
+    char said[320];
+    snprintf(said, sizeof said, "%s/said", dir);
+    said_path = said;
+    for (int check = 0; check < 2; check++) {
+        st = run(stop_pending, file, check);
+        if (!(WIFSIGNALED(st) && WTERMSIG(st) == SIGINT))
+            fprintf(stderr, "a stop pending (%s): %s %d, expected signal %d\n",
+                    check ? "cleanup_check" : "exit", WIFSIGNALED(st) ? "signal" : "exit status",
+                    WIFSIGNALED(st) ? WTERMSIG(st) : WEXITSTATUS(st), SIGINT);
+        CHECK(WIFSIGNALED(st) && WTERMSIG(st) == SIGINT);
+        CHECK(access(file, F_OK) != 0);
+        struct stat sb;
+        CHECK(stat(said, &sb) == 0 && sb.st_size == 1);
+        unlink(file);
+        unlink(said);
     }
 
     st = run(nested, file, 0);

@@ -19,7 +19,7 @@
 
 static void write_scene(bool no_shadows)
 {
-    pov_options opt = {no_shadows, 0, 0};
+    pov_options opt = {no_shadows, 0, 0, false};
     pov_frame_info info;
     memset(&info, 0, sizeof info);
     info.options = &opt;
@@ -61,6 +61,7 @@ static void test_sets(void)
     }
     CHECK_EQ_U(count(DIAG_NOTE_LIGHTING), 0);
     CHECK_EQ_U(count(DIAG_NOTE_SHADOW_HIGHLIGHT), 1); /* red diffuse, white specular */
+    CHECK_EQ_U(dlog.e[DIAG_NOTE_SHADOW_HIGHLIGHT].held, 0);
     write_scene(true);
     CHECK_EQ_U(occurrences(sdl, "light_group{"), 2);
     CHECK_EQ_U(occurrences(sdl, "global_lights on}"), 2);
@@ -454,6 +455,35 @@ static void test_gouraud_note(void)
     }
 }
 
+/* glTF output (issue 27): the notes of POV-Ray's renders of the lights
+ * are held, not said, as no POV-Ray render is made. */
+static void test_gltf_notes(void)
+{
+    for (int spot = 0; spot < 2; spot++) {
+        interp *ip = fresh();
+        interp_set_pov(ip, false);
+        interp_set_shadows(ip, spot == 0);
+        seq s;
+        seq_init(&s);
+        CMD(&s, Enable, GL_LIGHTING);
+        CMD(&s, Enable, GL_LIGHT0);
+        if (spot) {
+            CMD(&s, Lightfv, GL_LIGHT0, GL_POSITION, 0, 0, 0, 1);
+            CMD(&s, Lightf, GL_LIGHT0, GL_SPOT_CUTOFF, 30);
+            CMD(&s, Lightfv, GL_LIGHT0, GL_SPECULAR, 0.5, 0.5, 0.5, 1);
+        } else {
+            CMD(&s, Lightfv, GL_LIGHT0, GL_DIFFUSE, 1, 0, 0, 1); /* white specular */
+        }
+        tri(&s, -2);
+        run(ip, &s);
+        interp_end_frame(ip);
+        diag_kind k = spot ? DIAG_NOTE_SPOT_SPECULAR : DIAG_NOTE_SHADOW_HIGHLIGHT;
+        CHECK_EQ_U(count(k), 1);
+        CHECK_EQ_U(dlog.e[k].held, 1);
+        interp_destroy(ip);
+    }
+}
+
 int main(void)
 {
     scene_init(&sc);
@@ -468,6 +498,7 @@ int main(void)
     test_color_material_enable();
     test_vertex_lighting();
     test_gouraud_note();
+    test_gltf_notes();
     scene_finish(&sc);
     return CHECK_RESULT("test_lights");
 }

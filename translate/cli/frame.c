@@ -76,6 +76,7 @@ void translator_set_budget_shift(translator *t, unsigned shift)
 }
 
 void translator_set_shadows(translator *t, bool on) { interp_set_shadows(t->ip, on); }
+void translator_set_pov(translator *t, bool on) { interp_set_pov(t->ip, on); }
 
 void translator_set_vertex_lighting(translator *t, bool on)
 {

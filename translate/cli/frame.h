@@ -68,6 +68,8 @@ void translator_set_vertex_lighting(translator *t, bool on);
 
 /* Shadows in the scenes or not (interp_set_shadows). */
 void translator_set_shadows(translator *t, bool on);
+/* Scenes for POV-Ray or not (glTF; interp_set_pov). */
+void translator_set_pov(translator *t, bool on);
 
 /* Heavy frames (interp_set_heavy): fn(ctx) is called from translator_build
  * when its frame turns heavy, and may block. */

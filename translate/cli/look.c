@@ -167,6 +167,20 @@ bool opt_set_quality(options *o, const char *v, const opt_ctx *ctx, opt_err *err
     if (e == v || *e || n < 0 || n > 11 || v[0] == ' ' || v[0] == '+')
         return opt_fail(err, "%s '%s': expected a POV-Ray quality from 0 to 11", ctx->option, v);
     o->look.quality = n == 0 ? -1 : (int)n; /* -1: Quality=0 asked for */
+    o->pov.quick = n < 6; /* POV-Ray's quick colours: no image maps */
+    return true;
+}
+
+bool opt_set_preview(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
+{
+    bool on;
+    if (!opt_bool(v, &on, ctx, err))
+        return false;
+    if (on) { /* quality 4: no reflections, media, image maps; no shadows here */
+        o->look.quality = 4;
+        o->pov.quick = true;
+        o->pov.no_shadows = true;
+    }
     return true;
 }
 
@@ -326,6 +340,69 @@ static void apply_size(const look_settings *l, scene *s)
     c->height = h;
 }
 
+static void grow_box(double lo[3], double hi[3], const mat4 *m, const float p[3])
+{
+    double e[3], in[3] = {p[0], p[1], p[2]};
+    if (m)
+        xform(m, in, 1, e);
+    else
+        memcpy(e, in, sizeof e);
+    for (int k = 0; k < 3; k++)
+        if (isfinite(e[k])) {
+            lo[k] = fmin(lo[k], e[k]);
+            hi[k] = fmax(hi[k], e[k]);
+        }
+}
+
+static void box_mesh(const scene *s, const scene_mesh *me, const mat4 *place, double lo[3],
+                     double hi[3])
+{
+    mat4 m = me->in_eye ? mat4_identity() : me->to_eye;
+    if (place)
+        m = mat4_mul(place, &m);
+    for (size_t t = me->first_tri; t < me->first_tri + me->tri_count && t < s->ntris; t++)
+        for (int c = 0; c < 3; c++)
+            if (s->tris[t].v[c] < s->nverts)
+                grow_box(lo, hi, &m, s->verts[s->tris[t].v[c]].pos);
+}
+
+/* The point an orthographic override frames as the perspective view framed
+ * it, in the overrides' coordinates: the frame's gluLookAt centre, or the
+ * centre of the eye-space box of what the frame drew. False: nothing drawn. */
+static bool focus_point(const scene *s, bool world, double out[3])
+{
+    if (s->have_view) {
+        if (world)
+            memcpy(out, s->view_look_at, 3 * sizeof *out);
+        else
+            xform(&s->view, s->view_look_at, 1, out);
+        return true;
+    }
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (size_t i = 0; i < s->nmeshes; i++)
+        if (!s->meshes[i].proto)
+            box_mesh(s, &s->meshes[i], NULL, lo, hi);
+    for (size_t i = 0; i < s->ninstances; i++) {
+        const scene_instance *in = &s->instances[i];
+        if (in->proto >= s->nprotos)
+            continue;
+        const scene_proto *pr = &s->protos[in->proto];
+        for (size_t k = pr->first_mesh; k < pr->first_mesh + pr->nmeshes && k < s->nmeshes; k++)
+            box_mesh(s, &s->meshes[k], &in->to_eye, lo, hi);
+    }
+    static const float origin[3] = {0, 0, 0};
+    for (size_t i = 0; i < s->nsolids; i++)
+        grow_box(lo, hi, &s->solids[i].to_eye, origin);
+    for (size_t i = 0; i < s->nlines; i++)
+        for (int e = 0; e < 2; e++)
+            grow_box(lo, hi, NULL, s->lines[i].p[e]);
+    if (!(lo[0] <= hi[0] && lo[1] <= hi[1] && lo[2] <= hi[2]))
+        return false;
+    for (int k = 0; k < 3; k++)
+        out[k] = (lo[k] + hi[k]) / 2;
+    return true;
+}
+
 static void apply_camera(const look_settings *l, scene *s, bool world, const mat4 *view,
                          const mat4 *inv)
 {
@@ -377,6 +454,15 @@ static void apply_camera(const look_settings *l, scene *s, bool world, const mat
         normalize3(r);
     }
     cross3(r, f, u);
+    /* An orthographic view from a perspective one, without a look-at
+     * point: framed at the depth of what the frame looked at. */
+    double fp[3];
+    if (l->orthographic && !l->has_look_at && !(was_ortho && !l->has_fov) &&
+        focus_point(s, world, fp)) {
+        double d = (fp[0] - L[0]) * f[0] + (fp[1] - L[1]) * f[1] + (fp[2] - L[2]) * f[2];
+        if (d > 0 && isfinite(d))
+            dist = d;
+    }
     double aspect = (double)c->width / (c->height > 0 ? c->height : 1);
     double height = 1, dlen = 0.5 / tan(fov * PI / 360);
     if (l->orthographic) {
@@ -548,6 +634,11 @@ int look_write_scene(outbuf *ob, const look_settings *l, const scene *s,
             }
         outbuf_puts(ob, ">}\n");
     }
+    if (ninclude)
+        /* POV-Ray's own default finish again (its manual's ambient 0.1,
+         * diffuse 0.6, no emission): the scene's unlit default (povwrite.c)
+         * is RayGL's, and would make the user's objects flat and unlit. */
+        outbuf_puts(ob, "#default{finish{ambient 0.1 diffuse 0.6 emission 0}}\n");
     for (size_t i = 0; i < ninclude; i++) {
         /* Names are [A-Za-z0-9._-] (look_copy_includes): nothing to escape. */
         outbuf_puts(ob, "#include \"");

@@ -410,6 +410,7 @@ static void *worker(void *arg)
         translator_set_heavy(t, heavy_enter, &w);
         translator_set_vertex_lighting(t, j->o->vertex_lighting);
         translator_set_shadows(t, !j->o->pov.no_shadows);
+        translator_set_pov(t, !j->o->gltf);
     }
     outbuf ob;
     bool ob_ok = outbuf_init(&ob, 1 << 20, fd_flush, NULL) == 0;
@@ -446,6 +447,11 @@ static void *worker(void *arg)
         scene *sc = translator_scene_edit(t);
         if (s->status == RGL_OK)
             s->look_note = look_apply(&j->o->look, sc);
+        if (s->status == RGL_OK && s->log && !j->o->gltf && j->o->pov.quick && scene_needs_quality6(sc)) {
+            char prefix[32];
+            snprintf(prefix, sizeof prefix, "frame %zu", s->frame);
+            diag_add(s->log, DIAG_NOTE_QUALITY, prefix, "%s", diag_kind_name(DIAG_NOTE_QUALITY));
+        }
         if (s->status == RGL_OK && j->o->gltf && look_add_lights(&j->o->look, sc) != 0)
             s->status = RGL_E_NOMEM;
         s->width = sc->camera.width;

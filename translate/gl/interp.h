@@ -319,6 +319,12 @@ void interp_set_shown_front(interp *ip, bool front);
  * approximates are said only then, those of the shadowless one only
  * without (interp_lightset.c). */
 void interp_set_shadows(interp *ip, bool on);
+
+/* Whether the scenes are written for POV-Ray (the default; off: glTF,
+ * raygl2pov --format gltf): the notes of how POV-Ray renders the lights
+ * (with or without shadows) are held otherwise, as no such render is
+ * made. */
+void interp_set_pov(interp *ip, bool on);
 void interp_destroy(interp *ip);
 
 /* Back to GL's initial state; the scene and log stay attached. */

@@ -269,6 +269,7 @@ struct interp {
     bool vertex_lighting; /* interp_set_vertex_lighting */
     bool show_front;      /* interp_set_shown_front */
     bool no_shadows;      /* interp_set_shadows(ip, false) */
+    bool not_pov;         /* interp_set_pov(ip, false) */
 
     /* glMaterial between the vertices of the open primitive
      * (interp_vmaterial.c): each vertex's material once one changed, and

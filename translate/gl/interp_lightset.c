@@ -75,11 +75,15 @@ static uint64_t hash_lights(const scene_light *l, size_t n)
  * is approximated with --no-shadows. */
 void interp_set_shadows(interp *ip, bool on) { ip->no_shadows = !on; }
 
+void interp_set_pov(interp *ip, bool on) { ip->not_pov = !on; }
+
 /* Each approximation holds for one of the two renders: said for the one
- * the scenes are made for, held for the other. */
+ * the scenes are made for, held for the other, and for glTF output. */
 static void note_render(interp *ip, diag_kind kind, bool with_shadows)
 {
-    if (with_shadows != ip->no_shadows)
+    if (ip->not_pov)
+        interp_note_held(ip, kind, "written as glTF, not for POV-Ray");
+    else if (with_shadows != ip->no_shadows)
         interp_note(ip, kind);
     else
         interp_note_held(ip, kind, with_shadows ? "rendered without shadows (--no-shadows)"

@@ -222,6 +222,8 @@ void interp_lookat(interp *ip, const rgl_cmd *cmd)
     if (ip->scene && !ip->scene->have_view && ip->st.a.transform.matrix_mode == GL_MODELVIEW) {
         ip->scene->have_view = true;
         ip->scene->view = *current(ip);
+        for (int k = 0; k < 3; k++)
+            ip->scene->view_look_at[k] = v[3 + k];
     }
 }
 

@@ -209,6 +209,45 @@ static void grid_fill(interp *ip, const shape_style *st, surf_fn f, const void *
     interp_prim_end(ip);
 }
 
+/* GLU's own primitives for a filled surface with smooth or no normals: a
+ * GL_QUAD_STRIP per row j in [j0, j1) through i = 0..ni, the vertex
+ * (i, j + 1) before (i, j) when upper_first, as gluSphere, gluCylinder
+ * and gluPartialDisk send them. GL splits each strip quad along the
+ * diagonal from its first vertex, which Gouraud shading shows
+ * (--vertex-lighting), and a flat-shaded quad takes its last vertex's
+ * colour. */
+static void glu_strips(interp *ip, const shape_style *st, surf_fn f, const void *ctx, int ni,
+                       int j0, int j1, bool upper_first)
+{
+    for (int j = j0; j < j1; j++) {
+        interp_prim_begin(ip, GL_QUAD_STRIP);
+        for (int i = 0; i <= ni; i++) {
+            surf_point a, b;
+            f(ctx, i, upper_first ? j + 1 : j, &a);
+            f(ctx, i, upper_first ? j : j + 1, &b);
+            emit_point(ip, st, &a);
+            emit_point(ip, st, &b);
+        }
+        interp_prim_end(ip);
+    }
+}
+
+/* GLU's GL_TRIANGLE_FAN from the apex f(0, japex) around row j, i from
+ * ni down to 0 (descending) or up. */
+static void glu_fan(interp *ip, const shape_style *st, surf_fn f, const void *ctx, int ni,
+                    int japex, int j, bool descending)
+{
+    surf_point sp;
+    interp_prim_begin(ip, GL_TRIANGLE_FAN);
+    f(ctx, 0, japex, &sp);
+    emit_point(ip, st, &sp);
+    for (int k = 0; k <= ni; k++) {
+        f(ctx, descending ? ni - k : k, j, &sp);
+        emit_point(ip, st, &sp);
+    }
+    interp_prim_end(ip);
+}
+
 /* A line strip (or loop) through f(i, j) for i in [i0, i1] at fixed j
  * (along_i) or for j in [i0, i1] at fixed i. */
 static void grid_line(interp *ip, const shape_style *st, surf_fn f, const void *ctx, GLenum mode,
@@ -264,6 +303,8 @@ static bool exact_ok(interp *ip, bool closed, bool inside, bool faceted)
         return false;
     if (a->caps[INTERP_CAP_LIGHTING] && (faceted || a->lighting.shade_model == GL_FLAT))
         return false;
+    if (!ip->prim_relit && interp_vertex_lit(ip))
+        return false; /* --vertex-lighting: GL's facets in GL's lit colours */
     if (interp_texture_for_draw(ip) >= 0)
         return false; /* the mesh carries the texture coordinates */
     if (interp_offset_active(ip))
@@ -414,7 +455,15 @@ void interp_glusphere(interp *ip, const rgl_cmd *cmd)
         if (exact_ok(ip, true, st.inside, glu_faceted(&q)) &&
             emit_solid(ip, SCENE_SOLID_SPHERE, false, g.r, 0, 0))
             return;
-        grid_fill(ip, &st, glu_sphere_at, &g, g.slices, g.stacks);
+        if (st.normals == GLU_FLAT) {
+            grid_fill(ip, &st, glu_sphere_at, &g, g.slices, g.stacks);
+        } else if (st.texture) {
+            glu_strips(ip, &st, glu_sphere_at, &g, g.slices, 0, g.stacks, !st.inside);
+        } else { /* the poles as fans: GLU needs no texture coordinates there */
+            glu_fan(ip, &st, glu_sphere_at, &g, g.slices, 0, 1, !st.inside);
+            glu_fan(ip, &st, glu_sphere_at, &g, g.slices, g.stacks, g.stacks - 1, st.inside);
+            glu_strips(ip, &st, glu_sphere_at, &g, g.slices, 1, g.stacks - 1, !st.inside);
+        }
         break;
     case GLU_POINT:
         interp_prim_begin(ip, GL_POINTS);
@@ -459,8 +508,12 @@ void interp_glucylinder(interp *ip, const rgl_cmd *cmd)
         if (g.height > 0 && exact_ok(ip, false, st.inside, glu_faceted(&q)) &&
             emit_solid(ip, SCENE_SOLID_CONE, true, g.base, g.top, g.height))
             return;
-        if (tess_ok(ip, "gluCylinder", g.slices, g.stacks)) /* GLU caps slices, not stacks */
+        if (!tess_ok(ip, "gluCylinder", g.slices, g.stacks)) /* GLU caps slices, not stacks */
+            break;
+        if (st.normals == GLU_FLAT)
             grid_fill(ip, &st, glu_cyl_at, &g, g.slices, g.stacks);
+        else
+            glu_strips(ip, &st, glu_cyl_at, &g, g.slices, 0, g.stacks, st.inside);
         break;
     case GLU_POINT:
         interp_prim_begin(ip, GL_POINTS);
@@ -517,8 +570,14 @@ static void glu_disk_draw(interp *ip, const rgl_cmd *cmd, double inner, double o
         if (g.full && exact_ok(ip, false, st.inside, false) &&
             emit_solid(ip, SCENE_SOLID_DISC, false, outer, inner, 0))
             return;
-        if (tess_ok(ip, "gluDisk", slices, loops))
-            grid_fill(ip, &st, glu_disk_at, &g, slices, loops);
+        if (!tess_ok(ip, "gluDisk", slices, loops))
+            break;
+        if (inner == 0) { /* the centre as a fan */
+            glu_fan(ip, &st, glu_disk_at, &g, slices, loops, loops - 1, !st.inside);
+            glu_strips(ip, &st, glu_disk_at, &g, slices, 0, loops - 1, st.inside);
+        } else {
+            glu_strips(ip, &st, glu_disk_at, &g, slices, 0, loops, st.inside);
+        }
         break;
     case GLU_POINT:
         interp_prim_begin(ip, GL_POINTS);

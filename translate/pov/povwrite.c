@@ -382,6 +382,148 @@ static double near_t(const scene_camera *cam, const double from[3], const double
     return best;
 }
 
+/* Where the ray through image point (u, v) in [-1/2, 1/2]^2 meets the
+ * overlay's plane. False: not finite. */
+static bool overlay_point(const scene *s, double u, double v, double p[3])
+{
+    const scene_camera *cam = &s->camera;
+    bool ortho = cam->kind == SCENE_CAMERA_ORTHOGRAPHIC;
+    double from[3], r[3];
+    for (int k = 0; k < 3; k++) {
+        double side = u * cam->right[k] + v * cam->up[k];
+        from[k] = cam->location[k] + (ortho ? side : 0);
+        r[k] = cam->direction[k] + (ortho ? 0 : side);
+    }
+    double tt = near_t(cam, from, r);
+    /* Just past the near plane: a ten-thousandth of its distance for
+     * a camera with a centre, a hair along the ray for a parallel one,
+     * past POV-Ray's least intersection depth (1e-4: on the camera
+     * plane it meets nothing) and the float rounding of the corners. */
+    double hair = 1e-3 + 1e-6 * sqrt(dot3(from, from));
+    tt = ortho ? (tt < 0 && !cam->has_clip ? 0 : tt) + hair : (tt > 0 ? tt * (1 + 1e-4) : 1e-3);
+    /* Depth-tested pixels at one depth: in that plane (interp_pixdepth.c). */
+    if (s->overlay_at_depth) {
+        const double *a = s->overlay_plane;
+        double den = dot3(a, r), at = den != 0 ? -(dot3(a, from) + a[3]) / den : NAN;
+        if (isfinite(at) && (at > 0 || ortho))
+            tt = at;
+    }
+    for (int k = 0; k < 3; k++)
+        p[k] = from[k] + tt * r[k];
+    return finite3d(p);
+}
+
+/* Below quality 6 POV-Ray computes no image map (a pigment shows its
+ * quick colour, black for one): the overlay as rectangles of one colour
+ * instead, each run of equal pixels of a row, exact at every quality.
+ * Past OVERLAY_MAX_RUNS runs (a picture, not a HUD) the image map is
+ * kept. Returns 1 when it wrote the rectangles, 0 when it did not (too
+ * many runs), -1 when memory ran out. */
+#define OVERLAY_MAX_RUNS 65536
+static int write_overlay_runs(outbuf *ob, const scene *s)
+{
+    int W = s->overlay_w, H = s->overlay_h;
+    const uint8_t *px = s->overlay;
+    size_t nruns = 0;
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            const uint8_t *c = px + 4 * ((size_t)y * (size_t)W + (size_t)x);
+            if (c[3] && (x == 0 || memcmp(c, c - 4, 4) != 0) && ++nruns > OVERLAY_MAX_RUNS)
+                return 0;
+        }
+    if (nruns == 0)
+        return 1;
+    /* The runs' colours, each once: texture_list indices, found through an
+     * open-addressed table of 2 to 4 slots a run (a key is never 0: its
+     * alpha is not). */
+    size_t nslots = 1;
+    while (nslots < 2 * nruns)
+        nslots *= 2;
+    uint32_t *cols = tr_realloc(NULL, nruns * sizeof *cols);
+    uint32_t *idx = tr_realloc(NULL, nruns * sizeof *idx);
+    uint32_t *slot = tr_realloc(NULL, nslots * 2 * sizeof *slot);
+    if (!cols || !idx || !slot) {
+        tr_free(cols);
+        tr_free(idx);
+        tr_free(slot);
+        return -1;
+    }
+    memset(slot, 0, nslots * 2 * sizeof *slot);
+    size_t ncols = 0, r = 0;
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            const uint8_t *c = px + 4 * ((size_t)y * (size_t)W + (size_t)x);
+            if (!c[3] || (x > 0 && memcmp(c, c - 4, 4) == 0))
+                continue;
+            uint32_t key = (uint32_t)c[0] | (uint32_t)c[1] << 8 | (uint32_t)c[2] << 16 |
+                           (uint32_t)c[3] << 24;
+            size_t h = (key * 0x9e3779b1u) & (nslots - 1);
+            while (slot[2 * h] && slot[2 * h] != key)
+                h = (h + 1) & (nslots - 1);
+            if (!slot[2 * h]) {
+                slot[2 * h] = key;
+                slot[2 * h + 1] = (uint32_t)ncols;
+                cols[ncols++] = key;
+            }
+            idx[r++] = slot[2 * h + 1];
+        }
+    outbuf_puts(ob, "mesh2{vertex_vectors{");
+    outbuf_u64(ob, 4 * nruns);
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W;) {
+            const uint8_t *c = px + 4 * ((size_t)y * (size_t)W + (size_t)x);
+            int e = x + 1;
+            while (e < W && memcmp(c, px + 4 * ((size_t)y * (size_t)W + (size_t)e), 4) == 0)
+                e++;
+            if (c[3]) {
+                double u0 = (double)x / W - 0.5, u1 = (double)e / W - 0.5;
+                double v0 = (double)y / H - 0.5, v1 = (double)(y + 1) / H - 0.5;
+                const double uv[4][2] = {{u0, v0}, {u1, v0}, {u1, v1}, {u0, v1}};
+                for (int q = 0; q < 4; q++) {
+                    double p[3];
+                    if (!overlay_point(s, uv[q][0], uv[q][1], p))
+                        p[0] = p[1] = p[2] = 0;
+                    outbuf_putc(ob, ',');
+                    put_vec3d(ob, p);
+                }
+                outbuf_putc(ob, '\n');
+            }
+            x = e;
+        }
+    outbuf_puts(ob, "}\ntexture_list{");
+    outbuf_u64(ob, ncols);
+    for (size_t k = 0; k < ncols; k++) {
+        uint32_t c = cols[k];
+        /* The PNG's values as the image map used them (gamma 2.2 =
+         * assumed_gamma); its alpha as transmit. */
+        const uint32_t v[4] = {c & 255, c >> 8 & 255, c >> 16 & 255, 255 - (c >> 24)};
+        for (int q = 0; q < 4; q++) {
+            outbuf_puts(ob, q ? "/255," : ",texture{pigment{rgbt<");
+            outbuf_u64(ob, v[q]);
+        }
+        outbuf_puts(ob, "/255>}}\n");
+    }
+    outbuf_puts(ob, "}\nface_indices{");
+    outbuf_u64(ob, 2 * nruns);
+    for (size_t k = 0; k < nruns; k++) {
+        static const int tri[2][3] = {{0, 1, 2}, {0, 2, 3}};
+        for (int t = 0; t < 2; t++) {
+            for (int c = 0; c < 3; c++) {
+                outbuf_puts(ob, c ? "," : ",<");
+                outbuf_u64(ob, 4 * (uint64_t)k + (uint64_t)tri[t][c]);
+            }
+            outbuf_puts(ob, ">,");
+            outbuf_u64(ob, idx[k]);
+        }
+        outbuf_putc(ob, '\n');
+    }
+    outbuf_puts(ob, "}\nno_shadow no_reflection no_radiosity}\n");
+    tr_free(cols);
+    tr_free(idx);
+    tr_free(slot);
+    return 1;
+}
+
 /* Bitmaps and pixel rectangles (scene.overlay): one image covering the
  * camera's view exactly, pixel for pixel (image_map without
  * interpolation: each ray through a pixel centre meets its texel's
@@ -391,37 +533,35 @@ static double near_t(const scene_camera *cam, const double from[3], const double
  * or radiosity. Transparent where nothing was drawn. */
 static int write_overlay(povwriter *w, outbuf *ob, const scene *s)
 {
-    const scene_camera *cam = &s->camera;
-    int img = povtex_overlay(&w->tex, s->overlay, s->overlay_w, s->overlay_h);
+    if (w->light.opt.quick) {
+        int rc = write_overlay_runs(ob, s);
+        if (rc != 0)
+            return rc < 0 ? -1 : 0;
+    }
+    /* Cropped to the box of what was drawn: a HUD's line of text is not a
+     * frame-sized image. */
+    int W = s->overlay_w, H = s->overlay_h, x0 = W, x1 = -1, y0 = H, y1 = -1;
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++)
+            if (s->overlay[4 * ((size_t)y * (size_t)W + (size_t)x) + 3]) {
+                x0 = x < x0 ? x : x0;
+                x1 = x > x1 ? x : x1;
+                y0 = y < y0 ? y : y0;
+                y1 = y > y1 ? y : y1;
+            }
+    if (x1 < 0)
+        return 0; /* nothing drawn */
+    int img = povtex_overlay(&w->tex, s->overlay, W, x0, y0, x1 - x0 + 1, y1 - y0 + 1);
     char pigment[POVTEX_PIGMENT_MAX];
     if (img < 0 || povtex_image_pigment(&w->tex, (size_t)img, false, pigment) == 0)
         return -1;
-    bool ortho = cam->kind == SCENE_CAMERA_ORTHOGRAPHIC;
-    static const double uv[4][2] = {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}};
+    double u0 = (double)x0 / W - 0.5, u1 = (double)(x1 + 1) / W - 0.5;
+    double v0 = (double)y0 / H - 0.5, v1 = (double)(y1 + 1) / H - 0.5;
+    const double uv[4][2] = {{u0, v0}, {u1, v0}, {u1, v1}, {u0, v1}};
     double p[4][3];
-    for (int c = 0; c < 4; c++) {
-        double from[3], r[3];
-        for (int k = 0; k < 3; k++) {
-            double side = uv[c][0] * cam->right[k] + uv[c][1] * cam->up[k];
-            from[k] = cam->location[k] + (ortho ? side : 0);
-            r[k] = cam->direction[k] + (ortho ? 0 : side);
-        }
-        double tt = near_t(cam, from, r);
-        /* Just past the near plane: a ten-thousandth of its distance for
-         * a camera with a centre, a hair along the ray for a parallel one. */
-        tt = ortho ? (tt < 0 && !cam->has_clip ? 0 : tt) + 1e-4 : (tt > 0 ? tt * (1 + 1e-4) : 1e-3);
-        /* Depth-tested pixels at one depth: in that plane (interp_pixdepth.c). */
-        if (s->overlay_at_depth) {
-            const double *a = s->overlay_plane;
-            double den = dot3(a, r), at = den != 0 ? -(dot3(a, from) + a[3]) / den : NAN;
-            if (isfinite(at) && (at > 0 || ortho))
-                tt = at;
-        }
-        for (int k = 0; k < 3; k++)
-            p[c][k] = from[k] + tt * r[k];
-        if (!finite3d(p[c]))
+    for (int c = 0; c < 4; c++)
+        if (!overlay_point(s, uv[c][0], uv[c][1], p[c]))
             return 0;
-    }
     outbuf_puts(ob, "mesh2{vertex_vectors{4");
     for (int c = 0; c < 4; c++) {
         outbuf_putc(ob, ',');
@@ -614,6 +754,7 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
 
     povlight_begin(&w->light, s, info ? info->options : NULL);
     povtex_reset(&w->tex);
+    w->tex.quick = w->light.opt.quick;
     w->mt_count = 0;
     bool no_shadows = w->light.opt.no_shadows;
     if (write_protos(w, ob, s) != 0)

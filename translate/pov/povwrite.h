@@ -20,6 +20,9 @@ typedef struct pov_options {
     bool no_shadows;  /* --no-shadows: nothing casts shadows (the GL look) */
     float reflection; /* --reflection F: mirror reflection of lit surfaces */
     int area_lights;  /* --area-lights N: N x N area lights (soft shadows), 0 off */
+    bool quick;       /* --quality below 6: POV-Ray computes no image maps, so
+                         the overlay is solid rectangles and each image pigment
+                         has a quick_color (its mean) */
 } pov_options;
 
 /* Where a frame came from, for the header comment. Strings may be NULL;

@@ -263,7 +263,7 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
     return (int)(pt->n - 1);
 }
 
-int povtex_overlay(povtex *pt, const uint8_t *rgba, int w, int h)
+int povtex_overlay(povtex *pt, const uint8_t *rgba, int stride, int x0, int y0, int w, int h)
 {
     size_t n = (size_t)w * (size_t)h * 4;
     if (tr_grow((void **)&pt->imgs, &pt->cap, pt->n + 1, sizeof *pt->imgs) != 0)
@@ -271,7 +271,9 @@ int povtex_overlay(povtex *pt, const uint8_t *rgba, int w, int h)
     uint8_t *px = tr_realloc(NULL, n);
     if (!px)
         return -1;
-    memcpy(px, rgba, n);
+    for (int y = 0; y < h; y++)
+        memcpy(px + (size_t)y * (size_t)w * 4,
+               rgba + ((size_t)(y0 + y) * (size_t)stride + (size_t)x0) * 4, (size_t)w * 4);
     bool alpha = false;
     for (size_t i = 3; i < n && !alpha; i += 4)
         alpha = px[i] != 255;
@@ -295,6 +297,22 @@ size_t povtex_image_pigment(const povtex *pt, size_t i, bool linear,
      * (docs/mapping.md "Gamma"); interpolate 2 is bilinear. */
     int n = snprintf(buf, POVTEX_PIGMENT_MAX, "uv_mapping image_map{png \"" POVTEX_DIR "/%s\" gamma 2.2%s}",
                      pt->imgs[i].name, linear ? " interpolate 2" : "");
+    if (n > 0 && n < POVTEX_PIGMENT_MAX && pt->quick) {
+        /* Below quality 6 POV-Ray shows a pigment's quick colour (black for
+         * an image map): the image's mean, in the file's values as the
+         * image map uses them (gamma 2.2 = assumed_gamma). */
+        const povtex_image *im = &pt->imgs[i];
+        double sum[3] = {0, 0, 0};
+        size_t np = (size_t)im->width * (size_t)im->height;
+        for (size_t p = 0; p < np; p++)
+            for (int k = 0; k < 3; k++)
+                sum[k] += im->rgba[4 * p + (size_t)k];
+        double d = np ? 255.0 * (double)np : 1;
+        int m = snprintf(buf + n, POVTEX_PIGMENT_MAX - (size_t)n, " quick_color rgb<%d/255,%d/255,%d/255>",
+                         (int)(sum[0] / d * 255 + 0.5), (int)(sum[1] / d * 255 + 0.5),
+                         (int)(sum[2] / d * 255 + 0.5));
+        n = m > 0 ? n + m : -1;
+    }
     return n > 0 && n < POVTEX_PIGMENT_MAX ? (size_t)n : 0;
 }
 

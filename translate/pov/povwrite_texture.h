@@ -34,6 +34,7 @@ typedef struct povtex_image {
 typedef struct povtex {
     povtex_image *imgs;
     size_t n, cap;
+    bool quick; /* image pigments carry quick_color, their mean (pov_options.quick) */
 } povtex;
 
 void povtex_reset(povtex *pt);
@@ -55,9 +56,10 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
                bool keep_alpha, const float tint[3], float scale[2], float offset[2]);
 
 /* The text inside pigment{ } that samples image i of pt as GL samples
- * texture t: `uv_mapping image_map{png "NAME" gamma 2.2 interpolate 2}`.
+ * texture t: `uv_mapping image_map{png "NAME" gamma 2.2 interpolate 2}`,
+ * with pt->quick ` quick_color rgb<mean>` after it.
  * Returns the number of bytes (< POVTEX_PIGMENT_MAX) written to buf. */
-#define POVTEX_PIGMENT_MAX 128
+#define POVTEX_PIGMENT_MAX 192
 size_t povtex_pigment(const povtex *pt, size_t i, const scene_texture *t,
                       char buf[POVTEX_PIGMENT_MAX]);
 
@@ -86,10 +88,11 @@ size_t povtex_image_pigment(const povtex *pt, size_t i, bool linear,
 size_t povtex_declared(outbuf *ob, povtex *pt, size_t i, bool linear,
                        char name[POVTEX_DECLARED_MAX]);
 
-/* Adds a copy of the frame's image of bitmaps and pixel rectangles
- * (scene.overlay: w x h RGBA, bottom row first; its alpha kept, 0 where
- * nothing was drawn). Returns its index in pt, -1 when memory ran out. */
-int povtex_overlay(povtex *pt, const uint8_t *rgba, int w, int h);
+/* Adds a copy of the cw x ch box at (x0, y0) of the frame's image of
+ * bitmaps and pixel rectangles (scene.overlay: RGBA rows of w pixels,
+ * bottom row first; its alpha kept, 0 where nothing was drawn). Returns
+ * its index in pt, -1 when memory ran out. */
+int povtex_overlay(povtex *pt, const uint8_t *rgba, int w, int x0, int y0, int cw, int ch);
 
 /* Vertex colours as one image (docs/mapping.md section 12): per face a
  * 2 x 2 texel block A, B, C, D = B + C - A, which bilinear filtering turns

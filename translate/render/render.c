@@ -696,8 +696,8 @@ static const char *stop_name(int sig)
 
 /* Said by the stop (cleanup_on_stop) once the renders under way are
  * stopped and their partial files removed: what is done, what is not,
- * and that the same command renders the rest. On the stop's thread; the
- * main thread waits on the registry's lock or in waitpid by then. */
+ * and that the same command renders the rest. On the stop's thread, with
+ * the registry's lock held: the tally is as the stop found it. */
 static void say_stopped(int sig)
 {
     size_t total = atomic_load(&tally.total), now = atomic_load(&tally.rendered),
@@ -757,6 +757,9 @@ static int render_local(const render_job *j, size_t *nfailed)
     tally_set(0, 0, 0);
     cleanup_on_stop(say_stopped);
     while (next < j->nstems || active > 0) {
+        /* The tally changes with the lock held, with what it counts: a
+         * stop finds it as things were when the stop came. */
+        cleanup_lock();
         while (!stop && active < jobs && next < j->nstems) {
             size_t i = next++;
             if (up_to_date(j->r, j->stems[i])) {
@@ -777,12 +780,13 @@ static int render_local(const render_job *j, size_t *nfailed)
             }
             active++;
         }
+        tally_set(rendered, skipped, active);
+        cleanup_unlock();
         if (stop && active == 0)
             break;
         if (active == 0)
             continue;
         progress(j, done, j->nstems, rendered, t0);
-        tally_set(rendered, skipped, active);
         int st;
         pid_t pid = waitpid(-1, &st, 0);
         if (pid < 0) {
@@ -790,10 +794,15 @@ static int render_local(const render_job *j, size_t *nfailed)
                 continue;
             break;
         }
+        cleanup_lock();
         for (int s = 0; s < jobs; s++) {
             if (run[s].pid != pid)
                 continue;
             reaped(&run[s]);
+            /* Ctrl-C to the group ends the engines as it reaches us: the
+             * stop, if one came, counts this render as stopped, not
+             * failed, and none starts after it. */
+            cleanup_check();
             if (!run[s].retried && !is_blender(j->r) && transient_failure(st, run[s].tmp_log)) {
                 run[s].retried = 1;
                 if (start_frame(j->prog, j->r, j->stems[run[s].index], threads, &run[s]) == 0)
@@ -811,6 +820,8 @@ static int render_local(const render_job *j, size_t *nfailed)
             active--;
             done++;
         }
+        tally_set(rendered, skipped, active);
+        cleanup_unlock();
     }
     cleanup_on_stop(NULL);
     progress(j, done, j->nstems, rendered, t0);
@@ -1142,7 +1153,10 @@ int render_task(const render_settings *r, const char *prog, const char *dir, lon
             int st;
             while (waitpid(run.pid, &st, 0) < 0 && errno == EINTR)
                 ;
+            cleanup_lock();
             reaped(&run);
+            cleanup_check(); /* Ctrl-C to the group: a stop, not a failure */
+            cleanup_unlock();
             if (attempt == 0 && !is_blender(r) && transient_failure(st, run.tmp_log))
                 continue;
             rc = finish_frame(prog, r, stem, st, false, &run) ? 0 : 1;

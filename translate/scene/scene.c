@@ -583,3 +583,17 @@ bool scene_lights_specular_channels(const scene_light *l, size_t n, double t[3])
     return true;
 }
 
+bool scene_needs_quality6(const scene *s)
+{
+    for (size_t i = 0; i < s->nmeshes; i++) {
+        const scene_mesh *m = &s->meshes[i];
+        if (m->tri_count > 0 && (m->look.texture >= 0 || m->look.texture1 >= 0 ||
+                                 m->look.blend == SCENE_BLEND_ALPHA))
+            return true;
+    }
+    size_t n = s->overlay ? (size_t)s->overlay_w * (size_t)s->overlay_h : 0;
+    for (size_t p = 0; p < n; p++)
+        if (s->overlay[4 * p + 3] != 0 && s->overlay[4 * p + 3] != 255)
+            return true;
+    return false;
+}

@@ -380,6 +380,7 @@ typedef struct scene {
      * coordinates when there is one; look.c). */
     bool have_view;
     mat4 view;
+    double view_look_at[3]; /* that gluLookAt's centre, world coordinates */
 
     /* Bitmaps and pixel rectangles (interp_pixels.c): one RGBA image of
      * overlay_w x overlay_h pixels, the camera's viewport, bottom row
@@ -472,6 +473,10 @@ bool scene_texture_sampling_same(const scene_texture *a, const scene_texture *b)
 int32_t scene_material_index(scene *s, const scene_material *m);
 
 bool scene_look_equal(const scene_look *a, const scene_look *b);
+
+/* Whether the scene needs what POV-Ray computes only from quality 6 up:
+ * a textured or blended mesh, or a translucent pixel of the overlay. */
+bool scene_needs_quality6(const scene *s);
 
 /* The one multiple r of their diffuse colours (scene_light.color) that
  * fits the specular colours of lights l[0..n-1] best (least squares over

@@ -38,12 +38,20 @@ static int write_png(FILE *f, const uint8_t *rgba, int w, int h, bool alpha)
                  alpha ? PNG_COLOR_TYPE_RGBA : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_set_gAMA(png, info, 1.0 / 2.2);
-    /* Stored, not compressed: deflate was 5% of a large frame's translation
-     * for 0.6 MB a frame saved beside 16 MB of SDL (vertex-colour grids
-     * hardly compress), and POV-Ray reads a stored PNG faster. A texture
-     * is written once however many frames use it. */
-    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
-    png_set_compression_level(png, 0);
+    /* Large images stored, not compressed: deflate was 5% of a large
+     * frame's translation for 0.6 MB a frame saved beside 16 MB of SDL
+     * (vertex-colour grids hardly compress), and POV-Ray reads a stored
+     * PNG faster. A texture is written once however many frames use it.
+     * Small ones (a HUD's text, a frame's overlay) compressed: they cost
+     * little time and are written again each frame they change. */
+    size_t raw = (size_t)w * (size_t)h * ch;
+    if (raw <= PNGOUT_COMPRESS_MAX) {
+        png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_ALL_FILTERS);
+        png_set_compression_level(png, raw <= PNGOUT_COMPRESS_MAX / 4 ? 6 : 1);
+    } else {
+        png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
+        png_set_compression_level(png, 0);
+    }
     png_write_info(png, info);
     for (int y = h - 1; y >= 0; y--) { /* GL's bottom row is the file's last */
         const uint8_t *s = rgba + (size_t)y * (size_t)w * 4;

@@ -6,6 +6,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* Images of at most this many bytes (w x h x 3 or 4) are deflated (level
+ * 6 up to a quarter of it, else 1); larger ones are stored. */
+#define PNGOUT_COMPRESS_MAX (1u << 20)
+
 /* Writes w x h RGBA texels (bottom row first, as GL holds them) as
  * DIR/NAME, top row first, RGB or (alpha) RGBA, 8 bits, tagged gAMA
  * 1/2.2 as the frames are. NAME is a bare file name. The file is written
