@@ -162,10 +162,14 @@ typedef struct gl_attribs {
         int32_t clear;
     } stencil; /* GL_STENCIL_BUFFER_BIT */
     struct {
+        float clear[4]; /* glClearAccum, clamped to [-1, 1] */
+    } accum; /* GL_ACCUM_BUFFER_BIT */
+    struct {
         float size;
         /* glPointParameter (GL 1.4 3.3): the derived size's clamp, the
          * size below which points fade, the distance attenuation. */
         float size_min, size_max, fade_threshold, atten[3];
+        GLenum sprite_origin; /* GL_POINT_SPRITE_COORD_ORIGIN */
     } point; /* GL_POINT_BIT */
     struct {
         int32_t rect[4]; /* x, y, width, height */
@@ -177,8 +181,10 @@ typedef struct gl_attribs {
     } transform; /* GL_TRANSFORM_BIT */
     struct {
         float clear[4];
-        GLenum blend_src, blend_dst, alpha_func;
+        GLenum blend_src, blend_dst, alpha_func; /* blend_*: the colour's factors */
         GLenum blend_equation, logic_op;
+        GLenum blend_src_alpha, blend_dst_alpha, blend_equation_alpha;
+        float blend_color[4]; /* glBlendColor */
         float alpha_ref;
         bool mask[4];
         GLenum draw_buffer; /* glDrawBuffer; INTERP_DRAW_BUFFER_DEFAULT: the
@@ -213,6 +219,8 @@ typedef struct gl_attribs {
         double obj_plane[4][4];   /* GL_OBJECT_PLANE */
         double eye_plane[4][4];   /* GL_EYE_PLANE, times the inverse modelview
                                      current at the glTexGen call */
+        bool coord_replace;       /* GL_POINT_SPRITE's GL_COORD_REPLACE */
+        float lod_bias;           /* GL_TEXTURE_FILTER_CONTROL's GL_TEXTURE_LOD_BIAS */
     } texture; /* GL_TEXTURE_BIT */
     struct {
         int32_t grid_n[2][2];    /* [dimension - 1][u, v]: glMapGrid's partitions */
@@ -221,8 +229,11 @@ typedef struct gl_attribs {
     struct {
         float zoom[2];         /* glPixelZoom */
         float scale[4], bias[4]; /* GL_RED_SCALE .. GL_ALPHA_BIAS */
-        uint32_t others;       /* other glPixelTransfer pnames set away from
-                                  their defaults (not translated) */
+        bool map_color;        /* GL_MAP_COLOR */
+        /* glPixelMap: GL_PIXEL_MAP_I_TO_I .. GL_PIXEL_MAP_A_TO_A in order,
+         * each map_size entries (GL 2.1 table 6.18: initially one, 0) */
+        uint16_t map_size[10];
+        float map[10][256];
     } pixel; /* GL_PIXEL_MODE_BIT */
     struct {
         int32_t box[4]; /* x, y, width, height */

@@ -236,7 +236,8 @@ static int32_t texture_index(writer *w, int32_t t)
     outbuf_u64(&w->images.ob, view);
     outbuf_putc(&w->images.ob, '}');
     w->st.images++;
-    /* GL_CLAMP's border colour has no glTF counterpart: clamped to the edge. */
+    /* The border colour (GL_CLAMP, GL_CLAMP_TO_BORDER) has no glTF
+     * counterpart: clamped to the edge. */
     size_t smp = item(&w->samplers);
     outbuf *o = &w->samplers.ob;
     outbuf_puts(o, "{\"magFilter\":");
@@ -249,7 +250,7 @@ static int32_t texture_index(writer *w, int32_t t)
     outbuf_u64(o, tx->repeat_t ? GL_REPEAT : GL_CLAMP_TO_EDGE);
     outbuf_putc(o, '}');
     if ((!tx->repeat_s && tx->border_s) || (!tx->repeat_t && tx->border_t))
-        note(w, "GL_CLAMP's border colour: clamped to the edge texel");
+        note(w, "the border colour of GL_CLAMP and GL_CLAMP_TO_BORDER: clamped to the edge texel");
     size_t k = item(&w->textures);
     outbuf_puts(&w->textures.ob, "{\"sampler\":");
     outbuf_u64(&w->textures.ob, smp);
@@ -351,6 +352,9 @@ static int32_t material_index(writer *w, const scene_look *look, bool lines, boo
     }
     if (look->blend == SCENE_BLEND_ALPHA) {
         outbuf_puts(&m, ",\"alphaMode\":\"BLEND\"");
+        if (look->filter > 0)
+            note(w, "blending that multiplies the colour behind (a filter): written as alpha "
+                    "blending of the colour, which glTF's BLEND mode has alone");
         if (look->alpha_test != SCENE_ALPHA_OFF)
             note(w, "the alpha test of a blended draw: not written (glTF has one alpha mode)");
     } else if (look->alpha_test == SCENE_ALPHA_ABOVE) {
@@ -475,6 +479,24 @@ static bool normal_matrix(const mat4 *m, double n[3][3])
             n[r][c] = (a[r1][c1] * a[r2][c2] - a[r1][c2] * a[r2][c1]) / det;
         }
     return true;
+}
+
+/* A look's filter (scene_look.filter: what is behind shows as filter x
+ * colour + transmit) as the alpha blending glTF has: what is behind keeps
+ * the mean of its weights, the surface adds its own share (noted where
+ * the material says BLEND). */
+static void filter_as_alpha(const scene_look *look, const float c[4], float out[4])
+{
+    memcpy(out, c, 4 * sizeof *out);
+    if (look->blend != SCENE_BLEND_ALPHA || !(look->filter > 0))
+        return;
+    double f = look->filter < 1 ? look->filter : 1, t = fmax(0, 1 - f - c[3]), keep = 0;
+    for (int k = 0; k < 3; k++)
+        keep += (f * c[k] + t) / 3;
+    double a = fmin(1, fmax(0, 1 - keep));
+    for (int k = 0; k < 3; k++)
+        out[k] = a > 0 ? (float)(c[3] * c[k] / a) : 0;
+    out[3] = (float)a;
 }
 
 /* Appends one vertex to the primitive: position through m (NULL: as is),
@@ -661,7 +683,9 @@ static void mesh_faces(writer *w, const scene_mesh *me, const mat4 *m, double (*
             const scene_vertex *cv = me->look.flat ? pv : v;
             double n[3] = {cv->normal[0], cv->normal[1], cv->normal[2]};
             uint32_t k = (uint32_t)w->nv;
-            push_vertex(w, p, n, cv->color, v->tex, m, nm);
+            float fc[4];
+            filter_as_alpha(&me->look, cv->color, fc);
+            push_vertex(w, p, n, fc, v->tex, m, nm);
             add_index(w, k);
             if (!me->look.flat) {
                 w->stamp[g] = w->gen;
