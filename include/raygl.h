@@ -213,6 +213,11 @@ RAYGL_API void rayglDrawPixels(GLsizei width, GLsizei height, GLenum format, GLe
 RAYGL_API void rayglCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type);
 /* The polygon stipple: its 32 x 32 mask read as glBitmap's bits. */
 RAYGL_API void rayglPolygonStipple(const GLubyte *mask);
+/* The pixel maps: the mapsize values GL reads (client memory or the
+ * unpack buffer), where GL takes the map. */
+RAYGL_API void rayglPixelMapfv(GLenum map, GLsizei mapsize, const GLfloat *values);
+RAYGL_API void rayglPixelMapuiv(GLenum map, GLsizei mapsize, const GLuint *values);
+RAYGL_API void rayglPixelMapusv(GLenum map, GLsizei mapsize, const GLushort *values);
 /* The draw buffer, with the context's colour buffers (double-buffered,
  * stereo) as found at the call. */
 RAYGL_API void rayglDrawBuffer(GLenum mode);

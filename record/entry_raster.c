@@ -14,6 +14,7 @@
 #include <math.h>
 
 #include <GL/gl.h>
+#include <string.h>
 
 #include "raygl.h"
 #include "recorder.h"
@@ -170,4 +171,66 @@ RGL_EXPORT void rayglPolygonStipple(const GLubyte *mask)
             rgl_record(RGL_OP_PolygonStipple, "e", (uint32_t)id);
     }
     glPolygonStipple(mask);
+}
+
+/* GL 2.1 3.6.3: the maps GL knows, with 1 to GL_MAX_PIXEL_MAP_TABLE (256
+ * in Mesa) entries, a power of two for those indexed by an index. */
+static bool pixel_map_ok(GLenum map, GLsizei size)
+{
+    if (map < GL_PIXEL_MAP_I_TO_I || map > GL_PIXEL_MAP_A_TO_A || size < 1 || size > 256)
+        return false;
+    bool indexed = map <= GL_PIXEL_MAP_I_TO_A;
+    return !indexed || (size & (size - 1)) == 0;
+}
+
+/* Records a pixel map of size elements of es bytes (4: float or unsigned
+ * int, 2: unsigned short) as a blob of little-endian values. */
+static void pixel_map(uint32_t op, GLenum map, GLsizei size, const void *values, size_t es)
+{
+    rgl_stream *s;
+    if (!rgl_reserve(&s, 1) || raster_in_begin(s) || !pixel_map_ok(map, size))
+        return;
+    uint8_t raw[256 * 4], le[256 * 4];
+    size_t n = (size_t)size * es;
+    uint32_t pbo = rgl_buffer_binding(s, GL_PIXEL_UNPACK_BUFFER);
+    bool ok;
+    if (pbo)
+        ok = rgl_buffer_gather(GL_PIXEL_UNPACK_BUFFER, pbo, rgl_buffer_live(), (uintptr_t)values, n,
+                               n, 1, raw);
+    else
+        ok = values && memcpy(raw, values, n);
+    if (!ok) {
+        rgl_record(RGL_OP_Skipped, "ee", op, (uint32_t)RGL_SKIP_NO_DATA);
+        return;
+    }
+    for (size_t i = 0; i < (size_t)size; i++) {
+        if (es == 2) {
+            uint16_t v;
+            memcpy(&v, raw + i * 2, 2);
+            rgl_put_us(le + i * 2, v);
+        } else {
+            uint32_t v;
+            memcpy(&v, raw + i * 4, 4);
+            rgl_put_u32(le + i * 4, v);
+        }
+    }
+    rgl_record(op, "eiB", map, size, (const void *)le, n);
+}
+
+RGL_EXPORT void rayglPixelMapfv(GLenum map, GLsizei mapsize, const GLfloat *values)
+{
+    pixel_map(RGL_OP_PixelMapfv, map, mapsize, values, 4);
+    glPixelMapfv(map, mapsize, values);
+}
+
+RGL_EXPORT void rayglPixelMapuiv(GLenum map, GLsizei mapsize, const GLuint *values)
+{
+    pixel_map(RGL_OP_PixelMapuiv, map, mapsize, values, 4);
+    glPixelMapuiv(map, mapsize, values);
+}
+
+RGL_EXPORT void rayglPixelMapusv(GLenum map, GLsizei mapsize, const GLushort *values)
+{
+    pixel_map(RGL_OP_PixelMapusv, map, mapsize, values, 2);
+    glPixelMapusv(map, mapsize, values);
 }

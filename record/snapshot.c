@@ -36,6 +36,7 @@ static const GLenum caps_off[] = {
     GL_MAP1_TEXTURE_COORD_4, GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP2_COLOR_4, GL_MAP2_INDEX,
     GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1, GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3,
     GL_MAP2_TEXTURE_COORD_4, GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_POLYGON_STIPPLE,
+    GL_COLOR_LOGIC_OP, GL_SCISSOR_TEST,
 };
 
 static GLint get_i(GLenum pname)
@@ -172,6 +173,42 @@ static void snap_stencil(rgl_buf *b)
     rgl_emit(b, RGL_OP_ClearStencil, "i", v[7]);
     if (glIsEnabled(GL_STENCIL_TEST))
         rgl_emit(b, RGL_OP_Enable, "e", GL_STENCIL_TEST);
+}
+
+/* The pixel transfer of colours (scales, biases, GL_MAP_COLOR, where they
+ * differ from GL's initial state) and every pixel map that is not GL's
+ * initial one (one entry, 0): near the end of the snapshot, as the maps'
+ * rows are 1.4's. glGetPixelMap writes into a bound pack buffer: set
+ * aside for the reads. */
+static void snap_pixel(const rgl_stream *s, rgl_buf *b)
+{
+    if (s->pack_buffer)
+        glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    static const GLenum scale[8] = {GL_RED_SCALE, GL_GREEN_SCALE, GL_BLUE_SCALE, GL_ALPHA_SCALE,
+                                    GL_RED_BIAS, GL_GREEN_BIAS, GL_BLUE_BIAS, GL_ALPHA_BIAS};
+    for (int k = 0; k < 8; k++) {
+        GLfloat v = k < 4 ? 1 : 0;
+        glGetFloatv(scale[k], &v);
+        if (v != (k < 4 ? 1 : 0))
+            rgl_emit(b, RGL_OP_PixelTransferf, "ef", scale[k], (double)v);
+    }
+    if (get_i(GL_MAP_COLOR))
+        rgl_emit(b, RGL_OP_PixelTransferi, "ei", GL_MAP_COLOR, 1);
+    for (GLenum m = GL_PIXEL_MAP_I_TO_I; m <= GL_PIXEL_MAP_A_TO_A; m++) {
+        GLint size = get_i(GL_PIXEL_MAP_I_TO_I_SIZE + (m - GL_PIXEL_MAP_I_TO_I));
+        if (size < 1 || size > 256)
+            continue;
+        GLfloat v[256] = {0};
+        glGetPixelMapfv(m, v);
+        if (size == 1 && v[0] == 0)
+            continue;
+        uint8_t le[256 * 4];
+        for (GLint i = 0; i < size; i++)
+            rgl_put_f(le + i * 4, v[i]);
+        rgl_emit(b, RGL_OP_PixelMapfv, "eiB", m, size, (const void *)le, (size_t)size * 4);
+    }
+    if (s->pack_buffer)
+        glBindBuffer(GL_PIXEL_PACK_BUFFER, s->pack_buffer);
 }
 
 /* The back faces' stencil state (GL 2.0), only where it differs from the
@@ -319,6 +356,30 @@ static void snap_eval(rgl_buf *b)
     }
 }
 
+/* The blend colour, the separate blend functions and equations and the
+ * logic op, each where the context has it (GL 1.4 and 2.0, or their
+ * extensions; the blend equation with ARB_imaging too): after glBlendFunc
+ * and near the end of the snapshot, as the first three are 1.4's rows. */
+static void snap_blend(rgl_buf *b)
+{
+    if (rgl_gl_has(1, 4, "GL_EXT_blend_color") || rgl_gl_has(1, 4, "GL_ARB_imaging")) {
+        GLfloat c[4] = {0, 0, 0, 0};
+        glGetFloatv(GL_BLEND_COLOR, c);
+        rgl_emit(b, RGL_OP_BlendColor, "ffff", (double)c[0], (double)c[1], (double)c[2],
+                 (double)c[3]);
+    }
+    if (rgl_gl_has(1, 4, "GL_EXT_blend_func_separate"))
+        rgl_emit(b, RGL_OP_BlendFuncSeparate, "eeee", (uint32_t)get_i(GL_BLEND_SRC_RGB),
+                 (uint32_t)get_i(GL_BLEND_DST_RGB), (uint32_t)get_i(GL_BLEND_SRC_ALPHA),
+                 (uint32_t)get_i(GL_BLEND_DST_ALPHA));
+    if (rgl_gl_has(2, 0, "GL_EXT_blend_equation_separate"))
+        rgl_emit(b, RGL_OP_BlendEquationSeparate, "ee", (uint32_t)get_i(GL_BLEND_EQUATION_RGB),
+                 (uint32_t)get_i(GL_BLEND_EQUATION_ALPHA));
+    else if (rgl_gl_has(1, 4, "GL_ARB_imaging") || rgl_gl_has(1, 4, "GL_EXT_blend_minmax"))
+        rgl_emit(b, RGL_OP_BlendEquation, "e", (uint32_t)get_i(GL_BLEND_EQUATION));
+    rgl_emit(b, RGL_OP_LogicOp, "e", (uint32_t)get_i(GL_LOGIC_OP_MODE));
+}
+
 static void snap_raster(rgl_buf *b)
 {
     GLfloat fc[4] = {0};
@@ -349,6 +410,14 @@ static void snap_raster(rgl_buf *b)
     GLdouble cd[2] = {1, 0};
     glGetDoublev(GL_DEPTH_CLEAR_VALUE, cd);
     rgl_emit(b, RGL_OP_ClearDepth, "d", cd[0]);
+    GLfloat ca[4] = {0};
+    glGetFloatv(GL_ACCUM_CLEAR_VALUE, ca);
+    rgl_emit(b, RGL_OP_ClearAccum, "ffff", (double)ca[0], (double)ca[1], (double)ca[2],
+             (double)ca[3]);
+    GLint sb[4] = {0, 0, 0, 0};
+    glGetIntegerv(GL_SCISSOR_BOX, sb);
+    if (sb[2] >= 0 && sb[3] >= 0)
+        rgl_emit(b, RGL_OP_Scissor, "iiii", sb[0], sb[1], sb[2], sb[3]);
     rgl_emit(b, RGL_OP_ShadeModel, "e", (uint32_t)get_i(GL_SHADE_MODEL));
     rgl_emit(b, RGL_OP_FrontFace, "e", (uint32_t)get_i(GL_FRONT_FACE));
     rgl_emit(b, RGL_OP_CullFace, "e", (uint32_t)get_i(GL_CULL_FACE_MODE));
@@ -359,6 +428,24 @@ static void snap_raster(rgl_buf *b)
     rgl_emit(b, RGL_OP_PolygonOffset, "ff", (double)get_f(GL_POLYGON_OFFSET_FACTOR),
              (double)get_f(GL_POLYGON_OFFSET_UNITS));
     rgl_emit(b, RGL_OP_PointSize, "f", (double)get_f(GL_POINT_SIZE));
+    /* Point parameters (GL 1.4) and sprites (GL 2.0), where the context
+     * has them. */
+    if (rgl_gl_has(1, 4, "GL_ARB_point_parameters")) {
+        GLfloat att[3] = {1, 0, 0};
+        glGetFloatv(GL_POINT_DISTANCE_ATTENUATION, att);
+        rgl_emit(b, RGL_OP_PointParameterf, "ef", GL_POINT_SIZE_MIN, (double)get_f(GL_POINT_SIZE_MIN));
+        rgl_emit(b, RGL_OP_PointParameterf, "ef", GL_POINT_SIZE_MAX, (double)get_f(GL_POINT_SIZE_MAX));
+        rgl_emit(b, RGL_OP_PointParameterf, "ef", GL_POINT_FADE_THRESHOLD_SIZE,
+                 (double)get_f(GL_POINT_FADE_THRESHOLD_SIZE));
+        rgl_emit(b, RGL_OP_PointParameterfv, "eN", GL_POINT_DISTANCE_ATTENUATION, att, 3);
+    }
+    if (rgl_gl_has(2, 0, "GL_ARB_point_sprite")) {
+        if (glIsEnabled(GL_POINT_SPRITE))
+            rgl_emit(b, RGL_OP_Enable, "e", GL_POINT_SPRITE);
+        if (rgl_gl_has(2, 0, "GL_VERSION_2_0")) /* core alone has the origin */
+            rgl_emit(b, RGL_OP_PointParameteri, "ei", GL_POINT_SPRITE_COORD_ORIGIN,
+                     get_i(GL_POINT_SPRITE_COORD_ORIGIN));
+    }
     rgl_emit(b, RGL_OP_LineWidth, "f", (double)get_f(GL_LINE_WIDTH));
     GLint vp[4] = {0};
     glGetIntegerv(GL_VIEWPORT, vp);
@@ -428,6 +515,9 @@ bool rgl_snapshot_take(rgl_stream *s, rgl_buf *out)
     rgl_quadrics_snapshot(out);
     snap_lists(s, out);
     snap_matrices(out, mode);
+    /* 1.4's rows last: a 1.3 reader stops at the first of them. */
+    snap_blend(out);
+    snap_pixel(s, out);
     snap_stencil_back(out);
     snap_draw_buffer(out);
     return true;

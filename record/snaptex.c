@@ -46,6 +46,8 @@ uint32_t rgl_tex_slot_target(int slot)
     return slot >= 0 && slot < RGL_TEX_TARGETS ? tex_targets[slot] : 0;
 }
 
+/* Whether the current context is GL major.minor or later, or lists
+ * extension ext (a whole name). False without a context. */
 bool rgl_gl_has(int major, int minor, const char *ext)
 {
     const char *v = (const char *)glGetString(GL_VERSION);
@@ -161,6 +163,21 @@ static void snap_texenv(rgl_buf *b)
             glGetTexEnvfv(GL_TEXTURE_ENV, fpn[k], &f);
             rgl_emit(b, RGL_OP_TexEnvf, "eef", GL_TEXTURE_ENV, fpn[k], (double)f);
         }
+    }
+    /* The unit's level-of-detail bias (GL 1.4) and point-sprite coordinate
+     * replacement (GL 2.0), where the context has them. */
+    if (rgl_gl_has(1, 4, "GL_EXT_texture_lod_bias")) {
+        GLfloat bias = 0;
+        glGetTexEnvfv(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, &bias);
+        if (bias != 0)
+            rgl_emit(b, RGL_OP_TexEnvf, "eef", GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS,
+                     (double)bias);
+    }
+    if (rgl_gl_has(2, 0, "GL_ARB_point_sprite")) {
+        GLint replace = GL_FALSE;
+        glGetTexEnviv(GL_POINT_SPRITE, GL_COORD_REPLACE, &replace);
+        if (replace)
+            rgl_emit(b, RGL_OP_TexEnvi, "eei", GL_POINT_SPRITE, GL_COORD_REPLACE, GL_TRUE);
     }
     /* GL keeps eye planes in eye space: under the snapshot's identity
      * modelview they go in as read back. */

@@ -111,7 +111,7 @@ static int header(void)
 static const char *const forward_extra[] = {
     "glGetBooleanv", "glGetBufferParameteriv", "glGetBufferSubData", "glGetDoublev", "glGetError", "glGetFloatv",
     "glGetIntegerv", "glGetLightfv", "glGetMapdv", "glGetMapiv", "glGetMaterialfv", "glGetClipPlane",
-    "glGetPolygonStipple",
+    "glGetPixelMapfv", "glGetPolygonStipple",
     "glGetPointerv", "glGetString",
     "glGetTexEnvfv", "glGetTexEnviv", "glGetTexGenfv", "glGetTexGeniv", "glGetTexImage",
     "glGetTexLevelParameteriv", "glGetTexParameterfv", "glGetTexParameteriv", "glIsBuffer",

@@ -34,7 +34,7 @@
  *   --ignore-term       ignore SIGTERM (raygl record --exit then kills)
  *   --unrecorded        each frame also makes calls RayGL passes through
  *                       unrecorded (glIndexi, glIndexMask,
- *                       glBlendColor found with
+ *                       glSampleCoverage found with
  *                       glXGetProcAddressARB) and queries (glGetError,
  *                       glGetIntegerv, glIsEnabled); with --api glut
  *                       also bitmap text after the triangle
@@ -141,11 +141,10 @@ static void unrecorded_calls(void)
 {
     glIndexi(0);
     glIndexMask(~0u);
-    void (*blend_color)(GLfloat, GLfloat, GLfloat, GLfloat) =
-        (void (*)(GLfloat, GLfloat, GLfloat, GLfloat))glXGetProcAddressARB(
-            (const GLubyte *)"glBlendColor");
-    if (blend_color)
-        blend_color(0, 0, 0, 0);
+    void (*sample_coverage)(GLfloat, GLboolean) =
+        (void (*)(GLfloat, GLboolean))glXGetProcAddressARB((const GLubyte *)"glSampleCoverage");
+    if (sample_coverage)
+        sample_coverage(1, GL_FALSE);
     GLint v[4];
     glGetIntegerv(GL_VIEWPORT, v);
     (void)glIsEnabled(GL_LIGHTING);

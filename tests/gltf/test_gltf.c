@@ -419,6 +419,49 @@ static void test_colour_material_ambient(void)
     scene_finish(&s);
 }
 
+/* A look's filter (a multiplying blend): glTF has alpha blending alone, so
+ * what is behind keeps the mean of its weights (the vertex's own alpha
+ * alone would leave a pure filter, alpha 0, invisible). */
+static void test_filter_as_alpha(void)
+{
+    scene s;
+    scene_init(&s);
+    camera_perspective(&s, 40, 4.0 / 3, 1, 30);
+    scene_look l = unlit();
+    l.blend = SCENE_BLEND_ALPHA;
+    l.filter = 0.5f;
+    mat4 m = mat4_translate(0, 0, -5);
+    CHECK(scene_mesh_for(&s, &m, false, &l) != NULL);
+    uint32_t v[3];
+    for (int k = 0; k < 3; k++) {
+        v[k] = vert(&s, (float)(k == 1), (float)(k == 2), 0, 0.4f, 0.4f, 0.4f);
+        s.verts[v[k]].color[3] = 0.2f;
+    }
+    CHECK(scene_add_tri(&s, v[0], v[1], v[2], v[2]));
+    gltf_stats st;
+    outbuf ob;
+    char *j = write_glb(&s, "filter_as_alpha", &st, &ob);
+    CHECK(strstr(j, "a filter): written as alpha") != NULL);
+    CHECK(count(j, "\"alphaMode\":\"BLEND\"") == 1);
+    /* transmit 1 - 0.5 - 0.2 = 0.3, behind kept 0.5 x 0.4 + 0.3 = 0.5: alpha
+     * 0.5, colour 0.2 x 0.4 / 0.5 = 0.16 (linear 0.02217) */
+    const char *c = strstr(j, "\"COLOR_0\":");
+    CHECK(c != NULL);
+    if (c) {
+        int acc = atoi(c + strlen("\"COLOR_0\":"));
+        int view = (int)jnum(j, "bufferView", acc);
+        size_t off = (size_t)jnum(j, "byteOffset", view);
+        const uint8_t *bin = (const uint8_t *)ob.buf + 20 + le32((const uint8_t *)ob.buf + 12) + 8;
+        float col[4];
+        memcpy(col, bin + off, sizeof col);
+        CHECK_NEAR(col[3], 0.5, 1e-6);
+        CHECK_NEAR(col[0], pow((0.16 + 0.055) / 1.055, 2.4), 1e-6);
+    }
+    outbuf_finish(&ob);
+    free(j);
+    scene_finish(&s);
+}
+
 static void test_solids_lines_textures(void)
 {
     scene s;
@@ -574,6 +617,7 @@ int main(int argc, char **argv)
     test_instancing();
     test_materials_lights();
     test_colour_material_ambient();
+    test_filter_as_alpha();
     test_solids_lines_textures();
     test_determinism_and_failures();
     test_from_trace();

@@ -1,10 +1,10 @@
-/* quiet_unrec_blend.c: glBlendColor, not recorded, where a draw blends with
- * its colour (GL_CONSTANT_COLOR): the scene lacks it, and raygl2pov must say
- * which call and what it changes (issue 22).
+/* quiet_unrec_blend.c: glBlendColor where a draw blends with its colour
+ * (GL_CONSTANT_COLOR), through the drop-in header (issue 22). Not recorded
+ * before format 1.4, the scene lacked it and raygl2pov said which call and
+ * what it changes; recorded now, the frame is exact and nothing is said.
  *
  * GL draws the white rectangle as the source times the constant colour,
- * (0.25, 0.5, 1); the scene draws the factor as GL_SRC_ALPHA's (NOTE_BLEND
- * says so too): white. The other two rectangles are exact.
+ * (0.25, 0.5, 1). The other two rectangles are exact either way.
  */
 #include "harness.h"
 

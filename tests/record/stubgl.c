@@ -351,6 +351,11 @@ void glGetLightfv(GLenum l, GLenum pname, GLfloat *v) { (void)l, (void)pname, (v
 void glGetMapdv(GLenum t, GLenum q, GLdouble *v) { (void)t, (void)q, (void)v; }
 void glGetClipPlane(GLenum p, GLdouble *v) { (void)p, (void)v; }
 unsigned char stub_pstipple_holes[128];
+void glGetPixelMapfv(GLenum map, GLfloat *values)
+{
+    LOGV("glGetPixelMapfv", map);
+    values[0] = 0;
+}
 void glGetPolygonStipple(GLubyte *mask)
 {
     LOG0("glGetPolygonStipple");
@@ -490,6 +495,21 @@ void glPolygonStipple(const GLubyte *mask)
 void glCopyPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type)
 {
     LOGV("glCopyPixels", x, y, w, h, type);
+}
+void glPixelMapfv(GLenum map, GLsizei mapsize, const GLfloat *values)
+{
+    LOGV("glPixelMapfv", map, mapsize);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], values);
+}
+void glPixelMapuiv(GLenum map, GLsizei mapsize, const GLuint *values)
+{
+    LOGV("glPixelMapuiv", map, mapsize);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], values);
+}
+void glPixelMapusv(GLenum map, GLsizei mapsize, const GLushort *values)
+{
+    LOGV("glPixelMapusv", map, mapsize);
+    arg_p(&stub_log[(stub_nlog - 1) % STUB_LOG_MAX], values);
 }
 void glDrawBuffer(GLenum mode)
 {

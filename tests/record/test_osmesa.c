@@ -150,8 +150,25 @@ static void test_two_frames(const char *path)
         CHECK(trace_cmds_find(&s, 0, "glLoadIdentity()") == 1);
         CHECK(trace_cmds_find(&s, 0, "glLoadMatrixf(") > 0);
         CHECK(trace_cmds_find(&s, 0, "glViewport(x=0, y=0, width=64, height=64)") > 0);
-        /* Ends by restoring the matrix mode current at the frame start. */
-        CHECK(s.count > 0 && strcmp(s.lines[s.count - 1], "glMatrixMode(mode=GL_MODELVIEW)") == 0);
+        /* Restores the matrix mode current at the frame start after the
+         * matrices; only format 1.4's rows follow (a 1.3 reader stops there). */
+        size_t mm = s.count;
+        for (size_t i = 0; i < s.count; i++)
+            if (strncmp(s.lines[i], "glMatrixMode(", 13) == 0)
+                mm = i;
+        CHECK(mm < s.count && strcmp(s.lines[mm], "glMatrixMode(mode=GL_MODELVIEW)") == 0);
+        static const char *const tail[] = {"glBlendColor(", "glBlendFuncSeparate(",
+                                           "glBlendEquation", "glLogicOp(", "glPixelTransfer",
+                                           "glPixelMap", "glStencilFuncSeparate(",
+                                           "glStencilOpSeparate(", "glStencilMaskSeparate(",
+                                           "glDrawBuffer("};
+        for (size_t i = mm + 1; i < s.count; i++) {
+            bool known = false;
+            for (size_t t = 0; t < sizeof tail / sizeof tail[0]; t++)
+                known = known || strncmp(s.lines[i], tail[t], strlen(tail[t])) == 0;
+            CHECKM(known, "after the matrices: %s", s.lines[i]);
+        }
+        CHECK(trace_cmds_find(&s, mm, "glBlendColor(") > (long)mm);
         if (f == 1) {
             /* Set during frame 0: in eye space, under an identity modelview. */
             CHECK(trace_cmds_find(&s, 0, "glLightfv(light=GL_LIGHT0, pname=GL_POSITION, params=[1, 2, 3, 0])") == 2);

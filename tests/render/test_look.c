@@ -170,7 +170,7 @@ int main(void)
         s = build(lookat);
         opt_init(&o);
         CHECK(set(&o, opt_set_camera_orthographic, "on"));
-        look_apply(&o.look, s);
+        CHECK(look_apply(&o.look, s, &note) == 0);
         const scene_camera *c = &s->camera;
         CHECK(c->kind == SCENE_CAMERA_ORTHOGRAPHIC);
         double up = sqrt(c->up[0] * c->up[0] + c->up[1] * c->up[1] + c->up[2] * c->up[2]);

@@ -153,15 +153,15 @@ int main(int argc, char **argv)
 
     /* @NotRecorded (format 1.3): frame 1 carries frame 0's state (replayed
      * without being reported again); a hostile name; a second stream; calls
-     * that cannot change these frames (glutInit: never; glBlendColor: no
-     * draw blends with a constant factor). */
+     * that cannot change these frames (glutInit: never; glCompressedTexImage2D:
+     * no draw is textured). */
     trace_init(&t);
     seq_init(&s);
     scene_smooth(&s);
     seq_cmd(&s, RGL_OP_NotRecorded, "glAccum", (const double[]){1000}, 1);
     seq_cmd(&s, RGL_OP_NotRecorded, "glRasterPos2i", (const double[]){1}, 1);
     seq_cmd(&s, RGL_OP_NotRecorded, "glutInit", (const double[]){1}, 1);
-    seq_cmd(&s, RGL_OP_NotRecorded, "glBlendColor", (const double[]){3}, 1);
+    seq_cmd(&s, RGL_OP_NotRecorded, "glCompressedTexImage2D", (const double[]){3}, 1);
     trace_frame(&t, 0, 0, 0, 0, &s);
     seq_free(&s);
     seq_init(&s);

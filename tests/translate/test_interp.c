@@ -566,9 +566,12 @@ static void lit_triangle(seq *s)
  * POV-Ray (1 - t) k + t behind. SRC_ALPHA, ONE_MINUS_SRC_ALPHA, ONE, ZERO
  * (opaque) and ZERO, ONE (invisible) need nothing; other functions of the
  * source alpha take t = wd, k = ws c / (1 - wd) in the vertex colour,
- * exact but for additive blending (wd = 1: t = 127/128, noted); colour
- * factors and lit surfaces are drawn as SRC_ALPHA, ONE_MINUS_SRC_ALPHA,
- * noted. The triangle's colour is (1, 0.5, 0) with alpha 0.5. */
+ * exact but for additive blending (wd = 1: t = 127/128, noted); the
+ * multiplying GL_DST_COLOR, GL_ZERO is a filter of the colour (alpha 0,
+ * test_blend.c), the framebuffer alpha unknown without a clear (noted as
+ * reading the destination), lit surfaces are drawn as SRC_ALPHA,
+ * ONE_MINUS_SRC_ALPHA, noted. The triangle's colour is (1, 0.5, 0) with
+ * alpha 0.5. */
 static void test_blend(void)
 {
     static const struct {
@@ -586,8 +589,8 @@ static void test_blend(void)
         {GL_ZERO, GL_ONE_MINUS_SRC_ALPHA, false, 0, 0.5f, 0, 0},
         {GL_SRC_ALPHA, GL_ONE, false, 64, 1.0f / 128, 0, 1},        /* additive */
         {GL_ONE, GL_ONE, false, 128, 1.0f / 128, 0, 1},
-        {GL_DST_COLOR, GL_ZERO, false, 1, 0.5f, 1, 0},              /* colour factor */
-        {GL_ONE, GL_DST_ALPHA, false, 1, 0.5f, 1, 0},               /* framebuffer alpha */
+        {GL_DST_COLOR, GL_ZERO, false, 1, 0, 0, 0},                 /* colour factor */
+        {GL_ONE, GL_DST_ALPHA, false, 1, 0.5f, 0, 0},               /* framebuffer alpha */
         {GL_ONE, GL_ONE, true, 0, 0, 1, 0},                         /* lit surface */
     };
     for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
@@ -607,6 +610,7 @@ static void test_blend(void)
             fprintf(stderr, "blend case %zu\n", i);
         CHECK_EQ_U(count(DIAG_NOTE_BLEND), cases[i].note);
         CHECK_EQ_U(count(DIAG_NOTE_BLEND_ADD), cases[i].note_add);
+        CHECK_EQ_U(count(DIAG_NOTE_BLEND_DEST), cases[i].dst == GL_DST_ALPHA);
         CHECK_EQ_U(sc.nverts, 3);
         if (!cases[i].lit && sc.nverts == 3) {
             CHECK_NEAR(sc.verts[0].color[0], cases[i].k0, 1e-5);

@@ -427,7 +427,7 @@ static void test_mip_runs(void)
     povwriter *w = povwriter_create();
     write_sdl_with(w, NULL);
     CHECK(strstr(sdl, "#declare rgl_mip0l=function(x,y){ln(") != NULL);
-    CHECK(strstr(sdl, "uv_mapping function{(min(") != NULL);
+    CHECK(strstr(sdl, "uv_mapping function{min(") != NULL);
     CHECK_EQ_U(povwriter_image(w, 4) != NULL, 1); /* 16, 8, 4, 2, 1 */
     CHECK(povwriter_image(w, 5) == NULL);
     CHECK(strstr(sdl, "nan") == NULL && strstr(sdl, "inf") == NULL);
@@ -531,25 +531,117 @@ static void test_cube(void)
     free_res();
 }
 
-/* GL_CLAMP blends the border under a linear filter: noted; GL_CLAMP_TO_EDGE
+/* GL_CLAMP blends the border under a linear filter: the writer samples
+ * GL's filter every half texel, so no note; only a mipmapped one, whose
+ * levels are padded with the edge texels' mix, is noted. GL_CLAMP_TO_EDGE
  * and GL_CLAMP under GL_NEAREST are exact: no note. */
 static void test_clamp_border(void)
 {
-    static const GLenum wraps[3] = {GL_CLAMP, GL_CLAMP_TO_EDGE, GL_CLAMP};
-    static const GLenum filters[3] = {GL_LINEAR, GL_LINEAR, GL_NEAREST};
-    uint32_t id = add_bytes(px, sizeof px);
-    for (int c = 0; c < 3; c++) {
+    static const GLenum wraps[4] = {GL_CLAMP, GL_CLAMP_TO_EDGE, GL_CLAMP, GL_CLAMP};
+    static const GLenum filters[4] = {GL_LINEAR, GL_LINEAR, GL_NEAREST, GL_LINEAR_MIPMAP_LINEAR};
+    uint32_t id = add_bytes(px, sizeof px), id1 = add_bytes(px, 4);
+    for (int c = 0; c < 4; c++) {
         interp *ip = fresh();
         seq s;
         seq_init(&s);
         texture(&s, id, GL_REPLACE, wraps[c]);
-        CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filters[c]);
+        if (c == 3)
+            CMD(&s, TexImage2D, GL_TEXTURE_2D, 1, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, id1);
+        CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filters[c] == GL_NEAREST ? GL_NEAREST : GL_LINEAR);
         CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filters[c]);
         triangle(&s);
         run(ip, &s);
-        CHECK_EQ_U(count(DIAG_NOTE_TEX_CLAMP_BORDER), c == 0 ? 1 : 0);
+        CHECK_EQ_U(count(DIAG_NOTE_TEX_CLAMP_BORDER), c == 3 ? 1 : 0);
+        CHECK(sc.nmeshes == 1 && sc.meshes[0].look.texture >= 0);
         interp_destroy(ip);
     }
+}
+
+/* GL_TEXTURE_LOD_BIAS of the object plus the unit's (glTexEnv
+ * GL_TEXTURE_FILTER_CONTROL), clamped to GL_MAX_TEXTURE_LOD_BIAS (16), on
+ * each level of the chain; the writer adds it to lambda before the clamp
+ * to GL_TEXTURE_MIN_LOD (written as level min_lod / (n - 1), not 0). */
+static void test_lod_bias(void)
+{
+    uint8_t a[2 * 2 * 3], b[3];
+    memset(a, 200, sizeof a);
+    memset(b, 50, sizeof b);
+    uint32_t ia = add_bytes(a, sizeof a), ib = add_bytes(b, sizeof b);
+    static const float obj[3] = {1.5f, 20, 0.5f}, unit[3] = {0, 0, -1}, want[3] = {1.5f, 16, -0.5f};
+    for (int c = 0; c < 3; c++) {
+        interp *ip = fresh();
+        seq s;
+        seq_init(&s);
+        CMD(&s, BindTexture, GL_TEXTURE_2D, 1);
+        CMD(&s, Enable, GL_TEXTURE_2D);
+        CMD(&s, TexImage2D, GL_TEXTURE_2D, 0, GL_RGB, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, ia);
+        CMD(&s, TexImage2D, GL_TEXTURE_2D, 1, GL_RGB, 1, 1, 0, GL_RGB, GL_UNSIGNED_BYTE, ib);
+        CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_LINEAR);
+        CMD(&s, TexParameterf, GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, obj[c]);
+        CMD(&s, TexParameterf, GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD, 0.5);
+        CMD(&s, TexEnvf, GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, unit[c]);
+        triangle(&s);
+        run(ip, &s);
+        int32_t t = sc.nmeshes == 1 ? sc.meshes[0].look.texture : -1;
+        CHECK(t >= 0 && sc.textures[t].mip_next >= 0);
+        if (t >= 0) {
+            CHECK_NEAR(sc.textures[t].lod_bias, want[c], 1e-6);
+            if (sc.textures[t].mip_next >= 0)
+                CHECK_NEAR(sc.textures[sc.textures[t].mip_next].lod_bias, want[c], 1e-6);
+        }
+        write_sdl();
+        /* The triangle's lambda varies under 1/16 level: one lambda for it
+         * (povwrite_mipmap.c), lambda + bias clamped to [0.5, 1] over one
+         * level: 0.5 under the bias 1.5 and -0.5 (lambda below -1, the
+         * MIN_LOD start, not 0), 1 under 16. A function of the pixel where
+         * lambda varies carries the bias as a term. */
+        static const char *const bias[3] = {"+(1.5)))", "+(16)))", "+(-0.5)))"};
+        static const char *const flat[3] = {"uv_mapping function{(0.5)}", "uv_mapping function{(1)}",
+                                            "uv_mapping function{(0.5)}"};
+        const char *f = strstr(sdl, "uv_mapping function{min((1),max((0.5),rgl_mip0l(x,y)");
+        CHECK(f ? strncmp(f + strlen("uv_mapping function{min((1),max((0.5),rgl_mip0l(x,y)"), bias[c],
+                          strlen(bias[c])) == 0
+                : strstr(sdl, flat[c]) != NULL);
+        interp_destroy(ip);
+    }
+    free_res();
+}
+
+/* GL_COMPARE_R_TO_TEXTURE: with r constant over the triangle the texels
+ * are the comparison's results (GL_LEQUAL, r 0.5: depth 0.2 fails, 0.8
+ * passes), no note; with r varying the depths are drawn, noted. */
+static void test_compare(void)
+{
+    static const float depth[2] = {0.2f, 0.8f};
+    uint32_t id = add_bytes(depth, sizeof depth);
+    for (int c = 0; c < 2; c++) {
+        interp *ip = fresh();
+        seq s;
+        seq_init(&s);
+        CMD(&s, BindTexture, GL_TEXTURE_2D, 1);
+        CMD(&s, Enable, GL_TEXTURE_2D);
+        CMD(&s, TexImage2D, GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, 2, 1, 0, GL_DEPTH_COMPONENT, GL_FLOAT, id);
+        CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        CMD(&s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_R_TO_TEXTURE);
+        CMD(&s, Begin, GL_TRIANGLES);
+        CMD(&s, TexCoord3f, 0, 0, 0.5);
+        CMD(&s, Vertex2f, 0, 0);
+        CMD(&s, TexCoord3f, 1, 0, c ? 0.6 : 0.5);
+        CMD(&s, Vertex2f, 1, 0);
+        CMD(&s, TexCoord3f, 0, 1, 0.5);
+        CMD(&s, Vertex2f, 0, 1);
+        CMD0(&s, End);
+        run(ip, &s);
+        CHECK_EQ_U(count(DIAG_NOTE_TEX_COMPARE), c);
+        int32_t t = sc.nmeshes == 1 ? sc.meshes[0].look.texture : -1;
+        CHECK(t >= 0);
+        if (t >= 0 && c == 0)
+            CHECK(sc.textures[t].rgba[0] == 0 && sc.textures[t].rgba[4] == 255);
+        if (t >= 0 && c == 1) /* the depths: 51, 204 */
+            CHECK(sc.textures[t].rgba[0] == 51 && sc.textures[t].rgba[4] == 204);
+        interp_destroy(ip);
+    }
+    free_res();
 }
 
 int main(void)
@@ -564,6 +656,8 @@ int main(void)
     test_mip_runs();
     test_cube();
     test_clamp_border();
+    test_lod_bias();
+    test_compare();
     scene_finish(&sc);
     return CHECK_RESULT("test_tex_env");
 }

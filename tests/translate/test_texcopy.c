@@ -419,8 +419,8 @@ static void test_texenv_targets(void)
     CMD(&s, TexParameterf, GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, 0);
     run(ip, &s);
     CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 0);
-    CHECK_EQ_U(count(DIAG_NOTE_POINT_SPRITE), 1);
-    CHECK_EQ_U(count(DIAG_NOTE_TEX_LOD_BIAS), 1);
+    /* kept for the draws that use them (test_sprites.c, tex_lod_bias) */
+    CHECK(ip->st.a.texture.coord_replace && ip->st.a.texture.lod_bias == 0.5f);
     seq_init(&s);
     CMD(&s, TexEnvi, GL_POINT_SPRITE, GL_TEXTURE_ENV_MODE, GL_MODULATE);
     CMD(&s, TexEnvi, GL_TEXTURE_FILTER_CONTROL, GL_COORD_REPLACE, 1);
@@ -495,14 +495,20 @@ static void test_point_parameters(void)
     CMD(&s, PointParameterf, GL_POINT_DISTANCE_ATTENUATION, 1);
     CMD(&s, PointParameteri, GL_POINT_SPRITE_COORD_ORIGIN, GL_LOWER_LEFT);
     CMD(&s, PointParameteri, GL_POINT_SPRITE_COORD_ORIGIN, GL_LEFT);
+    CMD(&s, MatrixMode, GL_PROJECTION);
+    CMD(&s, Ortho, -20, 20, -20, 20, -100, 100);
+    CMD(&s, MatrixMode, GL_MODELVIEW);
+    CMD(&s, Begin, GL_POINTS);
+    CMD(&s, Vertex3f, 0, 0, -10); /* 3.92 pixels: above the default threshold of 1 */
+    CMD0(&s, End);
     CMD(&s, PointParameterf, GL_POINT_FADE_THRESHOLD_SIZE, 4);
     run(ip, &s);
     CHECK_EQ_U(count(DIAG_GL_INVALID_VALUE), 1);
     CHECK_EQ_U(count(DIAG_GL_INVALID_ENUM), 2);
-    CHECK_EQ_U(count(DIAG_NOTE_POINT_FADE), 0); /* said where points are drawn */
+    CHECK_EQ_U(count(DIAG_NOTE_POINT_FADE), 0); /* set, nothing drawn under it yet */
     seq_init(&s);
     CMD(&s, Begin, GL_POINTS);
-    CMD(&s, Vertex2f, 0, 0);
+    CMD(&s, Vertex3f, 0, 0, -10); /* now below it */
     CMD0(&s, End);
     run(ip, &s);
     CHECK_EQ_U(count(DIAG_NOTE_POINT_FADE), 1);

@@ -50,12 +50,12 @@ static bool line_is(int i, const char *want)
 static void test_effects(void)
 {
     /* Every row's effect: the window system changes nothing, stroke text
-     * always can, the blend colour needs draws with a constant factor. */
+     * always can, a compressed texture image needs textured draws. */
     const unrec_effect *w = unrec_effect_of("glutInit"), *st = unrec_effect_of("glutStrokeCharacter");
-    const unrec_effect *bc = unrec_effect_of("glBlendColor"), *ps = unrec_effect_of("glPixelStoref");
+    const unrec_effect *bc = unrec_effect_of("glCompressedTexImage2D"), *ps = unrec_effect_of("glPixelStoref");
     CHECK(w && w->never);
     CHECK(st && !st->never && st->needs == 0);
-    CHECK(bc && !bc->never && bc->needs == USE(BLEND_CONSTANT));
+    CHECK(bc && !bc->never && bc->needs == USE(TEXTURE));
     CHECK(ps && ps->needs == (USE(IMAGES) | USE(BATCH)));
     CHECK(unrec_effect_of("glBegin") == NULL);   /* recorded */
     CHECK(unrec_effect_of("glutInitX") == NULL); /* not a name */
@@ -65,17 +65,17 @@ static void test_effects(void)
     unrec_table all;
     unrec_init(&all);
     frame_with(&all, "glutInit", ~0u, 0);      /* never, whatever the frame has */
-    frame_with(&all, "glBlendColor", 0, 1);    /* no use in frame 1 */
+    frame_with(&all, "glCompressedTexImage2D", 0, 1);    /* no use in frame 1 */
     frame_with(&all, "glPixelStoref", USE(IMAGES), 1);
     frame_with(&all, "glReadBuffer", 0, 2);
     frame_with(&all, "glutStrokeCharacter", 0, 2);
-    frame_with(&all, "glBlendEquationSeparate", 0, 3);
+    frame_with(&all, "glBlendFuncSeparateINGR", 0, 3);
     frame_with(&all, NULL, USE(READ) | USE(BATCH), 3); /* uses, no call: glReadBuffer matters */
-    frame_with(&all, NULL, USE(BLEND), 4);             /* not glBlendColor's use */
+    frame_with(&all, NULL, USE(BLEND), 4);             /* not glCompressedTexImage2D's use */
     nlines = 0;
     unrec_report(&all, UNREC_REPORT_MATTERS, keep_line, NULL);
     CHECK(nlines == 3);
-    CHECK(line_is(0, "glBlendEquationSeparate: 1 call not recorded, from frame 3: separate colour "
+    CHECK(line_is(0, "glBlendFuncSeparateINGR: 1 call not recorded, from frame 3: separate colour "
                      "and alpha blending: blended draws use glBlendFunc's factors and "
                      "glBlendEquation's equation"));
     CHECK(line_is(1, "glReadBuffer: 1 call not recorded, from frame 2: the colour buffer "
@@ -89,10 +89,10 @@ static void test_effects(void)
     nlines = 0;
     unrec_report(&all, UNREC_REPORT_VERBOSE, keep_line, NULL);
     CHECK(nlines == 6);
-    CHECK(line_is(0, "glBlendColor: 1 call not recorded, from frame 1 (cannot change the picture: "
-                     "it acts only on draws blended with a GL_CONSTANT_* factor, which no frame "
-                     "from it on has): the blend colour: draws blended with GL_CONSTANT_* factors "
-                     "use the default (0, 0, 0, 0)"));
+    CHECK(line_is(1, "glCompressedTexImage2D: 1 call not recorded, from frame 1 (cannot change "
+                     "the picture: it acts only on textured draws, which no frame from it on "
+                     "has): compressed texture images: the textures they fill are drawn without "
+                     "them"));
     CHECK(strstr(lines[2], "glPixelStoref: 1 call not recorded, from frame 1 (cannot change the "
                            "picture: it acts only on images read from the program's memory "
                            "(textures, pixels, bitmaps, stipples) in frames recorded without a GL "
@@ -103,19 +103,19 @@ static void test_effects(void)
     /* A use in an earlier frame than the call does not count; once it
      * matters, it stays so. */
     unrec_clear(&all);
-    frame_with(&all, NULL, USE(BLEND_CONSTANT), 0);
-    frame_with(&all, "glBlendColor", 0, 1);
+    frame_with(&all, NULL, USE(TEXTURE), 0);
+    frame_with(&all, "glCompressedTexImage2D", 0, 1);
     CHECK(all.n == 1 && !all.e[0].matters);
-    frame_with(&all, "glBlendColor", USE(BLEND_CONSTANT), 2);
+    frame_with(&all, "glCompressedTexImage2D", USE(TEXTURE), 2);
     frame_with(&all, NULL, 0, 3);
     CHECK(all.e[0].matters && all.e[0].first_frame == 1 && all.e[0].count == 2);
 
     /* --dump: no frame translated, each by what its effect needs. */
     nlines = 0;
     unrec_report(&all, UNREC_REPORT_DUMP, keep_line, NULL);
-    CHECK(line_is(0, "glBlendColor: 2 calls not recorded, from frame 1 (changes the picture only "
-                     "with draws blended with a GL_CONSTANT_* factor): the blend colour: draws "
-                     "blended with GL_CONSTANT_* factors use the default (0, 0, 0, 0)"));
+    CHECK(line_is(0, "glCompressedTexImage2D: 2 calls not recorded, from frame 1 (changes the "
+                     "picture only with textured draws): compressed texture images: the textures "
+                     "they fill are drawn without them"));
 
     /* A copy keeps the frame's uses. */
     unrec_table f, c;

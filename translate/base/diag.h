@@ -67,7 +67,7 @@
     X(NOTE_RENDER_MODE, "left out, as GL draws no pixel of it: geometry drawn in GL_SELECT or GL_FEEDBACK render mode") \
     X(NOTE_EVAL_INDEX, "not translated: colour-index evaluator maps (GL_MAP1_INDEX, GL_MAP2_INDEX)") \
     X(NOTE_PIXELS_DEPTH, "approximated: bitmaps and pixel rectangles show in front of the whole scene (drawn with the depth test on, or before later geometry)") \
-    X(NOTE_PIXELS_OTHER, "not translated: colour-index, depth and stencil pixels, pixel maps and index shifts (glDrawPixels, glCopyPixels)") \
+    X(NOTE_PIXELS_OTHER, "not translated: depth and stencil pixels, and colour indices of type GL_BITMAP (glDrawPixels, glCopyPixels)") \
     X(NOTE_ACCUM_PASSES, "approximated: accumulation-buffer passes that differ other than by a sub-pixel jitter of the projection or an eye moved around a focal point (motion blur) are drawn as their first pass alone") \
     X(NOTE_FOG_COORD, "not translated yet: fog coordinates (GL_FOG_COORD_SRC GL_FOG_COORD) varying over a lit or textured surface: fogged by the eye distance") \
     X(NOTE_FOG_COORD_VERTEX, "approximated: fog coordinates under GL_EXP or GL_EXP2 fog, flat shading, or outside GL_FOG_START..GL_FOG_END: the fog factor is taken at the vertices (per face when flat) where GL interpolates the coordinate; exact where a primitive's fog coordinates are equal") \
@@ -86,14 +86,20 @@
     X(NOTE_SHADOW_HIGHLIGHT, "approximated with shadows: highlights of lights whose specular is not one multiple of their diffuse colour") \
     X(NOTE_POINT_FADE, "not translated: the point fade threshold (GL_POINT_FADE_THRESHOLD_SIZE; GL fades points only when multisampling)") \
     X(NOTE_TEX_MIRROR_CLAMP, "approximated: mirror-clamp texture wraps (GL_MIRROR_CLAMP_EXT and its kin) drawn as the image mirrored once, then clamped to its edge texels") \
-    X(NOTE_TEX_LOD_BIAS, "not translated: texture level-of-detail bias (GL_TEXTURE_LOD_BIAS; mipmap levels are chosen without it)") \
-    X(NOTE_POINT_SPRITE, "not translated: point sprites (GL_POINT_SPRITE, GL_COORD_REPLACE): points drawn untextured") \
     X(NOTE_TEX_3D, "approximated: 3D textures drawn as the slice (GL_NEAREST) or the blend of two slices (GL_LINEAR) that r picks where r is constant over a primitive; untextured where it varies") \
     X(NOTE_FRONT_BUFFER, "approximated: a single-buffered frame shows the drawing of at most 64 earlier frames since the last colour clear (the front buffer holds all of it)") \
     X(NOTE_POLYGON_OFFSET, "approximated: glPolygonOffset moves an offset polygon one pixel's width along the camera's rays (away from the eye for a positive offset), not by GL's window-depth offset; offset GLU and GLUT shapes are drawn as GL's facets") \
     X(NOTE_DEPTH_ONLY, "approximated: draws with every colour channel masked (glColorMask) are left out, but they wrote depth, which hides in GL what is drawn behind them later") \
     X(NOTE_FOG_BEHIND, "approximated: fogged primitives reaching behind the eye, which OpenGL fogs by |eye z| interpolated across the near-plane cut (denser near the eye than their distance)") \
     X(NOTE_RELIT_SPECULAR, "approximated: textured faces under GL_SEPARATE_SPECULAR_COLOR with a highlight, lit past white or showing their back under one-sided lighting, lit per pixel (unclamped, normals toward the viewer)") \
+    X(NOTE_LOGIC_OP, "approximated: logic ops (glLogicOp) that read the colour buffer, of draws over anything but the clear colour, that cover a pixel twice or vary in colour over a face, or of lit, textured or fogged draws, are drawn as GL_COPY") \
+    X(NOTE_BLEND_DEST, "approximated: blending whose result OpenGL takes from the colour behind in a way transmit and filter cannot show (GL_MIN, GL_MAX, destination factors, channel factors of the colour behind) is drawn as GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA except over the clear colour") \
+    X(NOTE_DEPTH_CLEAR, "approximated: a depth-buffer clear (glClear GL_DEPTH_BUFFER_BIT, scissored or not) between draws that overlap on screen: later draws behind earlier ones stay hidden, where OpenGL draws them over") \
+    X(NOTE_ACCUM_CLEAR, "approximated: the accumulation buffer's clear value other than zero (glClearAccum), accumulation clears and operations cut by the scissor box, and passes onto a buffer the frame did not clear: the returned passes are drawn as if accumulated onto zero over the whole window") \
+    X(NOTE_POINT_TEXTURE, "not translated: textured smooth points without GL_POINT_SPRITE (drawn untextured discs)") \
+    X(NOTE_TEX_LINES, "not translated: textured lines (drawn untextured)") \
+    X(NOTE_PIXELS_MAP_COLOR, "approximated: glPixelTransfer colour maps (GL_MAP_COLOR) of pixel rectangles, and scales and biases of colour-index ones, are applied once, as GL says; Mesa applies them twice in some programs") \
+    X(NOTE_TEX_COMPARE, "not translated: depth-texture comparison (GL_TEXTURE_COMPARE_MODE) where r varies over a primitive or the texture is mipmapped: the depth values drawn instead") \
     X(NOTE_COLOR_MATERIAL_BEGIN, "approximated: a glColor between glBegin and glEnd of the first draw after a glEnable(GL_COLOR_MATERIAL) that kept a glMaterial colour (as Mesa keeps it): the primitive's vertices before it take that material, where Mesa takes the colour current then") \
     X(NOTE_STENCIL_TWO_SIDE, "approximated: two-sided stencil (glStencilFuncSeparate, glStencilOpSeparate, glStencilMaskSeparate) testing or writing the front and back faces of one draw differently: the whole draw takes the front faces' stencil state") \
     X(NOTE_DRAW_BUFFER_DEPTH, "approximated: draws into a colour buffer the frame does not show (glDrawBuffer) are left out, but they wrote depth, which hides in GL what is drawn behind them later") \

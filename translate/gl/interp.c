@@ -112,6 +112,8 @@ void interp_default_state(gl_state *st)
     a->current.raster_valid = true;
     a->pixel.zoom[0] = a->pixel.zoom[1] = 1;
     set4(a->pixel.scale, 1, 1, 1, 1);
+    for (int k = 0; k < 10; k++)
+        a->pixel.map_size[k] = 1;
     memcpy(a->caps, cap_defaults, sizeof a->caps);
 
     for (int d = 0; d < 2; d++) { /* glMapGrid: 1 partition of [0, 1] */
@@ -155,6 +157,7 @@ void interp_default_state(gl_state *st)
     a->line.width = 1;
     a->point.size = 1;
     a->point.size_max = 1024; /* Mesa's largest point, interp_pointsize's limit */
+    a->point.sprite_origin = GL_UPPER_LEFT;
     a->point.fade_threshold = 1;
     a->point.atten[0] = 1;
     a->lighting.provoking = GL_LAST_VERTEX_CONVENTION;
@@ -168,6 +171,9 @@ void interp_default_state(gl_state *st)
     a->color_buffer.blend_src = GL_ONE;
     a->color_buffer.blend_dst = GL_ZERO;
     a->color_buffer.blend_equation = GL_FUNC_ADD;
+    a->color_buffer.blend_src_alpha = GL_ONE;
+    a->color_buffer.blend_dst_alpha = GL_ZERO;
+    a->color_buffer.blend_equation_alpha = GL_FUNC_ADD;
     a->color_buffer.logic_op = GL_COPY;
     a->color_buffer.alpha_func = GL_ALWAYS;
     for (int i = 0; i < 4; i++)
@@ -252,6 +258,8 @@ void interp_destroy(interp *ip)
     interp_pixels_free(ip);
     interp_eval_free(ip);
     interp_nurbs_free(ip);
+    interp_dest_free(ip);
+    interp_sprites_free(ip);
     interp_zorder_free(ip);
     tr_free(ip);
 }
@@ -624,9 +632,14 @@ void interp_diag(interp *ip, diag_kind kind, const char *fmt, ...)
     diag_add(ip->log, kind, prefix, "%s", msg);
 }
 
-_Static_assert(DIAG_COUNT - DIAG_FIRST_NOTE <= 64, "the notes of a frame are bits of a uint64_t");
+_Static_assert(DIAG_COUNT - DIAG_FIRST_NOTE <= 64 * INTERP_NOTE_WORDS,
+               "the notes of a frame are bits of INTERP_NOTE_WORDS uint64_t");
 
-void interp_clear_notes(interp *ip) { ip->notes_seen = ip->notes_held = 0; }
+void interp_clear_notes(interp *ip)
+{
+    memset(ip->notes_seen, 0, sizeof ip->notes_seen);
+    memset(ip->notes_held, 0, sizeof ip->notes_held);
+}
 
 void interp_frame_note(interp *ip, diag_kind kind) { interp_note(ip, kind); }
 
@@ -635,17 +648,28 @@ void interp_frame_note_held(interp *ip, diag_kind kind, const char *why)
     interp_note_held(ip, kind, why);
 }
 
+/* The word of the notes' bitsets that holds kind, and its bit there. */
+static size_t note_word(diag_kind kind, uint64_t *bit)
+{
+    unsigned i = (unsigned)(kind - DIAG_FIRST_NOTE);
+    *bit = 1ull << (i % 64);
+    return i / 64;
+}
+
 bool interp_note_said(const interp *ip, diag_kind kind)
 {
-    return !ip->log || (ip->notes_seen & (1ull << (kind - DIAG_FIRST_NOTE)));
+    uint64_t bit;
+    size_t w = note_word(kind, &bit);
+    return !ip->log || (ip->notes_seen[w] & bit);
 }
 
 void interp_note(interp *ip, diag_kind kind)
 {
-    uint64_t bit = 1ull << (kind - DIAG_FIRST_NOTE);
-    if (!ip->log || (ip->notes_seen & bit))
+    uint64_t bit;
+    size_t w = note_word(kind, &bit);
+    if (!ip->log || (ip->notes_seen[w] & bit))
         return;
-    ip->notes_seen |= bit;
+    ip->notes_seen[w] |= bit;
     char prefix[DIAG_PREFIX];
     make_prefix(ip, prefix, sizeof prefix);
     diag_add(ip->log, kind, prefix, "%s", diag_kind_name(kind));
@@ -654,26 +678,28 @@ void interp_note(interp *ip, diag_kind kind)
 void interp_note_cmd(interp *ip, diag_kind kind, bool has_cmd, uint64_t index, const char *name,
                      uint64_t offset, const char *why)
 {
-    uint64_t bit = 1ull << (kind - DIAG_FIRST_NOTE);
-    if (!ip->log || (ip->notes_seen & bit) || (why && (ip->notes_held & bit)))
+    uint64_t bit;
+    size_t w = note_word(kind, &bit);
+    if (!ip->log || (ip->notes_seen[w] & bit) || (why && (ip->notes_held[w] & bit)))
         return;
     char prefix[DIAG_PREFIX];
     make_prefix_at(ip, prefix, sizeof prefix, has_cmd, index, name, offset);
     if (why) {
-        ip->notes_held |= bit;
+        ip->notes_held[w] |= bit;
         diag_add_held(ip->log, kind, prefix, why);
     } else {
-        ip->notes_seen |= bit;
+        ip->notes_seen[w] |= bit;
         diag_add(ip->log, kind, prefix, "%s", diag_kind_name(kind));
     }
 }
 
 void interp_note_held(interp *ip, diag_kind kind, const char *why)
 {
-    uint64_t bit = 1ull << (kind - DIAG_FIRST_NOTE);
-    if (!ip->log || ((ip->notes_seen | ip->notes_held) & bit))
+    uint64_t bit;
+    size_t w = note_word(kind, &bit);
+    if (!ip->log || ((ip->notes_seen[w] | ip->notes_held[w]) & bit))
         return;
-    ip->notes_held |= bit;
+    ip->notes_held[w] |= bit;
     char prefix[DIAG_PREFIX];
     make_prefix(ip, prefix, sizeof prefix);
     diag_add_held(ip->log, kind, prefix, why);
@@ -786,6 +812,8 @@ void interp_popattrib(interp *ip, const rgl_cmd *cmd)
         a->color_buffer = s->color_buffer;
     if (m & GL_DEPTH_BUFFER_BIT)
         a->depth = s->depth;
+    if (m & GL_ACCUM_BUFFER_BIT)
+        a->accum = s->accum;
     if (m & GL_FOG_BIT)
         a->fog = s->fog;
     if (m & GL_HINT_BIT)

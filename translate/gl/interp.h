@@ -32,6 +32,7 @@
  *   interp_nurbs.c    GLU NURBS surfaces, curves and trims
  *   interp_shape.c    GLU quadrics and GLUT solids
  *   interp_point.c    point parameters, the provoking vertex
+ *   interp_sprite.c   textured points and point sprites
  *   interp_lines.c    lines and points as GL rasterises them: clipped,
  *                     cut into strips over GL's pixels
  *   rasterise.c, rasterise.h which pixels Mesa lights for a line or point
@@ -70,12 +71,17 @@
  *   interp_scissor.c  the scissor test, scissored clears
  *   interp_stencil.c  the stencil test
  *   interp_masks.c    colour and depth write masks
+ *   interp_blend.c    blending and logic ops: how a draw's colours show
+ *                     what is behind
+ *   interp_dest.c     what the colour buffer holds where a draw lands (for
+ *                     the blends and logic ops that read it)
  *   interp_buffers.c  glDrawBuffer: the colour buffers a draw goes to
  *   interp_zorder.c   draw order without a depth test: whether it can
  *                     change a pixel
  *   interp_accum.c    the accumulation buffer
  *   interp_pixels.c   raster position, bitmaps, pixel rectangles
  *   interp_pixdepth.c their depth
+ *   interp_pixmap.c   pixel maps and the pixel transfer of colours
  *
  * Not thread-safe; one interpreter per worker thread.
  */
@@ -209,10 +215,14 @@ typedef struct gl_attribs {
         int32_t clear;
     } stencil; /* GL_STENCIL_BUFFER_BIT */
     struct {
+        float clear[4]; /* glClearAccum, clamped to [-1, 1] */
+    } accum; /* GL_ACCUM_BUFFER_BIT */
+    struct {
         float size;
         /* glPointParameter (GL 1.4 3.3): the derived size's clamp, the
          * size below which points fade, the distance attenuation. */
         float size_min, size_max, fade_threshold, atten[3];
+        GLenum sprite_origin; /* GL_POINT_SPRITE_COORD_ORIGIN */
     } point; /* GL_POINT_BIT */
     struct {
         int32_t rect[4]; /* x, y, width, height */
@@ -224,8 +234,10 @@ typedef struct gl_attribs {
     } transform; /* GL_TRANSFORM_BIT */
     struct {
         float clear[4];
-        GLenum blend_src, blend_dst, alpha_func;
+        GLenum blend_src, blend_dst, alpha_func; /* blend_*: the colour's factors */
         GLenum blend_equation, logic_op;
+        GLenum blend_src_alpha, blend_dst_alpha, blend_equation_alpha;
+        float blend_color[4]; /* glBlendColor */
         float alpha_ref;
         bool mask[4];
         GLenum draw_buffer; /* glDrawBuffer; INTERP_DRAW_BUFFER_DEFAULT: the
@@ -260,6 +272,8 @@ typedef struct gl_attribs {
         double obj_plane[4][4];   /* GL_OBJECT_PLANE */
         double eye_plane[4][4];   /* GL_EYE_PLANE, times the inverse modelview
                                      current at the glTexGen call */
+        bool coord_replace;       /* GL_POINT_SPRITE's GL_COORD_REPLACE */
+        float lod_bias;           /* GL_TEXTURE_FILTER_CONTROL's GL_TEXTURE_LOD_BIAS */
     } texture; /* GL_TEXTURE_BIT */
     struct {
         int32_t grid_n[2][2];    /* [dimension - 1][u, v]: glMapGrid's partitions */
@@ -268,8 +282,11 @@ typedef struct gl_attribs {
     struct {
         float zoom[2];         /* glPixelZoom */
         float scale[4], bias[4]; /* GL_RED_SCALE .. GL_ALPHA_BIAS */
-        uint32_t others;       /* other glPixelTransfer pnames set away from
-                                  their defaults (not translated) */
+        bool map_color;        /* GL_MAP_COLOR */
+        /* glPixelMap: GL_PIXEL_MAP_I_TO_I .. GL_PIXEL_MAP_A_TO_A in order,
+         * each map_size entries (GL 2.1 table 6.18: initially one, 0) */
+        uint16_t map_size[10];
+        float map[10][256];
     } pixel; /* GL_PIXEL_MODE_BIT */
     struct {
         int32_t box[4]; /* x, y, width, height */

@@ -15,6 +15,12 @@
  *     plane, through a lens as wide as the eyes are spread;
  *   - anything else (motion blur: the geometry moves) is noted, and the
  *     first pass alone is drawn.
+ *
+ * The scene's passes start from an accumulation buffer of zero over the
+ * whole window. A clear to another value (glClearAccum), a clear or a
+ * glAccum cut to the scissor box (GL 2.1 4.2.3, 4.2.4: only the box's
+ * pixels change), and passes accumulated onto a buffer the frame never
+ * cleared are noted where the passes are returned.
  */
 #include "interp_internal.h"
 
@@ -155,6 +161,8 @@ static void conclude(interp *ip, double ret)
 {
     struct interp_accum *a = &ip->accum;
     scene *s = ip->scene;
+    if (a->buffer_odd && ret != 0)
+        interp_note(ip, DIAG_NOTE_ACCUM_CLEAR);
     if (a->odd_weights || fabs(a->weight * ret - 1) > 0.02)
         interp_note(ip, DIAG_NOTE_ACCUM_WEIGHTS);
     if (a->passes < 2 || !s)
@@ -206,6 +214,24 @@ bool interp_accum_clear(interp *ip)
     return true;
 }
 
+static bool scissored(const interp *ip)
+{
+    const gl_attribs *a = &ip->st.a;
+    return a->caps[INTERP_CAP_SCISSOR_TEST] && interp_scissor_cuts(ip, a->viewport.rect);
+}
+
+void interp_accum_buffer_clear(interp *ip)
+{
+    struct interp_accum *a = &ip->accum;
+    const float *c = ip->st.a.accum.clear;
+    bool zero = c[0] == 0 && c[1] == 0 && c[2] == 0;
+    if (scissored(ip) || !zero)
+        a->buffer_odd = true;
+    else if (!a->active)
+        a->buffer_odd = false; /* all of it zero again */
+    a->cleared = true;
+}
+
 void interp_accum(interp *ip, const rgl_cmd *cmd)
 {
     if (interp_reject_in_begin(ip))
@@ -213,6 +239,10 @@ void interp_accum(interp *ip, const rgl_cmd *cmd)
     GLenum op = arg_enum(cmd, 0);
     double value = arg_num(&cmd->arg[1]);
     struct interp_accum *a = &ip->accum;
+    if (op == GL_ACCUM || op == GL_LOAD || op == GL_RETURN) {
+        if (scissored(ip) || (op == GL_ACCUM && !a->active && !a->cleared))
+            a->buffer_odd = true;
+    }
     switch (op) {
     case GL_ACCUM:
     case GL_LOAD:
@@ -258,10 +288,14 @@ void interp_accum(interp *ip, const rgl_cmd *cmd)
     }
 }
 
-/* The accumulation buffer's clear value: a pass accumulated onto it adds
- * to it, which the translation leaves out (programs clear it to zero). */
+/* The accumulation buffer's clear value (GL 2.1 4.2.3: clamped to
+ * [-1, 1]): a pass accumulated onto it adds to it (interp_accum_buffer_clear). */
 void interp_clearaccum(interp *ip, const rgl_cmd *cmd)
 {
-    (void)cmd;
-    (void)interp_reject_in_begin(ip);
+    if (interp_reject_in_begin(ip))
+        return;
+    for (int k = 0; k < 4; k++) {
+        double v = arg_num(&cmd->arg[k]);
+        ip->st.a.accum.clear[k] = (float)(v > -1 ? (v < 1 ? v : 1) : -1);
+    }
 }

@@ -33,6 +33,7 @@ typedef struct assembly {
     bool first; /* GL_FIRST_VERTEX_CONVENTION (glProvokingVertex) */
     float line_width, point_size;
     bool line_smooth, point_smooth;
+    bool point_sprite; /* GL_POINT_SPRITE: square, its size not rounded (GL 2.1 3.3.1) */
     bool point_params; /* glPointParameter away from its defaults */
     bool list_quads; /* quads split along v1-v3, as Mesa does in a list or when clipping */
     bool stipple;       /* glLineStipple applies (interp_stipple.c) */
@@ -163,12 +164,23 @@ static void add_point(assembly *as, uint32_t i, uint32_t colour_from)
     double size = as->point_size, fade = 1;
     if (as->point_params)
         size = interp_point_size(&as->ip->st.a, p, &fade);
+    /* GL fades points below the threshold when multisampling (GL 2.1 3.3) */
+    if (size < as->ip->st.a.point.fade_threshold)
+        interp_note(as->ip, DIAG_NOTE_POINT_FADE);
     float c[4];
     memcpy(c, edge_colour(as, colour_from), sizeof c);
     c[3] *= (float)fade;
     double win[2];
     bool gl_win = interp_gl_window(as->ip, as->s->verts[i].pos, win);
-    interp_add_point(as->ip, p, gl_win ? win : NULL, c, size, as->point_smooth, as->point_params);
+    size_t first = as->s->npoints;
+    interp_add_point(as->ip, p, gl_win ? win : NULL, c, size, as->point_smooth, as->point_params,
+                     as->point_sprite);
+    bool taken = as->s->npoints > first;
+    for (size_t k = first; k < as->s->npoints && taken; k++)
+        taken = interp_point_textured(as->ip, &as->s->points[k], &as->s->verts[i],
+                                      as->point_smooth);
+    if (taken)
+        as->s->npoints = first; /* textured squares instead (interp_sprite.c) */
 }
 
 /* Whether a vertex of the primitive lies outside the view volume. Mesa
@@ -323,10 +335,9 @@ static inline void relit_keep(assembly *as, uint32_t a, uint32_t b, uint32_t c,
     ip->relit_need[a] = ip->relit_need[b] = ip->relit_need[c] = ip->relit_need[provoking] = 1;
 }
 
-/* One polygon (triangle, quad or GL_POLYGON) with vertices idx (relative),
- * its provoking vertex, and whether its edge flags count. */
-static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t provoking,
-                         bool edge_flags)
+/* One polygon (triangle, quad or GL_POLYGON) with vertices idx (relative)
+ * and its provoking vertex. */
+static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t provoking)
 {
     interp *ip = as->ip;
     const gl_attribs *a = &ip->st.a;
@@ -363,7 +374,7 @@ static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t prov
     }
     as->stipple_s = 0; /* each polygon restarts the stipple (NOTE_STIPPLE) */
     for (int k = 0; k < n; k++) {
-        if (edge_flags && !(ip->edge[idx[k]] & 1))
+        if (!(ip->edge[idx[k]] & 1))
             continue; /* GL draws only boundary edges (and their vertices) */
         if (mode == GL_LINE)
             add_segment(as, as->base + idx[k], as->base + idx[(k + 1) % n], as->base + provoking);
@@ -372,6 +383,11 @@ static void emit_polygon(assembly *as, const uint32_t *idx, int n, uint32_t prov
     }
 }
 
+/* Every mode takes edge flags, strips and fans too: GL 2.1 2.6.2 says
+ * their edges are all boundary edges, but Mesa (gallium's draw module,
+ * the reference here) flags edge (a, b) of each triangle or quad it
+ * emits by a's flag, in the vertex orders below (tests/programs/
+ * edgeflag_strips.c). */
 static void assemble_polygons(assembly *as, GLenum mode, uint32_t n)
 {
     uint32_t t[4];
@@ -379,7 +395,7 @@ static void assemble_polygons(assembly *as, GLenum mode, uint32_t n)
     case GL_TRIANGLES:
         for (uint32_t i = 0; i + 3 <= n; i += 3) {
             t[0] = i, t[1] = i + 1, t[2] = i + 2;
-            emit_polygon(as, t, 3, pv(as, i + 2, i), true);
+            emit_polygon(as, t, 3, pv(as, i + 2, i));
         }
         break;
     case GL_TRIANGLE_STRIP:
@@ -389,13 +405,13 @@ static void assemble_polygons(assembly *as, GLenum mode, uint32_t n)
             else
                 t[0] = i + 1, t[1] = i;
             t[2] = i + 2;
-            emit_polygon(as, t, 3, pv(as, i + 2, i), false);
+            emit_polygon(as, t, 3, pv(as, i + 2, i));
         }
         break;
     case GL_TRIANGLE_FAN:
         for (uint32_t i = 0; i + 3 <= n; i++) {
             t[0] = 0, t[1] = i + 1, t[2] = i + 2;
-            emit_polygon(as, t, 3, pv(as, i + 2, i + 1), false);
+            emit_polygon(as, t, 3, pv(as, i + 2, i + 1));
         }
         break;
     case GL_QUADS:
@@ -404,13 +420,13 @@ static void assemble_polygons(assembly *as, GLenum mode, uint32_t n)
             uint32_t f = as->list_quads ? 1 : 0;
             for (uint32_t k = 0; k < 4; k++)
                 t[k] = i + (k + f) % 4;
-            emit_polygon(as, t, 4, i + 3, true);
+            emit_polygon(as, t, 4, i + 3);
         }
         break;
     case GL_QUAD_STRIP:
         for (uint32_t i = 0; i + 4 <= n; i += 2) {
             t[0] = i, t[1] = i + 1, t[2] = i + 3, t[3] = i + 2;
-            emit_polygon(as, t, 4, i + 3, false);
+            emit_polygon(as, t, 4, i + 3);
         }
         break;
     case GL_POLYGON:
@@ -422,7 +438,7 @@ static void assemble_polygons(assembly *as, GLenum mode, uint32_t n)
             }
             for (uint32_t i = 0; i < n; i++)
                 all[i] = i;
-            emit_polygon(as, all, (int)n, 0, true);
+            emit_polygon(as, all, (int)n, 0);
             tr_free(all);
         }
         break;
@@ -596,6 +612,7 @@ scene_look interp_current_look(interp *ip)
     look.lit = ip->st.a.caps[INTERP_CAP_LIGHTING] && !interp_vertex_lit(ip);
     look.flat = ip->st.a.lighting.shade_model == GL_FLAT;
     look.blend = ip->prim_blend;
+    look.filter = ip->prim_filter;
     look.fog = ip->st.a.caps[INTERP_CAP_FOG] && !ip->prim_fog_vertex;
     if (ip->st.a.caps[INTERP_CAP_ALPHA_TEST]) {
         GLenum f = ip->st.a.color_buffer.alpha_func;
@@ -679,7 +696,7 @@ static void check_normals(interp *ip, uint32_t n)
     }
 }
 
-static void end_primitive(interp *ip)
+static void end_primitive_body(interp *ip)
 {
     scene *s = ip->scene;
     const gl_attribs *a = &ip->st.a;
@@ -693,6 +710,7 @@ static void end_primitive(interp *ip)
     GLenum mode = ip->prim_mode;
     if (n == 0)
         return;
+    interp_blend_end(ip, n);
     interp_fog_behind_check(ip, n);
     assembly as;
     memset(&as, 0, sizeof as);
@@ -715,7 +733,8 @@ static void end_primitive(interp *ip)
     if (as.stipple && ip->prim_mode > GL_LINE_STRIP &&
         (a->polygon.mode[0] == GL_LINE || a->polygon.mode[1] == GL_LINE))
         interp_note(ip, DIAG_NOTE_STIPPLE);
-    as.point_smooth = a->caps[INTERP_CAP_POINT_SMOOTH];
+    as.point_sprite = a->caps[INTERP_CAP_POINT_SPRITE];
+    as.point_smooth = a->caps[INTERP_CAP_POINT_SMOOTH] && !as.point_sprite;
     as.line_width = a->line.width;
     as.point_size = a->point.size;
     as.point_params = interp_point_params_set(a);
@@ -728,6 +747,8 @@ static void end_primitive(interp *ip)
             as.check_bad = true;
 
     if (mode <= GL_LINE_STRIP) {
+        if (mode != GL_POINTS)
+            interp_lines_textured(ip);
         if (ip->prim_in_eye)
             vertices_to_eye(ip, n);
         as.check_bad = true;
@@ -775,7 +796,8 @@ static void end_primitive(interp *ip)
     as.to_eye = ip->prim_in_eye ? &id : &ip->prim_to_eye;
     as.in_eye = ip->prim_in_eye;
     size_t first_tri = s->ntris;
-    if (look.texture >= 0) /* the split reads relit_over, the colours' peak */
+    /* the split reads relit_over, the colours' peak */
+    if (look.texture >= 0 || (look.lit && interp_relit_wanted(ip) && interp_relit_may_saturate(ip)))
         interp_relit_flush(ip);
     as.relit = interp_relit_split(ip, &look);
     if (as.relit && as.relit != INTERP_RELIT_PROBE && !interp_relit_need_clear(ip, n))
@@ -815,6 +837,14 @@ static void end_primitive(interp *ip)
     interp_relit_done(ip);
     if (look.lit)
         interp_gouraud_check(ip, first_tri);
+    if (a->polygon.mode[0] == GL_LINE || a->polygon.mode[1] == GL_LINE)
+        interp_lines_textured(ip);
+}
+
+static void end_primitive(interp *ip)
+{
+    end_primitive_body(ip);
+    interp_point_sprites_end(ip);
 }
 
 void interp_end(interp *ip, const rgl_cmd *cmd)
@@ -847,6 +877,7 @@ void interp_abort_begin(interp *ip)
         return;
     ip->in_begin = false;
     ip->prim_plain = 0;
+    ip->prim_fx = false;
     ip->prim_color_sum = ip->prim_fog_vertex = false;
     if (ip->scene && !ip->prim_skip && ip->scene->nverts >= ip->prim_first)
         ip->scene->nverts = ip->prim_first;

@@ -23,6 +23,8 @@ typedef struct interp_textures interp_textures; /* interp_teximage.h */
 
 /* One projection and viewport used in a frame, and its draws' weight. */
 #define INTERP_PROJ_VOTES 8
+/* Words of the frame's note bitsets: 64 NOTE_* kinds each. */
+#define INTERP_NOTE_WORDS 2
 typedef struct interp_proj_vote_t {
     mat4 proj;
     int32_t vp[4];
@@ -65,7 +67,11 @@ struct interp {
         uint8_t tri_faces; /* the faces whose triangles it writes: 1 front, 2 back */
         uint8_t clip;     /* this draw kept 1 inside, 2 outside the region */
         size_t n;         /* the region's triangles at this draw */
+        bool box_pending; /* the region is box (window pixels), to be made into
+                             triangles once the camera is fixed */
+        int32_t box[4];
     } stencil; /* interp_stencil.c */
+    struct interp_dest *dest; /* the frame's drawn footprint (interp_dest.c); NULL: none yet */
     scene *scene; /* NULL: state only */
     diag_log *log;
     uint8_t *begin_ok; /* by opcode: allowed between glBegin and glEnd */
@@ -74,8 +80,10 @@ struct interp {
     uint64_t frame_index;
     char label[48];
     const rgl_cmd *cmd; /* the command being executed */
-    uint64_t notes_seen; /* NOTE_* kinds already logged in this frame */
-    uint64_t notes_held; /* NOTE_* kinds already logged held in this frame */
+    /* NOTE_* kinds already logged in this frame, and logged held: bit
+     * (kind - DIAG_FIRST_NOTE) % 64 of word / 64 (interp.c note_word) */
+    uint64_t notes_seen[INTERP_NOTE_WORDS];
+    uint64_t notes_held[INTERP_NOTE_WORDS];
     struct interp_zorder *zorder; /* the frame's runs of depth modes; NULL: none yet */
     bool cleared;        /* the frame cleared the colour buffer */
     uint32_t painter;    /* draws without a depth test since the frame's start
@@ -137,6 +145,10 @@ struct interp {
     int draw_unit[2];   /* the draw's first two enabled texture units, or -1 */
     bool prim_tex_from1; /* the look's texture is draw_unit[1]'s (tex1 coordinates) */
     bool prim_blend_mapped; /* its vertex colours carry another blend function as transmit */
+    bool prim_fx;         /* interp_blend.c maps its colours at glEnd */
+    struct interp_sprite *sprites; /* its textured points (interp_sprite.c) */
+    size_t nsprites, cap_sprites;
+    float prim_filter;    /* the look's filter (scene_look.filter) */
     bool prim_color_sum;  /* the secondary colour goes into the vertex colours (interp_fogsec.c) */
     bool prim_fog_vertex; /* the fog of the fog coordinate goes into them, no fog layer */
     bool prim_coord_same; /* every vertex so far had the fog coordinate prim_coord0 */
@@ -276,6 +288,8 @@ struct interp {
         double max_jitter;  /* of the projection, in pixels */
         double focus_min, focus_max; /* lens passes' focal distances */
         double eye_sum[2], eye_sum2; /* their eyes' offsets (first pass's eye space) */
+        bool buffer_odd;   /* a clear or operation the passes alone do not show */
+        bool cleared;      /* the frame cleared the accumulation buffer */
     } accum;
 
     /* rayglFrameBegin */
@@ -790,7 +804,8 @@ void interp_pstipple_look(const interp *ip, scene_look *look);
  * viewport and adds the strips that cover GL's pixels (each dash of them
  * when stippled, the counter running on). interp_add_point adds the
  * pixels of a point of that size (GL's size, after glPointParameter)
- * whose centre p is inside the view volume. */
+ * whose centre p is inside the view volume; a sprite (GL_POINT_SPRITE)
+ * is the square of that size unrounded, GL's pixel centres inside it. */
 typedef struct interp_line {
     double p[2][3];
     float color[2][4];
@@ -807,7 +822,7 @@ typedef struct interp_line {
 bool interp_gl_window(const interp *ip, const float obj[3], double out[2]);
 void interp_add_line(interp *ip, const interp_line *ln, double *stipple_counter);
 void interp_add_point(interp *ip, const double p[3], const double *win, const float color[4],
-                      double size, bool smooth, bool params);
+                      double size, bool smooth, bool params, bool sprite);
 
 /* glPolygonOffset (interp_offset.c). interp_offset_active: polygons drawn
  * now are offset (their shapes are drawn as GL's facets);
@@ -815,6 +830,59 @@ void interp_add_point(interp *ip, const double p[3], const double *win, const fl
  * rays by its offset (a note when it does). */
 bool interp_offset_active(const interp *ip);
 void interp_offset_apply(interp *ip, mat4 *to_eye);
+
+/* Pixel maps and transfer (interp_pixmap.c): interp_pixel_transfer
+ * applies the scales, biases and colour maps to one RGBA pixel (GL 2.1
+ * 3.6.5); interp_pixels_transfer_note notes colour maps, and scales and
+ * biases of pixels from_index colour indices, as Mesa applies them once
+ * or twice;
+ * interp_pixels_index_bytes is the size of w x h colour indices of
+ * type (0: a type not translated), interp_pixels_index turns n of them
+ * into RGBA by the index shift, offset and the I_TO_* maps. */
+void interp_pixels_transfer_note(interp *ip, bool from_index);
+void interp_pixel_transfer(const interp *ip, const float in[4], float out[4]);
+size_t interp_pixels_index_bytes(GLenum type, int64_t w, int64_t h);
+void interp_pixels_index(interp *ip, float *px, const uint8_t *src, size_t n, GLenum type);
+
+/* glClear of the accumulation buffer (interp_accum.c). */
+void interp_accum_buffer_clear(interp *ip);
+
+/* Textured points and point sprites (interp_sprite.c): interp_point_textured
+ * takes point pt of vertex v (true: pt is not to be kept) when the draw is
+ * textured (a smooth point without sprites: noted, not taken); interp_point_sprites_end adds what it took as textured squares
+ * at the draw's end; interp_lines_textured notes a textured line draw. */
+bool interp_point_textured(interp *ip, const scene_point *pt, const scene_vertex *v, bool smooth);
+void interp_point_sprites_end(interp *ip);
+void interp_lines_textured(interp *ip);
+void interp_sprites_free(interp *ip);
+
+/* A scissored glClear of the stencil buffer (interp_stencil.c): only the
+ * scissor box takes the clear value. */
+void interp_stencil_clear_box(interp *ip);
+
+/* Blending and logic ops (interp_blend.c). interp_blend_begin: at a
+ * draw's start, -1 when interp_prim.c maps the blend itself, else the
+ * SCENE_BLEND_* its vertices are stored with; interp_blend_end, at glEnd
+ * with the draw's n vertices in the pool (object space), turns them into
+ * what the scene shows of GL's blend or logic op, and sets prim_blend and
+ * prim_filter (or notes what it cannot). */
+bool interp_blend_factor_ok(GLenum f);
+int interp_blend_begin(interp *ip, GLenum mode);
+void interp_blend_end(interp *ip, uint32_t n);
+
+/* What the colour buffer holds under the open draw (interp_dest.c): true,
+ * with bg the clear colour, when the frame cleared it and nothing drawn
+ * since reaches the draw's n vertices' footprint; with need_once, also
+ * only when no two of its primitives share a pixel. interp_dest_free
+ * releases what it keeps. */
+bool interp_dest_draw(interp *ip, uint32_t n, bool need_once, float bg[4]);
+void interp_dest_free(interp *ip);
+/* A glClear of the depth buffer (scissored or not) after draws; at the
+ * frame's end, a note where a later draw inside its box lies behind an
+ * earlier one there, which GL's clear lets it cover and the scene does not
+ * (interp_dest.c). */
+void interp_dest_depth_clear(interp *ip);
+void interp_dest_end_frame(interp *ip);
 
 /* The scissor test (interp_scissor.c). interp_scissor_cuts: it is on and
  * its box leaves out part of viewport vp. interp_scissor_clear: a glClear
@@ -1014,6 +1082,10 @@ void interp_relit_prepare(interp *ip, interp_lit_prep *lp);
 void interp_relit_colour(interp *ip, const interp_lit_prep *lp, const interp_relit_in *in,
                          float c[4], double *peak);
 int interp_relit_split(interp *ip, const scene_look *look);
+/* Whether a lit vertex of the open primitive can come out past white in a
+ * channel without its highlight (a bound from the material, colour
+ * material and the lights). */
+bool interp_relit_may_saturate(const interp *ip);
 bool interp_relit_need_clear(interp *ip, uint32_t n);
 bool interp_relit_vertices(interp *ip, uint32_t n);
 void interp_relit_done(interp *ip);

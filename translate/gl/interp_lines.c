@@ -488,7 +488,7 @@ void interp_add_line(interp *ip, const interp_line *ln, double *stipple_counter)
 }
 
 void interp_add_point(interp *ip, const double p[3], const double *win, const float color[4],
-                      double size, bool smooth, bool params)
+                      double size, bool smooth, bool params, bool sprite)
 {
     const scene_camera *cam = &ip->scene->camera;
     double w[2], px, py, r[3], u[3];
@@ -508,6 +508,24 @@ void interp_add_point(interp *ip, const double p[3], const double *win, const fl
     ras_run rows[256];
     int32_t y0, x0, n;
     size_t nrows;
+    float c[4];
+    memcpy(c, color, sizeof c);
+    interp_fogsec_eye(ip, p, c);
+    if (sprite) {
+        /* the quad of the size itself: its edges, not a pixel grid, decide
+         * which centres it covers, as the textured square does */
+        double h = size > 0 ? size * 0.5 : 0.5;
+        scene_point *pt = scene_add_point(ip->scene);
+        if (!pt)
+            return;
+        for (int i = 0; i < 3; i++) {
+            pt->p[i] = (float)p[i];
+            pt->right[i] = (float)(h * px * r[i]);
+            pt->up[i] = (float)(h * py * u[i]);
+        }
+        memcpy(pt->color, c, sizeof pt->color);
+        return;
+    }
     if (smooth) {
         double d = params ? size : (size < 2 ? 2 : size);
         nrows = ras_point_round(w[0], w[1], d, cam->height, &y0, rows, 256);
@@ -516,9 +534,6 @@ void interp_add_point(interp *ip, const double p[3], const double *win, const fl
         rows[0] = (ras_run){x0, x0 + n - 1};
         nrows = 1;
     }
-    float c[4];
-    memcpy(c, color, sizeof c);
-    interp_fogsec_eye(ip, p, c);
     /* One rectangle per run of rows alike (a square point is one). */
     for (size_t k = 0; k < nrows;) {
         size_t j = k + 1;

@@ -158,20 +158,17 @@ void interp_pixeltransfer(interp *ip, const rgl_cmd *cmd)
             (pname == scales[k] ? a->pixel.scale : a->pixel.bias)[k] = (float)v;
             return;
         }
-    /* Others that change colour pixels: index shift and offset (colour
-     * index pixels only), colour mapping, and the depth scale and bias. */
-    static const GLenum others[] = {GL_MAP_COLOR, GL_MAP_STENCIL, GL_INDEX_SHIFT,
-                                    GL_INDEX_OFFSET, GL_DEPTH_SCALE, GL_DEPTH_BIAS};
-    for (size_t k = 0; k < sizeof others / sizeof others[0]; k++)
-        if (pname == others[k]) {
-            bool def = pname == GL_DEPTH_SCALE ? v == 1 : v == 0;
-            if (def)
-                a->pixel.others &= ~(1u << k);
-            else
-                a->pixel.others |= 1u << k;
-            return;
-        }
-    interp_bad_enum(ip, "glPixelTransfer pname", pname);
+    /* Colour maps (interp_pixmap.c). */
+    if (pname == GL_MAP_COLOR) {
+        a->pixel.map_color = v != 0;
+        return;
+    }
+    /* The stencil map and the depth scale and bias change only stencil and
+     * depth pixels, which are not drawn (noted there); Mesa does not shift
+     * or offset the colour indices it draws in RGBA (interp_pixmap.c). */
+    if (pname != GL_MAP_STENCIL && pname != GL_DEPTH_SCALE && pname != GL_DEPTH_BIAS &&
+        pname != GL_INDEX_SHIFT && pname != GL_INDEX_OFFSET)
+        interp_bad_enum(ip, "glPixelTransfer pname", pname);
 }
 
 /* ---- The frame's image of pixels --------------------------------------------------- */
@@ -345,13 +342,13 @@ void interp_bitmap(interp *ip, const rgl_cmd *cmd)
     rp[1] = (float)rp[1] + (float)ym;
 }
 
-/* Draws w x h RGBA pixels (floats, before pixel transfer) at the raster
- * position with the pixel zoom (GL 2.1 3.6.4 and 3.6.5). */
-static void draw_rect(interp *ip, const float *px, int64_t w, int64_t h)
+/* Draws w x h RGBA pixels (floats, before pixel transfer; index: from
+ * colour indices) at the raster position with the pixel zoom (GL 2.1
+ * 3.6.4 and 3.6.5). */
+static void draw_rect(interp *ip, const float *px, int64_t w, int64_t h, bool index)
 {
     const gl_attribs *a = &ip->st.a;
-    if (a->pixel.others)
-        interp_note(ip, DIAG_NOTE_PIXELS_OTHER);
+    interp_pixels_transfer_note(ip, index);
     bool over = pixels_begin(ip);
     uint8_t *ov = overlay(ip);
     if (!ov)
@@ -383,11 +380,9 @@ static void draw_rect(interp *ip, const float *px, int64_t w, int64_t h)
             if (!(fk >= 0 && fk < (double)w))
                 continue;
             int64_t k = (int64_t)fk;
-            /* Pixel transfer: the colour scales and biases, clamped. */
-            const float *p = px + ((size_t)m * (size_t)w + (size_t)k) * 4;
+            /* Pixel transfer per pixel drawn: px is kept for later draws. */
             float c[4];
-            for (int q = 0; q < 4; q++)
-                c[q] = clamp01(p[q] * a->pixel.scale[q] + a->pixel.bias[q]);
+            interp_pixel_transfer(ip, px + ((size_t)m * (size_t)w + (size_t)k) * 4, c);
             put_pixel(ov + ((size_t)y * (size_t)ow + (size_t)x) * 4, c, over);
         }
     }
@@ -465,7 +460,8 @@ static void draw_pixels(interp *ip, uint32_t id, GLenum format, GLenum type, int
 {
     if (interp_draw_buffer_hidden(ip))
         return; /* into a colour buffer the frame does not show */
-    size_t need = interp_pixel_bytes(format, type, w, h);
+    bool index = format == GL_COLOR_INDEX;
+    size_t need = index ? interp_pixels_index_bytes(type, w, h) : interp_pixel_bytes(format, type, w, h);
     if (!need) {
         interp_note(ip, DIAG_NOTE_PIXELS_OTHER);
         return;
@@ -474,7 +470,7 @@ static void draw_pixels(interp *ip, uint32_t id, GLenum format, GLenum type, int
     int64_t i = c ? namemap_get(&c->ids, id) : -1;
     if (i >= 0 && c->v[i].format == format && c->v[i].type == type && c->v[i].w == w &&
         c->v[i].h == h) {
-        draw_rect(ip, c->v[i].px, w, h);
+        draw_rect(ip, c->v[i].px, w, h, false);
         return;
     }
     uint32_t lost = 0;
@@ -486,9 +482,13 @@ static void draw_pixels(interp *ip, uint32_t id, GLenum format, GLenum type, int
         ip->scene->failed = true;
         return;
     }
-    interp_pixels_float(px, src, (size_t)w * (size_t)h, format, type);
-    draw_rect(ip, px, w, h);
-    if (!conv_keep(ip, id, format, type, w, h, px))
+    if (index)
+        interp_pixels_index(ip, px, src, (size_t)w * (size_t)h, type);
+    else
+        interp_pixels_float(px, src, (size_t)w * (size_t)h, format, type);
+    draw_rect(ip, px, w, h, index);
+    /* indices are kept as the maps made them colours: not for later draws */
+    if (index || !conv_keep(ip, id, format, type, w, h, px))
         tr_free(px);
 }
 

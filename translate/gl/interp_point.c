@@ -80,7 +80,8 @@ void interp_pointparameter(interp *ip, const rgl_cmd *cmd)
             interp_bad_enum(ip, "point sprite origin", e);
             return;
         }
-        break; /* point sprites are drawn untextured: nothing to keep */
+        a->point.sprite_origin = e;
+        break;
     }
     default:
         interp_bad_enum(ip, "point parameter", pname);

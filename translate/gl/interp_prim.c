@@ -93,16 +93,8 @@ static void draw_notes(interp *ip)
     /* Polygon stipple: interp_pstipple.c; line stipple: interp_stipple.c. */
     if (interp_scissor_cuts(ip, a->viewport.rect) && ip->prim_mode <= GL_LINE_STRIP)
         interp_note(ip, DIAG_NOTE_SCISSOR); /* lines and points: drawn whole */
-    if (c[INTERP_CAP_BLEND] && a->color_buffer.blend_equation != GL_FUNC_ADD)
-        interp_note(ip, DIAG_NOTE_BLEND_EQUATION);
-    /* The fade threshold acts on points only (GL 2.1 3.4). */
-    if (a->point.fade_threshold != 1 &&
-        (ip->prim_mode == GL_POINTS ||
-         (ip->prim_mode > GL_LINE_STRIP &&
-          (a->polygon.mode[0] == GL_POINT || a->polygon.mode[1] == GL_POINT))))
-        interp_note(ip, DIAG_NOTE_POINT_FADE);
-    if (c[INTERP_CAP_COLOR_LOGIC_OP] && a->color_buffer.logic_op != GL_COPY)
-        interp_note(ip, DIAG_NOTE_COLOR_MASK); /* the masks: interp_masks.c */
+    /* Blend equations and logic ops: interp_blend.c; the fade threshold:
+     * add_point, for points below it. */
     interp_zorder_draw(ip); /* NOTE_DEPTH, at the frame's end */
     /* GL 1.x 3.9: with GL_SINGLE_COLOR the texture modulates the specular
      * term too; POV-Ray adds the highlight after the texture, which is
@@ -290,8 +282,13 @@ static uint8_t blend_mode(interp *ip, GLenum mode)
 {
     const gl_attribs *a = &ip->st.a;
     ip->prim_blend_mapped = false;
+    int fx = interp_blend_begin(ip, mode);
+    if (fx >= 0)
+        return (uint8_t)fx;
     if (!a->caps[INTERP_CAP_BLEND])
         return SCENE_BLEND_OPAQUE;
+    if (a->color_buffer.blend_equation != GL_FUNC_ADD)
+        interp_note(ip, DIAG_NOTE_BLEND_EQUATION); /* lit, textured or fogged */
     GLenum src = a->color_buffer.blend_src, dst = a->color_buffer.blend_dst;
     if (src == GL_SRC_ALPHA && dst == GL_ONE_MINUS_SRC_ALPHA)
         return SCENE_BLEND_ALPHA;
@@ -341,6 +338,8 @@ void interp_begin_mode(interp *ip, GLenum mode)
     ip->prim_mode = mode;
     ip->prim_skip = true;
     ip->prim_plain = 0;
+    ip->prim_fx = false;
+    ip->prim_filter = 0;
     interp_vmat_begin(ip);
     ip->prim_color_sum = ip->prim_fog_vertex = false;
     if (!ip->scene || !interp_render_mode_draws(ip))
@@ -357,8 +356,8 @@ void interp_begin_mode(interp *ip, GLenum mode)
         return;
     ip->prim_skip = false;
     ip->prim_first = ip->scene->nverts;
-    ip->prim_blend = blend_mode(ip, mode);
     interp_draw_units(ip);
+    ip->prim_blend = blend_mode(ip, mode);
     interp_fogsec_begin(ip, mode);
     const uint8_t *c = ip->st.a.caps;
     bool lit = c[INTERP_CAP_LIGHTING];

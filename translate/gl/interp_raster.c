@@ -54,7 +54,7 @@ void interp_begin_frame(interp *ip)
     ip->camera_fixed = false;
     ip->frame_begin = false;
     ip->frame_name[0] = '\0';
-    ip->notes_seen = ip->notes_held = 0;
+    interp_clear_notes(ip);
     ip->cleared = false;
     ip->painter = 0;
     ip->shape_facets = 0;
@@ -73,7 +73,7 @@ void interp_begin_frame(interp *ip)
     interp_pixels_begin_frame(ip);
     /* the scene's stencil region starts empty (interp_stencil.c) */
     ip->stencil.first = 0;
-    ip->stencil.written = ip->stencil.mixed = false;
+    ip->stencil.written = ip->stencil.mixed = ip->stencil.box_pending = false;
 }
 
 void interp_end_frame(interp *ip)
@@ -92,6 +92,7 @@ void interp_end_frame(interp *ip)
     interp_proj_end_frame(ip);
     interp_zorder_end_frame(ip);
     interp_pixels_end_frame(ip);
+    interp_dest_end_frame(ip);
     interp_scissor_end_frame(ip);
     if (!ip->cleared)
         for (int i = 0; i < 4; i++)
@@ -184,8 +185,17 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
     if ((mask & GL_DEPTH_BUFFER_BIT) && !(mask & GL_COLOR_BUFFER_BIT) &&
         ip->st.render_mode == GL_RENDER)
         interp_proj_depth_clear(ip);
-    if ((mask & GL_STENCIL_BUFFER_BIT) && ip->st.render_mode == GL_RENDER)
-        interp_stencil_clear(ip);
+    if ((mask & GL_DEPTH_BUFFER_BIT) && ip->st.render_mode == GL_RENDER && ip->st.a.depth.mask &&
+        !((mask & GL_COLOR_BUFFER_BIT) && !interp_scissor_cuts(ip, ip->st.a.viewport.rect)))
+        interp_dest_depth_clear(ip);
+    if ((mask & GL_ACCUM_BUFFER_BIT) && ip->st.render_mode == GL_RENDER)
+        interp_accum_buffer_clear(ip);
+    if ((mask & GL_STENCIL_BUFFER_BIT) && ip->st.render_mode == GL_RENDER) {
+        if (ip->st.a.caps[INTERP_CAP_SCISSOR_TEST] && interp_scissor_cuts(ip, ip->st.a.viewport.rect))
+            interp_stencil_clear_box(ip);
+        else
+            interp_stencil_clear(ip);
+    }
     if (!(mask & GL_COLOR_BUFFER_BIT) || !ip->scene || ip->st.render_mode != GL_RENDER)
         return;
     if (!cm[0] || !cm[1] || !cm[2])
@@ -283,59 +293,9 @@ void interp_polygonoffset(interp *ip, const rgl_cmd *cmd)
     ip->st.a.polygon.offset_units = (float)arg_num(&cmd->arg[1]);
 }
 
-/* ---- Per-fragment state (issue 4 translates blending and alpha) ---------------- */
+/* ---- Per-fragment state (blending: interp_blend.c) ----------------------------- */
 
 static bool is_compare(GLenum f) { return f >= GL_NEVER && f <= GL_ALWAYS; }
-
-static bool is_blend_factor(GLenum f)
-{
-    switch (f) {
-    case GL_ZERO: case GL_ONE: case GL_SRC_COLOR: case GL_ONE_MINUS_SRC_COLOR:
-    case GL_DST_COLOR: case GL_ONE_MINUS_DST_COLOR: case GL_SRC_ALPHA:
-    case GL_ONE_MINUS_SRC_ALPHA: case GL_DST_ALPHA: case GL_ONE_MINUS_DST_ALPHA:
-    case GL_SRC_ALPHA_SATURATE: case GL_CONSTANT_COLOR: case GL_ONE_MINUS_CONSTANT_COLOR:
-    case GL_CONSTANT_ALPHA: case GL_ONE_MINUS_CONSTANT_ALPHA:
-        return true;
-    default:
-        return false;
-    }
-}
-
-void interp_blendfunc(interp *ip, const rgl_cmd *cmd)
-{
-    GLenum s = arg_enum(cmd, 0), d = arg_enum(cmd, 1);
-    if (!is_blend_factor(s) || !is_blend_factor(d)) {
-        interp_bad_enum(ip, "blend factor", is_blend_factor(s) ? d : s);
-        return;
-    }
-    ip->st.a.color_buffer.blend_src = s;
-    ip->st.a.color_buffer.blend_dst = d;
-}
-
-/* GL 1.4 (ARB_imaging in Mesa's compatibility context): the scene blends
- * as GL_FUNC_ADD; the others are noted where a blended draw uses them. */
-void interp_blendequation(interp *ip, const rgl_cmd *cmd)
-{
-    GLenum m = arg_enum(cmd, 0);
-    if (m != GL_FUNC_ADD && m != GL_FUNC_SUBTRACT && m != GL_FUNC_REVERSE_SUBTRACT &&
-        m != GL_MIN && m != GL_MAX) {
-        interp_bad_enum(ip, "blend equation", m);
-        return;
-    }
-    ip->st.a.color_buffer.blend_equation = m;
-}
-
-/* The sixteen logic ops, GL_CLEAR .. GL_SET (GL 1.1 table 4.3); drawn with
- * GL_COLOR_LOGIC_OP on, any of them is noted, as the colour mask is. */
-void interp_logicop(interp *ip, const rgl_cmd *cmd)
-{
-    GLenum op = arg_enum(cmd, 0);
-    if (op < GL_CLEAR || op > GL_SET) {
-        interp_bad_enum(ip, "logic op", op);
-        return;
-    }
-    ip->st.a.color_buffer.logic_op = op;
-}
 
 void interp_alphafunc(interp *ip, const rgl_cmd *cmd)
 {

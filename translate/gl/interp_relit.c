@@ -7,10 +7,17 @@
  * lighting whose colours vary per vertex: POV-Ray's interior_texture is
  * one texture for the whole mesh. Textured GL_MODULATE
  * surfaces lit past white: GL clamps the lit colour per vertex before the
- * texture multiplies it, POV-Ray does not. For those faces the primitive's
- * vertices are copied with GL's lit colour (as --vertex-lighting does,
- * interp_gouraud.c) into a second, unlit mesh; the other faces keep
- * POV-Ray's lighting.
+ * texture multiplies it, POV-Ray does not. Untextured faces lit past white
+ * too: GL clamps each vertex's colour and interpolates the clamped
+ * colours, POV-Ray clamps each pixel of the interpolated light (an
+ * emission from a colour array, issue 22). For those faces the
+ * primitive's vertices are copied with GL's lit colour (as
+ * --vertex-lighting does, interp_gouraud.c) into a second, unlit mesh;
+ * the other faces keep POV-Ray's lighting. Untextured, that is done where
+ * the colour without its highlights can pass white (a bound from the
+ * material and the lights, so that most primitives never have GL's colour
+ * made): a highlight that saturates keeps POV-Ray's per-pixel lighting, as
+ * highlights do everywhere (see --vertex-lighting).
  */
 #include "interp_internal.h"
 #include "talloc.h"
@@ -60,6 +67,37 @@ void interp_relit_flush(interp *ip)
     ip->relit_made = n;
 }
 
+bool interp_relit_may_saturate(const interp *ip)
+{
+    const gl_attribs *a = &ip->st.a;
+    const gl_material *m = &a->lighting.material[0];
+    GLenum cmm = a->lighting.color_material_mode;
+    bool cm = a->caps[INTERP_CAP_COLOR_MATERIAL], any = ip->vmat.changed;
+    bool cm_a = any || (cm && (cmm == GL_AMBIENT || cmm == GL_AMBIENT_AND_DIFFUSE));
+    bool cm_d = any || (cm && (cmm == GL_DIFFUSE || cmm == GL_AMBIENT_AND_DIFFUSE));
+    bool cm_e = any || (cm && cmm == GL_EMISSION);
+    for (int k = 0; k < 3; k++) {
+        double ka = cm_a ? 1 : m->ambient[k], kd = cm_d ? 1 : m->diffuse[k];
+        double ke = cm_e ? 1 : m->emission[k];
+        double sum = ke + ka * a->lighting.model_ambient[k];
+        for (int l = 0; l < INTERP_MAX_LIGHTS; l++) {
+            if (!a->caps[INTERP_CAP_LIGHT0 + l])
+                continue;
+            const gl_light *li = &a->lighting.light[l];
+            const float *at = li->attenuation;
+            /* GL 2.1 2.14.1: the attenuation is at most 1 / kc when no
+             * factor is negative; unbounded otherwise. */
+            double att = li->position[3] == 0 ? 1
+                         : at[0] > 0 && at[1] >= 0 && at[2] >= 0 ? 1 / (double)at[0]
+                                                                 : INFINITY;
+            sum += att * (ka * li->ambient[k] + kd * li->diffuse[k]);
+        }
+        if (!(sum <= 1 + 0.5 / 255))
+            return true;
+    }
+    return false;
+}
+
 int interp_relit_split(interp *ip, const scene_look *look)
 {
     if (!look->lit || !interp_relit_wanted(ip))
@@ -89,6 +127,8 @@ int interp_relit_split(interp *ip, const scene_look *look)
         if (t->env_mode == SCENE_ENV_MODULATE && !t->colour_is_texel)
             return INTERP_RELIT_ALL;
     }
+    if (ip->relit_over && look->texture < 0)
+        return INTERP_RELIT_ALL;
     return INTERP_RELIT_BACK;
 }
 

@@ -17,6 +17,14 @@
  * draw is drawn as if the test passed): a note says so. Two-sided state
  * decides a draw by the face it can show; a draw showing both faces,
  * which the two states treat differently, takes the front's, noted.
+ *
+ * A scissored clear (GL 2.1 4.2.3: only the scissor box is cleared) makes
+ * the box the region when nothing was written since the last clear, adds
+ * the box to the region when it clears to the region's value, and cuts the
+ * box out of it (in the camera's image) when it clears to the value
+ * around; a third value is not followed (noted where a test reads it). The
+ * box's triangles lie on rays through its edges, which run between pixel
+ * centres, so the region holds exactly the box's pixels.
  */
 #include "interp_internal.h"
 
@@ -134,6 +142,151 @@ void interp_clearstencil(interp *ip, const rgl_cmd *cmd)
     ip->st.a.stencil.clear = (int32_t)(rgl_arg_i(&cmd->arg[0], 0) & STENCIL_MAX);
 }
 
+/* Window point (x, y) on the camera's rays, as an eye point. */
+static bool window_eye(const interp *ip, double x, double y, double out[3])
+{
+    double in[4] = {x, y, 0, 1}, o[4];
+    mat4_apply(&ip->cam_from_ndc, in, o);
+    for (int k = 0; k < 3; k++)
+        out[k] = o[3] != 0 ? o[k] / o[3] : NAN;
+    return isfinite(out[0]) && isfinite(out[1]) && isfinite(out[2]);
+}
+
+/* Appends the window polygon p (n corners) as a fan of stencil triangles. */
+static bool add_window_poly(interp *ip, double (*p)[2], int n)
+{
+    double e[8][3];
+    for (int k = 0; k < n; k++)
+        if (!window_eye(ip, p[k][0], p[k][1], e[k]))
+            return false;
+    for (int k = 1; k + 1 < n; k++) {
+        double t[3][3];
+        memcpy(t[0], e[0], sizeof t[0]);
+        memcpy(t[1], e[k], sizeof t[1]);
+        memcpy(t[2], e[k + 1], sizeof t[2]);
+        interp_stencil_tri(ip, t);
+    }
+    return true;
+}
+
+static bool add_box(interp *ip, const int32_t b[4])
+{
+    double p[4][2] = {{b[0], b[1]}, {(double)b[0] + b[2], b[1]},
+                            {(double)b[0] + b[2], (double)b[1] + b[3]}, {b[0], (double)b[1] + b[3]}};
+    return add_window_poly(ip, p, 4);
+}
+
+/* The pending box becomes the region's triangles (the camera is fixed). */
+static void make_box(interp *ip)
+{
+    if (!ip->stencil.box_pending || !ip->camera_fixed || !ip->scene)
+        return;
+    ip->stencil.box_pending = false;
+    ip->stencil.first = ip->scene->nstencil;
+    if (!ip->cam_from_ndc_ok || !add_box(ip, ip->stencil.box))
+        ip->stencil.mixed = true;
+}
+
+/* Clips the convex window polygon p (n corners, at most 7) to the half
+ * plane where coordinate axis of a point is on side sg of v. */
+static int clip_half(double (*p)[2], int n, int axis, double v, double sg, double (*out)[2])
+{
+    int m = 0;
+    for (int k = 0; k < n; k++) {
+        const double *a = p[k], *b = p[(k + 1) % n];
+        double da = sg * (a[axis] - v), db = sg * (b[axis] - v);
+        if (da >= 0)
+            memcpy(out[m++], a, sizeof out[0]);
+        if ((da >= 0) != (db >= 0)) {
+            double t = da / (da - db);
+            out[m][0] = a[0] + t * (b[0] - a[0]);
+            out[m][1] = a[1] + t * (b[1] - a[1]);
+            m++;
+        }
+    }
+    return m;
+}
+
+/* The region without the window box b: each triangle's parts left of,
+ * right of, below and above it. False when a triangle cannot be seen in
+ * the window (behind the eye). */
+static bool cut_box(interp *ip, const int32_t b[4])
+{
+    scene *s = ip->scene;
+    const scene_camera *cam = &s->camera;
+    const int32_t *vp = ip->cam_viewport;
+    size_t first = ip->stencil.first, last = s->nstencil;
+    if (!ip->cam_from_ndc_ok || last - first > STENCIL_REGION_MAX)
+        return false;
+    double x0 = b[0], y0 = b[1], x1 = (double)b[0] + b[2], y1 = (double)b[1] + b[3];
+    ip->stencil.first = last;
+    for (size_t i = first; i < last; i++) {
+        double w[3][2];
+        for (int v = 0; v < 3; v++) {
+            double e[3], im[2];
+            for (int k = 0; k < 3; k++)
+                e[k] = s->stencil_tris[i][3 * v + k];
+            if (!scene_camera_project(cam, e, im))
+                return false;
+            w[v][0] = im[0] + vp[0] + vp[2] / 2.0;
+            w[v][1] = im[1] + vp[1] + vp[3] / 2.0;
+        }
+        double a[8][2], c[8][2], d[8][2];
+        int n;
+        if ((n = clip_half(w, 3, 0, x0, -1, a)) >= 3 && !add_window_poly(ip, a, n))
+            return false;
+        if ((n = clip_half(w, 3, 0, x1, 1, a)) >= 3 && !add_window_poly(ip, a, n))
+            return false;
+        n = clip_half(w, 3, 0, x0, 1, a);
+        n = n >= 3 ? clip_half(a, n, 0, x1, -1, c) : 0;
+        int m = n >= 3 ? clip_half(c, n, 1, y0, -1, d) : 0;
+        if (m >= 3 && !add_window_poly(ip, d, m))
+            return false;
+        m = n >= 3 ? clip_half(c, n, 1, y1, 1, d) : 0;
+        if (m >= 3 && !add_window_poly(ip, d, m))
+            return false;
+    }
+    return true;
+}
+
+void interp_stencil_clear_box(interp *ip)
+{
+    const gl_attribs *a = &ip->st.a;
+    uint32_t wm = a->stencil.face[0].write_mask & STENCIL_MAX;
+    uint32_t c0 = (uint32_t)ip->stencil.cleared, v = (uint32_t)ip->stencil.value;
+    int32_t out = (int32_t)((c0 & ~wm) | ((uint32_t)a->stencil.clear & wm));
+    if (!ip->scene)
+        return;
+    make_box(ip);
+    if (ip->stencil.mixed)
+        return;
+    if (!ip->stencil.written) {
+        if (out == (int32_t)c0)
+            return; /* the value it holds already */
+        ip->stencil.value = out;
+        ip->stencil.written = true;
+        memcpy(ip->stencil.box, a->scissor.box, sizeof ip->stencil.box);
+        ip->stencil.box_pending = true;
+        make_box(ip);
+        return;
+    }
+    int32_t in = (int32_t)((v & ~wm) | ((uint32_t)a->stencil.clear & wm));
+    if (in != out) {
+        if (in != (int32_t)v || out != (int32_t)c0)
+            ip->stencil.mixed = true; /* three values */
+        return;
+    }
+    if (in == (int32_t)v) {
+        if (!ip->camera_fixed || !ip->cam_from_ndc_ok || !add_box(ip, a->scissor.box))
+            ip->stencil.mixed = true;
+    } else if (in == (int32_t)c0) {
+        if (!ip->camera_fixed || !cut_box(ip, a->scissor.box))
+            ip->stencil.mixed = true;
+    } else {
+        ip->stencil.mixed = true;
+    }
+}
+
 void interp_stencil_clear(interp *ip)
 {
     const gl_attribs *a = &ip->st.a;
@@ -145,6 +298,7 @@ void interp_stencil_clear(interp *ip)
                                     ((uint32_t)a->stencil.clear & wm));
     ip->stencil.written = false;
     ip->stencil.mixed = false;
+    ip->stencil.box_pending = false;
 }
 
 static bool test(GLenum f, uint32_t ref, uint32_t s)
@@ -263,6 +417,7 @@ bool interp_stencil_draw(interp *ip)
     ip->stencil.clip = 0;
     if (!a->caps[INTERP_CAP_STENCIL_TEST] || !ip->scene)
         return true;
+    make_box(ip);
     const struct gl_stencil_face *sf = &a->stencil.face[deciding_face(ip)];
     stencil_outcome o = outcome(ip, sf);
     int32_t out = ip->stencil.cleared;

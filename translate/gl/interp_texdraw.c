@@ -1,6 +1,7 @@
 /* interp_texdraw.c: what a draw samples (issue 5): a unit's complete
  * texture as a scene texture (the level, the slice of a 3D texture, a cube
- * map's faces, the mipmap chain, the environment and the alpha test), and
+ * map's faces, the mipmap chain, a depth texture compared with r, the
+ * environment and the alpha test), and
  * the texture coordinates GL gives each vertex: texgen (object and eye
  * linear, sphere, normal and reflection maps), the texture matrix, q.
  */
@@ -15,14 +16,16 @@
 
 /* tex_made.how: the image as it is, mirrored (mirror clamp) along s or t,
  * a cube map's face, a 3D texture's slice (linear between two, the wrap
- * mode of r above bit 32). */
+ * mode of r above bit 32), a depth texture compared with r (the compare
+ * function above bit 16, the depth texture mode above bit 32). */
 enum {
     MADE_PLAIN = 1,
     MADE_MIRROR_S = 2,
     MADE_MIRROR_T = 4,
     MADE_FACE = 8,
     MADE_SLICE = 16,
-    MADE_SLICE_LINEAR = 32
+    MADE_SLICE_LINEAR = 32,
+    MADE_COMPARE = 64
 };
 
 void interp_texture_begin_frame(interp *ip)
@@ -221,13 +224,20 @@ static int32_t cube_for_draw(interp *ip, tex_obj *o, const interp_tex_unit *u, i
  * st holds the sampling they share; ms and mt double each level as the
  * mirror clamp does the base (interp_tex_mirror_fill), so the level of
  * detail the writer computes from the sizes stays GL's. */
-static int32_t mip_chain(interp *ip, tex_obj *o, scene_texture *st, bool ms, bool mt)
+static int32_t mip_chain(interp *ip, tex_obj *o, scene_texture *st, bool ms, bool mt, float unit_bias)
 {
     int b = o->base_level, q = last_level(o, b);
     int32_t next = -1;
     st->mip_filter = interp_scene_mip(o->min_filter);
     st->min_lod = o->min_lod;
     st->max_lod = o->max_lod;
+    /* GL 2.1 3.8.8: the object's bias and the unit's, clamped to
+     * GL_MAX_TEXTURE_LOD_BIAS (Mesa's 16), added to lambda before the
+     * GL_TEXTURE_MIN_LOD .. MAX_LOD clamp. */
+    double bias = (double)o->lod_bias + unit_bias;
+    st->lod_bias = (float)(bias < -TEX_MAX_LOD_BIAS ? -TEX_MAX_LOD_BIAS
+                           : bias > TEX_MAX_LOD_BIAS ? TEX_MAX_LOD_BIAS
+                                                     : bias);
     for (int k = q; k >= b; k--) {
         const tex_image *im = *interp_tex_level_slot(o, k);
         scene_texture lt = *st;
@@ -284,6 +294,41 @@ static bool slice_at(interp *ip, const tex_obj *o, int k, double *r)
     return true;
 }
 
+/* GL 2.1 3.8.14: with GL_COMPARE_R_TO_TEXTURE a depth texture's texel is
+ * 1 where r (clamped to [0, 1]) passes the compare function against the
+ * depth D and 0 elsewhere, then taken as luminance, intensity or alpha by
+ * GL_DEPTH_TEXTURE_MODE; under GL_LINEAR Mesa filters the four results.
+ * Where r is constant over the primitive that is an image of results,
+ * which POV-Ray's filter samples as GL does; the depth comes from the
+ * 8-bit texels of src kept, compared with r (the caller's: constant).
+ * NULL over the budget or without memory. */
+static tex_image *tex_compared(interp *ip, const tex_obj *o, const tex_image *src, double r)
+{
+    size_t n = (size_t)src->width * (size_t)src->height;
+    if (!interp_budget_texels(ip, n * 4))
+        return NULL;
+    tex_image *img = tr_realloc(NULL, sizeof *img + n * 4);
+    if (!img) {
+        ip->scene->failed = true;
+        return NULL;
+    }
+    img->refs = 1;
+    img->width = src->width;
+    img->height = src->height;
+    r = r < 0 ? 0 : r > 1 ? 1 : r;
+    bool alpha = o->depth_mode == GL_ALPHA;
+    for (size_t i = 0; i < n; i++) {
+        const uint8_t *s = src->rgba + i * 4;
+        double d = (alpha ? s[3] : s[0]) / 255.0;
+        bool pass = scene_alpha_pass(interp_scene_cmp(o->compare_func), (float)r, (float)d);
+        uint8_t v = pass ? 255 : 0, *q = img->rgba + i * 4;
+        q[0] = q[1] = q[2] = alpha ? 255 : v;
+        q[3] = o->depth_mode == GL_LUMINANCE ? 255 : v;
+    }
+    img->serial = 0; /* temporary: found by its source (made_find) */
+    return img;
+}
+
 int32_t interp_texture_for_draw(interp *ip)
 {
     interp_draw_units(ip);
@@ -315,6 +360,19 @@ int32_t interp_texture_for_unit(interp *ip, int k)
         return -1;
     const tex_image *im = o->depth3 ? o->img : *interp_tex_level_slot(o, o->base_level); /* complete: not NULL */
     int iw = im->width, ih = o->depth3 ? im->height / o->depth3 : im->height;
+    /* A depth texture compared with r: the image of results where r is
+     * constant (tex_compared), made below unless the scene has it; else,
+     * noted, its depth values. */
+    bool compare = !o->depth3 && o->depth && o->compare_mode == GL_COMPARE_R_TO_TEXTURE;
+    if (compare) {
+        double lo = ip->st.tex->r_min[k], hi = ip->st.tex->r_max[k];
+        if (mipmap_filter(o->min_filter) || !(lo <= hi) || hi - lo > 1e-6 || !isfinite(lo)) {
+            interp_note(ip, DIAG_NOTE_TEX_COMPARE); /* level by level, or r varies */
+            compare = false;
+        } else {
+            r = lo;
+        }
+    }
     GLenum env = u.texture->env_mode;
     if (env == GL_COMBINE) { /* as the fixed mode it equals, if any */
         GLenum m = interp_combine_mode(u.texture, k, ip->draw_unit[0] == k);
@@ -339,11 +397,15 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     else if (o->min_filter != o->mag_filter)
         interp_note(ip, DIAG_NOTE_TEX_SAMPLING);
     /* GL_CLAMP under a linear filter blends the border colour into the
-     * outer half of the edge texels (GL 2.1 3.8.8); the image written is
-     * padded with its edge texels instead (docs/mapping.md "Wrap"). */
-    bool linear = o->mag_filter == GL_LINEAR || o->min_filter == GL_LINEAR ||
-                  o->min_filter == GL_LINEAR_MIPMAP_NEAREST || o->min_filter == GL_LINEAR_MIPMAP_LINEAR;
-    if (linear && (o->wrap_s == GL_CLAMP || (o->target != GL_TEXTURE_1D && o->wrap_t == GL_CLAMP)))
+     * outer half of the edge texels (GL 2.1 3.8.8): the writer samples
+     * GL's filter every half texel (povwrite_texture.c), except for the
+     * levels of a mipmap, padded with the edge texels' mix with the border
+     * (docs/mapping.md "Wrap"). */
+    bool linear_levels = o->min_filter == GL_LINEAR_MIPMAP_NEAREST ||
+                         o->min_filter == GL_LINEAR_MIPMAP_LINEAR ||
+                         (mipmap_filter(o->min_filter) && o->mag_filter == GL_LINEAR);
+    if (linear_levels &&
+        (o->wrap_s == GL_CLAMP || (o->target != GL_TEXTURE_1D && o->wrap_t == GL_CLAMP)))
         interp_note(ip, DIAG_NOTE_TEX_CLAMP_BORDER);
     const gl_attribs *ga = &ip->st.a;
     GLenum cmm = ga->lighting.color_material_mode;
@@ -360,6 +422,9 @@ int32_t interp_texture_for_unit(interp *ip, int k)
         /* The mirrored image clamped to its edge is GL's own sampling but
          * where GL_MIRROR_CLAMP_EXT blends the border colour into the
          * edge texels under linear filtering (as GL_CLAMP does). */
+        bool linear = o->mag_filter == GL_LINEAR || o->min_filter == GL_LINEAR ||
+                      o->min_filter == GL_LINEAR_MIPMAP_NEAREST ||
+                      o->min_filter == GL_LINEAR_MIPMAP_LINEAR;
         if (linear)
             interp_note(ip, DIAG_NOTE_TEX_MIRROR_CLAMP);
         else
@@ -383,6 +448,8 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     st.border_t = o->target != GL_TEXTURE_1D &&
                   (o->wrap_t == GL_CLAMP || o->wrap_t == GL_CLAMP_TO_BORDER ||
                    o->wrap_t == GL_MIRROR_CLAMP_TO_BORDER_EXT);
+    st.to_border_s = o->wrap_s == GL_CLAMP_TO_BORDER;
+    st.to_border_t = o->target != GL_TEXTURE_1D && o->wrap_t == GL_CLAMP_TO_BORDER;
     memcpy(st.border, o->border, sizeof st.border);
     st.env_mode = interp_scene_env(env);
     memcpy(st.env_color, u.texture->env_color, sizeof st.env_color);
@@ -414,9 +481,11 @@ int32_t interp_texture_for_unit(interp *ip, int k)
                          (env == GL_DECAL && b != GL_RGBA && b != GL_ALPHA);
 
     if (mipmap_filter(o->min_filter) && !o->depth3) /* the levels, each its own scene texture */
-        return mip_chain(ip, o, &st, ms, mt);
-    uint64_t how = (o->depth3 ? MADE_SLICE | (o->mag_filter == GL_LINEAR ? MADE_SLICE_LINEAR : 0) |
+        return mip_chain(ip, o, &st, ms, mt, u.texture->lod_bias);
+    uint64_t how = (o->depth3    ? MADE_SLICE | (o->mag_filter == GL_LINEAR ? MADE_SLICE_LINEAR : 0) |
                                     (uint64_t)o->wrap_r << 32
+                    : compare ? MADE_COMPARE | (uint64_t)o->compare_func << 16 |
+                                    (uint64_t)o->depth_mode << 32
                               : MADE_PLAIN) |
                    (ms ? MADE_MIRROR_S : 0) | (mt ? MADE_MIRROR_T : 0);
     int32_t idx = made_find(ip, im->serial, how, r, &st);
@@ -431,6 +500,8 @@ int32_t interp_texture_for_unit(interp *ip, int k)
             ip->scene->failed = true;
             return -1;
         }
+    } else if (compare && !(slice = tex_compared(ip, o, im, r))) {
+        return -1;
     }
     const tex_image *src = slice ? slice : im;
     size_t n = (size_t)st.width * (size_t)st.height * 4;
@@ -565,8 +636,8 @@ void interp_vertex_texcoord3(interp *ip, int unit, const double obj[4], const fl
     out[0] = (float)(r[0] / q);
     out[1] = (float)(r[1] / q);
     out[2] = (float)(r[2] / q);
-    if (u.caps[UCAP(TEXTURE_3D)] && !u.caps[UCAP(TEXTURE_CUBE_MAP)] && ip->st.tex && unit >= 0 &&
-        unit < INTERP_TEX_UNITS) {
+    /* r over the primitive: a 3D texture's slice, a depth comparison */
+    if (!u.caps[UCAP(TEXTURE_CUBE_MAP)] && ip->st.tex && unit >= 0 && unit < INTERP_TEX_UNITS) {
         double rq = r[2] / q;
         interp_textures *t = ip->st.tex;
         t->r_min[unit] = fmin(t->r_min[unit], rq);

@@ -50,6 +50,7 @@ typedef struct tex_obj {
     uint32_t levels;      /* bit k: level k defined */
     int32_t base_level, max_level; /* GL_TEXTURE_BASE_LEVEL, GL_TEXTURE_MAX_LEVEL */
     float min_lod, max_lod;        /* GL_TEXTURE_MIN_LOD, GL_TEXTURE_MAX_LOD */
+    float lod_bias;                /* GL_TEXTURE_LOD_BIAS */
     bool generate_mipmap;          /* GL_GENERATE_MIPMAP */
     tex_image *face[6];            /* a cube map's level 0: +X, -X, +Y, -Y, +Z, -Z */
     GLenum wrap_s, wrap_t, min_filter, mag_filter;
@@ -58,11 +59,15 @@ typedef struct tex_obj {
                         other (height = rows x depth3); 0 for 1D and 2D */
     float border[4]; /* GL_TEXTURE_BORDER_COLOR */
     GLenum depth_mode; /* GL_DEPTH_TEXTURE_MODE */
+    GLenum compare_mode, compare_func; /* GL_TEXTURE_COMPARE_MODE, _FUNC */
     bool depth;        /* the base level (or level 0) has a depth internal format:
                           every level drawn as depth_mode */
     uint32_t lost;   /* pixels whose damage left the image missing or partly
                         stale (0: none): every frame drawing with it says so */
 } tex_obj;
+
+/* GL_MAX_TEXTURE_LOD_BIAS of Mesa (llvmpipe's PIPE_CAPF_MAX_TEXTURE_LOD_BIAS). */
+#define TEX_MAX_LOD_BIAS 16.0
 
 struct interp_textures {
     tex_obj *objs; /* named objects, unordered */

@@ -36,6 +36,8 @@ static void obj_defaults(tex_obj *o, uint32_t name)
     o->min_lod = -1000;
     o->max_lod = 1000;
     o->depth_mode = GL_LUMINANCE;
+    o->compare_mode = GL_NONE;
+    o->compare_func = GL_LEQUAL;
 }
 
 /* The image of level k, or NULL. */
@@ -302,15 +304,19 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
             interp_bad_enum(ip, "texture compare mode", e);
             return;
         }
-        if (e != GL_NONE)
-            interp_diag(ip, DIAG_IGNORED,
-                        "texture compare mode GL_COMPARE_R_TO_TEXTURE not translated (depth "
-                        "drawn as it is)");
-        return;
+        break;
+    case GL_TEXTURE_COMPARE_FUNC:
+        if (e < GL_NEVER || e > GL_ALWAYS) {
+            interp_bad_enum(ip, "texture compare function", e);
+            return;
+        }
+        break;
     case GL_TEXTURE_LOD_BIAS:
-        if (v != 0)
-            interp_note(ip, DIAG_NOTE_TEX_LOD_BIAS);
-        return;
+        if (!isfinite(v)) {
+            interp_bad_value(ip, "texture level-of-detail bias");
+            return;
+        }
+        break;
     case GL_TEXTURE_MAG_FILTER:
         if (e != GL_NEAREST && e != GL_LINEAR) {
             interp_bad_enum(ip, "texture magnification filter", e);
@@ -373,10 +379,16 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
         o->min_lod = (float)(v < -1000 ? -1000 : v > 1000 ? 1000 : v);
     } else if (pname == GL_TEXTURE_MAX_LOD) {
         o->max_lod = (float)(v < -1000 ? -1000 : v > 1000 ? 1000 : v);
+    } else if (pname == GL_TEXTURE_LOD_BIAS) {
+        o->lod_bias = (float)(v < -1000 ? -1000 : v > 1000 ? 1000 : v);
     } else if (pname == GL_GENERATE_MIPMAP) {
         o->generate_mipmap = v != 0;
     } else if (pname == GL_DEPTH_TEXTURE_MODE) {
         interp_tex_depth_mode(ip, o, e);
+    } else if (pname == GL_TEXTURE_COMPARE_MODE) {
+        o->compare_mode = e;
+    } else if (pname == GL_TEXTURE_COMPARE_FUNC) {
+        o->compare_func = e;
     } else if (pname == GL_TEXTURE_WRAP_R) {
         o->wrap_r = e;
     } else if (pname == GL_TEXTURE_WRAP_S)
@@ -389,9 +401,9 @@ void interp_texparameter(interp *ip, const rgl_cmd *cmd)
         o->min_filter = e;
 }
 
-/* glTexEnv's other targets (GL 1.4, 2.0): GL_TEXTURE_FILTER_CONTROL's
- * GL_TEXTURE_LOD_BIAS and GL_POINT_SPRITE's GL_COORD_REPLACE, accepted and
- * noted (no mipmaps, no point sprites drawn). */
+/* glTexEnv's other targets (GL 1.4, 2.0): the active unit's
+ * GL_TEXTURE_FILTER_CONTROL GL_TEXTURE_LOD_BIAS (interp_texture_lod_bias)
+ * and GL_POINT_SPRITE's GL_COORD_REPLACE (interp_sprite.c). */
 static void interp_texenv_other(interp *ip, GLenum target, GLenum pname, const rgl_arg *pa)
 {
     double v = pa->kind == RGL_ARG_SCALAR ? arg_num(pa) : (pa->count ? pa->array[0] : 0);
@@ -400,8 +412,11 @@ static void interp_texenv_other(interp *ip, GLenum target, GLenum pname, const r
             interp_bad_enum(ip, "texture filter control pname", pname);
             return;
         }
-        if (v != 0)
-            interp_note(ip, DIAG_NOTE_TEX_LOD_BIAS);
+        if (!isfinite(v)) {
+            interp_bad_value(ip, "texture level-of-detail bias");
+            return;
+        }
+        ip->st.a.texture.lod_bias = (float)(v < -1000 ? -1000 : v > 1000 ? 1000 : v);
         return;
     }
     if (pname != GL_COORD_REPLACE) {
@@ -413,8 +428,7 @@ static void interp_texenv_other(interp *ip, GLenum target, GLenum pname, const r
         interp_bad_enum(ip, "GL_COORD_REPLACE value", e);
         return;
     }
-    if (e == GL_TRUE)
-        interp_note(ip, DIAG_NOTE_POINT_SPRITE);
+    ip->st.a.texture.coord_replace = e == GL_TRUE;
 }
 
 void interp_texenv(interp *ip, const rgl_cmd *cmd)

@@ -26,24 +26,14 @@ void interp_unrec_pixel_uses(interp *ip, bool draws, bool reads, bool from_memor
         interp_unrec_use(ip, UNREC_USE_READ);
     if (from_memory)
         interp_unrec_use(ip, UNREC_USE_IMAGES);
-    if (ip->st.a.pixel.others & 3u) /* GL_MAP_COLOR, GL_MAP_STENCIL (interp_pixeltransfer) */
-        interp_unrec_use(ip, UNREC_USE_PIXEL_MAP);
-}
-
-static bool constant_factor(GLenum f)
-{
-    return f >= GL_CONSTANT_COLOR && f <= GL_ONE_MINUS_CONSTANT_ALPHA;
 }
 
 void interp_unrec_draw_uses(interp *ip, GLenum mode)
 {
     const gl_attribs *a = &ip->st.a;
     const uint8_t *c = a->caps;
-    if (c[INTERP_CAP_BLEND]) {
+    if (c[INTERP_CAP_BLEND])
         interp_unrec_use(ip, UNREC_USE_BLEND);
-        if (constant_factor(a->color_buffer.blend_src) || constant_factor(a->color_buffer.blend_dst))
-            interp_unrec_use(ip, UNREC_USE_BLEND_CONSTANT);
-    }
     if (c[INTERP_CAP_STENCIL_TEST])
         interp_unrec_use(ip, UNREC_USE_STENCIL);
     if (mode == GL_POINTS ||

@@ -355,15 +355,27 @@ static void texture_body(const povlight *pl, outbuf *ob, const scene_look *look,
         return;
     }
     if (!look->lit || look->material < 0 || (size_t)look->material >= s->nmaterials) {
-        /* Unlit: the #default finish makes the pixel the pigment. */
+        /* Unlit: the #default finish makes the pixel the pigment. A
+         * filter (interp_blend.c) passes filter x colour of what is behind,
+         * transmit the rest of 1 - alpha unchanged. */
         double rgb[3] = {c[0], c[1], c[2]};
-        outbuf_puts(ob, t > 0 ? "rgbt<" : "rgb<");
+        double f = look->blend == SCENE_BLEND_ALPHA && look->filter > 0 ? look->filter : 0;
+        if (f > 0) {
+            f = f < 1 ? f : 1;
+            t = 1 - f - c[3];
+            t = t > 0 ? t : 0;
+        }
+        outbuf_puts(ob, f > 0 ? "rgbft<" : t > 0 ? "rgbt<" : "rgb<");
         for (int k = 0; k < 3; k++) {
             put_num(ob, rgb[k]);
             if (k < 2)
                 outbuf_putc(ob, ',');
         }
-        if (t > 0) {
+        if (f > 0) {
+            outbuf_putc(ob, ',');
+            put_num(ob, f);
+        }
+        if (t > 0 || f > 0) {
             outbuf_putc(ob, ',');
             put_num(ob, t);
         }

@@ -181,8 +181,10 @@ int povmip_pigment(outbuf *ob, povtex *pt, const scene *s, int32_t t, const povm
     const scene_camera *cam = &s->camera;
     double W = cam->width > 0 ? cam->width : 1, H = cam->height > 0 ? cam->height : 1;
     char f[12][NUMFMT_F32_ROOM + 3];
-    /* lambda, clamped to the LOD range, as a pigment_map index 0..1 over
-     * the levels (0 at the base: magnification takes it too). */
+    /* lambda plus the bias, clamped to the LOD range (GL 2.1 3.8.8), as a
+     * pigment_map index 0..1 over the levels: level k at k / (n - 1), so a
+     * GL_TEXTURE_MIN_LOD above 0 starts past the base (0 at the base:
+     * magnification takes it too). */
     double lo = fmax(0, base->min_lod), hi = fmin(n > 1 ? n - 1 : 1, base->max_lod);
     if (hi < lo)
         hi = lo;
@@ -220,11 +222,19 @@ int povmip_pigment(outbuf *ob, povtex *pt, const scene *s, int32_t t, const povm
                  "/0.6931471805599453}\n",
                  id, id, tws, id, ths, id, tws, id, ths, id, id, id, id);
         outbuf_puts(ob, tmp);
-        snprintf(lam, sizeof lam, "function{(min(%s,max(%s,rgl_mip%ul(x,y)))-%s)/%s}", sdl_num(f[0], hi),
-                 sdl_num(f[1], lo), id, sdl_num(f[2], lo), sdl_num(f[3], n > 1 ? n - 1 : 1));
+        snprintf(lam, sizeof lam, "function{min(%s,max(%s,rgl_mip%ul(x,y)+%s))/%s}",
+                 sdl_num(f[0], hi), sdl_num(f[1], lo), id, sdl_num(f[4], base->lod_bias),
+                 sdl_num(f[3], n > 1 ? n - 1 : 1));
     } else {
-        double l = fmin(hi, fmax(lo, r->lambda));
-        snprintf(lam, sizeof lam, "function{%s}", sdl_num(f[0], (l - lo) / (n > 1 ? n - 1 : 1)));
+        double l = fmin(hi, fmax(lo, r->lambda + base->lod_bias));
+        /* Half way between two levels Mesa rounds up under
+         * GL_*_MIPMAP_NEAREST (conf_tex_lod_bias: 2 + 1.5 takes level 4),
+         * where the pigment_map's tie would take the lower. */
+        bool nearest = base->mip_filter == GL_NEAREST_MIPMAP_NEAREST ||
+                       base->mip_filter == GL_LINEAR_MIPMAP_NEAREST;
+        if (nearest && fabs(l - floor(l) - 0.5) < 1e-6)
+            l = fmin(hi, l + 1e-4);
+        snprintf(lam, sizeof lam, "function{%s}", sdl_num(f[0], l / (n > 1 ? n - 1 : 1)));
     }
     (void)lam;
     size_t len = 0;

@@ -69,6 +69,36 @@ static void tiles(float a, float b, int32_t *lo, int32_t *hi)
     *hi = (int32_t)h;
 }
 
+/* One axis of the image written: which texels of the texture file texel
+ * j takes (-1: the border colour) and their weights. */
+typedef struct axis_tap {
+    int64_t i[2];
+    double w[2];
+    int n;
+    bool out; /* outside the texture (a clamped axis' padding) */
+} axis_tap;
+
+/* GL_CLAMP under GL_LINEAR (GL 2.1 3.8.7, 3.8.8): the coordinate clamped to
+ * [0, 1], then the two texels about it, those past the edge the border
+ * colour. Over u the result is piecewise linear with knots at the texel
+ * centres and at the edges 0 and 1, half a texel from the first and last
+ * centres; so the image is written at twice the resolution, a sample of
+ * GL's filter every half texel with the edges on samples, and POV-Ray's
+ * bilinear filter between the samples is GL's exactly. */
+static axis_tap clamp_linear_tap(double u, int n)
+{
+    axis_tap t = {{0, 0}, {1, 0}, 2, u < 0 || u > 1};
+    double uc = u < 0 ? 0 : u > 1 ? 1 : u, x = uc * n - 0.5, f = floor(x);
+    t.i[0] = (int64_t)f;
+    t.i[1] = t.i[0] + 1;
+    t.w[1] = x - f;
+    t.w[0] = 1 - t.w[1];
+    for (int k = 0; k < 2; k++)
+        if (t.i[k] < 0 || t.i[k] >= n)
+            t.i[k] = -1;
+    return t;
+}
+
 int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const float uvhi[2],
                bool keep_alpha, const float tint[3], float scale[2], float offset[2])
 {
@@ -77,6 +107,12 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
     /* GL_MIRRORED_REPEAT: the file holds the texture and its mirror image,
      * a period of two tiles that image_map repeats. */
     bool mirror[2] = {tx->repeat_s && tx->mirror_s, tx->repeat_t && tx->mirror_t};
+    /* GL_CLAMP, GL_LINEAR: at twice the resolution (clamp_linear_tap);
+     * mipmaps keep one image per level, whose filter the level decides. */
+    bool twice[2] = {clamp[0] && tx->linear && tx->border_s && !tx->to_border_s && !tx->mip_filter &&
+                         !tx->cube,
+                     clamp[1] && tx->linear && tx->border_t && !tx->to_border_t && !tx->mip_filter &&
+                         !tx->cube};
     uint8_t tint8[3] = {255, 255, 255};
     if (tint)
         for (int k = 0; k < 3; k++)
@@ -85,15 +121,24 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
     int32_t lo[2] = {0, 0}, hi[2] = {1, 1};
     int pad[2] = {0, 0}, out[2];
     for (int k = 0; k < 2; k++) {
+        int per = twice[k] ? 2 : 1;
         if (clamp[k]) {
             tiles(uvlo[k], uvhi[k], &lo[k], &hi[k]);
-            while ((int64_t)(hi[k] - lo[k]) * size[k] + 2 > PADDED_MAX && hi[k] - lo[k] > 1) {
+            while ((int64_t)(hi[k] - lo[k]) * size[k] * per + 3 > PADDED_MAX && hi[k] - lo[k] > 1) {
                 if (hi[k] > 1)
                     hi[k]--;
                 else
                     lo[k]++;
             }
             pad[k] = 1;
+        }
+        if (twice[k]) {
+            /* sample j at u = lo + (j - 1) / 2n, the file's texel centre
+             * (j + 1/2) / out: one sample before lo, two past hi */
+            out[k] = (hi[k] - lo[k]) * size[k] * 2 + 3;
+            scale[k] = (float)(2.0 * size[k] / out[k]);
+            offset[k] = (float)((1.5 - 2.0 * lo[k] * size[k]) / out[k]);
+            continue;
         }
         out[k] = (hi[k] - lo[k]) * size[k] * (mirror[k] ? 2 : 1) + 2 * pad[k];
         /* texel x of the file is texel x - pad + lo * size of the texture */
@@ -117,39 +162,74 @@ int povtex_map(povtex *pt, const scene *s, int32_t t, const float uvlo[2], const
      * nearest filtering give; GL_CLAMP with GL_LINEAR clamps the
      * coordinate to the texture's edge, where the filter weighs the edge
      * texel and the border colour half and half (GL 1.5 3.8.7, Mesa): that
-     * mix, per axis, outside. */
-    bool mix[2] = {tx->linear && tx->border_s, tx->linear && tx->border_t};
+     * mix, per axis, outside, where the image is not written twice as
+     * fine. GL_CLAMP_TO_BORDER takes the border colour for every texel
+     * outside (GL 2.1 3.8.7), so the bilinear filter across the edge of
+     * the padded image is GL's. */
+    bool mix[2] = {tx->linear && tx->border_s && !tx->to_border_s && !twice[0],
+                   tx->linear && tx->border_t && !tx->to_border_t && !twice[1]};
+    bool to_border[2] = {tx->to_border_s, tx->to_border_t};
     uint8_t border[4];
     for (int k = 0; k < 4; k++)
         border[k] = (uint8_t)(tx->border[k] * 255.0f + 0.5f);
     bool alpha = false;
     for (int y = 0; y < out[1]; y++) {
-        int64_t sy = (int64_t)y - pad[1] + (int64_t)lo[1] * size[1];
-        bool outy = sy < 0 || sy >= size[1];
-        if (clamp[1])
-            sy = sy < 0 ? 0 : sy >= size[1] ? size[1] - 1 : sy;
-        else if (mirror[1])
-            sy = sy < size[1] ? sy : 2 * (int64_t)size[1] - 1 - sy;
-        else
-            sy = ((sy % size[1]) + size[1]) % size[1];
-        for (int x = 0; x < out[0]; x++) {
-            int64_t sx = (int64_t)x - pad[0] + (int64_t)lo[0] * size[0];
-            bool outx = sx < 0 || sx >= size[0];
-            if (clamp[0])
-                sx = sx < 0 ? 0 : sx >= size[0] ? size[0] - 1 : sx;
-            else if (mirror[0])
-                sx = sx < size[0] ? sx : 2 * (int64_t)size[0] - 1 - sx;
+        axis_tap ty = {{0, 0}, {1, 0}, 1, false};
+        if (twice[1]) {
+            ty = clamp_linear_tap(lo[1] + (y - 1) / (2.0 * size[1]), size[1]);
+        } else {
+            int64_t sy = (int64_t)y - pad[1] + (int64_t)lo[1] * size[1];
+            ty.out = sy < 0 || sy >= size[1];
+            if (clamp[1])
+                sy = sy < 0 ? 0 : sy >= size[1] ? size[1] - 1 : sy;
+            else if (mirror[1])
+                sy = sy < size[1] ? sy : 2 * (int64_t)size[1] - 1 - sy;
             else
-                sx = ((sx % size[0]) + size[0]) % size[0];
-            const uint8_t *src = tx->rgba + ((size_t)sy * (size_t)size[0] + (size_t)sx) * 4;
+                sy = ((sy % size[1]) + size[1]) % size[1];
+            ty.i[0] = to_border[1] && ty.out ? -1 : sy;
+        }
+        for (int x = 0; x < out[0]; x++) {
+            axis_tap tx_ = {{0, 0}, {1, 0}, 1, false};
+            if (twice[0]) {
+                tx_ = clamp_linear_tap(lo[0] + (x - 1) / (2.0 * size[0]), size[0]);
+            } else {
+                int64_t sx = (int64_t)x - pad[0] + (int64_t)lo[0] * size[0];
+                tx_.out = sx < 0 || sx >= size[0];
+                if (clamp[0])
+                    sx = sx < 0 ? 0 : sx >= size[0] ? size[0] - 1 : sx;
+                else if (mirror[0])
+                    sx = sx < size[0] ? sx : 2 * (int64_t)size[0] - 1 - sx;
+                else
+                    sx = ((sx % size[0]) + size[0]) % size[0];
+                tx_.i[0] = to_border[0] && tx_.out ? -1 : sx;
+            }
             uint8_t *d = px + ((size_t)y * (size_t)out[0] + (size_t)x) * 4;
-            memcpy(d, src, 4);
+            if (tx_.n == 1 && ty.n == 1) {
+                memcpy(d, tx_.i[0] < 0 || ty.i[0] < 0
+                              ? border
+                              : tx->rgba + ((size_t)ty.i[0] * (size_t)size[0] + (size_t)tx_.i[0]) * 4,
+                       4);
+            } else {
+                double acc[4] = {0, 0, 0, 0};
+                for (int b = 0; b < ty.n; b++)
+                    for (int a = 0; a < tx_.n; a++) {
+                        double wt = tx_.w[a] * ty.w[b];
+                        const uint8_t *src =
+                            tx_.i[a] < 0 || ty.i[b] < 0
+                                ? border
+                                : tx->rgba + ((size_t)ty.i[b] * (size_t)size[0] + (size_t)tx_.i[a]) * 4;
+                        for (int k = 0; k < 4; k++)
+                            acc[k] += wt * src[k];
+                    }
+                for (int k = 0; k < 4; k++)
+                    d[k] = (uint8_t)(acc[k] > 255 ? 255 : acc[k] + 0.5);
+            }
             for (int k = 0; k < 3; k++) /* rounded product: 255 keeps the texel */
                 d[k] = (uint8_t)((d[k] * tint8[k] + 127) / 255);
             for (int k = 0; k < 4; k++) {
-                if (mix[0] && outx)
+                if (mix[0] && tx_.out)
                     d[k] = (uint8_t)((d[k] + border[k] + 1) / 2);
-                if (mix[1] && outy)
+                if (mix[1] && ty.out)
                     d[k] = (uint8_t)((d[k] + border[k] + 1) / 2);
             }
             if (scene_alpha_crisp(tx)) {

@@ -217,6 +217,7 @@ bool scene_texture_sampling_same(const scene_texture *a, const scene_texture *b)
     return a->width == b->width && a->height == b->height &&
            a->repeat_s == b->repeat_s && a->repeat_t == b->repeat_t && a->linear == b->linear &&
            a->border_s == b->border_s && a->border_t == b->border_t &&
+           a->to_border_s == b->to_border_s && a->to_border_t == b->to_border_t &&
            memcmp(a->border, b->border, sizeof a->border) == 0 &&
            a->env_mode == b->env_mode && a->colour_is_texel == b->colour_is_texel &&
            memcmp(a->env_color, b->env_color, sizeof a->env_color) == 0 &&
@@ -224,7 +225,8 @@ bool scene_texture_sampling_same(const scene_texture *a, const scene_texture *b)
            a->alpha_func == b->alpha_func && a->alpha_ref == b->alpha_ref &&
            a->alpha_af == b->alpha_af && a->alpha_uses_af == b->alpha_uses_af &&
            a->mip_next == b->mip_next && a->mip_filter == b->mip_filter &&
-           a->min_lod == b->min_lod && a->max_lod == b->max_lod && a->cube == b->cube;
+           a->min_lod == b->min_lod && a->max_lod == b->max_lod && a->cube == b->cube &&
+           a->lod_bias == b->lod_bias;
 }
 
 static bool texture_same(const scene_texture *a, const scene_texture *b)

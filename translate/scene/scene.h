@@ -91,6 +91,10 @@ typedef struct scene_look {
                           (scene_pstipple_index); 0: none */
     uint8_t pstipple_org[2]; /* the window position of the image's lower left, mod 32 */
     uint8_t pad3_[2];
+    float filter; /* with SCENE_BLEND_ALPHA: the share of what is behind that
+                     shows multiplied by the colour (POV-Ray's filter); the
+                     colour's alpha is then the surface's own share, the
+                     rest passes unchanged (transmit 1 - filter - alpha) */
 } scene_look;
 
 /* The alpha test of a look (glAlphaFunc with GL_ALPHA_TEST on). */
@@ -319,6 +323,8 @@ typedef struct scene_texture {
     bool mirror_s, mirror_t; /* repeated as GL_MIRRORED_REPEAT */
     bool border_s, border_t; /* clamped as GL_CLAMP (the border colour counts
                                 under linear filtering), not GL_CLAMP_TO_EDGE */
+    bool to_border_s, to_border_t; /* GL_CLAMP_TO_BORDER: the border colour
+                                outside the texture, under either filter */
     float border[4];         /* GL_TEXTURE_BORDER_COLOR */
     bool linear;             /* magnification GL_LINEAR */
     uint32_t env_mode;       /* SCENE_ENV_* */
@@ -338,6 +344,7 @@ typedef struct scene_texture {
     uint32_t mip_filter;
     int32_t mip_next;
     float min_lod, max_lod;
+    float lod_bias; /* added to lambda before the clamp (GL_TEXTURE_LOD_BIAS) */
     /* A cube map (GL_TEXTURE_CUBE_MAP): this is face +X, and mip_next
      * links -X, +Y, -Y, +Z, -Z in turn (mip_filter 0); the coordinates are
      * the vertices' (tex[0], tex[1], tex1[0]) = (s, t, r). */
