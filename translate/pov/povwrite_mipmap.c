@@ -230,8 +230,8 @@ int povmip_pigment(outbuf *ob, povtex *pt, const scene *s, int32_t t, const povm
         /* Half way between two levels Mesa rounds up under
          * GL_*_MIPMAP_NEAREST (conf_tex_lod_bias: 2 + 1.5 takes level 4),
          * where the pigment_map's tie would take the lower. */
-        bool nearest = base->mip_filter == GL_NEAREST_MIPMAP_NEAREST ||
-                       base->mip_filter == GL_LINEAR_MIPMAP_NEAREST;
+        bool nearest = base->mip_filter == SCENE_MIP_NEAREST_MIPMAP_NEAREST ||
+                       base->mip_filter == SCENE_MIP_LINEAR_MIPMAP_NEAREST;
         if (nearest && fabs(l - floor(l) - 0.5) < 1e-6)
             l = fmin(hi, l + 1e-4);
         snprintf(lam, sizeof lam, "function{%s}", sdl_num(f[0], l / (n > 1 ? n - 1 : 1)));
