@@ -1,7 +1,7 @@
 /* framesel.c: the frame-list parser (framesel.h). */
 #include "framesel.h"
 
-static bool parse_u64(const char *s, const char **end, uint64_t *out)
+bool rgl_parse_u64(const char *s, const char **end, uint64_t *out)
 {
     uint64_t v = 0;
     if (*s < '0' || *s > '9')
@@ -21,7 +21,7 @@ rgl_framesel_status rgl_framesel_next(const char **pp, rgl_frame_range *r)
     const char *p = *pp, *e;
     r->first = r->last = 0;
     r->step = 1;
-    if (!parse_u64(p, &e, &r->first))
+    if (!rgl_parse_u64(p, &e, &r->first))
         return RGL_FRAMESEL_NUMBER;
     r->last = r->first;
     p = e;
@@ -29,7 +29,7 @@ rgl_framesel_status rgl_framesel_next(const char **pp, rgl_frame_range *r)
         p++;
         if (*p == ',' || *p == ':' || *p == '\0') {
             r->last = UINT64_MAX;
-        } else if (!parse_u64(p, &e, &r->last)) {
+        } else if (!rgl_parse_u64(p, &e, &r->last)) {
             *pp = p;
             return RGL_FRAMESEL_NUMBER;
         } else {
@@ -40,7 +40,7 @@ rgl_framesel_status rgl_framesel_next(const char **pp, rgl_frame_range *r)
     }
     if (*p == ':') {
         p++;
-        if (!parse_u64(p, &e, &r->step) || r->step == 0) {
+        if (!rgl_parse_u64(p, &e, &r->step) || r->step == 0) {
             *pp = p;
             return RGL_FRAMESEL_STEP;
         }

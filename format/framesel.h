@@ -33,6 +33,11 @@ typedef enum rgl_framesel_status {
  * read so far. */
 rgl_framesel_status rgl_framesel_next(const char **p, rgl_frame_range *r);
 
+/* Reads the decimal number at s (digits only, no sign) into out and points
+ * end past it; false when s starts with no digit or the number passes
+ * UINT64_MAX. */
+bool rgl_parse_u64(const char *s, const char **end, uint64_t *out);
+
 /* Whether frame i is one of r's. */
 static inline bool rgl_framesel_has(const rgl_frame_range *r, uint64_t i)
 {

@@ -115,21 +115,6 @@ bool opt_bool(const char *value, bool *out, const opt_ctx *ctx, opt_err *err)
 
 /* ---- Numbers and frame lists ------------------------------------------------------------ */
 
-static bool parse_u64(const char *s, const char **end, uint64_t *out)
-{
-    uint64_t v = 0;
-    if (*s < '0' || *s > '9')
-        return false;
-    for (; *s >= '0' && *s <= '9'; s++) {
-        if (v > (UINT64_MAX - 9) / 10)
-            return false;
-        v = v * 10 + (uint64_t)(*s - '0');
-    }
-    *end = s;
-    *out = v;
-    return true;
-}
-
 bool opt_set_frames(options *o, const char *spec, const opt_ctx *ctx, opt_err *err)
 {
     const char *p = spec;
@@ -166,7 +151,7 @@ bool opt_frame_selected(const options *o, uint64_t i)
 static bool parse_count(const char *s, uint64_t lo, uint64_t hi, uint64_t *out)
 {
     const char *e;
-    return parse_u64(s, &e, out) && !*e && *out >= lo && *out <= hi;
+    return rgl_parse_u64(s, &e, out) && !*e && *out >= lo && *out <= hi;
 }
 
 /* ---- The setters of this file's options ---------------------------------------------------- */
