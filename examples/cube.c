@@ -1,5 +1,5 @@
 /* cube.c: the README's example. A GLUT program written with the raygl*
- * twins: a lit scene (scene.h), a turning cube, a sphere and a cone on a
+ * twins: a lit scene (example_scene.h), a turning cube, a sphere and a cone on a
  * checkered floor under a directional light. Each glutSwapBuffers
  * (rayglutSwapBuffers) ends a frame of the trace.
  *
@@ -13,7 +13,7 @@
 
 #include <raygl.h>
 
-#include "scene.h"
+#include "example_scene.h"
 
 static int frames_left = 3;
 static int frame;

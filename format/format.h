@@ -362,7 +362,7 @@ rgl_status rgl_trace_builder_frame(rgl_trace_builder *builder, uint32_t stream, 
 rgl_status rgl_trace_builder_finish(rgl_trace_builder *builder, bool with_index,
                                     const uint8_t **data, size_t *size);
 
-/* ---- Frame snapshots (format 1.2, format/snapshot.c) ------------------------- */
+/* ---- Frame snapshots (format 1.2, format/snapimage.c) ------------------------- */
 
 #define RGL_SNAPSHOT_SIDE_MAX 16384    /* widest and tallest snapshot */
 #define RGL_SNAPSHOT_FORMAT_RGB 0x1907 /* GL_RGB: 3 bytes a pixel */

@@ -1,6 +1,6 @@
 #!/bin/sh
 # make-doc-images.sh: the docs' pictures (docs/img/*.png), each two frames
-# side by side, from the README example's scene (examples/scene.h) drawn
+# side by side, from the README example's scene (examples/example_scene.h) drawn
 # once with OSMesa by the image-test program tests/programs/example_scene.c:
 #
 #   example-gl-pov.png   the OpenGL frame | the ray-traced frame (defaults)

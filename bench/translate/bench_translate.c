@@ -49,6 +49,7 @@
 
 #include "format.h"
 #include "frame.h"
+#include "povwrite.h"
 #include "numfmt.h"
 #include "outbuf.h"
 
@@ -230,6 +231,7 @@ static void run_layout(const char *name, int strips, int nframes, size_t tris, i
         exit(1);
     }
     translator *t = translator_create(r, NULL);
+    povwriter *pw = povwriter_create();
     outbuf ob;
     outbuf_init(&ob, 1 << 26, NULL, NULL);
 
@@ -260,9 +262,9 @@ static void run_layout(const char *name, int strips, int nframes, size_t tris, i
             translator_build(t, i, NULL, &res);
             bld[k] += now() - tb0;
             ntri_total += translator_scene(t)->ntris;
-            pov_frame_info info = {"frame.pov", "bench.raygl", i, 0, (uint32_t)i, NULL, NULL, NULL};
+            pov_frame_info info = {"frame.pov", "bench.raygl", i, 0, (uint32_t)i, NULL, NULL};
             ob.len = 0;
-            translator_write_pov(t, &ob, &info);
+            povwriter_scene(pw, &ob, translator_scene(t), &info);
             sdl += (double)ob.len;
         }
         tra[k] = now() - t0;
@@ -338,6 +340,7 @@ static void run_layout(const char *name, int strips, int nframes, size_t tris, i
         }
     }
     outbuf_finish(&ob);
+    povwriter_destroy(pw);
     translator_destroy(t);
     rgl_reader_destroy(r);
     rgl_trace_builder_destroy(tb);
@@ -365,18 +368,20 @@ static size_t write_frame_sdl(size_t tris, const char *dir, const char *name, bo
     size_t ntris = translator_scene(t)->ntris;
     outbuf ob;
     outbuf_init(&ob, 1 << 26, NULL, NULL);
-    pov_frame_info info = {name, "bench.raygl", 0, 0, 0, NULL, NULL, NULL};
-    translator_write_pov(t, &ob, &info);
+    pov_frame_info info = {name, "bench.raygl", 0, 0, 0, NULL, NULL};
+    povwriter *pw = povwriter_create();
+    povwriter_scene(pw, &ob, translator_scene(t), &info);
     char path[4096];
     snprintf(path, sizeof path, "%s/%s", dir, name);
     FILE *f = fopen(path, "wb");
     if (!f || fwrite(ob.buf, 1, ob.len, f) != ob.len || fclose(f) != 0 ||
-        translator_write_images(t, dir, path, sizeof path) != 0) {
+        povwriter_write_images(pw, dir, path, sizeof path) != 0) {
         perror(path);
         ntris = 0;
     }
     *mb = ob.len / 1e6;
     outbuf_finish(&ob);
+    povwriter_destroy(pw);
     translator_destroy(t);
     rgl_reader_destroy(r);
     rgl_trace_builder_destroy(tb);

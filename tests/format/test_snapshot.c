@@ -1,4 +1,4 @@
-/* test_snapshot.c: @Snapshot images (format 1.2, format/snapshot.c). An
+/* test_snapshot.c: @Snapshot images (format 1.2, format/snapimage.c). An
  * image survives encode and decode with its rows turned top first; hostile
  * commands and resources (sizes out of range, unknown format or codec, a
  * resource of the wrong kind, a stream cut short, with bytes after it,

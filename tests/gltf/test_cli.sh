@@ -1,9 +1,11 @@
 #!/bin/sh
 # test_cli.sh: raygl2pov --format gltf from the command line: the frames
 # and names of the POV-Ray output, the raygl2gltf alias, settings files,
-# same trace => same bytes (-j 1 and -j 2), POV-Ray-only options and bad
-# values rejected (exit 2, one line), an unwritable folder (exit 1, nothing
-# half-written), hostile frame names kept inside the folder.
+# same trace => same bytes (-j 1 and -j 2), the look's options as glTF
+# keeps them (--area-lights and --radiosity as extras, --include said to
+# be left out), POV-Ray-only options and bad values rejected (exit 2, one
+# line), an unwritable folder (exit 1, nothing half-written), hostile frame
+# names kept inside the folder.
 #
 #   test_cli.sh RAYGL2POV MKTRACES
 set -u
@@ -88,14 +90,37 @@ run "$good" -q --format gltf -o nolights --frames 0 --no-gl-lights
 grep -a -q 'KHR_lights_punctual' nolights/frame-00000.glb && fail "--no-gl-lights kept lights" ||
     ok "--no-gl-lights: no lights"
 
+# ---- what the look step asks beyond GL's picture, as glTF can keep it
+run "$good" -q --format gltf -o soft --frames 0 --area-lights 4 --light 'area at=0,3,0 size=2,1'
+expect_rc 0 "--area-lights with --format gltf"
+grep -a -q '"rayglShadowRadius":0.75}' soft/frame-00000.glb &&
+    ok "--light area 2x1: a soft radius of 0.75 (the GL lights': tests/gltf/test_gltf.c)" ||
+    fail "soft shadows: $(grep -a -o '"lights":.*"scene"' soft/frame-00000.glb)"
+grep -a -q 'rayglShadow' glb/frame-00000.glb && fail "a light has a size without --area-lights" ||
+    ok "no light size by default"
+run "$good" -q --format gltf -o rad --frames 0 --radiosity
+expect_rc 0 "--radiosity with --format gltf"
+grep -a -q '"radiosity":true' rad/frame-00000.glb && ! grep -a -q '"radiosity"' glb/frame-00000.glb &&
+    ok "--radiosity: extras.radiosity" || fail "--radiosity not in the file's extras"
+printf 'plane{y,-1 pigment{rgb 1}}\n' >floor.inc
+run "$good" --format gltf -o inc --frames 0,1 --include floor.inc
+expect_rc 0 "--include with --format gltf"
+[ "$(grep -c 'include.*POV-Ray SDL.*left out' "$work/err")" -eq 1 ] &&
+    ok "--include: said once for the run" || fail "--include's note: $(cat "$work/err")"
+cmp -s inc/frame-00000.glb glb/frame-00000.glb && [ -z "$(ls inc | grep -v '\.glb$')" ] &&
+    ok "--include: the frames as without it, no file copied" ||
+    fail "--include changed the output: $(ls inc)"
+run "$good" -q --format gltf -o incq --frames 0 --include floor.inc
+[ ! -s "$work/err" ] && ok "--include's note: not with --quiet" || fail "with -q: $(cat "$work/err")"
+
 # ---- bad usage: exit 2, one line
 run "$good" --format obj -o bad
 expect_rc 2 "--format obj"
 one_line "format 'obj': expected pov or gltf"
 # (--render renders glTF frames with Blender: tests/blender; POV-Ray
 # rendering is what is refused.)
-for opt in "--engine povray --render" "--include s.conf" "--antialias" "--quality 3" \
-    "--radiosity" "--no-shadows" "--reflection 0.5" "--area-lights 4"; do
+for opt in "--engine povray --render" "--antialias" "--quality 3" "--no-shadows" \
+    "--reflection 0.5"; do
     # shellcheck disable=SC2086
     set -- $opt
     run "$good" --format gltf -o bad "$@"
@@ -125,7 +150,8 @@ grep -q "cannot write" "$work/err" || fail "full-disk message: $(cat "$work/err"
 # ---- hostile names stay inside the folder
 [ -z "$(find "$work" -name '*.glb' ! -path "$work/glb/*" ! -path "$work/again/*" \
     ! -path "$work/sel/*" ! -path "$work/alias/*" ! -path "$work/conf/*" ! -path "$work/cam/*" \
-    ! -path "$work/lights/*" ! -path "$work/nolights/*" ! -path "$work/size/*")" ] &&
+    ! -path "$work/lights/*" ! -path "$work/nolights/*" ! -path "$work/size/*" \
+    ! -path "$work/soft/*" ! -path "$work/rad/*" ! -path "$work/inc/*" ! -path "$work/incq/*")" ] &&
     ok "no .glb outside the output folders" || fail "a .glb escaped its folder"
 
 echo "$failed failed"

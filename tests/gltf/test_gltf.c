@@ -347,6 +347,24 @@ static void test_materials_lights(void)
     double half = acos(pow(0.5, 0.1));
     CHECK_NEAR(jnum(j, "innerConeAngle", 0), 2 * half - 30 * PI / 180, 1e-6);
     /* the spot aims down: -z turned to -y */
+    CHECK(strstr(j, "rayglShadow") == NULL && strstr(j, "\"radiosity\"") == NULL);
+    free(j);
+
+    /* --area-lights and --radiosity (scene.options, the look step's): the
+     * GL lights' soft size for Blender, POV-Ray's disc a tenth of the
+     * distance to the scene's centre across (the sun: the angle it spans),
+     * and the file's extras.radiosity */
+    s.options.area_lights = 4;
+    s.options.radiosity = true;
+    j = write_glb(&s, "materials_lights_soft", &st, NULL);
+    CHECK_NEAR(jnum(j, "rayglShadowAngle", 0), 2 * atan(0.05), 1e-6);
+    CHECK_NEAR(jnum(j, "rayglShadowRadius", 0), 0.05 * sqrt(46.25), 1e-6);
+    CHECK(strstr(j, "\"radiosity\":true") != NULL);
+    CHECK(strstr(j, "area lights: glTF's lights are points") != NULL);
+    free(j);
+    s.options.no_shadows = true; /* nothing casts shadows: no size */
+    j = write_glb(&s, "materials_lights_hard", &st, NULL);
+    CHECK(strstr(j, "rayglShadow") == NULL);
     free(j);
     scene_finish(&s);
 }
@@ -481,7 +499,7 @@ static void test_solids_lines_textures(void)
     t.repeat_s = true;
     t.border_t = true;
     t.linear = true;
-    t.env_mode = 0x2100; /* GL_MODULATE */
+    t.env_mode = SCENE_ENV_MODULATE;
     t.hash = 1;
     scene_look l = unlit();
     l.texture = scene_add_texture(&s, &t);
@@ -491,7 +509,7 @@ static void test_solids_lines_textures(void)
     /* lit, GL_REPLACE: the texel alone, unlit */
     t.rgba = tr_realloc(NULL, 16);
     memset(t.rgba, 200, 16);
-    t.env_mode = 0x1E01; /* GL_REPLACE */
+    t.env_mode = SCENE_ENV_REPLACE;
     t.colour_is_texel = true;
     t.hash = 2;
     scene_look lr = unlit();

@@ -5,7 +5,7 @@
  * GL_ONE_MINUS_SRC_ALPHA), the reversed pair (GL_ONE_MINUS_SRC_ALPHA,
  * GL_SRC_ALPHA) and a scaled opaque one (GL_SRC_ALPHA, GL_ZERO), each a
  * horizontal band. raygl2pov maps them onto transmit (docs/mapping.md
- * section 13): exact, additive within 1/128 of the colour behind. The
+ * section 18): exact, additive within 1/128 of the colour behind. The
  * bars lie deeper than the bands (z -0.5 in eye space), with a depth
  * test: a ray tracer does not see a surface a hair behind another.
  */

@@ -1,4 +1,4 @@
-/* example_scene.c: frame 2 of the README example (examples/scene.h, as
+/* example_scene.c: frame 2 of the README example (examples/example_scene.h, as
  * examples/cube.c draws it in a GLUT window) drawn with OSMesa: the image
  * test checks the lit example against its ray-traced frame, and
  * tools/make-doc-images.sh makes the docs' pictures from it. GL's default
@@ -6,7 +6,7 @@
  */
 #include "harness.h"
 
-#include "scene.h"
+#include "example_scene.h"
 
 static int draw(int w, int h)
 {

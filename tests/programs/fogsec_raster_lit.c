@@ -7,7 +7,7 @@
  * turning from the light to away from it, a point light whose distance
  * matters, a colour-material row, and one with lighting off (the current
  * colour) for comparison. Drawn with the depth test off, so they lie on
- * top (their depth is another matter: docs/mapping.md section 17).
+ * top (their depth is another matter: docs/mapping.md section 16).
  */
 #include "lit_scene.h"
 

@@ -9,7 +9,7 @@
  * view direction as POV-Ray's do. POV-Ray draws the true curved surfaces
  * with normals per pixel; GL draws facets lit per vertex, so the shading
  * differs inside the facets (issue 5's regime: 95% within 8/255,
- * docs/mapping.md section 15). */
+ * docs/mapping.md section 10). */
 #include "harness.h"
 
 #include <raygl/gl.h>

@@ -3,7 +3,7 @@
  * list holding a torus, called twice, once under GL_LIGHT0 alone and once
  * under a blue GL_LIGHT1 alone (two instances of one prototype, in two
  * light groups); a second GLU sphere under both lights. Local viewer, no
- * shadows (docs/mapping.md section 22).
+ * shadows (docs/mapping.md section 19).
  */
 #include "lit_scene.h"
 

@@ -1,6 +1,6 @@
 /* lists_colours.c: display lists with a colour per vertex, each called
  * many times, unlit. In a prototype the translator carries such colours
- * as one image per mesh (docs/mapping.md section 12).
+ * as one image per mesh (docs/mapping.md section 9).
  *
  * Covers: a smooth-shaded patch of triangles whose corner colours vary
  * smoothly (the image path: per face a 2x2 block whose bilinear filtering

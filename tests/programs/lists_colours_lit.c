@@ -1,7 +1,7 @@
 /* lists_colours_lit.c: a lit sphere with a colour per vertex
  * (GL_COLOR_MATERIAL, GL_AMBIENT_AND_DIFFUSE) in a display list called
  * four times. In the prototype the colours are one image, the pigment of
- * the material's finish (docs/mapping.md section 12). Local viewer.
+ * the material's finish (docs/mapping.md section 9). Local viewer.
  */
 #include "lit_scene.h"
 

@@ -3,7 +3,7 @@
  * 64 x 64 texture mipmapped (gluBuild2DMipmaps, GL_LINEAR_MIPMAP_LINEAR):
  * minified most toward the rim, where level 0 alone aliases and GL blends
  * small levels. Each triangle lies on its own plane: the writer takes its
- * level of detail at its centroid (docs/mapping.md section 27).
+ * level of detail at its centroid (docs/mapping.md section 24).
  * Triangles, not quads, so that GL and POV-Ray split nothing differently. */
 #include <math.h>
 #include <stdbool.h>

@@ -1,4 +1,4 @@
-/* test_look.c: the camera, light and size overrides (translate/cli/look.c).
+/* test_look.c: the camera, light and size overrides (translate/look/look.c).
  *
  * The animated trace's frames use gluLookAt(0,3,7 -> 0,0,0) and
  * gluPerspective(45): overriding the camera with those same values in world
@@ -17,6 +17,7 @@
 #include "frame.h"
 #include "look.h"
 #include "options.h"
+#include "povwrite_look.h"
 
 static translator *tr;
 static rgl_reader *reader;
@@ -102,7 +103,8 @@ int main(void)
     CHECK(set(&o, opt_set_camera_look_at, "0,0,0"));
     CHECK(set(&o, opt_set_camera_up, "0,1,0"));
     CHECK(set(&o, opt_set_camera_fov, "45"));
-    const char *note = look_apply(&o.look, s);
+    const char *note;
+    CHECK(look_apply(&o.look, s, &note) == 0);
     CHECK(note && strstr(note, "world"));
     check_cam(&s->camera, &orig, "world override = gluLookAt");
     CHECK(!s->camera.has_clip);
@@ -110,11 +112,15 @@ int main(void)
     /* A light at the eye is at the eye-space origin. */
     CHECK(set(&o, opt_set_light, "point at=0,3,7 color=1,0.5,0.25"));
     CHECK(set(&o, opt_set_light, "spot at=0,3,7 to=0,0,0 radius=10 falloff=20"));
+    s = build(1);
+    CHECK(look_apply(&o.look, s, &note) == 0);
+    CHECK(s->nlights >= 2 && s->lights[s->nlights - 1].added);
     outbuf ob;
     static char text[4096];
     size_t len = 0;
     CHECK(outbuf_init(&ob, 4096, NULL, NULL) == 0);
-    CHECK(look_write_scene(&ob, &o.look, s, NULL, 0) == 0);
+    povlook_scene(&ob, s);
+    CHECK(!ob.failed);
     len = ob.len < sizeof text - 1 ? ob.len : sizeof text - 1;
     memcpy(text, ob.buf, len);
     text[len] = '\0';
@@ -132,7 +138,7 @@ int main(void)
     CHECK(set(&o, opt_set_override_space, "eye"));
     CHECK(set(&o, opt_set_camera_location, "0,0,0"));
     CHECK(set(&o, opt_set_camera_look_at, "0,0,-1"));
-    note = look_apply(&o.look, s);
+    CHECK(look_apply(&o.look, s, &note) == 0);
     CHECK(note && strstr(note, "eye"));
     check_cam(&s->camera, &orig, "eye override = GL camera");
     opt_free(&o);
@@ -143,7 +149,7 @@ int main(void)
     scene_camera o2 = s->camera;
     opt_init(&o);
     CHECK(set(&o, opt_set_camera_location, "1,2,3"));
-    note = look_apply(&o.look, s);
+    CHECK(look_apply(&o.look, s, &note) == 0);
     CHECK(note && strstr(note, "eye coordinates"));
     CHECK(fabs(s->camera.location[0] - 1) < 1e-9 && fabs(s->camera.location[2] - 3) < 1e-9);
     double d0 = o2.direction[2] / sqrt(o2.direction[0] * o2.direction[0] +
@@ -164,7 +170,7 @@ int main(void)
         s = build(lookat);
         opt_init(&o);
         CHECK(set(&o, opt_set_camera_orthographic, "on"));
-        look_apply(&o.look, s);
+        CHECK(look_apply(&o.look, s, &note) == 0);
         const scene_camera *c = &s->camera;
         CHECK(c->kind == SCENE_CAMERA_ORTHOGRAPHIC);
         double up = sqrt(c->up[0] * c->up[0] + c->up[1] * c->up[1] + c->up[2] * c->up[2]);
@@ -184,7 +190,7 @@ int main(void)
     s = build(1);
     opt_init(&o);
     CHECK(set(&o, opt_set_width, "320"));
-    look_apply(&o.look, s);
+    CHECK(look_apply(&o.look, s, &note) == 0);
     CHECK_EQ_U(s->camera.width, 320);
     CHECK_EQ_U(s->camera.height, 240);
     check_cam(&s->camera, &orig, "width 320: same view");
@@ -193,7 +199,7 @@ int main(void)
     opt_init(&o);
     CHECK(set(&o, opt_set_width, "240"));
     CHECK(set(&o, opt_set_height, "120"));
-    look_apply(&o.look, s);
+    CHECK(look_apply(&o.look, s, &note) == 0);
     CHECK_NEAR(s->camera.right[0], orig.right[0] * 1.5, 1e-9);
     CHECK_NEAR(s->camera.up[1], orig.up[1], 1e-9);
     opt_free(&o);

@@ -1,4 +1,4 @@
-/* test_cleanup.c: the stop-signal cleanup (translate/cleanup.h) is not cut
+/* test_cleanup.c: the stop-signal cleanup (translate/proc/cleanup.h) is not cut
  * short, by the process's own exit or by the tool that started it.
  *
  * Each case runs in a forked process that stands for one of the tools:

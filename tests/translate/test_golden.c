@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "frame.h"
+#include "povwrite.h"
 #include "scenes.h"
 
 static int failures;
@@ -79,6 +80,7 @@ static void run_case(const char *dir, const char *name, seq *frames, int nframes
         return;
     }
     translator *tr = translator_create(r, NULL);
+    povwriter *pw = povwriter_create();
     outbuf ob;
     outbuf_init(&ob, 4096, NULL, NULL);
     for (int i = 0; i < nframes; i++) {
@@ -92,9 +94,9 @@ static void run_case(const char *dir, const char *name, seq *frames, int nframes
             continue;
         }
         pov_frame_info info = {file, "golden.raygl", (uint64_t)i, 0, (uint32_t)i,
-                               res.frame_name, NULL, NULL};
+                               res.frame_name, NULL};
         ob.len = 0;
-        if (translator_write_pov(tr, &ob, &info) != 0) {
+        if (povwriter_scene(pw, &ob, translator_scene(tr), &info) != 0) {
             fprintf(stderr, "%s: the writer failed\n", case_name);
             failures++;
         }
@@ -106,6 +108,7 @@ static void run_case(const char *dir, const char *name, seq *frames, int nframes
         compare(dir, case_name, ".ini", &ob, regen);
     }
     outbuf_finish(&ob);
+    povwriter_destroy(pw);
     translator_destroy(tr);
     rgl_reader_destroy(r);
     trace_free(&t);

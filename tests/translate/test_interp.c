@@ -12,6 +12,7 @@
 #include "check.h"
 #include "interp_fixture.h"
 #include "frame.h"
+#include "povwrite.h"
 #include "interp.h"
 #include "interp_internal.h"
 #include "talloc.h"
@@ -796,19 +797,21 @@ static void test_alloc_translation(void)
     for (unsigned long n = 1; n < 120; n++) {
         tr_fail_alloc(n);
         translator *tr = translator_create(r, NULL);
+        povwriter *pw = povwriter_create();
         outbuf ob;
         int oi = outbuf_init(&ob, 256, NULL, NULL);
-        for (size_t i = 0; tr && oi == 0 && i < 2; i++) {
+        for (size_t i = 0; tr && pw && oi == 0 && i < 2; i++) {
             frame_result res;
             if (translator_build(tr, i, NULL, &res) == RGL_OK) {
-                pov_frame_info info = {"f.pov", "t.raygl", i, 0, (uint32_t)i, NULL, NULL, NULL};
+                pov_frame_info info = {"f.pov", "t.raygl", i, 0, (uint32_t)i, NULL, NULL};
                 ob.len = 0;
-                ok += translator_write_pov(tr, &ob, &info) == 0 && !ob.failed;
+                ok += povwriter_scene(pw, &ob, translator_scene(tr), &info) == 0 && !ob.failed;
             }
         }
         tr_fail_alloc(0);
         if (oi == 0)
             outbuf_finish(&ob);
+        povwriter_destroy(pw);
         translator_destroy(tr);
     }
     CHECK(ok > 0); /* late failures leave whole frames */
@@ -1100,7 +1103,7 @@ static void test_multitex(void)
  * (32 patches of 7 x 7 cells) when the exact form does not apply, and its
  * 5,760 wire segments (32 patches, 10 lines of 9 segments each way), 36 of
  * them of no length, the counts measured from freeglut 3.4
- * (docs/mapping.md section 15). */
+ * (docs/mapping.md section 10). */
 static void test_teapot(void)
 {
     interp *ip = fresh();

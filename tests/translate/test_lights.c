@@ -19,11 +19,11 @@
 
 static void write_scene(bool no_shadows)
 {
-    pov_options opt = {no_shadows, 0, 0, false};
     pov_frame_info info;
     memset(&info, 0, sizeof info);
-    info.options = &opt;
+    sc.options.no_shadows = no_shadows;
     write_sdl_with(NULL, &info);
+    sc.options.no_shadows = false;
 }
 
 static void tri(seq *s, float z)

@@ -1,6 +1,6 @@
 /* test_notes.c: notes said only where their approximation can change a
  * pixel of the frame, held (counted apart, kept marked) where it cannot
- * (translate/diag.h; docs/mapping.md "Notes").
+ * (translate/base/diag.h; docs/mapping.md "Notes").
  *
  * NOTE_DEPTH over whole frames through the translator (it is decided at
  * the frame's end, interp_zorder.c): draws without a depth test or depth

@@ -163,6 +163,7 @@ static void test_blend_add(void)
 {
     uint32_t id = add_bytes(px, sizeof px);
     static const GLenum modes[2] = {GL_BLEND, GL_ADD};
+    static const uint32_t scene_modes[2] = {SCENE_ENV_BLEND, SCENE_ENV_ADD};
     for (int m = 0; m < 2; m++)
         for (int lit = 0; lit < 2; lit++) {
             interp *ip = fresh();
@@ -180,7 +181,7 @@ static void test_blend_add(void)
             run(ip, &s);
             CHECK_EQ_U(sc.ntextures, 1);
             if (sc.ntextures)
-                CHECK_EQ_U(sc.textures[0].env_mode, modes[m]);
+                CHECK_EQ_U(sc.textures[0].env_mode, scene_modes[m]);
             CHECK_EQ_U(count(DIAG_NOTE_TEXTURE), 0);
             interp_end_frame(ip);
             povwriter *w = povwriter_create();
@@ -246,7 +247,7 @@ static void test_alpha_test(void)
     run(ip, &s);
     CHECK_EQ_U(sc.ntextures, 1);
     if (sc.ntextures) {
-        CHECK_EQ_U(sc.textures[0].alpha_func, GL_GREATER);
+        CHECK_EQ_U(sc.textures[0].alpha_func, SCENE_CMP_GREATER);
         CHECK(sc.textures[0].alpha_uses_af);
         povtex pt;
         memset(&pt, 0, sizeof pt);
@@ -325,7 +326,7 @@ static void test_levels(void)
     run(ip, &s);
     if (sc.nmeshes == 3) {
         int32_t t = sc.meshes[2].look.texture;
-        CHECK(t >= 0 && sc.textures[t].mip_filter == GL_LINEAR_MIPMAP_LINEAR &&
+        CHECK(t >= 0 && sc.textures[t].mip_filter == SCENE_MIP_LINEAR_MIPMAP_LINEAR &&
               sc.textures[t].mip_next == -1 && sc.textures[t].width == 2);
     }
     /* A wrong size at level 2 keeps it incomplete; the right one completes. */

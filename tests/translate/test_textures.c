@@ -77,7 +77,7 @@ static void test_formats(void)
         /* texel (2, 1): bytes 15..17 of the tight rows, alpha 1 */
         const uint8_t *p = t->rgba + (1 * 3 + 2) * 4;
         CHECK(p[0] == 16 && p[1] == 17 && p[2] == 18 && p[3] == 255);
-        CHECK(t->env_mode == GL_MODULATE && !t->colour_is_texel && t->repeat_s && !t->linear);
+        CHECK(t->env_mode == SCENE_ENV_MODULATE && !t->colour_is_texel && t->repeat_s && !t->linear);
     }
     CHECK_EQ_U(count(DIAG_GL_INVALID_VALUE) + count(DIAG_IGNORED), 0);
     interp_destroy(ip);
@@ -497,7 +497,7 @@ static void test_multitex(void)
         CHECK(sc.meshes[0].look.texture >= 0 && sc.meshes[0].look.texture1 >= 0);
         CHECK(sc.meshes[0].look.texture != sc.meshes[0].look.texture1);
         if (sc.meshes[0].look.texture1 >= 0)
-            CHECK_EQ_U(sc.textures[sc.meshes[0].look.texture1].env_mode, GL_ADD);
+            CHECK_EQ_U(sc.textures[sc.meshes[0].look.texture1].env_mode, SCENE_ENV_ADD);
     }
     interp_end_frame(ip);
     write_sdl();

@@ -1,4 +1,4 @@
-/* test_unrecorded.c: the tables of calls not recorded (translate/gl/unrecorded.h)
+/* test_unrecorded.c: the tables of calls not recorded (translate/gl/unrec.h)
  * against hostile input: long names, bytes outside the name alphabet, more
  * names than the bound, counts that overflow; the report's order and text;
  * what each name can change (format/unrecorded.def): a name reported only
@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "unrecorded.h"
+#include "unrec.h"
 
 static char lines[8][1024];
 static int nlines;

@@ -19,6 +19,10 @@
 #   curve and no noise; GL lights cast no shadows and light directly (no
 #   bounces); pixels sampled at their centre (filter width 0.01) as GL's
 #   aliased rasteriser does;
+# - what the look step asked for (raygl2pov --area-lights, --light area,
+#   --radiosity): a light's extras.rayglShadowRadius (point, spot) or
+#   rayglShadowAngle (sun) make it cast soft shadows of that size;
+#   extras.radiosity: two diffuse bounces;
 # - no denoising (Debian's Blender has no OpenImageDenoise), a fixed seed,
 #   N samples;
 # - the PNG is written under a temporary name and renamed into place, so
@@ -143,6 +147,12 @@ def set_background(bpy, scene, rgb):
     scene.world = world
 
 
+def light_size(light, key):
+    # A size raygl2pov wrote into the light's extras, or 0.
+    v = light.get(key)
+    return float(v) if isinstance(v, (int, float)) and 0 < v < 1e6 else 0.0
+
+
 def render(opts):
     meta = glb_json(opts["input"])
     extras = meta.get("extras") if isinstance(meta.get("extras"), dict) else {}
@@ -171,11 +181,15 @@ def render(opts):
     scene.camera = cams[0]
     for o in scene.objects:
         if o.type == "LIGHT":
-            # GL lights are points that cast no shadow.
-            o.data.shadow_soft_size = 0.0
+            # GL lights are points that cast no shadow; a light raygl2pov
+            # gave a size (--area-lights, --light area: the importer keeps
+            # the light's extras as custom properties) casts soft shadows.
+            radius = light_size(o.data, "rayglShadowRadius")
+            angle = light_size(o.data, "rayglShadowAngle")
+            o.data.shadow_soft_size = radius
             if o.data.type == "SUN":
-                o.data.angle = 0.0
-            o.data.cycles.cast_shadow = False
+                o.data.angle = angle
+            o.data.cycles.cast_shadow = radius > 0 or angle > 0
 
     bg = extras.get("background")
     if not (isinstance(bg, list) and len(bg) >= 3):
@@ -202,6 +216,11 @@ def render(opts):
     c.use_preview_denoising = False
     c.filter_width = 0.01
     c.max_bounces = 0
+    if extras.get("radiosity") is True:
+        # --radiosity: light bounces off diffuse surfaces, as POV-Ray's
+        # radiosity{} (its recursion_limit 2).
+        c.max_bounces = c.diffuse_bounces = 2
+        c.glossy_bounces = c.transmission_bounces = c.volume_bounces = 0
     c.caustics_reflective = c.caustics_refractive = False
     v = scene.view_settings
     scene.display_settings.display_device = "sRGB"

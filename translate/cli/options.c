@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "naming.h"
 #include "talloc.h"
 
 #define SETTINGS_MAX_DEPTH OPT_SETTINGS_MAX_DEPTH
@@ -144,12 +145,7 @@ bool opt_set_frames(options *o, const char *spec, const opt_ctx *ctx, opt_err *e
 
 bool opt_frame_selected(const options *o, uint64_t i)
 {
-    if (o->nranges == 0)
-        return true;
-    for (size_t k = 0; k < o->nranges; k++)
-        if (rgl_framesel_has(&o->ranges[k], i))
-            return true;
-    return false;
+    return frames_selected(o->ranges, o->nranges, i);
 }
 
 static bool parse_count(const char *s, uint64_t lo, uint64_t hi, uint64_t *out)
@@ -194,11 +190,41 @@ bool opt_set_settings(options *o, const char *v, const opt_ctx *ctx, opt_err *er
 
 bool opt_set_format(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
 {
-    if (strcmp(v, "pov") == 0 || strcmp(v, "gltf") == 0) {
-        o->gltf = v[0] == 'g';
+    const writer_def *w = driver_writer(v);
+    if (w) {
+        o->writer = w;
         return true;
     }
-    return opt_fail(err, "%s '%.100s': expected pov or gltf", ctx->option, v);
+    char names[256] = "";
+    size_t n = 0;
+    while (driver_writers[n])
+        n++;
+    for (size_t i = 0; i < n; i++) {
+        size_t l = strlen(names);
+        snprintf(names + l, sizeof names - l, "%s%s", i == 0 ? "" : i + 1 == n ? " or " : ", ",
+                 driver_writers[i]->name);
+    }
+    return opt_fail(err, "%s '%.100s': expected %s", ctx->option, v, names);
+}
+
+bool opt_set_name_pattern(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
+{
+    if (!*v)
+        return opt_fail(err, "%s: empty pattern", ctx->option);
+    for (const char *p = v; *p; p++) {
+        if (*p == '/' || *p == '\\')
+            return opt_fail(err, "%s '%s': a name, not a path: no '%c'", ctx->option, v, *p);
+        if (*p == '{') {
+            if (!name_is_placeholder(p))
+                return opt_fail(err, "%s '%s': unknown placeholder at '%s' (use {index}, "
+                                "{index:N}, {stream}, {number}, {name} or {trace})",
+                                ctx->option, v, p);
+        }
+    }
+    if (strchr(v, '{') == NULL)
+        return opt_fail(err, "%s '%s': every frame would get the same name; use {index}",
+                        ctx->option, v);
+    return (o->name_pattern = opt_strdup(o, v, err)) != NULL;
 }
 
 bool opt_set_dump(options *o, const char *v, const opt_ctx *ctx, opt_err *err)

@@ -14,12 +14,11 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#include "framesel.h"
-#include "povwrite.h"
+#include "driver.h"
 #include "look.h"
 #include "render.h"
 
-#define OPT_MAX_JOBS 256
+#define OPT_MAX_JOBS DRIVER_MAX_JOBS
 
 typedef enum opt_arg { OPT_FLAG, OPT_VALUE } opt_arg;
 enum {
@@ -28,10 +27,6 @@ enum {
     OPT_RENDER = 2,      /* raygl-render takes it too */
     OPT_RENDER_ONLY = 4, /* only raygl-render takes it */
 };
-
-/* Frames first..last (inclusive; last = UINT64_MAX for "A-"), every
- * step-th: one item of a --frames list (format/framesel.h). */
-typedef rgl_frame_range frame_range;
 
 /* Settings files read from settings files, at most this deep. */
 #define OPT_SETTINGS_MAX_DEPTH 8
@@ -43,11 +38,10 @@ typedef struct options {
     size_t nranges;
     int jobs; /* 0 until opt_finish_parse: one per core */
     bool dump, quiet, verbose, help, version;
-    pov_options pov; /* shadows, reflection, area lights (options_light.c) */
     bool vertex_lighting; /* --vertex-lighting (interp_gouraud.c) */
-    bool gltf;            /* --format gltf: .glb files (gltfwrite.h) */
+    const writer_def *writer; /* --format (driver_writers): NULL until parsing sets it */
     const char *name_pattern; /* NULL: frame-NNNNN, or rayglFrameBegin's name */
-    look_settings look;       /* look.h */
+    look_settings look;       /* look.h; its options: --no-shadows ... (options_light.c) */
     render_settings render;   /* render.h */
     bool render_tool;         /* parsing for raygl-render (set before parsing):
                                  trace is then its folder */

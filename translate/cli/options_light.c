@@ -1,6 +1,7 @@
 /* options_light.c: the setters of the ray-tracing options (options.def,
- * "Ray tracing"): what the POV-Ray writer adds to the OpenGL look
- * (povwrite.h, pov_options; docs/mapping.md "What ray tracing adds").
+ * "Ray tracing"): what the writers add to the OpenGL look, as the look
+ * step puts it into the scene (scene.h, scene_options; docs/mapping.md
+ * "What ray tracing adds").
  */
 #include "options.h"
 
@@ -35,7 +36,7 @@ static bool parse_unit(const char *s, double *out)
 
 bool opt_set_no_shadows(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
 {
-    return opt_bool(v, &o->pov.no_shadows, ctx, err);
+    return opt_bool(v, &o->look.options.no_shadows, ctx, err);
 }
 
 bool opt_set_reflection(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
@@ -43,7 +44,7 @@ bool opt_set_reflection(options *o, const char *v, const opt_ctx *ctx, opt_err *
     double r;
     if (!parse_unit(v, &r))
         return opt_fail(err, "%s '%s': expected a number from 0 to 1", ctx->option, v);
-    o->pov.reflection = (float)r;
+    o->look.options.reflection = (float)r;
     return true;
 }
 
@@ -55,7 +56,7 @@ bool opt_set_area_lights(options *o, const char *v, const opt_ctx *ctx, opt_err 
         n = n * 10 + (*p - '0');
     if (p == v || *p || n < 2 || n > 16)
         return opt_fail(err, "%s '%s': expected a number from 2 to 16", ctx->option, v);
-    o->pov.area_lights = n;
+    o->look.options.area_lights = n;
     return true;
 }
 

@@ -91,7 +91,16 @@ static void set4(float *d, float a, float b, float c, float e)
 
 void interp_default_state(gl_state *st)
 {
+    /* The heap parts are reset by their owners (interp_reset). */
+    struct interp_textures *tex = st->tex;
+    struct interp_eval *eval = st->eval;
+    struct interp_nurbs *nurbs = st->nurbs;
+    struct interp_lists *lists = st->lists;
     memset(st, 0, sizeof *st);
+    st->tex = tex;
+    st->eval = eval;
+    st->nurbs = nurbs;
+    st->lists = lists;
     gl_attribs *a = &st->a;
 
     set4(a->current.color, 1, 1, 1, 1);
@@ -258,7 +267,6 @@ void interp_destroy(interp *ip)
 void interp_reset(interp *ip)
 {
     interp_default_state(&ip->st);
-    memset(ip->quadrics, 0, sizeof ip->quadrics);
     interp_textures_free(ip);
     interp_eval_free(ip);
     interp_nurbs_free(ip);
@@ -273,8 +281,16 @@ void interp_reset(interp *ip)
 
 void interp_copy_state(interp *dst, const interp *src)
 {
+    /* The plain part by value; the heap parts stay dst's, filled below. */
+    struct interp_textures *tex = dst->st.tex;
+    struct interp_eval *eval = dst->st.eval;
+    struct interp_nurbs *nurbs = dst->st.nurbs;
+    struct interp_lists *lists = dst->st.lists;
     dst->st = src->st;
-    memcpy(dst->quadrics, src->quadrics, sizeof dst->quadrics);
+    dst->st.tex = tex;
+    dst->st.eval = eval;
+    dst->st.nurbs = nurbs;
+    dst->st.lists = lists;
     if (interp_textures_copy(dst, src) != 0 && dst->scene)
         dst->scene->failed = true;
     if (!interp_lists_copy(dst, src) && dst->scene)
@@ -317,7 +333,6 @@ const mat4 *interp_matrix(const interp *ip, int mode)
     }
 }
 
-bool interp_in_begin(const interp *ip) { return ip->in_begin; }
 
 const char *interp_frame_name(const interp *ip) { return ip->frame_begin ? ip->frame_name : NULL; }
 

@@ -8,27 +8,80 @@
  * skipped and counted in the diagnostics log with its frame and position,
  * as GL records an error and goes on.
  *
- * Where each feature lives:
- *   interp.c         dispatch, run loop, diagnostics, enables, attribute stack
- *   interp_matrix.c  matrix modes, stacks, transforms, @Matrix, viewport
- *   interp_prim.c    Begin/End, vertex attributes, primitive assembly,
- *                    culling, polygon mode, lines and points, glRect
- *   interp_raster.c  clear, shading, face and rasterisation state, blend,
- *                    alpha and depth functions, the frame calls
- *                    (rayglFrameBegin), the camera of the frame
- *   interp_light.c   lights, materials, colour material, fog (state kept as
- *                    GL keeps it; issue 4 translates it)
- *   interp_list.c    display lists: the list table, calls, nesting, and
- *                    the prototypes that repeated calls share
- *   interp_array.c   vertex arrays and their draws, buffer objects
- *   interp_bounds.c  the frame's budget (a frame that would cost more is
- *                    cut) and the parts a damaged trace left out of it
- *   interp_eval.c    evaluators: maps, grids, glEvalCoord, glEvalMesh
- *   interp_multitex.c texture units: glActiveTexture, glClientActiveTexture,
- *                    glMultiTexCoord, the units a draw takes
+ * Where each area of GL lives (every file of gl/, by area, as Mesa's
+ * src/mesa/main has one file per area of state):
+ *
+ * The machine
+ *   interp.c          dispatch, run loop, diagnostics, GL's initial state,
+ *                     glEnable/glDisable, the attribute stack
+ *   interp_internal.h struct interp and what the files share
+ *   caps.def          the capabilities glEnable/glDisable accept
+ *   interp_bounds.c   the frame's budget (a frame that would cost more is
+ *                     cut) and the parts a damaged trace left out of it
+ *   interp_unrecorded.c @NotRecorded: the calls the recorder did not record
+ *   unrec.c, unrec.h  their tables, counted by entry point
+ *   namemap.c, namemap.h GL object names to table indexes (lists, textures)
+ * Vertices and primitives
+ *   interp_prim.c     glBegin, the current vertex attributes, the vertices
+ *   interp_assemble.c glEnd: primitive assembly, culling, polygon mode,
+ *                     lines and points, glRect
+ *   interp_array.c    vertex arrays and their draws, buffer objects
+ *   interp_list.c     display lists: the table, calls, nesting, and the
+ *                     prototypes that repeated calls share
+ *   interp_eval.c     evaluators: maps, grids, glEvalCoord, glEvalMesh
+ *   interp_nurbs.c    GLU NURBS surfaces, curves and trims
+ *   interp_shape.c    GLU quadrics and GLUT solids
+ *   interp_point.c    point parameters, the provoking vertex
+ *   interp_sprite.c   textured points and point sprites
+ *   interp_lines.c    lines and points as GL rasterises them: clipped,
+ *                     cut into strips over GL's pixels
+ *   rasterise.c, rasterise.h which pixels Mesa lights for a line or point
+ *   interp_stipple.c  line stipple
+ *   interp_pstipple.c polygon stipple
+ *   interp_offset.c   glPolygonOffset
+ * Transforms, camera and clipping
+ *   interp_matrix.c   matrix modes, stacks, transforms, @Matrix, viewport
+ *   interp_raster.c   clear, shading, face and rasterisation state, the
+ *                     frame calls (rayglFrameBegin), the frame's camera
+ *   interp_proj.c     a frame of several projections: its camera, layers
+ *   interp_clip.c     user clip planes
+ *   interp_select.c   render modes and the name stack
+ * Lighting and fog
+ *   interp_light.c    lights, light model, materials, colour material, fog
  *   interp_lightset.c the frame's light sets (each lit draw's lights)
  *   interp_vmaterial.c glMaterial between the vertices of a primitive
- *   interp_gouraud.c per-vertex lighting on request (--vertex-lighting)
+ *   interp_gouraud.c  per-vertex lighting on request (--vertex-lighting)
+ *   interp_relit.c    GL's own lighting for faces a writer cannot light so
+ *   interp_fogsec.c   fog coordinates and the secondary colour
+ *   interp_fogbehind.c fog of primitives reaching behind the eye
+ * Textures
+ *   interp_texture.c  texture objects, parameters, environment, texgen
+ *                     state, copies between contexts
+ *   interp_teximage.c texture images: formats, types, mipmap building
+ *   interp_texdraw.c  what a draw samples: the scene texture of a unit,
+ *                     the texture coordinates of each vertex
+ *   interp_teximage.h texture objects and images as the files share them
+ *   interp_texpacked.c GL's packed pixel types
+ *   interp_texslice.c derived images: mirror-clamped, 3D slices
+ *   interp_texcopy.c  glCopyTex*, 3D textures
+ *   interp_multitex.c texture units: glActiveTexture, glMultiTexCoord
+ *   interp_combine.c  the GL_COMBINE environment
+ * Per-fragment operations and the framebuffer
+ *   interp_alphatest.c the alpha test
+ *   interp_scissor.c  the scissor test, scissored clears
+ *   interp_stencil.c  the stencil test
+ *   interp_masks.c    colour and depth write masks
+ *   interp_blend.c    blending and logic ops: how a draw's colours show
+ *                     what is behind
+ *   interp_dest.c     what the colour buffer holds where a draw lands (for
+ *                     the blends and logic ops that read it)
+ *   interp_buffers.c  glDrawBuffer: the colour buffers a draw goes to
+ *   interp_zorder.c   draw order without a depth test: whether it can
+ *                     change a pixel
+ *   interp_accum.c    the accumulation buffer
+ *   interp_pixels.c   raster position, bitmaps, pixel rectangles
+ *   interp_pixdepth.c their depth
+ *   interp_pixmap.c   pixel maps and the pixel transfer of colours
  *
  * Not thread-safe; one interpreter per worker thread.
  */
@@ -75,7 +128,7 @@
  * memory. Output is counted as the scene holds it: a display list drawn
  * many times and shared (interp_list.c) counts its vertices once and one
  * instance per call, a texture image drawn many times once
- * (interp_texture.c). A frame that would exceed one is cut there: the rest
+ * (interp_texdraw.c). A frame that would exceed one is cut there: the rest
  * of its commands are skipped, what came before is kept, and
  * interp_frame_cut says why. */
 #define INTERP_BUDGET_COMMANDS (1u << 26)    /* commands run */
@@ -256,9 +309,20 @@ typedef struct gl_attrib_entry {
     gl_attribs saved;
 } gl_attrib_entry;
 
-/* The whole context state that frames carry over. */
+/* A GLU quadric object's state (by the recorder's id). */
+typedef struct interp_quadric {
+    uint32_t id; /* 0: free slot */
+    GLenum draw_style, normals, orientation;
+    bool texture;
+} interp_quadric;
+
+#define INTERP_QUADRICS 64
+
 #define INTERP_DRAW_BUFFER_DEFAULT 0xffffffffu
 
+/* The whole context state that frames carry over: GL's state, apart from
+ * the interpreter's bookkeeping of the frame it translates (struct interp,
+ * interp_internal.h). */
 typedef struct gl_state {
     gl_attribs a;
     mat4 modelview[INTERP_MODELVIEW_DEPTH];
@@ -276,6 +340,7 @@ typedef struct gl_state {
     uint32_t active_unit, client_unit; /* glActiveTexture, glClientActiveTexture */
     gl_tex_unit_parked units[INTERP_TEX_UNITS]; /* the active unit's slot is stale */
     float unit_texcoord[INTERP_TEX_UNITS][4]; /* current, units 1..; unit 0's is a.current */
+    interp_quadric quadrics[INTERP_QUADRICS]; /* GLU quadric objects (interp_shape.c) */
     /* GL_COLOR_MATERIAL as Mesa follows it (interp_light.c, "Colour
      * material"; not attributes): the terms glMaterial set since the last
      * draw (by face, SCENE_CM_* bits), and after a glEnable that kept some
@@ -288,6 +353,16 @@ typedef struct gl_state {
     /* The context's colour buffers (glDrawBuffer's visual, format.md
      * 3.19): 0 unknown, else 1 | 2 double-buffered | 4 stereo. */
     uint32_t visual;
+    /* The parts on the heap, made on first use (NULL until then: GL's
+     * initial state), owned by the interpreter; interp_copy_state copies
+     * what they hold: texture objects and the unpack state
+     * (interp_texture.c), evaluator maps (interp_eval.c), GLU NURBS
+     * objects and the open shape (interp_nurbs.c), the display-list table
+     * (interp_list.c). */
+    struct interp_textures *tex;
+    struct interp_eval *eval;
+    struct interp_nurbs *nurbs;
+    struct interp_lists *lists;
 } gl_state;
 
 typedef struct interp interp;
@@ -438,20 +513,17 @@ const gl_state *interp_state(const interp *ip);
 /* The current top of a matrix stack. */
 const mat4 *interp_matrix(const interp *ip, int mode);
 
-/* True while between glBegin and glEnd. */
-bool interp_in_begin(const interp *ip);
-
 /* The rayglFrameBegin file name of the current frame (NUL-terminated,
  * unsanitised), or NULL when the frame has none. */
 const char *interp_frame_name(const interp *ip);
 
 struct unrec_table;
 /* The calls the current frame's @NotRecorded commands say were not
- * recorded (unrecorded.h); empty for an interpreter without a scene. */
+ * recorded (unrec.h); empty for an interpreter without a scene. */
 const struct unrec_table *interp_unrecorded(const interp *ip);
 
 /* Says that the frame being built was recorded without a live GL context
- * (its uses then include UNREC_USE_BATCH: unrecorded.h). */
+ * (its uses then include UNREC_USE_BATCH: unrec.h). */
 void interp_unrecorded_batch(interp *ip);
 
 #endif

@@ -6,7 +6,7 @@
  * - The texture's alpha counts (a base format with alpha under MODULATE
  *   or REPLACE): the test is per texel. The interpreter puts the function,
  *   the reference and the current vertex alpha into the scene texture
- *   (interp_texture.c) and the writer makes the failing texels fully
+ *   (interp_texdraw.c) and the writer makes the failing texels fully
  *   transparent in the image (povwrite_texture.c): exact with GL_NEAREST,
  *   a soft edge one texel wide with GL_LINEAR (noted).
  * - Otherwise the fragment's alpha is the vertex alpha, interpolated over
@@ -36,7 +36,8 @@ uint8_t interp_alpha_vertex(interp *ip, size_t k, float a)
         ip->prim_alpha_varies = true;
     }
     const gl_attribs *g = &ip->st.a;
-    return scene_alpha_pass(g->color_buffer.alpha_func, a, g->color_buffer.alpha_ref)
+    return scene_alpha_pass(interp_scene_cmp(g->color_buffer.alpha_func), a,
+                            g->color_buffer.alpha_ref)
                ? 0
                : INTERP_ALPHA_FAIL;
 }

@@ -3,7 +3,7 @@
  *
  * A double-buffered program shows its back buffer at the swap; a frame
  * ended by glFlush or glFinish (a single-buffered program, or one drawing
- * to its front buffer: translate/cli/frame_front.c) shows the front one.
+ * to its front buffer: translate/driver/frame_front.c) shows the front one.
  * What goes only to the buffer not shown is not in the picture: draws and
  * pixel rectangles into it are left out, and a colour clear of it leaves
  * the scene (depth and stencil are shared, so their clears still count).

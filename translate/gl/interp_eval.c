@@ -11,7 +11,7 @@
  * culling and the vertex counts of the frame follow; glEvalMesh opens and
  * closes its own primitives through interp_prim_begin/interp_prim_end.
  *
- * The maps live in ip->eval (NULL while every map has its initial value),
+ * The maps live in ip->st.eval (NULL while every map has its initial value),
  * context state that interp_copy_state carries and display lists see as
  * they are at glCallList. The grids are attributes (gl_attribs.eval, saved
  * by GL_EVAL_BIT), the enables caps (caps.def).
@@ -60,42 +60,42 @@ static void eval_defaults(struct interp_eval *e)
  * failure (the scene is marked failed). */
 static struct interp_eval *eval_get(interp *ip)
 {
-    if (!ip->eval) {
-        ip->eval = tr_realloc(NULL, sizeof *ip->eval);
-        if (!ip->eval) {
+    if (!ip->st.eval) {
+        ip->st.eval = tr_realloc(NULL, sizeof *ip->st.eval);
+        if (!ip->st.eval) {
             if (ip->scene)
                 ip->scene->failed = true;
             return NULL;
         }
-        eval_defaults(ip->eval);
+        eval_defaults(ip->st.eval);
     }
-    return ip->eval;
+    return ip->st.eval;
 }
 
 void interp_eval_free(interp *ip)
 {
-    if (!ip->eval)
+    if (!ip->st.eval)
         return;
     for (int d = 0; d < 2; d++)
         for (int t = 0; t < EVAL_TARGETS; t++)
-            tr_free(ip->eval->map[d][t].pts);
-    tr_free(ip->eval);
-    ip->eval = NULL;
+            tr_free(ip->st.eval->map[d][t].pts);
+    tr_free(ip->st.eval);
+    ip->st.eval = NULL;
 }
 
 int interp_eval_copy(interp *dst, const interp *src)
 {
     interp_eval_free(dst);
-    if (!src->eval)
+    if (!src->st.eval)
         return 0;
     struct interp_eval *e = tr_realloc(NULL, sizeof *e);
     if (!e)
         return -1;
-    *e = *src->eval;
+    *e = *src->st.eval;
     int rc = 0;
     for (int d = 0; d < 2; d++) {
         for (int t = 0; t < EVAL_TARGETS; t++) {
-            const eval_map *m = &src->eval->map[d][t];
+            const eval_map *m = &src->st.eval->map[d][t];
             if (!m->pts)
                 continue;
             size_t n = (size_t)m->order[0] * (size_t)m->order[1] * comps(t);
@@ -108,7 +108,7 @@ int interp_eval_copy(interp *dst, const interp *src)
             memcpy(e->map[d][t].pts, m->pts, n * sizeof(double));
         }
     }
-    dst->eval = e;
+    dst->st.eval = e;
     return rc;
 }
 
@@ -275,7 +275,7 @@ static bool map_on(const interp *ip, int two, int t)
 static void eval_map_at(const interp *ip, int two, int t, double u, double v, double *out,
                         double *du, double *dv)
 {
-    const eval_map *m = ip->eval ? &ip->eval->map[two][t] : NULL;
+    const eval_map *m = ip->st.eval ? &ip->st.eval->map[two][t] : NULL;
     if (!m || !m->pts) {
         memcpy(out, initial[t], comps(t) * sizeof *out);
         if (du)

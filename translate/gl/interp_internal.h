@@ -11,7 +11,7 @@
 #include <string.h>
 
 #include "interp.h"
-#include "unrecorded.h"
+#include "unrec.h"
 
 /* Every handler named in commands.def; a missing definition fails the link. */
 #define RGL_CMD(op, api, gen, name, handler, ...) \
@@ -19,18 +19,7 @@
 #include "commands.def"
 #undef RGL_CMD
 
-/* A GLU quadric object's state (by the recorder's id). */
-typedef struct interp_quadric {
-    uint32_t id; /* 0: free slot */
-    GLenum draw_style, normals, orientation;
-    bool texture;
-} interp_quadric;
-
-#define INTERP_QUADRICS 64
-
-typedef struct interp_textures interp_textures; /* interp_texture.c */
-struct interp_eval;                             /* interp_eval.c */
-struct interp_nurbs;                            /* interp_nurbs.c */
+typedef struct interp_textures interp_textures; /* interp_teximage.h */
 
 /* One projection and viewport used in a frame, and its draws' weight. */
 #define INTERP_PROJ_VOTES 8
@@ -62,9 +51,12 @@ typedef struct interp_litdir {
     double h[3], hl; /* half vector for the infinite viewer, its length */
 } interp_litdir;
 
+/* The interpreter: GL's state (st: all of it, what frames carry over),
+ * then the translation's bookkeeping, which is no GL state: the scene and
+ * log it writes to, the frame being built (diagnostics context, budget,
+ * the open primitive, the camera, light sets, passes) and caches. */
 struct interp {
     gl_state st;
-    interp_quadric quadrics[INTERP_QUADRICS]; /* context state, like st */
     struct {
         size_t first;   /* scene.stencil_tris of the buffer's content */
         int32_t value;  /* written there */
@@ -79,9 +71,6 @@ struct interp {
                              triangles once the camera is fixed */
         int32_t box[4];
     } stencil; /* interp_stencil.c */
-    interp_textures *tex; /* texture objects and unpack state; NULL: none yet */
-    struct interp_eval *eval; /* evaluator maps; NULL: all at their initial values */
-    struct interp_nurbs *nurbs; /* GLU NURBS objects and the open shape; NULL: none yet */
     struct interp_dest *dest; /* the frame's drawn footprint (interp_dest.c); NULL: none yet */
     scene *scene; /* NULL: state only */
     diag_log *log;
@@ -224,10 +213,9 @@ struct interp {
     uint32_t depth_epoch, depth_epochs;
     bool epoch_drawn;
 
-    /* Display lists (interp_list.c). The table is context state that
-     * interp_copy_state carries; the groups are the frame's list calls
-     * whose output may be shared. */
-    struct interp_lists *lists;
+    /* Display lists (interp_list.c): the table is GL state (st.lists);
+     * here where bodies come from, the nesting, and the groups: the
+     * frame's list calls whose output may be shared. */
     interp_resource_fn res_fn;
     void *res_ctx;
     int list_depth;
@@ -310,6 +298,49 @@ struct interp {
     unrec_table unrecorded; /* the frame's @NotRecorded (interp_unrecorded.c) */
     double fb_loc[3], fb_look[3], fb_light[3];
 };
+
+/* ---- GL's enums as the scene names them (scene.h) ---------------------------- */
+
+/* GL_MODULATE .. GL_ADD: SCENE_ENV_*; 0 for another mode. */
+static inline uint32_t interp_scene_env(GLenum mode)
+{
+    switch (mode) {
+    case GL_MODULATE: return SCENE_ENV_MODULATE;
+    case GL_REPLACE: return SCENE_ENV_REPLACE;
+    case GL_DECAL: return SCENE_ENV_DECAL;
+    case GL_BLEND: return SCENE_ENV_BLEND;
+    case GL_ADD: return SCENE_ENV_ADD;
+    default: return 0;
+    }
+}
+
+/* GL_NEVER .. GL_ALWAYS (consecutive, GL 1.x table 4.1): SCENE_CMP_*; 0
+ * for another value. */
+static inline uint32_t interp_scene_cmp(GLenum func)
+{
+    return func >= GL_NEVER && func <= GL_ALWAYS ? func - GL_NEVER + SCENE_CMP_NEVER : 0;
+}
+
+/* GL_*_MIPMAP_*: SCENE_MIP_*; 0 for a filter that does not mipmap. */
+static inline uint32_t interp_scene_mip(GLenum filter)
+{
+    switch (filter) {
+    case GL_NEAREST_MIPMAP_NEAREST: return SCENE_MIP_NEAREST_MIPMAP_NEAREST;
+    case GL_LINEAR_MIPMAP_NEAREST: return SCENE_MIP_LINEAR_MIPMAP_NEAREST;
+    case GL_NEAREST_MIPMAP_LINEAR: return SCENE_MIP_NEAREST_MIPMAP_LINEAR;
+    case GL_LINEAR_MIPMAP_LINEAR: return SCENE_MIP_LINEAR_MIPMAP_LINEAR;
+    default: return 0;
+    }
+}
+
+/* GL_LINEAR, GL_EXP, GL_EXP2: SCENE_FOG_*; 0 for another mode. */
+static inline int interp_scene_fog(GLenum mode)
+{
+    return mode == GL_LINEAR ? SCENE_FOG_LINEAR
+           : mode == GL_EXP  ? SCENE_FOG_EXP
+           : mode == GL_EXP2 ? SCENE_FOG_EXP2
+                             : 0;
+}
 
 /* ---- Arguments -------------------------------------------------------------- */
 
@@ -404,7 +435,7 @@ bool interp_note_said(const interp *ip, diag_kind kind);
 
 /* glTexImage1D/2D's effect on the bound texture, pixels from resource id
  * (0: undefined contents), and glTexSubImage1D/2D's (dims 1 or 2): for
- * the copies of interp_texcopy.c (interp_texture.c). */
+ * the copies of interp_texcopy.c (interp_teximage.c). */
 void interp_tex_image(interp *ip, GLenum target, int32_t level, int32_t internal, int64_t w,
                       int64_t h, int32_t border, GLenum format, GLenum type, uint32_t id);
 void interp_tex_subimage(interp *ip, int dims, GLenum target, int64_t level, int64_t x0,
@@ -412,16 +443,16 @@ void interp_tex_subimage(interp *ip, int dims, GLenum target, int64_t level, int
                          uint32_t id);
 
 /* Whether unit k draws a rectangle texture: its GL_TEXTURE_RECTANGLE is
- * enabled and neither 3D nor cube map is (interp_texture.c). */
+ * enabled and neither 3D nor cube map is (interp_texdraw.c). */
 bool interp_texture_rect_on(const interp *ip, uint32_t k);
 
 /* Forgets the r coordinates seen (interp_texture.c): a new primitive
  * starts, whose r decides which slice of a 3D texture it shows. */
 void interp_texture_r_reset(interp *ip);
-/* Forgets the scene textures the last frame made (interp_texture.c). */
+/* Forgets the scene textures the last frame made (interp_texdraw.c). */
 void interp_texture_begin_frame(interp *ip);
 
-/* glTexImage3D's effect on the bound 3D texture (interp_texture.c). */
+/* glTexImage3D's effect on the bound 3D texture (interp_teximage.c). */
 void interp_tex_image3d(interp *ip, int32_t level, int32_t internal, int64_t w, int64_t h,
                         int64_t d, int32_t border, GLenum format, GLenum type, uint32_t id);
 void interp_tex_subimage3d(interp *ip, int64_t level, int64_t x0, int64_t y0, int64_t z0,
@@ -454,7 +485,7 @@ bool interp_reject_in_begin(interp *ip);
 
 /* ---- Shared between the files --------------------------------------------------- */
 
-/* Pixels in client formats (interp_texture.c). interp_pixel_bytes: the
+/* Pixels in client formats (interp_teximage.c). interp_pixel_bytes: the
  * tightly packed size of w x h pixels of format/type, 0 for a pair not
  * translated (index, depth and stencil formats) or too many
  * pixels. interp_pixels_float: n such pixels as GL's RGBA floats before
@@ -575,11 +606,11 @@ void interp_add_vertex_nc(interp *ip, double x, double y, double z, float n0, fl
  * (GLU and GLUT shapes): the same assembly, culling and polygon mode as
  * the program's own. interp_prim_begin returns false when the draw is
  * skipped (no scene, or a transform that places nothing); call
- * interp_prim_end either way (interp_prim.c). */
+ * interp_prim_end either way (interp_assemble.c). */
 bool interp_prim_begin(interp *ip, GLenum mode);
 void interp_prim_end(interp *ip);
 
-/* The look of a draw with the current state (interp_prim.c). */
+/* The look of a draw with the current state (interp_assemble.c). */
 scene_look interp_current_look(interp *ip);
 
 /* Texture objects (interp_texture.c): copied with the context state,
@@ -665,7 +696,7 @@ bool interp_nurbs_surface_at(const double *pts, uint32_t k, const double *uknots
                              double v, double *out, double *du, double *dv);
 
 /* The texture index (in the scene) that a draw with the current state
- * samples, or -1 (interp_texture.c): its first enabled unit's. */
+ * samples, or -1 (interp_texdraw.c): its first enabled unit's. */
 int32_t interp_texture_for_draw(interp *ip);
 /* The same for texture unit k, or -1 when it is disabled or incomplete. */
 int32_t interp_texture_for_unit(interp *ip, int k);
@@ -689,7 +720,7 @@ void interp_multitex_unbind(interp *ip, uint32_t name);
 
 /* The texture coordinates GL gives a vertex at object position obj (w = 1
  * after division) with normal nrm: texgen, then the texture matrix, then
- * division by q (interp_texture.c). */
+ * division by q (interp_texdraw.c). */
 void interp_vertex_texcoord(interp *ip, int unit, const double obj[4], const float nrm[3],
                             float out[2]);
 /* The same with r (s, t, r: a cube map's direction), and whether a unit
@@ -880,8 +911,10 @@ bool interp_alpha_face(interp *ip, const uint32_t *idx, int n, int32_t texture);
 bool interp_scissor_clear(interp *ip);
 void interp_scissor_end_frame(interp *ip);
 
-/* Closes an open glBegin without drawing it (interp_prim.c). */
+/* Closes an open glBegin without drawing it (interp_assemble.c). */
 void interp_abort_begin(interp *ip);
+/* Opens a primitive of mode (glBegin, glRect; interp_prim.c). */
+void interp_begin_mode(interp *ip, GLenum mode);
 
 /* The display-list table's life cycle, called from interp.c and
  * interp_begin_frame (interp_list.c). copy returns false on allocation

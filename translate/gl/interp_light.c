@@ -490,7 +490,7 @@ void interp_fix_fog(interp *ip)
     scene_fog f;
     memset(&f, 0, sizeof f);
     f.on = true;
-    f.mode = (int)a->fog.mode;
+    f.mode = interp_scene_fog(a->fog.mode);
     f.density = a->fog.density;
     f.start = a->fog.start;
     f.end = a->fog.end;
@@ -505,7 +505,7 @@ void interp_fix_fog(interp *ip)
     scene_fog a0 = s->fog, a1 = f;
     scene_fog *both[2] = {&a0, &a1};
     for (int k = 0; k < 2; k++) {
-        if (both[k]->mode == GL_LINEAR)
+        if (both[k]->mode == SCENE_FOG_LINEAR)
             both[k]->density = 0;
         else
             both[k]->start = both[k]->end = 0;

@@ -1,5 +1,5 @@
 /* interp_lines.c: lines and points as GL rasterises them, at the frame's
- * size (docs/mapping.md section 5).
+ * size (docs/mapping.md section 7).
  *
  * A segment is clipped as GL clips it (the user planes by the caller, the
  * near and far planes and the viewport's sides here), and its window

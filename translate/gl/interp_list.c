@@ -79,7 +79,7 @@ struct interp_groups {
 
 static list_entry *list_find(interp *ip, uint32_t name)
 {
-    struct interp_lists *t = ip->lists;
+    struct interp_lists *t = ip->st.lists;
     if (!t)
         return NULL;
     int64_t i = namemap_get(&t->names, name);
@@ -88,13 +88,13 @@ static list_entry *list_find(interp *ip, uint32_t name)
 
 static bool list_define(interp *ip, uint32_t name, uint32_t body)
 {
-    if (!ip->lists) {
-        ip->lists = tr_realloc(NULL, sizeof *ip->lists);
-        if (!ip->lists)
+    if (!ip->st.lists) {
+        ip->st.lists = tr_realloc(NULL, sizeof *ip->st.lists);
+        if (!ip->st.lists)
             return false;
-        memset(ip->lists, 0, sizeof *ip->lists);
+        memset(ip->st.lists, 0, sizeof *ip->st.lists);
     }
-    struct interp_lists *t = ip->lists;
+    struct interp_lists *t = ip->st.lists;
     int64_t found = namemap_get(&t->names, name);
     size_t i = found >= 0 ? (size_t)found : t->n;
     if (found < 0) {
@@ -111,9 +111,9 @@ static bool list_define(interp *ip, uint32_t name, uint32_t body)
 
 void interp_lists_reset(interp *ip)
 {
-    if (ip->lists) {
-        ip->lists->n = 0;
-        namemap_clear(&ip->lists->names);
+    if (ip->st.lists) {
+        ip->st.lists->n = 0;
+        namemap_clear(&ip->st.lists->names);
     }
     ip->list_depth = 0;
 }
@@ -121,31 +121,31 @@ void interp_lists_reset(interp *ip)
 bool interp_lists_copy(interp *dst, const interp *src)
 {
     interp_lists_reset(dst);
-    if (!src->lists || src->lists->n == 0)
+    if (!src->st.lists || src->st.lists->n == 0)
         return true;
-    if (!dst->lists) {
-        dst->lists = tr_realloc(NULL, sizeof *dst->lists);
-        if (!dst->lists)
+    if (!dst->st.lists) {
+        dst->st.lists = tr_realloc(NULL, sizeof *dst->st.lists);
+        if (!dst->st.lists)
             return false;
-        memset(dst->lists, 0, sizeof *dst->lists);
+        memset(dst->st.lists, 0, sizeof *dst->st.lists);
     }
-    struct interp_lists *t = dst->lists;
-    if (tr_grow((void **)&t->v, &t->cap, src->lists->n, sizeof *t->v) != 0 ||
-        namemap_copy(&t->names, &src->lists->names) != 0)
+    struct interp_lists *t = dst->st.lists;
+    if (tr_grow((void **)&t->v, &t->cap, src->st.lists->n, sizeof *t->v) != 0 ||
+        namemap_copy(&t->names, &src->st.lists->names) != 0)
         return false;
-    memcpy(t->v, src->lists->v, src->lists->n * sizeof *t->v);
-    t->n = src->lists->n;
+    memcpy(t->v, src->st.lists->v, src->st.lists->n * sizeof *t->v);
+    t->n = src->st.lists->n;
     return true;
 }
 
 void interp_lists_free(interp *ip)
 {
-    if (ip->lists) {
-        tr_free(ip->lists->v);
-        namemap_finish(&ip->lists->names);
+    if (ip->st.lists) {
+        tr_free(ip->st.lists->v);
+        namemap_finish(&ip->st.lists->names);
     }
-    tr_free(ip->lists);
-    ip->lists = NULL;
+    tr_free(ip->st.lists);
+    ip->st.lists = NULL;
     if (ip->groups) {
         tr_free(ip->groups->v);
         tr_free(ip->groups->mats);
@@ -441,11 +441,11 @@ static void call_list(interp *ip, uint32_t name)
      * stored in a list: the recorder writes a compiled shape's quadric
      * state into the body before it, for the body alone. */
     interp_quadric quadrics[INTERP_QUADRICS];
-    memcpy(quadrics, ip->quadrics, sizeof quadrics);
+    memcpy(quadrics, ip->st.quadrics, sizeof quadrics);
     ip->list_depth++;
     rgl_status st = interp_run(ip, data, size, offset, &err);
     ip->list_depth--;
-    memcpy(ip->quadrics, quadrics, sizeof quadrics);
+    memcpy(ip->st.quadrics, quadrics, sizeof quadrics);
     ip->cmd = outer;
     if (st != RGL_OK) {
         interp_diag(ip, DIAG_IGNORED,
@@ -561,7 +561,7 @@ void interp_newlist(interp *ip, const rgl_cmd *cmd)
     }
     if (mode == GL_COMPILE_AND_EXECUTE) {
         /* GL runs this body as immediate calls, not as a compiled list
-         * (which matters to how quads split: interp_prim.c). */
+         * (which matters to how quads split: interp_assemble.c). */
         ip->list_ce = true;
         call_list(ip, name);
         ip->list_ce = false;
@@ -576,7 +576,7 @@ void interp_deletelists(interp *ip, const rgl_cmd *cmd)
         interp_bad_value(ip, "glDeleteLists with a negative range");
         return;
     }
-    struct interp_lists *t = ip->lists;
+    struct interp_lists *t = ip->st.lists;
     if (!t)
         return;
     uint64_t end = (uint64_t)first + (uint64_t)range;

@@ -24,7 +24,7 @@
  * line at every trim edge parallel to an axis, so axis-aligned trims cut
  * exactly; other trim edges cut along the grid (a note says so).
  *
- * The state lives in ip->nurbs (NULL until the first NURBS call): the
+ * The state lives in ip->st.nurbs (NULL until the first NURBS call): the
  * objects' properties are context state (interp_copy_state carries them);
  * the pieces of an open surface or curve are not.
  */
@@ -229,16 +229,16 @@ bool interp_nurbs_surface_at(const double *pts, uint32_t k, const double *uknots
 
 static struct interp_nurbs *nurbs_get(interp *ip)
 {
-    if (!ip->nurbs) {
-        ip->nurbs = tr_realloc(NULL, sizeof *ip->nurbs);
-        if (!ip->nurbs) {
+    if (!ip->st.nurbs) {
+        ip->st.nurbs = tr_realloc(NULL, sizeof *ip->st.nurbs);
+        if (!ip->st.nurbs) {
             if (ip->scene)
                 ip->scene->failed = true;
             return NULL;
         }
-        memset(ip->nurbs, 0, sizeof *ip->nurbs);
+        memset(ip->st.nurbs, 0, sizeof *ip->st.nurbs);
     }
-    return ip->nurbs;
+    return ip->st.nurbs;
 }
 
 static void pieces_clear(struct interp_nurbs *nb)
@@ -256,26 +256,26 @@ static void pieces_clear(struct interp_nurbs *nb)
 
 void interp_nurbs_free(interp *ip)
 {
-    if (!ip->nurbs)
+    if (!ip->st.nurbs)
         return;
-    pieces_clear(ip->nurbs);
-    tr_free(ip->nurbs->tp);
-    tr_free(ip->nurbs->loop_end);
-    tr_free(ip->nurbs);
-    ip->nurbs = NULL;
+    pieces_clear(ip->st.nurbs);
+    tr_free(ip->st.nurbs->tp);
+    tr_free(ip->st.nurbs->loop_end);
+    tr_free(ip->st.nurbs);
+    ip->st.nurbs = NULL;
 }
 
 int interp_nurbs_copy(interp *dst, const interp *src)
 {
     interp_nurbs_free(dst);
-    if (!src->nurbs)
+    if (!src->st.nurbs)
         return 0;
     struct interp_nurbs *nb = tr_realloc(NULL, sizeof *nb);
     if (!nb)
         return -1;
     memset(nb, 0, sizeof *nb);
-    memcpy(nb->obj, src->nurbs->obj, sizeof nb->obj);
-    dst->nurbs = nb;
+    memcpy(nb->obj, src->st.nurbs->obj, sizeof nb->obj);
+    dst->st.nurbs = nb;
     return 0;
 }
 
@@ -286,7 +286,7 @@ static nurbs_props *props_slot(interp *ip, uint32_t id, bool make)
 {
     if (id == 0)
         return NULL;
-    struct interp_nurbs *nb = make ? nurbs_get(ip) : ip->nurbs;
+    struct interp_nurbs *nb = make ? nurbs_get(ip) : ip->st.nurbs;
     if (!nb)
         return NULL;
     nurbs_props *free_slot = NULL;
@@ -524,7 +524,7 @@ static bool trim_add(interp *ip, struct interp_nurbs *nb, double u, double v)
 
 void interp_pwlcurve(interp *ip, const rgl_cmd *cmd)
 {
-    struct interp_nurbs *nb = ip->nurbs;
+    struct interp_nurbs *nb = ip->st.nurbs;
     if (!nb || !nb->in_trim) {
         interp_diag(ip, DIAG_IGNORED, "gluPwlCurve outside gluBeginTrim/gluEndTrim");
         return;
@@ -549,7 +549,7 @@ void interp_pwlcurve(interp *ip, const rgl_cmd *cmd)
 
 void interp_nurbscurve(interp *ip, const rgl_cmd *cmd)
 {
-    struct interp_nurbs *nb = ip->nurbs;
+    struct interp_nurbs *nb = ip->st.nurbs;
     GLenum type = arg_enum(cmd, 6);
     bool trim = type == GLU_MAP1_TRIM_2 || type == GLU_MAP1_TRIM_3;
     if (!nb || (trim ? !nb->in_trim : nb->open != N_CURVE)) {
@@ -603,7 +603,7 @@ void interp_nurbscurve(interp *ip, const rgl_cmd *cmd)
 
 void interp_nurbssurface(interp *ip, const rgl_cmd *cmd)
 {
-    struct interp_nurbs *nb = ip->nurbs;
+    struct interp_nurbs *nb = ip->st.nurbs;
     if (!nb || nb->open != N_SURFACE || nb->in_trim) {
         interp_diag(ip, DIAG_IGNORED, "gluNurbsSurface outside gluBeginSurface/gluEndSurface");
         return;
@@ -1220,7 +1220,7 @@ static void draw_curve(interp *ip, struct interp_nurbs *nb, const nurbs_props *p
 
 void interp_nurbsend(interp *ip, const rgl_cmd *cmd)
 {
-    struct interp_nurbs *nb = ip->nurbs;
+    struct interp_nurbs *nb = ip->st.nurbs;
     uint32_t op = cmd->opcode;
     if (op == RGL_OP_EndTrim) {
         if (!nb || !nb->in_trim) {

@@ -8,7 +8,7 @@
  * an offset polygon is moved along the camera's rays by one pixel's width
  * at its distance (away from the eye for a positive offset, toward it for
  * a negative one), which keeps its image and puts the lines GL draws over
- * it (thin solids half a pixel wide, docs/mapping.md section 5) wholly in
+ * it (thin solids half a pixel wide, docs/mapping.md section 7) wholly in
  * front. An offset shape is drawn as GL's facets, not as a true solid:
  * the lines of its wireframe lie on those facets and a true sphere would
  * bulge over them. The move is not GL's depth offset: a note says so.

@@ -3,11 +3,11 @@
  *
  * A point's size follows its distance from the eye as GL derives it:
  * size * sqrt(1 / (a + b d + c d^2)), d = |z_eye|, clamped to [GL_POINT_SIZE_MIN,
- * GL_POINT_SIZE_MAX]; interp_prim.c's add_point asks interp_point_size for
+ * GL_POINT_SIZE_MAX]; interp_assemble.c's add_point asks interp_point_size for
  * each point. GL fades points below GL_POINT_FADE_THRESHOLD_SIZE only when
  * multisampling, which a POV-Ray scene does not have: the threshold is
  * kept and noted, not drawn. The provoking vertex convention picks the
- * vertex whose colour a flat-shaded primitive takes (interp_prim.c's pv).
+ * vertex whose colour a flat-shaded primitive takes (interp_assemble.c's pv).
  */
 #include "interp_internal.h"
 

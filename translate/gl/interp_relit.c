@@ -124,7 +124,7 @@ int interp_relit_split(interp *ip, const scene_look *look)
     }
     if (ip->relit_over && look->texture >= 0) {
         const scene_texture *t = &ip->scene->textures[look->texture];
-        if (t->env_mode == GL_MODULATE && !t->colour_is_texel)
+        if (t->env_mode == SCENE_ENV_MODULATE && !t->colour_is_texel)
             return INTERP_RELIT_ALL;
     }
     if (ip->relit_over && look->texture < 0)

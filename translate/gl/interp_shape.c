@@ -31,15 +31,15 @@ static interp_quadric *quadric_slot(interp *ip, uint32_t id, bool create)
         return NULL;
     interp_quadric *free_slot = NULL;
     for (int i = 0; i < INTERP_QUADRICS; i++) {
-        if (ip->quadrics[i].id == id)
-            return &ip->quadrics[i];
-        if (!free_slot && ip->quadrics[i].id == 0)
-            free_slot = &ip->quadrics[i];
+        if (ip->st.quadrics[i].id == id)
+            return &ip->st.quadrics[i];
+        if (!free_slot && ip->st.quadrics[i].id == 0)
+            free_slot = &ip->st.quadrics[i];
     }
     if (!create)
         return NULL;
     if (!free_slot) /* more live quadrics than slots: reuse one by id */
-        free_slot = &ip->quadrics[id % INTERP_QUADRICS];
+        free_slot = &ip->st.quadrics[id % INTERP_QUADRICS];
     *free_slot = quadric_default;
     free_slot->id = id;
     return free_slot;

@@ -1,7 +1,7 @@
 /* interp_unrecorded.c: @NotRecorded, the recorder's count of the calls it
  * forwarded to GL without recording (format 1.3). They change nothing in
  * the interpreter's state: the frame keeps the counts for the CLI's
- * once-per-trace report (unrecorded.h). */
+ * once-per-trace report (unrec.h). */
 #include "interp_internal.h"
 
 void interp_notrecorded(interp *ip, const rgl_cmd *cmd)

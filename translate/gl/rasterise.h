@@ -4,7 +4,7 @@
  *
  * Window coordinates are GL's: origin at the frame's lower left, pixel
  * (i, j) covering [i, i + 1) x [j, j + 1), its centre at (i + 0.5, j + 0.5).
- * The rules (docs/mapping.md section 5): a width-1 line lights one pixel
+ * The rules (docs/mapping.md section 7): a width-1 line lights one pixel
  * per column (x-major) or row (y-major), the ends by the diamond-exit rule
  * (GL 2.1 3.4.1); a width-w line w pixels across its minor axis in each of
  * those columns (3.4.2); a point of size s the s x s square of 3.3.1, s

@@ -10,56 +10,15 @@
  */
 #include "gltfwrite.h"
 
-#include <GL/gl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "gltfwrite_internal.h"
 #include "gltfwrite_solid.h"
 #include "pngout.h"
 #include "talloc.h"
-
-#define GLTF_PI 3.14159265358979323846
-
-#define GLTF_MAX_NOTES 32
-
-enum { GL_ARRAY = 34962, GL_ELEMENTS = 34963, T_FLOAT = 5126, T_UINT = 5125 };
-
-typedef struct bytes {
-    uint8_t *p;
-    size_t n, cap;
-} bytes;
-
-typedef struct list {
-    outbuf ob; /* ",{...}" items */
-    size_t count;
-} list;
-
-typedef struct writer {
-    const scene *s;
-    bool failed;
-    bytes bin;
-    list accessors, views, meshes, nodes, materials, textures, images, samplers, lights,
-        cameras;
-    char **mat_json; /* materials written, to share equal ones */
-    size_t cap_mat_json;
-    int32_t *tex_index; /* scene texture -> glTF texture, -1 until written */
-    uint32_t *remap, *stamp, gen;
-    /* one primitive's vertices */
-    float *pos, *nrm, *col, *uv;
-    float solid_colour[4]; /* GL colour of the solid being written */
-    size_t nv, cap_v;
-    uint32_t *idx;
-    size_t ni, cap_i;
-    uint32_t *scene_nodes;
-    size_t nscene_nodes, cap_scene_nodes;
-    bool used_unlit, used_specular, used_lights;
-    outbuf notes;
-    size_t nnotes;
-    const char *note_seen[GLTF_MAX_NOTES];
-    gltf_stats st;
-} writer;
 
 /* ---- small helpers ----------------------------------------------------------------- */
 
@@ -82,22 +41,22 @@ static double clamp01(double v) { return v > 0 ? (v < 1 ? v : 1) : 0; }
  * colours are linear, and viewers encode to sRGB on output: the exact sRGB
  * EOTF (IEC 61966-2-1) makes an unlit colour come out as GL drew it. Values
  * above 1 (light colours) follow the same power law. */
-static double srgb_linear(double v)
+double gltfw_srgb_linear(double v)
 {
     if (!(v > 0) || !isfinite(v))
         return 0;
     return v <= 0.04045 ? v / 12.92 : pow((v + 0.055) / 1.055, 2.4);
 }
 
-static void num(outbuf *ob, double v) { outbuf_f32(ob, fin(v)); }
+void gltfw_num(outbuf *ob, double v) { outbuf_f32(ob, fin(v)); }
 
-static void nums(outbuf *ob, const double *v, int n)
+void gltfw_nums(outbuf *ob, const double *v, int n)
 {
     outbuf_putc(ob, '[');
     for (int i = 0; i < n; i++) {
         if (i)
             outbuf_putc(ob, ',');
-        num(ob, v[i]);
+        gltfw_num(ob, v[i]);
     }
     outbuf_putc(ob, ']');
 }
@@ -124,7 +83,7 @@ static void jstr(outbuf *ob, const char *s)
 }
 
 /* Starts an item of l; returns its index. */
-static size_t item(list *l)
+size_t gltfw_item(list *l)
 {
     if (l->count)
         outbuf_putc(&l->ob, ',');
@@ -132,7 +91,7 @@ static size_t item(list *l)
 }
 
 /* A note for extras.notes, once each (text is a static string). */
-static void note(writer *w, const char *text)
+void gltfw_note(writer *w, const char *text)
 {
     for (size_t i = 0; i < w->nnotes && i < GLTF_MAX_NOTES; i++)
         if (w->note_seen[i] == text)
@@ -157,7 +116,7 @@ static size_t add_view(writer *w, const void *data, size_t n, int target)
         memset(p + off + n, 0, pad);
         w->bin.n = off + n + pad;
     }
-    size_t k = item(&w->views);
+    size_t k = gltfw_item(&w->views);
     outbuf *o = &w->views.ob;
     outbuf_puts(o, "{\"buffer\":0,\"byteOffset\":");
     outbuf_u64(o, off);
@@ -176,8 +135,8 @@ static size_t add_accessor(writer *w, const void *data, size_t count, int comps,
                            bool bounds)
 {
     static const char *const type[] = {"", "SCALAR", "VEC2", "VEC3", "VEC4"};
-    size_t view = add_view(w, data, count * (size_t)comps * 4, indices ? GL_ELEMENTS : GL_ARRAY);
-    size_t k = item(&w->accessors);
+    size_t view = add_view(w, data, count * (size_t)comps * 4, indices ? GLTF_ELEMENT_ARRAY_BUFFER : GLTF_ARRAY_BUFFER);
+    size_t k = gltfw_item(&w->accessors);
     outbuf *o = &w->accessors.ob;
     outbuf_puts(o, "{\"bufferView\":");
     outbuf_u64(o, view);
@@ -201,9 +160,9 @@ static size_t add_accessor(writer *w, const void *data, size_t count, int comps,
                 hi[c] = v > hi[c] ? v : hi[c];
             }
         outbuf_puts(o, ",\"min\":");
-        nums(o, lo, comps);
+        gltfw_nums(o, lo, comps);
         outbuf_puts(o, ",\"max\":");
-        nums(o, hi, comps);
+        gltfw_nums(o, hi, comps);
     }
     outbuf_putc(o, '}');
     w->st.accessors++;
@@ -231,27 +190,27 @@ static int32_t texture_index(writer *w, int32_t t)
     }
     size_t view = add_view(w, png, n, 0);
     free(png);
-    size_t img = item(&w->images);
+    size_t img = gltfw_item(&w->images);
     outbuf_puts(&w->images.ob, "{\"mimeType\":\"image/png\",\"bufferView\":");
     outbuf_u64(&w->images.ob, view);
     outbuf_putc(&w->images.ob, '}');
     w->st.images++;
     /* The border colour (GL_CLAMP, GL_CLAMP_TO_BORDER) has no glTF
      * counterpart: clamped to the edge. */
-    size_t smp = item(&w->samplers);
+    size_t smp = gltfw_item(&w->samplers);
     outbuf *o = &w->samplers.ob;
     outbuf_puts(o, "{\"magFilter\":");
-    outbuf_u64(o, tx->linear ? GL_LINEAR : GL_NEAREST);
+    outbuf_u64(o, tx->linear ? GLTF_LINEAR : GLTF_NEAREST);
     outbuf_puts(o, ",\"minFilter\":");
-    outbuf_u64(o, tx->linear ? GL_LINEAR : GL_NEAREST);
+    outbuf_u64(o, tx->linear ? GLTF_LINEAR : GLTF_NEAREST);
     outbuf_puts(o, ",\"wrapS\":");
-    outbuf_u64(o, tx->repeat_s ? GL_REPEAT : GL_CLAMP_TO_EDGE);
+    outbuf_u64(o, tx->repeat_s ? GLTF_REPEAT : GLTF_CLAMP_TO_EDGE);
     outbuf_puts(o, ",\"wrapT\":");
-    outbuf_u64(o, tx->repeat_t ? GL_REPEAT : GL_CLAMP_TO_EDGE);
+    outbuf_u64(o, tx->repeat_t ? GLTF_REPEAT : GLTF_CLAMP_TO_EDGE);
     outbuf_putc(o, '}');
     if ((!tx->repeat_s && tx->border_s) || (!tx->repeat_t && tx->border_t))
-        note(w, "the border colour of GL_CLAMP and GL_CLAMP_TO_BORDER: clamped to the edge texel");
-    size_t k = item(&w->textures);
+        gltfw_note(w, "the border colour of GL_CLAMP and GL_CLAMP_TO_BORDER: clamped to the edge texel");
+    size_t k = gltfw_item(&w->textures);
     outbuf_puts(&w->textures.ob, "{\"sampler\":");
     outbuf_u64(&w->textures.ob, smp);
     outbuf_puts(&w->textures.ob, ",\"source\":");
@@ -293,25 +252,25 @@ static int32_t material_index(writer *w, const scene_look *look, bool lines, boo
                                     ? &s->materials[look->material]
                                     : NULL;
     int32_t tex = tx && !lines ? texture_index(w, look->texture) : -1;
-    if (tex >= 0 && tx->env_mode == GL_BLEND)
-        note(w, "GL_BLEND texture environment: written as GL_MODULATE");
-    else if (tex >= 0 && tx->env_mode != GL_MODULATE && !tx->colour_is_texel)
-        note(w, "a texture environment other than GL_MODULATE, GL_REPLACE or GL_DECAL of a "
+    if (tex >= 0 && tx->env_mode == SCENE_ENV_BLEND)
+        gltfw_note(w, "GL_BLEND texture environment: written as GL_MODULATE");
+    else if (tex >= 0 && tx->env_mode != SCENE_ENV_MODULATE && !tx->colour_is_texel)
+        gltfw_note(w, "a texture environment other than GL_MODULATE, GL_REPLACE or GL_DECAL of a "
                 "colour without alpha (GL_DECAL of RGBA, GL_ADD, GL_COMBINE): written as "
                 "GL_MODULATE");
     if (look->texture1 >= 0 && !lines)
-        note(w, "a second texture unit: not written (glTF has one base colour texture)");
+        gltfw_note(w, "a second texture unit: not written (glTF has one base colour texture)");
     double base[4] = {1, 1, 1, 1};
     *vertex_color = true;
     if (mat && !(mat->color_material[0] & SCENE_CM_DIFFUSE)) {
         for (int c = 0; c < 4; c++)
-            base[c] = c < 3 ? srgb_linear(clamp01(mat->diffuse[0][c])) : clamp01(mat->diffuse[0][c]);
+            base[c] = c < 3 ? gltfw_srgb_linear(clamp01(mat->diffuse[0][c])) : clamp01(mat->diffuse[0][c]);
         *vertex_color = false;
     }
     if (tex >= 0 && tx->colour_is_texel)
         *vertex_color = false; /* GL_REPLACE / GL_DECAL: the texel alone */
     outbuf_puts(&m, "{\"pbrMetallicRoughness\":{\"baseColorFactor\":");
-    nums(&m, base, 4);
+    gltfw_nums(&m, base, 4);
     if (tex >= 0) {
         outbuf_puts(&m, ",\"baseColorTexture\":{\"index\":");
         outbuf_u64(&m, (uint64_t)tex);
@@ -321,9 +280,9 @@ static int32_t material_index(writer *w, const scene_look *look, bool lines, boo
     double spec[3] = {0, 0, 0};
     if (mat) {
         for (int c = 0; c < 3; c++)
-            spec[c] = srgb_linear(clamp01(mat->specular[0][c]));
+            spec[c] = gltfw_srgb_linear(clamp01(mat->specular[0][c]));
         outbuf_puts(&m, ",\"roughnessFactor\":");
-        num(&m, roughness_of(mat->shininess[0]));
+        gltfw_num(&m, roughness_of(mat->shininess[0]));
     }
     outbuf_putc(&m, '}');
     if (mat) {
@@ -340,30 +299,30 @@ static int32_t material_index(writer *w, const scene_look *look, bool lines, boo
             double ma = !(mat->color_material[0] & SCENE_CM_AMBIENT) ? mat->ambient[0][c]
                         : colour && !varies                          ? colour[c]
                                                                      : 0;
-            em[c] = srgb_linear(clamp01(mat->emission[0][c] + amb * ma));
+            em[c] = gltfw_srgb_linear(clamp01(mat->emission[0][c] + amb * ma));
         }
         if (mat->color_material[0] & SCENE_CM_AMBIENT && varies)
-            note(w, "GL_COLOR_MATERIAL's ambient term of a draw whose colours vary: not "
+            gltfw_note(w, "GL_COLOR_MATERIAL's ambient term of a draw whose colours vary: not "
                     "written (glTF's emissive is one colour)");
         if (em[0] > 0 || em[1] > 0 || em[2] > 0) {
             outbuf_puts(&m, ",\"emissiveFactor\":");
-            nums(&m, em, 3);
+            gltfw_nums(&m, em, 3);
         }
     }
     if (look->blend == SCENE_BLEND_ALPHA) {
         outbuf_puts(&m, ",\"alphaMode\":\"BLEND\"");
         if (look->filter > 0)
-            note(w, "blending that multiplies the colour behind (a filter): written as alpha "
+            gltfw_note(w, "blending that multiplies the colour behind (a filter): written as alpha "
                     "blending of the colour, which glTF's BLEND mode has alone");
         if (look->alpha_test != SCENE_ALPHA_OFF)
-            note(w, "the alpha test of a blended draw: not written (glTF has one alpha mode)");
+            gltfw_note(w, "the alpha test of a blended draw: not written (glTF has one alpha mode)");
     } else if (look->alpha_test == SCENE_ALPHA_ABOVE) {
         /* glTF keeps alpha >= cutoff: GL_GEQUAL exactly, GL_GREATER but
          * for alpha equal to the reference */
         outbuf_puts(&m, ",\"alphaMode\":\"MASK\",\"alphaCutoff\":");
-        num(&m, clamp01(look->alpha_ref));
+        gltfw_num(&m, clamp01(look->alpha_ref));
     } else if (look->alpha_test == SCENE_ALPHA_OTHER) {
-        note(w, "alpha test other than GL_GREATER/GL_GEQUAL: not written");
+        gltfw_note(w, "alpha test other than GL_GREATER/GL_GEQUAL: not written");
     }
     /* GL drew both sides (culled faces never reach the scene). */
     outbuf_puts(&m, ",\"doubleSided\":true");
@@ -371,14 +330,14 @@ static int32_t material_index(writer *w, const scene_look *look, bool lines, boo
         outbuf_puts(&m, ",\"extensions\":{\"KHR_materials_unlit\":{}}");
         w->used_unlit = true;
     } else {
-        note(w, "lit surfaces: glTF viewers light in linear light, GL in display values: "
+        gltfw_note(w, "lit surfaces: glTF viewers light in linear light, GL in display values: "
                 "a surface lit at an angle comes out lighter (exact facing the light)");
         /* No specular in GL: no specular lobe (glTF's default F0 = 0.04
          * would add highlights GL never drew). */
         double f = spec[0] > spec[1] ? spec[0] : spec[1];
         f = f > spec[2] ? f : spec[2];
         outbuf_puts(&m, ",\"extensions\":{\"KHR_materials_specular\":{\"specularFactor\":");
-        num(&m, f > 0 ? 1 : 0);
+        gltfw_num(&m, f > 0 ? 1 : 0);
         if (f > 0) {
             /* GL's highlight peaks at the specular colour; a GGX lobe of
              * alpha^2 = 2 / (n + 2) lit by intensity pi peaks at
@@ -392,7 +351,7 @@ static int32_t material_index(writer *w, const scene_look *look, bool lines, boo
                 sc[c] = sc[c] < 25 ? sc[c] : 25;
             }
             outbuf_puts(&m, ",\"specularColorFactor\":");
-            nums(&m, sc, 3);
+            gltfw_nums(&m, sc, 3);
         }
         outbuf_puts(&m, "}}");
         w->used_specular = true;
@@ -415,7 +374,7 @@ static int32_t material_index(writer *w, const scene_look *look, bool lines, boo
         return -1;
     }
     w->mat_json = mj;
-    size_t k = item(&w->materials);
+    size_t k = gltfw_item(&w->materials);
     outbuf_puts(&w->materials.ob, m.buf);
     mj[k] = m.buf; /* owned now */
     w->st.materials++;
@@ -532,7 +491,7 @@ static void push_vertex(writer *w, const double p[3], const double nrm[3], const
     for (int c = 0; c < 3; c++)
         w->nrm[k * 3 + (size_t)c] = (float)(nf[c] / nl);
     for (int c = 0; c < 4; c++)
-        w->col[k * 4 + (size_t)c] = (float)(c < 3 ? srgb_linear(clamp01(col[c])) : clamp01(col[c]));
+        w->col[k * 4 + (size_t)c] = (float)(c < 3 ? gltfw_srgb_linear(clamp01(col[c])) : clamp01(col[c]));
     /* GL's t runs up from the image's bottom row, glTF's v down from its top. */
     w->uv[k * 2] = fin(uv[0]);
     w->uv[k * 2 + 1] = fin(1.0 - (double)uv[1]);
@@ -564,7 +523,7 @@ static void flush_prim(writer *w, outbuf *pj, int mode, int32_t material, bool v
     if (w->nv == 0)
         return;
     if (vertex_color && colours_vary(w, mode))
-        note(w, "colours that vary across a face or line: glTF interpolates them in linear "
+        gltfw_note(w, "colours that vary across a face or line: glTF interpolates them in linear "
                 "light, GL in display values (mid-way colours come out lighter)");
     size_t pa = add_accessor(w, w->pos, w->nv, 3, false, true);
     size_t na = normals ? add_accessor(w, w->nrm, w->nv, 3, false, false) : 0;
@@ -764,7 +723,7 @@ static void mesh_prim(writer *w, outbuf *pj, const scene_mesh *me, const mat4 *m
 
 static size_t add_mesh(writer *w, outbuf *pj)
 {
-    size_t k = item(&w->meshes);
+    size_t k = gltfw_item(&w->meshes);
     outbuf_puts(&w->meshes.ob, "{\"primitives\":[");
     outbuf_write(&w->meshes.ob, pj->buf + 1, pj->len - 1);
     outbuf_puts(&w->meshes.ob, "]}");
@@ -782,10 +741,10 @@ static void scene_node(writer *w, size_t node)
 }
 
 /* A node; mesh, camera, light < 0 for none; matrix NULL for identity. */
-static size_t add_node(writer *w, long mesh, long camera, long light, const double *matrix,
+size_t gltfw_add_node(writer *w, long mesh, long camera, long light, const double *matrix,
                        const double *rot, const double *trans, const char *name)
 {
-    size_t k = item(&w->nodes);
+    size_t k = gltfw_item(&w->nodes);
     outbuf *o = &w->nodes.ob;
     outbuf_putc(o, '{');
     bool first = true;
@@ -808,17 +767,17 @@ static size_t add_node(writer *w, long mesh, long camera, long light, const doub
     if (matrix) {
         SEP();
         outbuf_puts(o, "\"matrix\":");
-        nums(o, matrix, 16);
+        gltfw_nums(o, matrix, 16);
     }
     if (rot) {
         SEP();
         outbuf_puts(o, "\"rotation\":");
-        nums(o, rot, 4);
+        gltfw_nums(o, rot, 4);
     }
     if (trans) {
         SEP();
         outbuf_puts(o, "\"translation\":");
-        nums(o, trans, 3);
+        gltfw_nums(o, trans, 3);
     }
     if (light >= 0) {
         SEP();
@@ -857,7 +816,7 @@ static bool trs_ok(const mat4 *m)
 }
 
 /* A unit quaternion (x, y, z, w) turning -z to fwd and +y toward up. */
-static void orient(const double fwd_in[3], const double up_in[3], double q[4])
+void gltfw_orient(const double fwd_in[3], const double up_in[3], double q[4])
 {
     double f[3] = {fwd_in[0], fwd_in[1], fwd_in[2]}, u[3] = {up_in[0], up_in[1], up_in[2]};
     double fl = len3(f);
@@ -916,219 +875,6 @@ static void orient(const double fwd_in[3], const double up_in[3], double q[4])
         q[c] = (double)(float)(q[c] / ql);
 }
 
-/* ---- the camera ---------------------------------------------------------------------- */
-
-static double light_ref_distance(const scene *s, const double pos[3]);
-
-static void write_camera(writer *w)
-{
-    const scene_camera *cam = &w->s->camera;
-    double r[3], u[3], fwd[3];
-    for (int c = 0; c < 3; c++) {
-        r[c] = cam->right[c];
-        u[c] = cam->up[c];
-    }
-    double rl = len3(r), ul = len3(u);
-    cross3(u, r, fwd); /* up x right: forward in a right-handed frame */
-    double fl = len3(fwd);
-    if (!(rl > 0) || !(ul > 0) || !(fl > 0) || !isfinite(rl * ul * fl)) {
-        note(w, "camera: degenerate; a default camera written");
-        r[0] = u[1] = 1;
-        r[1] = r[2] = u[0] = u[2] = 0;
-        fwd[0] = fwd[1] = 0;
-        fwd[2] = -1;
-        rl = ul = fl = 1;
-    }
-    for (int c = 0; c < 3; c++)
-        fwd[c] /= fl;
-    double focal = dot3(cam->direction, fwd);
-    if (focal < 0) /* right x up along the view: a left-handed projection */
-        note(w, "camera: a mirrored projection; glTF's camera is right-handed, it looks "
-                "from the other side (same framing, depth order reversed)");
-    /* near and far: where the clip planes cut the axis from location */
-    double znear = 0, zfar = 0;
-    for (int i = 0; cam->has_clip && i < 2; i++) {
-        const double *a = cam->clip[i];
-        double af = dot3(a, fwd), t = -(dot3(a, cam->location) + a[3]) / af;
-        if (!isfinite(t) || af == 0)
-            continue;
-        if (af > 0)
-            znear = t;
-        else
-            zfar = t;
-    }
-    outbuf *o = &w->cameras.ob;
-    item(&w->cameras);
-    if (cam->kind == SCENE_CAMERA_ORTHOGRAPHIC) {
-        if (!(zfar > znear)) {
-            znear = 0;
-            zfar = 1e4;
-        }
-        outbuf_puts(o, "{\"type\":\"orthographic\",\"orthographic\":{\"xmag\":");
-        num(o, rl / 2);
-        outbuf_puts(o, ",\"ymag\":");
-        num(o, ul / 2);
-        outbuf_puts(o, ",\"znear\":0,\"zfar\":");
-        num(o, zfar - znear);
-        outbuf_puts(o, "}}");
-    } else {
-        if (!(focal > 0))
-            focal = -focal > 0 ? -focal : 1;
-        if (!(znear > 0)) /* no near plane (rayglFrameBegin): 1/100 of the scene's distance */
-            znear = light_ref_distance(w->s, cam->location) * 0.01;
-        double yfov = 2 * atan(ul / 2 / focal);
-        outbuf_puts(o, "{\"type\":\"perspective\",\"perspective\":{\"aspectRatio\":");
-        num(o, rl / ul);
-        outbuf_puts(o, ",\"yfov\":");
-        num(o, yfov);
-        outbuf_puts(o, ",\"znear\":");
-        num(o, znear);
-        if (zfar > znear) {
-            outbuf_puts(o, ",\"zfar\":");
-            num(o, zfar);
-        }
-        outbuf_puts(o, "}}");
-        double off[3];
-        for (int c = 0; c < 3; c++)
-            off[c] = cam->direction[c] - focal * fwd[c];
-        if (len3(off) > 1e-6 * focal)
-            note(w, "camera: an off-axis frustum; glTF's is centred (the image is shifted)");
-    }
-    double q[4], t[3];
-    orient(fwd, u, q);
-    for (int c = 0; c < 3; c++)
-        t[c] = cam->location[c] + (cam->kind == SCENE_CAMERA_ORTHOGRAPHIC ? znear * fwd[c] : 0);
-    bool moved = t[0] != 0 || t[1] != 0 || t[2] != 0;
-    bool turned = q[0] != 0 || q[1] != 0 || q[2] != 0;
-    add_node(w, -1, 0, -1, NULL, turned ? q : NULL, moved ? t : NULL, "camera");
-}
-
-/* ---- lights ----------------------------------------------------------------------------- */
-
-/* The distance at which a point light's fitted falloff matches GL's: from
- * the light to the centre of the scene's vertices (1 when none). */
-static double light_ref_distance(const scene *s, const double pos[3])
-{
-    double c[3] = {0, 0, 0};
-    size_t n = 0;
-    for (size_t i = 0; i < s->nmeshes; i++) {
-        const scene_mesh *me = &s->meshes[i];
-        if (me->proto || me->tri_count == 0 || me->first_tri >= s->ntris ||
-            me->look.blend == SCENE_BLEND_INVISIBLE || me->look.alpha_test == SCENE_ALPHA_NEVER)
-            continue;
-        const scene_tri *t = &s->tris[me->first_tri];
-        if (t->v[0] >= s->nverts)
-            continue;
-        const float *p = s->verts[t->v[0]].pos;
-        double in[4] = {p[0], p[1], p[2], 1}, out[4];
-        mat4_apply(&me->to_eye, in, out);
-        if (!(out[3] != 0) || !isfinite(out[0] + out[1] + out[2] + out[3]))
-            continue;
-        for (int k = 0; k < 3; k++)
-            c[k] += out[k] / out[3];
-        n++;
-    }
-    if (!n)
-        return 1;
-    double d[3];
-    for (int k = 0; k < 3; k++)
-        d[k] = c[k] / (double)n - pos[k];
-    double l = len3(d);
-    return l > 1e-6 && isfinite(l) ? l : 1;
-}
-
-static void write_lights(writer *w)
-{
-    const scene *s = w->s;
-    bool other_sets = false, attenuated = false;
-    for (size_t i = 0; i < s->nlights; i++) {
-        const scene_light *l = &s->lights[i];
-        if (!l->aimed && l->set != 0) {
-            other_sets = true;
-            continue; /* glTF lights light everything: the first set only */
-        }
-        double col[3], mx = 0;
-        for (int c = 0; c < 3; c++) {
-            col[c] = srgb_linear(l->color[c]);
-            mx = col[c] > mx ? col[c] : mx;
-        }
-        if (!(mx > 0))
-            continue;
-        for (int c = 0; c < 3; c++)
-            col[c] /= mx;
-        /* A spec-following viewer's Lambert term is colour * intensity *
-         * cos / pi times the base colour: pi makes GL's diffuse. */
-        double inten = mx * GLTF_PI;
-        bool directional = l->kind == SCENE_LIGHT_PARALLEL;
-        double pos[3] = {0, 0, 0}, fwd[3] = {0, 0, -1}, up[3] = {0, 1, 0};
-        if (directional) {
-            if (l->aimed)
-                for (int c = 0; c < 3; c++)
-                    fwd[c] = l->point_at[c] - l->position[c];
-            else
-                for (int c = 0; c < 3; c++)
-                    fwd[c] = -l->direction[c];
-        } else {
-            for (int c = 0; c < 3; c++) {
-                pos[c] = l->position[c];
-                if (l->kind == SCENE_LIGHT_SPOT)
-                    fwd[c] = l->direction[c];
-            }
-            /* glTF's falloff is 1/d^2, GL's 1/(kc + kl d + kq d^2): equal at
-             * the distance of the scene's centre. */
-            double d = light_ref_distance(s, pos);
-            double att = l->attenuation[0] + l->attenuation[1] * d + l->attenuation[2] * d * d;
-            if (!(att > 1e-9) || !isfinite(att))
-                att = 1;
-            inten *= d * d / att;
-            attenuated = true;
-        }
-        if (fabs(fwd[0]) < 1e-9 && fabs(fwd[2]) < 1e-9)
-            up[1] = 0, up[2] = 1;
-        size_t k = item(&w->lights);
-        outbuf *o = &w->lights.ob;
-        outbuf_puts(o, "{\"type\":\"");
-        outbuf_puts(o, directional ? "directional" : l->kind == SCENE_LIGHT_SPOT ? "spot" : "point");
-        outbuf_puts(o, "\",\"color\":");
-        nums(o, col, 3);
-        outbuf_puts(o, ",\"intensity\":");
-        num(o, inten);
-        if (l->kind == SCENE_LIGHT_SPOT) {
-            double outer = l->spot_cutoff * GLTF_PI / 180, e = l->spot_exponent;
-            if (!(outer > 0) || outer > GLTF_PI / 2)
-                outer = GLTF_PI / 2;
-            /* GL's cos^e falls to half at acos(2^(-1/e)): glTF's ramp from
-             * inner to outer is centred there (a hard edge for e = 0). */
-            double inner = outer * 0.95;
-            if (e > 0) {
-                double half = acos(pow(0.5, 1 / e));
-                inner = 2 * half - outer;
-                if (inner > outer * 0.95)
-                    inner = outer * 0.95;
-                if (inner < 0)
-                    inner = 0;
-            }
-            outbuf_puts(o, ",\"spot\":{\"innerConeAngle\":");
-            num(o, inner);
-            outbuf_puts(o, ",\"outerConeAngle\":");
-            num(o, outer);
-            outbuf_putc(o, '}');
-        }
-        outbuf_putc(o, '}');
-        double q[4];
-        orient(fwd, up, q);
-        bool turned = q[0] != 0 || q[1] != 0 || q[2] != 0;
-        bool moved = pos[0] != 0 || pos[1] != 0 || pos[2] != 0;
-        add_node(w, -1, -1, (long)k, NULL, turned ? q : NULL, moved ? pos : NULL, NULL);
-        w->used_lights = true;
-        w->st.lights++;
-    }
-    if (other_sets)
-        note(w, "lights: draws under other GL lights; only the first draw's lights written");
-    if (attenuated)
-        note(w, "lights: GL's attenuation fitted as 1/d^2 at the scene's centre");
-}
-
 /* ---- lines and points ---------------------------------------------------------------- */
 
 static void write_lines_points(writer *w)
@@ -1171,8 +917,8 @@ static void write_lines_points(writer *w)
         flush_prim(w, &pj, 0, mat, true, false, false);
     }
     if (pj.len > 1) {
-        add_node(w, (long)add_mesh(w, &pj), -1, -1, NULL, NULL, NULL, "lines and points");
-        note(w, "lines and points: glTF draws them one pixel wide");
+        gltfw_add_node(w, (long)add_mesh(w, &pj), -1, -1, NULL, NULL, NULL, "lines and points");
+        gltfw_note(w, "lines and points: glTF draws them one pixel wide");
     }
     outbuf_finish(&pj);
 }
@@ -1197,7 +943,7 @@ static void write_meshes(writer *w)
     for (size_t i = 0; i < s->nsolids && !w->failed; i++)
         gltf_solid_prim(w, &pj, &s->solids[i]);
     if (pj.len > 1)
-        add_node(w, (long)add_mesh(w, &pj), -1, -1, NULL, NULL, NULL, "scene");
+        gltfw_add_node(w, (long)add_mesh(w, &pj), -1, -1, NULL, NULL, NULL, "scene");
 
     /* Prototypes: one mesh in prototype space, one node per call. */
     for (size_t k = 0; k < s->nprotos && !w->failed; k++) {
@@ -1209,7 +955,7 @@ static void write_meshes(writer *w)
                 continue;
             bool trs = trs_ok(&in->to_eye);
             if (trs && mesh >= 0) {
-                add_node(w, mesh, -1, -1, in->to_eye.m, NULL, NULL, NULL);
+                gltfw_add_node(w, mesh, -1, -1, in->to_eye.m, NULL, NULL, NULL);
                 w->st.instance_nodes++;
                 continue;
             }
@@ -1226,10 +972,10 @@ static void write_meshes(writer *w)
             long mk = (long)add_mesh(w, &pj);
             if (trs) {
                 mesh = mk;
-                add_node(w, mesh, -1, -1, in->to_eye.m, NULL, NULL, NULL);
+                gltfw_add_node(w, mesh, -1, -1, in->to_eye.m, NULL, NULL, NULL);
                 w->st.instance_nodes++;
             } else {
-                add_node(w, mk, -1, -1, NULL, NULL, NULL, NULL);
+                gltfw_add_node(w, mk, -1, -1, NULL, NULL, NULL, NULL);
             }
         }
     }
@@ -1267,7 +1013,7 @@ static void write_extras(writer *w, outbuf *j, const gltf_frame_info *info)
     double bg[4];
     for (int c = 0; c < 4; c++)
         bg[c] = clamp01(s->background[c]);
-    nums(j, bg, 4);
+    gltfw_nums(j, bg, 4);
     /* glTF cameras have no pixel size: the GL viewport's (or --width/--height) */
     outbuf_puts(j, ",\"imageSize\":[");
     outbuf_i64(j, s->camera.width);
@@ -1276,29 +1022,38 @@ static void write_extras(writer *w, outbuf *j, const gltf_frame_info *info)
     outbuf_putc(j, ']');
     if (s->fog.on) {
         outbuf_puts(j, ",\"fog\":{\"mode\":");
-        jstr(j, s->fog.mode == GL_EXP ? "exp" : s->fog.mode == GL_EXP2 ? "exp2" : "linear");
+        jstr(j, s->fog.mode == SCENE_FOG_EXP    ? "exp"
+                : s->fog.mode == SCENE_FOG_EXP2 ? "exp2"
+                                                : "linear");
         double f[3] = {s->fog.density, s->fog.start, s->fog.end}, fc[4];
         for (int c = 0; c < 4; c++)
             fc[c] = clamp01(s->fog.color[c]);
         outbuf_puts(j, ",\"density\":");
-        num(j, f[0]);
+        gltfw_num(j, f[0]);
         outbuf_puts(j, ",\"start\":");
-        num(j, f[1]);
+        gltfw_num(j, f[1]);
         outbuf_puts(j, ",\"end\":");
-        num(j, f[2]);
+        gltfw_num(j, f[2]);
         outbuf_puts(j, ",\"color\":");
-        nums(j, fc, 4);
+        gltfw_nums(j, fc, 4);
         if (s->fog.distance != SCENE_FOG_ABS_Z) { /* GL_FOG_DISTANCE_MODE_NV */
             outbuf_puts(j, ",\"distance\":");
             jstr(j, s->fog.distance == SCENE_FOG_RADIAL ? "radial" : "eyePlane");
         }
         outbuf_putc(j, '}');
-        note(w, "fog: glTF has none (kept in extras.fog)");
+        gltfw_note(w, "fog: glTF has none (kept in extras.fog)");
+    }
+    if (s->options.radiosity) {
+        /* Global illumination is the renderer's: Blender's Cycles bounces
+         * light off surfaces for it (raygl-blender.py). */
+        outbuf_puts(j, ",\"radiosity\":true");
+        gltfw_note(w, "radiosity: a renderer's setting, kept in extras.radiosity (Blender: diffuse "
+                "bounces)");
     }
     if (s->overlay)
-        note(w, "bitmaps and pixel rectangles: not written");
+        gltfw_note(w, "bitmaps and pixel rectangles: not written");
     if (s->focal_blur || s->antialias_depth)
-        note(w, "accumulation-buffer effects: not written");
+        gltfw_note(w, "accumulation-buffer effects: not written");
     if (info && info->frame_name) {
         outbuf_puts(j, ",\"frameName\":");
         jstr(j, info->frame_name);
@@ -1416,8 +1171,8 @@ int gltf_write(outbuf *ob, const scene *s, const gltf_frame_info *info, gltf_sta
         memset(w->stamp, 0, nv * sizeof *w->stamp);
         for (size_t i = 0; i < nt; i++)
             w->tex_index[i] = -1;
-        write_camera(w);
-        write_lights(w);
+        gltfw_write_camera(w);
+        gltfw_write_lights(w);
         write_meshes(w);
         write_lines_points(w);
         for (size_t i = 0; i < sizeof lists / sizeof lists[0]; i++)

@@ -11,7 +11,6 @@
  */
 #include "povwrite.h"
 
-#include <GL/gl.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -20,6 +19,7 @@
 
 #include "povwrite_internal.h"
 #include "povwrite_light.h"
+#include "povwrite_look.h"
 #include "povwrite_mesh2.h"
 #include "povwrite_solid.h"
 #include "povwrite_texture.h"
@@ -533,7 +533,7 @@ static int write_overlay_runs(outbuf *ob, const scene *s)
  * or radiosity. Transparent where nothing was drawn. */
 static int write_overlay(povwriter *w, outbuf *ob, const scene *s)
 {
-    if (w->light.opt.quick) {
+    if (w->tex.quick) {
         int rc = write_overlay_runs(ob, s);
         if (rc != 0)
             return rc < 0 ? -1 : 0;
@@ -621,7 +621,7 @@ static bool same_group(const scene_mesh *a, const scene_mesh *b)
 
 /* The pass's meshes, those of one look and transform as one mesh2 wherever
  * they were drawn (the strips of a surface, the lit and relit parts of
- * each: docs/mapping.md section 4), so that their shared vertices are
+ * each: docs/mapping.md section 6), so that their shared vertices are
  * written once and POV-Ray builds one object. A group is written where
  * its first mesh was drawn. */
 static int write_mesh_groups(povwriter *w, outbuf *ob, const scene *s)
@@ -752,9 +752,10 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
      * that need another finish (issue 4) name theirs. */
     outbuf_puts(ob, "}\n#default{finish{ambient 0 diffuse 0 emission 1}}\n");
 
-    povlight_begin(&w->light, s, info ? info->options : NULL);
+    povlight_begin(&w->light, s);
     povtex_reset(&w->tex);
-    w->tex.quick = w->light.opt.quick;
+    /* POV-Ray's quick colours, no image maps (-1: Quality=0) */
+    w->tex.quick = s->options.quality != 0 && s->options.quality < 6;
     w->mt_count = 0;
     bool no_shadows = w->light.opt.no_shadows;
     if (write_protos(w, ob, s) != 0)
@@ -811,6 +812,7 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
     if (s->overlay && write_overlay(w, ob, s) != 0)
         return -1;
     povlight_lights(&w->light, ob);
+    povlook_scene(ob, s);
     return ob->failed ? -1 : 0;
 }
 

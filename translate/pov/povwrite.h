@@ -3,8 +3,10 @@
  * One backend among possible others: it reads only the scene model
  * (scene.h) and writes text into an outbuf. docs/mapping.md explains every
  * mapping. The output never depends on the locale, holds no NaN or
- * infinity, no #fopen/#write/#include, and every string from the trace is
- * escaped; the same scene gives the same bytes.
+ * infinity, no #fopen/#write and no #include but the user's own
+ * (--include, pov_writer.c), and every string from the trace is escaped;
+ * the same scene gives the same bytes. pov_writer.c makes it the driver's
+ * writer "pov" (writer.h).
  */
 #ifndef RGL_POVWRITE_H
 #define RGL_POVWRITE_H
@@ -14,17 +16,6 @@
 #include "outbuf.h"
 #include "scene.h"
 
-/* What the user chose beyond the GL look (raygl2pov options); all zero is
- * the default: shadows on, no reflection, point lights. */
-typedef struct pov_options {
-    bool no_shadows;  /* --no-shadows: nothing casts shadows (the GL look) */
-    float reflection; /* --reflection F: mirror reflection of lit surfaces */
-    int area_lights;  /* --area-lights N: N x N area lights (soft shadows), 0 off */
-    bool quick;       /* --quality below 6: POV-Ray computes no image maps, so
-                         the overlay is solid rectangles and each image pigment
-                         has a quick_color (its mean) */
-} pov_options;
-
 /* Where a frame came from, for the header comment. Strings may be NULL;
  * they are escaped before they reach the file. */
 typedef struct pov_frame_info {
@@ -33,7 +24,6 @@ typedef struct pov_frame_info {
     uint64_t frame_index;  /* in file order */
     uint32_t stream, number;
     const char *frame_name; /* rayglFrameBegin's name, or NULL */
-    const pov_options *options; /* NULL: the defaults */
     /* Why the scene is incomplete (the frame cut by its budget, parts
      * that damage took), one reason a line, or NULL: each line becomes an
      * "// Incomplete: ..." comment under the header. */
@@ -56,6 +46,12 @@ int povwriter_scene(povwriter *w, outbuf *ob, const scene *s, const pov_frame_in
  * the last. */
 typedef struct povtex_image povtex_image;
 const povtex_image *povwriter_image(const povwriter *w, size_t i);
+
+/* Writes those images into dir/textures (POVTEX_DIR, made when missing;
+ * existing images are kept: pngout.h). Returns 0, or -1 with errno set
+ * and failed (cap bytes) naming the image or the folder that could not be
+ * written (pov_writer.c). */
+int povwriter_write_images(const povwriter *w, const char *dir, char *failed, size_t cap);
 
 /* Writes the .ini that renders the scene: `povray DIR/NAME.ini` run from
  * the directory raygl2pov ran in (POV-Ray resolves INI paths against the

@@ -1,5 +1,5 @@
 /* povwrite_cube.c: cube maps (GL_TEXTURE_CUBE_MAP) in POV-Ray (issue 14;
- * docs/mapping.md section 27).
+ * docs/mapping.md section 24).
  *
  * GL interpolates each vertex's (s, t, r) over a face (from
  * GL_REFLECTION_MAP or GL_NORMAL_MAP texgen, or given) and, per fragment,

@@ -1,5 +1,5 @@
 /* povwrite_cube.h: cube maps in the POV-Ray writer (issue 14;
- * docs/mapping.md section 27). Private to the writer. */
+ * docs/mapping.md section 24). Private to the writer. */
 #ifndef RGL_POVWRITE_CUBE_H
 #define RGL_POVWRITE_CUBE_H
 

@@ -7,7 +7,6 @@
 
 #include <math.h>
 
-
 static void put_num(outbuf *ob, double v)
 {
     float f = (float)v;

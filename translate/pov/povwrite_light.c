@@ -24,7 +24,6 @@
  */
 #include "povwrite_light.h"
 
-#include <GL/gl.h>
 #include <math.h>
 #include <string.h>
 
@@ -288,12 +287,11 @@ bool povlight_in_pass(const povlight *pl, const scene_look *look)
 
 /* ---- Per frame --------------------------------------------------------------------- */
 
-void povlight_begin(povlight *pl, const scene *s, const pov_options *options)
+void povlight_begin(povlight *pl, const scene *s)
 {
     memset(pl, 0, sizeof *pl);
     pl->s = s;
-    if (options)
-        pl->opt = *options;
+    pl->opt = s->options;
     double lo[3], hi[3];
     scene_box(s, lo, hi);
     if (lo[0] <= hi[0]) {
@@ -676,14 +674,14 @@ void povlight_fog_declare(const povlight *pl, outbuf *ob, const char *name, cons
     outbuf_puts(ob, name);
     outbuf_puts(ob, "=texture{pigment{function{min(1,max(0,");
     switch (fg->mode) {
-    case GL_LINEAR:
+    case SCENE_FOG_LINEAR:
         put_num(ob, fg->end / fog_span(fg));
         outbuf_putc(ob, '-');
         put_fog_distance(ob, to_eye, distance);
         outbuf_putc(ob, '/');
         put_num(ob, fog_span(fg));
         break;
-    case GL_EXP2:
+    case SCENE_FOG_EXP2:
         outbuf_puts(ob, "exp(-pow(");
         put_fog_distance(ob, to_eye, distance);
         outbuf_putc(ob, '*');
@@ -848,6 +846,8 @@ void povlight_lights(const povlight *pl, outbuf *ob)
             only = (int32_t)k;
     for (size_t i = 0; i < s->nlights; i++) {
         const scene_light *l = &s->lights[i];
+        if (l->added)
+            continue; /* the look's, after the scene (povwrite_look.c) */
         if (l->aimed)
             put_aimed(ob, l);
         else if (!pl->groups && (only < 0 || l->set == (uint32_t)only))

@@ -21,7 +21,7 @@
  * frame by povlight_begin. */
 typedef struct povlight {
     const scene *s;
-    pov_options opt;
+    scene_options opt; /* the scene's (scene.options) */
     double centre[3]; /* of the drawn geometry's bounding box, eye space */
     double radius;    /* half its diagonal (at least a small positive value) */
     float light_ambient[3]; /* sum of the GL lights' ambient, attenuated at the centre */
@@ -46,7 +46,7 @@ typedef struct povlight {
 #define POVLIGHT_UNGROUPED (-1)
 
 /* Fills pl for scene s (options may be NULL: the defaults). */
-void povlight_begin(povlight *pl, const scene *s, const pov_options *options);
+void povlight_begin(povlight *pl, const scene *s);
 
 /* True when a run needs more than the plain unlit texture{pigment{rgb}}. */
 bool povlight_special(const scene_look *look);

@@ -13,7 +13,6 @@
  */
 #include "povwrite_mesh2.h"
 
-#include <GL/gl.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -203,7 +202,7 @@ static void put_surface(povwriter *w, outbuf *ob, const scene_look *look,
         outbuf_puts(ob, "}}");
         return;
     }
-    if (tx->env_mode == GL_BLEND || tx->env_mode == GL_ADD) {
+    if (tx->env_mode == SCENE_ENV_BLEND || tx->env_mode == SCENE_ENV_ADD) {
         if (look->lit) {
             float kdp[3], tint[3];
             bool tinted = povlight_modulate_tint(&w->light, look, c, kdp, tint);
@@ -211,15 +210,15 @@ static void put_surface(povwriter *w, outbuf *ob, const scene_look *look,
             if (povmt_env_lit(tx, w->env_id, tinted ? tint : NULL, lit, sizeof lit, env,
                               sizeof env) == 0) {
                 povlight_texture_env(&w->light, ob, look, c, side,
-                                     tx->env_mode == GL_BLEND ? lit : NULL,
-                                     tinted && tx->env_mode == GL_BLEND ? kdp : NULL, env);
+                                     tx->env_mode == SCENE_ENV_BLEND ? lit : NULL,
+                                     tinted && tx->env_mode == SCENE_ENV_BLEND ? kdp : NULL, env);
                 return;
             }
         } else if (povmt_env_texture(ob, tx, w->env_id, c) == 0) {
             return;
         }
     }
-    if (tx->env_mode == GL_DECAL) {
+    if (tx->env_mode == SCENE_ENV_DECAL) {
         /* DECAL of RGBA: the texel over the fragment's colour by its alpha;
          * the image's alpha is POV-Ray's transmit, so the layer below
          * shows through by 1 - alpha. */
@@ -254,7 +253,7 @@ static const float *mesh_tint(povwriter *w, const scene_vertex *verts, const sce
                               const scene_texture *tx1)
 {
     w->tinted = w->per_entry = false;
-    if (tx1 || tx->env_mode != GL_MODULATE || tx->colour_is_texel || !look->lit)
+    if (tx1 || tx->env_mode != SCENE_ENV_MODULATE || tx->colour_is_texel || !look->lit)
         return NULL;
     /* GL_COLOR_MATERIAL's diffuse: one colour for the whole mesh, or none. */
     const float *c = verts[look->flat ? tris[0].provoking : tris[0].v[0]].color;
@@ -275,7 +274,7 @@ static const float *mesh_tint(povwriter *w, const scene_vertex *verts, const sce
  * povtex_colour_grid) rather than a texture_list: a texture object per
  * colour costs POV-Ray time and memory, and each object{} copy of a
  * prototype's mesh2 copies and transforms its whole texture_list, a single
- * texture stays one (docs/mapping.md sections 4 and 12). The colours must
+ * texture stays one (docs/mapping.md sections 6 and 9). The colours must
  * vary (outside a prototype, more than COLOUR_IMAGE_MIN_COLOURS of them),
  * be opaque and need no more clamping than POVTEX_CLAMP_MAX; lit, the
  * colour must be GL_AMBIENT_AND_DIFFUSE's alone (the pigment then scales
@@ -597,50 +596,81 @@ index_faces(povwriter *w, const key_spec *ks, colour_memo *memo, const scene_tri
     return kept;
 }
 
-/* A mesh2 of triangles over a vertex pool; to_eye NULL: the vertices are
- * in eye space. Equal vertices (position, and normal and colour where
- * they are written) are written once: one lookup per pool vertex. With
- * normals, normal_vectors runs parallel to vertex_vectors and POV-Ray takes
- * both by face_indices (no normal_indices). A lit flat face carries its
- * provoking vertex's normal at its three corners (GL lights the whole face
- * with it), so its corners are looked up per face. Colours are shared
- * separately, as texture_list entries. Returns -1 on memory failure. */
-static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
-                            const scene_tri *tris, size_t nt, const scene_look *look,
-                            const mat4 *to_eye, const double *mt_map)
+/* One mesh2 being written (write_mesh2_part): its input, what the look
+ * asks for, and what each step leaves for the next. */
+typedef struct mesh2_part {
+    povwriter *w;
+    outbuf *ob;
+    const scene_vertex *verts;
+    const scene_tri *tris;
+    size_t nt;
+    const scene_look *look;
+    const mat4 *to_eye;
+    const double *mt_map;
+    const scene *sc;
+    /* The texture (tx: as drawn; tx0, tx1: the two units' own). */
+    const scene_texture *tx, *tx0, *tx1;
+    scene_texture txc;
+    bool normals, flat_normals, vimage, vcolour, vgrid, key_colour;
+    uint32_t lo;  /* the run's vertices: [lo, lo + span) of the pool */
+    size_t span;
+    int img;      /* the texture's (or colour image's) index in w->tex */
+    float uv_scale[2], uv_off[2], uvlo[2], uvhi[2];
+    char pigment[POVMIP_PIGMENT_MAX];
+    colour_memo memo;
+    bool turn;    /* lit normals turned toward the camera */
+    mat4 to_eye_inv;
+    const mat4 *inv;
+    size_t kept;  /* faces GL draws */
+    bool colour_list;
+    size_t nleft, nvg; /* faces off the grid; uv of grid vertices */
+    bool special, named, dup;
+    size_t ndup;
+} mesh2_part;
+
+/* What the look asks for, and the vertices' stretch of the pool. Returns
+ * 1 when there is nothing to write, -1 on memory failure. */
+static int part_begin(mesh2_part *p)
 {
+    povwriter *w = p->w;
     const scene *sc = w->light.s;
+    const scene_look *look = p->look;
+    const scene_vertex *verts = p->verts;
+    const scene_tri *tris = p->tris;
+    size_t nt = p->nt;
+    p->sc = sc;
     const scene_texture *tx = look->texture >= 0 && sc && (size_t)look->texture < sc->ntextures
                                   ? &sc->textures[look->texture]
                                   : NULL;
     /* A second unit (mt_map: its coordinates from the first's): the pair
      * is one pigment, which the fragment colour multiplies (both
      * GL_MODULATE) or which is the colour (povmt_texel). */
-    const scene_texture *tx0 = tx, *tx1 = NULL;
-    scene_texture txc;
-    if (tx && mt_map) {
-        tx1 = &sc->textures[look->texture1];
-        txc = *tx;
-        txc.env_mode = GL_MODULATE;
-        txc.colour_is_texel = povmt_texel(tx, tx1);
-        tx = &txc;
+    p->tx0 = tx;
+    p->tx1 = NULL;
+    if (tx && p->mt_map) {
+        p->tx1 = &sc->textures[look->texture1];
+        p->txc = *tx;
+        p->txc.env_mode = SCENE_ENV_MODULATE;
+        p->txc.colour_is_texel = povmt_texel(tx, p->tx1);
+        tx = &p->txc;
     }
+    p->tx = tx;
     w->tinted = w->per_entry = false;
-    bool normals = look->lit;
-    bool flat_normals = look->lit && look->flat;
-    bool vimage = !tx && colour_image_ok(w, verts, tris, nt, look);
+    p->normals = look->lit;
+    p->flat_normals = look->lit && look->flat;
+    p->vimage = !tx && colour_image_ok(w, verts, tris, nt, look);
     /* A texel colour that replaces the fragment's needs no vertex colour. */
-    bool vcolour = !vimage && !look->flat && !(tx && tx->colour_is_texel);
+    p->vcolour = !p->vimage && !look->flat && !(tx && tx->colour_is_texel);
     /* Smooth colours as an image: a vertex's colour is its texel on the grid. */
-    bool vgrid = vimage && !look->flat;
-    bool key_colour = vcolour || vgrid;
-    uint32_t words = 3 + (normals ? 3 : 0) + (key_colour ? 4 : 0) + (tx ? 2 : 0);
+    p->vgrid = p->vimage && !look->flat;
+    p->key_colour = p->vcolour || p->vgrid;
+    uint32_t words = 3 + (p->normals ? 3 : 0) + (p->key_colour ? 4 : 0) + (tx ? 2 : 0);
     dedup *vd = &w->vtx;
-    if (nt == 0 || (to_eye && !mat4_finite(to_eye)))
-        return 0;
+    if (nt == 0 || (p->to_eye && !mat4_finite(p->to_eye)))
+        return 1;
     vd->words = words;
     if (sc)
-        povwrite_names(ob, sc, look->names);
+        povwrite_names(p->ob, sc, look->names);
 
     /* Vertices of a run sit in one stretch of the pool. */
     uint32_t lo = UINT32_MAX, hi = 0;
@@ -656,18 +686,64 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         hi = v > hi ? v : hi;
     }
     size_t span = (size_t)hi - lo + 1;
+    p->lo = lo;
+    p->span = span;
     if (tr_grow((void **)&w->remap, &w->cap_remap, span, sizeof *w->remap) != 0 ||
         tr_grow((void **)&w->faces, &w->cap_faces, nt * 6, sizeof *w->faces) != 0 ||
         dedup_reset(vd, span) != 0 || dedup_reset(&w->col, 64) != 0)
         return -1;
     memset(w->remap, 0xff, span * sizeof *w->remap); /* UNSET */
+    return 0;
+}
 
-    /* Textured: the image and how the coordinates map into it. */
-    int img = -1;
-    float uv_scale[2] = {1, 1}, uv_off[2] = {0, 0};
+/* The second unit's pigment: the pair as one (povmt_pigment). */
+static int part_pigment_pair(mesh2_part *p)
+{
+    povwriter *w = p->w;
+    const scene_look *look = p->look;
+    const scene_vertex *verts = p->verts;
+    const scene_tri *tris = p->tris;
+    const double *mt_map = p->mt_map;
+    float lo1[2] = {INFINITY, INFINITY}, hi1[2] = {-INFINITY, -INFINITY};
+    for (size_t i = 0; i < p->nt; i++)
+        for (int k = 0; k < 3; k++) {
+            const float *uv = verts[tris[i].v[k]].tex;
+            for (int a = 0; a < 2; a++) {
+                double u1 = mt_map[3 * a] * uv[0] + mt_map[3 * a + 1] * uv[1] + mt_map[3 * a + 2];
+                if (isfinite(u1)) {
+                    lo1[a] = (float)u1 < lo1[a] ? (float)u1 : lo1[a];
+                    hi1[a] = (float)u1 > hi1[a] ? (float)u1 : hi1[a];
+                }
+            }
+        }
+    float s1[2], o1[2];
+    int img1 = povtex_map(&w->tex, p->sc, look->texture1, lo1, hi1, p->tx1->env_mode == SCENE_ENV_DECAL,
+                          NULL, s1, o1);
+    const scene_tri *t0 = &tris[0];
+    const float *cf = verts[look->flat ? t0->provoking : t0->v[0]].color;
+    if (img1 < 0 || povmt_pigment(p->ob, &w->tex, (size_t)p->img, (size_t)img1, p->tx0, p->tx1,
+                                  p->uv_scale, p->uv_off, s1, o1, mt_map, cf, w->mt_count++,
+                                  p->pigment, sizeof p->pigment) != 0)
+        return -1;
+    return 0;
+}
+
+/* Textured: the image, how the coordinates map into it, and the pigment
+ * that samples it as GL does (alpha test, cube map, mipmaps, the
+ * environments POV-Ray has no finish for, a second unit). */
+static int part_pigment(mesh2_part *p)
+{
+    povwriter *w = p->w;
+    outbuf *ob = p->ob;
+    const scene *sc = p->sc;
+    const scene_look *look = p->look;
+    const scene_vertex *verts = p->verts;
+    const scene_tri *tris = p->tris;
+    size_t nt = p->nt;
+    const scene_texture *tx = p->tx, *tx0 = p->tx0, *tx1 = p->tx1;
     /* The run's texture-coordinate range: where the image map goes, and the
      * range the alpha-test and mipmap pigments below cover. */
-    float uvlo[2] = {INFINITY, INFINITY}, uvhi[2] = {-INFINITY, -INFINITY};
+    float *uvlo = p->uvlo, *uvhi = p->uvhi;
     if (tx) {
         for (size_t i = 0; i < nt; i++)
             for (int k = 0; k < 3; k++) {
@@ -680,109 +756,107 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
             }
         /* The texels' alpha: DECAL blends by it; under blending it is the
          * fragment's (MODULATE, and REPLACE of RGBA), POV-Ray's transmit. */
-        bool keep_alpha = (tx0->env_mode == GL_DECAL && !tx0->colour_is_texel) ||
+        bool keep_alpha = (tx0->env_mode == SCENE_ENV_DECAL && !tx0->colour_is_texel) ||
                           look->blend == SCENE_BLEND_ALPHA;
-        img = povtex_map(&w->tex, sc, look->texture, uvlo, uvhi, keep_alpha,
-                         mesh_tint(w, verts, tris, nt, look, tx0, tx1), uv_scale, uv_off);
-        if (img < 0)
+        p->img = povtex_map(&w->tex, sc, look->texture, uvlo, uvhi, keep_alpha,
+                            mesh_tint(w, verts, tris, nt, look, tx0, tx1), p->uv_scale, p->uv_off);
+        if (p->img < 0)
             return -1;
     }
     _Static_assert(POVMIP_PIGMENT_MAX >= POVMT_PIGMENT_MAX, "pigment room");
-    char pigment[POVMIP_PIGMENT_MAX] = "";
-    if (tx && !tx1 && povtex_pigment(&w->tex, (size_t)img, tx, pigment) == 0)
+    char *pigment = p->pigment;
+    size_t img = (size_t)p->img;
+    if (tx && !tx1 && povtex_pigment(&w->tex, img, tx, pigment) == 0)
         return -1;
     if (tx && !tx1 && !w->cube && !w->mip && !w->per_entry && scene_alpha_crisp(tx) &&
-        tx->env_mode != GL_BLEND && tx->env_mode != GL_ADD) {
+        tx->env_mode != SCENE_ENV_BLEND && tx->env_mode != SCENE_ENV_ADD) {
         /* The alpha test on the filtered alpha, as GL's per fragment. */
-        if (povtex_alpha_pigment(ob, &w->tex, sc, look->texture, (size_t)img, uvlo, uvhi,
-                                 w->mt_count++, pigment, sizeof pigment) != 0)
+        if (povtex_alpha_pigment(ob, &w->tex, sc, look->texture, img, uvlo, uvhi,
+                                 w->mt_count++, pigment, sizeof p->pigment) != 0)
             return -1;
     }
     if (tx && !tx1 && w->cube) {
         /* A cube map: GL's face and texel per pixel from (s, t, r). */
-        if (povcube_pigment(w->cube, w->cube_map, pigment, sizeof pigment) != 0)
+        if (povcube_pigment(w->cube, w->cube_map, pigment, sizeof p->pigment) != 0)
             return -1;
-        uv_scale[0] = uv_scale[1] = 1;
-        uv_off[0] = uv_off[1] = 0;
+        p->uv_scale[0] = p->uv_scale[1] = 1;
+        p->uv_off[0] = p->uv_off[1] = 0;
     }
     if (tx && !tx1 && w->mip) {
         /* Mipmapped: the levels by GL's level of detail, at the mesh's own uv. */
-        bool keep_alpha = (tx->env_mode == GL_DECAL && !tx->colour_is_texel) ||
+        bool keep_alpha = (tx->env_mode == SCENE_ENV_DECAL && !tx->colour_is_texel) ||
                           look->blend == SCENE_BLEND_ALPHA;
         if (povmip_pigment(ob, &w->tex, sc, look->texture, w->mip, w->mt_count++, uvlo, uvhi,
                            keep_alpha, w->tinted ? w->mod_tint : NULL, pigment,
-                           sizeof pigment) != 0)
+                           sizeof p->pigment) != 0)
             return -1;
-        uv_scale[0] = uv_scale[1] = 1;
-        uv_off[0] = uv_off[1] = 0;
+        p->uv_scale[0] = p->uv_scale[1] = 1;
+        p->uv_off[0] = p->uv_off[1] = 0;
     }
-    if (tx && !tx1 && (tx->env_mode == GL_BLEND || tx->env_mode == GL_ADD || w->per_entry)) {
+    if (tx && !tx1 && (tx->env_mode == SCENE_ENV_BLEND || tx->env_mode == SCENE_ENV_ADD || w->per_entry)) {
         w->env_id = w->mt_count++;
-        if (povmt_declare(ob, &w->tex, (size_t)img, tx, w->env_id) != 0)
+        if (povmt_declare(ob, &w->tex, img, tx, w->env_id) != 0)
             return -1;
     }
-    if (tx1) {
-        float lo1[2] = {INFINITY, INFINITY}, hi1[2] = {-INFINITY, -INFINITY};
-        for (size_t i = 0; i < nt; i++)
-            for (int k = 0; k < 3; k++) {
-                const float *uv = verts[tris[i].v[k]].tex;
-                for (int a = 0; a < 2; a++) {
-                    double u1 = mt_map[3 * a] * uv[0] + mt_map[3 * a + 1] * uv[1] + mt_map[3 * a + 2];
-                    if (isfinite(u1)) {
-                        lo1[a] = (float)u1 < lo1[a] ? (float)u1 : lo1[a];
-                        hi1[a] = (float)u1 > hi1[a] ? (float)u1 : hi1[a];
-                    }
-                }
-            }
-        float s1[2], o1[2];
-        int img1 = povtex_map(&w->tex, sc, look->texture1, lo1, hi1, tx1->env_mode == GL_DECAL,
-                              NULL, s1, o1);
-        const scene_tri *t0 = &tris[0];
-        const float *cf = verts[look->flat ? t0->provoking : t0->v[0]].color;
-        if (img1 < 0 || povmt_pigment(ob, &w->tex, (size_t)img, (size_t)img1, tx0, tx1, uv_scale,
-                                      uv_off, s1, o1, mt_map, cf, w->mt_count++, pigment,
-                                      sizeof pigment) != 0)
-            return -1;
-    }
+    if (tx1)
+        return part_pigment_pair(p);
+    return 0;
+}
 
-    /* Colours repeat in runs: the last one looked up is remembered. */
-    colour_memo memo = {{0}, DEDUP_NONE};
-
-    /* Lit normals on front faces, turned toward the camera where POV-Ray
-     * would mirror them (povlight_front_normal). */
-    bool turn = normals && !w->in_proto;
-    mat4 to_eye_inv;
-    const mat4 *inv = turn && to_eye && mat4_invert(to_eye, &to_eye_inv) ? &to_eye_inv : NULL;
-    if (turn) {
-        if (tr_grow((void **)&w->front, &w->cap_front, span, 1) != 0 ||
-            tr_grow((void **)&w->eye, &w->cap_eye, span * 3, sizeof *w->eye) != 0)
-            return -1;
-        /* Each vertex goes to eye space once, not once per face (2: not
-         * yet), in the same pass as the faces' facing. */
-        memset(w->front, 2, span);
-        for (size_t i = 0; i < nt; i++) {
-            const scene_tri *t = &tris[i];
-            if (i + POOL_AHEAD < nt)
-                __builtin_prefetch(verts[tris[i + POOL_AHEAD].v[2]].pos);
-            double *e[3];
-            for (int k = 0; k < 3; k++) {
-                uint32_t v = t->v[k] - lo;
-                e[k] = w->eye + 3 * (size_t)v;
-                if (w->front[v] == 2) {
-                    povlight_eye_point(to_eye, verts[t->v[k]].pos, e[k]);
-                    w->front[v] = 0;
-                }
+/* Lit normals on front faces, turned toward the camera where POV-Ray
+ * would mirror them (povlight_front_normal). */
+static int part_turn(mesh2_part *p)
+{
+    povwriter *w = p->w;
+    const scene_vertex *verts = p->verts;
+    const scene_tri *tris = p->tris;
+    size_t nt = p->nt;
+    const mat4 *to_eye = p->to_eye;
+    p->turn = p->normals && !w->in_proto;
+    p->inv = p->turn && to_eye && mat4_invert(to_eye, &p->to_eye_inv) ? &p->to_eye_inv : NULL;
+    if (!p->turn)
+        return 0;
+    size_t span = p->span;
+    uint32_t lo = p->lo;
+    if (tr_grow((void **)&w->front, &w->cap_front, span, 1) != 0 ||
+        tr_grow((void **)&w->eye, &w->cap_eye, span * 3, sizeof *w->eye) != 0)
+        return -1;
+    /* Each vertex goes to eye space once, not once per face (2: not
+     * yet), in the same pass as the faces' facing. */
+    memset(w->front, 2, span);
+    for (size_t i = 0; i < nt; i++) {
+        const scene_tri *t = &tris[i];
+        if (i + POOL_AHEAD < nt)
+            __builtin_prefetch(verts[tris[i + POOL_AHEAD].v[2]].pos);
+        double *e[3];
+        for (int k = 0; k < 3; k++) {
+            uint32_t v = t->v[k] - lo;
+            e[k] = w->eye + 3 * (size_t)v;
+            if (w->front[v] == 2) {
+                povlight_eye_point(to_eye, verts[t->v[k]].pos, e[k]);
+                w->front[v] = 0;
             }
-            if (povlight_front_facing(&w->light, e[0], e[1], e[2]))
-                for (int k = 0; k < 3; k++)
-                    w->front[t->v[k] - lo] = 1;
         }
+        if (povlight_front_facing(&w->light, e[0], e[1], e[2]))
+            for (int k = 0; k < 3; k++)
+                w->front[t->v[k] - lo] = 1;
     }
+    return 0;
+}
 
-    /* Pass 1: index every used vertex, keep the faces GL would draw. */
-    key_spec ks = {verts, lo, normals, flat_normals, turn, key_colour, vcolour, tx,
-                   {uv_scale[0], uv_scale[1]}, {uv_off[0], uv_off[1]}, to_eye, inv, 0};
-    if (turn && !flat_normals && !tx) { /* turned normals: copies found by vmemo */
+/* Pass 1: index every used vertex, keep the faces GL would draw (p->kept).
+ * Returns -1 on memory failure. */
+static int part_index(mesh2_part *p)
+{
+    povwriter *w = p->w;
+    const scene_look *look = p->look;
+    const scene_tri *tris = p->tris;
+    size_t nt = p->nt;
+    const scene_texture *tx = p->tx;
+    key_spec ks = {p->verts, p->lo, p->normals, p->flat_normals, p->turn, p->key_colour,
+                   p->vcolour, tx, {p->uv_scale[0], p->uv_scale[1]},
+                   {p->uv_off[0], p->uv_off[1]}, p->to_eye, p->inv, 0};
+    if (p->turn && !p->flat_normals && !tx) { /* turned normals: copies found by vmemo */
         if (!w->vmemo || w->vmemo_gen >= (1u << 30)) {
             if (!w->vmemo && !(w->vmemo = tr_realloc(NULL, sizeof *w->vmemo << VMEMO_BITS)))
                 return -1;
@@ -793,147 +867,178 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     }
     /* One copy of the loop for each kind of corner (faces of their own or
      * vertices shared, a colour index or none). */
+    bool vimage = p->vimage;
     bool flat_colour = !vimage && look->flat && !(tx && tx->colour_is_texel);
+    colour_memo *memo = &p->memo;
     size_t kept;
-    if (flat_normals)
-        kept = vcolour ? index_faces(w, &ks, &memo, tris, nt, true, true, vimage, flat_colour)
-                       : index_faces(w, &ks, &memo, tris, nt, true, false, vimage, flat_colour);
+    if (p->flat_normals)
+        kept = p->vcolour ? index_faces(w, &ks, memo, tris, nt, true, true, vimage, flat_colour)
+                          : index_faces(w, &ks, memo, tris, nt, true, false, vimage, flat_colour);
     else
-        kept = vcolour ? index_faces(w, &ks, &memo, tris, nt, false, true, vimage, flat_colour)
-                       : index_faces(w, &ks, &memo, tris, nt, false, false, vimage, flat_colour);
+        kept = p->vcolour ? index_faces(w, &ks, memo, tris, nt, false, true, vimage, flat_colour)
+                          : index_faces(w, &ks, memo, tris, nt, false, false, vimage, flat_colour);
     if (kept == SIZE_MAX)
         return -1;
-    static const float white[4] = {1, 1, 1, 1};
-    if (((tx && tx->colour_is_texel) || vimage) && colour_index(w, &memo, white) == DEDUP_NONE)
-        return -1;
-    if (kept == 0)
-        return 0;
-    bool colour_list = w->col.count > 1;
-    size_t nleft = kept, nvg = 0; /* faces off the grid; uv of grid vertices */
-    if (vimage) {
-        if (vgrid) {
-            if (tr_grow((void **)&w->vcolp, &w->cap_vcolp, vd->count, sizeof *w->vcolp) != 0)
-                return -1;
-            for (size_t v = 0; v < vd->count; v++)
-                w->vcolp[v] = (const float *)(const void *)(dedup_key(vd, v) + 3 + (normals ? 3 : 0));
-            if (povgrid_build(&w->grid, w->faces, 6, kept, vd->count, w->vcolp) != 0)
-                return -1;
-            if (w->grid.ncells > 0) {
-                nleft = kept - w->grid.ncells;
-                nvg = vd->count;
-            }
-        }
-        for (;;) {
-            if (tr_grow((void **)&w->vcorner, &w->cap_vcorner, nleft * 3 + 1,
-                        sizeof *w->vcorner) != 0 ||
-                tr_grow((void **)&w->offg, &w->cap_offg, nleft + 1, sizeof *w->offg) != 0 ||
-                tr_grow((void **)&w->vuv, &w->cap_vuv, nvg * 2 + nleft * 6 + 2, sizeof *w->vuv) != 0)
-                return -1;
-            for (size_t i = 0, j = 0; i < kept; i++) {
-                if (nvg && w->grid.in_grid[i])
-                    continue;
-                if (nvg)
-                    w->offg[j] = (uint32_t)i;
-                const scene_tri *t = &tris[w->faces[i * 6 + 3]];
-                for (int k = 0; k < 3; k++)
-                    w->vcorner[3 * j + k] = verts[look->flat ? t->provoking : t->v[k]].color;
-                j++;
-            }
-            img = nvg ? povtex_colour_grid(&w->tex, &w->grid, nvg, w->vuv, w->vcorner, nleft,
-                                           w->vuv + 2 * nvg)
-                      : povtex_colours(&w->tex, w->vcorner, kept, w->vuv);
-            if (img != POVTEX_TOO_LARGE || !nvg)
-                break;
-            nvg = 0; /* the grid and the blocks past an image's size: blocks alone */
-            nleft = kept;
-        }
-        if (img < 0 || povtex_image_pigment(&w->tex, (size_t)img, true, pigment) == 0)
-            return -1;
-    }
+    p->kept = kept;
+    return 0;
+}
 
-    /* Pass 2: the text. Each entry is written into one reservation. */
-    bool special = povlight_special(look) || tx;
-    /* Layered textures (fog, DECAL of RGBA) enter texture_list by name only. */
-    bool named = look->fog || (tx && tx->env_mode == GL_DECAL && !tx->colour_is_texel);
-    if (named) {
-        if (look->fog && look->fog_own && !look->fog_fixed) { /* the fog coordinate's own plane */
-            mat4 fp;
-            memset(&fp, 0, sizeof fp);
-            for (int k = 0; k < 4; k++)
-                fp.m[k * 4 + 2] = look->fog_plane[k];
-            povlight_fog_declare(&w->light, ob, "rgl_fog", &fp, SCENE_FOG_ABS_Z);
-        } else if (look->fog) {
-            povfog_declare(&w->light, ob, "rgl_fog", to_eye, look);
-        }
-        for (size_t i = 0; i < w->col.count; i++) {
-            outbuf_puts(ob, "#declare rgl_t");
-            outbuf_u64(ob, i);
-            outbuf_putc(ob, '=');
-            put_surface(w, ob, look, tx, pigment, (const float *)(const void *)dedup_key(&w->col, i), 0);
-            outbuf_puts(ob, look->fog ? "texture{rgl_fog}\n" : "\n");
+/* Colours as an image (p->vimage): on a grid of the vertices where they
+ * are smooth, in blocks of three texels per face elsewhere. */
+static int part_colour_image(mesh2_part *p)
+{
+    povwriter *w = p->w;
+    const scene_look *look = p->look;
+    const scene_vertex *verts = p->verts;
+    const scene_tri *tris = p->tris;
+    dedup *vd = &w->vtx;
+    size_t kept = p->kept;
+    size_t nleft = kept, nvg = 0;
+    if (p->vgrid) {
+        if (tr_grow((void **)&w->vcolp, &w->cap_vcolp, vd->count, sizeof *w->vcolp) != 0)
+            return -1;
+        for (size_t v = 0; v < vd->count; v++)
+            w->vcolp[v] = (const float *)(const void *)(dedup_key(vd, v) + 3 + (p->normals ? 3 : 0));
+        if (povgrid_build(&w->grid, w->faces, 6, kept, vd->count, w->vcolp) != 0)
+            return -1;
+        if (w->grid.ncells > 0) {
+            nleft = kept - w->grid.ncells;
+            nvg = vd->count;
         }
     }
-    /* A few faces off the grid: their corners as vertices of their own,
-     * with their blocks' uv, so that every uv stays parallel to the
-     * vertices and no uv_indices are needed (one index triple a face
-     * costs more text than three more vertices for a twelfth of them). */
-    bool dup = nvg && nleft > 0 && nleft * 12 < kept;
-    size_t ndup = dup ? nleft * 3 : 0;
+    int img;
+    for (;;) {
+        if (tr_grow((void **)&w->vcorner, &w->cap_vcorner, nleft * 3 + 1,
+                    sizeof *w->vcorner) != 0 ||
+            tr_grow((void **)&w->offg, &w->cap_offg, nleft + 1, sizeof *w->offg) != 0 ||
+            tr_grow((void **)&w->vuv, &w->cap_vuv, nvg * 2 + nleft * 6 + 2, sizeof *w->vuv) != 0)
+            return -1;
+        for (size_t i = 0, j = 0; i < kept; i++) {
+            if (nvg && w->grid.in_grid[i])
+                continue;
+            if (nvg)
+                w->offg[j] = (uint32_t)i;
+            const scene_tri *t = &tris[w->faces[i * 6 + 3]];
+            for (int k = 0; k < 3; k++)
+                w->vcorner[3 * j + k] = verts[look->flat ? t->provoking : t->v[k]].color;
+            j++;
+        }
+        img = nvg ? povtex_colour_grid(&w->tex, &w->grid, nvg, w->vuv, w->vcorner, nleft,
+                                       w->vuv + 2 * nvg)
+                  : povtex_colours(&w->tex, w->vcorner, kept, w->vuv);
+        if (img != POVTEX_TOO_LARGE || !nvg)
+            break;
+        nvg = 0; /* the grid and the blocks past an image's size: blocks alone */
+        nleft = kept;
+    }
+    p->img = img;
+    p->nleft = nleft;
+    p->nvg = nvg;
+    if (img < 0 || povtex_image_pigment(&w->tex, (size_t)img, true, p->pigment) == 0)
+        return -1;
+    return 0;
+}
+
+/* Layered textures (fog, DECAL of RGBA) enter texture_list by name only:
+ * their declarations. */
+static void part_declare(mesh2_part *p)
+{
+    povwriter *w = p->w;
+    outbuf *ob = p->ob;
+    const scene_look *look = p->look;
+    if (look->fog && look->fog_own && !look->fog_fixed) { /* the fog coordinate's own plane */
+        mat4 fp;
+        memset(&fp, 0, sizeof fp);
+        for (int k = 0; k < 4; k++)
+            fp.m[k * 4 + 2] = look->fog_plane[k];
+        povlight_fog_declare(&w->light, ob, "rgl_fog", &fp, SCENE_FOG_ABS_Z);
+    } else if (look->fog) {
+        povfog_declare(&w->light, ob, "rgl_fog", p->to_eye, look);
+    }
+    for (size_t i = 0; i < w->col.count; i++) {
+        outbuf_puts(ob, "#declare rgl_t");
+        outbuf_u64(ob, i);
+        outbuf_putc(ob, '=');
+        put_surface(w, ob, look, p->tx, p->pigment,
+                    (const float *)(const void *)dedup_key(&w->col, i), 0);
+        outbuf_puts(ob, look->fog ? "texture{rgl_fog}\n" : "\n");
+    }
+}
+
+/* mesh2{ and its lists: vertices, normals, uv, the colours' textures. */
+static void part_vectors(mesh2_part *p)
+{
+    povwriter *w = p->w;
+    outbuf *ob = p->ob;
+    dedup *vd = &w->vtx;
     outbuf_puts(ob, "mesh2{\nvertex_vectors{");
-    put_vector_list(w, ob, vd, ndup, 0);
-    if (normals) {
+    put_vector_list(w, ob, vd, p->ndup, 0);
+    if (p->normals) {
         outbuf_puts(ob, "normal_vectors{");
-        put_vector_list(w, ob, vd, ndup, 3);
+        put_vector_list(w, ob, vd, p->ndup, 3);
     }
-    if (tx) { /* parallel to vertex_vectors: taken by face_indices */
+    if (p->tx) { /* parallel to vertex_vectors: taken by face_indices */
         outbuf_puts(ob, "uv_vectors{");
         outbuf_u64(ob, vd->count);
-        uint32_t off = 3 + (normals ? 3 : 0) + (vcolour ? 4 : 0);
+        uint32_t off = 3 + (p->normals ? 3 : 0) + (p->vcolour ? 4 : 0);
         for (size_t i = 0; i < vd->count; i++) {
             const float *uv = (const float *)(const void *)(dedup_key(vd, i) + off);
             put_uv(w, ob, uv[0], uv[1]);
         }
         outbuf_puts(ob, "}\n");
     }
-    if (vimage) { /* a vertex's texel on the grid, then three per face off it */
+    size_t nuv = p->nvg + p->nleft * 3;
+    if (p->vimage) { /* a vertex's texel on the grid, then three per face off it */
         outbuf_puts(ob, "uv_vectors{");
-        outbuf_u64(ob, nvg + nleft * 3);
-        for (size_t i = 0; i < nvg + nleft * 3; i++)
+        outbuf_u64(ob, nuv);
+        for (size_t i = 0; i < nuv; i++)
             put_uv(w, ob, w->vuv[2 * i], w->vuv[2 * i + 1]);
         outbuf_puts(ob, "}\n");
     }
-    if (colour_list) {
+    if (p->colour_list) {
         outbuf_puts(ob, "texture_list{");
         outbuf_u64(ob, w->col.count);
         for (size_t i = 0; i < w->col.count; i++) {
             const float *c = (const float *)(const void *)dedup_key(&w->col, i);
-            if (named) {
+            if (p->named) {
                 outbuf_puts(ob, ",\ntexture{rgl_t");
                 outbuf_u64(ob, i);
                 outbuf_putc(ob, '}');
-            } else if (special) {
+            } else if (p->special) {
                 outbuf_puts(ob, ",\n");
-                put_surface(w, ob, look, tx, pigment, c, 0);
+                put_surface(w, ob, p->look, p->tx, p->pigment, c, 0);
             } else {
                 PUT_ENTRY(w, ob, ",\ntexture{pigment{rgb<", c, ">}}");
             }
         }
         outbuf_puts(ob, "}\n");
     }
-    /* Faces as (v0, v2, v1): see the file comment. Without normal_indices,
-     * POV-Ray takes the normals by face_indices. */
-    static const int order[3] = {0, 2, 1};
-    size_t nindex = vd->count + ndup > nvg + nleft * 3 ? vd->count + ndup : nvg + nleft * 3;
+}
+
+/* Faces as (v0, v2, v1): see the file comment. Without normal_indices,
+ * POV-Ray takes the normals by face_indices. */
+static const int face_order[3] = {0, 2, 1};
+
+/* face_indices, and the colour image's uv_indices. */
+static int part_faces(mesh2_part *p)
+{
+    povwriter *w = p->w;
+    outbuf *ob = p->ob;
+    dedup *vd = &w->vtx;
+    const int *order = face_order;
+    size_t kept = p->kept, nvg = p->nvg, nleft = p->nleft;
+    bool dup = p->dup;
+    size_t nindex = vd->count + p->ndup > nvg + nleft * 3 ? vd->count + p->ndup : nvg + nleft * 3;
     if (index_text(w, nindex) != 0)
         return -1;
     outbuf_puts(ob, "face_indices{");
     outbuf_u64(ob, kept);
     for (size_t i = 0, j = 0; i < kept; i++) {
         const uint32_t *f = w->faces + i * 6;
-        char *p = outbuf_room(ob, 8 * 12);
-        if (!p)
+        char *r = outbuf_room(ob, 8 * 12);
+        if (!r)
             return -1;
-        char *q = p;
+        char *q = r;
         memcpy(q, ",\n<", 3);
         q += 3;
         size_t c0 = f[order[0]], c1 = f[order[1]], c2 = f[order[2]];
@@ -949,7 +1054,7 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
         *q++ = ',';
         q += put_index(w, q, c2);
         *q++ = '>';
-        if (colour_list) {
+        if (p->colour_list) {
             if (f[3] == f[4] && f[4] == f[5]) {
                 *q++ = ',';
                 q += put_index(w, q, f[3]);
@@ -960,17 +1065,17 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
                 }
             }
         }
-        outbuf_commit(ob, (size_t)(q - p));
+        outbuf_commit(ob, (size_t)(q - r));
     }
     outbuf_puts(ob, "}\n");
-    if (vimage && nleft > 0 && !dup) { /* else the uv go by face_indices */
+    if (p->vimage && nleft > 0 && !dup) { /* else the uv go by face_indices */
         outbuf_puts(ob, "uv_indices{");
         outbuf_u64(ob, kept);
         for (size_t i = 0, j = 0; i < kept; i++) {
-            char *p = outbuf_room(ob, 8 * 12);
-            if (!p)
+            char *r = outbuf_room(ob, 8 * 12);
+            if (!r)
                 return -1;
-            char *q = p;
+            char *q = r;
             *q++ = ',';
             *q++ = '\n';
             *q++ = '<';
@@ -981,19 +1086,33 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
                 *q++ = k < 2 ? ',' : '>';
             }
             j += !on_grid;
-            outbuf_commit(ob, (size_t)(q - p));
+            outbuf_commit(ob, (size_t)(q - r));
         }
         outbuf_puts(ob, "}\n");
     }
+    return 0;
+}
+
+/* The mesh's texture (when not per face), its back, its placement and
+ * what cuts it, and the closing brace. */
+static void part_finish(mesh2_part *p)
+{
+    static const float white[4] = {1, 1, 1, 1};
+    povwriter *w = p->w;
+    outbuf *ob = p->ob;
+    const scene *sc = p->sc;
+    const scene_look *look = p->look;
+    const scene_texture *tx = p->tx;
+    const char *pigment = p->pigment;
     const float *c0 = (const float *)(const void *)dedup_key(&w->col, 0);
-    if (vimage) { /* the image is the colour: white through GL's terms */
+    if (p->vimage) { /* the image is the colour: white through GL's terms */
         outbuf_puts(ob, "texture{");
         povlight_texture_mapped(&w->light, ob, look, white, 0, pigment);
         outbuf_puts(ob, "}\n");
-    } else if (!colour_list) {
-        if (named)
+    } else if (!p->colour_list) {
+        if (p->named)
             outbuf_puts(ob, "texture{rgl_t0}");
-        else if (special)
+        else if (p->special)
             put_surface(w, ob, look, tx, pigment, c0, 0);
         else
             povwrite_unlit_texture(ob, c0);
@@ -1005,7 +1124,7 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
          * comment); one texture for the whole mesh, in the first colour.
          * POV-Ray takes an interior_texture only beside a texture of the
          * whole mesh: with a texture_list, the front one in that colour. */
-        if (colour_list && !vimage) {
+        if (p->colour_list && !p->vimage) {
             outbuf_puts(ob, "texture{");
             povlight_texture_body(&w->light, ob, look, c0, 0);
             outbuf_puts(ob, "}\n");
@@ -1025,8 +1144,8 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
             outbuf_puts(ob, "}\n");
         }
     }
-    if (to_eye)
-        povwrite_put_matrix(ob, to_eye);
+    if (p->to_eye)
+        povwrite_put_matrix(ob, p->to_eye);
     if (sc && !w->in_proto) {
         povwrite_scissor(ob, sc, look); /* after the matrix: in eye space */
         povwrite_clip(ob, sc, look);
@@ -1036,6 +1155,56 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
     if (w->mesh_no_shadow)
         outbuf_puts(ob, "no_shadow\n");
     outbuf_puts(ob, "}\n");
+}
+
+/* A mesh2 of triangles over a vertex pool; to_eye NULL: the vertices are
+ * in eye space. Equal vertices (position, and normal and colour where
+ * they are written) are written once: one lookup per pool vertex. With
+ * normals, normal_vectors runs parallel to vertex_vectors and POV-Ray takes
+ * both by face_indices (no normal_indices). A lit flat face carries its
+ * provoking vertex's normal at its three corners (GL lights the whole face
+ * with it), so its corners are looked up per face. Colours are shared
+ * separately, as texture_list entries. Returns -1 on memory failure. */
+static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
+                            const scene_tri *tris, size_t nt, const scene_look *look,
+                            const mat4 *to_eye, const double *mt_map)
+{
+    static const float white[4] = {1, 1, 1, 1};
+    mesh2_part p = {.w = w, .ob = ob, .verts = verts, .tris = tris, .nt = nt, .look = look,
+                    .to_eye = to_eye, .mt_map = mt_map, .img = -1,
+                    .uv_scale = {1, 1}, .uv_off = {0, 0},
+                    .uvlo = {INFINITY, INFINITY}, .uvhi = {-INFINITY, -INFINITY},
+                    .pigment = "", .memo = {{0}, DEDUP_NONE}};
+    int rc = part_begin(&p);
+    if (rc != 0)
+        return rc > 0 ? 0 : -1;
+    if (part_pigment(&p) != 0 || part_turn(&p) != 0 || part_index(&p) != 0)
+        return -1;
+    const scene_texture *tx = p.tx;
+    if (((tx && tx->colour_is_texel) || p.vimage) && colour_index(w, &p.memo, white) == DEDUP_NONE)
+        return -1;
+    if (p.kept == 0)
+        return 0;
+    p.colour_list = w->col.count > 1;
+    p.nleft = p.kept;
+    if (p.vimage && part_colour_image(&p) != 0)
+        return -1;
+
+    /* Pass 2: the text. Each entry is written into one reservation. */
+    p.special = povlight_special(look) || tx;
+    p.named = look->fog || (tx && tx->env_mode == SCENE_ENV_DECAL && !tx->colour_is_texel);
+    if (p.named)
+        part_declare(&p);
+    /* A few faces off the grid: their corners as vertices of their own,
+     * with their blocks' uv, so that every uv stays parallel to the
+     * vertices and no uv_indices are needed (one index triple a face
+     * costs more text than three more vertices for a twelfth of them). */
+    p.dup = p.nvg && p.nleft > 0 && p.nleft * 12 < p.kept;
+    p.ndup = p.dup ? p.nleft * 3 : 0;
+    part_vectors(&p);
+    if (part_faces(&p) != 0)
+        return -1;
+    part_finish(&p);
     return 0;
 }
 

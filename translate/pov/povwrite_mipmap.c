@@ -1,5 +1,5 @@
 /* povwrite_mipmap.c: mipmapped minification (GL 2.1 3.8.8, 3.8.9) in
- * POV-Ray, which has no mipmaps (issue 14; docs/mapping.md section 27).
+ * POV-Ray, which has no mipmaps (issue 14; docs/mapping.md section 24).
  *
  * GL picks a level per fragment from lambda = log2(rho), rho the texel
  * footprint of one pixel: the larger of the lengths of d(u W, v H)/dx and
@@ -17,7 +17,6 @@
  */
 #include "povwrite_mipmap.h"
 
-#include <GL/gl.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -231,8 +230,8 @@ int povmip_pigment(outbuf *ob, povtex *pt, const scene *s, int32_t t, const povm
         /* Half way between two levels Mesa rounds up under
          * GL_*_MIPMAP_NEAREST (conf_tex_lod_bias: 2 + 1.5 takes level 4),
          * where the pigment_map's tie would take the lower. */
-        bool nearest = base->mip_filter == GL_NEAREST_MIPMAP_NEAREST ||
-                       base->mip_filter == GL_LINEAR_MIPMAP_NEAREST;
+        bool nearest = base->mip_filter == SCENE_MIP_NEAREST_MIPMAP_NEAREST ||
+                       base->mip_filter == SCENE_MIP_LINEAR_MIPMAP_NEAREST;
         if (nearest && fabs(l - floor(l) - 0.5) < 1e-6)
             l = fmin(hi, l + 1e-4);
         snprintf(lam, sizeof lam, "function{%s}", sdl_num(f[0], l / (n > 1 ? n - 1 : 1)));
@@ -241,10 +240,10 @@ int povmip_pigment(outbuf *ob, povtex *pt, const scene *s, int32_t t, const povm
     size_t len = 0;
     if (!sdl_put(buf, cap, &len, "uv_mapping %s pigment_map{", lam))
         return -1;
-    bool nearest_levels = base->mip_filter == GL_NEAREST_MIPMAP_NEAREST ||
-                          base->mip_filter == GL_LINEAR_MIPMAP_NEAREST;
-    bool linear_within = base->mip_filter == GL_LINEAR_MIPMAP_NEAREST ||
-                         base->mip_filter == GL_LINEAR_MIPMAP_LINEAR;
+    bool nearest_levels = base->mip_filter == SCENE_MIP_NEAREST_MIPMAP_NEAREST ||
+                          base->mip_filter == SCENE_MIP_LINEAR_MIPMAP_NEAREST;
+    bool linear_within = base->mip_filter == SCENE_MIP_LINEAR_MIPMAP_NEAREST ||
+                         base->mip_filter == SCENE_MIP_LINEAR_MIPMAP_LINEAR;
     double span = n > 1 ? n - 1 : 1;
     for (int k = 0; k < n; k++) {
         float sc[2], off[2];

@@ -1,5 +1,5 @@
 /* povwrite_mipmap.h: mipmapped minification in the POV-Ray writer
- * (issue 14; docs/mapping.md section 27). Private to the writer. */
+ * (issue 14; docs/mapping.md section 24). Private to the writer. */
 #ifndef RGL_POVWRITE_MIPMAP_H
 #define RGL_POVWRITE_MIPMAP_H
 

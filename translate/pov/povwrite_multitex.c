@@ -13,7 +13,6 @@
  */
 #include "povwrite_multitex.h"
 
-#include <GL/gl.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -82,7 +81,8 @@ size_t povmt_run(const scene_vertex *verts, const scene_tri *tris, size_t nt, do
 
 bool povmt_texel(const scene_texture *t0, const scene_texture *t1)
 {
-    return !(t0->env_mode == GL_MODULATE && !t0->colour_is_texel && t1->env_mode == GL_MODULATE);
+    return !(t0->env_mode == SCENE_ENV_MODULATE && !t0->colour_is_texel &&
+             t1->env_mode == SCENE_ENV_MODULATE);
 }
 
 /* The `image_map{...}` of image i: its pigment text past `uv_mapping `. */
@@ -107,17 +107,17 @@ static void env_channel(char *out, size_t cap, const scene_texture *t, int k, co
     const char *ch = chan[k];
     char g[NUMFMT_F32_ROOM + 3];
     switch (t->env_mode) {
-    case GL_ADD:
+    case SCENE_ENV_ADD:
         snprintf(out, cap, "min(1,%s+%s.%s)", e0, at, ch);
         break;
-    case GL_DECAL:
+    case SCENE_ENV_DECAL:
         snprintf(out, cap, "(%s*%s.transmit+%s.%s*(1-%s.transmit))", e0, at, at, ch, at);
         break;
-    case GL_BLEND:
+    case SCENE_ENV_BLEND:
         snprintf(out, cap, "(%s*(1-%s.%s)+%s*%s.%s)", e0, at, ch, sdl_num(g, t->env_color[k]), at,
                  ch);
         break;
-    case GL_REPLACE: /* of an alpha texture: the colour goes on */
+    case SCENE_ENV_REPLACE: /* of an alpha texture: the colour goes on */
         snprintf(out, cap, "%s", e0);
         break;
     default: /* GL_MODULATE */
@@ -170,10 +170,10 @@ int povmt_pigment(outbuf *ob, const povtex *pt, size_t img0, size_t img1,
         /* C0: unit 0's result, the fragment colour folded in when texel. */
         if (!texel || t0->colour_is_texel)
             snprintf(e0, sizeof e0, "%s.%s", at0, ch);
-        else if (t0->env_mode == GL_DECAL) /* RGBA: by the texel's alpha (1 - transmit) */
+        else if (t0->env_mode == SCENE_ENV_DECAL) /* RGBA: by the texel's alpha (1 - transmit) */
             snprintf(e0, sizeof e0, "(%s*%s.transmit+%s.%s*(1-%s.transmit))", sdl_num(f, cf[k]), at0,
                      at0, ch, at0);
-        else if (t0->env_mode == GL_REPLACE) /* of an alpha texture: the colour */
+        else if (t0->env_mode == SCENE_ENV_REPLACE) /* of an alpha texture: the colour */
             snprintf(e0, sizeof e0, "%s", sdl_num(f, cf[k]));
         else
             snprintf(e0, sizeof e0, "(%s*%s.%s)", sdl_num(f, cf[k]), at0, ch);
@@ -227,7 +227,7 @@ int povmt_env_lit(const scene_texture *t, unsigned id, const float tint[3], char
     char at[64], a[3][600], b[3][600], f[2][NUMFMT_F32_ROOM + 3];
     snprintf(at, sizeof at, "rgl_mt%ua(x,y,z)", id);
     for (int k = 0; k < 3; k++) {
-        if (t->env_mode == GL_BLEND) { /* Cf (1 - Ct) + Cc Ct */
+        if (t->env_mode == SCENE_ENV_BLEND) { /* Cf (1 - Ct) + Cc Ct */
             snprintf(a[k], sizeof a[k], "(1-%s.%s)*%s", at, chan[k], sdl_num(f[0], tint ? tint[k] : 1));
             snprintf(b[k], sizeof b[k], "%s*%s.%s", sdl_num(f[1], t->env_color[k]), at, chan[k]);
         } else { /* GL_ADD: Cf + Ct */
@@ -236,7 +236,7 @@ int povmt_env_lit(const scene_texture *t, unsigned id, const float tint[3], char
     }
     if (lit && lcap)
         lit[0] = '\0';
-    if (t->env_mode == GL_BLEND && channels(lit, lcap, a) != 0)
+    if (t->env_mode == SCENE_ENV_BLEND && channels(lit, lcap, a) != 0)
         return -1;
     return channels(env, ecap, b);
 }

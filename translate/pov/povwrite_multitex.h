@@ -38,7 +38,7 @@ int povmt_pigment(outbuf *ob, const povtex *pt, size_t img0, size_t img1,
                   const double map[6], const float cf[4], unsigned id, char *buf, size_t cap);
 
 /* One unit's GL_BLEND or GL_ADD over a colour (issue 14; docs/mapping.md
- * section 27): povmt_declare declares, before the mesh, a function
+ * section 24): povmt_declare declares, before the mesh, a function
  * rgl_mt<id>a sampling image img of pt; povmt_env_texture writes a whole
  * unlit texture{ } whose pigment is that environment applied to colour cf
  * per channel, as povmt_pigment's second unit. Both return 0, or -1 on

@@ -12,7 +12,6 @@
  */
 #include "povwrite_texture.h"
 
-#include <GL/gl.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -358,7 +357,7 @@ int povtex_alpha_pigment(outbuf *ob, povtex *pt, const scene *s, int32_t t, size
     double af = tx->alpha_uses_af ? tx->alpha_af : 1;
     double th = af > 0 ? 1 - tx->alpha_ref / af : 0;
     th = th < 0 ? 0 : th > 1 ? 1 : th;
-    bool below = tx->alpha_func == GL_GREATER || tx->alpha_func == GL_GEQUAL;
+    bool below = tx->alpha_func == SCENE_CMP_GREATER || tx->alpha_func == SCENE_CMP_GEQUAL;
     const char *a = below ? cb : "rgbt<1,1,1,1>", *b = below ? "rgbt<1,1,1,1>" : cb;
     char ts[NUMFMT_F32_ROOM];
     ts[numfmt_f32(ts, (float)th)] = '\0';

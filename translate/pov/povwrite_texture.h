@@ -34,7 +34,7 @@ typedef struct povtex_image {
 typedef struct povtex {
     povtex_image *imgs;
     size_t n, cap;
-    bool quick; /* image pigments carry quick_color, their mean (pov_options.quick) */
+    bool quick; /* image pigments carry quick_color, their mean (scene.options.quality below 6) */
 } povtex;
 
 void povtex_reset(povtex *pt);
@@ -48,7 +48,7 @@ void povtex_finish(povtex *pt);
  * texels' alpha (when some is below 1), which POV-Ray reads as transmit.
  * tint (NULL: none): the texels' colour is multiplied by it per channel
  * (0..1), GL_MODULATE's product with a coloured material made in the image
- * (docs/mapping.md section 27). With the texture's alpha test
+ * (docs/mapping.md section 24). With the texture's alpha test
  * (alpha_func), texels whose alpha (times alpha_af when alpha_uses_af)
  * fails are made fully transparent, the others keep their alpha
  * (keep_alpha) or become opaque. */
@@ -94,7 +94,7 @@ size_t povtex_declared(outbuf *ob, povtex *pt, size_t i, bool linear,
  * its index in pt, -1 when memory ran out. */
 int povtex_overlay(povtex *pt, const uint8_t *rgba, int w, int x0, int y0, int cw, int ch);
 
-/* Vertex colours as one image (docs/mapping.md section 12): per face a
+/* Vertex colours as one image (docs/mapping.md section 9): per face a
  * 2 x 2 texel block A, B, C, D = B + C - A, which bilinear filtering turns
  * into GL's linear interpolation of the corners' colours. A face's corners
  * c[0..2] are opaque RGB colours; the corner at A is chosen so that D

@@ -1,5 +1,5 @@
 /* povwrite_vgrid.h: a mesh's vertex colours laid on a grid of texels, one
- * texel per vertex (docs/mapping.md section 4, "Vertex colours").
+ * texel per vertex (docs/mapping.md section 6, "Vertex colours").
  *
  * Strips, quad strips and the grids they tessellate draw pairs of faces
  * that form quads. A quad whose fourth corner's colour is the other three's

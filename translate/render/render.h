@@ -63,6 +63,9 @@ typedef struct render_job {
     bool quiet;
 } render_job;
 
+/* The engine called name ("povray", "blender"), AUTO for another name. */
+render_engine render_engine_named(const char *name);
+
 /* Whether any render action is asked for. */
 bool render_wanted(const render_settings *r);
 

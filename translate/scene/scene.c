@@ -62,6 +62,7 @@ void scene_reset(scene *s)
     memset(&s->fog, 0, sizeof s->fog);
     s->have_camera = false;
     s->have_view = false;
+    memset(&s->options, 0, sizeof s->options);
     s->antialias_depth = 0;
     s->focal_blur = false;
     s->failed = false;

@@ -1,8 +1,12 @@
-/* scene.h: the neutral scene model between the interpreter and a writer.
+/* scene.h: the neutral scene model between the interpreter and the writers.
  *
- * The interpreter (interp*.c) fills a scene from GL commands; a writer
- * (povwrite.c) turns it into text. Nothing here knows SDL or GL calls: the
- * model speaks of cameras, meshes, lines, points, lights, in named spaces:
+ * The interpreter (gl/) fills a scene from GL commands; the look step
+ * (look/) edits it with raygl2pov's re-translation options (camera, size,
+ * added lights, scene.options); a writer turns it into files: pov/
+ * (POV-Ray SDL and .ini, povwrite.h) or gltf/ (binary glTF, gltfwrite.h),
+ * each reached by the driver through writer.h. Nothing here knows GL, SDL
+ * or glTF: the model speaks of cameras, meshes, lines, points, lights, in
+ * named spaces:
  *
  *   eye space     GL eye coordinates of the frame's camera: the camera sits
  *                 at the origin looking down -z, right-handed, as in GL.
@@ -101,7 +105,7 @@ enum {
     SCENE_ALPHA_OTHER = 3, /* GL_LESS, GL_LEQUAL, GL_EQUAL, GL_NOTEQUAL */
 };
 
-/* A run of triangles sharing transform and look: one mesh2 in SDL. */
+/* A run of triangles sharing transform and look: one mesh to a writer. */
 typedef struct scene_mesh {
     mat4 to_eye;   /* object -> eye space; identity when in_eye */
     bool in_eye;   /* vertices are already in eye space (projective input) */
@@ -127,7 +131,7 @@ typedef struct scene_instance {
  * p[0] to p[1], whose edges lie at p[i] +- half[i] (eye-space vectors
  * parallel to the image plane). The interpreter sizes and places the
  * strips of a line so that their image covers exactly the pixels GL
- * lights for it (docs/mapping.md section 5). */
+ * lights for it (docs/mapping.md section 7). */
 typedef struct scene_line {
     float p[2][3];
     float half[2][3];
@@ -153,7 +157,7 @@ typedef enum scene_camera_kind {
     SCENE_CAMERA_LOOKAT, /* rayglFrameBegin: location + look_at */
 } scene_camera_kind;
 
-/* The camera in eye space, in POV-Ray's terms but without its syntax: a ray
+/* The camera in eye space, as the rays it casts (a ray tracer's camera): a ray
  * for image coordinates (u, v) in [-1/2, 1/2]^2 (u right, v up) starts at
  * location (+ u*right + v*up for orthographic) and runs along
  * direction + u*right + v*up (perspective) or direction (orthographic).
@@ -189,6 +193,15 @@ typedef struct scene_light {
     float spot_exponent, spot_cutoff;   /* degrees */
     float attenuation[3];               /* constant, linear, quadratic */
     uint32_t set;        /* the light set it belongs to (not aimed lights) */
+    /* A light the look step added (look/look.c, raygl2pov --light): aimed,
+     * lighting everything. spot_radius: a spot's cone of full intensity
+     * (degrees; spot_cutoff is where it ends). An area light (area_samples
+     * set) is a POINT at its centre spreading over area_axis[0] and
+     * area_axis[1] (eye-space vectors across it), sampled n x m. */
+    bool added;
+    float spot_radius;
+    double area_axis[2][3];
+    int area_samples[2];
 } scene_light;
 
 /* Light sets (docs/mapping.md "Lights per object"): the GL lights of a lit
@@ -228,6 +241,22 @@ enum {
     SCENE_BLEND_INVISIBLE = 2, /* GL_ZERO, GL_ONE: nothing drawn */
 };
 
+/* What the look step asks of the picture beyond GL's (look/look.c:
+ * raygl2pov's ray-tracing and render options), for every writer to give as
+ * its format can. All zero: GL's look, as the writers give it by default. */
+typedef struct scene_options {
+    bool no_shadows;  /* nothing casts shadows */
+    float reflection; /* lit surfaces mirror their surroundings by this, 0 to 1 */
+    int area_lights;  /* N: the GL lights cast soft shadows, as discs of N x N
+                         samples; 0: as points */
+    bool radiosity;   /* global illumination: light bounces off surfaces */
+    bool antialias;   /* the image antialiased */
+    int quality;      /* the renderer's quality on POV-Ray's scale (1 to 11;
+                         -1: 0); 0: the renderer's default */
+    bool world_view;  /* the look's camera and lights were given in world
+                         coordinates: scene.view takes them to eye space */
+} scene_options;
+
 /* The eye distance c that glFog's factor takes (NV_fog_distance). */
 enum scene_fog_distance {
     SCENE_FOG_ABS_Z = 0, /* |z_eye|: GL_EYE_PLANE_ABSOLUTE_NV, Mesa's default */
@@ -235,13 +264,52 @@ enum scene_fog_distance {
     SCENE_FOG_RADIAL = 2 /* sqrt(x^2 + y^2 + z^2) in eye space: GL_EYE_RADIAL_NV */
 };
 
-/* glFog, in eye space: GL's fog factor of the eye distance (distance). */
+/* glFog, in eye space: GL's fog factor of the eye distance c (distance). */
+enum {
+    SCENE_FOG_LINEAR = 1, /* GL_LINEAR: (end - c) / (end - start) */
+    SCENE_FOG_EXP,        /* GL_EXP: e^-(density c) */
+    SCENE_FOG_EXP2,       /* GL_EXP2: e^-((density c)^2) */
+};
+
 typedef struct scene_fog {
     bool on;
-    int mode; /* GL_LINEAR, GL_EXP, GL_EXP2 */
+    int mode; /* SCENE_FOG_* */
     float density, start, end, color[4];
     int distance; /* enum scene_fog_distance */
 } scene_fog;
+
+/* How a texture's colour and the fragment's combine (glTexEnv's
+ * GL_TEXTURE_ENV_MODE; GL 2.1 3.8.13, table 3.22); 0: none given. */
+enum {
+    SCENE_ENV_MODULATE = 1, /* GL_MODULATE: their product */
+    SCENE_ENV_REPLACE,      /* GL_REPLACE: the texel's */
+    SCENE_ENV_DECAL,        /* GL_DECAL: the texel over the fragment by its alpha */
+    SCENE_ENV_BLEND,        /* GL_BLEND: the fragment's and env_color mixed by the texel */
+    SCENE_ENV_ADD,          /* GL_ADD: their sum */
+};
+
+/* A comparison of the alpha test (glAlphaFunc, GL 1.x 4.1.4): the fragment
+ * passes when its alpha compares so with the reference; 0: no test. */
+enum {
+    SCENE_CMP_NEVER = 1,
+    SCENE_CMP_LESS,
+    SCENE_CMP_EQUAL,
+    SCENE_CMP_LEQUAL,
+    SCENE_CMP_GREATER,
+    SCENE_CMP_NOTEQUAL,
+    SCENE_CMP_GEQUAL,
+    SCENE_CMP_ALWAYS,
+};
+
+/* Mipmapped minification (GL's GL_<texel>_MIPMAP_<level> filters, GL 2.1
+ * 3.8.8): nearest or linear texels within a level, from the nearest level
+ * or blended between the two nearest; 0: not mipmapped. */
+enum {
+    SCENE_MIP_NEAREST_MIPMAP_NEAREST = 1,
+    SCENE_MIP_LINEAR_MIPMAP_NEAREST,
+    SCENE_MIP_NEAREST_MIPMAP_LINEAR,
+    SCENE_MIP_LINEAR_MIPMAP_LINEAR,
+};
 
 /* An image the scene maps (issue 5): level 0 of a GL texture as the GL
  * texels it holds (RGBA, 8 bits, bottom row first), with how GL samples it.
@@ -259,18 +327,18 @@ typedef struct scene_texture {
                                 outside the texture, under either filter */
     float border[4];         /* GL_TEXTURE_BORDER_COLOR */
     bool linear;             /* magnification GL_LINEAR */
-    uint32_t env_mode;       /* GL_MODULATE, GL_REPLACE, GL_DECAL, GL_BLEND */
+    uint32_t env_mode;       /* SCENE_ENV_* */
     float env_color[4];
     bool colour_is_texel;    /* the texel's colour replaces the fragment's
                                 (REPLACE or DECAL of a colour format) */
     /* The alpha test per texel (interp_alphatest.c), when the texel's
-     * alpha counts: GL_NEVER..GL_NOTEQUAL, 0 for none; the fragment's
-     * alpha is the texel's times the vertex alpha when alpha_uses_af. */
+     * alpha counts: SCENE_CMP_*, 0 for none; the fragment's alpha is the
+     * texel's times the vertex alpha when alpha_uses_af. */
     uint32_t alpha_func;
     float alpha_ref, alpha_af; /* alpha_af: the draw's vertex alpha */
     bool alpha_uses_af;
     /* Mipmapped minification (issue 14): the minification filter when it
-     * mipmaps (GL_*_MIPMAP_*, else 0), the scene texture of the next level
+     * mipmaps (SCENE_MIP_*, else 0), the scene texture of the next level
      * (-1 at the last; each level an image of its own, same sampling), and
      * the LOD clamps (GL_TEXTURE_MIN_LOD, MAX_LOD, relative to this level). */
     uint32_t mip_filter;
@@ -288,28 +356,30 @@ typedef struct scene_texture {
  * rather than texel by texel in the image. */
 static inline bool scene_alpha_crisp(const scene_texture *t)
 {
-    return t->linear && !t->mip_filter && !t->cube && t->alpha_func >= 0x0201 && t->alpha_func <= 0x0206 &&
-           t->alpha_func != 0x0202 && t->alpha_func != 0x0205;
+    return t->linear && !t->mip_filter && !t->cube && t->alpha_func >= SCENE_CMP_LESS &&
+           t->alpha_func <= SCENE_CMP_GEQUAL && t->alpha_func != SCENE_CMP_EQUAL &&
+           t->alpha_func != SCENE_CMP_NOTEQUAL;
 }
 
-/* Whether alpha a passes the alpha test func (GL_NEVER..GL_ALWAYS)
- * against ref (GL 1.x 4.1.4). */
+/* Whether alpha a passes the alpha test func (SCENE_CMP_*; 0 and ALWAYS
+ * pass everything) against ref (GL 1.x 4.1.4). */
 static inline bool scene_alpha_pass(uint32_t func, float a, float ref)
 {
     switch (func) {
-    case 0x0200: return false;    /* GL_NEVER */
-    case 0x0201: return a < ref;  /* GL_LESS */
-    case 0x0202: return a == ref; /* GL_EQUAL */
-    case 0x0203: return a <= ref; /* GL_LEQUAL */
-    case 0x0204: return a > ref;  /* GL_GREATER */
-    case 0x0205: return a != ref; /* GL_NOTEQUAL */
-    case 0x0206: return a >= ref; /* GL_GEQUAL */
-    default: return true;         /* GL_ALWAYS */
+    case SCENE_CMP_NEVER: return false;
+    case SCENE_CMP_LESS: return a < ref;
+    case SCENE_CMP_EQUAL: return a == ref;
+    case SCENE_CMP_LEQUAL: return a <= ref;
+    case SCENE_CMP_GREATER: return a > ref;
+    case SCENE_CMP_NOTEQUAL: return a != ref;
+    case SCENE_CMP_GEQUAL: return a >= ref;
+    default: return true;
     }
 }
 
-/* A GLU/GLUT solid with an exact POV-Ray counterpart (issue 5), in its
- * object space (GL's axis conventions), placed by to_eye:
+/* A GLU/GLUT solid, which a writer draws as the exact shape (POV-Ray's
+ * sphere, box, cone, torus, disc, bicubic patches) or tessellates (glTF),
+ * in its object space (GL's axis conventions), placed by to_eye:
  *   SPHERE  params[0] radius, centred at the origin
  *   BOX     corners -params[0..2] .. +params[0..2]
  *   CONE    base radius params[0] at z=0, top radius params[1] at
@@ -381,6 +451,7 @@ typedef struct scene {
     bool have_view;
     mat4 view;
     double view_look_at[3]; /* that gluLookAt's centre, world coordinates */
+    scene_options options; /* the look step's (look/look.c) */
 
     /* Bitmaps and pixel rectangles (interp_pixels.c): one RGBA image of
      * overlay_w x overlay_h pixels, the camera's viewport, bottom row
@@ -393,8 +464,8 @@ typedef struct scene {
     bool overlay_at_depth;
     double overlay_plane[4];
     /* What the frame's accumulation-buffer passes add to the one pass the
-     * scene holds (interp_accum.c): POV-Ray's antialiasing at this depth
-     * (0: none), and focal blur around focal_point (eye space) through a
+     * scene holds (interp_accum.c): antialiasing by supersampling to this
+     * depth (0: none), and focal blur around focal_point (eye space) through a
      * lens of this diameter. */
     int antialias_depth;
     bool focal_blur;
@@ -516,8 +587,8 @@ const double (*scene_clip_set(const scene *s, uint32_t id, uint32_t *n))[4];
  * Handles any projection with a centre (perspective, off-axis frustum,
  * rotated or skewed) and any parallel one (orthographic). Returns false,
  * leaving a default orthographic camera of the identity projection, when
- * the matrix is singular, not finite, or projective in a way no POV-Ray
- * camera reproduces. */
+ * the matrix is singular, not finite, or projective in a way no camera of
+ * rays (scene_camera) reproduces. */
 bool scene_camera_from_gl(scene_camera *cam, const mat4 *proj, const int viewport[4]);
 
 /* The camera the paper's rayglFrameBegin asked for: at loc, looking at look,

@@ -1,5 +1,6 @@
 /* teapot_mesh.c: the solid teapot as one closed-seam triangle mesh
- * (teapot_mesh.h), for the POV-Ray writer.
+ * (teapot_mesh.h), for a writer that draws the solid teapot as a mesh
+ * (the POV-Ray writer: its bicubic patches let rays through the seams).
  *
  * Each of the 32 patches is cut into a regular grid and every grid point
  * evaluated on the Bezier surface with its analytic normal. Points that

@@ -127,8 +127,10 @@ static void check_glb(const char *t, size_t len)
 static void translate_all(rgl_reader *r)
 {
     translator *t = translator_create(r, NULL);
+    povwriter *pw = povwriter_create();
     outbuf ob;
-    if (!t || outbuf_init(&ob, 1 << 16, NULL, NULL) != 0) {
+    if (!t || !pw || outbuf_init(&ob, 1 << 16, NULL, NULL) != 0) {
+        povwriter_destroy(pw);
         translator_destroy(t);
         return;
     }
@@ -145,10 +147,10 @@ static void translate_all(rgl_reader *r)
         if (translator_build(t, i, &log, &res) != RGL_OK)
             continue;
         pov_frame_info info = {"frame.pov", "fuzz.raygl", i, res.info.stream, res.info.number,
-                               res.frame_name, NULL, NULL};
+                               res.frame_name, NULL};
         ob.len = 0;
         ob.failed = false;
-        if (translator_write_pov(t, &ob, &info) == 0)
+        if (povwriter_scene(pw, &ob, translator_scene(t), &info) == 0)
             check_sdl(ob.buf, ob.len);
         ob.len = 0;
         ob.failed = false;
@@ -160,6 +162,7 @@ static void translate_all(rgl_reader *r)
             check(memchr(ob.buf, 0, ob.len) == NULL, "NUL in ini", ob.buf, ob.len);
     }
     outbuf_finish(&ob);
+    povwriter_destroy(pw);
     translator_destroy(t);
 }
 

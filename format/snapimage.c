@@ -1,4 +1,4 @@
-/* snapshot.c: the images of @Snapshot commands (format 1.2): checking the
+/* snapimage.c: the images of @Snapshot commands (format 1.2): checking the
  * command, inflating its resource, and compressing an image for the
  * recorder. zlib does the deflate work; everything the trace says is
  * checked before it sizes an allocation (docs/format.md, section 3.1).

@@ -164,7 +164,4 @@ void diag_drop(diag_log *log, diag_kind kind);
 /* Adds every count and kept message of src to dst (dst first). */
 void diag_merge(diag_log *dst, const diag_log *src);
 
-/* Total count over the non-note kinds. */
-uint64_t diag_error_total(const diag_log *log);
-
 #endif

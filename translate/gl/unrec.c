@@ -1,6 +1,6 @@
-/* unrecorded.c: tables of unrecorded calls and what each can change
- * (unrecorded.h, format/unrecorded.def). */
-#include "unrecorded.h"
+/* unrec.c: tables of unrecorded calls and what each can change
+ * (unrec.h, format/unrecorded.def). */
+#include "unrec.h"
 
 #include <inttypes.h>
 #include <stdbool.h>

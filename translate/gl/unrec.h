@@ -1,10 +1,10 @@
-/* unrecorded.h: the calls a trace says were not recorded (@NotRecorded,
+/* unrec.h: the calls a trace says were not recorded (@NotRecorded,
  * format 1.3), counted by entry point, and what each can change in the
  * picture (format/unrecorded.def).
  *
  * The interpreter fills one table per frame (interp_unrecorded.c), with the
  * frame's uses: what it draws that an unrecorded call can act on (blended
- * draws, textures, ...). The CLI adds the frames' tables up in frame order
+ * draws, textures, ...). The driver adds the frames' tables up in frame order
  * into one for the trace and prints it once, so the report does not depend
  * on -j: a name is reported when its effect can change a frame from its
  * first frame on (it "matters"); the others only when verbose. A table is bounded
@@ -12,8 +12,8 @@
  * [A-Za-z0-9_] (any other byte shows as '?'), and names beyond the first
  * UNREC_MAX_NAMES are counted together as others.
  */
-#ifndef RGL_TR_UNRECORDED_H
-#define RGL_TR_UNRECORDED_H
+#ifndef RGL_UNREC_H
+#define RGL_UNREC_H
 
 #include <stdbool.h>
 #include <stddef.h>

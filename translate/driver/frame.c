@@ -10,13 +10,9 @@
 #include "frame.h"
 
 #include "frame_front.h"
-#include "pngout.h"
-#include "povwrite_texture.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "interp.h"
 #include "talloc.h"
@@ -39,7 +35,6 @@ struct translator {
     pthread_mutex_t *lock;
     scene scene;
     interp *ip;
-    povwriter *writer;
     unsigned budget_shift;
     cursor *cursors;
     size_t ncursors, cap_cursors;
@@ -58,8 +53,7 @@ translator *translator_create(rgl_reader *reader, pthread_mutex_t *reader_lock)
     t->lock = reader_lock;
     scene_init(&t->scene);
     t->ip = interp_create(&t->scene, NULL);
-    t->writer = povwriter_create();
-    if (!t->ip || !t->writer) {
+    if (!t->ip) {
         translator_destroy(t);
         return NULL;
     }
@@ -90,7 +84,6 @@ void translator_destroy(translator *t)
     for (size_t i = 0; i < t->ncursors; i++)
         interp_destroy(t->cursors[i].ip);
     tr_free(t->cursors);
-    povwriter_destroy(t->writer);
     interp_destroy(t->ip);
     scene_finish(&t->scene);
     tr_free(t);
@@ -98,13 +91,10 @@ void translator_destroy(translator *t)
 
 const scene *translator_scene(const translator *t) { return &t->scene; }
 
-int translator_trim(translator *t)
+void translator_trim(translator *t)
 {
     scene_finish(&t->scene);
     scene_init(&t->scene);
-    povwriter_destroy(t->writer);
-    t->writer = povwriter_create();
-    return t->writer ? 0 : -1;
 }
 
 void translator_set_heavy(translator *t, void (*fn)(void *ctx), void *ctx)
@@ -402,37 +392,4 @@ rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result
     if (out->status == RGL_OK && t->scene.failed)
         out->status = RGL_E_NOMEM;
     return out->status;
-}
-
-int translator_write_pov(translator *t, outbuf *ob, const pov_frame_info *info)
-{
-    return povwriter_scene(t->writer, ob, &t->scene, info);
-}
-
-int translator_write_images(translator *t, const char *dir, char *failed, size_t cap)
-{
-    const povtex_image *im = povwriter_image(t->writer, 0);
-    if (!im)
-        return 0;
-    /* A folder of their own: deleting or re-rendering the frames' PNGs
-     * never takes a scene's textures with them. */
-    size_t dl = strlen(dir);
-    char *sub = tr_realloc(NULL, dl + sizeof "/" POVTEX_DIR);
-    if (!sub) {
-        errno = ENOMEM;
-        return -1;
-    }
-    snprintf(sub, dl + sizeof "/" POVTEX_DIR, "%s/%s", dir, POVTEX_DIR);
-    int rc = mkdir(sub, 0777) == 0 || errno == EEXIST ? 0 : -1;
-    if (rc != 0)
-        snprintf(failed, cap, "%s", sub);
-    for (size_t i = 0; rc == 0 && (im = povwriter_image(t->writer, i)) != NULL; i++) {
-        rc = pngout_place(sub, im->name, im->rgba, im->width, im->height, im->alpha);
-        if (rc != 0)
-            snprintf(failed, cap, "%s/%s", sub, im->name);
-    }
-    int e = errno;
-    tr_free(sub);
-    errno = e;
-    return rc;
 }

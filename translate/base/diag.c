@@ -90,11 +90,3 @@ void diag_merge(diag_log *dst, const diag_log *src)
         }
     }
 }
-
-uint64_t diag_error_total(const diag_log *log)
-{
-    uint64_t n = 0;
-    for (int k = 0; k < DIAG_FIRST_NOTE; k++)
-        n += log->e[k].count;
-    return n;
-}

@@ -1,11 +1,9 @@
-/* naming.c: output file names (naming.h) and --name-pattern's setter. */
+/* naming.c: output file names (naming.h). */
 #include "naming.h"
 
 #include <stdbool.h>
 #include <stdio.h>
 #include <string.h>
-
-#include "options.h"
 
 void name_sanitize(const char *name, char *out, size_t cap)
 {
@@ -112,23 +110,8 @@ void name_stem(const char *pattern, const name_vars *v, char *out, size_t cap)
         snprintf(out, cap, "frame-%05llu", (unsigned long long)v->index);
 }
 
-bool opt_set_name_pattern(options *o, const char *v, const opt_ctx *ctx, opt_err *err)
+bool name_is_placeholder(const char *p)
 {
-    if (!*v)
-        return opt_fail(err, "%s: empty pattern", ctx->option);
-    for (const char *p = v; *p; p++) {
-        if (*p == '/' || *p == '\\')
-            return opt_fail(err, "%s '%s': a name, not a path: no '%c'", ctx->option, v, *p);
-        if (*p == '{') {
-            char buf[8];
-            if (!placeholder(p, NULL, buf, sizeof buf))
-                return opt_fail(err, "%s '%s': unknown placeholder at '%s' (use {index}, "
-                                "{index:N}, {stream}, {number}, {name} or {trace})",
-                                ctx->option, v, p);
-        }
-    }
-    if (strchr(v, '{') == NULL)
-        return opt_fail(err, "%s '%s': every frame would get the same name; use {index}",
-                        ctx->option, v);
-    return (o->name_pattern = opt_strdup(o, v, err)) != NULL;
+    char buf[8];
+    return placeholder(p, NULL, buf, sizeof buf) != 0;
 }

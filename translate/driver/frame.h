@@ -1,12 +1,13 @@
-/* frame.h: translating one frame of a trace: state, commands, scene, SDL.
+/* frame.h: building the scene of one frame of a trace: state, commands.
  *
  * Frames are independent. To translate frame i the translator starts from
  * GL's initial state, or, for a frame flagged RGL_FRAME_STATE_CARRIED, from
  * the state its stream's earlier frames left (replayed with no scene: only
  * their state-setting effects count); then it replays the frame's state
  * snapshot resource when it has one, then its commands, into a scene. The
- * CLI runs one translator per worker thread; the fuzz target and the tests
- * use one directly.
+ * driver runs one translator per worker thread (run.c); the fuzz target
+ * and the tests use one directly. Writing the scene is a writer's
+ * (writer.h).
  */
 #ifndef RGL_FRAME_H
 #define RGL_FRAME_H
@@ -18,8 +19,6 @@
 #include "diag.h"
 #include "format.h"
 #include "interp.h"
-#include "outbuf.h"
-#include "povwrite.h"
 #include "scene.h"
 
 typedef struct translator translator;
@@ -37,7 +36,7 @@ typedef struct frame_result {
     const char *frame_name; /* rayglFrameBegin's name (owned by the translator,
                                valid until the next call), or NULL */
     const struct unrec_table *unrecorded; /* the frame's calls not recorded
-                               (unrecorded.h; owned by the translator, valid
+                               (unrec.h; owned by the translator, valid
                                until the next call) */
     /* A frame built (RGL_OK) may still be incomplete: cut by the frame
      * budget (interp_frame_cut's line), or drawn without parts the damaged
@@ -75,24 +74,14 @@ void translator_set_pov(translator *t, bool on);
  * when its frame turns heavy, and may block. */
 void translator_set_heavy(translator *t, void (*fn)(void *ctx), void *ctx);
 
-/* Gives back the storage the scene and the writer keep for the next frame
- * (after a heavy frame, so that its memory does not stay with the worker).
- * Returns 0, or -1 when the writer cannot be made again (no memory). */
-int translator_trim(translator *t);
+/* Gives back the storage the scene keeps for the next frame (after a
+ * heavy frame, so that its memory does not stay with the worker). */
+void translator_trim(translator *t);
 
 /* The scene the last translator_build made. */
 const scene *translator_scene(const translator *t);
 
 /* The same, for changes before it is written (raygl2pov's overrides). */
 scene *translator_scene_edit(translator *t);
-
-/* Writes that scene as SDL into ob. Returns 0 or -1 (memory, or the sink). */
-int translator_write_pov(translator *t, outbuf *ob, const pov_frame_info *info);
-
-/* Writes the texture images that scene refers to into dir/textures
- * (POVTEX_DIR, made when missing; existing images are kept: pngout.h).
- * Returns 0, or -1 with errno set and failed (cap bytes) naming the image
- * or the folder that could not be written. */
-int translator_write_images(translator *t, const char *dir, char *failed, size_t cap);
 
 #endif

@@ -8,6 +8,7 @@
 #ifndef RGL_NAMING_H
 #define RGL_NAMING_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -23,6 +24,9 @@ typedef struct name_vars {
 /* The stem of a frame into out (cap >= NAME_MAX_STEM + 1). pattern NULL:
  * the default naming. Never empty. */
 void name_stem(const char *pattern, const name_vars *v, char *out, size_t cap);
+
+/* Whether p starts with a placeholder a pattern may hold ("{index:5}"). */
+bool name_is_placeholder(const char *p);
 
 /* Reduces name (its last path component, without ".pov") to a plain file
  * stem; empty when nothing usable is left. */

@@ -1,4 +1,5 @@
-/* render_main.c: raygl-render, rendering a folder raygl2pov wrote.
+/* raygl_render.c: raygl-render, rendering a folder raygl2pov wrote: the
+ * command line of the render driver (render.h).
  *
  *   raygl-render DIR [--frames LIST] [-j N] [--video FILE] [--slurm|--submit]
  *                [--sshloginfile F] [--engine povray|blender] [--samples N]

@@ -1,4 +1,4 @@
-/* scene.h: the README example's scene, drawn with the raygl* twins of the
+/* example_scene.h: the README example's scene, drawn with the raygl* twins of the
  * GL calls: a cube, a sphere and a cone on a checkered floor, lit by one
  * directional light and GL's default global ambient. GL draws no shadows;
  * the ray-traced frame has them (raygl2pov's default). examples/cube.c
