@@ -184,10 +184,23 @@ struct interp {
     size_t cap_fogz;
     bool fog_split;        /* the primitive's triangles behind the eye get their own fog */
 
-    /* The frame's camera: fixed by the first draw (or at the frame's end). */
+    /* The frame's camera: fixed by the first draw (or at the frame's end).
+     * own_*: the GL projection and viewport of the camera's own draws;
+     * cam_*: the picture's, the window the frame stands for (the same,
+     * or own_proj widened to the union of the frame's viewports, own_vp's
+     * pixels where GL put them: interp_proj.c). */
     bool camera_fixed;
+    mat4 own_proj;
+    int32_t own_vp[4];
     mat4 cam_proj;
     int32_t cam_viewport[4];
+    /* The union of the viewports of the draws and colour clears since the
+     * last full colour clear (win_n: 0 none yet), and the one a second
+     * translation is given. */
+    int32_t win[4];
+    int win_n;
+    bool win_preset;
+    int32_t win_preset_rect[4];
     mat4 cam_from_ndc; /* inverse of (viewport-scaled) camera projection */
     bool cam_from_ndc_ok;
 
@@ -576,6 +589,11 @@ void interp_proj_own_draw(interp *ip);
 void interp_proj_depth_clear(interp *ip);
 void interp_proj_vote(interp *ip, GLenum mode);
 void interp_proj_layer(interp *ip, mat4 *w);
+/* Adds the current viewport to the frame's window (a draw's, a colour
+ * clear's); widen_camera makes the picture's camera the preset window's
+ * (interp_fix_camera). */
+void interp_proj_window_add(interp *ip);
+void interp_proj_widen_camera(interp *ip);
 /* Maps the window depth of w (the draw's projection and viewport) into the
  * camera's: the draw's glDepthRange and its depth epoch. False when that
  * is the identity. */

@@ -25,8 +25,8 @@ void interp_pixdepth_raster(interp *ip, const double clip[4])
     if (!ip->camera_fixed || ip->frame_begin || !(clip[3] > 0))
         return;
     const mat4 *proj = interp_matrix(ip, INTERP_PROJ);
-    if (memcmp(proj->m, ip->cam_proj.m, sizeof proj->m) != 0 ||
-        memcmp(a->viewport.rect, ip->cam_viewport, sizeof ip->cam_viewport) != 0)
+    if (memcmp(proj->m, ip->own_proj.m, sizeof proj->m) != 0 ||
+        memcmp(a->viewport.rect, ip->own_vp, sizeof ip->own_vp) != 0)
         return;
     a->current.raster_ndc_z = clip[2] / clip[3];
     a->current.raster_in_camera = true;

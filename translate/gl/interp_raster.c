@@ -26,8 +26,9 @@ void interp_fix_camera(interp *ip)
     /* A second translation of a frame of several projections: the 3D
      * scene's camera, chosen by the first (interp_proj.c). */
     const mat4 *proj = ip->cam_preset ? &ip->cam_preset_proj : interp_matrix(ip, INTERP_PROJ);
-    memcpy(ip->cam_viewport, ip->cam_preset ? ip->cam_preset_vp : a->viewport.rect,
-           sizeof ip->cam_viewport);
+    memcpy(ip->own_vp, ip->cam_preset ? ip->cam_preset_vp : a->viewport.rect, sizeof ip->own_vp);
+    ip->own_proj = *proj;
+    memcpy(ip->cam_viewport, ip->own_vp, sizeof ip->cam_viewport);
     ip->cam_proj = *proj;
 
     if (ip->frame_begin) {
@@ -41,9 +42,10 @@ void interp_fix_camera(interp *ip)
         ip->cam_from_ndc_ok = false;
         return;
     }
-    if (!scene_camera_from_gl(&s->camera, proj, ip->cam_viewport))
+    interp_proj_widen_camera(ip);
+    if (!scene_camera_from_gl(&s->camera, &ip->cam_proj, ip->cam_viewport))
         interp_note(ip, DIAG_NOTE_CAMERA);
-    mat4 w = interp_window_matrix(proj, ip->cam_viewport);
+    mat4 w = interp_window_matrix(&ip->cam_proj, ip->cam_viewport);
     ip->cam_from_ndc_ok = mat4_invert(&w, &ip->cam_from_ndc);
 }
 
@@ -200,11 +202,14 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
         return;
     if (!cm[0] || !cm[1] || !cm[2])
         interp_note(ip, DIAG_NOTE_COLOR_MASK); /* cleared whole */
-    if (a->caps[INTERP_CAP_SCISSOR_TEST] && interp_scissor_clear(ip))
+    if (a->caps[INTERP_CAP_SCISSOR_TEST] && interp_scissor_clear(ip)) {
+        interp_proj_window_add(ip);
         return; /* a partial clear: what is drawn stays */
+    }
     if (interp_accum_clear(ip))
         return;
     interp_proj_clear(ip);
+    interp_proj_window_add(ip);
     /* Everything drawn so far is gone; the next draw fixes the camera anew. */
     interp_budget_peak(ip);
     scene_clear_geometry(ip->scene);
