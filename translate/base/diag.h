@@ -104,7 +104,9 @@
     X(NOTE_STENCIL_TWO_SIDE, "approximated: two-sided stencil (glStencilFuncSeparate, glStencilOpSeparate, glStencilMaskSeparate) testing or writing the front and back faces of one draw differently: the whole draw takes the front faces' stencil state") \
     X(NOTE_DRAW_BUFFER_DEPTH, "approximated: draws into a colour buffer the frame does not show (glDrawBuffer) are left out, but they wrote depth, which hides in GL what is drawn behind them later") \
     X(NOTE_LIT_OUTLINE, "approximated: lit faces outlined (glPolygonMode GL_LINE or GL_POINT) under two-sided lighting take their material's colour unlit, where OpenGL draws them in their vertices' lit colours") \
-    X(NOTE_QUALITY, "approximated with --quality below 6: POV-Ray computes no image maps or transmitted light there: textured surfaces show their texture's mean colour, translucent ones and translucent bitmap or pixel-rectangle pixels hide what is behind them")
+    X(NOTE_QUALITY, "approximated with --quality below 6: POV-Ray computes no image maps or transmitted light there: textured surfaces show their texture's mean colour, translucent ones and translucent bitmap or pixel-rectangle pixels hide what is behind them") \
+    X(NOTE_GLTF_BLEND_ADD, "approximated in glTF: additive blending (all of the colour behind kept), which glTF's alpha blending cannot do, is written with an opacity of 1/128: what it adds nearly vanishes") \
+    X(NOTE_GLTF_PIXELS, "left out of glTF: bitmaps and pixel rectangles (glBitmap, glDrawPixels, glCopyPixels), which a glTF file cannot hold")
 
 typedef enum diag_kind {
 #define DIAG_ENUM_(name, text) DIAG_##name,

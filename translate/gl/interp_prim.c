@@ -323,7 +323,7 @@ static void map_blend(interp *ip, float c[4])
     if (cover < BLEND_MIN_COVER) {
         cover = BLEND_MIN_COVER;
         if (ws > 0)
-            interp_note(ip, DIAG_NOTE_BLEND_ADD);
+            interp_note_pov(ip, DIAG_NOTE_BLEND_ADD, DIAG_NOTE_GLTF_BLEND_ADD);
     }
     for (int i = 0; i < 3; i++)
         c[i] = (float)(c[i] * ws / cover);

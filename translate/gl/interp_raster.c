@@ -62,6 +62,7 @@ void interp_begin_frame(interp *ip)
     ip->shape_facets = 0;
     ip->segments = 0;
     ip->pixels_mark = 0;
+    ip->raster_pre = ip->raster_pre_mixed = false;
     ip->nclear_rects = 0;
     interp_proj_begin_frame(ip);
     interp_zorder_begin_frame(ip);
