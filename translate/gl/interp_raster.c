@@ -185,8 +185,12 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
         mask &= ~(uint32_t)GL_COLOR_BUFFER_BIT;
     if (!a->depth.mask)
         mask &= ~(uint32_t)GL_DEPTH_BUFFER_BIT;
+    /* A depth clear the scissor box cuts starts no part of the frame in
+     * front of the earlier ones: outside the box GL keeps their depth
+     * (conf_scissor_clear_depth; NOTE_DEPTH_CLEAR says what differs). */
     if ((mask & GL_DEPTH_BUFFER_BIT) && !(mask & GL_COLOR_BUFFER_BIT) &&
-        ip->st.render_mode == GL_RENDER)
+        ip->st.render_mode == GL_RENDER &&
+        !(a->caps[INTERP_CAP_SCISSOR_TEST] && interp_scissor_cuts(ip, a->viewport.rect)))
         interp_proj_depth_clear(ip);
     if ((mask & GL_DEPTH_BUFFER_BIT) && ip->st.render_mode == GL_RENDER && ip->st.a.depth.mask &&
         !((mask & GL_COLOR_BUFFER_BIT) && !interp_scissor_cuts(ip, ip->st.a.viewport.rect)))
@@ -202,7 +206,7 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
     if (!(mask & GL_COLOR_BUFFER_BIT) || !ip->scene || ip->st.render_mode != GL_RENDER)
         return;
     if (!cm[0] || !cm[1] || !cm[2])
-        interp_note(ip, DIAG_NOTE_COLOR_MASK); /* cleared whole */
+        interp_note(ip, DIAG_NOTE_CLEAR_COLOR_MASK); /* cleared whole */
     if (a->caps[INTERP_CAP_SCISSOR_TEST] && interp_scissor_clear(ip)) {
         interp_proj_window_add(ip);
         return; /* a partial clear: what is drawn stays */
