@@ -558,23 +558,34 @@ static void test_mip_notes(void)
 }
 
 /* Clears that say what differs: a colour clear under a partial colour
- * mask clears every channel (its own note, not the draws' colour mask);
+ * mask over flat colours recolours them (no note), a scissored one
+ * clears every channel (its own note, not the draws' colour mask);
  * a scissored depth clear between overlapping depth-tested quads keeps
  * the earlier in front inside its box (before: the later was put in
  * front everywhere, outside the box too, with no note). */
 static void test_clear_notes(void)
 {
     seq f;
-    seq_init(&f);
-    ortho(&f);
-    quad(&f, 0.1, 0.1, 0.6, 0.6, 0, 1, 0, 0);
-    CMD(&f, ColorMask, 1, 0, 1, 1);
-    CMD(&f, Clear, GL_COLOR_BUFFER_BIT);
-    CMD(&f, ColorMask, 1, 1, 1, 1);
-    quad(&f, 0.3, 0.3, 0.9, 0.9, 0, 0, 1, 0);
-    build(&f, true);
-    expect("partial colour mask clear", DIAG_NOTE_CLEAR_COLOR_MASK, 1, 0);
-    expect("partial colour mask clear (draws)", DIAG_NOTE_COLOR_MASK, 0, 0);
+    for (int scissored = 0; scissored < 2; scissored++) {
+        seq_init(&f);
+        ortho(&f);
+        CMD(&f, Clear, GL_COLOR_BUFFER_BIT);
+        quad(&f, 0.1, 0.1, 0.6, 0.6, 0, 1, 0, 0);
+        CMD(&f, ColorMask, 1, 0, 1, 1);
+        if (scissored) {
+            CMD(&f, Enable, GL_SCISSOR_TEST);
+            CMD(&f, Scissor, 16, 0, 16, 64);
+        }
+        CMD(&f, Clear, GL_COLOR_BUFFER_BIT);
+        CMD(&f, Disable, GL_SCISSOR_TEST);
+        CMD(&f, ColorMask, 1, 1, 1, 1);
+        quad(&f, 0.3, 0.3, 0.9, 0.9, 0, 0, 1, 0);
+        build(&f, true);
+        /* flat colours recoloured exactly; a scissored one is cleared whole */
+        expect(scissored ? "scissored partial colour mask clear" : "partial colour mask clear",
+               DIAG_NOTE_CLEAR_COLOR_MASK, (uint64_t)scissored, 0);
+        expect("partial colour mask clear (draws)", DIAG_NOTE_COLOR_MASK, 0, 0);
+    }
 
     for (int scissored = 0; scissored < 2; scissored++) {
         seq_init(&f);

@@ -822,6 +822,13 @@ bool interp_draw_buffer_hidden(const interp *ip);
  * no colour (every colour channel masked) and is left out, with a note
  * when it writes depth; notes a partial colour mask. */
 bool interp_masks_hide(interp *ip);
+/* A colour clear (not scissored) under a partial colour mask over a frame
+ * whose content so far is flat colours (unlit, untextured, opaque,
+ * unfogged triangles, lines, points and pixels): the channels the mask
+ * lets through take the clear colour in all of it and in the background,
+ * the others keep theirs, as GL's pixels do. False (nothing changed) for
+ * any other content. */
+bool interp_masks_clear(interp *ip);
 
 /* Line stipple (interp_stipple.c). interp_stipple_on: lines drawn now are
  * stippled. interp_stipple_dashes: the dashes GL draws of window segment

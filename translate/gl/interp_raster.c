@@ -205,6 +205,10 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
     }
     if (!(mask & GL_COLOR_BUFFER_BIT) || !ip->scene || ip->st.render_mode != GL_RENDER)
         return;
+    if ((!cm[0] || !cm[1] || !cm[2]) &&
+        !(a->caps[INTERP_CAP_SCISSOR_TEST] && interp_scissor_cuts(ip, a->viewport.rect)) &&
+        !(mask & GL_DEPTH_BUFFER_BIT) && interp_masks_clear(ip))
+        return; /* the unmasked channels of what is there recoloured */
     if (!cm[0] || !cm[1] || !cm[2])
         interp_note(ip, DIAG_NOTE_CLEAR_COLOR_MASK); /* cleared whole */
     if (a->caps[INTERP_CAP_SCISSOR_TEST] && interp_scissor_clear(ip)) {
