@@ -23,6 +23,13 @@
  * background too (the first translation sees the clear, the second
  * places it). Draw order within a layer is the painter's
  * (docs/mapping.md "Projections, depth and draw order").
+ *
+ * The picture is the window the frame stands for: the union of the
+ * viewports of its draws and colour clears since its last full colour
+ * clear. When that is wider than the camera's viewport (a split screen),
+ * the frame is translated again with it preset and the camera's
+ * projection widened to it (interp_proj_widen_camera); the camera's own
+ * draws stay its own (own_proj, own_vp).
  */
 #include "interp_internal.h"
 
