@@ -1539,13 +1539,14 @@ static void test_read_uses(void)
 }
 
 /* The image is in front of everything: a note says when GL would hide
- * some of it (the depth test on, or geometry drawn after it). */
+ * some of it (the depth test on, or geometry drawn after it over its
+ * pixels: k 1; k 3 draws it after but elsewhere, quiet). */
 static void test_pixels_notes(void)
 {
     static const uint8_t bits[1] = {0x80};
     px_bytes[0] = bits;
     px_sizes[0] = 1;
-    for (int k = 0; k < 3; k++) {
+    for (int k = 0; k < 4; k++) {
         interp *ip = fresh();
         interp_set_resources(ip, px_fetch, NULL);
         seq s;
@@ -1559,18 +1560,19 @@ static void test_pixels_notes(void)
             CMD(&s, Vertex2f, 0, 1);
             CMD0(&s, End);
         }
-        CMD(&s, Bitmap, 1, 1, 0, 0, 0, 0, 1);
-        if (k == 1) {
+        CMD(&s, Bitmap, 1, 1, 0, 0, 0, 0, 1); /* the window's pixel (0, 0) */
+        if (k == 1 || k == 3) {
+            double o = k == 1 ? -1 : 0; /* over the pixel, or the upper right quarter */
             CMD(&s, Begin, GL_TRIANGLES);
-            CMD(&s, Vertex2f, 0, 0);
-            CMD(&s, Vertex2f, 1, 0);
-            CMD(&s, Vertex2f, 0, 1);
+            CMD(&s, Vertex2f, o, o);
+            CMD(&s, Vertex2f, 1, o);
+            CMD(&s, Vertex2f, o, 1);
             CMD0(&s, End);
         }
         run(ip, &s);
         interp_end_frame(ip);
         CHECK(sc.overlay != NULL);
-        CHECK(count(DIAG_NOTE_PIXELS_DEPTH) == (k == 0 ? 0u : 1u));
+        CHECK(count(DIAG_NOTE_PIXELS_DEPTH) == (k == 0 || k == 3 ? 0u : 1u));
         interp_destroy(ip);
     }
 }

@@ -459,10 +459,158 @@ static void test_other_notes(void)
     expect("index evaluator", DIAG_NOTE_EVAL_INDEX, 0, 1);
 }
 
+/* A 16 x 16 mipmapped texture (GL_GENERATE_MIPMAP, of resource 1) under
+ * a perspective camera, then draw(f). */
+static void mip_frame(seq *f, GLenum filter)
+{
+    perspective(f);
+    CMD(f, BindTexture, GL_TEXTURE_2D, 1);
+    CMD(f, TexParameteri, GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
+    CMD(f, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    CMD(f, TexImage2D, GL_TEXTURE_2D, 0, GL_RGB, 16, 16, 0, GL_RGB, GL_UNSIGNED_BYTE, 1);
+    CMD(f, TexEnvi, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    CMD(f, Enable, GL_TEXTURE_2D);
+}
+
+/* Translates frame f (freed) with the texels of mip_frame as resource 1. */
+static void build_mip(seq *f)
+{
+    static uint8_t px[16 * 16 * 3];
+    for (size_t i = 0; i < sizeof px; i++)
+        px[i] = (uint8_t)(i * 37 % 251);
+    trace t;
+    trace_init(&t);
+    uint32_t id = 0;
+    CHECK(rgl_trace_builder_resource(t.b, RGL_RES_BYTES, px, sizeof px, &id) == RGL_OK);
+    CHECK_EQ_U(id, 1);
+    trace_frame(&t, 0, 0, 0, 0, f);
+    trace_finish(&t);
+    seq_free(f);
+    rgl_reader *r;
+    CHECK(rgl_reader_open_memory(t.data, t.size, &r, NULL) == RGL_OK);
+    translator *tr = translator_create(r, NULL);
+    CHECK(tr != NULL);
+    diag_clear(&dlog);
+    frame_result res;
+    if (tr)
+        CHECK(translator_build(tr, 0, &dlog, &res) == RGL_OK);
+    translator_destroy(tr);
+    rgl_reader_destroy(r);
+    trace_free(&t);
+}
+
+/* NOTE_TEX_MIPMAP: not logged on a receding flat quad (the writer's
+ * planar run: GL's lambda per pixel) nor on a quad facing the camera
+ * (one level); said on a folded strip, each triangle on a plane of its
+ * own and drawn with one lambda, and in a display list (the writer draws
+ * list copies with the base level). */
+static void test_mip_notes(void)
+{
+    seq f;
+    seq_init(&f);
+    mip_frame(&f, GL_LINEAR_MIPMAP_LINEAR);
+    CMD(&f, Begin, GL_QUADS);
+    CMD(&f, TexCoord2f, 0, 0);
+    CMD(&f, Vertex3f, -1, -1, -1.5);
+    CMD(&f, TexCoord2f, 8, 0);
+    CMD(&f, Vertex3f, 1, -1, -1.5);
+    CMD(&f, TexCoord2f, 8, 8);
+    CMD(&f, Vertex3f, 1, -1, -30);
+    CMD(&f, TexCoord2f, 0, 8);
+    CMD(&f, Vertex3f, -1, -1, -30);
+    CMD0(&f, End);
+    build_mip(&f);
+    expect("mipmapped floor", DIAG_NOTE_TEX_MIPMAP, 0, 0);
+
+    seq_init(&f);
+    mip_frame(&f, GL_NEAREST_MIPMAP_NEAREST);
+    CMD(&f, Begin, GL_QUADS);
+    CMD(&f, TexCoord2f, 0, 0);
+    CMD(&f, Vertex3f, -1, -1, -3);
+    CMD(&f, TexCoord2f, 8, 0);
+    CMD(&f, Vertex3f, 1, -1, -3);
+    CMD(&f, TexCoord2f, 8, 8);
+    CMD(&f, Vertex3f, 1, 1, -3);
+    CMD(&f, TexCoord2f, 0, 8);
+    CMD(&f, Vertex3f, -1, 1, -3);
+    CMD0(&f, End);
+    build_mip(&f);
+    expect("mipmapped quad facing the camera", DIAG_NOTE_TEX_MIPMAP, 0, 0);
+
+    for (int list = 0; list < 2; list++) {
+        seq_init(&f);
+        mip_frame(&f, GL_LINEAR_MIPMAP_LINEAR);
+        if (list)
+            CMD(&f, NewList, 1, GL_COMPILE_AND_EXECUTE);
+        CMD(&f, Begin, GL_TRIANGLE_STRIP);
+        for (int i = 0; i < 8; i++) {
+            double x = -1 + 0.25 * i;
+            CMD(&f, TexCoord2f, i * 2.0, (i % 2) * 4.0);
+            CMD(&f, Vertex3f, x, (i % 2) ? 0.5 : -0.5, -2 - 3.0 * (i % 3) - 0.5 * i);
+        }
+        CMD0(&f, End);
+        if (list)
+            CMD0(&f, EndList);
+        build_mip(&f);
+        expect(list ? "mipmapped strip in a list" : "mipmapped folded strip", DIAG_NOTE_TEX_MIPMAP,
+               1, 0);
+    }
+}
+
+/* Clears that say what differs: a colour clear under a partial colour
+ * mask over flat colours recolours them (no note), a scissored one
+ * clears every channel (its own note, not the draws' colour mask);
+ * a scissored depth clear between overlapping depth-tested quads keeps
+ * the earlier in front inside its box (before: the later was put in
+ * front everywhere, outside the box too, with no note). */
+static void test_clear_notes(void)
+{
+    seq f;
+    for (int scissored = 0; scissored < 2; scissored++) {
+        seq_init(&f);
+        ortho(&f);
+        CMD(&f, Clear, GL_COLOR_BUFFER_BIT);
+        quad(&f, 0.1, 0.1, 0.6, 0.6, 0, 1, 0, 0);
+        CMD(&f, ColorMask, 1, 0, 1, 1);
+        if (scissored) {
+            CMD(&f, Enable, GL_SCISSOR_TEST);
+            CMD(&f, Scissor, 16, 0, 16, 64);
+        }
+        CMD(&f, Clear, GL_COLOR_BUFFER_BIT);
+        CMD(&f, Disable, GL_SCISSOR_TEST);
+        CMD(&f, ColorMask, 1, 1, 1, 1);
+        quad(&f, 0.3, 0.3, 0.9, 0.9, 0, 0, 1, 0);
+        build(&f, true);
+        /* flat colours recoloured exactly; a scissored one is cleared whole */
+        expect(scissored ? "scissored partial colour mask clear" : "partial colour mask clear",
+               DIAG_NOTE_CLEAR_COLOR_MASK, (uint64_t)scissored, 0);
+        expect("partial colour mask clear (draws)", DIAG_NOTE_COLOR_MASK, 0, 0);
+    }
+
+    for (int scissored = 0; scissored < 2; scissored++) {
+        seq_init(&f);
+        ortho(&f);
+        CMD(&f, Enable, GL_DEPTH_TEST);
+        quad(&f, 0.1, 0.1, 0.9, 0.9, 0.5, 1, 0, 0); /* near (ndc z -0.5) */
+        if (scissored) {
+            CMD(&f, Enable, GL_SCISSOR_TEST);
+            CMD(&f, Scissor, 16, 0, 16, 64);
+        }
+        CMD(&f, Clear, GL_DEPTH_BUFFER_BIT);
+        CMD(&f, Disable, GL_SCISSOR_TEST);
+        quad(&f, 0.2, 0.2, 0.8, 0.8, -0.5, 0, 1, 0); /* far, drawn over where cleared */
+        build(&f, true);
+        expect(scissored ? "scissored depth clear" : "depth clear", DIAG_NOTE_DEPTH_CLEAR,
+               scissored ? 1 : 0, 0);
+    }
+}
+
 int main(void)
 {
     test_depth_order();
     test_other_notes();
+    test_mip_notes();
+    test_clear_notes();
     if (check_failures)
         fprintf(stderr, "test_notes: %d failure(s)\n", check_failures);
     return check_failures != 0;

@@ -93,7 +93,7 @@
     X(NOTE_FOG_BEHIND, "approximated: fogged primitives reaching behind the eye, which OpenGL fogs by |eye z| interpolated across the near-plane cut (denser near the eye than their distance)") \
     X(NOTE_RELIT_SPECULAR, "approximated: textured faces under GL_SEPARATE_SPECULAR_COLOR with a highlight, lit past white or showing their back under one-sided lighting, lit per pixel (unclamped, normals toward the viewer)") \
     X(NOTE_LOGIC_OP, "approximated: logic ops (glLogicOp) that read the colour buffer, of draws over anything but the clear colour, that cover a pixel twice or vary in colour over a face, or of lit, textured or fogged draws, are drawn as GL_COPY") \
-    X(NOTE_BLEND_DEST, "approximated: blending whose result OpenGL takes from the colour behind in a way transmit and filter cannot show (GL_MIN, GL_MAX, destination factors, channel factors of the colour behind) is drawn as GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA except over the clear colour") \
+    X(NOTE_BLEND_DEST, "approximated: blending whose result OpenGL takes from the colour behind in a way transmit and filter cannot show (GL_MIN, GL_MAX, GL_FUNC_SUBTRACT and GL_FUNC_REVERSE_SUBTRACT over a colour, destination factors, channel factors such as GL_CONSTANT_COLOR) is drawn as GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA except over the clear colour") \
     X(NOTE_DEPTH_CLEAR, "approximated: a depth-buffer clear (glClear GL_DEPTH_BUFFER_BIT, scissored or not) between draws that overlap on screen: later draws behind earlier ones stay hidden, where OpenGL draws them over") \
     X(NOTE_ACCUM_CLEAR, "approximated: the accumulation buffer's clear value other than zero (glClearAccum), accumulation clears and operations cut by the scissor box, and passes onto a buffer the frame did not clear: the returned passes are drawn as if accumulated onto zero over the whole window") \
     X(NOTE_POINT_TEXTURE, "not translated: textured smooth points without GL_POINT_SPRITE (drawn untextured discs)") \
@@ -104,7 +104,10 @@
     X(NOTE_STENCIL_TWO_SIDE, "approximated: two-sided stencil (glStencilFuncSeparate, glStencilOpSeparate, glStencilMaskSeparate) testing or writing the front and back faces of one draw differently: the whole draw takes the front faces' stencil state") \
     X(NOTE_DRAW_BUFFER_DEPTH, "approximated: draws into a colour buffer the frame does not show (glDrawBuffer) are left out, but they wrote depth, which hides in GL what is drawn behind them later") \
     X(NOTE_LIT_OUTLINE, "approximated: lit faces outlined (glPolygonMode GL_LINE or GL_POINT) under two-sided lighting take their material's colour unlit, where OpenGL draws them in their vertices' lit colours") \
-    X(NOTE_QUALITY, "approximated with --quality below 6: POV-Ray computes no image maps or transmitted light there: textured surfaces show their texture's mean colour, translucent ones and translucent bitmap or pixel-rectangle pixels hide what is behind them")
+    X(NOTE_QUALITY, "approximated with --quality below 6: POV-Ray computes no image maps or transmitted light there: textured surfaces show their texture's mean colour, translucent ones and translucent bitmap or pixel-rectangle pixels hide what is behind them") \
+    X(NOTE_GLTF_BLEND_ADD, "approximated in glTF: additive blending (all of the colour behind kept), which glTF's alpha blending cannot do, is written with an opacity of 1/128: what it adds nearly vanishes") \
+    X(NOTE_CLEAR_COLOR_MASK, "approximated: a colour clear under a partial glColorMask clears every channel, where OpenGL keeps the masked channels of what was drawn before it and of the background") \
+    X(NOTE_GLTF_PIXELS, "left out of glTF: bitmaps and pixel rectangles (glBitmap, glDrawPixels, glCopyPixels), which a glTF file cannot hold")
 
 typedef enum diag_kind {
 #define DIAG_ENUM_(name, text) DIAG_##name,

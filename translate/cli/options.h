@@ -39,6 +39,7 @@ typedef struct options {
     int jobs; /* 0 until opt_finish_parse: one per core */
     bool dump, quiet, verbose, help, version;
     bool vertex_lighting; /* --vertex-lighting (interp_gouraud.c) */
+    bool preview;         /* --preview set look's quality and no_shadows */
     const writer_def *writer; /* --format (driver_writers): NULL until parsing sets it */
     const char *name_pattern; /* NULL: frame-NNNNN, or rayglFrameBegin's name */
     look_settings look;       /* look.h; its options: --no-shadows ... (options_light.c) */

@@ -158,6 +158,7 @@ bool opt_set_preview(options *o, const char *v, const opt_ctx *ctx, opt_err *err
     bool on;
     if (!opt_bool(v, &on, ctx, err))
         return false;
+    o->preview = on;
     if (on) { /* quality 4: no reflections, media, image maps; no shadows here */
         o->look.options.quality = 4;
         o->look.options.no_shadows = true;

@@ -64,6 +64,8 @@ static const char *pov_only_option(const options *o)
         return "--engine povray";
     if (o->look.options.antialias)
         return "--antialias";
+    if (o->preview)
+        return "--preview"; /* what the user typed, not the --quality it sets */
     if (o->look.options.quality)
         return "--quality";
     if (o->look.options.no_shadows)

@@ -280,7 +280,7 @@ static void front_replay(translator *t, interp *ip, size_t first, size_t i, uint
  * commands (out->status says why). */
 static bool build_pass(translator *t, size_t i, diag_log *log, frame_result *out,
                        const mat4 *preset, const int32_t *preset_vp, bool back_cleared,
-                       uint32_t epochs)
+                       uint32_t epochs, const int32_t *window)
 {
     interp *ip = t->ip;
     const rgl_frame_info *fi = &out->info;
@@ -310,6 +310,8 @@ static bool build_pass(translator *t, size_t i, diag_log *log, frame_result *out
     if (preset)
         interp_proj_preset(ip, preset, preset_vp, back_cleared);
     interp_proj_preset_epochs(ip, epochs);
+    if (window)
+        interp_proj_preset_window(ip, window);
     if (first < i) {
         interp_set_frame(ip, i, NULL);
         front_replay(t, ip, first, i, fi->stream, log);
@@ -356,23 +358,25 @@ rgl_status translator_build(translator *t, size_t i, diag_log *log, frame_result
     out->status = get_frame(t, i, &out->info, &out->error);
     if (out->status != RGL_OK)
         return out->status;
-    if (!build_pass(t, i, log, out, NULL, NULL, false, 0))
+    if (!build_pass(t, i, log, out, NULL, NULL, false, 0, NULL))
         return out->status;
     /* A frame of several projections whose first draw was not the 3D
      * scene's: once more with the 3D scene's camera; a frame with
-     * depth-only clears between draws: once more with their count
+     * depth-only clears between draws: once more with their count; a
+     * frame of several viewports: once more with the window they make
      * (interp_proj.c). */
     mat4 proj;
-    int32_t vp[4];
+    int32_t vp[4], win[4];
     bool back_cleared = false;
     if (out->status == RGL_OK && !t->scene.failed) {
         bool chosen = interp_proj_choice(ip, &proj, vp, &back_cleared);
         uint32_t epochs = interp_proj_depth_epochs(ip, chosen ? &proj : NULL, chosen ? vp : NULL);
-        if (chosen || epochs) {
+        bool widen = interp_proj_window(ip, win);
+        if (chosen || epochs || widen) {
             if (log)
                 diag_clear(log);
             if (!build_pass(t, i, log, out, chosen ? &proj : NULL, chosen ? vp : NULL,
-                            back_cleared, epochs))
+                            back_cleared, epochs, widen ? win : NULL))
                 return out->status;
         }
     }

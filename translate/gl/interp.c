@@ -705,6 +705,17 @@ void interp_note_held(interp *ip, diag_kind kind, const char *why)
     diag_add_held(ip->log, kind, prefix, why);
 }
 
+void interp_note_pov(interp *ip, diag_kind kind, diag_kind gltf)
+{
+    if (!ip->not_pov) {
+        interp_note(ip, kind);
+        return;
+    }
+    interp_note_held(ip, kind, "written as glTF, not for POV-Ray");
+    if (gltf != DIAG_COUNT)
+        interp_note(ip, gltf);
+}
+
 void interp_bad_enum(interp *ip, const char *what, uint32_t value)
 {
     interp_diag(ip, DIAG_GL_INVALID_ENUM, "invalid %s 0x%x", what, value);

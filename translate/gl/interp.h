@@ -435,6 +435,14 @@ void interp_proj_preset(interp *ip, const mat4 *proj, const int32_t vp[4], bool 
  * first draw fixed): when not 0, translate the frame again with them
  * preset (after interp_begin_frame), so each part lies in front of the
  * ones before. */
+/* The window the frame stands for, when it is not the picture's camera
+ * viewport: the union of the viewports of the frame's draws and colour
+ * clears after its last full colour clear (a split screen, a HUD in a
+ * corner; a trace holds no window size). Then translate the frame again
+ * with it preset (after interp_begin_frame): the camera widened so that
+ * each viewport's picture lands where GL put it (interp_proj.c). */
+bool interp_proj_window(const interp *ip, int32_t win[4]);
+void interp_proj_preset_window(interp *ip, const int32_t win[4]);
 uint32_t interp_proj_depth_epochs(const interp *ip, const mat4 *proj, const int32_t vp[4]);
 void interp_proj_preset_epochs(interp *ip, uint32_t n);
 

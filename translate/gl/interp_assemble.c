@@ -778,6 +778,8 @@ static void end_primitive_body(interp *ip)
     ip->prim_tex_from1 = false;
     gl_material vmat_saved[2];
     bool vmat = interp_vmat_end(ip, n, vmat_saved);
+    ip->mip_pending = false;
+    ip->mip_defer = true;
     scene_look look = interp_current_look(ip);
     if (vmat)
         interp_vmat_restore(ip, vmat_saved);
@@ -835,6 +837,7 @@ static void end_primitive_body(interp *ip)
         }
     }
     interp_relit_done(ip);
+    interp_tex_mip_check(ip, first_tri);
     if (look.lit)
         interp_gouraud_check(ip, first_tri);
     if (a->polygon.mode[0] == GL_LINE || a->polygon.mode[1] == GL_LINE)

@@ -374,7 +374,7 @@ void interp_blend_end(interp *ip, uint32_t n)
                 bool adds = !(fabs(e[0]) < EPS && fabs(e[1]) < EPS && fabs(e[2]) < EPS);
                 if (t > 1 - 1.0 / 128 && adds) {
                     t = 1 - 1.0 / 128; /* all of what is behind kept: see map_blend */
-                    interp_note(ip, DIAG_NOTE_BLEND_ADD);
+                    interp_note_pov(ip, DIAG_NOTE_BLEND_ADD, DIAG_NOTE_GLTF_BLEND_ADD);
                 }
                 all_invisible = all_invisible && !adds && t >= 1 - EPS;
                 for (int i = 0; i < 3; i++)

@@ -49,6 +49,7 @@ struct interp_dest {
     } dclear[DEST_DEPTH_CLEARS];
     uint32_t ndclear;
     bool dclear_lost; /* more than DEST_DEPTH_CLEARS, or one not placed */
+    double item[6];   /* one item's box being made */
 };
 
 void interp_dest_free(interp *ip)
@@ -155,6 +156,97 @@ static void solid_bounds(const scene_solid *so, double lo[3], double hi[3])
     lo[2] = z0, hi[2] = z1;
 }
 
+/* Scratch box for one item, emptied (the dest's, one at a time). */
+static double *b6(interp *ip)
+{
+    box_empty(ip->dest->item);
+    return ip->dest->item;
+}
+
+/* Keeps an item's box; NULL: it could not be placed. */
+static void keep_item(interp *ip, const double *b)
+{
+    if (!b)
+        ip->dest->all = true;
+    else
+        rect_keep(ip, b);
+}
+
+/* The image boxes of line, point, solid and list instance i, into the
+ * empty box b; NULL when a corner cannot be placed. */
+static const double *line_box(const scene *s, size_t i, double b[6])
+{
+    const scene_line *l = &s->lines[i];
+    for (int e = 0; e < 2; e++)
+        for (int sg = -1; sg <= 1; sg += 2) {
+            double p[3];
+            for (int k = 0; k < 3; k++)
+                p[k] = (double)l->p[e][k] + sg * (double)l->half[e][k];
+            if (!box_eye(&s->camera, b, p))
+                return NULL;
+        }
+    return b;
+}
+
+static const double *point_box(const scene *s, size_t i, double b[6])
+{
+    const scene_point *pt = &s->points[i];
+    for (int c = 0; c < 4; c++) {
+        double p[3];
+        for (int k = 0; k < 3; k++)
+            p[k] = (double)pt->p[k] + (c & 1 ? 1 : -1) * (double)pt->right[k] +
+                   (c & 2 ? 1 : -1) * (double)pt->up[k];
+        if (!box_eye(&s->camera, b, p))
+            return NULL;
+    }
+    return b;
+}
+
+static const double *solid_box(const scene *s, size_t i, double b[6])
+{
+    const scene_solid *so = &s->solids[i];
+    double lo[3], hi[3];
+    solid_bounds(so, lo, hi);
+    for (int c = 0; c < 8; c++) {
+        float v[3] = {(float)(c & 1 ? hi[0] : lo[0]), (float)(c & 2 ? hi[1] : lo[1]),
+                      (float)(c & 4 ? hi[2] : lo[2])};
+        double e[3];
+        if (!to_eye3(&so->to_eye, false, v, e) || !box_eye(&s->camera, b, e))
+            return NULL;
+    }
+    return b;
+}
+
+static const double *instance_box(const scene *s, size_t i, double b[6])
+{
+    const scene_instance *in = &s->instances[i];
+    if (in->proto >= s->nprotos)
+        return NULL;
+    const scene_proto *pr = &s->protos[in->proto];
+    for (size_t k = 0; k < pr->nmeshes && pr->first_mesh + k < s->nmeshes; k++) {
+        const scene_mesh *m = &s->meshes[pr->first_mesh + k];
+        mat4 place = mat4_mul(&in->to_eye, &m->to_eye);
+        if (m->in_eye || !tris_box(s, &place, false, m->first_tri, m->first_tri + m->tri_count, b))
+            return NULL;
+    }
+    return b;
+}
+
+/* The box of the overlay's drawn pixels, in front of everything; its
+ * pixel (0, 0) at window offset (ox, oy) from the image's. */
+static void overlay_box(const scene *s, double ox, double oy, double b[6])
+{
+    double W = s->camera.width - 2 * ox, H = s->camera.height - 2 * oy;
+    box_empty(b);
+    for (int y = 0; y < s->overlay_h; y++)
+        for (int x = 0; x < s->overlay_w; x++)
+            if (s->overlay[((size_t)y * (size_t)s->overlay_w + (size_t)x) * 4 + 3]) {
+                box_add(b, x - W / 2, y - H / 2);
+                box_add(b, x + 1 - W / 2, y + 1 - H / 2);
+            }
+    b[4] = b[5] = 0;
+}
+
 /* Brings the rectangles up to the scene's content. */
 static void sync(interp *ip)
 {
@@ -196,76 +288,18 @@ static void sync(interp *ip)
         d->meshes = s->nmeshes;
         d->last_tris = s->meshes[s->nmeshes - 1].tri_count;
     }
-    for (; d->lines < s->nlines && !d->all; d->lines++) {
-        const scene_line *l = &s->lines[d->lines];
-        double b[6];
-        box_empty(b);
-        for (int e = 0; e < 2; e++)
-            for (int sg = -1; sg <= 1; sg += 2) {
-                double p[3];
-                for (int k = 0; k < 3; k++)
-                    p[k] = (double)l->p[e][k] + sg * (double)l->half[e][k];
-                if (!box_eye(cam, b, p))
-                    d->all = true;
-            }
-        rect_keep(ip, b);
-    }
-    for (; d->points < s->npoints && !d->all; d->points++) {
-        const scene_point *pt = &s->points[d->points];
-        double b[6];
-        box_empty(b);
-        for (int c = 0; c < 4; c++) {
-            double p[3];
-            for (int k = 0; k < 3; k++)
-                p[k] = (double)pt->p[k] + (c & 1 ? 1 : -1) * (double)pt->right[k] +
-                       (c & 2 ? 1 : -1) * (double)pt->up[k];
-            if (!box_eye(cam, b, p))
-                d->all = true;
-        }
-        rect_keep(ip, b);
-    }
-    for (; d->solids < s->nsolids && !d->all; d->solids++) {
-        const scene_solid *so = &s->solids[d->solids];
-        double lo[3], hi[3], b[6];
-        solid_bounds(so, lo, hi);
-        box_empty(b);
-        for (int c = 0; c < 8; c++) {
-            float v[3] = {(float)(c & 1 ? hi[0] : lo[0]), (float)(c & 2 ? hi[1] : lo[1]),
-                          (float)(c & 4 ? hi[2] : lo[2])};
-            double e[3];
-            if (!to_eye3(&so->to_eye, false, v, e) || !box_eye(cam, b, e))
-                d->all = true;
-        }
-        rect_keep(ip, b);
-    }
-    for (; d->instances < s->ninstances && !d->all; d->instances++) {
-        const scene_instance *in = &s->instances[d->instances];
-        if (in->proto >= s->nprotos) {
-            d->all = true;
-            break;
-        }
-        const scene_proto *pr = &s->protos[in->proto];
-        double b[6];
-        box_empty(b);
-        for (size_t k = 0; k < pr->nmeshes && pr->first_mesh + k < s->nmeshes && !d->all; k++) {
-            const scene_mesh *m = &s->meshes[pr->first_mesh + k];
-            mat4 place = mat4_mul(&in->to_eye, &m->to_eye);
-            if (m->in_eye || !tris_box(s, &place, false, m->first_tri, m->first_tri + m->tri_count, b))
-                d->all = true;
-        }
-        rect_keep(ip, b);
-    }
+    for (; d->lines < s->nlines && !d->all; d->lines++)
+        keep_item(ip, line_box(s, d->lines, b6(ip)));
+    for (; d->points < s->npoints && !d->all; d->points++)
+        keep_item(ip, point_box(s, d->points, b6(ip)));
+    for (; d->solids < s->nsolids && !d->all; d->solids++)
+        keep_item(ip, solid_box(s, d->solids, b6(ip)));
+    for (; d->instances < s->ninstances && !d->all; d->instances++)
+        keep_item(ip, instance_box(s, d->instances, b6(ip)));
     double W = cam->width, H = cam->height;
     if (s->overlay && !d->overlay) {
         double b[6];
-        box_empty(b);
-        for (int y = 0; y < s->overlay_h; y++)
-            for (int x = 0; x < s->overlay_w; x++)
-                if (s->overlay[((size_t)y * (size_t)s->overlay_w + (size_t)x) * 4 + 3]) {
-                    box_add(b, x - W / 2, y - H / 2);
-                    box_add(b, x + 1 - W / 2, y + 1 - H / 2);
-                }
-        b[4] = b[5] = 0; /* in front of everything */
+        overlay_box(s, 0, 0, b);
         rect_keep(ip, b);
         d->overlay = true;
     }
@@ -537,4 +571,53 @@ void interp_dest_end_frame(interp *ip)
         interp_note(ip, DIAG_NOTE_DEPTH_CLEAR);
     d->ndclear = 0;
     d->dclear_lost = false;
+}
+
+static bool meets(const double a[6], const double b[6])
+{
+    return box_set(a) && box_set(b) && a[0] <= b[2] + DEST_MARGIN && b[0] <= a[2] + DEST_MARGIN &&
+           a[1] <= b[3] + DEST_MARGIN && b[1] <= a[3] + DEST_MARGIN;
+}
+
+bool interp_dest_after_overlay(const interp *ip, const scene_mark *m)
+{
+    const scene *s = ip->scene;
+    if (!s || !s->overlay)
+        return false;
+    double ov[6], b[6];
+    overlay_box(s, (double)ip->pixels_org[0] - ip->cam_viewport[0],
+                (double)ip->pixels_org[1] - ip->cam_viewport[1], ov);
+    if (!box_set(ov))
+        return false;
+    for (size_t i = 0; i < s->nmeshes; i++) {
+        const scene_mesh *me = &s->meshes[i];
+        size_t t0 = me->first_tri > m->ntris ? me->first_tri : m->ntris;
+        size_t t1 = me->first_tri + me->tri_count;
+        if (me->proto || t0 >= t1)
+            continue;
+        box_empty(b);
+        if (!tris_box(s, &me->to_eye, me->in_eye, t0, t1, b) || meets(ov, b))
+            return true;
+    }
+    for (size_t i = m->nlines; i < s->nlines; i++) {
+        box_empty(b);
+        if (!line_box(s, i, b) || meets(ov, b))
+            return true;
+    }
+    for (size_t i = m->npoints; i < s->npoints; i++) {
+        box_empty(b);
+        if (!point_box(s, i, b) || meets(ov, b))
+            return true;
+    }
+    for (size_t i = m->nsolids; i < s->nsolids; i++) {
+        box_empty(b);
+        if (!solid_box(s, i, b) || meets(ov, b))
+            return true;
+    }
+    for (size_t i = m->ninstances; i < s->ninstances; i++) {
+        box_empty(b);
+        if (!instance_box(s, i, b) || meets(ov, b))
+            return true;
+    }
+    return false;
 }

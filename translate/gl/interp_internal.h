@@ -90,6 +90,13 @@ struct interp {
                             or last clear (interp_prim.c, painter_shift) */
     uint64_t pixels_mark; /* the scene's items after the frame's last pixel draw
                              (interp_pixels.c) */
+    scene_mark pixels_first; /* the scene at the overlay's first pixels */
+    /* Raster positions set before the camera was fixed: the projection
+     * and viewport of the first, and whether another had others; checked
+     * against the camera at the frame's end (interp_pixdepth.c). */
+    bool raster_pre, raster_pre_mixed;
+    mat4 raster_pre_proj;
+    int32_t raster_pre_vp[4];
     int32_t pixels_org[2]; /* window position of scene.overlay's pixel (0, 0) */
     int pixels_depth_state; /* how the overlay's pixels were depth-tested (interp_pixdepth.c) */
     bool pixels_result_due; /* a glCopyPixels under a logic op waits for its @CopyPixelsResult */
@@ -179,15 +186,32 @@ struct interp {
     size_t cap_relit_copy;
     bool relit_over;       /* some vertex was lit past 1 in a channel */
     bool prim_relit;       /* the look being made is of GL-lit faces */
+    /* A filled primitive being assembled (mip_defer): its mipmapped
+     * texture's note waits for its triangles (mip_pending, interp_texdraw.c). */
+    bool mip_defer, mip_pending;
+    int32_t mip_texture;
     double (*fogz)[4];     /* GL's eye point and fog distance of each vertex, when fogged
                               (interp_fogbehind.c) */
     size_t cap_fogz;
     bool fog_split;        /* the primitive's triangles behind the eye get their own fog */
 
-    /* The frame's camera: fixed by the first draw (or at the frame's end). */
+    /* The frame's camera: fixed by the first draw (or at the frame's end).
+     * own_*: the GL projection and viewport of the camera's own draws;
+     * cam_*: the picture's, the window the frame stands for (the same,
+     * or own_proj widened to the union of the frame's viewports, own_vp's
+     * pixels where GL put them: interp_proj.c). */
     bool camera_fixed;
+    mat4 own_proj;
+    int32_t own_vp[4];
     mat4 cam_proj;
     int32_t cam_viewport[4];
+    /* The union of the viewports of the draws and colour clears since the
+     * last full colour clear (win_n: 0 none yet), and the one a second
+     * translation is given. */
+    int32_t win[4];
+    int win_n;
+    bool win_preset;
+    int32_t win_preset_rect[4];
     mat4 cam_from_ndc; /* inverse of (viewport-scaled) camera projection */
     bool cam_from_ndc_ok;
 
@@ -414,6 +438,10 @@ void interp_note(interp *ip, diag_kind kind);
  * DIAG_WHY - 1 bytes; printed only with --verbose). Nothing once the note is
  * said in the frame. */
 void interp_note_held(interp *ip, diag_kind kind, const char *why);
+/* A note of the POV-Ray scene's approximation: for glTF output
+ * (interp_set_pov false) held, and gltf said instead (DIAG_COUNT: none),
+ * the glTF file's own way with what the note concerns. */
+void interp_note_pov(interp *ip, diag_kind kind, diag_kind gltf);
 /* interp_note (why NULL) or interp_note_held, naming the command given
  * (has_cmd: one) instead of the current one: a note decided at the frame's
  * end names the draw it concerns. */
@@ -576,6 +604,11 @@ void interp_proj_own_draw(interp *ip);
 void interp_proj_depth_clear(interp *ip);
 void interp_proj_vote(interp *ip, GLenum mode);
 void interp_proj_layer(interp *ip, mat4 *w);
+/* Adds the current viewport to the frame's window (a draw's, a colour
+ * clear's); widen_camera makes the picture's camera the preset window's
+ * (interp_fix_camera). */
+void interp_proj_window_add(interp *ip);
+void interp_proj_widen_camera(interp *ip);
 /* Maps the window depth of w (the draw's projection and viewport) into the
  * camera's: the draw's glDepthRange and its depth epoch. False when that
  * is the identity. */
@@ -700,6 +733,11 @@ bool interp_nurbs_surface_at(const double *pts, uint32_t k, const double *uknots
 int32_t interp_texture_for_draw(interp *ip);
 /* The same for texture unit k, or -1 when it is disabled or incomplete. */
 int32_t interp_texture_for_unit(interp *ip, int k);
+/* After a filled primitive's triangles (from first_tri): NOTE_TEX_MIPMAP
+ * when a mipmapped texture's level of detail is not taken per pixel on
+ * them (not runs of two or more triangles on one plane map, each with
+ * lambda varying; scene_mip_split). */
+void interp_tex_mip_check(interp *ip, size_t first_tri);
 
 /* Texture units (interp_multitex.c). A unit's state as a draw reads it,
  * wherever it is kept (pointers into ip->st, valid until the next
@@ -784,6 +822,13 @@ bool interp_draw_buffer_hidden(const interp *ip);
  * no colour (every colour channel masked) and is left out, with a note
  * when it writes depth; notes a partial colour mask. */
 bool interp_masks_hide(interp *ip);
+/* A colour clear (not scissored) under a partial colour mask over a frame
+ * whose content so far is flat colours (unlit, untextured, opaque,
+ * unfogged triangles, lines, points and pixels): the channels the mask
+ * lets through take the clear colour in all of it and in the background,
+ * the others keep theirs, as GL's pixels do. False (nothing changed) for
+ * any other content. */
+bool interp_masks_clear(interp *ip);
 
 /* Line stipple (interp_stipple.c). interp_stipple_on: lines drawn now are
  * stippled. interp_stipple_dashes: the dashes GL draws of window segment
@@ -877,6 +922,9 @@ void interp_blend_end(interp *ip, uint32_t n);
  * releases what it keeps. */
 bool interp_dest_draw(interp *ip, uint32_t n, bool need_once, float bg[4]);
 void interp_dest_free(interp *ip);
+/* Whether a scene item made after mark m may reach the box of the
+ * overlay's pixels in the image (true where one cannot be placed). */
+bool interp_dest_after_overlay(const interp *ip, const scene_mark *m);
 /* A glClear of the depth buffer (scissored or not) after draws; at the
  * frame's end, a note where a later draw inside its box lies behind an
  * earlier one there, which GL's clear lets it cover and the scene does not

@@ -45,8 +45,8 @@ bool interp_gl_window(const interp *ip, const float obj[3], double out[2])
 {
     const int32_t *vp = ip->st.a.viewport.rect;
     if (ip->frame_begin || ip->prim_in_eye || !ip->scene ||
-        memcmp(vp, ip->cam_viewport, sizeof ip->cam_viewport) != 0 ||
-        !mat4_equal_f32(interp_matrix(ip, INTERP_PROJ), &ip->cam_proj))
+        memcmp(vp, ip->own_vp, sizeof ip->own_vp) != 0 ||
+        !mat4_equal_f32(interp_matrix(ip, INTERP_PROJ), &ip->own_proj))
         return false;
     /* Measured: Mesa's pixels on 6000 lines with decimal ends, under
      * gluOrtho2D(0, 320, 0, 240) and under a scaled and turned modelview,
@@ -58,7 +58,12 @@ bool interp_gl_window(const interp *ip, const float obj[3], double out[2])
         p[k] = (float)pm->m[k];
         m[k] = (float)mm->m[k];
     }
-    return ras_window(p, m, vp[2], vp[3], obj, out);
+    if (!ras_window(p, m, vp[2], vp[3], obj, out))
+        return false;
+    /* in the picture's window, which may be wider than the viewport */
+    out[0] += (double)vp[0] - ip->cam_viewport[0];
+    out[1] += (double)vp[1] - ip->cam_viewport[1];
+    return true;
 }
 
 /* Scratch space for one segment's pixels and strips. */

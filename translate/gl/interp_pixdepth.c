@@ -9,8 +9,11 @@
  * overlay lies in that plane of constant window z in eye space: geometry
  * nearer hides it, whether drawn before (GL's test of the pixels) or after
  * (GL's test against the depth the pixels wrote), and geometry behind it
- * is hidden. Pixels drawn without a depth test stay in front of the whole
- * scene, exact when nothing is drawn after them; any other mix is noted.
+ * is hidden (a raster position set before the frame's first draw is the
+ * camera's when that draw's projection and viewport are its). Pixels
+ * drawn without a depth test stay in front of the whole scene, exact when
+ * nothing drawn after the overlay's first pixels reaches their box in the
+ * image (interp_dest_after_overlay); any other mix is noted.
  */
 #include "interp_internal.h"
 
@@ -22,11 +25,26 @@ void interp_pixdepth_raster(interp *ip, const double clip[4])
 {
     gl_attribs *a = &ip->st.a;
     a->current.raster_in_camera = false;
-    if (!ip->camera_fixed || ip->frame_begin || !(clip[3] > 0))
+    if (ip->frame_begin || !(clip[3] > 0))
         return;
     const mat4 *proj = interp_matrix(ip, INTERP_PROJ);
-    if (memcmp(proj->m, ip->cam_proj.m, sizeof proj->m) != 0 ||
-        memcmp(a->viewport.rect, ip->cam_viewport, sizeof ip->cam_viewport) != 0)
+    if (!ip->camera_fixed) {
+        /* Bitmap text before the first draw: in the camera if the camera
+         * the frame's draws fix has this projection and viewport. */
+        if (!ip->raster_pre) {
+            ip->raster_pre = true;
+            ip->raster_pre_proj = *proj;
+            memcpy(ip->raster_pre_vp, a->viewport.rect, sizeof ip->raster_pre_vp);
+        } else if (!mat4_equal_f32(proj, &ip->raster_pre_proj) ||
+                   memcmp(a->viewport.rect, ip->raster_pre_vp, sizeof ip->raster_pre_vp) != 0) {
+            ip->raster_pre_mixed = true;
+        }
+        a->current.raster_ndc_z = clip[2] / clip[3];
+        a->current.raster_in_camera = true;
+        return;
+    }
+    if (!mat4_equal_f32(proj, &ip->own_proj) ||
+        memcmp(a->viewport.rect, ip->own_vp, sizeof ip->own_vp) != 0)
         return;
     a->current.raster_ndc_z = clip[2] / clip[3];
     a->current.raster_in_camera = true;
@@ -61,6 +79,11 @@ bool interp_pixdepth_end_frame(interp *ip, bool drawn_after)
         return !drawn_after; /* GL draws later geometry over them */
     if (ip->pixels_depth_state != DEPTH_PLANE)
         return false;
+    if (ip->raster_pre &&
+        (ip->raster_pre_mixed || !ip->camera_fixed ||
+         !mat4_equal_f32(&ip->raster_pre_proj, &ip->own_proj) ||
+         memcmp(ip->raster_pre_vp, ip->own_vp, sizeof ip->own_vp) != 0))
+        return false; /* some raster position was not the camera's */
     /* Window z is constant where ndc z = (row 2 . e) / (row 3 . e) is:
      * the plane (row 2 - z row 3) . e = 0 of eye space, the scene's. */
     const double *m = ip->cam_proj.m;

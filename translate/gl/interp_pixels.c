@@ -190,7 +190,10 @@ void interp_pixels_end_frame(interp *ip)
         return;
     /* GL would draw that geometry over the pixels; the image is in front,
      * unless it lies at the pixels' depth. */
-    if (!interp_pixdepth_end_frame(ip, scene_items(s) > ip->pixels_mark))
+    if (ip->not_pov)
+        interp_note(ip, DIAG_NOTE_GLTF_PIXELS); /* and nothing of how they would show */
+    else if (!interp_pixdepth_end_frame(ip, scene_items(s) > ip->pixels_mark &&
+                                            interp_dest_after_overlay(ip, &ip->pixels_first)))
         interp_note(ip, DIAG_NOTE_PIXELS_DEPTH);
     /* The image was made at the viewport of the first pixel draw; the
      * camera may have another (fixed by a later draw): the same window
@@ -251,6 +254,7 @@ static uint8_t *overlay(interp *ip)
     memset(px, 0, bytes);
     s->overlay = px;
     ip->pixels_mark = scene_items(s);
+    scene_mark_take(s, &ip->pixels_first);
     s->overlay_w = w;
     s->overlay_h = h;
     ip->pixels_org[0] = vp[0];

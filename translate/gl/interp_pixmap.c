@@ -89,7 +89,7 @@ void interp_pixels_transfer_note(interp *ip, bool from_index)
     /* Scales and biases of RGBA pixels: Mesa's once (pixels_draw,
      * pixels_copy exact). */
     if (a->pixel.map_color || (from_index && !transfer_identity(a)))
-        interp_note(ip, DIAG_NOTE_PIXELS_MAP_COLOR);
+        interp_note_pov(ip, DIAG_NOTE_PIXELS_MAP_COLOR, DIAG_COUNT); /* glTF: no pixels */
 }
 
 void interp_pixel_transfer(const interp *ip, const float in[4], float out[4])

@@ -175,8 +175,7 @@ bool interp_object_to_eye(const interp *ip, const mat4 *mv, const mat4 *proj,
 {
     *out = *mv;
     if (!ip->frame_begin &&
-        (memcmp(vp, ip->cam_viewport, sizeof ip->cam_viewport) != 0 ||
-         !mat4_equal_f32(proj, &ip->cam_proj))) {
+        (memcmp(vp, ip->own_vp, sizeof ip->own_vp) != 0 || !mat4_equal_f32(proj, &ip->own_proj))) {
         if (!ip->cam_from_ndc_ok)
             return false;
         mat4 w = interp_window_matrix(proj, vp);
@@ -197,9 +196,9 @@ static bool setup_transform(interp *ip)
     ip->prim_clip = mat4_mul(proj, mv);
     if (!ip->frame_begin) {
         const int32_t *vp = ip->st.a.viewport.rect;
-        bool same_vp = memcmp(vp, ip->cam_viewport, sizeof ip->cam_viewport) == 0;
+        bool same_vp = memcmp(vp, ip->own_vp, sizeof ip->own_vp) == 0;
         mat4 w = interp_window_matrix(proj, vp);
-        bool own = same_vp && mat4_equal_f32(proj, &ip->cam_proj);
+        bool own = same_vp && mat4_equal_f32(proj, &ip->own_proj);
         if (!own)
             interp_proj_layer(ip, &w);
         /* glDepthRange and depth-only clears move the draw's depth: along
@@ -324,7 +323,7 @@ static void map_blend(interp *ip, float c[4])
     if (cover < BLEND_MIN_COVER) {
         cover = BLEND_MIN_COVER;
         if (ws > 0)
-            interp_note(ip, DIAG_NOTE_BLEND_ADD);
+            interp_note_pov(ip, DIAG_NOTE_BLEND_ADD, DIAG_NOTE_GLTF_BLEND_ADD);
     }
     for (int i = 0; i < 3; i++)
         c[i] = (float)(c[i] * ws / cover);

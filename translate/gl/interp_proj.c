@@ -23,6 +23,13 @@
  * background too (the first translation sees the clear, the second
  * places it). Draw order within a layer is the painter's
  * (docs/mapping.md "Projections, depth and draw order").
+ *
+ * The picture is the window the frame stands for: the union of the
+ * viewports of its draws and colour clears since its last full colour
+ * clear. When that is wider than the camera's viewport (a split screen),
+ * the frame is translated again with it preset and the camera's
+ * projection widened to it (interp_proj_widen_camera); the camera's own
+ * draws stay its own (own_proj, own_vp).
  */
 #include "interp_internal.h"
 
@@ -46,6 +53,78 @@ void interp_proj_begin_frame(interp *ip)
     ip->nclear_seq = 0;
     ip->depth_epoch = ip->depth_epochs = 0;
     ip->epoch_drawn = false;
+    ip->win_n = 0;
+    ip->win_preset = false;
+}
+
+void interp_proj_window_add(interp *ip)
+{
+    const int32_t *vp = ip->st.a.viewport.rect;
+    if (vp[2] < 1 || vp[3] < 1)
+        return;
+    if (ip->win_n == 0) {
+        memcpy(ip->win, vp, sizeof ip->win);
+        ip->win_n = 1;
+        return;
+    }
+    int64_t x0 = vp[0] < ip->win[0] ? vp[0] : ip->win[0];
+    int64_t y0 = vp[1] < ip->win[1] ? vp[1] : ip->win[1];
+    int64_t x1 = (int64_t)vp[0] + vp[2], y1 = (int64_t)vp[1] + vp[3];
+    int64_t wx1 = (int64_t)ip->win[0] + ip->win[2], wy1 = (int64_t)ip->win[1] + ip->win[3];
+    x1 = x1 > wx1 ? x1 : wx1;
+    y1 = y1 > wy1 ? y1 : wy1;
+    if (x1 - x0 > INTERP_MAX_VIEWPORT || y1 - y0 > INTERP_MAX_VIEWPORT)
+        return; /* no window that large: the viewports are not one window's */
+    ip->win[0] = (int32_t)x0;
+    ip->win[1] = (int32_t)y0;
+    ip->win[2] = (int32_t)(x1 - x0);
+    ip->win[3] = (int32_t)(y1 - y0);
+    ip->win_n++;
+}
+
+bool interp_proj_window(const interp *ip, int32_t win[4])
+{
+    if (ip->frame_begin || !ip->camera_fixed || ip->win_n < 2)
+        return false;
+    /* The window's pixels start at 0, 0: viewports reaching below it are
+     * cut there, unless the camera's own does (then it is the picture). */
+    const int32_t *ov = ip->own_vp;
+    int64_t x0 = ip->win[0], y0 = ip->win[1];
+    int64_t x1 = x0 + ip->win[2], y1 = y0 + ip->win[3];
+    x0 = x0 < 0 ? (ov[0] < 0 ? ov[0] : 0) : x0;
+    y0 = y0 < 0 ? (ov[1] < 0 ? ov[1] : 0) : y0;
+    if (x1 <= x0 || y1 <= y0)
+        return false;
+    int32_t w[4] = {(int32_t)x0, (int32_t)y0, (int32_t)(x1 - x0), (int32_t)(y1 - y0)};
+    if (memcmp(w, ov, sizeof w) == 0)
+        return false;
+    memcpy(win, w, sizeof w);
+    return true;
+}
+
+void interp_proj_preset_window(interp *ip, const int32_t win[4])
+{
+    ip->win_preset = true;
+    memcpy(ip->win_preset_rect, win, sizeof ip->win_preset_rect);
+}
+
+void interp_proj_widen_camera(interp *ip)
+{
+    if (!ip->win_preset || ip->frame_begin)
+        return;
+    const int32_t *v = ip->own_vp, *w = ip->win_preset_rect;
+    if (v[2] < 1 || v[3] < 1 || w[2] < 1 || w[3] < 1)
+        return;
+    /* The window's NDC of the viewport's: x' = x vw / ww + (2 (vx - wx)
+     * + vw) / ww - 1, on clip coordinates (times w_c); so for y. Window
+     * x, y and depth stay GL's. */
+    mat4 s = mat4_identity();
+    s.m[0] = (double)v[2] / w[2];
+    s.m[5] = (double)v[3] / w[3];
+    s.m[12] = (2.0 * ((double)v[0] - w[0]) + v[2]) / w[2] - 1;
+    s.m[13] = (2.0 * ((double)v[1] - w[1]) + v[3]) / w[3] - 1;
+    ip->cam_proj = mat4_mul(&s, &ip->own_proj);
+    memcpy(ip->cam_viewport, w, sizeof ip->cam_viewport);
 }
 
 void interp_proj_clear(interp *ip)
@@ -53,6 +132,7 @@ void interp_proj_clear(interp *ip)
     ip->depth_epoch = 0;
     ip->epoch_drawn = false;
     ip->nvotes = 0; /* the scene starts over: so does the choice */
+    ip->win_n = 0;
     ip->back_open = true;
     ip->own_drawn = false;
     ip->nclear_seq = 0;
@@ -78,6 +158,7 @@ void interp_proj_own_draw(interp *ip)
 
 void interp_proj_vote(interp *ip, GLenum mode)
 {
+    interp_proj_window_add(ip);
     const gl_attribs *a = &ip->st.a;
     const mat4 *proj = interp_matrix(ip, INTERP_PROJ);
     const int32_t *vp = a->viewport.rect;
@@ -130,8 +211,7 @@ bool interp_proj_choice(const interp *ip, mat4 *proj, int32_t vp[4], bool *back_
     if (best < 0)
         return false;
     const interp_proj_vote_t *b = &ip->votes[best];
-    if (memcmp(b->vp, ip->cam_viewport, sizeof b->vp) == 0 &&
-        mat4_equal_f32(&b->proj, &ip->cam_proj))
+    if (memcmp(b->vp, ip->own_vp, sizeof b->vp) == 0 && mat4_equal_f32(&b->proj, &ip->own_proj))
         return false;
     /* A depth-tested draw of another projection, then a depth clear, both
      * before the camera's first draw: that draw is a background. */
@@ -153,8 +233,8 @@ uint32_t interp_proj_depth_epochs(const interp *ip, const mat4 *proj, const int3
     if (ip->depth_epochs || !ip->camera_fixed || ip->frame_begin)
         return 0;
     if (!proj) {
-        proj = &ip->cam_proj;
-        vp = ip->cam_viewport;
+        proj = &ip->own_proj;
+        vp = ip->own_vp;
     }
     /* As the second translation will count them, with this camera: the
      * depth clears after its first draw with draws before them (since

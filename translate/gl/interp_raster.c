@@ -26,8 +26,9 @@ void interp_fix_camera(interp *ip)
     /* A second translation of a frame of several projections: the 3D
      * scene's camera, chosen by the first (interp_proj.c). */
     const mat4 *proj = ip->cam_preset ? &ip->cam_preset_proj : interp_matrix(ip, INTERP_PROJ);
-    memcpy(ip->cam_viewport, ip->cam_preset ? ip->cam_preset_vp : a->viewport.rect,
-           sizeof ip->cam_viewport);
+    memcpy(ip->own_vp, ip->cam_preset ? ip->cam_preset_vp : a->viewport.rect, sizeof ip->own_vp);
+    ip->own_proj = *proj;
+    memcpy(ip->cam_viewport, ip->own_vp, sizeof ip->cam_viewport);
     ip->cam_proj = *proj;
 
     if (ip->frame_begin) {
@@ -41,9 +42,10 @@ void interp_fix_camera(interp *ip)
         ip->cam_from_ndc_ok = false;
         return;
     }
-    if (!scene_camera_from_gl(&s->camera, proj, ip->cam_viewport))
+    interp_proj_widen_camera(ip);
+    if (!scene_camera_from_gl(&s->camera, &ip->cam_proj, ip->cam_viewport))
         interp_note(ip, DIAG_NOTE_CAMERA);
-    mat4 w = interp_window_matrix(proj, ip->cam_viewport);
+    mat4 w = interp_window_matrix(&ip->cam_proj, ip->cam_viewport);
     ip->cam_from_ndc_ok = mat4_invert(&w, &ip->cam_from_ndc);
 }
 
@@ -60,6 +62,7 @@ void interp_begin_frame(interp *ip)
     ip->shape_facets = 0;
     ip->segments = 0;
     ip->pixels_mark = 0;
+    ip->raster_pre = ip->raster_pre_mixed = false;
     ip->nclear_rects = 0;
     interp_proj_begin_frame(ip);
     interp_zorder_begin_frame(ip);
@@ -182,8 +185,12 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
         mask &= ~(uint32_t)GL_COLOR_BUFFER_BIT;
     if (!a->depth.mask)
         mask &= ~(uint32_t)GL_DEPTH_BUFFER_BIT;
+    /* A depth clear the scissor box cuts starts no part of the frame in
+     * front of the earlier ones: outside the box GL keeps their depth
+     * (conf_scissor_clear_depth; NOTE_DEPTH_CLEAR says what differs). */
     if ((mask & GL_DEPTH_BUFFER_BIT) && !(mask & GL_COLOR_BUFFER_BIT) &&
-        ip->st.render_mode == GL_RENDER)
+        ip->st.render_mode == GL_RENDER &&
+        !(a->caps[INTERP_CAP_SCISSOR_TEST] && interp_scissor_cuts(ip, a->viewport.rect)))
         interp_proj_depth_clear(ip);
     if ((mask & GL_DEPTH_BUFFER_BIT) && ip->st.render_mode == GL_RENDER && ip->st.a.depth.mask &&
         !((mask & GL_COLOR_BUFFER_BIT) && !interp_scissor_cuts(ip, ip->st.a.viewport.rect)))
@@ -198,13 +205,20 @@ void interp_clear(interp *ip, const rgl_cmd *cmd)
     }
     if (!(mask & GL_COLOR_BUFFER_BIT) || !ip->scene || ip->st.render_mode != GL_RENDER)
         return;
+    if ((!cm[0] || !cm[1] || !cm[2]) &&
+        !(a->caps[INTERP_CAP_SCISSOR_TEST] && interp_scissor_cuts(ip, a->viewport.rect)) &&
+        !(mask & GL_DEPTH_BUFFER_BIT) && interp_masks_clear(ip))
+        return; /* the unmasked channels of what is there recoloured */
     if (!cm[0] || !cm[1] || !cm[2])
-        interp_note(ip, DIAG_NOTE_COLOR_MASK); /* cleared whole */
-    if (a->caps[INTERP_CAP_SCISSOR_TEST] && interp_scissor_clear(ip))
+        interp_note(ip, DIAG_NOTE_CLEAR_COLOR_MASK); /* cleared whole */
+    if (a->caps[INTERP_CAP_SCISSOR_TEST] && interp_scissor_clear(ip)) {
+        interp_proj_window_add(ip);
         return; /* a partial clear: what is drawn stays */
+    }
     if (interp_accum_clear(ip))
         return;
     interp_proj_clear(ip);
+    interp_proj_window_add(ip);
     /* Everything drawn so far is gone; the next draw fixes the camera anew. */
     interp_budget_peak(ip);
     scene_clear_geometry(ip->scene);

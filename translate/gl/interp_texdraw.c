@@ -392,9 +392,17 @@ int32_t interp_texture_for_unit(interp *ip, int k)
         interp_note(ip, DIAG_NOTE_TEXTURE);
         env = GL_MODULATE;
     }
-    if (mipmap_filter(o->min_filter))
-        interp_note(ip, DIAG_NOTE_TEX_MIPMAP);
-    else if (o->min_filter != o->mag_filter)
+    if (mipmap_filter(o->min_filter)) {
+        /* per pixel on the POV-Ray writer's planar runs of a lone 1D or 2D
+         * unit outside display lists: known once the triangles are */
+        if (ip->mip_defer && !ip->mip_pending && ip->draw_unit[1] < 0 && ip->list_depth == 0 &&
+            (o->target == GL_TEXTURE_2D || o->target == GL_TEXTURE_1D)) {
+            ip->mip_pending = true;
+            ip->mip_texture = -1;
+        } else if (!ip->mip_pending) {
+            interp_note(ip, DIAG_NOTE_TEX_MIPMAP);
+        }
+    } else if (o->min_filter != o->mag_filter)
         interp_note(ip, DIAG_NOTE_TEX_SAMPLING);
     /* GL_CLAMP under a linear filter blends the border colour into the
      * outer half of the edge texels (GL 2.1 3.8.8): the writer samples
@@ -480,8 +488,12 @@ int32_t interp_texture_for_unit(interp *ip, int k)
     st.colour_is_texel = (env == GL_REPLACE && b != GL_ALPHA) ||
                          (env == GL_DECAL && b != GL_RGBA && b != GL_ALPHA);
 
-    if (mipmap_filter(o->min_filter) && !o->depth3) /* the levels, each its own scene texture */
-        return mip_chain(ip, o, &st, ms, mt, u.texture->lod_bias);
+    if (mipmap_filter(o->min_filter) && !o->depth3) { /* the levels, each its own scene texture */
+        int32_t base = mip_chain(ip, o, &st, ms, mt, u.texture->lod_bias);
+        if (ip->mip_pending && ip->mip_texture < 0)
+            ip->mip_texture = base;
+        return base;
+    }
     uint64_t how = (o->depth3    ? MADE_SLICE | (o->mag_filter == GL_LINEAR ? MADE_SLICE_LINEAR : 0) |
                                     (uint64_t)o->wrap_r << 32
                     : compare ? MADE_COMPARE | (uint64_t)o->compare_func << 16 |
@@ -652,4 +664,52 @@ bool interp_unit_cube(interp *ip, int unit)
         return false;
     interp_tex_unit u = interp_unit(ip, (uint32_t)unit);
     return u.caps[UCAP(TEXTURE_CUBE_MAP)] != 0;
+}
+
+/* GL's level choice over a run drawn with one lambda (scene_mip_split)
+ * is that one: lambda constant over it (within 1/256 of a level), or one
+ * level for all of it under a GL_*_MIPMAP_NEAREST filter. */
+static bool one_level(const scene_texture *t, const scene_mip_run *r)
+{
+    if (!(r->hi - r->lo < 1.0 / 256) && t->mip_filter != SCENE_MIP_NEAREST_MIPMAP_NEAREST &&
+        t->mip_filter != SCENE_MIP_LINEAR_MIPMAP_NEAREST)
+        return false;
+    double lo = fmax(t->min_lod, r->lo + t->lod_bias), hi = fmin(t->max_lod, r->hi + t->lod_bias);
+    if (!isfinite(r->lo) || !isfinite(r->hi) || (lo <= 0) != (hi <= 0))
+        return false; /* magnification on one side */
+    /* GL 2.1 3.8.9: level ceil(lambda + 1/2) - 1 past 1/2, else 0 */
+    double dl = lo <= 0.5 ? 0 : ceil(lo + 0.5) - 1, dh = hi <= 0.5 ? 0 : ceil(hi + 0.5) - 1;
+    return dl == dh || r->hi - r->lo < 1.0 / 256;
+}
+
+static bool mip_exact(interp *ip, size_t first_tri)
+{
+    const scene *s = ip->scene;
+    if (!s || ip->mip_texture < 0 || (size_t)ip->mip_texture >= s->ntextures ||
+        s->ntris < first_tri + 2)
+        return false;
+    const scene_texture *t = &s->textures[ip->mip_texture];
+    const mat4 *to_eye = ip->prim_in_eye ? NULL : &ip->prim_to_eye;
+    size_t nt = s->ntris - first_tri;
+    /* A run here is within one of the writer's (the mesh may hold earlier
+     * triangles on the same map: a longer run, lambda varying more). */
+    for (size_t i = 0; i < nt;) {
+        scene_mip_run r;
+        size_t run = scene_mip_split(&s->camera, to_eye, s->verts, s->tris + first_tri + i, nt - i,
+                                     t->width, t->height, &r);
+        if ((!r.planar || run < 2) && !one_level(t, &r))
+            return false;
+        i += run;
+    }
+    return true;
+}
+
+void interp_tex_mip_check(interp *ip, size_t first_tri)
+{
+    ip->mip_defer = false;
+    if (!ip->mip_pending)
+        return;
+    ip->mip_pending = false;
+    if (!mip_exact(ip, first_tri))
+        interp_note(ip, DIAG_NOTE_TEX_MIPMAP);
 }

@@ -86,7 +86,7 @@ struct povwriter {
     unsigned mt_count;   /* the frame's multitexture functions, for their names */
     bool tinted;         /* the mesh's image is tinted (povlight_modulate_tint) */
     bool per_entry;      /* no tint fits the mesh: each colour entry tints a function of it */
-    const povmip_run *mip; /* the mesh part's level choice (write_mesh2), or NULL */
+    const scene_mip_run *mip; /* the mesh part's level choice (write_mesh2), or NULL */
     const povcube *cube;   /* the mesh's cube map (write_mesh2), or NULL */
     const double *cube_map; /* and the part's r over (s, t) */
     unsigned env_id;     /* the mesh's GL_BLEND or GL_ADD image function (povmt_declare) */

@@ -1210,7 +1210,7 @@ static int write_mesh2_part(povwriter *w, outbuf *ob, const scene_vertex *verts,
 
 /* Triangles of a curved mipmapped mesh by their rounded level of detail. */
 typedef struct mip_face {
-    int32_t key; /* lambda * POVMIP_STEPS, rounded */
+    int32_t key; /* lambda * SCENE_MIP_STEPS, rounded */
     uint32_t i;  /* index in the mesh's triangles */
 } mip_face;
 
@@ -1223,7 +1223,7 @@ static int mip_face_cmp(const void *a, const void *b)
 }
 
 /* A mipmapped mesh: one mesh2 per planar run (lambda per pixel), and one
- * per rounded lambda for the triangles on planes of their own (povmip_split). */
+ * per rounded lambda for the triangles on planes of their own (scene_mip_split). */
 static int write_mipmapped(povwriter *w, outbuf *ob, const scene_vertex *verts,
                            const scene_tri *tris, size_t nt, const scene_look *look,
                            const mat4 *to_eye)
@@ -1238,8 +1238,8 @@ static int write_mipmapped(povwriter *w, outbuf *ob, const scene_vertex *verts,
         !(group = tr_realloc(NULL, nt * sizeof *group)))
         goto fail;
     for (size_t i = 0; i < nt;) {
-        povmip_run r;
-        size_t run = povmip_split(&sc->camera, to_eye, verts, tris + i, nt - i, t->width,
+        scene_mip_run r;
+        size_t run = scene_mip_split(&sc->camera, to_eye, verts, tris + i, nt - i, t->width,
                                   t->height, &r);
         if (r.planar) {
             w->mip = &r;
@@ -1248,7 +1248,7 @@ static int write_mipmapped(povwriter *w, outbuf *ob, const scene_vertex *verts,
             if (e != 0)
                 goto fail;
         } else {
-            double k = r.lambda * POVMIP_STEPS;
+            double k = r.lambda * SCENE_MIP_STEPS;
             k = k < -1e6 ? -1e6 : k > 1e6 ? 1e6 : k;
             for (size_t j = i; j < i + run; j++) {
                 single[ns].key = (int32_t)lround(k);
@@ -1264,9 +1264,9 @@ static int write_mipmapped(povwriter *w, outbuf *ob, const scene_vertex *verts,
             group[b - a] = tris[single[b].i];
             b++;
         }
-        povmip_run r;
+        scene_mip_run r;
         memset(&r, 0, sizeof r);
-        r.lambda = (double)single[a].key / POVMIP_STEPS;
+        r.lambda = (double)single[a].key / SCENE_MIP_STEPS;
         w->mip = &r;
         int e = write_mesh2_part(w, ob, verts, group, b - a, look, to_eye, NULL);
         w->mip = NULL;

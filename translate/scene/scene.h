@@ -614,4 +614,26 @@ bool scene_camera_coords(const scene_camera *cam, const double p[3], double x[3]
  * Returns false when p is not in front of the camera. */
 bool scene_camera_pixel_size(const scene_camera *cam, const double p[3], double *px, double *py);
 
+/* A run of a mesh's triangles that share one mipmap level choice
+ * (scene_mip.c): planar, the eye-space position is one affine function of
+ * (u, v) over the run and GL's level of detail is computed per pixel from
+ * it; otherwise lambda is one value for the run. */
+typedef struct scene_mip_run {
+    bool planar;
+    double a[3], b[3], c[3]; /* camera image coordinates: (u, v, 1) . a etc. */
+    double lambda;
+    double lo, hi; /* lambda's range at the run's corners (0, 0: not placed) */
+} scene_mip_run;
+
+/* The length of the run from tris[0] (nt > 0): triangles on one affine
+ * map of their (u, v) into eye space (to_eye NULL: the vertices are in eye
+ * space), planar; or 1 when tris[0] shares its map with no neighbour,
+ * with its lambda at its centroid (not planar). A run over which lambda
+ * varies by less than 1/SCENE_MIP_STEPS at its corners is not planar
+ * either: its lambda is the middle of theirs. tw, th: the base level's
+ * size in texels. */
+#define SCENE_MIP_STEPS 16
+size_t scene_mip_split(const scene_camera *cam, const mat4 *to_eye, const scene_vertex *verts,
+                       const scene_tri *tris, size_t nt, int tw, int th, scene_mip_run *out);
+
 #endif
